@@ -1,0 +1,155 @@
+// The contact surfaces of all pairs, gathered on every rank, with the search
+// and the mortar operators of the slave nodes.
+#ifndef contact_fem_contact_interface_h
+#define contact_fem_contact_interface_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <contact_fem/material.h>
+#include <contact_fem/parameters.h>
+
+#include <array>
+#include <map>
+#include <vector>
+
+namespace contact_fem
+{
+  using namespace dealii;
+
+  /**
+   * The slave and master surfaces of every contact pair.
+   *
+   * The surfaces are lower-dimensional, so each rank gathers all of them
+   * (faces, reference coordinates and DoF indices of their nodes) once per
+   * mesh, and computes the search and the mortar operators of the whole
+   * interface redundantly: every rank then knows every constraint that touches
+   * its DoFs, and the result does not depend on the partition.
+   *
+   * Geometry is updated at every load step: search and mortar integration run
+   * on the configuration X + u of the start of the step, and the gap is linear
+   * in the displacement within the step ("small sliding per load step").
+   *
+   * Only 2D (line faces of degree 1 or 2) is implemented; 3D throws.
+   *
+   * Implemented in source/contact_interface.cc.
+   */
+  template <int dim>
+  class ContactInterface
+  {
+  public:
+    /// A node (support point) of a contact surface.
+    struct Node
+    {
+      Point<dim>                                reference;
+      std::array<types::global_dof_index, dim> dofs;
+      std::array<bool, dim>                     fixed; ///< Dirichlet component
+      bool                                      slave = false;
+      bool                                      master = false;
+    };
+
+    /// A face of a contact surface.
+    struct Face
+    {
+      std::vector<unsigned int> nodes;       ///< Mortar::LineFace node order
+      double                    orientation; ///< makes the rotated tangent point outward
+      unsigned int              pair;
+      bool                      slave;
+      double                    youngs_modulus;
+      double                    poisson_ratio;
+    };
+
+    /// Mortar data of one slave node at the current search.
+    struct SlaveNode
+    {
+      unsigned int  node;
+      unsigned int  pair;
+      Tensor<1, dim> normal;            ///< unit, out of the slave body
+      double        D         = 0.;     ///< int over the overlap of Phi_j
+      double        full_area = 0.;     ///< int of N_j over the adjacent slave faces
+      double        size      = 0.;     ///< nodal element size h_j
+      std::vector<std::pair<unsigned int, double>> M; ///< (master node, M_jl)
+      bool paired = false;              ///< has a master projection
+    };
+
+    /// Interface statistics of the last search, per pair.
+    struct PairStatistics
+    {
+      double       mean_slave_size = 0., mean_master_size = 0.;
+      double       slave_modulus = 0., master_modulus = 0.;
+      unsigned int slave_faces = 0, master_faces = 0;
+      unsigned int candidate_pairs = 0, overlapping_pairs = 0;
+    };
+
+    /**
+     * Collects the faces of @p pairs from all ranks. @p dirichlet holds the
+     * Dirichlet constraints only (to flag fixed components).
+     */
+    void
+    initialize(const Mapping<dim>                 &mapping,
+               const DoFHandler<dim>              &dof_handler,
+               const std::vector<ContactPair>     &pairs,
+               const AffineConstraints<double>    &dirichlet,
+               const Materials<dim>               &materials,
+               const MPI_Comm                      comm);
+
+    /// Sorted DoF indices of all interface nodes.
+    const std::vector<types::global_dof_index> &
+    dofs() const
+    {
+      return interface_dofs;
+    }
+
+    /// Position of @p dof in dofs().
+    unsigned int
+    position(const types::global_dof_index dof) const
+    {
+      return dof_position.at(dof);
+    }
+
+    /// The values of @p v at dofs(), from their owners, on every rank.
+    std::vector<double>
+    gather(const TrilinosWrappers::MPI::Vector &v) const;
+
+    /// The values of @p value_on_owner at dofs(), evaluated by the owner of
+    /// each DoF, on every rank.
+    std::vector<double>
+    gather(const std::function<double(types::global_dof_index)> &value_on_owner) const;
+
+    /// Search and mortar integration on X + u, @p u given at dofs().
+    void
+    update(const std::vector<double> &u, const double search_factor);
+
+    /// Displacement of node @p n from values at dofs().
+    Tensor<1, dim>
+    displacement(const unsigned int n, const std::vector<double> &u) const;
+
+    /**
+     * Normalised weighted gap g_j = n_j . (sum_l M_jl x_l - D_j x_j) / D_j of
+     * a slave node at x = X + u (u at dofs()), positive when apart. The
+     * operators are those of the last update().
+     */
+    double
+    gap(const SlaveNode &s, const std::vector<double> &u) const;
+
+    std::vector<ContactPair>    pairs;
+    std::vector<Node>           nodes;
+    std::vector<Face>           faces;
+    std::vector<SlaveNode>      slave_nodes;
+    std::vector<PairStatistics> statistics;
+    unsigned int                degree = 1;
+
+  private:
+    std::vector<types::global_dof_index>               interface_dofs;
+    std::map<types::global_dof_index, unsigned int>     dof_position;
+    IndexSet                                            owned_dofs;
+    MPI_Comm                                            communicator;
+  };
+} // namespace contact_fem
+
+#endif

@@ -1,0 +1,176 @@
+// The driver of a scene: mesh, load steps, semi-smooth Newton, results.
+#ifndef contact_fem_contact_problem_h
+#define contact_fem_contact_problem_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <contact_fem/alm_contact.h>
+#include <contact_fem/contact_interface.h>
+#include <contact_fem/json.h>
+#include <contact_fem/material.h>
+#include <contact_fem/parameters.h>
+#include <contact_fem/scene.h>
+
+#include <fstream>
+#include <memory>
+#include <string>
+
+namespace contact_fem
+{
+  using namespace dealii;
+
+  /// An output stream that writes to the console and, once attached, to a log file.
+  class TeeStream : public std::ostream
+  {
+  public:
+    explicit TeeStream(std::ostream &console);
+    /// Also write to @p file from now on.
+    void
+    attach(std::ostream &file);
+
+  private:
+    class Buffer : public std::streambuf
+    {
+    public:
+      std::streambuf *first = nullptr, *second = nullptr;
+
+    protected:
+      int
+      overflow(int c) override;
+      int
+      sync() override;
+    } buffer;
+  };
+
+  /// Thrown when a load step cannot be solved; carries the diagnosis.
+  struct NewtonFailure : public std::runtime_error
+  {
+    using std::runtime_error::runtime_error;
+  };
+
+  /**
+   * Solves one scene: builds the mesh, steps the load, solves each step with
+   * the semi-smooth Newton method, and writes the results.
+   *
+   * Declared here, implemented in source/contact_problem.cc (set-up, Newton)
+   * and source/contact_output.cc (results, VTU, summary).
+   */
+  template <int dim>
+  class ContactProblem
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// @p prm_directory resolves relative file names of the scene.
+    ContactProblem(ParameterHandler &prm,
+                   const std::string &scene_name,
+                   const std::string &prm_directory);
+    ~ContactProblem();
+
+    /// Runs the scene; returns the process exit code.
+    int
+    run();
+
+  private:
+    // --- set-up (contact_problem.cc)
+    void
+    setup_dofs();
+    void
+    compute_cell_matrices();
+    void
+    compute_cell_loads(const double time);
+    void
+    make_dirichlet_constraints(const double time);
+    void
+    make_sparsity_pattern();
+    void
+    make_constraints();
+    // --- Newton (contact_problem.cc)
+    void
+    solve_load_step(const unsigned int step, const double time, Json &step_record);
+    void
+    assemble_system();
+    void
+    solve_linear_system();
+    void
+    compute_residual();
+    double
+    equilibrium_residual_norm(const std::vector<double> &contact_force_at_interface) const;
+    // --- results (contact_output.cc)
+    Json
+    contact_results() const;
+    Json
+    reaction_results() const;
+    Json
+    analytical_results(const Json &contact, const Json &reaction) const;
+    void
+    write_vtu(const unsigned int step, const double time);
+    void
+    write_pressure_profile() const;
+    void
+    write_summary(const Json &cycles, const double wall_time, const std::string &status) const;
+    Tensor<1, dim>
+    applied_load(const double time) const;
+
+    MPI_Comm           comm;
+    std::ofstream      log_file;
+    TeeStream          console;
+    ConditionalOStream pcout;
+
+    std::string        scene_name;
+    Scene<dim>         scene;
+    Materials<dim>     materials;
+    BoundaryConditions boundary_conditions;
+    LoadStepping       load_stepping;
+    ContactParameters  contact_parameters;
+    NewtonParameters   newton_parameters;
+    AnalyticalSolution analytical;
+    OutputParameters   output;
+    unsigned int       degree;
+
+    parallel::distributed::Triangulation<dim> triangulation;
+    FESystem<dim>                             fe;
+    MappingQ<dim>                             mapping;
+    DoFHandler<dim>                           dof_handler;
+    IndexSet                                  owned_dofs, relevant_dofs, writable_dofs;
+
+    AffineConstraints<double> hanging_constraints;
+    AffineConstraints<double> dirichlet_constraints;
+    AffineConstraints<double> constraints;
+
+    TrilinosWrappers::SparseMatrix system_matrix;
+    TrilinosWrappers::MPI::Vector  system_rhs;
+    TrilinosWrappers::MPI::Vector  solution;         ///< owned
+    TrilinosWrappers::MPI::Vector  ghosted_solution; ///< locally relevant
+    TrilinosWrappers::MPI::Vector  residual;         ///< C_h^T (K u - f), writable
+
+    std::vector<FullMatrix<double>> cell_matrices; ///< by active cell index
+    std::vector<Vector<double>>     cell_loads;    ///< by active cell index, may be empty
+
+    /// Present only when the scene has contact pairs.
+    std::unique_ptr<ContactInterface<dim>> interface;
+    std::unique_ptr<AlmFrictionless<dim>>  contact;
+    std::vector<double>                    interface_displacement;
+    std::vector<double>                    interface_fixed_values;
+    std::vector<double>                    interface_residual;
+    std::vector<bool>                      interface_dof_fixed;
+
+    std::unique_ptr<TimerOutput>       timer; ///< made once the input is valid
+    double                             current_time = 0.;
+    std::vector<std::pair<double, std::string>> vtu_records;
+  };
+} // namespace contact_fem
+
+#endif

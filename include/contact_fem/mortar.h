@@ -1,0 +1,116 @@
+// Mortar operators of 2D line interfaces: exact segmentation of a slave face
+// against a master face, the dual multiplier basis, and the D / M blocks.
+#ifndef contact_fem_mortar_h
+#define contact_fem_mortar_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <vector>
+
+namespace contact_fem
+{
+  using namespace dealii;
+
+  namespace Mortar
+  {
+    /**
+     * A surface face of polynomial degree p described by its p+1 nodes.
+     * Node order follows deal.II's face DoF order: the two end vertices first
+     * (parameter xi = -1 and xi = +1), then the interior node (xi = 0, p = 2).
+     */
+    struct LineFace
+    {
+      std::vector<Point<2>> nodes;
+
+      unsigned int
+      degree() const
+      {
+        return nodes.size() - 1;
+      }
+      /// Position at parameter xi in [-1, 1].
+      Point<2>
+      point(const double xi) const;
+      /// dx/dxi at xi.
+      Tensor<1, 2>
+      tangent(const double xi) const;
+    };
+
+    /// Lagrange shape function @p i of degree @p p (node order of LineFace) at xi.
+    double
+    shape_value(const unsigned int p, const unsigned int i, const double xi);
+    /// d/dxi of shape_value().
+    double
+    shape_derivative(const unsigned int p, const unsigned int i, const double xi);
+    /// Parameter of node @p i of a face of degree @p p.
+    double
+    node_parameter(const unsigned int p, const unsigned int i);
+
+    /// Unit normal obtained by rotating the tangent clockwise by 90 degrees
+    /// and multiplying by @p orientation (+1 or -1, chosen so that it points
+    /// out of the body).
+    Tensor<1, 2>
+    face_normal(const LineFace &face, const double xi, const double orientation);
+
+    /**
+     * Coefficients A of the dual basis Phi_j = sum_k A_jk N_k of a slave face:
+     * A = D_e M_e^{-1} with D_e = diag(int N_j) and M_e = (int N_j N_k) over
+     * the whole face, so that int Phi_j N_k = delta_jk int N_k
+     * (biorthogonality, Wohlmuth 2000).
+     */
+    FullMatrix<double>
+    dual_basis_coefficients(const LineFace &slave);
+
+    /// The mortar blocks of one slave face against one master face.
+    struct SegmentOperators
+    {
+      /// int_overlap Phi_j ds for every slave node j (the lumped D row).
+      std::vector<double> D;
+      /// int_overlap Phi_j N^m_l ds, slave node j by master node l.
+      FullMatrix<double> M;
+      /// Length of the overlapped part of the slave face.
+      double overlap_length = 0.;
+      /// Slave parameter interval of the overlap.
+      double xi_begin = 0., xi_end = 0.;
+    };
+
+    /**
+     * Projects a point @p x along the direction @p direction onto the curve
+     * of @p face: returns the parameter eta with (face(eta) - x) x direction
+     * = 0 (2D cross product), found by Newton's method from eta = 0 (exact
+     * after one step for straight faces). Returns false if the projection
+     * does not converge or the direction is parallel to the face.
+     */
+    bool
+    project_along(const LineFace     &face,
+                  const Point<2>     &x,
+                  const Tensor<1, 2> &direction,
+                  double             &eta);
+
+    /**
+     * Segmentation and integration of one slave/master face pair.
+     *
+     * The slave face carries the nodal normals @p slave_normals (averaged,
+     * unit, pointing out of the slave body). The normal field along the slave
+     * face is the interpolation of the nodal normals (continuous across
+     * faces, so neighbouring slave faces tile the master without gaps or
+     * overlaps). The overlap is the set of slave parameters whose point
+     * projects along that normal field into the master face; its ends are the
+     * slave face ends or the slave-side images of the master end nodes. The
+     * blocks are integrated by Gauss quadrature with @p n_quadrature_points
+     * on the overlap, which is exact for flat faces.
+     *
+     * Returns false if the faces do not overlap.
+     */
+    bool
+    integrate_pair(const LineFace                   &slave,
+                   const std::vector<Tensor<1, 2>> &slave_normals,
+                   const FullMatrix<double>        &dual_coefficients,
+                   const LineFace                   &master,
+                   const unsigned int                n_quadrature_points,
+                   SegmentOperators                 &result);
+  } // namespace Mortar
+} // namespace contact_fem
+
+#endif

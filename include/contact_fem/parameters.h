@@ -1,0 +1,124 @@
+// The run parameters of a scene that are not owned by a component class:
+// boundary conditions, load stepping, contact, Newton and output settings.
+#ifndef contact_fem_parameters_h
+#define contact_fem_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
+
+#include <string>
+#include <vector>
+
+namespace contact_fem
+{
+  using namespace dealii;
+
+  /// A boundary id whose displacement components are prescribed.
+  struct DisplacementCondition
+  {
+    types::boundary_id boundary_id;
+    unsigned int       component;
+    std::string        expression; ///< function of x, y, (z,) t; "0" for fixed
+  };
+
+  /// A boundary id loaded by a normal pressure (positive pushes into the body).
+  struct PressureCondition
+  {
+    types::boundary_id boundary_id;
+    std::string        expression; ///< function of x, y, (z,) t
+  };
+
+  struct BoundaryConditions
+  {
+    std::vector<DisplacementCondition> displacements;
+    std::vector<PressureCondition>     pressures;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm, const unsigned int dim);
+  };
+
+  struct LoadStepping
+  {
+    double       end_time = 1.;
+    unsigned int n_steps  = 1;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /// One contact pair: the slave and master surfaces by boundary id.
+  struct ContactPair
+  {
+    types::boundary_id slave;
+    types::boundary_id master;
+  };
+
+  struct ContactParameters
+  {
+    std::vector<ContactPair> pairs; ///< empty: no contact code runs
+    std::string              formulation = "alm frictionless";
+    double penalty          = 0.; ///< 0: automatic, stiffness factor * E/h
+    double scale_factor     = 0.; ///< 0: automatic, stiffness factor * E/h
+    double stiffness_factor = 1.;
+    double active_check_factor = 1e-2;
+    double search_factor       = 3.;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  struct NewtonParameters
+  {
+    unsigned int max_iterations                  = 20;
+    double       displacement_relative_tolerance = 1e-4;
+    double       displacement_absolute_tolerance = 1e-9;
+    double       multiplier_relative_tolerance   = 1e-4;
+    double       multiplier_absolute_tolerance   = 1e-9;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  struct AnalyticalSolution
+  {
+    std::string type   = "none"; ///< "none" or "hertz cylinder"
+    double      radius = 8.;
+    double      center = 0.; ///< x of the first point of contact
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  struct OutputParameters
+  {
+    std::string directory = "results";
+    bool        write_vtu              = true;
+    bool        write_pressure_profile = true;
+    bool        print_timing           = true;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /// Parses "a: b; c: d" style lists; throws naming @p key on malformed input.
+  std::vector<std::pair<std::string, std::string>>
+  split_key_value_list(const std::string &text, const std::string &key);
+
+  /// Parses a boundary id; throws naming @p key if it is not in 0..254.
+  types::boundary_id
+  parse_boundary_id(const std::string &text, const std::string &key);
+} // namespace contact_fem
+
+#endif

@@ -1,0 +1,118 @@
+// Superconvergent patch recovery (SPR, Zienkiewicz-Zhu) of the stress and the
+// resulting a posteriori error estimator, with optional contact-traction terms
+// in the patch fits (in the spirit of the "SPR-C" recoveries that impose known
+// boundary tractions on the patch polynomials).
+#ifndef contact_fem_stress_recovery_h
+#define contact_fem_stress_recovery_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/mapping.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <contact_fem/material.h>
+
+#include <vector>
+
+namespace contact_fem
+{
+  using namespace dealii;
+
+  /// Contact traction known at one slave node: the recovered stress there
+  /// should satisfy sigma* n = -pressure n.
+  template <int dim>
+  struct ContactNodeTraction
+  {
+    /// Position of the slave node (a support point of the displacement
+    /// element on the slave surface: a vertex, or for degree 2 also an edge
+    /// midpoint / face centre).
+    Point<dim> location;
+    /// Outward unit normal of the slave surface at the node (it is normalized
+    /// again internally).
+    Tensor<1, dim> normal;
+    /// Contact pressure, > 0 in compression.
+    double pressure;
+  };
+
+  /**
+   * The SPR error estimator of the elastic stress.
+   *
+   * Outline (details in source/stress_recovery.cc):
+   *
+   * - sigma_h = C(material id) : eps(u_h) is sampled at the Gauss points of the
+   *   p-point rule per direction (p = displacement degree) of every cell.
+   * - For every vertex and every body (material id) whose cells touch the
+   *   vertex, the patch is the set of active cells of that body that have the
+   *   vertex as one of their vertices. Each stress component is fitted there by
+   *   least squares with a complete polynomial of degree p in coordinates
+   *   centred at the vertex and scaled by the patch radius. Bodies are never
+   *   mixed, also if two bodies share a vertex.
+   * - Patches with too few / degenerate sampling points (boundary and corner
+   *   vertices) use the average of the full fits of the neighbouring vertices
+   *   (the vertices of the patch cells), evaluated at the point in question,
+   *   which is the classical Zienkiewicz-Zhu treatment of boundary nodes.
+   * - Contact terms: a contact node that lies on a boundary face of a patch
+   *   cell whose outward normal points along the node's normal (i.e. the
+   *   slave side) adds penalty rows (n.sigma*.n + p)^2 and |(I - n n) sigma* n|^2
+   *   to that patch's least-squares functional; the weights are the
+   *   dimensionless Settings penalties times the mean diagonal entry of the
+   *   patch's least-squares matrix.
+   * - The recovered field sigma* is a continuous FE_Q(p) field: the value at a
+   *   support point is the mean of the (effective) fits of the vertices of the
+   *   geometric object the support point belongs to; hanging support points
+   *   take their values from the hanging-node constraints.
+   * - eta_K^2 = int_K (sigma* - sigma_h) : C^{-1} : (sigma* - sigma_h).
+   */
+  template <int dim>
+  class StressRecovery
+  {
+  public:
+    struct Settings
+    {
+      /// false: plain SPR, the contact nodes are ignored.
+      bool contact_terms = true;
+      /// Weight of (n.sigma*.n + p)^2, relative to the patch's least-squares
+      /// scale (mean diagonal entry of the patch's sampling matrix).
+      double penalty_normal = 1e4;
+      /// Weight of |(I - n n) sigma* n|^2 (frictionless: zero shear traction),
+      /// relative to the same scale.
+      double penalty_tangential = 1e4;
+    };
+
+    struct Result
+    {
+      /// Size triangulation.n_active_cells(); eta_K on locally owned cells, 0
+      /// elsewhere.
+      Vector<float> cell_indicators;
+      /// eta = sqrt(sum_K eta_K^2) over all ranks.
+      double estimated_error = 0;
+      /// sqrt(sum_K int_K sigma_h : eps_h) over all ranks.
+      double solution_energy_norm = 0;
+      /// eta / solution_energy_norm (0 if both vanish, +inf if only the
+      /// energy norm vanishes).
+      double relative_error = 0;
+    };
+
+    /**
+     * Compute the estimate. @p dof_handler carries FESystem(FE_Q<dim>(p), dim)
+     * on a (parallel::distributed or serial) triangulation, @p solution is the
+     * ghosted (locally relevant) displacement, @p contact_nodes must be the
+     * same list on every rank. Collective over the triangulation's
+     * communicator.
+     */
+    static Result
+    estimate(const Mapping<dim>                           &mapping,
+             const DoFHandler<dim>                        &dof_handler,
+             const TrilinosWrappers::MPI::Vector          &solution,
+             const Materials<dim>                         &materials,
+             const std::vector<ContactNodeTraction<dim>> &contact_nodes,
+             const Settings                               &settings);
+  };
+} // namespace contact_fem
+
+#endif

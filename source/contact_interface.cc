@@ -1,0 +1,408 @@
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/boost_adaptors/bounding_box.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/numerics/rtree.h>
+
+#include <contact_fem/contact_interface.h>
+#include <contact_fem/mortar.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace contact_fem
+{
+  template <int dim>
+  void
+  ContactInterface<dim>::initialize(const Mapping<dim>              &mapping,
+                                    const DoFHandler<dim>           &dof_handler,
+                                    const std::vector<ContactPair>  &contact_pairs,
+                                    const AffineConstraints<double> &dirichlet,
+                                    const Materials<dim>            &materials,
+                                    const MPI_Comm                   comm)
+  {
+    AssertThrow(dim == 2,
+                ExcMessage("Contact: mortar contact is implemented in 2D only so far."));
+    pairs        = contact_pairs;
+    communicator = comm;
+    owned_dofs   = dof_handler.locally_owned_dofs();
+    const FiniteElement<dim> &fe = dof_handler.get_fe();
+    degree                       = fe.degree;
+    const unsigned int nodes_per_face = fe.n_dofs_per_face() / dim;
+
+    // Support points of the base element on a face, in face DoF order.
+    const Quadrature<dim - 1> support(fe.base_element(0).get_unit_face_support_points());
+    FEFaceValues<dim>         fe_face(mapping, fe, support,
+                              update_quadrature_points | update_normal_vectors);
+
+    // Pack the local faces: [pair, slave, E, nu, orientation, then per node:
+    // coordinates, dofs, fixed flags].
+    std::vector<double>                  packed;
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            for (unsigned int p = 0; p < pairs.size(); ++p)
+              for (const bool slave : {true, false})
+                {
+                  const types::boundary_id id = slave ? pairs[p].slave : pairs[p].master;
+                  if (cell->face(f)->boundary_id() != id)
+                    continue;
+                  fe_face.reinit(cell, f);
+                  cell->face(f)->get_dof_indices(face_dofs);
+                  std::vector<std::array<types::global_dof_index, dim>> node_dofs(
+                    nodes_per_face);
+                  for (unsigned int i = 0; i < face_dofs.size(); ++i)
+                    {
+                      const auto ci = fe.face_system_to_component_index(i, f);
+                      node_dofs[ci.second][ci.first] = face_dofs[i];
+                    }
+                  // Orientation: compare the rotated tangent of the node
+                  // polygon with the outward normal.
+                  Mortar::LineFace line;
+                  for (unsigned int k = 0; k < nodes_per_face; ++k)
+                    {
+                      Point<2> x;
+                      for (unsigned int d = 0; d < 2; ++d)
+                        x[d] = fe_face.quadrature_point(k)[d];
+                      line.nodes.push_back(x);
+                    }
+                  const Tensor<1, 2> n_rot = Mortar::face_normal(line, -1., 1.);
+                  double             dot   = 0.;
+                  for (unsigned int d = 0; d < 2; ++d)
+                    dot += n_rot[d] * fe_face.normal_vector(0)[d];
+
+                  packed.push_back(p);
+                  packed.push_back(slave ? 1. : 0.);
+                  packed.push_back(materials.constants(cell->material_id()).youngs_modulus);
+                  packed.push_back(materials.constants(cell->material_id()).poisson_ratio);
+                  packed.push_back(dot > 0 ? 1. : -1.);
+                  for (unsigned int k = 0; k < nodes_per_face; ++k)
+                    {
+                      for (unsigned int d = 0; d < dim; ++d)
+                        packed.push_back(fe_face.quadrature_point(k)[d]);
+                      for (unsigned int d = 0; d < dim; ++d)
+                        packed.push_back(static_cast<double>(node_dofs[k][d]));
+                      for (unsigned int d = 0; d < dim; ++d)
+                        {
+                          const auto dof = node_dofs[k][d];
+                          const bool fixed =
+                            dirichlet.is_constrained(dof) &&
+                            dirichlet.get_constraint_entries(dof)->empty();
+                          packed.push_back(fixed ? 1. : 0.);
+                        }
+                    }
+                }
+
+    const auto all = Utilities::MPI::all_gather(comm, packed);
+
+    nodes.clear();
+    faces.clear();
+    std::map<types::global_dof_index, unsigned int> node_of_dof;
+    const unsigned int record = 5 + nodes_per_face * 3 * dim;
+    for (const auto &chunk : all)
+      for (unsigned int r = 0; r + record <= chunk.size(); r += record)
+        {
+          Face face;
+          face.pair           = static_cast<unsigned int>(chunk[r]);
+          face.slave          = chunk[r + 1] > 0.5;
+          face.youngs_modulus = chunk[r + 2];
+          face.poisson_ratio  = chunk[r + 3];
+          face.orientation    = chunk[r + 4];
+          for (unsigned int k = 0; k < nodes_per_face; ++k)
+            {
+              const double *data = &chunk[r + 5 + k * 3 * dim];
+              Node          node;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  node.reference[d] = data[d];
+                  node.dofs[d] = static_cast<types::global_dof_index>(data[dim + d]);
+                  node.fixed[d] = data[2 * dim + d] > 0.5;
+                }
+              const auto it = node_of_dof.find(node.dofs[0]);
+              unsigned int index;
+              if (it == node_of_dof.end())
+                {
+                  index                     = nodes.size();
+                  node_of_dof[node.dofs[0]] = index;
+                  nodes.push_back(node);
+                }
+              else
+                index = it->second;
+              (face.slave ? nodes[index].slave : nodes[index].master) = true;
+              face.nodes.push_back(index);
+            }
+          faces.push_back(face);
+        }
+
+    interface_dofs.clear();
+    for (const auto &node : nodes)
+      for (unsigned int d = 0; d < dim; ++d)
+        interface_dofs.push_back(node.dofs[d]);
+    std::sort(interface_dofs.begin(), interface_dofs.end());
+    dof_position.clear();
+    for (unsigned int i = 0; i < interface_dofs.size(); ++i)
+      dof_position[interface_dofs[i]] = i;
+    slave_nodes.clear();
+    statistics.assign(pairs.size(), PairStatistics());
+  }
+
+  template <int dim>
+  std::vector<double>
+  ContactInterface<dim>::gather(const TrilinosWrappers::MPI::Vector &v) const
+  {
+    return gather([&v](const types::global_dof_index i) { return v(i); });
+  }
+
+  template <int dim>
+  std::vector<double>
+  ContactInterface<dim>::gather(
+    const std::function<double(types::global_dof_index)> &value_on_owner) const
+  {
+    std::vector<double> values(interface_dofs.size(), 0.);
+    for (unsigned int i = 0; i < interface_dofs.size(); ++i)
+      if (owned_dofs.is_element(interface_dofs[i]))
+        values[i] = value_on_owner(interface_dofs[i]);
+    // Each value has exactly one owner, so the sum is exact.
+    std::vector<double> result(values.size());
+    Utilities::MPI::sum(ArrayView<const double>(values), communicator,
+                        ArrayView<double>(result));
+    return result;
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  ContactInterface<dim>::displacement(const unsigned int         n,
+                                      const std::vector<double> &u) const
+  {
+    Tensor<1, dim> result;
+    for (unsigned int d = 0; d < dim; ++d)
+      result[d] = u[dof_position.at(nodes[n].dofs[d])];
+    return result;
+  }
+
+  template <int dim>
+  double
+  ContactInterface<dim>::gap(const SlaveNode &s, const std::vector<double> &u) const
+  {
+    Tensor<1, dim> weighted = -s.D * (nodes[s.node].reference + displacement(s.node, u));
+    for (const auto &[m, value] : s.M)
+      weighted += value * (nodes[m].reference + displacement(m, u));
+    return s.normal * weighted / s.D;
+  }
+
+  namespace
+  {
+    template <int dim>
+    Mortar::LineFace
+    current_face(const typename ContactInterface<dim>::Face              &face,
+                 const std::vector<typename ContactInterface<dim>::Node> &nodes,
+                 const std::vector<Tensor<1, dim>>                       &u)
+    {
+      Mortar::LineFace line;
+      for (const unsigned int n : face.nodes)
+        {
+          Point<2> x;
+          for (unsigned int d = 0; d < 2; ++d)
+            x[d] = nodes[n].reference[d] + u[n][d];
+          line.nodes.push_back(x);
+        }
+      return line;
+    }
+
+    double
+    face_length(const Mortar::LineFace &line)
+    {
+      const QGauss<1> q(3);
+      double          length = 0.;
+      for (unsigned int i = 0; i < q.size(); ++i)
+        length += 2. * q.weight(i) * line.tangent(2. * q.point(i)[0] - 1.).norm();
+      return length;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ContactInterface<dim>::update(const std::vector<double> &u_at_dofs,
+                                const double               search_factor)
+  {
+    if constexpr (dim != 2)
+      {
+        (void)u_at_dofs;
+        (void)search_factor;
+        AssertThrow(false, ExcNotImplemented());
+      }
+    else
+      {
+        std::vector<Tensor<1, dim>> u(nodes.size());
+        for (unsigned int n = 0; n < nodes.size(); ++n)
+          u[n] = displacement(n, u_at_dofs);
+
+        std::vector<Mortar::LineFace> lines(faces.size());
+        std::vector<double>           lengths(faces.size());
+        for (unsigned int f = 0; f < faces.size(); ++f)
+          {
+            lines[f]   = current_face<dim>(faces[f], nodes, u);
+            lengths[f] = face_length(lines[f]);
+          }
+
+        // Nodal normals, areas and sizes of the slave nodes.
+        std::map<unsigned int, SlaveNode> slave_data;
+        for (unsigned int f = 0; f < faces.size(); ++f)
+          if (faces[f].slave)
+            for (unsigned int k = 0; k < faces[f].nodes.size(); ++k)
+              {
+                SlaveNode &s = slave_data[faces[f].nodes[k]];
+                s.node       = faces[f].nodes[k];
+                s.pair       = faces[f].pair;
+                const Tensor<1, 2> n =
+                  Mortar::face_normal(lines[f], Mortar::node_parameter(degree, k),
+                                      faces[f].orientation);
+                for (unsigned int d = 0; d < 2; ++d)
+                  s.normal[d] += lengths[f] * n[d];
+                const QGauss<1> q(degree + 1);
+                for (unsigned int i = 0; i < q.size(); ++i)
+                  {
+                    const double xi = 2. * q.point(i)[0] - 1.;
+                    s.full_area += 2. * q.weight(i) * lines[f].tangent(xi).norm() *
+                                   Mortar::shape_value(degree, k, xi);
+                  }
+                s.size += lengths[f] / degree;
+              }
+        std::map<unsigned int, unsigned int> n_adjacent;
+        for (const auto &face : faces)
+          if (face.slave)
+            for (const unsigned int n : face.nodes)
+              ++n_adjacent[n];
+        for (auto &[n, s] : slave_data)
+          {
+            s.normal /= s.normal.norm();
+            s.size /= n_adjacent[n];
+          }
+
+        // Broad phase: one R-tree of master face boxes per pair.
+        statistics.assign(pairs.size(), PairStatistics());
+        std::map<unsigned int, std::map<unsigned int, double>> M_of_node;
+        std::vector<bool> master_is_candidate(faces.size(), false);
+        for (unsigned int p = 0; p < pairs.size(); ++p)
+          {
+            std::vector<std::pair<BoundingBox<dim>, unsigned int>> master_boxes;
+            for (unsigned int f = 0; f < faces.size(); ++f)
+              if (!faces[f].slave && faces[f].pair == p)
+                {
+                  std::vector<Point<dim>> points;
+                  for (const auto &x : lines[f].nodes)
+                    points.push_back(Point<dim>(x[0], x[1]));
+                  BoundingBox<dim> box(points);
+                  box.extend(1e-2 * lengths[f]);
+                  master_boxes.emplace_back(box, f);
+                  ++statistics[p].master_faces;
+                }
+            const auto tree = pack_rtree(master_boxes);
+
+            double       slave_length = 0., slave_modulus = 0.;
+            unsigned int n_overlapping_faces = 0;
+            for (unsigned int f = 0; f < faces.size(); ++f)
+              {
+                if (!faces[f].slave || faces[f].pair != p)
+                  continue;
+                ++statistics[p].slave_faces;
+                std::vector<Point<dim>> points;
+                for (const auto &x : lines[f].nodes)
+                  points.push_back(Point<dim>(x[0], x[1]));
+                BoundingBox<dim> box(points);
+                box.extend(search_factor * lengths[f]);
+
+                std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
+                tree.query(boost::geometry::index::intersects(box),
+                           std::back_inserter(hits));
+                std::sort(hits.begin(), hits.end(),
+                          [](const auto &a, const auto &b) { return a.second < b.second; });
+                if (hits.empty())
+                  continue;
+
+                // Narrow phase: opposing normals, then exact segmentation.
+                std::vector<Tensor<1, 2>> normals;
+                for (const unsigned int n : faces[f].nodes)
+                  {
+                    Tensor<1, 2> nn;
+                    for (unsigned int d = 0; d < 2; ++d)
+                      nn[d] = slave_data[n].normal[d];
+                    normals.push_back(nn);
+                  }
+                const Tensor<1, 2> n_slave =
+                  Mortar::face_normal(lines[f], 0., faces[f].orientation);
+                const FullMatrix<double> A = Mortar::dual_basis_coefficients(lines[f]);
+                bool                     overlapping = false;
+                for (const auto &hit : hits)
+                  {
+                    const unsigned int m = hit.second;
+                    ++statistics[p].candidate_pairs;
+                    const Tensor<1, 2> n_master =
+                      Mortar::face_normal(lines[m], 0., faces[m].orientation);
+                    if (n_slave * n_master >= 0.)
+                      continue;
+                    Mortar::SegmentOperators ops;
+                    if (!Mortar::integrate_pair(lines[f], normals, A, lines[m],
+                                                degree + 3, ops))
+                      continue;
+                    ++statistics[p].overlapping_pairs;
+                    overlapping            = true;
+                    master_is_candidate[m] = true;
+                    for (unsigned int j = 0; j < faces[f].nodes.size(); ++j)
+                      {
+                        SlaveNode &s = slave_data[faces[f].nodes[j]];
+                        s.D += ops.D[j];
+                        for (unsigned int l = 0; l < faces[m].nodes.size(); ++l)
+                          M_of_node[s.node][faces[m].nodes[l]] += ops.M(j, l);
+                      }
+                  }
+                if (overlapping)
+                  {
+                    ++n_overlapping_faces;
+                    slave_length += lengths[f];
+                    slave_modulus += lengths[f] * faces[f].youngs_modulus;
+                  }
+              }
+
+            double master_length = 0., master_modulus = 0.;
+            unsigned int n_master = 0;
+            for (unsigned int f = 0; f < faces.size(); ++f)
+              if (!faces[f].slave && faces[f].pair == p && master_is_candidate[f])
+                {
+                  master_length += lengths[f];
+                  master_modulus += lengths[f] * faces[f].youngs_modulus;
+                  ++n_master;
+                }
+            // Moduli and sizes of the overlapping faces only: the parts of
+            // the surfaces far from contact must not dilute the penalty.
+            PairStatistics &stat = statistics[p];
+            if (n_overlapping_faces > 0)
+              {
+                stat.slave_modulus    = slave_modulus / slave_length;
+                stat.mean_slave_size  = slave_length / n_overlapping_faces;
+                stat.master_modulus   = master_modulus / master_length;
+                stat.mean_master_size = master_length / n_master;
+              }
+          }
+
+        // A node counts as paired when the master covers a fair part of its
+        // support; tiny or negative dual weights at the rim of the master
+        // surface would make its gap ill-defined.
+        slave_nodes.clear();
+        for (auto &[n, s] : slave_data)
+          {
+            s.paired = s.D > 1e-2 * s.full_area;
+            if (s.paired)
+              for (const auto &[m, value] : M_of_node[n])
+                s.M.emplace_back(m, value);
+            slave_nodes.push_back(s);
+          }
+      }
+  }
+
+  template class ContactInterface<2>;
+  template class ContactInterface<3>;
+} // namespace contact_fem

@@ -1,0 +1,380 @@
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <contact_fem/contact_problem.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <unordered_map>
+
+namespace contact_fem
+{
+  namespace
+  {
+    /// Von Mises stress of the FE displacement, cell by cell material.
+    template <int dim>
+    class VonMises : public DataPostprocessorScalar<dim>
+    {
+    public:
+      explicit VonMises(const Materials<dim> &materials)
+        : DataPostprocessorScalar<dim>("von_Mises", update_gradients)
+        , materials(materials)
+      {}
+
+      void
+      evaluate_vector_field(const DataPostprocessorInputs::Vector<dim> &inputs,
+                            std::vector<Vector<double>> &computed) const override
+      {
+        const auto id = inputs.template get_cell<dim>()->material_id();
+        for (unsigned int q = 0; q < computed.size(); ++q)
+          {
+            SymmetricTensor<2, dim> strain;
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j <= i; ++j)
+                strain[i][j] =
+                  0.5 * (inputs.solution_gradients[q][i][j] + inputs.solution_gradients[q][j][i]);
+            computed[q](0) = materials.von_mises(id, materials.stress(id, strain));
+          }
+      }
+
+    private:
+      const Materials<dim> &materials;
+    };
+  } // namespace
+
+  template <int dim>
+  Tensor<1, dim>
+  ContactProblem<dim>::applied_load(const double time) const
+  {
+    const QGauss<dim - 1> quadrature(degree + 1);
+    FEFaceValues<dim>     fe_face(mapping, fe, quadrature,
+                              update_normal_vectors | update_quadrature_points |
+                                update_JxW_values);
+    Tensor<1, dim> force;
+    for (const auto &condition : boundary_conditions.pressures)
+      {
+        FunctionParser<dim> pressure(1);
+        pressure.initialize(dim == 2 ? "x,y,t" : "x,y,z,t", condition.expression, {}, true);
+        pressure.set_time(time);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const auto f : cell->face_indices())
+              if (cell->face(f)->at_boundary() &&
+                  cell->face(f)->boundary_id() == condition.boundary_id)
+                {
+                  fe_face.reinit(cell, f);
+                  for (unsigned int q = 0; q < quadrature.size(); ++q)
+                    force -= pressure.value(fe_face.quadrature_point(q)) *
+                             fe_face.normal_vector(q) * fe_face.JxW(q);
+                }
+      }
+    for (unsigned int d = 0; d < dim; ++d)
+      force[d] = Utilities::MPI::sum(force[d], comm);
+    return force;
+  }
+
+  template <int dim>
+  Json
+  ContactProblem<dim>::contact_results() const
+  {
+    Json result = Json::object();
+    if (!contact)
+      return result;
+    unsigned int   n_slave = 0, n_active = 0;
+    double         p_max = 0., size_sum = 0.;
+    double         x_min = std::numeric_limits<double>::max(), x_max = -x_min;
+    Tensor<1, dim> force;
+    for (const auto &node : interface->nodes)
+      n_slave += node.slave;
+    for (const auto &s : interface->slave_nodes)
+      if (s.paired && contact->active[s.node])
+        {
+          ++n_active;
+          const double p = contact->pressure[s.node];
+          p_max          = std::max(p_max, p);
+          force += p * s.D * s.normal;
+          size_sum += s.size;
+          const double x = interface->nodes[s.node].reference[0] +
+                           interface->displacement(s.node, interface_displacement)[0];
+          x_min = std::min(x_min, x);
+          x_max = std::max(x_max, x);
+        }
+    result.set("slave_nodes", n_slave)
+      .set("active_slave_nodes", n_active)
+      .set("contact_half_width", n_active > 0 ? 0.5 * (x_max - x_min) : 0.)
+      .set("max_contact_pressure", p_max)
+      .set("total_contact_force", force.norm())
+      .set("slave_element_size", n_active > 0 ? size_sum / n_active : 0.)
+      .set("penalty", contact->penalty.empty() ? 0. : contact->penalty[0])
+      .set("scale_factor", contact->scale.empty() ? 0. : contact->scale[0]);
+    return result;
+  }
+
+  template <int dim>
+  Json
+  ContactProblem<dim>::reaction_results() const
+  {
+    // Reactions are the residual K u - f at the Dirichlet DoFs.
+    std::vector<unsigned int> component_of_dof;
+    Tensor<1, dim>            reaction;
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    std::set<types::global_dof_index>    seen;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            if (owned_dofs.is_element(dofs[i]) &&
+                dirichlet_constraints.is_constrained(dofs[i]) &&
+                seen.insert(dofs[i]).second)
+              reaction[fe.system_to_component_index(i).first] += residual(dofs[i]);
+        }
+    for (unsigned int d = 0; d < dim; ++d)
+      reaction[d] = Utilities::MPI::sum(reaction[d], comm);
+    const Tensor<1, dim> load  = applied_load(current_time);
+    const double         scale = std::max(load.norm(), reaction.norm());
+    Json                 result = Json::object();
+    result.set("applied_load", load.norm())
+      .set("support_reaction", reaction.norm())
+      .set("relative_imbalance", scale > 0. ? (load + reaction).norm() / scale : 0.);
+    return result;
+  }
+
+  namespace
+  {
+    /// Plane-strain Hertz contact of a cylinder on a plane.
+    struct Hertz
+    {
+      double a, p_max;
+      double
+      pressure(const double x) const
+      {
+        return std::abs(x) < a ? p_max * std::sqrt(1. - x * x / (a * a)) : 0.;
+      }
+    };
+
+    template <int dim>
+    Hertz
+    hertz_solution(const ContactInterface<dim> &interface,
+                   const double                 load,
+                   const double                 radius)
+    {
+      double E[2] = {0., 0.}, nu[2] = {0., 0.};
+      for (const auto &face : interface.faces)
+        if (face.pair == 0)
+          {
+            E[face.slave]  = face.youngs_modulus;
+            nu[face.slave] = face.poisson_ratio;
+          }
+      const double E_star =
+        1. / ((1. - nu[0] * nu[0]) / E[0] + (1. - nu[1] * nu[1]) / E[1]);
+      Hertz h;
+      h.a     = std::sqrt(4. * load * radius / (numbers::PI * E_star));
+      h.p_max = 2. * load / (numbers::PI * h.a);
+      return h;
+    }
+  } // namespace
+
+  template <int dim>
+  Json
+  ContactProblem<dim>::analytical_results(const Json &, const Json &) const
+  {
+    Json result = Json::object();
+    if (!contact)
+      return result;
+    const double load = applied_load(current_time).norm();
+    const Hertz  h    = hertz_solution(*interface, load, analytical.radius);
+    double       p_num = 0., x_min = 1e300, x_max = -1e300, size = 0.;
+    unsigned int n_active = 0;
+    for (const auto &s : interface->slave_nodes)
+      if (s.paired && contact->active[s.node])
+        {
+          p_num = std::max(p_num, contact->pressure[s.node]);
+          const double x = interface->nodes[s.node].reference[0] +
+                           interface->displacement(s.node, interface_displacement)[0];
+          x_min = std::min(x_min, x);
+          x_max = std::max(x_max, x);
+          size += s.size;
+          ++n_active;
+        }
+    const double a_num = n_active > 0 ? 0.5 * (x_max - x_min) : 0.;
+    size               = n_active > 0 ? size / n_active : 0.;
+    result.set("type", analytical.type)
+      .set("load", load)
+      .set("a", h.a)
+      .set("p_max", h.p_max)
+      .set("a_error", std::abs(a_num - h.a))
+      .set("a_error_in_slave_elements", size > 0. ? std::abs(a_num - h.a) / size : 0.)
+      .set("p_max_relative_error", (p_num - h.p_max) / h.p_max);
+    return result;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::write_pressure_profile() const
+  {
+    const bool   hertz = analytical.type == "hertz cylinder";
+    Hertz        h{0., 0.};
+    if (hertz) // applied_load() is collective: every rank calls it
+      h = hertz_solution(*interface, applied_load(current_time).norm(), analytical.radius);
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    std::vector<std::array<double, 5>> rows;
+    for (const auto &s : interface->slave_nodes)
+      if (s.paired)
+        {
+          const double x = interface->nodes[s.node].reference[0] +
+                           interface->displacement(s.node, interface_displacement)[0];
+          rows.push_back({{x, contact->pressure[s.node],
+                          hertz ? h.pressure(x - analytical.center) : 0.,
+                          interface->gap(s, interface_displacement),
+                          contact->active[s.node] ? 1. : 0.}});
+        }
+    std::sort(rows.begin(), rows.end());
+    std::ofstream out(output.directory + "/pressure_profile.csv");
+    out << "x,pressure,hertz_pressure,gap,active\n" << std::setprecision(10);
+    for (const auto &r : rows)
+      out << r[0] << ',' << r[1] << ',' << r[2] << ',' << r[3] << ',' << r[4] << '\n';
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::write_vtu(const unsigned int step, const double time)
+  {
+    TimerOutput::Scope t(*timer, "Output: VTU");
+    // Nodal contact fields live on a scalar Q_p space on the same mesh.
+    const FE_Q<dim> scalar_fe(degree);
+    DoFHandler<dim> scalar_dofs(triangulation);
+    scalar_dofs.distribute_dofs(scalar_fe);
+    const IndexSet scalar_owned = scalar_dofs.locally_owned_dofs();
+    IndexSet       scalar_relevant;
+    DoFTools::extract_locally_relevant_dofs(scalar_dofs, scalar_relevant);
+
+    const std::vector<std::string> names = {"contact_pressure", "weighted_gap", "active",
+                                            "slave", "master"};
+    std::vector<TrilinosWrappers::MPI::Vector> fields(names.size());
+    for (auto &f : fields)
+      f.reinit(scalar_owned, comm);
+
+    if (interface)
+      {
+        std::unordered_map<types::global_dof_index, unsigned int> node_of_dof;
+        for (unsigned int n = 0; n < interface->nodes.size(); ++n)
+          node_of_dof[interface->nodes[n].dofs[0]] = n;
+        std::vector<double> gap(interface->nodes.size(), 0.);
+        for (const auto &s : interface->slave_nodes)
+          if (s.paired)
+            gap[s.node] = interface->gap(s, interface_displacement);
+
+        std::vector<types::global_dof_index> vector_dofs(fe.n_dofs_per_cell()),
+          scalar_dofs_of_cell(scalar_fe.n_dofs_per_cell());
+        auto scalar_cell = scalar_dofs.begin_active();
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          {
+            if (cell->is_locally_owned())
+              {
+                cell->get_dof_indices(vector_dofs);
+                scalar_cell->get_dof_indices(scalar_dofs_of_cell);
+                for (unsigned int i = 0; i < vector_dofs.size(); ++i)
+                  {
+                    const auto ci = fe.system_to_component_index(i);
+                    const auto it = node_of_dof.find(vector_dofs[i]);
+                    if (ci.first != 0 || it == node_of_dof.end())
+                      continue;
+                    const auto scalar_dof = scalar_dofs_of_cell[ci.second];
+                    if (!scalar_owned.is_element(scalar_dof))
+                      continue;
+                    const unsigned int n = it->second;
+                    fields[0](scalar_dof) = contact->pressure[n];
+                    fields[1](scalar_dof) = gap[n];
+                    fields[2](scalar_dof) = contact->active[n] ? 1. : 0.;
+                    fields[3](scalar_dof) = interface->nodes[n].slave ? 1. : 0.;
+                    fields[4](scalar_dof) = interface->nodes[n].master ? 1. : 0.;
+                  }
+              }
+            ++scalar_cell;
+          }
+      }
+    std::vector<TrilinosWrappers::MPI::Vector> ghosted_fields(names.size());
+    for (unsigned int k = 0; k < names.size(); ++k)
+      {
+        fields[k].compress(VectorOperation::insert);
+        ghosted_fields[k].reinit(scalar_owned, scalar_relevant, comm);
+        ghosted_fields[k] = fields[k];
+      }
+
+    DataOut<dim> data_out;
+    data_out.attach_triangulation(triangulation);
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      vector_field(dim, DataComponentInterpretation::component_is_part_of_vector);
+    data_out.add_data_vector(dof_handler, ghosted_solution,
+                             std::vector<std::string>(dim, "displacement"), vector_field);
+    const VonMises<dim> von_mises(materials);
+    data_out.add_data_vector(dof_handler, ghosted_solution, von_mises);
+    if (interface)
+      for (unsigned int k = 0; k < names.size(); ++k)
+        data_out.add_data_vector(scalar_dofs, ghosted_fields[k], names[k]);
+    Vector<float> material(triangulation.n_active_cells()),
+      subdomain(triangulation.n_active_cells());
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          material(cell->active_cell_index())  = cell->material_id();
+          subdomain(cell->active_cell_index()) = triangulation.locally_owned_subdomain();
+        }
+    data_out.add_data_vector(material, "material_id");
+    data_out.add_data_vector(subdomain, "subdomain");
+    data_out.build_patches(mapping, degree);
+    const std::string name = data_out.write_vtu_with_pvtu_record(
+      output.directory + "/", "solution", step + 1, comm, 3);
+    vtu_records.emplace_back(time, name);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::ofstream pvd(output.directory + "/solution.pvd");
+        DataOutBase::write_pvd_record(pvd, vtu_records);
+      }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::write_summary(const Json        &cycles,
+                                     const double       wall_time,
+                                     const std::string &status) const
+  {
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    Json summary = Json::object();
+    summary.set("scene", scene_name)
+      .set("dim", dim)
+      .set("mpi_processes", Utilities::MPI::n_mpi_processes(comm))
+      .set("status", status)
+      .set("degree", degree)
+      .set("wall_time", wall_time)
+      .set("cycles", cycles);
+    std::ofstream out(output.directory + "/summary.json");
+    summary.write(out);
+    out << '\n';
+  }
+
+  // The class is instantiated in contact_problem.cc; here only the members
+  // defined in this file.
+#define INSTANTIATE(dim)                                                        \
+  template Tensor<1, dim> ContactProblem<dim>::applied_load(const double) const; \
+  template Json           ContactProblem<dim>::contact_results() const;          \
+  template Json           ContactProblem<dim>::reaction_results() const;         \
+  template Json ContactProblem<dim>::analytical_results(const Json &,            \
+                                                        const Json &) const;     \
+  template void ContactProblem<dim>::write_pressure_profile() const;             \
+  template void ContactProblem<dim>::write_vtu(const unsigned int, const double); \
+  template void ContactProblem<dim>::write_summary(const Json &,                  \
+                                                   const double,                  \
+                                                   const std::string &) const;
+  INSTANTIATE(2)
+  INSTANTIATE(3)
+#undef INSTANTIATE
+} // namespace contact_fem

@@ -1,0 +1,644 @@
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <contact_fem/contact_problem.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+namespace contact_fem
+{
+  TeeStream::TeeStream(std::ostream &console)
+    : std::ostream(&buffer)
+  {
+    buffer.first = console.rdbuf();
+  }
+
+  void
+  TeeStream::attach(std::ostream &file)
+  {
+    flush();
+    buffer.second = file.rdbuf();
+  }
+
+  int
+  TeeStream::Buffer::overflow(int c)
+  {
+    if (c == EOF)
+      return !EOF;
+    const int a = first->sputc(c), b = second ? second->sputc(c) : c;
+    return (a == EOF || b == EOF) ? EOF : c;
+  }
+
+  int
+  TeeStream::Buffer::sync()
+  {
+    const int a = first->pubsync(), b = second ? second->pubsync() : 0;
+    return (a == 0 && b == 0) ? 0 : -1;
+  }
+
+  namespace
+  {
+    std::string
+    scientific(const double x, const unsigned int digits = 3)
+    {
+      std::ostringstream s;
+      s << std::scientific << std::setprecision(digits) << x;
+      return s.str();
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ContactProblem<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3),
+                      "Space dimension of the scene (only 2 is implemented so far).");
+    prm.enter_subsection("Finite element");
+    prm.declare_entry("Degree", "1", Patterns::Integer(1, 2),
+                      "Polynomial degree of the displacement (Q1 or Q2).");
+    prm.leave_subsection();
+    Scene<dim>::declare_parameters(prm);
+    Materials<dim>::declare_parameters(prm);
+    BoundaryConditions::declare_parameters(prm);
+    LoadStepping::declare_parameters(prm);
+    ContactParameters::declare_parameters(prm);
+    NewtonParameters::declare_parameters(prm);
+    AnalyticalSolution::declare_parameters(prm);
+    OutputParameters::declare_parameters(prm);
+  }
+
+  namespace
+  {
+    unsigned int
+    read_degree(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Finite element");
+      const unsigned int p = prm.get_integer("Degree");
+      prm.leave_subsection();
+      return p;
+    }
+  } // namespace
+
+  template <int dim>
+  ContactProblem<dim>::ContactProblem(ParameterHandler  &prm,
+                                      const std::string &scene_name,
+                                      const std::string &prm_directory)
+    : comm(MPI_COMM_WORLD)
+    , console(std::cout)
+    , pcout(console, Utilities::MPI::this_mpi_process(comm) == 0)
+    , scene_name(scene_name)
+    , degree(read_degree(prm))
+    , triangulation(comm,
+                    typename Triangulation<dim>::MeshSmoothing(
+                      Triangulation<dim>::limit_level_difference_at_vertices))
+    , fe(FE_Q<dim>(degree), dim)
+    , mapping(degree)
+    , dof_handler(triangulation)
+  {
+    // Every parameter is read and checked before any work is done.
+    scene.parse_parameters(prm, prm_directory);
+    materials.parse_parameters(prm);
+    boundary_conditions.parse_parameters(prm, dim);
+    load_stepping.parse_parameters(prm);
+    contact_parameters.parse_parameters(prm);
+    newton_parameters.parse_parameters(prm);
+    analytical.parse_parameters(prm);
+    output.parse_parameters(prm);
+
+    const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+    if (root)
+      {
+        std::error_code error;
+        std::filesystem::create_directories(output.directory, error);
+        AssertThrow(!error && std::filesystem::is_directory(output.directory),
+                    ExcMessage("Output directory: cannot create '" + output.directory +
+                               "': " + error.message()));
+        log_file.open(output.directory + "/log.txt");
+        console.attach(log_file);
+      }
+    timer = std::make_unique<TimerOutput>(comm, pcout, TimerOutput::never,
+                                          TimerOutput::wall_times);
+  }
+
+  template <int dim>
+  ContactProblem<dim>::~ContactProblem()
+  {
+    dof_handler.clear();
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::setup_dofs()
+  {
+    TimerOutput::Scope t(*timer, "Setup: DoFs");
+    dof_handler.distribute_dofs(fe);
+    owned_dofs = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
+
+    hanging_constraints.clear();
+    hanging_constraints.reinit(relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, hanging_constraints);
+    hanging_constraints.close();
+
+    solution.reinit(owned_dofs, comm);
+    ghosted_solution.reinit(owned_dofs, relevant_dofs, comm);
+
+    make_dirichlet_constraints(0.);
+    if (!contact_parameters.pairs.empty())
+      {
+        interface = std::make_unique<ContactInterface<dim>>();
+        interface->initialize(mapping, dof_handler, contact_parameters.pairs,
+                              dirichlet_constraints, materials, comm);
+        contact = std::make_unique<AlmFrictionless<dim>>(contact_parameters);
+        contact->initialize(*interface);
+      }
+    // Contact constraints couple slave DoFs to master DoFs anywhere: every
+    // rank may write to the rows and entries of all interface DoFs.
+    writable_dofs = relevant_dofs;
+    if (interface)
+      {
+        IndexSet interface_set(dof_handler.n_dofs());
+        interface_set.add_indices(interface->dofs().begin(), interface->dofs().end());
+        writable_dofs.add_indices(interface_set);
+      }
+    system_rhs.reinit(owned_dofs, writable_dofs, comm, true);
+    residual.reinit(owned_dofs, writable_dofs, comm, true);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::make_dirichlet_constraints(const double time)
+  {
+    dirichlet_constraints.clear();
+    dirichlet_constraints.reinit(relevant_dofs);
+    for (const auto &condition : boundary_conditions.displacements)
+      {
+        std::vector<std::string> expressions(dim, "0");
+        expressions[condition.component] = condition.expression;
+        FunctionParser<dim> function(dim);
+        function.initialize(dim == 2 ? "x,y,t" : "x,y,z,t", expressions, {}, true);
+        function.set_time(time);
+        ComponentMask mask(dim, false);
+        mask.set(condition.component, true);
+        VectorTools::interpolate_boundary_values(mapping, dof_handler,
+                                                 condition.boundary_id, function,
+                                                 dirichlet_constraints, mask);
+      }
+    dirichlet_constraints.close();
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::compute_cell_matrices()
+  {
+    TimerOutput::Scope t(*timer, "Assembly: bulk");
+    const QGauss<dim>  quadrature(degree + 1);
+    FEValues<dim>      fe_values(mapping, fe, quadrature,
+                            update_gradients | update_JxW_values);
+    const unsigned int n = fe.n_dofs_per_cell();
+    const FEValuesExtractors::Vector displacement(0);
+    std::vector<SymmetricTensor<2, dim>> strains(n);
+
+    cell_matrices.assign(triangulation.n_active_cells(), FullMatrix<double>());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          const SymmetricTensor<4, dim> C = materials.stiffness_tensor(cell->material_id());
+          FullMatrix<double>           &K = cell_matrices[cell->active_cell_index()];
+          K.reinit(n, n);
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              for (unsigned int i = 0; i < n; ++i)
+                strains[i] = fe_values[displacement].symmetric_gradient(i, q);
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const SymmetricTensor<2, dim> Ceps = C * strains[i];
+                  for (unsigned int j = 0; j <= i; ++j)
+                    K(i, j) += (Ceps * strains[j]) * fe_values.JxW(q);
+                }
+            }
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = i + 1; j < n; ++j)
+              K(i, j) = K(j, i);
+        }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::compute_cell_loads(const double time)
+  {
+    TimerOutput::Scope t(*timer, "Assembly: bulk");
+    const QGauss<dim - 1> quadrature(degree + 1);
+    FEFaceValues<dim>     fe_face(mapping, fe, quadrature,
+                              update_values | update_normal_vectors |
+                                update_quadrature_points | update_JxW_values);
+    std::vector<std::unique_ptr<FunctionParser<dim>>> pressures;
+    for (const auto &condition : boundary_conditions.pressures)
+      {
+        pressures.push_back(std::make_unique<FunctionParser<dim>>(1));
+        pressures.back()->initialize(dim == 2 ? "x,y,t" : "x,y,z,t",
+                                     condition.expression, {}, true);
+        pressures.back()->set_time(time);
+      }
+    cell_loads.assign(triangulation.n_active_cells(), Vector<double>());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            for (unsigned int c = 0; c < pressures.size(); ++c)
+              if (cell->face(f)->boundary_id() == boundary_conditions.pressures[c].boundary_id)
+                {
+                  fe_face.reinit(cell, f);
+                  Vector<double> &load = cell_loads[cell->active_cell_index()];
+                  if (load.size() == 0)
+                    load.reinit(fe.n_dofs_per_cell());
+                  for (unsigned int q = 0; q < quadrature.size(); ++q)
+                    {
+                      const double p = pressures[c]->value(fe_face.quadrature_point(q));
+                      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                        {
+                          const unsigned int comp = fe.system_to_component_index(i).first;
+                          load(i) -= p * fe_face.normal_vector(q)[comp] *
+                                     fe_face.shape_value(i, q) * fe_face.JxW(q);
+                        }
+                    }
+                }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::make_sparsity_pattern()
+  {
+    TimerOutput::Scope t(*timer, "Setup: sparsity");
+    // All candidate contact constraints at once: the pattern then holds
+    // every coupling any active set of this search can create, and the
+    // constrained rows keep their own entries (keep_constrained_dofs).
+    AffineConstraints<double> candidates;
+    candidates.reinit(writable_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, candidates);
+    if (contact)
+      contact->add_constraints(*interface, interface_fixed_values, candidates, true);
+    candidates.merge(dirichlet_constraints,
+                     AffineConstraints<double>::left_object_wins, true);
+    candidates.close();
+
+    // Every DoF of a cell couples with every other one and with the masters
+    // of those that are constrained: a superset of the couplings of any
+    // subset of the candidate constraints.
+    DynamicSparsityPattern               dsp(writable_dofs);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> closure;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          // A slave DoF may also be the parent of a hanging node: follow the
+          // hanging parents and the (closed) candidate masters of every DoF
+          // reached, so both the chained and the unchained forms are covered.
+          closure = dofs;
+          for (unsigned int k = 0; k < closure.size() && k < 64; ++k)
+            for (const auto *c : {&hanging_constraints, &candidates})
+              if (c->can_store_line(closure[k]))
+                if (const auto *entries = c->get_constraint_entries(closure[k]))
+                  for (const auto &entry : *entries)
+                    if (std::find(closure.begin(), closure.end(), entry.first) ==
+                        closure.end())
+                      closure.push_back(entry.first);
+          std::sort(closure.begin(), closure.end());
+          closure.erase(std::unique(closure.begin(), closure.end()), closure.end());
+          for (const auto row : closure)
+            dsp.add_entries(row, closure.begin(), closure.end(), true);
+        }
+    SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs, comm, writable_dofs);
+    system_matrix.reinit(owned_dofs, owned_dofs, dsp, comm);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::make_constraints()
+  {
+    constraints.clear();
+    constraints.reinit(writable_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    if (contact)
+      contact->add_constraints(*interface, interface_fixed_values, constraints);
+    constraints.merge(dirichlet_constraints,
+                      AffineConstraints<double>::left_object_wins, true);
+    constraints.close();
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::assemble_system()
+  {
+    TimerOutput::Scope t(*timer, "Assembly: system");
+    system_matrix = 0.;
+    system_rhs    = 0.;
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    const Vector<double>                 no_load(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          const unsigned int index = cell->active_cell_index();
+          const Vector<double> &load =
+            cell_loads[index].size() > 0 ? cell_loads[index] : no_load;
+          constraints.distribute_local_to_global(cell_matrices[index], load, dofs,
+                                                 system_matrix, system_rhs);
+        }
+    system_matrix.compress(VectorOperation::add);
+    system_rhs.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::solve_linear_system()
+  {
+    TimerOutput::Scope t(*timer, "Solve: linear");
+    SolverControl      control(1, 0.);
+    TrilinosWrappers::SolverDirect solver(
+      control, TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu"));
+    solver.solve(system_matrix, solution, system_rhs);
+    constraints.distribute(solution);
+    ghosted_solution = solution;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::compute_residual()
+  {
+    TimerOutput::Scope t(*timer, "Assembly: residual");
+    residual = 0.;
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    Vector<double> local_u(fe.n_dofs_per_cell()), local_r(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            local_u(i) = ghosted_solution(dofs[i]);
+          const unsigned int index = cell->active_cell_index();
+          cell_matrices[index].vmult(local_r, local_u);
+          if (cell_loads[index].size() > 0)
+            local_r -= cell_loads[index];
+          // Hanging DoFs pass their residual to their parents (C_h^T r).
+          hanging_constraints.distribute_local_to_global(local_r, dofs, residual);
+        }
+    residual.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  double
+  ContactProblem<dim>::equilibrium_residual_norm(
+    const std::vector<double> &contact_force) const
+  {
+    // Free DoFs: not Dirichlet, not hanging. Interface DoFs are added from
+    // the replicated interface data, the others by their owners.
+    double local = 0.;
+    for (const auto i : owned_dofs)
+      if (!dirichlet_constraints.is_constrained(i) && !hanging_constraints.is_constrained(i) &&
+          !(interface && std::binary_search(interface->dofs().begin(),
+                                            interface->dofs().end(), i)))
+        local += residual(i) * residual(i);
+    double sum = Utilities::MPI::sum(local, comm);
+    if (interface)
+      for (unsigned int k = 0; k < interface->dofs().size(); ++k)
+        if (!interface_dof_fixed[k])
+          {
+            const double r = interface_residual[k] - contact_force[k]; // K u - f - f_contact
+            sum += r * r;
+          }
+    return std::sqrt(sum);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::solve_load_step(const unsigned int step,
+                                       const double       time,
+                                       Json              &record)
+  {
+    Timer step_timer;
+    current_time = time;
+    make_dirichlet_constraints(time);
+    compute_cell_loads(time);
+    // Start from the last converged state with the new prescribed values.
+    dirichlet_constraints.distribute(solution);
+    ghosted_solution = solution;
+
+    if (contact)
+      {
+        TimerOutput::Scope t(*timer, "Contact: search");
+        interface_fixed_values = interface->gather([this](const types::global_dof_index i) {
+          return dirichlet_constraints.is_constrained(i) ?
+                   dirichlet_constraints.get_inhomogeneity(i) :
+                   0.;
+        });
+        interface_displacement = interface->gather(solution);
+        interface->update(interface_displacement, contact_parameters.search_factor);
+        contact->start_load_step(*interface, interface_displacement, step == 0);
+      }
+    make_sparsity_pattern();
+
+    pcout << "  Load step " << step + 1 << ", t = " << time << std::endl
+          << "    | it | disp. ratio | disp. abs | mult. ratio | mult. abs | changes | active |"
+          << std::endl;
+
+    // Residuals of the current iterate: the equilibrium of the free DoFs
+    // with the multipliers of the current active set, and the
+    // complementarity residual (gap of active nodes, multiplier / k of the
+    // others). With it > 0 the multipliers are first recovered from the
+    // solution of iteration it and the active set is updated.
+    double       reference_u = 0., reference_lambda = 0.;
+    bool         converged = false;
+    unsigned int iteration = 0;
+    for (; iteration <= newton_parameters.max_iterations; ++iteration)
+      {
+        if (iteration > 0)
+          {
+            make_constraints();
+            assemble_system();
+            solve_linear_system();
+          }
+        compute_residual();
+        unsigned int                    changes = 0;
+        typename AlmFrictionless<dim>::Residuals contact_residuals;
+        if (contact)
+          {
+            TimerOutput::Scope t(*timer, "Contact: active set");
+            interface_residual     = interface->gather(residual);
+            interface_displacement = interface->gather(solution);
+            if (iteration > 0)
+              {
+                contact->recover_multipliers(*interface, interface_residual);
+                changes = contact->update_active_set(*interface, interface_displacement);
+              }
+            contact_residuals = contact->residuals(*interface, interface_displacement);
+          }
+        else
+          contact_residuals.contact_force.assign(interface_residual.size(), 0.);
+
+        const double r_u      = equilibrium_residual_norm(contact_residuals.contact_force);
+        const double r_lambda = contact_residuals.multiplier;
+        if (!std::isfinite(r_u) || !std::isfinite(r_lambda))
+          throw NewtonFailure("load step " + std::to_string(step + 1) + " (t = " +
+                              std::to_string(time) + "), iteration " +
+                              std::to_string(iteration) +
+                              ": the residual is not a number (|r_u| = " + scientific(r_u) +
+                              ", |r_lambda| = " + scientific(r_lambda) +
+                              "). The linear system is singular or the input is "
+                              "extreme: is every body held by supports or by at "
+                              "least one active contact node?");
+        reference_u      = std::max(reference_u, r_u);
+        reference_lambda = std::max(reference_lambda, r_lambda);
+        const double ratio_u = reference_u > 0. ? r_u / reference_u : 0.;
+        const double ratio_lambda = reference_lambda > 0. ? r_lambda / reference_lambda : 0.;
+
+        converged =
+          iteration > 0 && changes == 0 &&
+          (ratio_u <= newton_parameters.displacement_relative_tolerance ||
+           r_u <= newton_parameters.displacement_absolute_tolerance) &&
+          (ratio_lambda <= newton_parameters.multiplier_relative_tolerance ||
+           r_lambda <= newton_parameters.multiplier_absolute_tolerance);
+
+        pcout << "    | " << std::setw(2) << iteration << " | " << std::setw(11)
+              << scientific(ratio_u) << " | " << std::setw(9) << scientific(r_u, 2)
+              << " | " << std::setw(11) << scientific(ratio_lambda) << " | "
+              << std::setw(9) << scientific(r_lambda, 2) << " | " << std::setw(7)
+              << (iteration == 0 ? std::string("-") : std::to_string(changes)) << " | "
+              << std::setw(6) << (contact ? contact->n_active() : 0u) << " |"
+              << (converged ? " converged" : "") << std::endl;
+        if (converged)
+          break;
+      }
+    if (!converged)
+      throw NewtonFailure("load step " + std::to_string(step + 1) + " (t = " +
+                          std::to_string(time) + ") did not converge in " +
+                          std::to_string(newton_parameters.max_iterations) +
+                          " iterations. Hint: more load steps, or a different "
+                          "penalty (Contact/Penalty).");
+
+    record.set("time", time)
+      .set("newton_iterations", iteration)
+      .set("converged", converged)
+      .set("active_slave_nodes", contact ? contact->n_active() : 0u)
+      .set("wall_time", step_timer.wall_time());
+  }
+
+  template <int dim>
+  int
+  ContactProblem<dim>::run()
+  {
+    Timer total_timer;
+    pcout << "contact_fem: scene '" << scene_name << "', " << dim << "D, "
+          << Utilities::MPI::n_mpi_processes(comm) << " MPI process(es)" << std::endl;
+
+    {
+      TimerOutput::Scope t(*timer, "Setup: mesh");
+      scene.create_mesh(triangulation);
+      std::set<types::material_id> material_ids;
+      for (const auto &[id, constants] : materials.bodies)
+        material_ids.insert(id);
+      std::set<types::boundary_id> boundary_ids;
+      for (const auto &c : boundary_conditions.displacements)
+        boundary_ids.insert(c.boundary_id);
+      for (const auto &c : boundary_conditions.pressures)
+        boundary_ids.insert(c.boundary_id);
+      for (const auto &pair : contact_parameters.pairs)
+        boundary_ids.insert({pair.slave, pair.master});
+      Scene<dim>::check_mesh(triangulation, material_ids, boundary_ids);
+    }
+
+    Json cycles = Json::array();
+    Json cycle_record = Json::object();
+    const unsigned int cycle = 0;
+    Timer cycle_timer;
+    setup_dofs();
+    if (interface)
+      {
+        interface_dof_fixed.assign(interface->dofs().size(), false);
+        for (const auto &node : interface->nodes)
+          for (unsigned int d = 0; d < dim; ++d)
+            interface_dof_fixed[interface->position(node.dofs[d])] = node.fixed[d];
+      }
+    compute_cell_matrices();
+    pcout << "Cycle " << cycle << ": " << triangulation.n_global_active_cells()
+          << " cells, " << dof_handler.n_dofs() << " DoFs";
+    if (interface)
+      {
+        unsigned int n_slave = 0;
+        for (const auto &node : interface->nodes)
+          n_slave += node.slave;
+        pcout << ", " << n_slave << " slave nodes";
+      }
+    pcout << std::endl;
+
+    Json steps = Json::array();
+    int  exit_code = 0;
+    try
+      {
+        for (unsigned int step = 0; step < load_stepping.n_steps; ++step)
+          {
+            const double time = load_stepping.end_time * (step + 1) / load_stepping.n_steps;
+            Json         step_record = Json::object();
+            solve_load_step(step, time, step_record);
+            steps.push(step_record);
+            if (output.write_vtu)
+              write_vtu(step, time);
+          }
+      }
+    catch (const NewtonFailure &failure)
+      {
+        pcout << std::endl << "Error: Newton failed at " << failure.what() << std::endl;
+        exit_code = 2;
+      }
+
+    cycle_record.set("cycle", cycle)
+      .set("n_cells", static_cast<double>(triangulation.n_global_active_cells()))
+      .set("n_dofs", static_cast<double>(dof_handler.n_dofs()))
+      .set("load_steps", steps);
+    if (exit_code == 0)
+      {
+        const Json contact_json  = contact_results();
+        const Json reaction_json = reaction_results();
+        cycle_record.set("contact", contact_json).set("reaction", reaction_json);
+        if (analytical.type != "none")
+          cycle_record.set("analytical", analytical_results(contact_json, reaction_json));
+        if (output.write_pressure_profile && contact)
+          write_pressure_profile();
+      }
+    cycle_record.set("wall_time", cycle_timer.wall_time());
+    Json timing = Json::object();
+    for (const auto &[name, seconds] :
+         timer->get_summary_data(TimerOutput::total_wall_time))
+      timing.set(name, seconds);
+    cycle_record.set("timing", timing);
+    cycles.push(cycle_record);
+
+    write_summary(cycles, total_timer.wall_time(),
+                  exit_code == 0 ? "converged" : "failed");
+    if (output.print_timing)
+      {
+        pcout << std::endl
+              << "Wall time: " << total_timer.wall_time() << " s, of which" << std::endl;
+        for (const auto &[name, seconds] :
+             timer->get_summary_data(TimerOutput::total_wall_time))
+          pcout << "  " << std::left << std::setw(22) << name << std::right
+                << std::setw(10) << std::fixed << std::setprecision(4) << seconds
+                << " s" << std::defaultfloat << std::setprecision(6) << std::endl;
+      }
+    return exit_code;
+  }
+
+  template class ContactProblem<2>;
+  template class ContactProblem<3>;
+} // namespace contact_fem

@@ -1,0 +1,157 @@
+#include <deal.II/base/exceptions.h>
+
+#include <contact_fem/material.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace contact_fem
+{
+  double
+  ElasticConstants::lambda() const
+  {
+    return youngs_modulus * poisson_ratio /
+           ((1. + poisson_ratio) * (1. - 2. * poisson_ratio));
+  }
+
+  double
+  ElasticConstants::mu() const
+  {
+    return youngs_modulus / (2. * (1. + poisson_ratio));
+  }
+
+  template <int dim>
+  void
+  Materials<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Materials");
+    prm.declare_entry("Material ids",
+                      "1, 2",
+                      Patterns::List(Patterns::Integer(0, 255), 1),
+                      "Material ids of the bodies (cell material ids of the mesh), "
+                      "one entry per body. The lists below give the constants in "
+                      "the same order.");
+    prm.declare_entry("Young's moduli",
+                      "200, 2e12",
+                      Patterns::List(Patterns::Double(), 1),
+                      "Young's modulus of each body, > 0. Units: stress.");
+    prm.declare_entry("Poisson's ratios",
+                      "0.3, 0.3",
+                      Patterns::List(Patterns::Double(), 1),
+                      "Poisson's ratio of each body, in (-1, 0.5). 2D bodies are "
+                      "in plane strain.");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  Materials<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Materials");
+    const auto ids = Utilities::string_to_int(
+      Utilities::split_string_list(prm.get("Material ids")));
+    const auto E = Utilities::string_to_double(
+      Utilities::split_string_list(prm.get("Young's moduli")));
+    const auto nu = Utilities::string_to_double(
+      Utilities::split_string_list(prm.get("Poisson's ratios")));
+    prm.leave_subsection();
+
+    AssertThrow(E.size() == ids.size() && nu.size() == ids.size(),
+                ExcMessage("Materials: 'Material ids', 'Young's moduli' and "
+                           "'Poisson's ratios' must have the same number of "
+                           "entries (got " +
+                           std::to_string(ids.size()) + ", " +
+                           std::to_string(E.size()) + ", " +
+                           std::to_string(nu.size()) + ")."));
+    bodies.clear();
+    for (unsigned int i = 0; i < ids.size(); ++i)
+      {
+        AssertThrow(std::isfinite(E[i]) && E[i] > 0.,
+                    ExcMessage("Materials/Young's moduli: entry " +
+                               std::to_string(i + 1) + " is " +
+                               std::to_string(E[i]) +
+                               "; expected a finite value > 0."));
+        AssertThrow(nu[i] > -1. && nu[i] < 0.5,
+                    ExcMessage("Materials/Poisson's ratios: entry " +
+                               std::to_string(i + 1) + " is " +
+                               std::to_string(nu[i]) +
+                               "; expected a value in (-1, 0.5)."));
+        AssertThrow(bodies.count(ids[i]) == 0,
+                    ExcMessage("Materials/Material ids: id " +
+                               std::to_string(ids[i]) + " is listed twice."));
+        bodies[ids[i]] = ElasticConstants{E[i], nu[i]};
+      }
+  }
+
+  template <int dim>
+  const ElasticConstants &
+  Materials<dim>::constants(const types::material_id id) const
+  {
+    const auto it = bodies.find(id);
+    AssertThrow(it != bodies.end(),
+                ExcMessage("Materials: the mesh has cells with material id " +
+                           std::to_string(id) +
+                           ", which 'Materials/Material ids' does not list."));
+    return it->second;
+  }
+
+  template <int dim>
+  SymmetricTensor<4, dim>
+  Materials<dim>::stiffness_tensor(const types::material_id id) const
+  {
+    const ElasticConstants &c = constants(id);
+    const double            lambda = c.lambda(), mu = c.mu();
+    SymmetricTensor<4, dim> C;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int l = 0; l < dim; ++l)
+            C[i][j][k][l] = ((i == k && j == l ? mu : 0.) +
+                             (i == l && j == k ? mu : 0.) +
+                             (i == j && k == l ? lambda : 0.));
+    return C;
+  }
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  Materials<dim>::stress(const types::material_id        id,
+                         const SymmetricTensor<2, dim> &strain) const
+  {
+    const ElasticConstants &c = constants(id);
+    return c.lambda() * trace(strain) * unit_symmetric_tensor<dim>() +
+           2. * c.mu() * strain;
+  }
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  Materials<dim>::compliance(const types::material_id        id,
+                             const SymmetricTensor<2, dim> &sigma) const
+  {
+    // Inverse of the (plane strain) law: eps = (sigma - lambda/(2 mu + dim
+    // lambda) tr(sigma) I) / (2 mu).
+    const ElasticConstants &c      = constants(id);
+    const double            lambda = c.lambda(), mu = c.mu();
+    return (sigma - lambda / (2. * mu + dim * lambda) * trace(sigma) *
+                      unit_symmetric_tensor<dim>()) /
+           (2. * mu);
+  }
+
+  template <int dim>
+  double
+  Materials<dim>::von_mises(const types::material_id        id,
+                            const SymmetricTensor<2, dim> &sigma) const
+  {
+    if (dim == 3)
+      return std::sqrt(1.5) * deviator(sigma).norm();
+    // Plane strain: sigma_zz = nu (sigma_xx + sigma_yy).
+    const double nu  = constants(id).poisson_ratio;
+    const double sxx = sigma[0][0], syy = sigma[1][1], sxy = sigma[0][1];
+    const double szz = nu * (sxx + syy);
+    return std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) +
+                            (szz - sxx) * (szz - sxx)) +
+                     3. * sxy * sxy);
+  }
+
+  template class Materials<2>;
+  template class Materials<3>;
+} // namespace contact_fem

@@ -1,0 +1,249 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <contact_fem/mortar.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace contact_fem
+{
+  namespace Mortar
+  {
+    double
+    node_parameter(const unsigned int p, const unsigned int i)
+    {
+      Assert(p == 1 || p == 2, ExcNotImplemented());
+      return (i == 0 ? -1. : (i == 1 ? 1. : 0.));
+      (void)p;
+    }
+
+    double
+    shape_value(const unsigned int p, const unsigned int i, const double xi)
+    {
+      if (p == 1)
+        return (i == 0 ? 0.5 * (1. - xi) : 0.5 * (1. + xi));
+      Assert(p == 2, ExcNotImplemented());
+      switch (i)
+        {
+          case 0:
+            return 0.5 * xi * (xi - 1.);
+          case 1:
+            return 0.5 * xi * (xi + 1.);
+          default:
+            return 1. - xi * xi;
+        }
+    }
+
+    double
+    shape_derivative(const unsigned int p, const unsigned int i, const double xi)
+    {
+      if (p == 1)
+        return (i == 0 ? -0.5 : 0.5);
+      Assert(p == 2, ExcNotImplemented());
+      switch (i)
+        {
+          case 0:
+            return xi - 0.5;
+          case 1:
+            return xi + 0.5;
+          default:
+            return -2. * xi;
+        }
+    }
+
+    Point<2>
+    LineFace::point(const double xi) const
+    {
+      Point<2> x;
+      for (unsigned int i = 0; i < nodes.size(); ++i)
+        x += shape_value(degree(), i, xi) * nodes[i];
+      return x;
+    }
+
+    Tensor<1, 2>
+    LineFace::tangent(const double xi) const
+    {
+      Tensor<1, 2> t;
+      for (unsigned int i = 0; i < nodes.size(); ++i)
+        t += shape_derivative(degree(), i, xi) * nodes[i];
+      return t;
+    }
+
+    Tensor<1, 2>
+    face_normal(const LineFace &face, const double xi, const double orientation)
+    {
+      const Tensor<1, 2> t = face.tangent(xi);
+      Tensor<1, 2>       n;
+      n[0] = t[1];
+      n[1] = -t[0];
+      return orientation * n / n.norm();
+    }
+
+    namespace
+    {
+      double
+      cross(const Tensor<1, 2> &a, const Tensor<1, 2> &b)
+      {
+        return a[0] * b[1] - a[1] * b[0];
+      }
+
+      /// Gauss rule on [-1, 1] (weights sum to 2).
+      void
+      gauss_rule(const unsigned int   n,
+                 std::vector<double> &points,
+                 std::vector<double> &weights)
+      {
+        const QGauss<1> q(n);
+        points.resize(n);
+        weights.resize(n);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            points[i]  = 2. * q.point(i)[0] - 1.;
+            weights[i] = 2. * q.weight(i);
+          }
+      }
+    } // namespace
+
+    FullMatrix<double>
+    dual_basis_coefficients(const LineFace &slave)
+    {
+      const unsigned int  p = slave.degree(), n = p + 1;
+      std::vector<double> xq, wq;
+      gauss_rule(p + 2, xq, wq);
+
+      FullMatrix<double> Me(n, n), De(n, n);
+      for (unsigned int q = 0; q < xq.size(); ++q)
+        {
+          const double jxw = slave.tangent(xq[q]).norm() * wq[q];
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              const double Nj = shape_value(p, j, xq[q]);
+              De(j, j) += Nj * jxw;
+              for (unsigned int k = 0; k < n; ++k)
+                Me(j, k) += Nj * shape_value(p, k, xq[q]) * jxw;
+            }
+        }
+      FullMatrix<double> Me_inverse(n, n), A(n, n);
+      Me_inverse.invert(Me);
+      De.mmult(A, Me_inverse);
+      return A;
+    }
+
+    bool
+    project_along(const LineFace     &face,
+                  const Point<2>     &x,
+                  const Tensor<1, 2> &direction,
+                  double             &eta)
+    {
+      // f(eta) = (face(eta) - x) x d; linear in eta for straight faces.
+      eta = 0.;
+      const double scale = face.tangent(0.).norm() * direction.norm();
+      for (unsigned int it = 0; it < 20; ++it)
+        {
+          const double f  = cross(face.point(eta) - x, direction);
+          const double df = cross(face.tangent(eta), direction);
+          if (std::abs(df) < 1e-12 * scale)
+            return false;
+          const double step = f / df;
+          eta -= step;
+          if (std::abs(step) < 1e-13)
+            return std::isfinite(eta);
+        }
+      return false;
+    }
+
+    namespace
+    {
+      /// Slave parameter xi whose point, moved along the interpolated nodal
+      /// normal n(xi), passes through @p x: (x - s(xi)) x n(xi) = 0. Newton
+      /// from xi = 0 (a quadratic equation for straight slave faces).
+      bool
+      slave_image(const LineFace                   &slave,
+                  const std::vector<Tensor<1, 2>> &normals,
+                  const Point<2>                  &x,
+                  double                          &xi)
+      {
+        const unsigned int p = slave.degree();
+        xi                   = 0.;
+        for (unsigned int it = 0; it < 30; ++it)
+          {
+            Tensor<1, 2> n, dn;
+            for (unsigned int i = 0; i <= p; ++i)
+              {
+                n += shape_value(p, i, xi) * normals[i];
+                dn += shape_derivative(p, i, xi) * normals[i];
+              }
+            const Tensor<1, 2> r  = x - slave.point(xi);
+            const double       f  = cross(r, n);
+            const double       df = cross(-slave.tangent(xi), n) + cross(r, dn);
+            if (std::abs(df) < 1e-14 * slave.tangent(xi).norm())
+              return false;
+            const double step = f / df;
+            xi -= step;
+            if (std::abs(step) < 1e-13)
+              return std::isfinite(xi);
+          }
+        return false;
+      }
+    } // namespace
+
+    bool
+    integrate_pair(const LineFace                   &slave,
+                   const std::vector<Tensor<1, 2>> &slave_normals,
+                   const FullMatrix<double>        &dual_coefficients,
+                   const LineFace                   &master,
+                   const unsigned int                n_quadrature_points,
+                   SegmentOperators                 &result)
+    {
+      const unsigned int ps = slave.degree(), pm = master.degree();
+
+      // Images of the two master end nodes in the slave parameter space.
+      double xi_a = 0., xi_b = 0.;
+      if (!slave_image(slave, slave_normals, master.nodes[0], xi_a) ||
+          !slave_image(slave, slave_normals, master.nodes[1], xi_b))
+        return false;
+      const double lower = std::max(-1., std::min(xi_a, xi_b));
+      const double upper = std::min(1., std::max(xi_a, xi_b));
+      // Overlaps shorter than this fraction of the face are round-off of a
+      // shared end point, not contact.
+      if (upper - lower < 1e-10)
+        return false;
+
+      result.D.assign(ps + 1, 0.);
+      result.M.reinit(ps + 1, pm + 1);
+      result.overlap_length = 0.;
+      result.xi_begin       = lower;
+      result.xi_end         = upper;
+
+      std::vector<double> xq, wq;
+      gauss_rule(n_quadrature_points, xq, wq);
+      for (unsigned int q = 0; q < xq.size(); ++q)
+        {
+          // Map the Gauss point into the overlap interval of the slave face.
+          const double xi  = lower + 0.5 * (xq[q] + 1.) * (upper - lower);
+          const double jxw = slave.tangent(xi).norm() * wq[q] * 0.5 * (upper - lower);
+
+          Tensor<1, 2> n;
+          for (unsigned int i = 0; i <= ps; ++i)
+            n += shape_value(ps, i, xi) * slave_normals[i];
+          double eta = 0.;
+          if (!project_along(master, slave.point(xi), n, eta))
+            continue;
+          // Guard against round-off just outside the master face.
+          eta = std::max(-1., std::min(1., eta));
+
+          result.overlap_length += jxw;
+          for (unsigned int j = 0; j <= ps; ++j)
+            {
+              double phi_j = 0.;
+              for (unsigned int k = 0; k <= ps; ++k)
+                phi_j += dual_coefficients(j, k) * shape_value(ps, k, xi);
+              result.D[j] += phi_j * jxw;
+              for (unsigned int l = 0; l <= pm; ++l)
+                result.M(j, l) += phi_j * shape_value(pm, l, eta) * jxw;
+            }
+        }
+      return result.overlap_length > 0.;
+    }
+  } // namespace Mortar
+} // namespace contact_fem

@@ -1,0 +1,401 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/utilities.h>
+
+#include <contact_fem/parameters.h>
+
+#include <cmath>
+
+namespace contact_fem
+{
+  namespace
+  {
+    std::string
+    trim(const std::string &s)
+    {
+      return Utilities::trim(s);
+    }
+
+    /// Checks that @p expression is a valid muparser expression of x, y, (z,) t.
+    void
+    check_expression(const std::string &expression,
+                     const unsigned int dim,
+                     const std::string &key)
+    {
+      const std::string variables = dim == 2 ? "x,y,t" : "x,y,z,t";
+      try
+        {
+          if (dim == 2)
+            {
+              FunctionParser<2> f(1);
+              f.initialize(variables, expression, {}, true);
+              f.value(Point<2>());
+            }
+          else
+            {
+              FunctionParser<3> f(1);
+              f.initialize(variables, expression, {}, true);
+              f.value(Point<3>());
+            }
+        }
+      catch (...)
+        {
+          AssertThrow(false,
+                      ExcMessage(key + ": '" + expression +
+                                 "' is not a valid expression of " + variables + "."));
+        }
+    }
+  } // namespace
+
+  std::vector<std::pair<std::string, std::string>>
+  split_key_value_list(const std::string &text, const std::string &key)
+  {
+    std::vector<std::pair<std::string, std::string>> result;
+    for (const std::string &item : Utilities::split_string_list(text, ';'))
+      {
+        if (trim(item).empty())
+          continue;
+        const auto colon = item.find(':');
+        AssertThrow(colon != std::string::npos,
+                    ExcMessage(key + ": entry '" + item +
+                               "' is not of the form 'id: value'."));
+        result.emplace_back(trim(item.substr(0, colon)), trim(item.substr(colon + 1)));
+      }
+    return result;
+  }
+
+  types::boundary_id
+  parse_boundary_id(const std::string &text, const std::string &key)
+  {
+    int id = -1;
+    try
+      {
+        std::size_t pos = 0;
+        id              = std::stoi(text, &pos);
+        if (pos != text.size())
+          id = -1;
+      }
+    catch (...)
+      {
+        id = -1;
+      }
+    AssertThrow(id >= 0 && id < 255,
+                ExcMessage(key + ": '" + text +
+                           "' is not a boundary id (an integer from 0 to 254)."));
+    return static_cast<types::boundary_id>(id);
+  }
+
+  void
+  BoundaryConditions::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Boundary conditions");
+    prm.declare_entry("Fixed",
+                      "2: xy; 1: x",
+                      Patterns::Anything(),
+                      "Boundaries whose displacement components are zero, as "
+                      "'id: components; ...' with components from x, y, z, e.g. "
+                      "'2: xy; 1: x'.");
+    prm.declare_entry("Prescribed displacement",
+                      "",
+                      Patterns::Anything(),
+                      "Boundaries with a prescribed displacement component, as "
+                      "'id: component = expression; ...' with an expression of x, "
+                      "y, (z,) t, e.g. '1: y = -0.01*t'.");
+    prm.declare_entry("Pressure",
+                      "1: 0.2*t",
+                      Patterns::Anything(),
+                      "Boundaries loaded by a normal pressure (positive pushes "
+                      "into the body), as 'id: expression; ...' with an "
+                      "expression of x, y, (z,) t. Units: stress.");
+    prm.leave_subsection();
+  }
+
+  void
+  BoundaryConditions::parse_parameters(ParameterHandler &prm, const unsigned int dim)
+  {
+    const std::string axes = dim == 2 ? "xy" : "xyz";
+    prm.enter_subsection("Boundary conditions");
+    displacements.clear();
+    pressures.clear();
+    const std::string fixed_key = "Boundary conditions/Fixed";
+    for (const auto &[id, components] : split_key_value_list(prm.get("Fixed"), fixed_key))
+      {
+        const types::boundary_id b = parse_boundary_id(id, fixed_key);
+        AssertThrow(!components.empty(),
+                    ExcMessage(fixed_key + ": boundary " + id + " lists no components."));
+        for (const char c : components)
+          {
+            if (c == ' ')
+              continue;
+            const auto d = axes.find(c);
+            AssertThrow(d != std::string::npos,
+                        ExcMessage(fixed_key + ": '" + std::string(1, c) +
+                                   "' is not a component; expected letters from '" +
+                                   axes + "'."));
+            displacements.push_back({b, static_cast<unsigned int>(d), "0"});
+          }
+      }
+    const std::string disp_key = "Boundary conditions/Prescribed displacement";
+    for (const auto &[id, rhs] : split_key_value_list(prm.get("Prescribed displacement"),
+                                                      disp_key))
+      {
+        const types::boundary_id b   = parse_boundary_id(id, disp_key);
+        const auto               eq  = rhs.find('=');
+        const std::string        cmp = trim(rhs.substr(0, eq));
+        AssertThrow(eq != std::string::npos && cmp.size() == 1 &&
+                      axes.find(cmp[0]) != std::string::npos,
+                    ExcMessage(disp_key + ": entry '" + id + ": " + rhs +
+                               "' is not of the form 'id: component = expression' "
+                               "with a component from '" +
+                               axes + "'."));
+        const std::string expression = trim(rhs.substr(eq + 1));
+        check_expression(expression, dim, disp_key);
+        displacements.push_back(
+          {b, static_cast<unsigned int>(axes.find(cmp[0])), expression});
+      }
+    const std::string pressure_key = "Boundary conditions/Pressure";
+    for (const auto &[id, expression] :
+         split_key_value_list(prm.get("Pressure"), pressure_key))
+      {
+        check_expression(expression, dim, pressure_key);
+        pressures.push_back({parse_boundary_id(id, pressure_key), expression});
+      }
+    prm.leave_subsection();
+
+    for (unsigned int i = 0; i < displacements.size(); ++i)
+      for (unsigned int j = 0; j < i; ++j)
+        AssertThrow(displacements[i].boundary_id != displacements[j].boundary_id ||
+                      displacements[i].component != displacements[j].component,
+                    ExcMessage("Boundary conditions: component " +
+                               std::string(1, axes[displacements[i].component]) +
+                               " of boundary " +
+                               std::to_string(displacements[i].boundary_id) +
+                               " is prescribed twice."));
+  }
+
+  void
+  LoadStepping::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load stepping");
+    prm.declare_entry("End time", "1", Patterns::Double(),
+                      "Pseudo-time of the last load step; loads and prescribed "
+                      "displacements are functions of t. Must be > 0.");
+    prm.declare_entry("Number of load steps", "1", Patterns::Integer(),
+                      "Equal load steps from t = 0 to the end time; at least 1.");
+    prm.leave_subsection();
+  }
+
+  void
+  LoadStepping::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load stepping");
+    end_time    = prm.get_double("End time");
+    const int n = prm.get_integer("Number of load steps");
+    prm.leave_subsection();
+    AssertThrow(end_time > 0. && std::isfinite(end_time),
+                ExcMessage("Load stepping/End time: got " + std::to_string(end_time) +
+                           "; expected a value > 0."));
+    AssertThrow(n >= 1 && n <= 100000,
+                ExcMessage("Load stepping/Number of load steps: got " + std::to_string(n) +
+                           "; expected an integer from 1 to 100000."));
+    n_steps = n;
+  }
+
+  void
+  ContactParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    prm.declare_entry("Pairs",
+                      "3: 4",
+                      Patterns::Anything(),
+                      "Contact pairs as 'slave boundary id: master boundary id; "
+                      "...'. Empty: no contact (plain elasticity, no contact code "
+                      "runs). The slave side carries the multipliers: make it the "
+                      "finer and softer surface.");
+    prm.declare_entry("Formulation",
+                      "alm frictionless",
+                      Patterns::Selection("alm frictionless"),
+                      "Contact formulation: 'alm frictionless' = augmented "
+                      "Lagrangian, dual mortar, scalar normal multiplier, "
+                      "semi-smooth Newton.");
+    prm.declare_entry("Penalty",
+                      "auto",
+                      Patterns::Anything(),
+                      "Penalty eps of the augmented normal pressure lambda - eps * "
+                      "gap that decides the active set. 'auto' = stiffness factor "
+                      "* min(E/h) over the two sides. Units: stress / length.");
+    prm.declare_entry("Scale factor",
+                      "auto",
+                      Patterns::Anything(),
+                      "Scale factor k of the multipliers (the multiplier residual "
+                      "is reported as (lambda - max(0, lambda - eps g)) / k, a "
+                      "length). 'auto' = stiffness factor * min(E/h). Units: stress "
+                      "/ length.");
+    prm.declare_entry("Stiffness factor",
+                      "1",
+                      Patterns::Double(0.),
+                      "Multiplies the automatic penalty and scale factor.");
+    prm.declare_entry("Active check factor",
+                      "1e-2",
+                      Patterns::Double(0.),
+                      "At the first load step, slave nodes whose gap is below this "
+                      "factor times their nodal size start in the active set.");
+    prm.declare_entry("Search factor",
+                      "3",
+                      Patterns::Double(0.),
+                      "The bounding box of a slave face is enlarged by this factor "
+                      "times its length before the master faces are searched.");
+    prm.leave_subsection();
+  }
+
+  namespace
+  {
+    double
+    parse_auto_or_positive(const std::string &text, const std::string &key)
+    {
+      if (trim(text) == "auto")
+        return 0.;
+      double value = -1.;
+      try
+        {
+          std::size_t pos = 0;
+          value           = std::stod(trim(text), &pos);
+          if (pos != trim(text).size())
+            value = -1.;
+        }
+      catch (...)
+        {
+          value = -1.;
+        }
+      AssertThrow(value > 0. && std::isfinite(value),
+                  ExcMessage(key + ": got '" + text +
+                             "'; expected 'auto' or a number > 0."));
+      return value;
+    }
+  } // namespace
+
+  void
+  ContactParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    pairs.clear();
+    const std::string pairs_key = "Contact/Pairs";
+    for (const auto &[s, m] : split_key_value_list(prm.get("Pairs"), pairs_key))
+      {
+        const ContactPair pair{parse_boundary_id(s, pairs_key),
+                               parse_boundary_id(m, pairs_key)};
+        AssertThrow(pair.slave != pair.master,
+                    ExcMessage(pairs_key + ": pair '" + s + ": " + m +
+                               "' has the same surface on both sides."));
+        for (const auto &other : pairs)
+          AssertThrow(other.slave != pair.slave && other.master != pair.slave &&
+                        other.slave != pair.master,
+                    ExcMessage(pairs_key + ": surface " + s +
+                               " appears in two pairs; a slave surface may belong to "
+                               "one pair only and may not be a master elsewhere."));
+        pairs.push_back(pair);
+      }
+    formulation         = prm.get("Formulation");
+    penalty             = parse_auto_or_positive(prm.get("Penalty"), "Contact/Penalty");
+    scale_factor        = parse_auto_or_positive(prm.get("Scale factor"), "Contact/Scale factor");
+    stiffness_factor    = prm.get_double("Stiffness factor");
+    active_check_factor = prm.get_double("Active check factor");
+    search_factor       = prm.get_double("Search factor");
+    prm.leave_subsection();
+    AssertThrow(stiffness_factor > 0.,
+                ExcMessage("Contact/Stiffness factor: expected a value > 0."));
+    AssertThrow(search_factor > 0.,
+                ExcMessage("Contact/Search factor: expected a value > 0."));
+  }
+
+  void
+  NewtonParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Newton");
+    prm.declare_entry("Maximum iterations", "20", Patterns::Integer(1, 1000),
+                      "Semi-smooth Newton iterations allowed per load step.");
+    prm.declare_entry("Displacement relative tolerance", "1e-4", Patterns::Double(0.),
+                      "Converged when |r_u| / |r_u at iteration 0| is below this "
+                      "(or the absolute test holds), for the equilibrium residual "
+                      "r_u of the free DoFs.");
+    prm.declare_entry("Displacement absolute tolerance", "1e-9", Patterns::Double(0.),
+                      "Absolute bound on |r_u|. Units: force.");
+    prm.declare_entry("Multiplier relative tolerance", "1e-4", Patterns::Double(0.),
+                      "Same for the complementarity residual of the multipliers.");
+    prm.declare_entry("Multiplier absolute tolerance", "1e-9", Patterns::Double(0.),
+                      "Absolute bound on the multiplier residual. Units: length.");
+    prm.leave_subsection();
+  }
+
+  void
+  NewtonParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Newton");
+    max_iterations                  = prm.get_integer("Maximum iterations");
+    displacement_relative_tolerance = prm.get_double("Displacement relative tolerance");
+    displacement_absolute_tolerance = prm.get_double("Displacement absolute tolerance");
+    multiplier_relative_tolerance   = prm.get_double("Multiplier relative tolerance");
+    multiplier_absolute_tolerance   = prm.get_double("Multiplier absolute tolerance");
+    prm.leave_subsection();
+  }
+
+  void
+  AnalyticalSolution::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Analytical solution");
+    prm.declare_entry("Type", "none", Patterns::Selection("none|hertz cylinder"),
+                      "Reference solution to compare with: 'hertz cylinder' = 2D "
+                      "plane-strain Hertz contact of a cylinder of radius R on a "
+                      "plane, with the load per unit thickness taken from the "
+                      "applied loads and E* from the materials of the contact "
+                      "pair.");
+    prm.declare_entry("Radius", "8", Patterns::Double(0.), "Cylinder radius R.");
+    prm.declare_entry("Center", "0", Patterns::Double(),
+                      "x coordinate of the centre of the contact zone.");
+    prm.leave_subsection();
+  }
+
+  void
+  AnalyticalSolution::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Analytical solution");
+    type   = prm.get("Type");
+    radius = prm.get_double("Radius");
+    center = prm.get_double("Center");
+    prm.leave_subsection();
+    AssertThrow(radius > 0., ExcMessage("Analytical solution/Radius: expected > 0."));
+  }
+
+  void
+  OutputParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Output directory",
+                      "results",
+                      Patterns::Anything(),
+                      "Directory of every output file of the run (created if "
+                      "needed): summary.json, log.txt, pressure profiles, VTU. "
+                      "Must not be named 'output' in tests.");
+    prm.enter_subsection("Output");
+    prm.declare_entry("Write VTU", "true", Patterns::Bool(),
+                      "Write the fields of every load step as VTU/PVTU.");
+    prm.declare_entry("Write pressure profile", "true", Patterns::Bool(),
+                      "Write the slave pressure profile of every cycle as CSV.");
+    prm.declare_entry("Print timing", "true", Patterns::Bool(),
+                      "Print wall times on the console (they are always in "
+                      "summary.json). Tests switch this off.");
+    prm.leave_subsection();
+  }
+
+  void
+  OutputParameters::parse_parameters(ParameterHandler &prm)
+  {
+    directory = prm.get("Output directory");
+    AssertThrow(!trim(directory).empty(),
+                ExcMessage("Output directory: must not be empty."));
+    prm.enter_subsection("Output");
+    write_vtu              = prm.get_bool("Write VTU");
+    write_pressure_profile = prm.get_bool("Write pressure profile");
+    print_timing           = prm.get_bool("Print timing");
+    prm.leave_subsection();
+  }
+} // namespace contact_fem

@@ -1,0 +1,419 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+#include <deal.II/grid/tria.h>
+
+#include <contact_fem/scene.h>
+
+#include <cmath>
+#include <fstream>
+
+namespace contact_fem
+{
+  template <int dim>
+  void
+  Scene<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    prm.declare_entry("Type",
+                      "hertz cylinder",
+                      Patterns::Selection("hertz cylinder|contact blocks|mesh file"),
+                      "The mesh: 'hertz cylinder' (half-disc on a plate, built in "
+                      "code and graded toward the contact zone), 'contact blocks' "
+                      "(two stacked blocks with non-matching meshes), or 'mesh "
+                      "file' (a Gmsh .msh file named by 'Mesh file').");
+    prm.declare_entry("Mesh file",
+                      "",
+                      Patterns::Anything(),
+                      "Gmsh file (format 2.2 or 4) for Type = mesh file; a "
+                      "relative name is taken relative to the .prm file. Bodies "
+                      "are the cells' physical tags (material ids), surfaces the "
+                      "faces' physical tags (boundary ids).");
+    prm.declare_entry("Global refinements",
+                      "0",
+                      Patterns::Integer(0, 8),
+                      "Uniform refinements applied to the mesh after it is "
+                      "built (each one halves every cell).");
+    prm.enter_subsection("Hertz cylinder");
+    prm.declare_entry("Radius", "8", Patterns::Double(0.), "Radius R of the half-disc.");
+    prm.declare_entry("Plate half width", "10", Patterns::Double(0.),
+                      "The plate spans [-w, w] in x.");
+    prm.declare_entry("Plate thickness", "1", Patterns::Double(0.),
+                      "The plate spans [0, t] in y; the disc touches it at (0, t).");
+    prm.declare_entry("Refinement half width", "0.5", Patterns::Double(0.),
+                      "Half width of the zone of the plate top toward which the "
+                      "mesh is graded; should exceed the expected contact "
+                      "half-width.");
+    prm.declare_entry("Cylinder refinements", "2", Patterns::Integer(0, 8),
+                      "Uniform refinement rounds of the whole disc before the "
+                      "graded ones (resolution of the bulk stress field).");
+    prm.declare_entry("Grading factor", "4", Patterns::Double(1.),
+                      "A cell is refined in a graded round when its distance to "
+                      "the contact zone is below this factor times its diameter: "
+                      "larger values give a wider, smoother transition.");
+    prm.declare_entry("Contact refinements", "6", Patterns::Integer(0, 14),
+                      "Number of graded refinement rounds of the disc toward the "
+                      "contact zone (each halves the contact elements).");
+    prm.declare_entry("Plate contact refinements", "3", Patterns::Integer(0, 14),
+                      "Number of graded refinement rounds of the plate.");
+    prm.leave_subsection();
+    prm.enter_subsection("Contact blocks");
+    prm.declare_entry("Width", "1", Patterns::Double(0.), "Width W of both blocks.");
+    prm.declare_entry("Height", "1", Patterns::Double(0.), "Height H of each block.");
+    prm.declare_entry("Initial gap", "0", Patterns::Double(),
+                      "Initial distance between the blocks; negative values "
+                      "make them overlap (initial penetration).");
+    prm.declare_entry("Lower cells", "3", Patterns::Integer(1, 1000),
+                      "Cells per direction of the lower (master) block.");
+    prm.declare_entry("Upper cells", "5", Patterns::Integer(1, 1000),
+                      "Cells per direction of the upper (slave) block.");
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::parse_parameters(ParameterHandler &prm, const std::string &prm_directory)
+  {
+    prm.enter_subsection("Geometry");
+    type               = prm.get("Type");
+    mesh_file          = prm.get("Mesh file");
+    global_refinements = prm.get_integer("Global refinements");
+    prm.enter_subsection("Hertz cylinder");
+    hertz.radius                = prm.get_double("Radius");
+    hertz.plate_half_width      = prm.get_double("Plate half width");
+    hertz.plate_thickness       = prm.get_double("Plate thickness");
+    hertz.refinement_half_width = prm.get_double("Refinement half width");
+    hertz.cylinder_refinements  = prm.get_integer("Cylinder refinements");
+    hertz.contact_refinements   = prm.get_integer("Contact refinements");
+    hertz.grading_factor        = prm.get_double("Grading factor");
+    hertz.plate_refinements     = prm.get_integer("Plate contact refinements");
+    prm.leave_subsection();
+    prm.enter_subsection("Contact blocks");
+    blocks.width       = prm.get_double("Width");
+    blocks.height      = prm.get_double("Height");
+    blocks.gap         = prm.get_double("Initial gap");
+    blocks.lower_cells = prm.get_integer("Lower cells");
+    blocks.upper_cells = prm.get_integer("Upper cells");
+    prm.leave_subsection();
+    prm.leave_subsection();
+
+    for (const double v : {hertz.radius, hertz.plate_half_width, hertz.plate_thickness,
+                           blocks.width, blocks.height})
+      AssertThrow(v > 0.,
+                  ExcMessage("Geometry: lengths must be > 0 (got " + std::to_string(v) +
+                             ")."));
+    AssertThrow(std::abs(blocks.gap) < blocks.height,
+                ExcMessage("Geometry/Contact blocks/Initial gap: |gap| must be "
+                           "smaller than the block height."));
+
+    if (type == "mesh file")
+      {
+        AssertThrow(!mesh_file.empty(),
+                    ExcMessage("Geometry/Mesh file: Type = mesh file needs a file name."));
+        if (mesh_file[0] != '/' && !prm_directory.empty())
+          mesh_file = prm_directory + "/" + mesh_file;
+        std::ifstream in(mesh_file);
+        AssertThrow(in.good(),
+                    ExcMessage("Geometry/Mesh file: cannot open '" + mesh_file +
+                               "' (no such file, or not readable)."));
+        in.seekg(0, std::ios::end);
+        AssertThrow(in.tellg() > 0,
+                    ExcMessage("Geometry/Mesh file: '" + mesh_file + "' is empty."));
+      }
+    else
+      AssertThrow(dim == 2,
+                  ExcMessage("Geometry/Type: the built-in geometry '" + type +
+                             "' exists in 2D only so far; use a mesh file in 3D."));
+  }
+
+  namespace
+  {
+    /// Puts several coarse meshes side by side in one triangulation without
+    /// merging coincident vertices: the bodies stay disconnected even where
+    /// they touch. The cells of mesh k get material id material_ids[k].
+    void
+    join_bodies(const std::vector<const Triangulation<2> *> &parts,
+                const std::vector<types::material_id>       &material_ids,
+                Triangulation<2>                            &result)
+    {
+      std::vector<Point<2>>    vertices;
+      std::vector<CellData<2>> cells;
+      for (unsigned int k = 0; k < parts.size(); ++k)
+        {
+          const unsigned int offset = vertices.size();
+          vertices.insert(vertices.end(), parts[k]->get_vertices().begin(),
+                          parts[k]->get_vertices().end());
+          for (const auto &cell : parts[k]->active_cell_iterators())
+            {
+              CellData<2> c(4);
+              for (unsigned int v = 0; v < 4; ++v)
+                c.vertices[v] = cell->vertex_index(v) + offset;
+              c.material_id = material_ids[k];
+              cells.push_back(c);
+            }
+        }
+      // deal.II wants the lines shared by two cells to be oriented alike.
+      GridTools::consistently_order_cells(cells);
+      result.create_triangulation(vertices, cells, SubCellData());
+    }
+
+    bool
+    close(const double a, const double b, const double scale)
+    {
+      return std::abs(a - b) < 1e-8 * scale;
+    }
+  } // namespace
+
+  template <>
+  void
+  Scene<2>::create_mesh(parallel::distributed::Triangulation<2> &tria) const
+  {
+    Triangulation<2> coarse;
+    const double     scale_tol = 1.;
+
+    if (type == "mesh file")
+      {
+        GridIn<2> grid_in;
+        grid_in.attach_triangulation(coarse);
+        std::ifstream in(mesh_file);
+        try
+          {
+            grid_in.read_msh(in);
+          }
+        catch (const std::exception &e)
+          {
+            AssertThrow(false,
+                        ExcMessage("Geometry/Mesh file: cannot read '" + mesh_file +
+                                   "' as a Gmsh mesh: " + e.what()));
+          }
+        tria.copy_triangulation(coarse);
+      }
+    else if (type == "hertz cylinder")
+      {
+        const double R = hertz.radius, t = hertz.plate_thickness;
+        const Point<2> c(0., t + R);
+        // Coarse half-disc: a centre cell under the flat top and three cells
+        // along the arc; the lowest point of the arc lies inside the bottom
+        // cell, so the contact zone is free of coarse vertices.
+        const double             s = std::sqrt(0.5);
+        const std::vector<Point<2>> v = {c + Point<2>(-R, 0.),
+                                         c + Point<2>(R, 0.),
+                                         c + Point<2>(-R * s, -R * s),
+                                         c + Point<2>(R * s, -R * s),
+                                         c + Point<2>(-0.4375 * R, 0.),
+                                         c + Point<2>(0.4375 * R, 0.),
+                                         c + Point<2>(-0.4375 * R, -0.5 * R),
+                                         c + Point<2>(0.4375 * R, -0.5 * R)};
+        std::vector<CellData<2>>     cells(4, CellData<2>(4));
+        const unsigned int           cell_vertices[4][4] = {{6, 7, 4, 5},
+                                                            {2, 3, 6, 7},
+                                                            {2, 6, 0, 4},
+                                                            {7, 3, 5, 1}};
+        for (unsigned int i = 0; i < 4; ++i)
+          for (unsigned int j = 0; j < 4; ++j)
+            cells[i].vertices[j] = cell_vertices[i][j];
+        Triangulation<2> disc;
+        GridTools::consistently_order_cells(cells);
+        disc.create_triangulation(v, cells, SubCellData());
+
+        Triangulation<2>   plate;
+        const unsigned int nx =
+          std::max(1, static_cast<int>(std::round(2. * hertz.plate_half_width / t)));
+        GridGenerator::subdivided_hyper_rectangle(plate,
+                                                  {nx, 1},
+                                                  Point<2>(-hertz.plate_half_width, 0.),
+                                                  Point<2>(hertz.plate_half_width, t));
+        join_bodies({&disc, &plate}, {1, 2}, coarse);
+
+        for (const auto &cell : coarse.active_cell_iterators())
+          {
+            if (cell->material_id() == 1)
+              cell->set_all_manifold_ids(2);
+            for (const auto f : cell->face_indices())
+              if (cell->face(f)->at_boundary())
+                {
+                  const Point<2> fc = cell->face(f)->center();
+                  if (cell->material_id() == 1)
+                    {
+                      if (close(fc[1], t + R, R))
+                        cell->face(f)->set_boundary_id(1);
+                      else
+                        {
+                          cell->face(f)->set_boundary_id(3);
+                          cell->face(f)->set_manifold_id(1);
+                        }
+                    }
+                  else if (close(fc[1], 0., t))
+                    cell->face(f)->set_boundary_id(2);
+                  else if (close(fc[1], t, t))
+                    cell->face(f)->set_boundary_id(4);
+                  else
+                    cell->face(f)->set_boundary_id(0);
+                }
+          }
+        tria.copy_triangulation(coarse);
+        tria.set_manifold(1, PolarManifold<2>(c));
+        TransfiniteInterpolationManifold<2> tfi;
+        tfi.initialize(tria);
+        tria.set_manifold(2, tfi);
+
+        // Uniform rounds on the disc only: the plate is nearly rigid in the
+        // reference scene and needs no resolution away from the contact.
+        for (unsigned int round = 0; round < hertz.cylinder_refinements; ++round)
+          {
+            for (const auto &cell : tria.active_cell_iterators())
+              if (cell->is_locally_owned() && cell->material_id() == 1)
+                cell->set_refine_flag();
+            tria.execute_coarsening_and_refinement();
+          }
+        // Graded rounds toward the segment |x| < w_r of the plate top.
+        const unsigned int n_rounds =
+          std::max(hertz.contact_refinements, hertz.plate_refinements);
+        for (unsigned int round = 0; round < n_rounds; ++round)
+          {
+            for (const auto &cell : tria.active_cell_iterators())
+              {
+                if (!cell->is_locally_owned())
+                  continue;
+                const unsigned int rounds_of_body = cell->material_id() == 1 ?
+                                                      hertz.contact_refinements :
+                                                      hertz.plate_refinements;
+                if (round >= rounds_of_body)
+                  continue;
+                const Point<2> p = cell->center();
+                const double   dx =
+                  std::max(0., std::abs(p[0]) - hertz.refinement_half_width);
+                const double distance = std::hypot(dx, p[1] - t);
+                if (distance < hertz.grading_factor * cell->diameter())
+                  cell->set_refine_flag();
+              }
+            tria.execute_coarsening_and_refinement();
+          }
+      }
+    else if (type == "contact blocks")
+      {
+        const double W = blocks.width, H = blocks.height;
+        Triangulation<2> lower, upper;
+        GridGenerator::subdivided_hyper_rectangle(lower,
+                                                  {blocks.lower_cells, blocks.lower_cells},
+                                                  Point<2>(0., 0.),
+                                                  Point<2>(W, H));
+        GridGenerator::subdivided_hyper_rectangle(upper,
+                                                  {blocks.upper_cells, blocks.upper_cells},
+                                                  Point<2>(0., H + blocks.gap),
+                                                  Point<2>(W, 2. * H + blocks.gap));
+        join_bodies({&upper, &lower}, {1, 2}, coarse);
+        for (const auto &cell : coarse.active_cell_iterators())
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              {
+                const Point<2> fc    = cell->face(f)->center();
+                const bool     upper_body = cell->material_id() == 1;
+                const double   y0 = upper_body ? H + blocks.gap : 0.;
+                types::boundary_id id = 0;
+                if (close(fc[1], y0, H))
+                  id = upper_body ? 3 : 2;
+                else if (close(fc[1], y0 + H, H))
+                  id = upper_body ? 1 : 4;
+                else if (close(fc[0], 0., W))
+                  id = upper_body ? 5 : 6;
+                cell->face(f)->set_boundary_id(id);
+              }
+        tria.copy_triangulation(coarse);
+      }
+    (void)scale_tol;
+
+    if (global_refinements > 0)
+      tria.refine_global(global_refinements);
+  }
+
+  template <>
+  void
+  Scene<3>::create_mesh(parallel::distributed::Triangulation<3> &tria) const
+  {
+    Triangulation<3> coarse;
+    GridIn<3>        grid_in;
+    grid_in.attach_triangulation(coarse);
+    std::ifstream in(mesh_file);
+    try
+      {
+        grid_in.read_msh(in);
+      }
+    catch (const std::exception &e)
+      {
+        AssertThrow(false,
+                    ExcMessage("Geometry/Mesh file: cannot read '" + mesh_file +
+                               "' as a Gmsh mesh: " + e.what()));
+      }
+    tria.copy_triangulation(coarse);
+    if (global_refinements > 0)
+      tria.refine_global(global_refinements);
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::check_mesh(const parallel::distributed::Triangulation<dim> &tria,
+                         const std::set<types::material_id>              &material_ids,
+                         const std::set<types::boundary_id>              &boundary_ids)
+  {
+    AssertThrow(tria.n_global_active_cells() > 0,
+                ExcMessage("Geometry: the mesh has no cells."));
+
+    // The coarse mesh is known on every rank: its ids are those of the mesh.
+    std::set<types::material_id> mesh_materials;
+    for (const auto &cell : tria.cell_iterators_on_level(0))
+      mesh_materials.insert(cell->material_id());
+    const std::vector<types::boundary_id> mesh_boundaries = tria.get_boundary_ids();
+
+    for (const auto id : material_ids)
+      AssertThrow(mesh_materials.count(id) == 1,
+                  ExcMessage("Materials/Material ids: the mesh has no cells with "
+                             "material id " +
+                             std::to_string(id) + "."));
+    for (const auto id : mesh_materials)
+      AssertThrow(material_ids.count(id) == 1,
+                  ExcMessage("Materials/Material ids: the mesh has cells with material id " +
+                             std::to_string(id) + ", which has no material constants."));
+    for (const auto id : boundary_ids)
+      AssertThrow(std::find(mesh_boundaries.begin(), mesh_boundaries.end(), id) !=
+                    mesh_boundaries.end(),
+                  ExcMessage("Boundary conditions / Contact: boundary id " +
+                             std::to_string(id) + " does not exist in the mesh."));
+
+    // Inverted or degenerate cells: the corner Jacobians of a valid cell are
+    // all positive.
+    unsigned int bad_cells = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const double h = cell->diameter();
+          if (dim == 2)
+            {
+              static const unsigned int next[4] = {1, 3, 0, 2}, prev[4] = {2, 0, 3, 1};
+              for (unsigned int v = 0; v < 4; ++v)
+                {
+                  const Tensor<1, dim> a = cell->vertex(next[v]) - cell->vertex(v);
+                  const Tensor<1, dim> b = cell->vertex(prev[v]) - cell->vertex(v);
+                  if (a[0] * b[1] - a[1] * b[0] <= 1e-12 * h * h)
+                    {
+                      ++bad_cells;
+                      break;
+                    }
+                }
+            }
+          else if (cell->measure() <= 1e-12 * std::pow(h, dim))
+            ++bad_cells;
+        }
+    bad_cells = Utilities::MPI::sum(bad_cells, tria.get_communicator());
+    AssertThrow(bad_cells == 0,
+                ExcMessage("Geometry: the mesh has " + std::to_string(bad_cells) +
+                           " inverted or degenerate cells (non-positive Jacobian at "
+                           "a corner)."));
+  }
+
+  template class Scene<2>;
+  template class Scene<3>;
+} // namespace contact_fem

@@ -1,0 +1,361 @@
+// StressRecovery (SPR estimator): exactness for stress fields the recovery
+// reproduces (linear stress with Q2, constant stress with Q1) on a
+// p::d::Triangulation with hanging nodes and two bodies with different
+// materials that touch at one corner (the patches must not mix the bodies:
+// their stresses differ there);
+// the contact-traction terms (exact tractions keep the estimate zero, wrong
+// ones do not); and a non-polynomial field whose estimate decreases under
+// refinement. The output does not depend on the number of MPI ranks.
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/tria.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <deal.II/numerics/vector_tools.h>
+
+#include <contact_fem/material.h>
+#include <contact_fem/stress_recovery.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+using namespace dealii;
+using namespace contact_fem;
+
+namespace
+{
+  using Displacement = std::function<Tensor<1, 2>(const Point<2> &)>;
+  using Strain       = std::function<SymmetricTensor<2, 2>(const Point<2> &)>;
+
+  class Field : public Function<2>
+  {
+  public:
+    explicit Field(const Displacement &u)
+      : Function<2>(2)
+      , u(u)
+    {}
+
+    double
+    value(const Point<2> &p, const unsigned int component) const override
+    {
+      return u(p)[component];
+    }
+
+  private:
+    Displacement u;
+  };
+
+  // Quadratic displacement, linear stress; the shear stress vanishes on y = 1.
+  Tensor<1, 2>
+  u_quadratic(const Point<2> &p)
+  {
+    const double x = p[0], y = p[1];
+    return Tensor<1, 2>({0.01 * (x * x + x * y + y - y * y / 2.), 0.01 * (-x * x / 2. + y * y + y)});
+  }
+  SymmetricTensor<2, 2>
+  eps_quadratic(const Point<2> &p)
+  {
+    SymmetricTensor<2, 2> e;
+    e[0][0] = 0.01 * (2. * p[0] + p[1]);
+    e[1][1] = 0.01 * (2. * p[1] + 1.);
+    e[0][1] = 0.005 * (1. - p[1]);
+    return e;
+  }
+
+  // Linear displacement with shear (constant stress).
+  Tensor<1, 2>
+  u_linear_shear(const Point<2> &p)
+  {
+    return Tensor<1, 2>({0.01 * (p[0] + 0.3 * p[1]), 0.01 * (0.5 * p[0] - 2. * p[1])});
+  }
+
+  // Linear displacement without shear (constant stress, zero shear traction on y = 1).
+  Tensor<1, 2>
+  u_linear(const Point<2> &p)
+  {
+    return Tensor<1, 2>({0.01 * p[0], -0.02 * p[1]});
+  }
+  SymmetricTensor<2, 2>
+  eps_linear(const Point<2> &)
+  {
+    SymmetricTensor<2, 2> e;
+    e[0][0] = 0.01;
+    e[1][1] = -0.02;
+    return e;
+  }
+
+  // Not representable by any polynomial.
+  Tensor<1, 2>
+  u_sin(const Point<2> &p)
+  {
+    return Tensor<1, 2>({0.01 * std::sin(numbers::PI * p[0]) * std::cos(0.5 * numbers::PI * p[1]),
+                         0.01 * std::sin(numbers::PI * p[0] * p[1])});
+  }
+
+  // Body 1 = [0,1]^2 (2x2 cells), body 2 = [1,1.5]^2 (1 cell). They touch at
+  // the corner (1,1), where each body has its own vertex (merged with a zero
+  // duplicated-vertex tolerance, so nothing is merged): the bodies are not
+  // connected, as in contact scenes. Then global and local refinement (hanging
+  // nodes in both bodies and next to the touching corner).
+  void
+  make_mesh(parallel::distributed::Triangulation<2> &tria)
+  {
+    Triangulation<2> body1, body2, merged;
+    GridGenerator::subdivided_hyper_rectangle(body1, {2U, 2U}, Point<2>(0., 0.), Point<2>(1., 1.));
+    GridGenerator::hyper_rectangle(body2, Point<2>(1., 1.), Point<2>(1.5, 1.5));
+    for (const auto &cell : body1.active_cell_iterators())
+      cell->set_material_id(1);
+    for (const auto &cell : body2.active_cell_iterators())
+      cell->set_material_id(2);
+    GridGenerator::merge_triangulations(body1, body2, merged, 0.);
+    tria.copy_triangulation(merged);
+    tria.refine_global(2);
+
+    for (unsigned int step = 0; step < 2; ++step)
+      {
+        for (const auto &cell : tria.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              const Point<2> c = cell->center();
+              if (step == 0 && cell->material_id() == 1 &&
+                  ((c[0] < 0.5 && c[1] < 0.5) || (c[0] > 0.6 && c[1] > 0.8)))
+                cell->set_refine_flag();
+              if (step == 1 && c.distance(Point<2>(1., 1.)) < 0.2)
+                cell->set_refine_flag();
+            }
+        tria.execute_coarsening_and_refinement();
+      }
+  }
+
+  struct Problem
+  {
+    Problem(const parallel::distributed::Triangulation<2> &tria, const unsigned int degree)
+      : fe(FE_Q<2>(degree), 2)
+      , dof_handler(tria)
+    {
+      dof_handler.distribute_dofs(fe);
+      owned    = dof_handler.locally_owned_dofs();
+      relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
+      constraints.reinit(relevant);
+      DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+      constraints.close();
+    }
+
+    // Interpolates u (respecting the hanging-node constraints) and returns the
+    // ghosted vector.
+    TrilinosWrappers::MPI::Vector
+    interpolate(const Mapping<2> &mapping, const Displacement &u) const
+    {
+      const MPI_Comm                comm = dof_handler.get_triangulation().get_communicator();
+      TrilinosWrappers::MPI::Vector distributed(owned, comm);
+      VectorTools::interpolate(mapping, dof_handler, Field(u), distributed);
+      constraints.distribute(distributed);
+      TrilinosWrappers::MPI::Vector ghosted(owned, relevant, comm);
+      ghosted = distributed;
+      return ghosted;
+    }
+
+    FESystem<2>               fe;
+    DoFHandler<2>             dof_handler;
+    IndexSet                  owned, relevant;
+    AffineConstraints<double> constraints;
+  };
+
+  // The slave nodes on the top side y = 1 of body 1 (vertices, and edge
+  // midpoints for degree 2), with normal (0,1) and the exact pressure
+  // -n.sigma.n of the strain field, plus a shift. The same list on every rank.
+  std::vector<ContactNodeTraction<2>>
+  top_contact_nodes(const parallel::distributed::Triangulation<2> &tria,
+                    const unsigned int                             degree,
+                    const Materials<2>                            &materials,
+                    const Strain                                  &strain,
+                    const double                                   relative_shift)
+  {
+    std::vector<Point<2>> local;
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->material_id() == 1)
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() && std::abs(cell->face(f)->center()[1] - 1.) < 1e-12)
+            {
+              local.push_back(cell->face(f)->vertex(0));
+              local.push_back(cell->face(f)->vertex(1));
+              if (degree == 2)
+                local.push_back(cell->face(f)->center());
+            }
+    std::vector<Point<2>> points;
+    for (const auto &part : Utilities::MPI::all_gather(tria.get_communicator(), local))
+      points.insert(points.end(), part.begin(), part.end());
+    std::sort(points.begin(), points.end(), [](const Point<2> &a, const Point<2> &b) {
+      return a[0] < b[0];
+    });
+    points.erase(std::unique(points.begin(),
+                             points.end(),
+                             [](const Point<2> &a, const Point<2> &b) {
+                               return a.distance(b) < 1e-12;
+                             }),
+                 points.end());
+
+    Tensor<1, 2> n;
+    n[1] = 1.;
+    std::vector<ContactNodeTraction<2>> nodes;
+    double                              max_pressure = 0;
+    for (const Point<2> &x : points)
+      {
+        const double p = -(n * (materials.stress(1, strain(x)) * n));
+        nodes.push_back({x, n, p});
+        max_pressure = std::max(max_pressure, std::abs(p));
+      }
+    for (auto &node : nodes)
+      node.pressure += relative_shift * max_pressure;
+    return nodes;
+  }
+
+  std::string
+  zero(const double relative_error)
+  {
+    if (relative_error < 1e-10)
+      return "ok (< 1e-10)";
+    std::ostringstream s;
+    s << "FAILED (" << relative_error << ")";
+    return s.str();
+  }
+
+  std::string
+  nonzero(const double relative_error)
+  {
+    return relative_error > 1e-3 ? "yes" : "no";
+  }
+
+  // sum_K eta_K^2 over all ranks equals eta^2.
+  std::string
+  consistent(const StressRecovery<2>::Result &r, const MPI_Comm comm)
+  {
+    double sum = 0;
+    for (const float e : r.cell_indicators)
+      sum += double(e) * double(e);
+    sum = Utilities::MPI::sum(sum, comm);
+    const double eta2 = r.estimated_error * r.estimated_error;
+    return std::abs(sum - eta2) <= 1e-6 * eta2 + 1e-300 ? "yes" : "no";
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const MPI_Comm                   comm = MPI_COMM_WORLD;
+  ConditionalOStream               out(std::cout, Utilities::MPI::this_mpi_process(comm) == 0);
+
+  parallel::distributed::Triangulation<2> tria(comm);
+  make_mesh(tria);
+  const MappingQ<2> mapping(1);
+
+  Materials<2> materials;
+  materials.bodies[1] = ElasticConstants{200., 0.3};
+  materials.bodies[2] = ElasticConstants{1000., 0.25};
+
+  unsigned int n_body_2 = 0;
+  for (const auto &cell : tria.active_cell_iterators())
+    if (cell->is_locally_owned() && cell->material_id() == 2)
+      ++n_body_2;
+  out << "cells: " << tria.n_global_active_cells()
+      << " (body 2: " << Utilities::MPI::sum(n_body_2, comm) << ")" << std::endl;
+
+  StressRecovery<2>::Settings plain;
+  plain.contact_terms = false;
+  const StressRecovery<2>::Settings with_contact;
+
+  {
+    Problem    q2(tria, 2);
+    const auto u = q2.interpolate(mapping, u_quadratic);
+    out << "Q2 dofs: " << q2.dof_handler.n_dofs() << std::endl;
+
+    const auto r = StressRecovery<2>::estimate(mapping, q2.dof_handler, u, materials, {}, plain);
+    out << "Q2, linear stress, plain SPR: relative error " << zero(r.relative_error) << std::endl;
+    out << "Q2, linear stress, energy norm > 0: " << (r.solution_energy_norm > 0 ? "yes" : "no")
+        << std::endl;
+
+    const auto exact = top_contact_nodes(tria, 2, materials, eps_quadratic, 0.);
+    const auto wrong = top_contact_nodes(tria, 2, materials, eps_quadratic, 0.1);
+    out << "Q2 contact nodes on the top side: " << exact.size() << std::endl;
+
+    const auto r_exact =
+      StressRecovery<2>::estimate(mapping, q2.dof_handler, u, materials, exact, with_contact);
+    out << "Q2, linear stress, exact contact tractions: relative error "
+        << zero(r_exact.relative_error) << std::endl;
+
+    const auto r_wrong =
+      StressRecovery<2>::estimate(mapping, q2.dof_handler, u, materials, wrong, with_contact);
+    out << "Q2, linear stress, pressure off by 10%: nonzero: " << nonzero(r_wrong.relative_error)
+        << std::endl;
+    out << "Q2, pressure off by 10%, indicators consistent: " << consistent(r_wrong, comm)
+        << std::endl;
+
+    const auto r_ignored =
+      StressRecovery<2>::estimate(mapping, q2.dof_handler, u, materials, wrong, plain);
+    out << "Q2, linear stress, wrong tractions but contact terms off: relative error "
+        << zero(r_ignored.relative_error) << std::endl;
+  }
+
+  {
+    Problem q1(tria, 1);
+    out << "Q1 dofs: " << q1.dof_handler.n_dofs() << std::endl;
+
+    const auto u_shear = q1.interpolate(mapping, u_linear_shear);
+    const auto r = StressRecovery<2>::estimate(mapping, q1.dof_handler, u_shear, materials, {}, plain);
+    out << "Q1, constant stress, plain SPR: relative error " << zero(r.relative_error) << std::endl;
+
+    const auto u     = q1.interpolate(mapping, u_linear);
+    const auto exact = top_contact_nodes(tria, 1, materials, eps_linear, 0.);
+    const auto wrong = top_contact_nodes(tria, 1, materials, eps_linear, 0.1);
+    const auto r_exact =
+      StressRecovery<2>::estimate(mapping, q1.dof_handler, u, materials, exact, with_contact);
+    out << "Q1, constant stress, exact contact tractions: relative error "
+        << zero(r_exact.relative_error) << std::endl;
+    const auto r_wrong =
+      StressRecovery<2>::estimate(mapping, q1.dof_handler, u, materials, wrong, with_contact);
+    out << "Q1, constant stress, pressure off by 10%: nonzero: " << nonzero(r_wrong.relative_error)
+        << std::endl;
+  }
+
+  {
+    double eta[2], relative[2];
+    for (unsigned int cycle = 0; cycle < 2; ++cycle)
+      {
+        if (cycle == 1)
+          tria.refine_global(1);
+        Problem    q1(tria, 1);
+        const auto u = q1.interpolate(mapping, u_sin);
+        const auto r = StressRecovery<2>::estimate(mapping, q1.dof_handler, u, materials, {}, plain);
+        eta[cycle]      = r.estimated_error;
+        relative[cycle] = r.relative_error;
+        out << "Q1, sin field, cells " << tria.n_global_active_cells()
+            << ": nonzero: " << nonzero(r.relative_error)
+            << ", indicators consistent: " << consistent(r, comm) << std::endl;
+      }
+    out << "Q1, sin field, relative errors: " << std::setprecision(4) << relative[0] << " "
+        << relative[1] << std::endl;
+    out << "Q1, sin field, refining once: decreases: " << (eta[1] < eta[0] ? "yes" : "no")
+        << ", ratio " << std::setprecision(2) << eta[1] / eta[0] << std::endl;
+  }
+  return 0;
+}
