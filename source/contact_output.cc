@@ -10,6 +10,7 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 #include <unordered_map>
 
 namespace contact_fem
@@ -214,6 +215,74 @@ namespace contact_fem
     return result;
   }
 
+  namespace
+  {
+    /// A value, or "ok (< tol)" when its magnitude is below the tolerance:
+    /// round-off must not reach test output (numdiff compares digits).
+    std::string
+    below(const double value, const double tolerance)
+    {
+      std::ostringstream s;
+      if (std::abs(value) < tolerance)
+        s << "ok (< " << tolerance << ")";
+      else
+        s << std::setprecision(4) << std::scientific << value;
+      return s.str();
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ContactProblem<dim>::print_results(const Json &reaction, const Json &hertz) const
+  {
+    pcout << "  Results at t = " << current_time << ":" << std::endl
+          << std::setprecision(6);
+    const Tensor<1, dim> load = applied_load(current_time);
+    if (contact)
+      {
+        unsigned int n_slave = 0, n_active = 0;
+        double       p_min = std::numeric_limits<double>::max(), p_max = 0., gap_max = 0.;
+        for (const auto &node : interface->nodes)
+          n_slave += node.slave;
+        for (const auto &s : interface->slave_nodes)
+          if (s.paired && contact->active[s.node])
+            {
+              ++n_active;
+              p_min   = std::min(p_min, contact->pressure[s.node]);
+              p_max   = std::max(p_max, contact->pressure[s.node]);
+              gap_max = std::max(gap_max,
+                                 std::abs(interface->gap(s, interface_displacement)) / s.size);
+            }
+        pcout << "    slave nodes:                  " << n_slave << std::endl
+              << "    active slave nodes:           " << n_active << std::endl;
+        if (n_active > 0)
+          pcout << "    max contact pressure:         " << p_max << std::endl
+                << "    min active contact pressure:  " << p_min << std::endl
+                << "    pressure spread (max-min)/max: " << below((p_max - p_min) / p_max, 1e-8)
+                << std::endl
+                << "    max |gap|/h on active nodes:  " << below(gap_max, 1e-10) << std::endl;
+      }
+    pcout << "    applied load:                 " << load.norm() << std::endl
+          << "    support reaction:             " << reaction["support_reaction"].number_value()
+          << std::endl
+          << "    relative imbalance:           "
+          << below(reaction["relative_imbalance"].number_value(), 1e-10) << std::endl;
+    if (analytical.type == "hertz cylinder" && contact)
+      pcout << "    Hertz a:                      " << hertz["a"].number_value() << std::endl
+            << "    Hertz p_max:                  " << hertz["p_max"].number_value() << std::endl
+            << "    p_max relative error:         "
+            << std::setprecision(3) << hertz["p_max_relative_error"].number_value() << std::endl
+            << "    |a - a_Hertz| / slave h:      "
+            << hertz["a_error_in_slave_elements"].number_value() << std::endl
+            << "    p_max within 2 % of Hertz:    "
+            << (std::abs(hertz["p_max_relative_error"].number_value()) < 0.02 ? "yes" : "no")
+            << std::endl
+            << "    a within one slave element:   "
+            << (hertz["a_error_in_slave_elements"].number_value() <= 1. ? "yes" : "no")
+            << std::endl
+            << std::setprecision(6);
+  }
+
   template <int dim>
   void
   ContactProblem<dim>::write_pressure_profile() const
@@ -370,6 +439,7 @@ namespace contact_fem
   template Json ContactProblem<dim>::analytical_results(const Json &,            \
                                                         const Json &) const;     \
   template void ContactProblem<dim>::write_pressure_profile() const;             \
+  template void ContactProblem<dim>::print_results(const Json &, const Json &) const; \
   template void ContactProblem<dim>::write_vtu(const unsigned int, const double); \
   template void ContactProblem<dim>::write_summary(const Json &,                  \
                                                    const double,                  \

@@ -66,6 +66,11 @@ namespace contact_fem
     prm.declare_entry("Degree", "1", Patterns::Integer(1, 2),
                       "Polynomial degree of the displacement (Q1 or Q2).");
     prm.leave_subsection();
+    prm.enter_subsection("Linear solver");
+    prm.declare_entry("Direct solver", "Amesos_Klu",
+                      Patterns::Selection("Amesos_Klu|Amesos_Mumps"),
+                      "Trilinos Amesos direct solver of the condensed system.");
+    prm.leave_subsection();
     Scene<dim>::declare_parameters(prm);
     Materials<dim>::declare_parameters(prm);
     BoundaryConditions::declare_parameters(prm);
@@ -105,6 +110,9 @@ namespace contact_fem
     , dof_handler(triangulation)
   {
     // Every parameter is read and checked before any work is done.
+    prm.enter_subsection("Linear solver");
+    direct_solver = prm.get("Direct solver");
+    prm.leave_subsection();
     scene.parse_parameters(prm, prm_directory);
     materials.parse_parameters(prm);
     boundary_conditions.parse_parameters(prm, dim);
@@ -114,17 +122,6 @@ namespace contact_fem
     analytical.parse_parameters(prm);
     output.parse_parameters(prm);
 
-    const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
-    if (root)
-      {
-        std::error_code error;
-        std::filesystem::create_directories(output.directory, error);
-        AssertThrow(!error && std::filesystem::is_directory(output.directory),
-                    ExcMessage("Output directory: cannot create '" + output.directory +
-                               "': " + error.message()));
-        log_file.open(output.directory + "/log.txt");
-        console.attach(log_file);
-      }
     timer = std::make_unique<TimerOutput>(comm, pcout, TimerOutput::never,
                                           TimerOutput::wall_times);
   }
@@ -365,9 +362,13 @@ namespace contact_fem
   ContactProblem<dim>::solve_linear_system()
   {
     TimerOutput::Scope t(*timer, "Solve: linear");
-    SolverControl      control(1, 0.);
+    // A direct solver: the stiffness contrast between bodies (up to 1e12)
+    // defeats iterative solvers without a contact-aware preconditioner.
+    // Measured on the Hertz scene at 19k DoFs: KLU 5.3 s, MUMPS 3.6 s,
+    // UMFPACK (after a copy to deal.II's matrix) 55 s for 10 solves.
+    SolverControl                  control(1, 0.);
     TrilinosWrappers::SolverDirect solver(
-      control, TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu"));
+      control, TrilinosWrappers::SolverDirect::AdditionalData(false, direct_solver));
     solver.solve(system_matrix, solution, system_rhs);
     constraints.distribute(solution);
     ghosted_solution = solution;
@@ -539,6 +540,20 @@ namespace contact_fem
   ContactProblem<dim>::run()
   {
     Timer total_timer;
+    // The output directory is made only now, after all input was checked.
+    const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+    if (root)
+      {
+        std::error_code error;
+        std::filesystem::create_directories(output.directory, error);
+        AssertThrow(!error && std::filesystem::is_directory(output.directory),
+                    ExcMessage("Output directory: cannot create '" + output.directory +
+                               "': " + error.message()));
+        // A summary of an earlier run must not pass for this one's.
+        std::filesystem::remove(output.directory + "/summary.json", error);
+        log_file.open(output.directory + "/log.txt");
+        console.attach(log_file);
+      }
     pcout << "contact_fem: scene '" << scene_name << "', " << dim << "D, "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI process(es)" << std::endl;
 
@@ -611,8 +626,13 @@ namespace contact_fem
         const Json contact_json  = contact_results();
         const Json reaction_json = reaction_results();
         cycle_record.set("contact", contact_json).set("reaction", reaction_json);
+        Json hertz_json = Json::object();
         if (analytical.type != "none")
-          cycle_record.set("analytical", analytical_results(contact_json, reaction_json));
+          {
+            hertz_json = analytical_results(contact_json, reaction_json);
+            cycle_record.set("analytical", hertz_json);
+          }
+        print_results(reaction_json, hertz_json);
         if (output.write_pressure_profile && contact)
           write_pressure_profile();
       }

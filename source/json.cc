@@ -69,6 +69,22 @@ namespace contact_fem
     return *this;
   }
 
+  const Json &
+  Json::operator[](const std::string &key) const
+  {
+    static const Json null_value;
+    for (const auto &member : members)
+      if (member.first == key)
+        return member.second;
+    return null_value;
+  }
+
+  double
+  Json::number_value() const
+  {
+    return type == Type::number ? number : std::nan("");
+  }
+
   namespace
   {
     void

@@ -7,6 +7,17 @@
 
 namespace contact_fem
 {
+  namespace
+  {
+    std::string
+    format(const double x)
+    {
+      std::ostringstream s;
+      s << x;
+      return s.str();
+    }
+  } // namespace
+
   double
   ElasticConstants::lambda() const
   {
@@ -69,12 +80,12 @@ namespace contact_fem
         AssertThrow(std::isfinite(E[i]) && E[i] > 0.,
                     ExcMessage("Materials/Young's moduli: entry " +
                                std::to_string(i + 1) + " is " +
-                               std::to_string(E[i]) +
+                               format(E[i]) +
                                "; expected a finite value > 0."));
         AssertThrow(nu[i] > -1. && nu[i] < 0.5,
                     ExcMessage("Materials/Poisson's ratios: entry " +
                                std::to_string(i + 1) + " is " +
-                               std::to_string(nu[i]) +
+                               format(nu[i]) +
                                "; expected a value in (-1, 0.5)."));
         AssertThrow(bodies.count(ids[i]) == 0,
                     ExcMessage("Materials/Material ids: id " +

@@ -108,8 +108,10 @@ namespace contact_fem
     dual_basis_coefficients(const LineFace &slave)
     {
       const unsigned int  p = slave.degree(), n = p + 1;
+      // Exact for straight faces; curved faces have a non-polynomial
+      // Jacobian, hence the generous rule.
       std::vector<double> xq, wq;
-      gauss_rule(p + 2, xq, wq);
+      gauss_rule(2 * p + 8, xq, wq);
 
       FullMatrix<double> Me(n, n), De(n, n);
       for (unsigned int q = 0; q < xq.size(); ++q)
@@ -156,7 +158,8 @@ namespace contact_fem
     {
       /// Slave parameter xi whose point, moved along the interpolated nodal
       /// normal n(xi), passes through @p x: (x - s(xi)) x n(xi) = 0. Newton
-      /// from xi = 0 (a quadratic equation for straight slave faces).
+      /// from the given xi (a quadratic equation for straight slave faces:
+      /// the start must be near the wanted root).
       bool
       slave_image(const LineFace                   &slave,
                   const std::vector<Tensor<1, 2>> &normals,
@@ -164,7 +167,6 @@ namespace contact_fem
                   double                          &xi)
       {
         const unsigned int p = slave.degree();
-        xi                   = 0.;
         for (unsigned int it = 0; it < 30; ++it)
           {
             Tensor<1, 2> n, dn;
@@ -197,15 +199,34 @@ namespace contact_fem
     {
       const unsigned int ps = slave.degree(), pm = master.degree();
 
-      // Images of the two master end nodes in the slave parameter space.
-      double xi_a = 0., xi_b = 0.;
-      if (!slave_image(slave, slave_normals, master.nodes[0], xi_a) ||
-          !slave_image(slave, slave_normals, master.nodes[1], xi_b))
+      // Where do the slave ends land on the master? The map xi -> eta is
+      // monotone on the face, so the overlap follows from eta(-1), eta(1)
+      // and, for master ends in between, the slave images of those ends
+      // (found by Newton from the linear guess, which picks the root inside
+      // the face; the other root of the quadratic lies far outside).
+      double eta_a = 0., eta_b = 0.;
+      if (!project_along(master, slave.nodes[0], slave_normals[0], eta_a) ||
+          !project_along(master, slave.nodes[1], slave_normals[1], eta_b))
         return false;
-      const double lower = std::max(-1., std::min(xi_a, xi_b));
-      const double upper = std::min(1., std::max(xi_a, xi_b));
-      // Overlaps shorter than this fraction of the face are round-off of a
-      // shared end point, not contact.
+      if (std::max(eta_a, eta_b) <= -1. || std::min(eta_a, eta_b) >= 1. ||
+          eta_a == eta_b)
+        return false;
+      double lower = -1., upper = 1.;
+      for (const double end : {-1., 1.})
+        if (end > std::min(eta_a, eta_b) && end < std::max(eta_a, eta_b))
+          {
+            double xi = -1. + 2. * (end - eta_a) / (eta_b - eta_a);
+            if (!slave_image(slave, slave_normals, master.point(end), xi))
+              return false;
+            xi = std::max(-1., std::min(1., xi));
+            // The part of the slave face beyond this master end is outside.
+            const bool beyond_is_upper = (eta_b - eta_a) * end > 0.;
+            if (beyond_is_upper)
+              upper = std::min(upper, xi);
+            else
+              lower = std::max(lower, xi);
+          }
+      // Overlaps shorter than this are round-off of a shared end point.
       if (upper - lower < 1e-10)
         return false;
 

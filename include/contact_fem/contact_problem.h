@@ -119,6 +119,9 @@ namespace contact_fem
     write_vtu(const unsigned int step, const double time);
     void
     write_pressure_profile() const;
+    /// Prints the contact results and the balance of the last load step.
+    void
+    print_results(const Json &reaction, const Json &hertz) const;
     void
     write_summary(const Json &cycles, const double wall_time, const std::string &status) const;
     Tensor<1, dim>
@@ -139,6 +142,7 @@ namespace contact_fem
     AnalyticalSolution analytical;
     OutputParameters   output;
     unsigned int       degree;
+    std::string        direct_solver;
 
     parallel::distributed::Triangulation<dim> triangulation;
     FESystem<dim>                             fe;

@@ -33,6 +33,13 @@ namespace contact_fem
     Json &
     push(const Json &value);
 
+    /// Member @p key of an object (a null value if absent).
+    const Json &
+    operator[](const std::string &key) const;
+    /// The number held (NaN if the value is not a number).
+    double
+    number_value() const;
+
     /// Writes the value; non-finite numbers become null.
     void
     write(std::ostream &out, const unsigned int indent = 0) const;
