@@ -203,6 +203,18 @@ namespace contact_fem
           size += s.size;
           ++n_active;
         }
+    // L2 error of the pressure over the slave surface, with the mortar
+    // weights D_j as nodal quadrature weights.
+    double l2_error = 0., l2_norm = 0.;
+    for (const auto &s : interface->slave_nodes)
+      if (s.paired)
+        {
+          const double x = interface->nodes[s.node].reference[0] +
+                           interface->displacement(s.node, interface_displacement)[0];
+          const double p_exact = h.pressure(x - analytical.center);
+          l2_error += s.D * std::pow(contact->pressure[s.node] - p_exact, 2);
+          l2_norm += s.D * p_exact * p_exact;
+        }
     const double a_num = n_active > 0 ? 0.5 * (x_max - x_min) : 0.;
     size               = n_active > 0 ? size / n_active : 0.;
     result.set("type", analytical.type)
@@ -211,7 +223,8 @@ namespace contact_fem
       .set("p_max", h.p_max)
       .set("a_error", std::abs(a_num - h.a))
       .set("a_error_in_slave_elements", size > 0. ? std::abs(a_num - h.a) / size : 0.)
-      .set("p_max_relative_error", (p_num - h.p_max) / h.p_max);
+      .set("p_max_relative_error", (p_num - h.p_max) / h.p_max)
+      .set("pressure_l2_relative_error", l2_norm > 0. ? std::sqrt(l2_error / l2_norm) : 0.);
     return result;
   }
 
@@ -399,14 +412,42 @@ namespace contact_fem
     data_out.add_data_vector(material, "material_id");
     data_out.add_data_vector(subdomain, "subdomain");
     data_out.build_patches(mapping, degree);
+    // One record per cycle and load step; the pvd "time" counts them.
+    (void)step;
+    (void)time;
     const std::string name = data_out.write_vtu_with_pvtu_record(
-      output.directory + "/", "solution", step + 1, comm, 3);
-    vtu_records.emplace_back(time, name);
+      output.directory + "/", "solution", vtu_records.size() + 1, comm, 3);
+    vtu_records.emplace_back(vtu_records.size() + 1, name);
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
         std::ofstream pvd(output.directory + "/solution.pvd");
         DataOutBase::write_pvd_record(pvd, vtu_records);
       }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::write_convergence_row(const Json &r, const double cumulative)
+  {
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    unsigned int iterations = 0;
+    (void)r;
+    auto number = [](const Json &j) {
+      std::ostringstream s;
+      s << std::setprecision(8) << j.number_value();
+      return s.str();
+    };
+    for (const auto &step : newton_iterations_of_cycle)
+      iterations += step;
+    convergence_csv << cycle << ',' << number(r["n_cells"]) << ',' << number(r["n_dofs"])
+                    << ',' << number(r["contact"]["active_slave_nodes"]) << ','
+                    << refinement.estimator << ',' << number(r["estimated_error"]) << ','
+                    << number(r["relative_estimated_error"]) << ','
+                    << number(r["analytical"]["p_max_relative_error"]) << ','
+                    << number(r["analytical"]["a_error"]) << ','
+                    << number(r["pressure_l2_relative_error"]) << ',' << iterations << ','
+                    << number(r["wall_time"]) << ',' << cumulative << std::endl;
   }
 
   template <int dim>
@@ -439,6 +480,7 @@ namespace contact_fem
   template Json ContactProblem<dim>::analytical_results(const Json &,            \
                                                         const Json &) const;     \
   template void ContactProblem<dim>::write_pressure_profile() const;             \
+  template void ContactProblem<dim>::write_convergence_row(const Json &, const double); \
   template void ContactProblem<dim>::print_results(const Json &, const Json &) const; \
   template void ContactProblem<dim>::write_vtu(const unsigned int, const double); \
   template void ContactProblem<dim>::write_summary(const Json &,                  \

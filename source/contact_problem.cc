@@ -77,6 +77,7 @@ namespace contact_fem
     LoadStepping::declare_parameters(prm);
     ContactParameters::declare_parameters(prm);
     NewtonParameters::declare_parameters(prm);
+    RefinementParameters::declare_parameters(prm);
     AnalyticalSolution::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
   }
@@ -119,6 +120,7 @@ namespace contact_fem
     load_stepping.parse_parameters(prm);
     contact_parameters.parse_parameters(prm);
     newton_parameters.parse_parameters(prm);
+    refinement.parse_parameters(prm);
     analytical.parse_parameters(prm);
     output.parse_parameters(prm);
 
@@ -528,6 +530,7 @@ namespace contact_fem
                           " iterations. Hint: more load steps, or a different "
                           "penalty (Contact/Penalty).");
 
+    newton_iterations_of_cycle.push_back(iteration);
     record.set("time", time)
       .set("newton_iterations", iteration)
       .set("converged", converged)
@@ -573,11 +576,73 @@ namespace contact_fem
       Scene<dim>::check_mesh(triangulation, material_ids, boundary_ids);
     }
 
-    Json cycles = Json::array();
-    Json cycle_record = Json::object();
-    const unsigned int cycle = 0;
-    Timer cycle_timer;
+    if (root)
+      {
+        convergence_csv.open(output.directory + "/convergence.csv");
+        convergence_csv << "cycle,cells,dofs,active_slave_nodes,estimator,estimated_error,"
+                           "relative_estimated_error,p_max_relative_error,a_error,"
+                           "pressure_l2_relative_error,newton_iterations,wall_time,"
+                           "cumulative_wall_time\n";
+      }
+    Json   cycles     = Json::array();
+    double cumulative = 0.;
+    int    exit_code  = 0;
+    for (cycle = 0; cycle < refinement.n_cycles; ++cycle)
+      {
+        if (cycle > 0)
+          refine_mesh();
+        timer->reset();
+        Timer      cycle_timer;
+        Json       record    = Json::object();
+        const bool converged = run_cycle(cycle, record);
+        const double wall    = cycle_timer.wall_time();
+        cumulative += wall;
+        record.set("wall_time", wall).set("cumulative_wall_time", cumulative);
+        Json timing = Json::object();
+        for (const auto &[name, seconds] :
+             timer->get_summary_data(TimerOutput::total_wall_time))
+          timing.set(name, seconds);
+        record.set("timing", timing);
+        cycles.push(record);
+        write_convergence_row(record, cumulative);
+        // Written after every cycle, so an interrupted study keeps its data;
+        // the status says whether the run is complete.
+        const bool last = !converged || cycle + 1 == refinement.n_cycles;
+        write_summary(cycles, total_timer.wall_time(),
+                      !converged ? "failed: results of the last converged load step" :
+                                   (last ? "converged" : "running"));
+        if (output.print_timing)
+          {
+            pcout << "  Wall time of cycle " << cycle << ": " << wall << " s (cumulative "
+                  << cumulative << " s), of which" << std::endl;
+            for (const auto &[name, seconds] :
+                 timer->get_summary_data(TimerOutput::total_wall_time))
+              pcout << "    " << std::left << std::setw(22) << name << std::right
+                    << std::setw(10) << std::fixed << std::setprecision(4) << seconds
+                    << " s" << std::defaultfloat << std::setprecision(6) << std::endl;
+          }
+        if (!converged)
+          {
+            exit_code = 2;
+            break;
+          }
+      }
+    return exit_code;
+  }
+
+  template <int dim>
+  bool
+  ContactProblem<dim>::run_cycle(const unsigned int cycle, Json &cycle_record)
+  {
+    newton_iterations_of_cycle.clear();
     setup_dofs();
+    if (transferred_solution)
+      {
+        solution = *transferred_solution;
+        hanging_constraints.distribute(solution);
+        ghosted_solution = solution;
+        transferred_solution.reset();
+      }
     if (interface)
       {
         interface_dof_fixed.assign(interface->dofs().size(), false);
@@ -597,13 +662,20 @@ namespace contact_fem
       }
     pcout << std::endl;
 
-    Json steps = Json::array();
-    int  exit_code = 0;
+    cycle_record.set("cycle", cycle)
+      .set("n_cells", static_cast<double>(triangulation.n_global_active_cells()))
+      .set("n_dofs", static_cast<double>(dof_handler.n_dofs()));
+
+    // The first cycle steps the load; later cycles start from the
+    // transferred solution at the end time.
+    const unsigned int n_steps = cycle == 0 ? load_stepping.n_steps : 1;
+    Json               steps   = Json::array();
+    bool               converged = true;
     try
       {
-        for (unsigned int step = 0; step < load_stepping.n_steps; ++step)
+        for (unsigned int step = 0; step < n_steps; ++step)
           {
-            const double time = load_stepping.end_time * (step + 1) / load_stepping.n_steps;
+            const double time = load_stepping.end_time * (step + 1) / n_steps;
             Json         step_record = Json::object();
             solve_load_step(step, time, step_record);
             steps.push(step_record);
@@ -614,49 +686,29 @@ namespace contact_fem
     catch (const NewtonFailure &failure)
       {
         pcout << std::endl << "Error: Newton failed at " << failure.what() << std::endl;
-        exit_code = 2;
+        converged = false;
       }
+    cycle_record.set("load_steps", steps);
+    if (!converged)
+      return false;
 
-    cycle_record.set("cycle", cycle)
-      .set("n_cells", static_cast<double>(triangulation.n_global_active_cells()))
-      .set("n_dofs", static_cast<double>(dof_handler.n_dofs()))
-      .set("load_steps", steps);
-    if (exit_code == 0)
+    const Json contact_json  = contact_results();
+    const Json reaction_json = reaction_results();
+    cycle_record.set("contact", contact_json).set("reaction", reaction_json);
+    Json hertz_json = Json::object();
+    if (analytical.type != "none")
       {
-        const Json contact_json  = contact_results();
-        const Json reaction_json = reaction_results();
-        cycle_record.set("contact", contact_json).set("reaction", reaction_json);
-        Json hertz_json = Json::object();
-        if (analytical.type != "none")
-          {
-            hertz_json = analytical_results(contact_json, reaction_json);
-            cycle_record.set("analytical", hertz_json);
-          }
-        print_results(reaction_json, hertz_json);
-        if (output.write_pressure_profile && contact)
-          write_pressure_profile();
+        hertz_json = analytical_results(contact_json, reaction_json);
+        cycle_record.set("analytical", hertz_json);
+        cycle_record.set("pressure_l2_relative_error",
+                         hertz_json["pressure_l2_relative_error"]);
       }
-    cycle_record.set("wall_time", cycle_timer.wall_time());
-    Json timing = Json::object();
-    for (const auto &[name, seconds] :
-         timer->get_summary_data(TimerOutput::total_wall_time))
-      timing.set(name, seconds);
-    cycle_record.set("timing", timing);
-    cycles.push(cycle_record);
-
-    write_summary(cycles, total_timer.wall_time(),
-                  exit_code == 0 ? "converged" : "failed");
-    if (output.print_timing)
-      {
-        pcout << std::endl
-              << "Wall time: " << total_timer.wall_time() << " s, of which" << std::endl;
-        for (const auto &[name, seconds] :
-             timer->get_summary_data(TimerOutput::total_wall_time))
-          pcout << "  " << std::left << std::setw(22) << name << std::right
-                << std::setw(10) << std::fixed << std::setprecision(4) << seconds
-                << " s" << std::defaultfloat << std::setprecision(6) << std::endl;
-      }
-    return exit_code;
+    print_results(reaction_json, hertz_json);
+    if (output.write_pressure_profile && contact)
+      write_pressure_profile();
+    if (refinement.n_cycles > 1)
+      estimate_error(cycle_record);
+    return true;
   }
 
   template class ContactProblem<2>;

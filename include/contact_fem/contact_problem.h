@@ -20,6 +20,7 @@
 #include <contact_fem/json.h>
 #include <contact_fem/material.h>
 #include <contact_fem/parameters.h>
+#include <contact_fem/refinement.h>
 #include <contact_fem/scene.h>
 
 #include <fstream>
@@ -108,6 +109,14 @@ namespace contact_fem
     compute_residual();
     double
     equilibrium_residual_norm(const std::vector<double> &contact_force_at_interface) const;
+    // --- adaptivity (refinement.cc)
+    void
+    estimate_error(Json &cycle_record);
+    void
+    refine_mesh();
+    /// Solves one cycle on the current mesh; returns false if Newton failed.
+    bool
+    run_cycle(const unsigned int cycle, Json &cycle_record);
     // --- results (contact_output.cc)
     Json
     contact_results() const;
@@ -117,6 +126,8 @@ namespace contact_fem
     analytical_results(const Json &contact, const Json &reaction) const;
     void
     write_vtu(const unsigned int step, const double time);
+    void
+    write_convergence_row(const Json &cycle_record, const double cumulative_time);
     void
     write_pressure_profile() const;
     /// Prints the contact results and the balance of the last load step.
@@ -140,7 +151,8 @@ namespace contact_fem
     ContactParameters  contact_parameters;
     NewtonParameters   newton_parameters;
     AnalyticalSolution analytical;
-    OutputParameters   output;
+    OutputParameters     output;
+    RefinementParameters refinement;
     unsigned int       degree;
     std::string        direct_solver;
 
@@ -174,6 +186,12 @@ namespace contact_fem
     std::unique_ptr<TimerOutput>       timer; ///< made once the input is valid
     double                             current_time = 0.;
     std::vector<std::pair<double, std::string>> vtu_records;
+    Vector<float>                               indicators; ///< of the last estimate
+    /// Displacement interpolated from the previous mesh (owned entries).
+    std::unique_ptr<TrilinosWrappers::MPI::Vector> transferred_solution;
+    unsigned int                                   cycle = 0;
+    std::vector<unsigned int> newton_iterations_of_cycle; ///< per load step
+    std::ofstream                                  convergence_csv;
   };
 } // namespace contact_fem
 

@@ -1,0 +1,32 @@
+// Parameters of the adaptive refinement loop.
+#ifndef contact_fem_refinement_h
+#define contact_fem_refinement_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace contact_fem
+{
+  using namespace dealii;
+
+  struct RefinementParameters
+  {
+    unsigned int n_cycles        = 1;
+    std::string  estimator       = "spr contact"; ///< spr contact|spr|kelly|global
+    std::string  strategy        = "fixed fraction";
+    double       refine_fraction  = 0.3;
+    double       coarsen_fraction = 0.;
+    unsigned int max_level        = 20;
+    unsigned int max_cells        = 1000000;
+    double       penalty_normal     = 1e4;
+    double       penalty_tangential = 1e4;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+} // namespace contact_fem
+
+#endif

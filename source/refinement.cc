@@ -1,0 +1,168 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/distributed/solution_transfer.h>
+#include <deal.II/numerics/error_estimator.h>
+
+#include <contact_fem/contact_problem.h>
+#include <contact_fem/refinement.h>
+#include <contact_fem/stress_recovery.h>
+
+namespace contact_fem
+{
+  void
+  RefinementParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Refinement");
+    prm.declare_entry("Number of cycles", "1", Patterns::Integer(1, 50),
+                      "Solve / estimate / refine cycles. The first cycle steps "
+                      "the load; later cycles start from the transferred "
+                      "solution and solve at the end time in one step.");
+    prm.declare_entry("Estimator", "spr contact",
+                      Patterns::Selection("spr contact|spr|kelly|global"),
+                      "Refinement indicator: 'spr contact' = superconvergent "
+                      "patch recovery of the stress whose patches at active "
+                      "slave nodes also fit the contact traction (normal = "
+                      "-pressure, tangential = 0); 'spr' = the same without "
+                      "contact terms; 'kelly' = gradient jumps; 'global' = "
+                      "uniform refinement (the SPR-contact estimate is still "
+                      "reported).");
+    prm.declare_entry("Strategy", "fixed fraction",
+                      Patterns::Selection("fixed fraction|fixed number|maximum"),
+                      "Marking: 'fixed fraction' refines the cells holding the "
+                      "refine fraction of the total squared error, 'fixed "
+                      "number' that fraction of the cells, 'maximum' the cells "
+                      "whose indicator exceeds the fraction times the largest.");
+    prm.declare_entry("Refine fraction", "0.3", Patterns::Double(0., 1.),
+                      "Fraction used by the marking strategy.");
+    prm.declare_entry("Coarsen fraction", "0", Patterns::Double(0., 1.),
+                      "Fraction of cells (or error) to coarsen; 0 = none.");
+    prm.declare_entry("Maximum level", "20", Patterns::Integer(1, 30),
+                      "Cells at this refinement level are not refined further.");
+    prm.declare_entry("Maximum cells", "1000000", Patterns::Integer(1),
+                      "No refinement once the mesh has this many cells.");
+    prm.declare_entry("SPR normal penalty", "1e4", Patterns::Double(0.),
+                      "Weight of the normal-traction condition in the SPR "
+                      "patches of contact nodes, relative to the patch "
+                      "least-squares scale.");
+    prm.declare_entry("SPR tangential penalty", "1e4", Patterns::Double(0.),
+                      "Weight of the zero tangential traction condition.");
+    prm.leave_subsection();
+  }
+
+  void
+  RefinementParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Refinement");
+    n_cycles           = prm.get_integer("Number of cycles");
+    estimator          = prm.get("Estimator");
+    strategy           = prm.get("Strategy");
+    refine_fraction    = prm.get_double("Refine fraction");
+    coarsen_fraction   = prm.get_double("Coarsen fraction");
+    max_level          = prm.get_integer("Maximum level");
+    max_cells          = prm.get_integer("Maximum cells");
+    penalty_normal     = prm.get_double("SPR normal penalty");
+    penalty_tangential = prm.get_double("SPR tangential penalty");
+    prm.leave_subsection();
+    AssertThrow(refine_fraction + coarsen_fraction <= 1.,
+                ExcMessage("Refinement: Refine fraction + Coarsen fraction must "
+                           "not exceed 1."));
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::estimate_error(Json &cycle_record)
+  {
+    TimerOutput::Scope t(*timer, "Estimate");
+    const std::string &type = refinement.estimator;
+    indicators.reinit(triangulation.n_active_cells());
+
+    // The contact tractions of the active slave nodes, in the reference
+    // configuration where the stresses are computed.
+    std::vector<ContactNodeTraction<dim>> tractions;
+    if (contact)
+      for (const auto &s : interface->slave_nodes)
+        if (s.paired && contact->active[s.node])
+          tractions.push_back({interface->nodes[s.node].reference, s.normal,
+                               contact->pressure[s.node]});
+
+    typename StressRecovery<dim>::Settings settings;
+    settings.contact_terms      = type != "spr";
+    settings.penalty_normal     = refinement.penalty_normal;
+    settings.penalty_tangential = refinement.penalty_tangential;
+    const auto spr = StressRecovery<dim>::estimate(mapping, dof_handler, ghosted_solution,
+                                                   materials, tractions, settings);
+    if (type == "kelly")
+      KellyErrorEstimator<dim>::estimate(mapping, dof_handler, QGauss<dim - 1>(degree + 1),
+                                         {}, ghosted_solution, indicators, ComponentMask(),
+                                         nullptr, numbers::invalid_unsigned_int,
+                                         triangulation.locally_owned_subdomain());
+    else
+      indicators = spr.cell_indicators;
+
+    cycle_record.set("estimator", type)
+      .set("estimated_error", spr.estimated_error)
+      .set("relative_estimated_error", spr.relative_error)
+      .set("solution_energy_norm", spr.solution_energy_norm);
+    pcout << "    estimated error (SPR" << (settings.contact_terms ? " contact" : "")
+          << "):  eta = " << std::setprecision(4) << spr.estimated_error
+          << ", eta / |u|_E = " << spr.relative_error << std::setprecision(6) << std::endl;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::refine_mesh()
+  {
+    TimerOutput::Scope t(*timer, "Refine");
+    if (triangulation.n_global_active_cells() >= refinement.max_cells)
+      {
+        pcout << "  (maximum number of cells reached: mesh kept)" << std::endl;
+        return;
+      }
+    if (refinement.estimator == "global")
+      {
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            cell->set_refine_flag();
+      }
+    else if (refinement.strategy == "fixed fraction")
+      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_fraction(
+        triangulation, indicators, refinement.refine_fraction, refinement.coarsen_fraction);
+    else if (refinement.strategy == "fixed number")
+      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
+        triangulation, indicators, refinement.refine_fraction, refinement.coarsen_fraction);
+    else
+      {
+        float local_max = 0.;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            local_max = std::max(local_max, indicators(cell->active_cell_index()));
+        const double threshold =
+          refinement.refine_fraction * Utilities::MPI::max(double(local_max), comm);
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned() && indicators(cell->active_cell_index()) > threshold)
+            cell->set_refine_flag();
+      }
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->level() >= int(refinement.max_level))
+        cell->clear_refine_flag();
+
+    // The displacement moves to the new mesh; the active set follows from
+    // the transferred gaps at the first step of the next cycle.
+    parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector> transfer(
+      dof_handler);
+    triangulation.prepare_coarsening_and_refinement();
+    transfer.prepare_for_coarsening_and_refinement(ghosted_solution);
+    triangulation.execute_coarsening_and_refinement();
+    dof_handler.distribute_dofs(fe);
+    TrilinosWrappers::MPI::Vector transferred(dof_handler.locally_owned_dofs(), comm);
+    transfer.interpolate(transferred);
+    transferred_solution = std::make_unique<TrilinosWrappers::MPI::Vector>(transferred);
+  }
+
+#define INSTANTIATE(dim)                                           \
+  template void ContactProblem<dim>::estimate_error(Json &);       \
+  template void ContactProblem<dim>::refine_mesh();
+  INSTANTIATE(2)
+  INSTANTIATE(3)
+#undef INSTANTIATE
+} // namespace contact_fem
