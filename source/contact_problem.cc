@@ -428,6 +428,7 @@ namespace contact_fem
   void
   ContactProblem<dim>::solve_load_step(const unsigned int step,
                                        const double       time,
+                                       const bool         first_step,
                                        Json              &record)
   {
     Timer step_timer;
@@ -448,7 +449,7 @@ namespace contact_fem
         });
         interface_displacement = interface->gather(solution);
         interface->update(interface_displacement, contact_parameters.search_factor);
-        contact->start_load_step(*interface, interface_displacement, step == 0);
+        contact->start_load_step(*interface, interface_displacement, first_step);
       }
     make_sparsity_pattern();
 
@@ -462,15 +463,39 @@ namespace contact_fem
     // others). With it > 0 the multipliers are first recovered from the
     // solution of iteration it and the active set is updated.
     double       reference_u = 0., reference_lambda = 0.;
+    double       last_u = 0., last_lambda = 0.;
+    unsigned int last_changes = 0;
     bool         converged = false;
     unsigned int iteration = 0;
     for (; iteration <= newton_parameters.max_iterations; ++iteration)
       {
+        if (iteration > 0 && contact && contact->n_active() == 0 &&
+            !contact_parameters.allow_loss_of_contact)
+          throw NewtonFailure("load step " + std::to_string(step + 1) + " (t = " +
+                              std::to_string(time) + "), iteration " +
+                              std::to_string(iteration) +
+                              ": no contact. No slave node is active (every node is "
+                              "in tension or apart): the load separates the bodies. "
+                              "Set Contact/Allow loss of contact = true if the scene "
+                              "may lose contact.",
+                              false);
         if (iteration > 0)
           {
             make_constraints();
             assemble_system();
-            solve_linear_system();
+            try
+              {
+                solve_linear_system();
+              }
+            catch (const std::exception &e)
+              {
+                throw NewtonFailure("load step " + std::to_string(step + 1) + " (t = " +
+                                    std::to_string(time) + "), iteration " +
+                                    std::to_string(iteration) +
+                                    ": the linear solver failed (singular system?). "
+                                    "Hint: is every body held by supports or by at "
+                                    "least one active contact node?");
+              }
           }
         compute_residual();
         unsigned int                    changes = 0;
@@ -501,6 +526,9 @@ namespace contact_fem
                               "). The linear system is singular or the input is "
                               "extreme: is every body held by supports or by at "
                               "least one active contact node?");
+        last_u           = r_u;
+        last_lambda      = r_lambda;
+        last_changes     = changes;
         reference_u      = std::max(reference_u, r_u);
         reference_lambda = std::max(reference_lambda, r_lambda);
         const double ratio_u = reference_u > 0. ? r_u / reference_u : 0.;
@@ -523,12 +551,23 @@ namespace contact_fem
         if (converged)
           break;
       }
+    if (converged && contact && contact->n_active() == 0 &&
+        !contact_parameters.allow_loss_of_contact)
+      throw NewtonFailure("load step " + std::to_string(step + 1) + " (t = " +
+                          std::to_string(time) +
+                          "): no contact. No slave node is active: the load "
+                          "separates the bodies. Set Contact/Allow loss of contact "
+                          "= true if the scene may lose contact.",
+                          false);
     if (!converged)
       throw NewtonFailure("load step " + std::to_string(step + 1) + " (t = " +
                           std::to_string(time) + ") did not converge in " +
                           std::to_string(newton_parameters.max_iterations) +
-                          " iterations. Hint: more load steps, or a different "
-                          "penalty (Contact/Penalty).");
+                          " iterations (last: |r_u| = " + scientific(last_u) +
+                          ", |r_lambda| = " + scientific(last_lambda) + ", " +
+                          std::to_string(last_changes) +
+                          " active-set changes). Hint: more load steps, more "
+                          "Newton iterations, or a different Contact/Penalty.");
 
     newton_iterations_of_cycle.push_back(iteration);
     record.set("time", time)
@@ -667,30 +706,82 @@ namespace contact_fem
       .set("n_dofs", static_cast<double>(dof_handler.n_dofs()));
 
     // The first cycle steps the load; later cycles start from the
-    // transferred solution at the end time.
-    const unsigned int n_steps = cycle == 0 ? load_stepping.n_steps : 1;
-    Json               steps   = Json::array();
+    // transferred solution at the end time. A step whose Newton iteration
+    // fails is split and retried from the last converged state.
+    const unsigned int n_steps   = cycle == 0 ? load_stepping.n_steps : 1;
+    const double       end_time  = load_stepping.end_time;
+    double             t_done    = cycle == 0 ? 0. : end_time * (n_steps - 1) / n_steps;
+    double             step_size = end_time / n_steps;
+    unsigned int       splits = 0, n_solved = 0;
+    Json               steps     = Json::array();
     bool               converged = true;
-    try
+    TrilinosWrappers::MPI::Vector saved_solution = solution;
+    std::vector<double>           saved_pressure;
+    std::vector<bool>             saved_active;
+    if (contact)
       {
-        for (unsigned int step = 0; step < n_steps; ++step)
+        saved_pressure = contact->pressure;
+        saved_active   = contact->active;
+      }
+    while (t_done < end_time * (1. - 1e-12))
+      {
+        const double time = std::min(end_time, t_done + step_size);
+        Json         step_record = Json::object();
+        try
           {
-            const double time = load_stepping.end_time * (step + 1) / n_steps;
-            Json         step_record = Json::object();
-            solve_load_step(step, time, step_record);
-            steps.push(step_record);
-            if (output.write_vtu)
-              write_vtu(step, time);
+            solve_load_step(n_solved, time, n_solved == 0, step_record);
           }
+        catch (const NewtonFailure &failure)
+          {
+            pcout << "  Newton failed at " << failure.what() << std::endl;
+            solution         = saved_solution;
+            ghosted_solution = solution;
+            if (contact)
+              {
+                contact->pressure = saved_pressure;
+                contact->active   = saved_active;
+              }
+            if (failure.splittable && splits < load_stepping.max_splits)
+              {
+                ++splits;
+                step_size /= load_stepping.split_factor;
+                pcout << "  Splitting the step: retrying from t = " << t_done
+                      << " with step " << step_size << " (split " << splits << " of at most "
+                      << load_stepping.max_splits << ")" << std::endl;
+                continue;
+              }
+            pcout << std::endl
+                  << "Error: giving up at " << failure.what() << std::endl
+                  << "The results written are those of the last converged load step"
+                  << " (t = " << t_done << ")." << std::endl;
+            converged = false;
+            break;
+          }
+        steps.push(step_record);
+        ++n_solved;
+        splits = 0;
+        t_done = time;
+        saved_solution = solution;
+        if (contact)
+          {
+            saved_pressure = contact->pressure;
+            saved_active   = contact->active;
+          }
+        if (output.write_vtu)
+          write_vtu(n_solved, time);
       }
-    catch (const NewtonFailure &failure)
-      {
-        pcout << std::endl << "Error: Newton failed at " << failure.what() << std::endl;
-        converged = false;
-      }
+    current_time = t_done;
     cycle_record.set("load_steps", steps);
-    if (!converged)
+    if (n_solved == 0)
       return false;
+    if (!converged && contact)
+      {
+        // Results of the last converged state: its residual and gaps.
+        make_dirichlet_constraints(current_time);
+        compute_cell_loads(current_time);
+        compute_residual();
+        interface_displacement = interface->gather(solution);
+      }
 
     const Json contact_json  = contact_results();
     const Json reaction_json = reaction_results();
@@ -703,9 +794,33 @@ namespace contact_fem
         cycle_record.set("pressure_l2_relative_error",
                          hertz_json["pressure_l2_relative_error"]);
       }
+    // Total potential energy 1/2 u.K u - f.u of the bodies: its difference to
+    // that of an overkill solution measures the energy-norm error.
+    {
+      double local_strain = 0., local_work = 0.;
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      Vector<double> u(fe.n_dofs_per_cell()), Ku(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              u(i) = ghosted_solution(dofs[i]);
+            const unsigned int index = cell->active_cell_index();
+            cell_matrices[index].vmult(Ku, u);
+            local_strain += 0.5 * (u * Ku);
+            if (cell_loads[index].size() > 0)
+              local_work += u * cell_loads[index];
+          }
+      const double strain = Utilities::MPI::sum(local_strain, comm);
+      const double work   = Utilities::MPI::sum(local_work, comm);
+      cycle_record.set("strain_energy", strain).set("potential_energy", strain - work);
+    }
     print_results(reaction_json, hertz_json);
     if (output.write_pressure_profile && contact)
       write_pressure_profile();
+    if (!converged)
+      return false;
     if (refinement.n_cycles > 1)
       estimate_error(cycle_record);
     return true;

@@ -182,6 +182,12 @@ namespace contact_fem
                       "displacements are functions of t. Must be > 0.");
     prm.declare_entry("Number of load steps", "1", Patterns::Integer(),
                       "Equal load steps from t = 0 to the end time; at least 1.");
+    prm.declare_entry("Maximum step splits", "4", Patterns::Integer(0, 30),
+                      "When Newton fails on a step (no convergence, NaN, singular "
+                      "system), the step is split and retried from the last "
+                      "converged state, at most this many times in a row.");
+    prm.declare_entry("Split factor", "2", Patterns::Integer(2, 100),
+                      "Number of sub-steps a failing step is split into.");
     prm.leave_subsection();
   }
 
@@ -189,8 +195,10 @@ namespace contact_fem
   LoadStepping::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Load stepping");
-    end_time    = prm.get_double("End time");
-    const int n = prm.get_integer("Number of load steps");
+    end_time     = prm.get_double("End time");
+    const int n  = prm.get_integer("Number of load steps");
+    max_splits   = prm.get_integer("Maximum step splits");
+    split_factor = prm.get_integer("Split factor");
     prm.leave_subsection();
     AssertThrow(end_time > 0. && std::isfinite(end_time),
                 ExcMessage("Load stepping/End time: got " + std::to_string(end_time) +
@@ -240,6 +248,12 @@ namespace contact_fem
                       Patterns::Double(0.),
                       "At the first load step, slave nodes whose gap is below this "
                       "factor times their nodal size start in the active set.");
+    prm.declare_entry("Allow loss of contact",
+                      "false",
+                      Patterns::Bool(),
+                      "If false, a converged step without any active contact node "
+                      "stops the run with a 'no contact' diagnosis (the load pulls "
+                      "the bodies apart); if true the run goes on.");
     prm.declare_entry("Search factor",
                       "3",
                       Patterns::Double(0.),
@@ -301,6 +315,7 @@ namespace contact_fem
     stiffness_factor    = prm.get_double("Stiffness factor");
     active_check_factor = prm.get_double("Active check factor");
     search_factor       = prm.get_double("Search factor");
+    allow_loss_of_contact = prm.get_bool("Allow loss of contact");
     prm.leave_subsection();
     AssertThrow(stiffness_factor > 0.,
                 ExcMessage("Contact/Stiffness factor: expected a value > 0."));

@@ -57,7 +57,12 @@ namespace contact_fem
   /// Thrown when a load step cannot be solved; carries the diagnosis.
   struct NewtonFailure : public std::runtime_error
   {
-    using std::runtime_error::runtime_error;
+    explicit NewtonFailure(const std::string &what, const bool splittable = true)
+      : std::runtime_error(what)
+      , splittable(splittable)
+    {}
+    /// false if a smaller step cannot help (e.g. the bodies separate).
+    bool splittable;
   };
 
   /**
@@ -100,7 +105,10 @@ namespace contact_fem
     make_constraints();
     // --- Newton (contact_problem.cc)
     void
-    solve_load_step(const unsigned int step, const double time, Json &step_record);
+    solve_load_step(const unsigned int step,
+                    const double       time,
+                    const bool         first_step,
+                    Json              &step_record);
     void
     assemble_system();
     void

@@ -43,6 +43,8 @@ namespace contact_fem
   {
     double       end_time = 1.;
     unsigned int n_steps  = 1;
+    unsigned int max_splits   = 4;  ///< times a failing step may be split
+    unsigned int split_factor = 2;  ///< sub-steps a failing step is split into
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -66,6 +68,7 @@ namespace contact_fem
     double stiffness_factor = 1.;
     double active_check_factor = 1e-2;
     double search_factor       = 3.;
+    bool   allow_loss_of_contact = false;
 
     static void
     declare_parameters(ParameterHandler &prm);
