@@ -334,16 +334,31 @@ namespace contact_fem
                   }
                 const Tensor<1, 2> n_slave =
                   Mortar::face_normal(lines[f], 0., faces[f].orientation);
-                const FullMatrix<double> A = Mortar::dual_basis_coefficients(lines[f]);
-                bool                     overlapping = false;
+                // Segmentation first: the dual basis is built on the part of
+                // the slave face that the masters cover.
+                std::vector<unsigned int>               masters;
+                std::vector<std::pair<double, double>> intervals;
                 for (const auto &hit : hits)
                   {
                     const unsigned int m = hit.second;
                     ++statistics[p].candidate_pairs;
                     const Tensor<1, 2> n_master =
                       Mortar::face_normal(lines[m], 0., faces[m].orientation);
-                    if (n_slave * n_master >= 0.)
-                      continue;
+                    double lower, upper;
+                    if (n_slave * n_master < 0. &&
+                        Mortar::overlap(lines[f], normals, lines[m], lower, upper))
+                      {
+                        masters.push_back(m);
+                        intervals.emplace_back(lower, upper);
+                      }
+                  }
+                if (masters.empty())
+                  continue;
+                const FullMatrix<double> A =
+                  Mortar::dual_basis_coefficients(lines[f], intervals);
+                bool overlapping = false;
+                for (const unsigned int m : masters)
+                  {
                     Mortar::SegmentOperators ops;
                     if (!Mortar::integrate_pair(lines[f], normals, A, lines[m],
                                                 degree + 3, ops))

@@ -6,6 +6,7 @@
 #include <deal.II/numerics/data_postprocessor.h>
 
 #include <contact_fem/contact_problem.h>
+#include <contact_fem/format.h>
 
 #include <cmath>
 #include <fstream>
@@ -228,21 +229,6 @@ namespace contact_fem
     return result;
   }
 
-  namespace
-  {
-    /// A value, or "ok (< tol)" when its magnitude is below the tolerance:
-    /// round-off must not reach test output (numdiff compares digits).
-    std::string
-    below(const double value, const double tolerance)
-    {
-      std::ostringstream s;
-      if (std::abs(value) < tolerance)
-        s << "ok (< " << tolerance << ")";
-      else
-        s << std::setprecision(4) << std::scientific << value;
-      return s.str();
-    }
-  } // namespace
 
   template <int dim>
   void
@@ -271,15 +257,15 @@ namespace contact_fem
         if (n_active > 0)
           pcout << "    max contact pressure:         " << p_max << std::endl
                 << "    min active contact pressure:  " << p_min << std::endl
-                << "    pressure spread (max-min)/max: " << below((p_max - p_min) / p_max, 1e-8)
+                << "    pressure spread (max-min)/max: " << value_or_ok((p_max - p_min) / p_max, 1e-8)
                 << std::endl
-                << "    max |gap|/h on active nodes:  " << below(gap_max, 1e-10) << std::endl;
+                << "    max |gap|/h on active nodes:  " << value_or_ok(gap_max, 1e-10) << std::endl;
       }
     pcout << "    applied load:                 " << load.norm() << std::endl
           << "    support reaction:             " << reaction["support_reaction"].number_value()
           << std::endl
           << "    relative imbalance:           "
-          << below(reaction["relative_imbalance"].number_value(), 1e-10) << std::endl;
+          << value_or_ok(reaction["relative_imbalance"].number_value(), 1e-10) << std::endl;
     if (analytical.type == "hertz cylinder" && contact)
       pcout << "    Hertz a:                      " << hertz["a"].number_value() << std::endl
             << "    Hertz p_max:                  " << hertz["p_max"].number_value() << std::endl

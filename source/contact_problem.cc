@@ -541,10 +541,24 @@ namespace contact_fem
           (ratio_lambda <= newton_parameters.multiplier_relative_tolerance ||
            r_lambda <= newton_parameters.multiplier_absolute_tolerance);
 
-        pcout << "    | " << std::setw(2) << iteration << " | " << std::setw(11)
-              << scientific(ratio_u) << " | " << std::setw(9) << scientific(r_u, 2)
-              << " | " << std::setw(11) << scientific(ratio_lambda) << " | "
-              << std::setw(9) << scientific(r_lambda, 2) << " | " << std::setw(7)
+        // Residuals at or below their absolute tolerance are round-off:
+        // neither they nor their ratios are printed as numbers, so that
+        // reruns and MPI runs print the same table.
+        auto cells = [](const double ratio, const double value, const double tolerance) {
+          std::ostringstream s;
+          if (value <= tolerance)
+            s << std::setw(11) << "-" << " | " << std::setw(9)
+              << ("< " + scientific(tolerance, 0));
+          else
+            s << std::setw(11) << scientific(ratio) << " | " << std::setw(9)
+              << scientific(value, 2);
+          return s.str();
+        };
+        pcout << "    | " << std::setw(2) << iteration << " | "
+              << cells(ratio_u, r_u, newton_parameters.displacement_absolute_tolerance)
+              << " | "
+              << cells(ratio_lambda, r_lambda, newton_parameters.multiplier_absolute_tolerance)
+              << " | " << std::setw(7)
               << (iteration == 0 ? std::string("-") : std::to_string(changes)) << " | "
               << std::setw(6) << (contact ? contact->n_active() : 0u) << " |"
               << (converged ? " converged" : "") << std::endl;

@@ -105,13 +105,21 @@ namespace contact_fem
     } // namespace
 
     FullMatrix<double>
-    dual_basis_coefficients(const LineFace &slave)
+    dual_basis_coefficients(const LineFace                                &slave,
+                            const std::vector<std::pair<double, double>> &intervals)
     {
       const unsigned int  p = slave.degree(), n = p + 1;
       // Exact for straight faces; curved faces have a non-polynomial
       // Jacobian, hence the generous rule.
+      std::vector<double> xg, wg;
+      gauss_rule(2 * p + 8, xg, wg);
       std::vector<double> xq, wq;
-      gauss_rule(2 * p + 8, xq, wq);
+      for (const auto &[a, b] : intervals)
+        for (unsigned int q = 0; q < xg.size(); ++q)
+          {
+            xq.push_back(a + 0.5 * (xg[q] + 1.) * (b - a));
+            wq.push_back(0.5 * (b - a) * wg[q]);
+          }
 
       FullMatrix<double> Me(n, n), De(n, n);
       for (unsigned int q = 0; q < xq.size(); ++q)
@@ -190,15 +198,12 @@ namespace contact_fem
     } // namespace
 
     bool
-    integrate_pair(const LineFace                   &slave,
-                   const std::vector<Tensor<1, 2>> &slave_normals,
-                   const FullMatrix<double>        &dual_coefficients,
-                   const LineFace                   &master,
-                   const unsigned int                n_quadrature_points,
-                   SegmentOperators                 &result)
+    overlap(const LineFace                   &slave,
+            const std::vector<Tensor<1, 2>> &slave_normals,
+            const LineFace                   &master,
+            double                           &lower,
+            double                           &upper)
     {
-      const unsigned int ps = slave.degree(), pm = master.degree();
-
       // Where do the slave ends land on the master? The map xi -> eta is
       // monotone on the face, so the overlap follows from eta(-1), eta(1)
       // and, for master ends in between, the slave images of those ends
@@ -211,7 +216,8 @@ namespace contact_fem
       if (std::max(eta_a, eta_b) <= -1. || std::min(eta_a, eta_b) >= 1. ||
           eta_a == eta_b)
         return false;
-      double lower = -1., upper = 1.;
+      lower = -1.;
+      upper = 1.;
       for (const double end : {-1., 1.})
         if (end > std::min(eta_a, eta_b) && end < std::max(eta_a, eta_b))
           {
@@ -227,7 +233,21 @@ namespace contact_fem
               lower = std::max(lower, xi);
           }
       // Overlaps shorter than this are round-off of a shared end point.
-      if (upper - lower < 1e-10)
+      return upper - lower >= 1e-10;
+
+    }
+
+    bool
+    integrate_pair(const LineFace                   &slave,
+                   const std::vector<Tensor<1, 2>> &slave_normals,
+                   const FullMatrix<double>        &dual_coefficients,
+                   const LineFace                   &master,
+                   const unsigned int                n_quadrature_points,
+                   SegmentOperators                 &result)
+    {
+      const unsigned int ps = slave.degree(), pm = master.degree();
+      double             lower = -1., upper = 1.;
+      if (!overlap(slave, slave_normals, master, lower, upper))
         return false;
 
       result.D.assign(ps + 1, 0.);

@@ -4,6 +4,7 @@
 #include <deal.II/numerics/error_estimator.h>
 
 #include <contact_fem/contact_problem.h>
+#include <contact_fem/format.h>
 #include <contact_fem/refinement.h>
 #include <contact_fem/stress_recovery.h>
 
@@ -104,8 +105,7 @@ namespace contact_fem
       .set("relative_estimated_error", spr.relative_error)
       .set("solution_energy_norm", spr.solution_energy_norm);
     pcout << "    estimated error (SPR" << (settings.contact_terms ? " contact" : "")
-          << "):  eta = " << std::setprecision(4) << spr.estimated_error
-          << ", eta / |u|_E = " << spr.relative_error << std::setprecision(6) << std::endl;
+          << "): eta / |u|_E = " << value_or_ok(spr.relative_error, 1e-10) << std::endl;
   }
 
   template <int dim>

@@ -31,6 +31,13 @@ namespace contact_fem
                       "relative name is taken relative to the .prm file. Bodies "
                       "are the cells' physical tags (material ids), surfaces the "
                       "faces' physical tags (boundary ids).");
+    prm.declare_entry("Distortion",
+                      "0",
+                      Patterns::Double(0., 0.45),
+                      "Moves every interior vertex in a random direction by this "
+                      "fraction of its shortest adjacent edge (fixed seed, so "
+                      "runs repeat exactly); boundary vertices stay. For "
+                      "robustness studies on distorted meshes.");
     prm.declare_entry("Global refinements",
                       "0",
                       Patterns::Integer(0, 8),
@@ -81,6 +88,7 @@ namespace contact_fem
     type               = prm.get("Type");
     mesh_file          = prm.get("Mesh file");
     global_refinements = prm.get_integer("Global refinements");
+    distortion         = prm.get_double("Distortion");
     prm.enter_subsection("Hertz cylinder");
     hertz.radius                = prm.get_double("Radius");
     hertz.plate_half_width      = prm.get_double("Plate half width");
@@ -328,6 +336,8 @@ namespace contact_fem
 
     if (global_refinements > 0)
       tria.refine_global(global_refinements);
+    if (distortion > 0.)
+      GridTools::distort_random(distortion, tria, true, 20261121);
   }
 
   template <>

@@ -55,12 +55,29 @@ namespace contact_fem
 
     /**
      * Coefficients A of the dual basis Phi_j = sum_k A_jk N_k of a slave face:
-     * A = D_e M_e^{-1} with D_e = diag(int N_j) and M_e = (int N_j N_k) over
-     * the whole face, so that int Phi_j N_k = delta_jk int N_k
-     * (biorthogonality, Wohlmuth 2000).
+     * A = D_e M_e^{-1} with D_e = diag(int N_j) and M_e = (int N_j N_k), both
+     * integrated over the given parameter @p intervals of the face (default:
+     * the whole face), so that int Phi_j N_k = delta_jk int N_k there
+     * (biorthogonality, Wohlmuth 2000). Integrating over the part of the face
+     * that overlaps the master keeps biorthogonality, and so a consistent
+     * gap and pressure, at the rim of the master surface (as Kratos does).
      */
     FullMatrix<double>
-    dual_basis_coefficients(const LineFace &slave);
+    dual_basis_coefficients(const LineFace                                &slave,
+                            const std::vector<std::pair<double, double>> &intervals = {
+                              {-1., 1.}});
+
+    /**
+     * The slave parameter interval [lower, upper] whose points, moved along
+     * the interpolated nodal normals, land on @p master. Returns false if
+     * there is none.
+     */
+    bool
+    overlap(const LineFace                   &slave,
+            const std::vector<Tensor<1, 2>> &slave_normals,
+            const LineFace                   &master,
+            double                           &lower,
+            double                           &upper);
 
     /// The mortar blocks of one slave face against one master face.
     struct SegmentOperators

@@ -68,6 +68,7 @@ namespace contact_fem
     std::string  type;
     std::string  mesh_file;
     unsigned int global_refinements = 0;
+    double       distortion         = 0.;
 
     struct Hertz
     {

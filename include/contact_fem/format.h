@@ -1,0 +1,26 @@
+// Formatting of numbers for console output that tests compare.
+#ifndef contact_fem_format_h
+#define contact_fem_format_h
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <string>
+
+namespace contact_fem
+{
+  /// The value, or "ok (< tol)" when its magnitude is below the tolerance:
+  /// round-off must not reach test output (numdiff compares digits).
+  inline std::string
+  value_or_ok(const double value, const double tolerance)
+  {
+    std::ostringstream s;
+    if (std::abs(value) < tolerance)
+      s << "ok (< " << tolerance << ")";
+    else
+      s << std::setprecision(4) << std::scientific << value;
+    return s.str();
+  }
+} // namespace contact_fem
+
+#endif
