@@ -4,7 +4,12 @@
 
 #include <contact_fem/contact_problem.h>
 
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
+#include <cctype>
 #include <fstream>
+#include <sstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -134,6 +139,49 @@ namespace
     return result;
   }
 
+  /// Undoes ParameterHandler's name mangling ("_20" for a blank, ...).
+  std::string
+  demangle(const std::string &name)
+  {
+    std::string result;
+    for (std::size_t i = 0; i < name.size(); ++i)
+      if (name[i] == '_' && i + 2 < name.size() + 0 && std::isxdigit(name[i + 1]) &&
+          std::isxdigit(name[i + 2]))
+        {
+          result += static_cast<char>(std::stoi(name.substr(i + 1, 2), nullptr, 16));
+          i += 2;
+        }
+      else
+        result += name[i];
+    return result;
+  }
+
+  /// Every parameter with its default, its allowed values and its
+  /// documentation, in .prm syntax (so the listing is a valid input file).
+  void
+  print_parameter_tree(const boost::property_tree::ptree &tree,
+                       const unsigned int                 indent,
+                       std::ostream                      &out)
+  {
+    const std::string pad(indent, ' ');
+    for (const auto &[key, child] : tree)
+      if (child.count("value") && child.count("default_value"))
+        {
+          out << pad << "# " << child.get<std::string>("documentation") << "\n"
+              << pad << "# Allowed: " << child.get<std::string>("pattern_description")
+              << "\n"
+              << pad << "set " << demangle(key) << " = "
+              << child.get<std::string>("default_value") << "\n\n";
+        }
+    for (const auto &[key, child] : tree)
+      if (!(child.count("value") && child.count("default_value")) && !child.empty())
+        {
+          out << pad << "subsection " << demangle(key) << "\n";
+          print_parameter_tree(child, indent + 2, out);
+          out << pad << "end\n\n";
+        }
+  }
+
   template <int dim>
   int
   run(ParameterHandler &prm, const std::string &name, const std::string &directory,
@@ -181,7 +229,15 @@ main(int argc, char **argv)
       if (cl.print_parameters)
         {
           if (root)
-            prm.print_parameters(std::cout, ParameterHandler::Description);
+            {
+              std::stringstream json;
+              prm.print_parameters(json, ParameterHandler::JSON);
+              boost::property_tree::ptree tree;
+              boost::property_tree::read_json(json, tree);
+              std::cout << "# contact_fem parameters: default values, allowed values and "
+                           "documentation.\n\n";
+              print_parameter_tree(tree, 0, std::cout);
+            }
           return 0;
         }
       if (cl.prm_file.empty())
