@@ -168,6 +168,26 @@ namespace contact_fem
       result.create_triangulation(vertices, cells, SubCellData());
     }
 
+    /// Reads a Gmsh file into @p coarse; throws naming the file on failure.
+    template <int dim>
+    void
+    read_gmsh(const std::string &file, Triangulation<dim> &coarse)
+    {
+      GridIn<dim> grid_in;
+      grid_in.attach_triangulation(coarse);
+      std::ifstream in(file);
+      try
+        {
+          grid_in.read_msh(in);
+        }
+      catch (const std::exception &e)
+        {
+          AssertThrow(false,
+                      ExcMessage("Geometry/Mesh file: cannot read '" + file +
+                                 "' as a Gmsh mesh: " + e.what()));
+        }
+    }
+
     bool
     close(const double a, const double b, const double scale)
     {
@@ -184,19 +204,7 @@ namespace contact_fem
 
     if (type == "mesh file")
       {
-        GridIn<2> grid_in;
-        grid_in.attach_triangulation(coarse);
-        std::ifstream in(mesh_file);
-        try
-          {
-            grid_in.read_msh(in);
-          }
-        catch (const std::exception &e)
-          {
-            AssertThrow(false,
-                        ExcMessage("Geometry/Mesh file: cannot read '" + mesh_file +
-                                   "' as a Gmsh mesh: " + e.what()));
-          }
+        read_gmsh(mesh_file, coarse);
         tria.copy_triangulation(coarse);
       }
     else if (type == "hertz cylinder")
@@ -345,19 +353,7 @@ namespace contact_fem
   Scene<3>::create_mesh(parallel::distributed::Triangulation<3> &tria) const
   {
     Triangulation<3> coarse;
-    GridIn<3>        grid_in;
-    grid_in.attach_triangulation(coarse);
-    std::ifstream in(mesh_file);
-    try
-      {
-        grid_in.read_msh(in);
-      }
-    catch (const std::exception &e)
-      {
-        AssertThrow(false,
-                    ExcMessage("Geometry/Mesh file: cannot read '" + mesh_file +
-                               "' as a Gmsh mesh: " + e.what()));
-      }
+    read_gmsh(mesh_file, coarse);
     tria.copy_triangulation(coarse);
     if (global_refinements > 0)
       tria.refine_global(global_refinements);

@@ -199,6 +199,7 @@ namespace contact_fem
     std::unique_ptr<TrilinosWrappers::MPI::Vector> transferred_solution;
     unsigned int                                   cycle = 0;
     std::vector<unsigned int> newton_iterations_of_cycle; ///< per load step
+    double strain_energy = 0., external_work = 0.; ///< at the last residual
     std::ofstream                                  convergence_csv;
   };
 } // namespace contact_fem

@@ -1,0 +1,409 @@
+#!/usr/bin/env python3
+"""Report of the stability suite (bench/stability/run.sh).
+
+Reads <results>/<group>/<case>/{run.txt, summary.json, stdout.txt,
+pressure_profile.csv}, judges every case against what run.sh says to expect
+of it, and writes a Markdown report (default doc/stability.md): one table per
+group, the automatic findings with a command to reproduce each, then the
+hand-written reading of the run kept in bench/stability/notes.md.
+
+Standard library only. Usage:
+    analyse.py [--results DIR] [--doc FILE | --doc -]
+"""
+
+import argparse
+import csv
+import datetime
+import glob
+import json
+import math
+import os
+import re
+import shlex
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(HERE))
+
+GROUPS = [
+    ("stiffness", "Stiffness ratio between the bodies (Hertz scene)"),
+    ("incompressible", "Near-incompressible bodies, Q1 against Q2 (Hertz scene, rigid plate)"),
+    ("load", "Load magnitude, 1e-8 to 1e2 times the Hertz default"),
+    ("gap", "Initial gap and initial penetration (contact blocks)"),
+    ("pull", "Loads that pull the bodies apart"),
+    ("mesh", "Distorted meshes and contact sides meshed 10x finer / coarser"),
+    ("penalty", "Automatic penalty and scale factor times 1e-6 ... 1e6 (Contact/Stiffness factor)"),
+]
+
+# Tolerances of the verdicts.
+HERTZ_P_TOL = 0.05        # |p_max / p_Hertz - 1|
+HERTZ_A_TOL = 1.5         # |a - a_Hertz| in slave elements
+CENTRE_TOL = 0.5          # |centre of the pressure| in slave elements
+IMBALANCE_TOL = 1e-6
+PRESSURE_TOL = 1e-6       # patch-type cases: max |p_i / p - 1|
+
+
+def read_kv(path):
+    info = {}
+    if os.path.exists(path):
+        with open(path, errors="replace") as f:
+            for line in f:
+                key, sep, value = line.rstrip("\n").partition("=")
+                if sep:
+                    info[key] = value
+    return info
+
+
+def read_profile(path):
+    rows = []
+    if not os.path.exists(path):
+        return rows
+    with open(path) as f:
+        for r in csv.DictReader(f):
+            try:
+                rows.append({k: float(v) for k, v in r.items()})
+            except (TypeError, ValueError):
+                continue
+    return rows
+
+
+def parse_stdout(path):
+    out = {"splits": 0, "newton_failures": 0, "failure": "", "step_attempts": 0,
+           "last_t": None, "errors": []}
+    if not os.path.exists(path):
+        return out
+    with open(path, errors="replace") as f:
+        for line in f:
+            s = line.strip()
+            if s.startswith("Splitting the step"):
+                out["splits"] += 1
+            elif s.startswith("Newton failed at"):
+                out["newton_failures"] += 1
+            elif s.startswith("Error: giving up at"):
+                out["failure"] = s[len("Error: giving up at"):].strip()
+            elif s.startswith("Load step"):
+                out["step_attempts"] += 1
+                m = re.search(r"t = (\S+)", s)
+                if m:
+                    out["last_t"] = m.group(1)
+            elif ("Error" in s or "Exception" in s or "error:" in s) and len(out["errors"]) < 3:
+                out["errors"].append(s)
+    return out
+
+
+def fmt(x, spec=".2e"):
+    if x is None or (isinstance(x, float) and math.isnan(x)):
+        return "-"
+    return format(x, spec)
+
+
+def pct(x):
+    return "-" if x is None else "%+.1f %%" % (100. * x)
+
+
+def iterations_text(its):
+    if not its:
+        return "none converged"
+    if len(its) <= 10:
+        return " ".join(str(i) for i in its)
+    return "%s … %s (%d steps, %d its)" % (" ".join(str(i) for i in its[:5]),
+                                           " ".join(str(i) for i in its[-2:]),
+                                           len(its), sum(its))
+
+
+def reproduce(run):
+    sets = [s for s in run.get("sets", "").split("\t") if s]
+    parts = ["build/contact_fem", run.get("scene", "?")]
+    for s in sets:
+        parts += ["--set", shlex.quote(s)]
+    return " ".join(parts)
+
+
+def analyse_case(d):
+    run = read_kv(os.path.join(d, "run.txt"))
+    case = {"dir": d, "run": run, "group": run.get("group", "?"),
+            "name": run.get("name", os.path.basename(d)),
+            "rc": int(run.get("exit_code", "-1") or -1),
+            "elapsed": float(run.get("elapsed", "nan") or "nan"),
+            "expect": run.get("expect", "").split(),
+            "order": int(run.get("order", "0") or 0)}
+    case["out"] = parse_stdout(os.path.join(d, "stdout.txt"))
+    trim = read_kv(os.path.join(d, "trim.txt"))
+    case["stdout_lines"] = int(trim["stdout_lines"]) if "stdout_lines" in trim else None
+    summary = None
+    path = os.path.join(d, "summary.json")
+    if os.path.exists(path):
+        try:
+            with open(path) as f:
+                summary = json.load(f)
+        except ValueError:
+            summary = None
+    case["summary"] = summary
+    c0 = summary["cycles"][0] if summary and summary.get("cycles") else {}
+    case["its"] = [s.get("newton_iterations") for s in c0.get("load_steps", [])]
+    case["last_time"] = c0.get("load_steps", [{}])[-1].get("time") if c0.get("load_steps") else None
+    contact = c0.get("contact", {})
+    reaction = c0.get("reaction", {})
+    analytical = c0.get("analytical", {})
+    case["contact"], case["reaction"], case["analytical"] = contact, reaction, analytical
+    case["wall"] = summary.get("wall_time") if summary else None
+    case["status"] = summary.get("status") if summary else None
+
+    prof = [r for r in read_profile(os.path.join(d, "pressure_profile.csv"))
+            if r.get("active", 0) > 0.5]
+    case["n_active_profile"] = len(prof)
+    if prof:
+        ps = [r["pressure"] for r in prof]
+        case["p_min"], case["p_max"] = min(ps), max(ps)
+        total = sum(ps)
+        case["centre"] = sum(r["pressure"] * r["x"] for r in prof) / total if total > 0 else None
+    else:
+        case["p_min"] = case["p_max"] = case["centre"] = None
+    h = contact.get("slave_element_size") or None
+    case["centre_h"] = (case["centre"] / h) if (case["centre"] is not None and h) else None
+    judge(case)
+    return case
+
+
+def judge(case):
+    """Sets case['verdict'] (short), case['kind'] (ok / expected / indicative /
+    hang / failure / unclear / wrong) and case['notes'] (list of str)."""
+    rc, out, exp = case["rc"], case["out"], case["expect"]
+    notes = []
+    # diag=TEXT may contain spaces ("diag=no contact"): take it from the
+    # re-joined string, up to the next key=value token.
+    m = re.search(r"diag=([^=]*?)(?:\s+\S+=|$)", " ".join(exp))
+    diag = m.group(1).strip() if m else None
+
+    if rc in (124, 137):
+        lines = case["stdout_lines"]
+        case["kind"] = "hang"
+        case["verdict"] = ("HANG: killed after %s s; %d step attempts, %d splits, t stuck at %s%s"
+                           % (case["run"].get("timeout", "?"), out["step_attempts"], out["splits"],
+                              out["last_t"], "" if lines is None else ", %d console lines" % lines))
+        case["notes"] = notes
+        return
+    if rc == 1:
+        case["kind"] = "failure"
+        case["verdict"] = "bad input (exit 1): " + (out["errors"][0] if out["errors"] else "?")
+        case["notes"] = notes
+        return
+    if rc not in (0, 2):
+        case["kind"] = "failure"
+        case["verdict"] = "CRASH (exit %d): %s" % (rc, out["errors"][0] if out["errors"] else "")
+        case["notes"] = notes
+        return
+    if rc == 2:
+        text = out["failure"] or (out["errors"][0] if out["errors"] else "no message")
+        if diag:
+            if diag.lower() in text.lower():
+                case["kind"] = "expected"
+                case["verdict"] = "stops as expected: " + text
+            else:
+                case["kind"] = "unclear"
+                case["verdict"] = ("stops, but not with the expected '%s' diagnosis: %s" % (diag, text))
+        else:
+            case["kind"] = "failure"
+            case["verdict"] = "FAILS: " + text
+        case["notes"] = notes
+        return
+
+    # rc == 0: converged
+    kind = "ok"
+    if diag:
+        kind = "wrong"
+        notes.append("converged although a '%s' stop was expected" % diag)
+    imb = case["reaction"].get("relative_imbalance")
+    applied = case["reaction"].get("applied_load")
+    if imb is not None and imb > IMBALANCE_TOL:
+        if applied is not None and applied < 1e-14:
+            notes.append("relative imbalance reported as %.2g with zero applied load "
+                         "(displacement-driven: the metric is meaningless, false alarm)" % imb)
+        else:
+            kind = "wrong"
+            notes.append("reaction imbalance %.2g" % imb)
+    n_active = case["contact"].get("active_slave_nodes")
+    for e in exp:
+        if e.startswith("p="):
+            p = float(e[2:])
+            if not n_active:
+                kind = "wrong"
+                notes.append("no active node, expected p = %g" % p)
+            elif case["p_min"] is not None:
+                dev = max(abs(case["p_min"] / p - 1.), abs(case["p_max"] / p - 1.))
+                case["p_dev"] = dev
+                if dev > PRESSURE_TOL:
+                    kind = "wrong"
+                    notes.append("pressure %.6g … %.6g, expected %g" % (case["p_min"], case["p_max"], p))
+        if e == "empty" and n_active:
+            kind = "wrong"
+            notes.append("%d active nodes, expected none" % n_active)
+    a = case["analytical"]
+    if a and ("hertz" in exp or "hertz-approx" in exp):
+        perr = a.get("p_max_relative_error")
+        aerr = a.get("a_error_in_slave_elements")
+        bad = []
+        if perr is not None and abs(perr) > HERTZ_P_TOL:
+            bad.append("p_max %s" % pct(perr))
+        if aerr is not None and abs(aerr) > HERTZ_A_TOL:
+            bad.append("a off by %.2g elements" % aerr)
+        if case["centre_h"] is not None and abs(case["centre_h"]) > CENTRE_TOL:
+            bad.append("pressure centre off by %.2g elements" % case["centre_h"])
+        if bad:
+            if "hertz" in exp:
+                kind = "wrong" if kind == "ok" else kind
+                notes.append("converged but far from Hertz: " + ", ".join(bad))
+            else:
+                kind = "indicative" if kind == "ok" else kind
+                notes.append("differs from Hertz (formula only indicative here): " + ", ".join(bad))
+    case["kind"] = kind
+    verdict = {"ok": "converged, correct", "indicative": "converged (see note)",
+               "wrong": "CONVERGED, WRONG?"}[kind]
+    if out["splits"]:
+        verdict += ", after %d step split(s)" % out["splits"]
+    case["verdict"] = verdict
+    case["notes"] = notes
+
+
+def table(cases, hertz, pressure):
+    head = ["case", "what", "Newton its per step", "splits", "result", "imbalance"]
+    if hertz:
+        head += ["p_max err", "a err [el]", "centre [el]"]
+    if pressure:
+        head += ["pressure (active nodes)"]
+    head += ["wall [s]"]
+    rows = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for c in cases:
+        out = c["out"]
+        split_txt = str(out["splits"])
+        if out["newton_failures"]:
+            split_txt += " (%d failed Newton)" % out["newton_failures"]
+        result = c["verdict"]
+        if c["notes"]:
+            result += "; " + "; ".join(c["notes"])
+        imb = c["reaction"].get("relative_imbalance")
+        imb_txt = fmt(imb, ".1e")
+        if imb is not None and (c["reaction"].get("applied_load") or 0.) < 1e-14:
+            imb_txt += " (no applied load)"
+        if c["rc"] == 2 and c["summary"] and c["last_time"] is not None:
+            imb_txt += " (at t = %.4g)" % c["last_time"]
+        row = ["`%s`" % c["name"], c["run"].get("description", ""),
+               iterations_text(c["its"]), split_txt, result.replace("|", "\\|"), imb_txt]
+        if hertz:
+            a = c["analytical"] if c["rc"] == 0 else {}
+            row += [pct(a.get("p_max_relative_error")) if a else "-",
+                    fmt(a.get("a_error_in_slave_elements"), ".2f") if a else "-",
+                    fmt(c["centre_h"], "+.2f") if a else "-"]
+        if pressure:
+            if c["p_min"] is not None and c["rc"] == 0:
+                row.append("%.6g … %.6g (%d nodes)" % (c["p_min"], c["p_max"], c["n_active_profile"]))
+            elif c["rc"] == 0:
+                row.append("no active node")
+            else:
+                row.append("-")
+        wall = c["wall"] if c["wall"] is not None and c["rc"] in (0, 2) else None
+        row.append(fmt(wall, ".2f") if wall is not None else "%.0f (killed)" % c["elapsed"]
+                   if c["rc"] in (124, 137) else fmt(c["elapsed"], ".2f"))
+        rows.append("| " + " | ".join(row) + " |")
+    return "\n".join(rows)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--results", default=os.path.join(HERE, "results"))
+    ap.add_argument("--doc", default=os.path.join(REPO, "doc", "stability.md"))
+    ap.add_argument("--notes", default=os.path.join(HERE, "notes.md"))
+    args = ap.parse_args()
+
+    cases = [analyse_case(os.path.dirname(p))
+             for p in glob.glob(os.path.join(args.results, "*", "*", "run.txt"))]
+    if not cases:
+        print("analyse.py: no runs under %s" % args.results, file=sys.stderr)
+        return 1
+    cases.sort(key=lambda c: c["order"])
+
+    shas = sorted({c["run"].get("binary_sha256", "?") for c in cases})
+    gits = sorted({c["run"].get("git", "?") for c in cases})
+    total = sum(c["elapsed"] for c in cases if not math.isnan(c["elapsed"]))
+    kinds = {}
+    for c in cases:
+        kinds[c["kind"]] = kinds.get(c["kind"], 0) + 1
+
+    md = []
+    md.append("# Stability suite")
+    md.append("")
+    md.append("Generated by `bench/stability/analyse.py` from the runs of "
+              "`bench/stability/run.sh` (%s). Re-run: `bench/stability/run.sh` "
+              "(about %.0f s of run time, one case at a time)." %
+              (datetime.date.today().isoformat(), total))
+    md.append("")
+    md.append("- binary: `build/contact_fem`, sha256 %s%s; sources `%s`" %
+              (", ".join("`%s`" % s for s in shas),
+               " (**the binary changed during the suite**)" if len(shas) > 1 else "",
+               ", ".join(gits)))
+    md.append("- %d cases, %.0f s in total: %s" % (
+        len(cases), total, ", ".join("%d %s" % (n, k) for k, n in sorted(kinds.items()))))
+    md.append("- verdict kinds: *ok* = converged and matches the expected physics; "
+              "*expected* = stops with the diagnosis the case is meant to provoke; "
+              "*indicative* = converged, reference only indicative; *failure* = reported "
+              "solver failure; *unclear* = stops with a misleading diagnosis; *wrong* = "
+              "converged but a check fails; *hang* = killed by the time limit.")
+    md.append("- columns: *Newton its per step* lists the converged load steps only (failed "
+              "attempts are counted under *splits*); *imbalance* = `reaction.relative_imbalance` "
+              "(of the last converged step for failed runs); *p_max err* = "
+              "`analytical.p_max_relative_error`; *a err [el]* = "
+              "`analytical.a_error_in_slave_elements`; *centre [el]* = pressure-weighted mean x "
+              "of the active slave nodes (deformed position, from pressure_profile.csv) in slave "
+              "elements, 0 for a centred contact; *wall* = `wall_time` of summary.json "
+              "(elapsed time for killed runs). Hertz errors are only given for converged runs.")
+    md.append("- tolerances of the verdicts: |p_max err| ≤ %g, |a err| ≤ %g elements, "
+              "|centre| ≤ %g elements, imbalance ≤ %g, patch pressures within %g relative." %
+              (HERTZ_P_TOL, HERTZ_A_TOL, CENTRE_TOL, IMBALANCE_TOL, PRESSURE_TOL))
+    md.append("")
+
+    known = [g for g, _ in GROUPS]
+    extra = sorted({c["group"] for c in cases} - set(known))
+    for g, title in GROUPS + [(e, e) for e in extra]:
+        gc = [c for c in cases if c["group"] == g]
+        if not gc:
+            continue
+        hertz = any(c["analytical"] for c in gc) or any(
+            "hertz" in e for c in gc for e in c["expect"])
+        pressure = any(e.startswith("p=") or e == "empty" for c in gc for e in c["expect"])
+        md.append("## %s" % title)
+        md.append("")
+        md.append(table(gc, hertz, pressure))
+        md.append("")
+
+    md.append("## Automatic findings")
+    md.append("")
+    md.append("Cases whose verdict is *hang*, *failure*, *unclear* or *wrong*, or with a note; "
+              "each with the command that reproduces it (from the repository root).")
+    md.append("")
+    for c in cases:
+        if c["kind"] in ("hang", "failure", "unclear", "wrong") or c["notes"]:
+            md.append("- **%s/%s** (%s): %s%s" % (
+                c["group"], c["name"], c["kind"], c["verdict"],
+                ("; " + "; ".join(c["notes"])) if c["notes"] else ""))
+            md.append("  `%s`" % reproduce(c["run"]))
+    md.append("")
+
+    if os.path.exists(args.notes):
+        with open(args.notes) as f:
+            md.append(f.read().rstrip() + "\n")
+
+    text = "\n".join(md) + "\n"
+    if args.doc == "-":
+        sys.stdout.write(text)
+    else:
+        os.makedirs(os.path.dirname(os.path.abspath(args.doc)), exist_ok=True)
+        with open(args.doc, "w") as f:
+            f.write(text)
+        print("wrote %s" % args.doc, file=sys.stderr)
+    for c in cases:
+        print("%-40s %-10s %s" % (c["group"] + "/" + c["name"], c["kind"], c["verdict"][:110]))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

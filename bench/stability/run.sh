@@ -1,0 +1,290 @@
+#!/usr/bin/env bash
+# ---------------------------------------------------------------------------
+# run.sh - stability suite of contact_fem (issue "Stiff and extreme cases").
+#
+# Runs stiff, soft, near-incompressible, tiny/huge-load, gap/penetration,
+# pull-apart, distorted/non-matching-mesh and penalty-scaling variations of
+# the Hertz scene (prm/hertz.prm) and of the contact-blocks scenes
+# (tests/scenes/*.prm), one after the other, each under a time limit, into
+# bench/stability/results/<group>/<case>/, then calls analyse.py, which
+# writes doc/stability.md.
+#
+# Usage: bench/stability/run.sh [options] [BINARY]
+#   BINARY            contact_fem executable (default: <repo>/build/contact_fem)
+#   --only REGEX      run only the cases whose "group/case" matches REGEX
+#                     (the report still covers every case found in the
+#                     results directory)
+#   --list            list the cases and exit
+#   --results DIR     where the runs go (default: bench/stability/results)
+#   --doc FILE        report (default: doc/stability.md); "-" = no report
+#   --timeout-scale X multiply every per-case time limit by X (default 1)
+#   -h, --help        this text
+#
+# A case whose program exits non-zero (2 = solver failure, 124 = killed by
+# the time limit, i.e. a hang) is recorded, not fatal. Serial, one thread.
+# ---------------------------------------------------------------------------
+set -euo pipefail
+
+script_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+repo_root=$(cd "$script_dir/../.." && pwd)
+
+binary="$repo_root/build/contact_fem"
+results="$script_dir/results"
+doc="$repo_root/doc/stability.md"
+only=""
+list_only=0
+timeout_scale=1
+
+usage() { sed -n '3,/^# ----/p' "${BASH_SOURCE[0]}" | sed '$d' | sed 's/^# \{0,1\}//'; }
+
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    --only)          only="${2:?--only needs a regex}"; shift 2 ;;
+    --list)          list_only=1; shift ;;
+    --results)       results="${2:?--results needs a directory}"; shift 2 ;;
+    --doc)           doc="${2:?--doc needs a file name or -}"; shift 2 ;;
+    --timeout-scale) timeout_scale="${2:?--timeout-scale needs a number}"; shift 2 ;;
+    -h|--help)       usage; exit 0 ;;
+    -*)              echo "run.sh: unknown option '$1'" >&2; usage >&2; exit 1 ;;
+    *)               binary="$1"; shift ;;
+  esac
+done
+[[ "$binary" = /* ]] || binary="$PWD/$binary"
+[[ "$results" = /* ]] || results="$PWD/$results"
+
+HERTZ="$repo_root/prm/hertz.prm"
+PATCH="$repo_root/tests/scenes/contact_patch_01.prm"
+GAP="$repo_root/tests/scenes/initial_gap_01.prm"
+PEN="$repo_root/tests/scenes/initial_penetration_01.prm"
+
+# The binary may be missing (or "text file busy") while it is rebuilt.
+wait_for_binary() {
+  local waited=0
+  until [[ -x "$binary" ]]; do
+    if (( waited >= ${STABILITY_WAIT:-600} )); then
+      echo "run.sh: $binary not found or not executable" >&2
+      exit 1
+    fi
+    (( waited == 0 )) && echo "waiting for $binary ..." >&2
+    sleep 5; waited=$(( waited + 5 ))
+  done
+}
+
+export OMP_NUM_THREADS=1 DEAL_II_NUM_THREADS=1
+git_rev=$(git -C "$repo_root" describe --always --dirty 2>/dev/null || echo unknown)
+n_cases=0
+n_nonzero=0
+
+# run_case GROUP NAME SCENE TIMEOUT "DESCRIPTION" "EXPECT" [Key=value ...]
+#   EXPECT: space-separated tokens used by analyse.py to judge the run:
+#     hertz          the Hertz formula applies (rigid or thick counter-body,
+#                    contact zone resolved): p_max and a must match
+#     hertz-approx   Hertz errors are shown but only indicative
+#     p=VALUE        every active slave node must carry the pressure VALUE
+#     diag=TEXT      the run must stop with a failure message containing TEXT
+#     empty          the run must converge with an empty active set
+run_case() {
+  local group=$1 name=$2 scene=$3 limit=$4 description=$5 expect=$6
+  shift 6
+  local id="$group/$name"
+  if [[ -n "$only" ]] && ! [[ "$id" =~ $only ]]; then
+    return 0
+  fi
+  if (( list_only )); then
+    printf '%-34s %s\n' "$id" "$description"
+    return 0
+  fi
+  local dir="$results/$group/$name"
+  rm -rf "$dir"; mkdir -p "$dir"
+  local cmd=("$binary" "$scene"
+             --set "Output/Write VTU=false"
+             --set "Output/Write pressure profile=true"
+             --set "Output/Print timing=false")
+  local kv
+  for kv in "$@"; do cmd+=(--set "$kv"); done
+  cmd+=(--output-directory "$dir")
+  limit=$(awk -v a="$limit" -v s="$timeout_scale" 'BEGIN{printf "%d", a*s+0.5}')
+
+  local rc attempt start end
+  for attempt in 1 2 3 4 5 6; do
+    wait_for_binary
+    echo "== $id" >&2
+    start=$(date +%s.%N)
+    rc=0
+    timeout --kill-after=10 "$limit" "${cmd[@]}" > "$dir/stdout.txt" 2>&1 || rc=$?
+    end=$(date +%s.%N)
+    # 126/127: binary being replaced by the linker at this moment: retry.
+    if (( rc == 126 || rc == 127 )); then
+      echo "   exit $rc (binary being rebuilt?), retrying in 10 s" >&2
+      sleep 10
+      continue
+    fi
+    break
+  done
+  # A hang writes a large console log: keep its head and tail only.
+  if (( rc == 124 || rc == 137 )); then
+    local lines
+    lines=$(wc -l < "$dir/stdout.txt")
+    if (( lines > 4000 )); then
+      { head -n 2000 "$dir/stdout.txt"
+        echo "[... $(( lines - 3000 )) lines removed by run.sh ...]"
+        tail -n 1000 "$dir/stdout.txt"; } > "$dir/stdout.trimmed"
+      echo "stdout_lines=$lines" > "$dir/trim.txt"
+      mv "$dir/stdout.trimmed" "$dir/stdout.txt"
+      rm -f "$dir/log.txt"
+    fi
+  fi
+  {
+    echo "group=$group"
+    echo "name=$name"
+    echo "description=$description"
+    echo "expect=$expect"
+    echo "scene=${scene#"$repo_root"/}"
+    echo "sets=$(printf '%s\t' "$@")"
+    echo "exit_code=$rc"
+    echo "timeout=$limit"
+    echo "elapsed=$(awk -v a="$start" -v b="$end" 'BEGIN{printf "%.3f", b-a}')"
+    echo "binary_sha256=$(sha256sum "$binary" | cut -c1-16)"
+    echo "git=$git_rev"
+    echo "order=$n_cases"
+  } > "$dir/run.txt"
+  n_cases=$(( n_cases + 1 ))
+  if (( rc != 0 )); then
+    n_nonzero=$(( n_nonzero + 1 ))
+    echo "   exit code $rc" >&2
+  fi
+  return 0
+}
+
+if (( ! list_only )); then
+  wait_for_binary
+  mkdir -p "$results"
+fi
+
+# --- 1. Stiffness ratio between the bodies --------------------------------
+# Hertz scene: cylinder (material 1, slave) on a plate (material 2, master).
+# The softer body keeps E = 200. Hertz uses E* of both bodies; with a soft
+# plate of thickness 1 (a thin layer on a clamped base) it is only indicative.
+G=stiffness
+run_case $G ratio-1            "$HERTZ" 120 "E_cyl = E_plate = 200 (graded zone widened to 0.8 for a = 0.545)" "hertz-approx" \
+  "Materials/Young's moduli=200, 200" "Geometry/Hertz cylinder/Refinement half width=0.8" \
+  "Geometry/Hertz cylinder/Plate contact refinements=6"
+run_case $G plate-1e4          "$HERTZ" 120 "E_plate / E_cyl = 1e4" "hertz" \
+  "Materials/Young's moduli=200, 2e6"
+run_case $G plate-1e8          "$HERTZ" 120 "E_plate / E_cyl = 1e8" "hertz" \
+  "Materials/Young's moduli=200, 2e10"
+run_case $G plate-1e12         "$HERTZ" 120 "E_plate / E_cyl = 1e12" "hertz" \
+  "Materials/Young's moduli=200, 2e14"
+run_case $G cyl-1e4            "$HERTZ" 120 "E_cyl / E_plate = 1e4, plate refined like the cylinder (6 rounds)" "hertz-approx" \
+  "Materials/Young's moduli=2e6, 200" "Geometry/Hertz cylinder/Plate contact refinements=6"
+run_case $G cyl-1e8            "$HERTZ" 120 "E_cyl / E_plate = 1e8, plate refined (6 rounds)" "hertz-approx" \
+  "Materials/Young's moduli=2e10, 200" "Geometry/Hertz cylinder/Plate contact refinements=6"
+run_case $G cyl-1e12           "$HERTZ" 120 "E_cyl / E_plate = 1e12, plate refined (6 rounds)" "hertz-approx" \
+  "Materials/Young's moduli=2e14, 200" "Geometry/Hertz cylinder/Plate contact refinements=6"
+run_case $G cyl-1e4-coarse     "$HERTZ" 120 "E_cyl / E_plate = 1e4 on the default mesh (soft plate coarse: 3 rounds)" "hertz-approx" \
+  "Materials/Young's moduli=2e6, 200"
+run_case $G cyl-1e8-swapped    "$HERTZ" 120 "E_cyl / E_plate = 1e8, soft plate made the slave (Pairs = 4: 3), plate refined" "hertz-approx" \
+  "Materials/Young's moduli=2e10, 200" "Geometry/Hertz cylinder/Plate contact refinements=6" "Contact/Pairs=4: 3"
+
+# --- 2. Near-incompressible bodies, Q1 and Q2 -----------------------------
+# Both bodies get the same nu; the plate stays rigid (E = 2e12), so Hertz
+# applies with E* = E_cyl / (1 - nu^2).
+G=incompressible
+for deg in 1 2; do
+  for nu in 0.3 0.45 0.49 0.499 0.4999; do
+    run_case $G "Q$deg-nu$nu" "$HERTZ" 180 "Q$deg, nu = $nu for both bodies" "hertz" \
+      "Finite element/Degree=$deg" "Materials/Poisson's ratios=$nu, $nu"
+  done
+done
+
+# --- 3. Load magnitude: 1e-8 ... 1e2 times the Hertz default (p = 0.2 t) ---
+# a_Hertz = 0.385 sqrt(factor); slave element size at the contact ~0.049.
+G=load
+run_case $G x1e-8   "$HERTZ" 120 "p = 1e-8 x 0.2 t (a = 3.9e-5, far below one element)" "hertz-approx" \
+  "Boundary conditions/Pressure=1: 1e-8*0.2*t"
+run_case $G x1e-4   "$HERTZ" 120 "p = 1e-4 x 0.2 t (a = 3.9e-3 < one element)" "hertz-approx" \
+  "Boundary conditions/Pressure=1: 1e-4*0.2*t"
+run_case $G x1e-2   "$HERTZ" 120 "p = 1e-2 x 0.2 t (a = 0.039, about one element)" "hertz-approx" \
+  "Boundary conditions/Pressure=1: 1e-2*0.2*t"
+run_case $G x1      "$HERTZ" 120 "reference Hertz scene (a = 0.385)" "hertz" \
+  "Boundary conditions/Pressure=1: 0.2*t"
+run_case $G x1e1    "$HERTZ" 120 "p = 10 x 0.2 t (a = 1.22), graded zone 1.5, 4 steps" "hertz" \
+  "Boundary conditions/Pressure=1: 10*0.2*t" "Geometry/Hertz cylinder/Refinement half width=1.5" \
+  "Load stepping/Number of load steps=4"
+run_case $G x1e2    "$HERTZ" 180 "p = 100 x 0.2 t (a = 3.85 = 0.48 R), graded zone 4.5, 10 steps" "hertz-approx" \
+  "Boundary conditions/Pressure=1: 100*0.2*t" "Geometry/Hertz cylinder/Refinement half width=4.5" \
+  "Load stepping/Number of load steps=10"
+run_case $G x1e2-narrow "$HERTZ" 180 "p = 100 x 0.2 t on the default mesh (graded zone 0.5 << a), 2 steps" "hertz-approx" \
+  "Boundary conditions/Pressure=1: 100*0.2*t"
+
+# --- 4. Initial gap / initial penetration (contact blocks) -----------------
+G=gap
+run_case $G gap-closing       "$GAP" 30 "tests/scenes/initial_gap_01.prm: gap 0.01 closed by u_top = -0.02 t, 4 steps (closure exactly at t = 0.5)" "p=0.666667"
+run_case $G gap-closing-3     "$GAP" 30 "same, 3 steps (closure inside step 2)" "p=0.666667" \
+  "Load stepping/Number of load steps=3"
+run_case $G gap-no-loss       "$GAP" 30 "same with Allow loss of contact = false (steps 1-2 have no contact by design)" "diag=no contact" \
+  "Contact/Allow loss of contact=false"
+run_case $G penetration       "$PEN" 30 "tests/scenes/initial_penetration_01.prm: overlap 0.005, p = 1" "p=1"
+run_case $G penetration-deep  "$PEN" 30 "overlap 0.2 (20 % of the block height), p = 1" "p=1" \
+  "Geometry/Contact blocks/Initial gap=-0.2"
+
+# --- 5. Loads pulling the bodies apart -------------------------------------
+G=pull
+run_case $G blocks-up-noloss  "$GAP" 30 "blocks in contact, top pulled up u_y = +0.01 t, loss of contact not allowed" "diag=no contact" \
+  "Geometry/Contact blocks/Initial gap=0" "Boundary conditions/Prescribed displacement=1: y = 0.01*t" \
+  "Contact/Allow loss of contact=false"
+run_case $G blocks-up-loss    "$GAP" 30 "same, loss of contact allowed (upper block held by the prescribed top)" "empty" \
+  "Geometry/Contact blocks/Initial gap=0" "Boundary conditions/Prescribed displacement=1: y = 0.01*t" \
+  "Contact/Allow loss of contact=true"
+run_case $G hertz-pull-noloss "$HERTZ" 60 "Hertz with p = -0.2 t (pulls the cylinder off), loss not allowed" "diag=no contact" \
+  "Boundary conditions/Pressure=1: -0.2*t"
+run_case $G hertz-pull-loss   "$HERTZ" 60 "same, loss allowed: the cylinder has no support left (singular)" "diag=singular" \
+  "Boundary conditions/Pressure=1: -0.2*t" "Contact/Allow loss of contact=true"
+run_case $G blocks-pressure-pull-loss "$PATCH" 30 "patch blocks, p = -2 t on the top, loss allowed: the upper block floats (singular)" "diag=singular" \
+  "Boundary conditions/Pressure=1: -2*t" "Contact/Allow loss of contact=true"
+
+# --- 6. Distorted and non-matching meshes ----------------------------------
+G=mesh
+run_case $G hertz-distort-0.1   "$HERTZ" 120 "Hertz, Distortion = 0.1" "hertz" "Geometry/Distortion=0.1"
+run_case $G hertz-distort-0.3   "$HERTZ" 120 "Hertz, Distortion = 0.3" "hertz" "Geometry/Distortion=0.3"
+run_case $G hertz-distort-0.3-r7 "$HERTZ" 120 "Hertz, Distortion = 0.3, one more contact refinement (7)" "hertz" \
+  "Geometry/Distortion=0.3" "Geometry/Hertz cylinder/Contact refinements=7"
+run_case $G hertz-distort-0.3-Q2 "$HERTZ" 180 "Hertz, Distortion = 0.3, Q2" "hertz" \
+  "Geometry/Distortion=0.3" "Finite element/Degree=2"
+run_case $G hertz-distort-0.3-p1e-6 "$HERTZ" 120 "Hertz, Distortion = 0.3, p = 1e-6 t (shows the free rotation of the half-disc)" "hertz-approx" \
+  "Geometry/Distortion=0.3" "Boundary conditions/Pressure=1: 1e-6*t"
+run_case $G blocks-distort-0.3  "$PATCH" 30 "patch test (p = 2), Distortion = 0.3" "p=2" "Geometry/Distortion=0.3"
+run_case $G blocks-distort-0.3-Q2 "$PATCH" 30 "patch test, Distortion = 0.3, Q2" "p=2" \
+  "Geometry/Distortion=0.3" "Finite element/Degree=2"
+run_case $G blocks-20-on-2      "$PATCH" 30 "patch test, slave 20 x 20 cells on master 2 x 2" "p=2" \
+  "Geometry/Contact blocks/Upper cells=20" "Geometry/Contact blocks/Lower cells=2"
+run_case $G blocks-2-on-20      "$PATCH" 30 "patch test, slave 2 x 2 cells on master 20 x 20" "p=2" \
+  "Geometry/Contact blocks/Upper cells=2" "Geometry/Contact blocks/Lower cells=20"
+run_case $G blocks-20-on-2-distort "$PATCH" 30 "patch test, 20 on 2, Distortion = 0.3" "p=2" \
+  "Geometry/Contact blocks/Upper cells=20" "Geometry/Contact blocks/Lower cells=2" "Geometry/Distortion=0.3"
+run_case $G gap-2-on-20         "$GAP" 30 "closing gap, slave 2 x 2 on master 20 x 20" "p=0.666667" \
+  "Geometry/Contact blocks/Upper cells=2" "Geometry/Contact blocks/Lower cells=20"
+
+# --- 7. Penalty / scale factor: Contact/Stiffness factor 1e-6 ... 1e6 ------
+G=penalty
+for f in 1e-6 1e-3 1 1e3 1e6; do
+  run_case $G "hertz-k$f" "$HERTZ" 120 "Hertz, Stiffness factor = $f" "hertz" "Contact/Stiffness factor=$f"
+done
+for f in 1e-6 1e-3 1e-1 1e3 1e6; do
+  run_case $G "gap-k$f" "$GAP" 30 "closing gap (closure at a step end), Stiffness factor = $f" "p=0.666667" \
+    "Contact/Stiffness factor=$f"
+done
+for f in 1e-6 1e6; do
+  run_case $G "penetration-k$f" "$PEN" 30 "initial penetration, Stiffness factor = $f" "p=1" \
+    "Contact/Stiffness factor=$f"
+done
+
+if (( list_only )); then
+  exit 0
+fi
+echo "$n_cases case(s) run, $n_nonzero with a non-zero exit code" >&2
+
+if [[ "$doc" != "-" ]]; then
+  python3 "$script_dir/analyse.py" --results "$results" --doc "$doc"
+fi
+echo "runs in $results" >&2
