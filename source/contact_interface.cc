@@ -100,9 +100,14 @@ namespace contact_fem
 
     nodes.clear();
     faces.clear();
+    slave_faces_per_rank.clear();
+    master_faces_per_rank.clear();
     std::map<types::global_dof_index, unsigned int> node_of_dof;
     const unsigned int record = 5 + nodes_per_face * 3 * dim;
     for (const auto &chunk : all)
+      {
+      slave_faces_per_rank.push_back(0);
+      master_faces_per_rank.push_back(0);
       for (unsigned int r = 0; r + record <= chunk.size(); r += record)
         {
           Face face;
@@ -134,8 +139,10 @@ namespace contact_fem
               (face.slave ? nodes[index].slave : nodes[index].master) = true;
               face.nodes.push_back(index);
             }
+          ++(face.slave ? slave_faces_per_rank.back() : master_faces_per_rank.back());
           faces.push_back(face);
         }
+      }
 
     interface_dofs.clear();
     for (const auto &node : nodes)

@@ -114,6 +114,12 @@ namespace contact_fem
       .set("slave_element_size", n_active > 0 ? size_sum / n_active : 0.)
       .set("penalty", contact->penalty.empty() ? 0. : contact->penalty[0])
       .set("scale_factor", contact->scale.empty() ? 0. : contact->scale[0]);
+    Json slave_split = Json::array(), master_split = Json::array();
+    for (const unsigned int n : interface->slave_faces_per_rank)
+      slave_split.push(n);
+    for (const unsigned int n : interface->master_faces_per_rank)
+      master_split.push(n);
+    result.set("slave_faces_per_rank", slave_split).set("master_faces_per_rank", master_split);
     return result;
   }
 

@@ -130,6 +130,10 @@ def analyse_case(d):
     case["out"] = parse_stdout(os.path.join(d, "stdout.txt"))
     trim = read_kv(os.path.join(d, "trim.txt"))
     case["stdout_lines"] = int(trim["stdout_lines"]) if "stdout_lines" in trim else None
+    # counts of a trimmed console log were taken by run.sh before trimming
+    for key in ("step_attempts", "splits", "newton_failures"):
+        if trim.get(key, "").isdigit():
+            case["out"][key] = int(trim[key])
     summary = None
     path = os.path.join(d, "summary.json")
     if os.path.exists(path):
@@ -195,6 +199,12 @@ def judge(case):
         return
     if rc == 2:
         text = out["failure"] or (out["errors"][0] if out["errors"] else "no message")
+        has = [label for label, pattern in (("step", r"load step \d+"),
+                                            ("iteration", r"iteration"),
+                                            ("residuals", r"\|r_u\|"),
+                                            ("hint", r"hint|set contact/"))
+               if re.search(pattern, text, re.I)]
+        text += " [message gives: %s]" % (", ".join(has) if has else "nothing")
         if diag:
             if diag.lower() in text.lower():
                 case["kind"] = "expected"

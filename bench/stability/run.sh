@@ -129,7 +129,11 @@ run_case() {
       { head -n 2000 "$dir/stdout.txt"
         echo "[... $(( lines - 3000 )) lines removed by run.sh ...]"
         tail -n 1000 "$dir/stdout.txt"; } > "$dir/stdout.trimmed"
-      echo "stdout_lines=$lines" > "$dir/trim.txt"
+      { echo "stdout_lines=$lines"
+        echo "step_attempts=$(grep -c 'Load step' "$dir/stdout.txt" || true)"
+        echo "splits=$(grep -c 'Splitting the step' "$dir/stdout.txt" || true)"
+        echo "newton_failures=$(grep -c 'Newton failed at' "$dir/stdout.txt" || true)"
+      } > "$dir/trim.txt"
       mv "$dir/stdout.trimmed" "$dir/stdout.txt"
       rm -f "$dir/log.txt"
     fi

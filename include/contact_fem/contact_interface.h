@@ -143,6 +143,8 @@ namespace contact_fem
     std::vector<SlaveNode>      slave_nodes;
     std::vector<PairStatistics> statistics;
     unsigned int                degree = 1;
+    /// How the surfaces are split over the ranks (locally owned faces).
+    std::vector<unsigned int> slave_faces_per_rank, master_faces_per_rank;
 
   private:
     std::vector<types::global_dof_index>               interface_dofs;
