@@ -206,8 +206,7 @@ python3 "$script_dir/analyse.py" --results "$results" --doc "$repo_root/doc/conv
   --plot-data "$results/plot"
 mkdir -p "$repo_root/doc/figures"
 for gp in convergence_dofs convergence_time convergence_mesh; do
-  gnuplot -e "datadir='$results/plot'; outfile='$repo_root/doc/figures/$gp.png'" \
-    "$script_dir/$gp.gp"
+  (cd "$script_dir" && gnuplot -e "datadir='$results/plot'; outfile='$repo_root/doc/figures/$gp.png'" "$gp.gp")
 done
 echo "runs in $results, report in doc/convergence.md, figures in doc/figures/" >&2
 exit "$failed"
