@@ -13,9 +13,9 @@ do for [d=1:2] {
   set xrange [-10.5:10.5]; set yrange [-0.5:9.5]
   plot f with lines lw 0.4 lc rgb '#202020'
   set title sprintf('Q%d spr contact: contact zone (dashed: x = ±a)', d)
-  set xrange [-1.0:1.0]; set yrange [0.7:1.6]
-  set arrow 1 from -a_hertz, 0.7 to -a_hertz, 1.6 nohead dt 2 lc rgb '#d7301f' lw 1.5 front
-  set arrow 2 from a_hertz, 0.7 to a_hertz, 1.6 nohead dt 2 lc rgb '#d7301f' lw 1.5 front
+  set xrange [-0.6:0.6]; set yrange [0.9:1.25]
+  set arrow 1 from -a_hertz, 0.9 to -a_hertz, 1.25 nohead dt 2 lc rgb '#d7301f' lw 1.5 front
+  set arrow 2 from a_hertz, 0.9 to a_hertz, 1.25 nohead dt 2 lc rgb '#d7301f' lw 1.5 front
   plot f with lines lw 0.5 lc rgb '#202020'
   unset arrow 1; unset arrow 2
 }

@@ -17,7 +17,7 @@
 #                default (finer) graded mesh, REF_CYCLES cycles: the
 #                overkill whose potential energy (extrapolated) is Pi_ref.
 #   mesh         Q1 and Q2 'spr contact' runs with VTU output up to about
-#                20k DoFs, only to show where the refinement goes (not timed
+#                MESH_DOF_CAP DoFs, only to show where the refinement goes (not timed
 #                in the study).
 # Then analyse.py computes errors, rates and effectivities, writes the gnuplot
 # data and doc/convergence.md, and gnuplot draws doc/figures/convergence_*.png.
@@ -29,8 +29,8 @@
 #   --results DIR    where the runs go (default: bench/hertz_convergence/results)
 #   --analyse-only   do not run anything, only analyse DIR and plot
 #   -h, --help       this text
-# Environment: DOF_CAP_Q1 (default 120000), DOF_CAP_Q2 (60000),
-#   REF_CYCLES (5), STUDY_START_CONTACT_REFINEMENTS (3).
+# Environment: DOF_CAP_Q1 (default 100000), DOF_CAP_Q2 (60000),
+#   REF_CYCLES (5), MESH_DOF_CAP (15000), STUDY_START_CONTACT_REFINEMENTS (3).
 # ---------------------------------------------------------------------------
 set -euo pipefail
 
@@ -41,9 +41,10 @@ binary="$repo_root/build/contact_fem"
 results="$script_dir/results"
 analyse_only=0
 prm="$repo_root/prm/hertz.prm"
-dof_cap_q1=${DOF_CAP_Q1:-120000}
+dof_cap_q1=${DOF_CAP_Q1:-100000}
 dof_cap_q2=${DOF_CAP_Q2:-60000}
 ref_cycles=${REF_CYCLES:-5}
+mesh_cap=${MESH_DOF_CAP:-15000}
 start_cr=${STUDY_START_CONTACT_REFINEMENTS:-3}
 
 usage() { sed -n '3,/^# ----/p' "${BASH_SOURCE[0]}" | sed '$d' | sed 's/^# \{0,1\}//'; }
@@ -149,6 +150,7 @@ failed=0
 if (( analyse_only == 0 )); then
   ensure_gnuplot
   snapshot_binary
+  n_cores=$(nproc)
   export OMP_NUM_THREADS=1 DEAL_II_NUM_THREADS=1
   {
     echo "date=$(date -u '+%Y-%m-%d %H:%M UTC')"
@@ -157,7 +159,7 @@ if (( analyse_only == 0 )); then
     echo "binary_mtime=$(date -u -r "$binary" '+%Y-%m-%d %H:%M:%S UTC')"
     echo "binary_sha256=$(sha256sum "$results/bin/contact_fem" | cut -c1-16)"
     echo "cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')"
-    echo "nproc=$(nproc)"
+    echo "nproc=$n_cores"
     echo "dof_cap_q1=$dof_cap_q1"
     echo "dof_cap_q2=$dof_cap_q2"
     echo "ref_cycles=$ref_cycles"
@@ -190,7 +192,7 @@ if (( analyse_only == 0 )); then
   # Meshes for the picture of where the refinement goes (VTU on; not part of
   # the timing comparison).
   for degree in 1 2; do
-    run_case "mesh-q$degree" 20000 --set "Output/Write pressure profile=false" \
+    run_case "mesh-q$degree" "$mesh_cap" --set "Output/Write pressure profile=false" \
       "${start_mesh[@]}" --set "Finite element/Degree=$degree" "${adaptive[@]}" \
       --set "Refinement/Estimator=spr contact" --set "Output/Write VTU=true"
   done

@@ -83,6 +83,8 @@ n_nonzero=0
 #     p=VALUE        every active slave node must carry the pressure VALUE
 #     diag=TEXT      the run must stop with a failure message containing TEXT
 #     empty          the run must converge with an empty active set
+#     centred        the pressure must be centred at x = 0 (within half an
+#                    element)
 run_case() {
   local group=$1 name=$2 scene=$3 limit=$4 description=$5 expect=$6
   shift 6
@@ -162,6 +164,11 @@ run_case() {
 
 if (( ! list_only )); then
   wait_for_binary
+  # A full run starts from an empty results directory, so that cases removed
+  # from this script do not linger in the report.
+  if [[ -z "$only" && -d "$results" ]]; then
+    find "$results" -mindepth 1 -maxdepth 1 -type d -exec rm -rf {} +
+  fi
   mkdir -p "$results"
 fi
 
@@ -199,6 +206,12 @@ for deg in 1 2; do
     run_case $G "Q$deg-nu$nu" "$HERTZ" 180 "Q$deg, nu = $nu for both bodies" "hertz" \
       "Finite element/Degree=$deg" "Materials/Poisson's ratios=$nu, $nu"
   done
+done
+# Does the error at nu = 0.4999 go away with the mesh? (locking: slowly)
+for deg in 1 2; do
+  run_case $G "Q$deg-nu0.4999-fine" "$HERTZ" 240 "Q$deg, nu = 0.4999, finer mesh (Cylinder refinements 3, Contact refinements 7)" "hertz" \
+    "Finite element/Degree=$deg" "Materials/Poisson's ratios=0.4999, 0.4999" \
+    "Geometry/Hertz cylinder/Cylinder refinements=3" "Geometry/Hertz cylinder/Contact refinements=7"
 done
 
 # --- 3. Load magnitude: 1e-8 ... 1e2 times the Hertz default (p = 0.2 t) ---
@@ -255,8 +268,8 @@ run_case $G hertz-distort-0.3-r7 "$HERTZ" 120 "Hertz, Distortion = 0.3, one more
   "Geometry/Distortion=0.3" "Geometry/Hertz cylinder/Contact refinements=7"
 run_case $G hertz-distort-0.3-Q2 "$HERTZ" 180 "Hertz, Distortion = 0.3, Q2" "hertz" \
   "Geometry/Distortion=0.3" "Finite element/Degree=2"
-run_case $G hertz-distort-0.3-p1e-6 "$HERTZ" 120 "Hertz, Distortion = 0.3, p = 1e-6 t (shows the free rotation of the half-disc)" "hertz-approx" \
-  "Geometry/Distortion=0.3" "Boundary conditions/Pressure=1: 1e-6*t"
+run_case $G hertz-distort-0.05-Q2 "$HERTZ" 60 "Hertz, Distortion = 0.05, Q2" "hertz" \
+  "Geometry/Distortion=0.05" "Finite element/Degree=2"
 run_case $G blocks-distort-0.3  "$PATCH" 30 "patch test (p = 2), Distortion = 0.3" "p=2" "Geometry/Distortion=0.3"
 run_case $G blocks-distort-0.3-Q2 "$PATCH" 30 "patch test, Distortion = 0.3, Q2" "p=2" \
   "Geometry/Distortion=0.3" "Finite element/Degree=2"
@@ -269,7 +282,22 @@ run_case $G blocks-20-on-2-distort "$PATCH" 30 "patch test, 20 on 2, Distortion 
 run_case $G gap-2-on-20         "$GAP" 30 "closing gap, slave 2 x 2 on master 20 x 20" "p=0.666667" \
   "Geometry/Contact blocks/Upper cells=2" "Geometry/Contact blocks/Lower cells=20"
 
-# --- 7. Penalty / scale factor: Contact/Stiffness factor 1e-6 ... 1e6 ------
+# --- 7. Rigid-body mode left free by the Hertz scene --------------------------
+# The top of the half-disc is fixed in x only and passes through the disc
+# centre: a rotation about the centre moves the top only in y and the arc only
+# tangentially, which frictionless contact does not resist.
+G=mechanism
+run_case $G hertz-asym-load "$HERTZ" 60 "Hertz with a 1 % slope in the top pressure, p = 0.2 t (1 + 0.01 x): a moment about the disc centre that nothing resists" "diag=singular" \
+  "Boundary conditions/Pressure=1: 0.2*t*(1+0.01*x)"
+run_case $G hertz-distort-0.3-p1e-6 "$HERTZ" 60 "Hertz, Distortion = 0.3, p = 1e-6 t" "hertz-approx" \
+  "Geometry/Distortion=0.3" "Boundary conditions/Pressure=1: 1e-6*t"
+run_case $G hertz-topdisp "$HERTZ" 60 "Hertz loaded by u_y = -0.03 t on the top instead of the pressure (rotation blocked), regular mesh" "centred" \
+  "Boundary conditions/Pressure=" "Boundary conditions/Prescribed displacement=1: y = -0.03*t" "Analytical solution/Type=none"
+run_case $G hertz-topdisp-distort-0.3 "$HERTZ" 60 "same, Distortion = 0.3" "centred" \
+  "Boundary conditions/Pressure=" "Boundary conditions/Prescribed displacement=1: y = -0.03*t" "Analytical solution/Type=none" \
+  "Geometry/Distortion=0.3"
+
+# --- 8. Penalty / scale factor: Contact/Stiffness factor 1e-6 ... 1e6 ------
 G=penalty
 for f in 1e-6 1e-3 1 1e3 1e6; do
   run_case $G "hertz-k$f" "$HERTZ" 120 "Hertz, Stiffness factor = $f" "hertz" "Contact/Stiffness factor=$f"
