@@ -12,11 +12,10 @@ do for [d=1:2] {
   set title sprintf('Q%d spr contact: whole model', d)
   set xrange [-10.5:10.5]; set yrange [-0.5:9.5]
   plot f with lines lw 0.4 lc rgb '#202020'
-  set title sprintf('Q%d spr contact: contact zone (dashed: x = ±a)', d)
-  set xrange [-0.6:0.6]; set yrange [0.9:1.25]
-  set arrow 1 from -a_hertz, 0.9 to -a_hertz, 1.25 nohead dt 2 lc rgb '#d7301f' lw 1.5 front
-  set arrow 2 from a_hertz, 0.9 to a_hertz, 1.25 nohead dt 2 lc rgb '#d7301f' lw 1.5 front
+  set title sprintf('Q%d spr contact: right half of the contact zone (dashed: x = a)', d)
+  set xrange [-0.02:0.52]; set yrange [0.97:1.24]
+  set arrow 2 from a_hertz, 0.97 to a_hertz, 1.24 nohead dt 2 lc rgb '#d7301f' lw 1.5 front
   plot f with lines lw 0.5 lc rgb '#202020'
-  unset arrow 1; unset arrow 2
+  unset arrow 2
 }
 unset multiplot

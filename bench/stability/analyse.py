@@ -73,15 +73,23 @@ def parse_stdout(path):
            "last_t": None, "errors": []}
     if not os.path.exists(path):
         return out
+    continuing = False
     with open(path, errors="replace") as f:
         for line in f:
             s = line.strip()
+            # the failure message may be wrapped over indented lines
+            if continuing:
+                if line.startswith((" ", "\t")) and s and not s.startswith(("|", "The results")):
+                    out["failure"] += " " + s
+                    continue
+                continuing = False
             if s.startswith("Splitting the step"):
                 out["splits"] += 1
             elif s.startswith("Newton failed at"):
                 out["newton_failures"] += 1
             elif s.startswith("Error: giving up at"):
                 out["failure"] = s[len("Error: giving up at"):].strip()
+                continuing = True
             elif s.startswith("Load step"):
                 out["step_attempts"] += 1
                 m = re.search(r"t = (\S+)", s)

@@ -74,6 +74,10 @@ export OMP_NUM_THREADS=1 DEAL_II_NUM_THREADS=1
 git_rev=$(git -C "$repo_root" describe --always --dirty 2>/dev/null || echo unknown)
 n_cases=0
 n_nonzero=0
+case_index=0
+rerun_pass=0
+declare -A order_of=() stale=()
+case_order() { echo "${order_of[$1]:-0}"; }
 
 # run_case GROUP NAME SCENE TIMEOUT "DESCRIPTION" "EXPECT" [Key=value ...]
 #   EXPECT: space-separated tokens used by analyse.py to judge the run:
@@ -89,7 +93,12 @@ run_case() {
   local group=$1 name=$2 scene=$3 limit=$4 description=$5 expect=$6
   shift 6
   local id="$group/$name"
+  case_index=$(( case_index + 1 ))
+  order_of["$id"]=$case_index
   if [[ -n "$only" ]] && ! [[ "$id" =~ $only ]]; then
+    return 0
+  fi
+  if (( rerun_pass )) && [[ -z "${stale[$id]:-}" ]]; then
     return 0
   fi
   if (( list_only )); then
@@ -107,9 +116,10 @@ run_case() {
   cmd+=(--output-directory "$dir")
   limit=$(awk -v a="$limit" -v s="$timeout_scale" 'BEGIN{printf "%d", a*s+0.5}')
 
-  local rc attempt start end
+  local rc attempt start end sha
   for attempt in 1 2 3 4 5 6; do
     wait_for_binary
+    sha=$(sha256sum "$binary" | cut -c1-16)
     echo "== $id" >&2
     start=$(date +%s.%N)
     rc=0
@@ -150,9 +160,9 @@ run_case() {
     echo "exit_code=$rc"
     echo "timeout=$limit"
     echo "elapsed=$(awk -v a="$start" -v b="$end" 'BEGIN{printf "%.3f", b-a}')"
-    echo "binary_sha256=$(sha256sum "$binary" | cut -c1-16)"
+    echo "binary_sha256=$sha"
     echo "git=$git_rev"
-    echo "order=$n_cases"
+    echo "order=$(case_order "$id")"
   } > "$dir/run.txt"
   n_cases=$(( n_cases + 1 ))
   if (( rc != 0 )); then
@@ -172,6 +182,8 @@ if (( ! list_only )); then
   mkdir -p "$results"
 fi
 
+define_cases() {
+case_index=0
 # --- 1. Stiffness ratio between the bodies --------------------------------
 # Hertz scene: cylinder (material 1, slave) on a plate (material 2, master).
 # The softer body keeps E = 200. Hertz uses E* of both bodies; with a soft
@@ -192,6 +204,9 @@ run_case $G cyl-1e8            "$HERTZ" 120 "E_cyl / E_plate = 1e8, plate refine
   "Materials/Young's moduli=2e10, 200" "Geometry/Hertz cylinder/Plate contact refinements=6"
 run_case $G cyl-1e12           "$HERTZ" 120 "E_cyl / E_plate = 1e12, plate refined (6 rounds)" "hertz-approx" \
   "Materials/Young's moduli=2e14, 200" "Geometry/Hertz cylinder/Plate contact refinements=6"
+run_case $G cyl-1e12-1step     "$HERTZ" 120 "E_cyl / E_plate = 1e12, plate refined, half the load (t = 0.5) in one step" "hertz-approx" \
+  "Materials/Young's moduli=2e14, 200" "Geometry/Hertz cylinder/Plate contact refinements=6" \
+  "Load stepping/End time=0.5" "Load stepping/Number of load steps=1"
 run_case $G cyl-1e4-coarse     "$HERTZ" 120 "E_cyl / E_plate = 1e4 on the default mesh (soft plate coarse: 3 rounds)" "hertz-approx" \
   "Materials/Young's moduli=2e6, 200"
 run_case $G cyl-1e8-swapped    "$HERTZ" 120 "E_cyl / E_plate = 1e8, soft plate made the slave (Pairs = 4: 3), plate refined" "hertz-approx" \
@@ -289,6 +304,8 @@ run_case $G gap-2-on-20         "$GAP" 30 "closing gap, slave 2 x 2 on master 20
 G=mechanism
 run_case $G hertz-asym-load "$HERTZ" 60 "Hertz with a 1 % slope in the top pressure, p = 0.2 t (1 + 0.01 x): a moment about the disc centre that nothing resists" "diag=singular" \
   "Boundary conditions/Pressure=1: 0.2*t*(1+0.01*x)"
+run_case $G hertz-asym-load-1step "$HERTZ" 60 "same load, first step only (t = 0.5005, one step)" "diag=singular" \
+  "Boundary conditions/Pressure=1: 0.2*t*(1+0.01*x)" "Load stepping/End time=0.5005" "Load stepping/Number of load steps=1"
 run_case $G hertz-distort-0.3-p1e-6 "$HERTZ" 60 "Hertz, Distortion = 0.3, p = 1e-6 t" "hertz-approx" \
   "Geometry/Distortion=0.3" "Boundary conditions/Pressure=1: 1e-6*t"
 run_case $G hertz-topdisp "$HERTZ" 60 "Hertz loaded by u_y = -0.03 t on the top instead of the pressure (rotation blocked), regular mesh" "centred" \
@@ -311,8 +328,28 @@ for f in 1e-6 1e6; do
     "Contact/Stiffness factor=$f"
 done
 
+}
+
+define_cases
 if (( list_only )); then
   exit 0
+fi
+
+# The binary may have been rebuilt while the suite ran: run the cases done
+# with an older binary once more, so that the report shows one version.
+current=$(sha256sum "$binary" | cut -c1-16)
+for f in "$results"/*/*/run.txt; do
+  [[ -e "$f" ]] || continue
+  s=$(sed -n 's/^binary_sha256=//p' "$f")
+  if [[ "$s" != "$current" ]]; then
+    g=$(sed -n 's/^group=//p' "$f"); c=$(sed -n 's/^name=//p' "$f")
+    stale["$g/$c"]=1
+  fi
+done
+if (( ${#stale[@]} > 0 )); then
+  echo "binary changed during the suite: re-running ${#stale[@]} case(s)" >&2
+  rerun_pass=1
+  define_cases
 fi
 echo "$n_cases case(s) run, $n_nonzero with a non-zero exit code" >&2
 
