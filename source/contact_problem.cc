@@ -373,11 +373,12 @@ namespace contact_fem
       control, TrilinosWrappers::SolverDirect::AdditionalData(false, direct_solver));
     solver.solve(system_matrix, solution, system_rhs);
     // A singular system (a body held by nothing) does not always make the
-    // direct solver fail: check that the solution solves it.
+    // direct solver fail: check that the solution solves it. Singular
+    // systems leave O(1) residuals; 1e8 stiffness contrasts leave ~1e-5.
     TrilinosWrappers::MPI::Vector check(owned_dofs, comm);
     const double linear_residual = system_matrix.residual(check, solution, system_rhs);
     AssertThrow(std::isfinite(linear_residual) &&
-                  linear_residual <= 1e-6 * system_rhs.l2_norm() + 1e-300,
+                  linear_residual <= 1e-3 * system_rhs.l2_norm() + 1e-300,
                 ExcMessage("the linear system is singular (relative residual " +
                            scientific(linear_residual / system_rhs.l2_norm()) +
                            " after the direct solve)"));
@@ -570,8 +571,10 @@ namespace contact_fem
         // With a settled active set each further solve returns the same
         // displacement: a residual that stops decreasing is the accuracy of
         // the linear solver (very large stiffness contrasts), not a failure.
+        // Bounded: a residual above 1e-2 of the step's is a failure whatever
+        // its trend.
         const bool stagnating = iteration > 1 && changes == 0 && previous_changes == 0 &&
-                                r_u > 0.5 * previous_r_u &&
+                                r_u > 0.5 * previous_r_u && ratio_u <= 1e-2 &&
                                 ratio_lambda <= newton_parameters.multiplier_relative_tolerance;
         converged = iteration > 0 &&
                     ((residuals_small && (changes == 0 || at_round_off)) || stagnating);

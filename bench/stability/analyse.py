@@ -124,7 +124,10 @@ def reproduce(run):
     sets = [s for s in run.get("sets", "").split("\t") if s]
     parts = ["build/contact_fem", run.get("scene", "?")]
     for s in sets:
-        parts += ["--set", shlex.quote(s)]
+        # double quotes read better ("Young's moduli=...") and are safe
+        # unless the value holds characters the shell expands in them
+        quoted = '"%s"' % s if not re.search(r'["$`\\!]', s) else shlex.quote(s)
+        parts += ["--set", quoted]
     return " ".join(parts)
 
 
