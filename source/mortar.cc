@@ -13,8 +13,8 @@ namespace contact_fem
     node_parameter(const unsigned int p, const unsigned int i)
     {
       Assert(p == 1 || p == 2, ExcNotImplemented());
-      return (i == 0 ? -1. : (i == 1 ? 1. : 0.));
       (void)p;
+      return (i == 0 ? -1. : (i == 1 ? 1. : 0.));
     }
 
     double

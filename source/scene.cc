@@ -200,7 +200,6 @@ namespace contact_fem
   Scene<2>::create_mesh(parallel::distributed::Triangulation<2> &tria) const
   {
     Triangulation<2> coarse;
-    const double     scale_tol = 1.;
 
     if (type == "mesh file")
       {
@@ -340,7 +339,6 @@ namespace contact_fem
               }
         tria.copy_triangulation(coarse);
       }
-    (void)scale_tol;
 
     if (global_refinements > 0)
       tria.refine_global(global_refinements);
