@@ -8,9 +8,11 @@
 #include <contact_fem/contact_problem.h>
 #include <contact_fem/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 #include <unordered_map>
 
@@ -18,21 +20,42 @@ namespace contact_fem
 {
   namespace
   {
-    /// Von Mises stress of the FE displacement, cell by cell material.
+    /// Von Mises stress of the FE displacement, cell by cell material; with
+    /// B-bar (@p b_bar) from the projected volumetric strain.
     template <int dim>
     class VonMises : public DataPostprocessorScalar<dim>
     {
     public:
-      explicit VonMises(const Materials<dim> &materials)
-        : DataPostprocessorScalar<dim>("von_Mises", update_gradients)
+      VonMises(const Materials<dim>                &materials,
+               const Mapping<dim>                  &mapping,
+               const TrilinosWrappers::MPI::Vector &solution,
+               const bool                           b_bar)
+        : DataPostprocessorScalar<dim>("von_Mises", update_gradients | update_quadrature_points)
         , materials(materials)
+        , mapping(mapping)
+        , solution(solution)
+        , b_bar(b_bar)
       {}
 
       void
       evaluate_vector_field(const DataPostprocessorInputs::Vector<dim> &inputs,
                             std::vector<Vector<double>> &computed) const override
       {
-        const auto id = inputs.template get_cell<dim>()->material_id();
+        const typename DoFHandler<dim>::active_cell_iterator cell =
+          inputs.template get_cell<dim>();
+        const auto id = cell->material_id();
+        // Patches are built on several threads: each call has its own
+        // projection (output only, so its set-up cost does not matter).
+        std::unique_ptr<VolumetricProjection<dim>> projection;
+        Vector<double>                              local_values;
+        if (b_bar)
+          {
+            projection =
+              std::make_unique<VolumetricProjection<dim>>(mapping, cell->get_fe());
+            projection->reinit(cell);
+            local_values.reinit(cell->get_fe().n_dofs_per_cell());
+            cell->get_dof_values(solution, local_values);
+          }
         for (unsigned int q = 0; q < computed.size(); ++q)
           {
             SymmetricTensor<2, dim> strain;
@@ -40,13 +63,37 @@ namespace contact_fem
               for (unsigned int j = 0; j <= i; ++j)
                 strain[i][j] =
                   0.5 * (inputs.solution_gradients[q][i][j] + inputs.solution_gradients[q][j][i]);
-            computed[q](0) = materials.von_mises(id, materials.stress(id, strain));
+            const SymmetricTensor<2, dim> stress =
+              b_bar ? materials.stress(id,
+                                       strain,
+                                       projection->value(local_values,
+                                                         mapping.transform_real_to_unit_cell(
+                                                           cell, inputs.evaluation_points[q]))) :
+                      materials.stress(id, strain);
+            computed[q](0) = materials.von_mises(id, stress);
           }
       }
 
     private:
-      const Materials<dim> &materials;
+      const Materials<dim>                &materials;
+      const Mapping<dim>                  &mapping;
+      const TrilinosWrappers::MPI::Vector &solution;
+      const bool                           b_bar;
     };
+
+    /// Resultant of the contact pressures on the slave side (the same on
+    /// every rank: the interface is known everywhere).
+    template <int dim>
+    Tensor<1, dim>
+    total_contact_force(const ContactInterface<dim> &interface,
+                        const AlmFrictionless<dim>  &contact)
+    {
+      Tensor<1, dim> force;
+      for (const auto &s : interface.slave_nodes)
+        if (s.paired && contact.active[s.node])
+          force += contact.pressure[s.node] * s.D * s.normal;
+      return force;
+    }
   } // namespace
 
   template <int dim>
@@ -90,16 +137,13 @@ namespace contact_fem
     unsigned int   n_slave = 0, n_active = 0;
     double         p_max = 0., size_sum = 0.;
     double         x_min = std::numeric_limits<double>::max(), x_max = -x_min;
-    Tensor<1, dim> force;
     for (const auto &node : interface->nodes)
       n_slave += node.slave;
     for (const auto &s : interface->slave_nodes)
       if (s.paired && contact->active[s.node])
         {
           ++n_active;
-          const double p = contact->pressure[s.node];
-          p_max          = std::max(p_max, p);
-          force += p * s.D * s.normal;
+          p_max = std::max(p_max, contact->pressure[s.node]);
           size_sum += s.size;
           const double x = interface->nodes[s.node].reference[0] +
                            interface->displacement(s.node, interface_displacement)[0];
@@ -110,7 +154,7 @@ namespace contact_fem
       .set("active_slave_nodes", n_active)
       .set("contact_half_width", n_active > 0 ? 0.5 * (x_max - x_min) : 0.)
       .set("max_contact_pressure", p_max)
-      .set("total_contact_force", force.norm())
+      .set("total_contact_force", total_contact_force(*interface, *contact).norm())
       .set("slave_element_size", n_active > 0 ? size_sum / n_active : 0.)
       .set("penalty", contact->penalty.empty() ? 0. : contact->penalty[0])
       .set("scale_factor", contact->scale.empty() ? 0. : contact->scale[0]);
@@ -127,7 +171,12 @@ namespace contact_fem
   Json
   ContactProblem<dim>::reaction_results() const
   {
-    // Reactions are the residual K u - f at the Dirichlet DoFs.
+    // Reactions are the residual K u - f at the Dirichlet DoFs, less the
+    // contact force where such a DoF belongs to the interface (a fixed
+    // component of a contact node): contact forces are internal.
+    std::vector<double> contact_force;
+    if (contact)
+      contact_force = contact->residuals(*interface, interface_displacement).contact_force;
     Tensor<1, dim>            reaction;
     double                    absolute_sum = 0.;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
@@ -141,8 +190,12 @@ namespace contact_fem
                 dirichlet_constraints.is_constrained(dofs[i]) &&
                 seen.insert(dofs[i]).second)
               {
-                reaction[fe.system_to_component_index(i).first] += residual(dofs[i]);
-                absolute_sum += std::abs(residual(dofs[i]));
+                double r = residual(dofs[i]);
+                if (interface && std::binary_search(interface->dofs().begin(),
+                                                    interface->dofs().end(), dofs[i]))
+                  r -= contact_force[interface->position(dofs[i])];
+                reaction[fe.system_to_component_index(i).first] += r;
+                absolute_sum += std::abs(r);
               }
         }
     for (unsigned int d = 0; d < dim; ++d)
@@ -150,13 +203,24 @@ namespace contact_fem
     absolute_sum = Utilities::MPI::sum(absolute_sum, comm);
     // Scale of the balance: the applied load, or for displacement-driven
     // scenes (no applied load, reactions that cancel) half the sum of the
-    // reaction magnitudes.
-    const Tensor<1, dim> load  = applied_load(current_time);
-    const double         scale = std::max(load.norm(), 0.5 * absolute_sum);
+    // reaction magnitudes. When even that is below 1e-10 E_min |u|_max
+    // h^(dim-2), no force acts (bodies pulled apart, rigid motion): the
+    // forces are round-off and there is no balance to check.
+    const Tensor<1, dim> load = applied_load(current_time);
+    double youngs_min = std::numeric_limits<double>::max(), h_max = 0.;
+    for (const auto &[id, constants] : materials.bodies)
+      youngs_min = std::min(youngs_min, constants.youngs_modulus);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        h_max = std::max(h_max, cell->diameter());
+    h_max = Utilities::MPI::max(h_max, comm);
+    const double no_force =
+      1e-10 * youngs_min * solution.linfty_norm() * std::pow(h_max, dim - 2.);
+    const double scale = std::max(load.norm(), 0.5 * absolute_sum);
     Json                 result = Json::object();
     result.set("applied_load", load.norm())
       .set("support_reaction", reaction.norm())
-      .set("relative_imbalance", scale > 0. ? (load + reaction).norm() / scale : 0.);
+      .set("relative_imbalance", scale > no_force ? (load + reaction).norm() / scale : 0.);
     return result;
   }
 
@@ -202,7 +266,10 @@ namespace contact_fem
     Json result = Json::object();
     if (!contact)
       return result;
-    const double load = applied_load(current_time).norm();
+    // The Hertz load is the transmitted force: the same as the applied
+    // pressure resultant when the balance holds, and the only measure when
+    // the scene is driven by a prescribed displacement.
+    const double load = total_contact_force(*interface, *contact).norm();
     const Hertz  h    = hertz_solution(*interface, load, analytical.radius);
     // The numerical values come from contact_results().
     const double p_num = contact_json["max_contact_pressure"].number_value();
@@ -290,8 +357,10 @@ namespace contact_fem
   {
     const bool   hertz = analytical.type == "hertz cylinder";
     Hertz        h{0., 0.};
-    if (hertz) // applied_load() is collective: every rank calls it
-      h = hertz_solution(*interface, applied_load(current_time).norm(), analytical.radius);
+    if (hertz)
+      h = hertz_solution(*interface,
+                         total_contact_force(*interface, *contact).norm(),
+                         analytical.radius);
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
     std::vector<std::array<double, 5>> rows;
@@ -384,7 +453,8 @@ namespace contact_fem
       vector_field(dim, DataComponentInterpretation::component_is_part_of_vector);
     data_out.add_data_vector(dof_handler, ghosted_solution,
                              std::vector<std::string>(dim, "displacement"), vector_field);
-    const VonMises<dim> von_mises(materials);
+    const VonMises<dim> von_mises(materials, mapping, ghosted_solution,
+                                  volumetric_projection != nullptr);
     data_out.add_data_vector(dof_handler, ghosted_solution, von_mises);
     if (interface)
       for (unsigned int k = 0; k < names.size(); ++k)

@@ -9,9 +9,11 @@
 
 #include <contact_fem/contact_problem.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace contact_fem
@@ -54,6 +56,14 @@ namespace contact_fem
       s << std::scientific << std::setprecision(digits) << x;
       return s.str();
     }
+
+    /// "= value", or "< tolerance" for a residual at round-off level (which
+    /// differs between runs and must not reach compared output).
+    std::string
+    residual_text(const double value, const double tolerance)
+    {
+      return value <= tolerance ? "< " + scientific(tolerance, 0) : "= " + scientific(value);
+    }
   } // namespace
 
   template <int dim>
@@ -65,6 +75,13 @@ namespace contact_fem
     prm.enter_subsection("Finite element");
     prm.declare_entry("Degree", "1", Patterns::Integer(1, 2),
                       "Polynomial degree of the displacement (Q1 or Q2).");
+    prm.declare_entry("Volumetric strain", "standard",
+                      Patterns::Selection("standard|B-bar"),
+                      "standard: the full strain in the elastic law. B-bar: the "
+                      "volumetric strain div u is projected per cell onto "
+                      "polynomials of degree p - 1 (selective, mean dilatation "
+                      "for Q1, Q2-P1 for Q2), which removes volumetric locking "
+                      "of nearly incompressible bodies (nu close to 0.5).");
     prm.leave_subsection();
     prm.enter_subsection("Linear solver");
     prm.declare_entry("Direct solver", "Amesos_Klu",
@@ -114,6 +131,10 @@ namespace contact_fem
     prm.enter_subsection("Linear solver");
     direct_solver = prm.get("Direct solver");
     prm.leave_subsection();
+    prm.enter_subsection("Finite element");
+    if (prm.get("Volumetric strain") == "B-bar")
+      volumetric_projection = std::make_unique<VolumetricProjection<dim>>(mapping, fe);
+    prm.leave_subsection();
     scene.parse_parameters(prm, prm_directory);
     materials.parse_parameters(prm);
     boundary_conditions.parse_parameters(prm, dim);
@@ -151,6 +172,7 @@ namespace contact_fem
     solution.reinit(owned_dofs, comm);
     ghosted_solution.reinit(owned_dofs, relevant_dofs, comm);
 
+    locate_fixed_points();
     make_dirichlet_constraints(0.);
     if (!contact_parameters.pairs.empty())
       {
@@ -175,6 +197,40 @@ namespace contact_fem
 
   template <int dim>
   void
+  ContactProblem<dim>::locate_fixed_points()
+  {
+    fixed_point_dofs.clear();
+    for (const auto &point : boundary_conditions.points)
+      {
+        Point<dim> location;
+        for (unsigned int d = 0; d < dim; ++d)
+          location[d] = point.coordinates[d];
+        unsigned int found = 0;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (!cell->is_artificial() && cell->material_id() == point.material_id)
+            for (const auto v : cell->vertex_indices())
+              if (cell->vertex(v).distance(location) < 1e-8 * cell->diameter())
+                {
+                  fixed_point_dofs.push_back(cell->vertex_dof_index(v, point.component));
+                  found += cell->is_locally_owned();
+                }
+        AssertThrow(Utilities::MPI::sum(found, comm) > 0,
+                    ExcMessage("Boundary conditions/Fixed points: body " +
+                               std::to_string(point.material_id) +
+                               " has no mesh vertex at (" +
+                               Utilities::to_string(point.coordinates[0]) + ", " +
+                               Utilities::to_string(point.coordinates[1]) +
+                               (dim == 3 ? ", " + Utilities::to_string(point.coordinates[dim - 1]) :
+                                           std::string()) +
+                               ")."));
+      }
+    std::sort(fixed_point_dofs.begin(), fixed_point_dofs.end());
+    fixed_point_dofs.erase(std::unique(fixed_point_dofs.begin(), fixed_point_dofs.end()),
+                           fixed_point_dofs.end());
+  }
+
+  template <int dim>
+  void
   ContactProblem<dim>::make_dirichlet_constraints(const double time)
   {
     dirichlet_constraints.clear();
@@ -192,6 +248,9 @@ namespace contact_fem
                                                  condition.boundary_id, function,
                                                  dirichlet_constraints, mask);
       }
+    for (const auto dof : fixed_point_dofs)
+      if (!dirichlet_constraints.is_constrained(dof))
+        dirichlet_constraints.add_line(dof);
     dirichlet_constraints.close();
   }
 
@@ -206,24 +265,48 @@ namespace contact_fem
     const unsigned int n = fe.n_dofs_per_cell();
     const FEValuesExtractors::Vector displacement(0);
     std::vector<SymmetricTensor<2, dim>> strains(n);
+    std::vector<double>                  theta(n);
 
     cell_matrices.assign(triangulation.n_active_cells(), FullMatrix<double>());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          const SymmetricTensor<4, dim> C = materials.stiffness_tensor(cell->material_id());
-          FullMatrix<double>           &K = cell_matrices[cell->active_cell_index()];
+          FullMatrix<double> &K = cell_matrices[cell->active_cell_index()];
           K.reinit(n, n);
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
+          if (volumetric_projection)
             {
-              for (unsigned int i = 0; i < n; ++i)
-                strains[i] = fe_values[displacement].symmetric_gradient(i, q);
-              for (unsigned int i = 0; i < n; ++i)
+              // B-bar: 2 mu eps:eps + lambda theta theta, theta projected.
+              volumetric_projection->reinit(cell);
+              const ElasticConstants &c      = materials.constants(cell->material_id());
+              const double            lambda = c.lambda(), mu = c.mu();
+              for (unsigned int q = 0; q < quadrature.size(); ++q)
                 {
-                  const SymmetricTensor<2, dim> Ceps = C * strains[i];
-                  for (unsigned int j = 0; j <= i; ++j)
-                    K(i, j) += (Ceps * strains[j]) * fe_values.JxW(q);
+                  for (unsigned int i = 0; i < n; ++i)
+                    {
+                      strains[i] = fe_values[displacement].symmetric_gradient(i, q);
+                      theta[i]   = volumetric_projection->shape_value(i, quadrature.point(q));
+                    }
+                  for (unsigned int i = 0; i < n; ++i)
+                    for (unsigned int j = 0; j <= i; ++j)
+                      K(i, j) += (2. * mu * (strains[i] * strains[j]) +
+                                  lambda * theta[i] * theta[j]) *
+                                 fe_values.JxW(q);
+                }
+            }
+          else
+            {
+              const SymmetricTensor<4, dim> C = materials.stiffness_tensor(cell->material_id());
+              for (unsigned int q = 0; q < quadrature.size(); ++q)
+                {
+                  for (unsigned int i = 0; i < n; ++i)
+                    strains[i] = fe_values[displacement].symmetric_gradient(i, q);
+                  for (unsigned int i = 0; i < n; ++i)
+                    {
+                      const SymmetricTensor<2, dim> Ceps = C * strains[i];
+                      for (unsigned int j = 0; j <= i; ++j)
+                        K(i, j) += (Ceps * strains[j]) * fe_values.JxW(q);
+                    }
                 }
             }
           for (unsigned int i = 0; i < n; ++i)
@@ -501,6 +584,7 @@ namespace contact_fem
           {
             make_constraints();
             assemble_system();
+            const TrilinosWrappers::MPI::Vector previous_solution = solution;
             try
               {
                 solve_linear_system();
@@ -518,6 +602,14 @@ namespace contact_fem
                                       ". Hint: is every body held by supports or by at "
                                       "least one active contact node?",
                                     false);
+              }
+            // Both iterates satisfy the hanging-node and Dirichlet
+            // constraints, and so does their combination.
+            if (newton_parameters.damping < 1.)
+              {
+                solution.sadd(newton_parameters.damping, 1. - newton_parameters.damping,
+                              previous_solution);
+                ghosted_solution = solution;
               }
           }
         compute_residual();
@@ -573,7 +665,10 @@ namespace contact_fem
         // the linear solver (very large stiffness contrasts), not a failure.
         // Bounded: a residual above 1e-2 of the step's is a failure whatever
         // its trend.
-        const bool stagnating = iteration > 1 && changes == 0 && previous_changes == 0 &&
+        // (Damped iterations shrink the residual by a fixed factor: not
+        // stagnation.)
+        const bool stagnating = newton_parameters.damping == 1. && iteration > 1 &&
+                                changes == 0 && previous_changes == 0 &&
                                 r_u > 0.5 * previous_r_u && ratio_u <= 1e-2 &&
                                 ratio_lambda <= newton_parameters.multiplier_relative_tolerance;
         converged = iteration > 0 &&
@@ -620,8 +715,11 @@ namespace contact_fem
       throw NewtonFailure("load step " + std::to_string(step + 1) + " (t = " +
                           std::to_string(time) + ") did not converge in " +
                           std::to_string(newton_parameters.max_iterations) +
-                          " iterations (last: |r_u| = " + scientific(last_u) +
-                          ", |r_lambda| = " + scientific(last_lambda) + ", " +
+                          " iterations (last: |r_u| " +
+                          residual_text(last_u, newton_parameters.displacement_absolute_tolerance) +
+                          ", |r_lambda| " +
+                          residual_text(last_lambda, newton_parameters.multiplier_absolute_tolerance) +
+                          ", " +
                           std::to_string(last_changes) +
                           " active-set changes). Hint: more load steps, more "
                           "Newton iterations, or a different Contact/Penalty.");
@@ -727,6 +825,78 @@ namespace contact_fem
   }
 
   template <int dim>
+  void
+  ContactProblem<dim>::warn_about_modelling_choices() const
+  {
+    // Volumetric locking: measured on the Hertz scene, p_max is off by more
+    // than 2 % beyond these Poisson's ratios without B-bar
+    // (doc/stability.md).
+    const double locking_nu = degree == 1 ? 0.49 : 0.499;
+    if (!volumetric_projection)
+      for (const auto &[id, constants] : materials.bodies)
+        if (constants.poisson_ratio > locking_nu)
+          pcout << "  Warning: body " << static_cast<unsigned int>(id)
+                << " has Poisson's ratio " << constants.poisson_ratio << ": degree " << degree
+                << " elements lock volumetrically beyond about " << locking_nu
+                << "; set Finite element/Volumetric strain = B-bar." << std::endl;
+    // The mortar side should be the softer one (and the finer mesh): a stiff
+    // slave on a soft, coarse master cannot represent the pressure.
+    if (interface)
+      for (unsigned int p = 0; p < contact_parameters.pairs.size(); ++p)
+        {
+          double slave_E = 0., master_E = 0.;
+          for (const auto &face : interface->faces)
+            if (face.pair == p)
+              (face.slave ? slave_E : master_E) = std::max(face.slave ? slave_E : master_E,
+                                                          face.youngs_modulus);
+          if (master_E > 0. && slave_E > 10. * master_E)
+            pcout << "  Warning: contact pair "
+                  << static_cast<unsigned int>(contact_parameters.pairs[p].slave) << ": "
+                  << static_cast<unsigned int>(contact_parameters.pairs[p].master)
+                  << ": the slave side is " << slave_E / master_E
+                  << " times stiffer than the master side; the softer (and finer) "
+                     "surface should be the slave (Contact/Pairs)."
+                  << std::endl;
+        }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::warn_about_large_displacements(Json &cycle_record)
+  {
+    // Linear elasticity is a small-displacement theory: displacements of a
+    // tenth of the model size mean a rigid-body mode that the supports (and
+    // frictionless contact) leave free, or a load far beyond the model.
+    Point<dim> low, high;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        low[d]  = std::numeric_limits<double>::max();
+        high[d] = -std::numeric_limits<double>::max();
+      }
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto v : cell->vertex_indices())
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              low[d]  = std::min(low[d], cell->vertex(v)[d]);
+              high[d] = std::max(high[d], cell->vertex(v)[d]);
+            }
+    double size = 0.;
+    for (unsigned int d = 0; d < dim; ++d)
+      size = std::max(size, Utilities::MPI::max(high[d], comm) + Utilities::MPI::max(-low[d], comm));
+    const double u_max = solution.linfty_norm();
+    if (u_max > 0.1 * size)
+      {
+        std::ostringstream text;
+        text << "the largest displacement, " << u_max << ", exceeds a tenth of the model size ("
+             << size << "): a rigid-body mode that the supports leave free (e.g. a rotation; "
+             << "see Boundary conditions/Fixed points) or a load beyond small-strain theory";
+        pcout << "  Warning: " << text.str() << "." << std::endl;
+        cycle_record.set("warning", text.str());
+      }
+  }
+
+  template <int dim>
   bool
   ContactProblem<dim>::run_cycle(const unsigned int cycle, Json &cycle_record)
   {
@@ -758,6 +928,9 @@ namespace contact_fem
       }
     pcout << std::endl;
 
+    if (cycle == 0)
+      warn_about_modelling_choices();
+
     cycle_record.set("cycle", cycle)
       .set("n_cells", static_cast<double>(triangulation.n_global_active_cells()))
       .set("n_dofs", static_cast<double>(dof_handler.n_dofs()));
@@ -768,8 +941,9 @@ namespace contact_fem
     const unsigned int n_steps   = cycle == 0 ? load_stepping.n_steps : 1;
     const double       end_time  = load_stepping.end_time;
     double             t_done    = cycle == 0 ? 0. : end_time * (n_steps - 1) / n_steps;
-    double             step_size = end_time / n_steps;
-    unsigned int       splits = 0, n_solved = 0;
+    const double       nominal_step = end_time / n_steps;
+    double             step_size    = nominal_step;
+    unsigned int       splits = 0, n_solved = 0, successes_since_split = 0;
     Json               steps     = Json::array();
     bool               converged = true;
     TrilinosWrappers::MPI::Vector saved_solution = solution;
@@ -804,6 +978,7 @@ namespace contact_fem
                 step_size / load_stepping.split_factor > 1e-12 * end_time)
               {
                 ++splits;
+                successes_since_split = 0;
                 step_size /= load_stepping.split_factor;
                 pcout << "  Splitting the step: retrying from t = " << t_done
                       << " with step " << step_size << " (split " << splits << " of at most "
@@ -821,6 +996,16 @@ namespace contact_fem
         ++n_solved;
         splits = 0;
         t_done = time;
+        // After a split, two converged steps in a row let the step grow
+        // back toward the nominal size, so one hard moment does not cost
+        // small steps for the rest of the load path.
+        if (step_size < nominal_step && t_done < end_time * (1. - 1e-12) &&
+            ++successes_since_split == 2)
+          {
+            step_size = std::min(nominal_step, step_size * load_stepping.split_factor);
+            successes_since_split = 0;
+            pcout << "  Growing the step to " << step_size << std::endl;
+          }
         saved_solution = solution;
         if (contact)
           {
@@ -832,6 +1017,7 @@ namespace contact_fem
       }
     current_time = t_done;
     cycle_record.set("load_steps", steps);
+    warn_about_large_displacements(cycle_record);
     if (n_solved == 0)
       return false;
     if (!converged && contact)

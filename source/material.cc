@@ -135,6 +135,17 @@ namespace contact_fem
 
   template <int dim>
   SymmetricTensor<2, dim>
+  Materials<dim>::stress(const types::material_id       id,
+                         const SymmetricTensor<2, dim> &strain,
+                         const double                   volumetric_strain) const
+  {
+    const ElasticConstants &c = constants(id);
+    return c.lambda() * volumetric_strain * unit_symmetric_tensor<dim>() +
+           2. * c.mu() * strain;
+  }
+
+  template <int dim>
+  SymmetricTensor<2, dim>
   Materials<dim>::compliance(const types::material_id        id,
                              const SymmetricTensor<2, dim> &sigma) const
   {

@@ -95,6 +95,13 @@ namespace contact_fem
                       "Boundaries whose displacement components are zero, as "
                       "'id: components; ...' with components from x, y, z, e.g. "
                       "'2: xy; 1: x'.");
+    prm.declare_entry("Fixed points",
+                      "",
+                      Patterns::Anything(),
+                      "Mesh vertices whose displacement components are zero, as "
+                      "'material id @ x, y: components; ...', e.g. '1 @ 0, 1: x' "
+                      "(the vertex of body 1 at (0, 1)). For rigid-body modes that "
+                      "the boundary conditions leave free; the vertex must exist.");
     prm.declare_entry("Prescribed displacement",
                       "",
                       Patterns::Anything(),
@@ -133,6 +140,47 @@ namespace contact_fem
                                    "' is not a component; expected letters from '" +
                                    axes + "'."));
             displacements.push_back({b, static_cast<unsigned int>(d), "0"});
+          }
+      }
+    const std::string points_key = "Boundary conditions/Fixed points";
+    points.clear();
+    for (const auto &[location, components] :
+         split_key_value_list(prm.get("Fixed points"), points_key))
+      {
+        const auto at = location.find('@');
+        PointCondition condition;
+        bool           valid = at != std::string::npos;
+        if (valid)
+          try
+            {
+              const int id = Utilities::string_to_int(trim(location.substr(0, at)));
+              condition.coordinates =
+                Utilities::string_to_double(Utilities::split_string_list(location.substr(at + 1)));
+              valid = id >= 0 && id < 255 && condition.coordinates.size() == dim;
+              condition.material_id = static_cast<types::material_id>(id);
+            }
+          catch (...)
+            {
+              valid = false;
+            }
+        AssertThrow(valid,
+                    ExcMessage(points_key + ": '" + location +
+                               "' is not of the form 'material id @ x, y" +
+                               (dim == 3 ? ", z" : "") + "'."));
+        AssertThrow(!trim(components).empty(),
+                    ExcMessage(points_key + ": point '" + location +
+                               "' lists no components."));
+        for (const char c : components)
+          {
+            if (c == ' ')
+              continue;
+            const auto d = axes.find(c);
+            AssertThrow(d != std::string::npos,
+                        ExcMessage(points_key + ": '" + std::string(1, c) +
+                                   "' is not a component; expected letters from '" +
+                                   axes + "'."));
+            condition.component = static_cast<unsigned int>(d);
+            points.push_back(condition);
           }
       }
     const std::string disp_key = "Boundary conditions/Prescribed displacement";
@@ -339,6 +387,11 @@ namespace contact_fem
                       "Same for the complementarity residual of the multipliers.");
     prm.declare_entry("Multiplier absolute tolerance", "1e-9", Patterns::Double(0.),
                       "Absolute bound on the multiplier residual. Units: length.");
+    prm.declare_entry("Damping", "1", Patterns::Double(0.),
+                      "Step length alpha in (0, 1] of every Newton update, u <- u + "
+                      "alpha du. Below 1 it damps an active set that cycles between "
+                      "states, at the price of linear convergence (each iteration "
+                      "removes the fraction alpha of the remaining error).");
     prm.leave_subsection();
   }
 
@@ -351,7 +404,10 @@ namespace contact_fem
     displacement_absolute_tolerance = prm.get_double("Displacement absolute tolerance");
     multiplier_relative_tolerance   = prm.get_double("Multiplier relative tolerance");
     multiplier_absolute_tolerance   = prm.get_double("Multiplier absolute tolerance");
+    damping                         = prm.get_double("Damping");
     prm.leave_subsection();
+    AssertThrow(damping > 0. && damping <= 1.,
+                ExcMessage("Newton/Damping: expected a value in (0, 1]."));
   }
 
   void

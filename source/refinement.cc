@@ -91,7 +91,8 @@ namespace contact_fem
     settings.penalty_normal     = refinement.penalty_normal;
     settings.penalty_tangential = refinement.penalty_tangential;
     const auto spr = StressRecovery<dim>::estimate(mapping, dof_handler, ghosted_solution,
-                                                   materials, tractions, settings);
+                                                   materials, tractions, settings,
+                                                   volumetric_projection.get());
     if (type == "kelly")
       KellyErrorEstimator<dim>::estimate(mapping, dof_handler, QGauss<dim - 1>(degree + 1),
                                          {}, ghosted_solution, indicators, ComponentMask(),

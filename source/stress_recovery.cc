@@ -215,7 +215,8 @@ namespace contact_fem
                    const TrilinosWrappers::MPI::Vector          &solution,
                    const Materials<dim>                         &materials,
                    const std::vector<ContactNodeTraction<dim>> &contact_nodes,
-                   const Settings                               &settings);
+                   const Settings                               &settings,
+                   VolumetricProjection<dim>                    *volumetric);
 
       Result
       run();
@@ -223,6 +224,13 @@ namespace contact_fem
     private:
       void
       collect_topology();
+      /// FE strains and stresses at the points of @p fe_values (reinit on
+      /// @p cell), with the projected volumetric strain under B-bar.
+      void
+      fe_stresses(const DoFCellIt                      &cell,
+                  const FEValues<dim>                  &fe_values,
+                  std::vector<SymmetricTensor<2, dim>> &strains,
+                  std::vector<SymmetricTensor<2, dim>> &stresses) const;
       void
       sample_stresses();
       void
@@ -250,6 +258,7 @@ namespace contact_fem
       const Materials<dim>                        &materials;
       const std::vector<ContactNodeTraction<dim>> &contact_nodes;
       const Settings                               settings;
+      VolumetricProjection<dim>                   *volumetric;
 
       const Triangulation<dim> &tria;
       const MPI_Comm            comm;
@@ -296,13 +305,15 @@ namespace contact_fem
                                     const TrilinosWrappers::MPI::Vector          &solution,
                                     const Materials<dim>                         &materials,
                                     const std::vector<ContactNodeTraction<dim>> &contact_nodes,
-                                    const Settings                               &settings)
+                                    const Settings                               &settings,
+                                    VolumetricProjection<dim>                    *volumetric)
       : mapping(mapping)
       , dof_handler(dof_handler)
       , solution(solution)
       , materials(materials)
       , contact_nodes(contact_nodes)
       , settings(settings)
+      , volumetric(volumetric)
       , tria(dof_handler.get_triangulation())
       , comm(dof_handler.get_triangulation().get_communicator())
       , degree(dof_handler.get_fe().degree)
@@ -382,6 +393,32 @@ namespace contact_fem
 
     template <int dim>
     void
+    SPREstimator<dim>::fe_stresses(const DoFCellIt                      &cell,
+                                   const FEValues<dim>                  &fe_values,
+                                   std::vector<SymmetricTensor<2, dim>> &strains,
+                                   std::vector<SymmetricTensor<2, dim>> &stresses) const
+    {
+      const FEValuesExtractors::Vector displacement(0);
+      fe_values[displacement].get_function_symmetric_gradients(solution, strains);
+      stresses.resize(strains.size());
+      if (volumetric == nullptr)
+        {
+          for (unsigned int q = 0; q < strains.size(); ++q)
+            stresses[q] = materials.stress(cell->material_id(), strains[q]);
+          return;
+        }
+      Vector<double> local_values(dof_handler.get_fe().n_dofs_per_cell());
+      cell->get_dof_values(solution, local_values);
+      volumetric->reinit(cell);
+      for (unsigned int q = 0; q < strains.size(); ++q)
+        stresses[q] =
+          materials.stress(cell->material_id(),
+                           strains[q],
+                           volumetric->value(local_values, fe_values.get_quadrature().point(q)));
+    }
+
+    template <int dim>
+    void
     SPREstimator<dim>::sample_stresses()
     {
       // Superconvergent sampling points: the p-point Gauss rule per direction.
@@ -390,7 +427,6 @@ namespace contact_fem
                               dof_handler.get_fe(),
                               quadrature,
                               update_gradients | update_quadrature_points);
-      const FEValuesExtractors::Vector displacement(0);
       std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
 
       sample_points.assign(tria.n_active_cells(), {});
@@ -399,12 +435,9 @@ namespace contact_fem
         if (!cell->is_artificial())
           {
             fe_values.reinit(cell);
-            fe_values[displacement].get_function_symmetric_gradients(solution, strains);
             const unsigned int index = cell->active_cell_index();
             sample_points[index]     = fe_values.get_quadrature_points();
-            sample_stress[index].resize(quadrature.size());
-            for (unsigned int q = 0; q < quadrature.size(); ++q)
-              sample_stress[index][q] = materials.stress(cell->material_id(), strains[q]);
+            fe_stresses(cell, fe_values, strains, sample_stress[index]);
           }
     }
 
@@ -888,8 +921,7 @@ namespace contact_fem
                                         *fe_recovered,
                                         quadrature,
                                         update_values);
-      const FEValuesExtractors::Vector displacement(0);
-      std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
+      std::vector<SymmetricTensor<2, dim>> strains(quadrature.size()), stresses;
       std::vector<Vector<double>> recovered_values(quadrature.size(),
                                                    Vector<double>(fe_recovered->n_components()));
 
@@ -900,7 +932,7 @@ namespace contact_fem
             const DoFCellIt cell_recovered(&tria, cell->level(), cell->index(), &dof_recovered);
             fe_values.reinit(cell);
             fe_values_recovered.reinit(cell_recovered);
-            fe_values[displacement].get_function_symmetric_gradients(solution, strains);
+            fe_stresses(cell, fe_values, strains, stresses);
             fe_values_recovered.get_function_values(recovered, recovered_values);
 
             const types::material_id body = cell->material_id();
@@ -908,8 +940,8 @@ namespace contact_fem
             double                   eta_squared = 0;
             for (unsigned int q = 0; q < quadrature.size(); ++q)
               {
-                const SymmetricTensor<2, dim> sigma_h = materials.stress(body, strains[q]);
-                SymmetricTensor<2, dim>       sigma_star;
+                const SymmetricTensor<2, dim> &sigma_h = stresses[q];
+                SymmetricTensor<2, dim>        sigma_star;
                 for (unsigned int c = 0; c < n_stress<dim>; ++c)
                   sigma_star[SymmetricTensor<2, dim>::unrolled_to_component_indices(c)] =
                     recovered_values[q](base + c);
@@ -954,9 +986,11 @@ namespace contact_fem
                                 const TrilinosWrappers::MPI::Vector          &solution,
                                 const Materials<dim>                         &materials,
                                 const std::vector<ContactNodeTraction<dim>> &contact_nodes,
-                                const Settings                               &settings)
+                                const Settings                               &settings,
+                                VolumetricProjection<dim>                    *volumetric)
   {
-    SPREstimator<dim> estimator(mapping, dof_handler, solution, materials, contact_nodes, settings);
+    SPREstimator<dim> estimator(
+      mapping, dof_handler, solution, materials, contact_nodes, settings, volumetric);
     return estimator.run();
   }
 

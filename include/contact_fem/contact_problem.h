@@ -22,6 +22,7 @@
 #include <contact_fem/parameters.h>
 #include <contact_fem/refinement.h>
 #include <contact_fem/scene.h>
+#include <contact_fem/volumetric_projection.h>
 
 #include <fstream>
 #include <memory>
@@ -97,8 +98,20 @@ namespace contact_fem
     compute_cell_matrices();
     void
     compute_cell_loads(const double time);
+    /// Finds the DoFs of the "Fixed points" on this mesh; throws if a point
+    /// is not a vertex of its body.
+    void
+    locate_fixed_points();
     void
     make_dirichlet_constraints(const double time);
+    /// Prints warnings for locking-prone Poisson's ratios and for a slave
+    /// side much stiffer than its master.
+    void
+    warn_about_modelling_choices() const;
+    /// Prints and records a warning when |u|_max exceeds a tenth of the
+    /// model size.
+    void
+    warn_about_large_displacements(Json &cycle_record);
     void
     make_sparsity_pattern();
     void
@@ -168,10 +181,14 @@ namespace contact_fem
     FESystem<dim>                             fe;
     MappingQ<dim>                             mapping;
     DoFHandler<dim>                           dof_handler;
+    /// Present with Finite element/Volumetric strain = B-bar (after fe and
+    /// mapping, which it refers to).
+    std::unique_ptr<VolumetricProjection<dim>> volumetric_projection;
     IndexSet                                  owned_dofs, relevant_dofs, writable_dofs;
 
     AffineConstraints<double> hanging_constraints;
     AffineConstraints<double> dirichlet_constraints;
+    std::vector<types::global_dof_index> fixed_point_dofs; ///< locally relevant
     AffineConstraints<double> constraints;
 
     TrilinosWrappers::SparseMatrix system_matrix;

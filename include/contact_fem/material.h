@@ -57,6 +57,13 @@ namespace contact_fem
     SymmetricTensor<2, dim>
     stress(const types::material_id id, const SymmetricTensor<2, dim> &strain) const;
 
+    /// sigma = 2 mu eps + lambda theta I, with theta the projected
+    /// volumetric strain of the B-bar element (VolumetricProjection).
+    SymmetricTensor<2, dim>
+    stress(const types::material_id       id,
+           const SymmetricTensor<2, dim> &strain,
+           const double                   volumetric_strain) const;
+
     /// eps = C^{-1} : sigma for material @p id (used by energy norms of stress errors).
     SymmetricTensor<2, dim>
     compliance(const types::material_id id, const SymmetricTensor<2, dim> &stress) const;

@@ -28,9 +28,19 @@ namespace contact_fem
     std::string        expression; ///< function of x, y, (z,) t
   };
 
+  /// A displacement component held at zero at one vertex of one body, to
+  /// remove a rigid-body mode that the boundary conditions leave free.
+  struct PointCondition
+  {
+    types::material_id  material_id;
+    std::vector<double> coordinates;
+    unsigned int        component;
+  };
+
   struct BoundaryConditions
   {
     std::vector<DisplacementCondition> displacements;
+    std::vector<PointCondition>        points;
     std::vector<PressureCondition>     pressures;
 
     static void
@@ -83,6 +93,7 @@ namespace contact_fem
     double       displacement_absolute_tolerance = 1e-9;
     double       multiplier_relative_tolerance   = 1e-4;
     double       multiplier_absolute_tolerance   = 1e-9;
+    double       damping                         = 1.; ///< step length of every update
 
     static void
     declare_parameters(ParameterHandler &prm);

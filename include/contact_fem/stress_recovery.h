@@ -16,6 +16,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <contact_fem/material.h>
+#include <contact_fem/volumetric_projection.h>
 
 #include <vector>
 
@@ -102,8 +103,9 @@ namespace contact_fem
      * Compute the estimate. @p dof_handler carries FESystem(FE_Q<dim>(p), dim)
      * on a (parallel::distributed or serial) triangulation, @p solution is the
      * ghosted (locally relevant) displacement, @p contact_nodes must be the
-     * same list on every rank. Collective over the triangulation's
-     * communicator.
+     * same list on every rank. With @p volumetric (B-bar) the FE stresses
+     * use its projected volumetric strain. Collective over the
+     * triangulation's communicator.
      */
     static Result
     estimate(const Mapping<dim>                           &mapping,
@@ -111,7 +113,8 @@ namespace contact_fem
              const TrilinosWrappers::MPI::Vector          &solution,
              const Materials<dim>                         &materials,
              const std::vector<ContactNodeTraction<dim>> &contact_nodes,
-             const Settings                               &settings);
+             const Settings                               &settings,
+             VolumetricProjection<dim>                    *volumetric = nullptr);
   };
 } // namespace contact_fem
 
