@@ -485,14 +485,32 @@ namespace contact_fem
 
   template <int dim>
   void
+  ContactProblem<dim>::write_error_indicators() const
+  {
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      vector_field(dim, DataComponentInterpretation::component_is_part_of_vector);
+    data_out.add_data_vector(ghosted_solution, std::vector<std::string>(dim, "displacement"),
+                             DataOut<dim>::type_dof_data, vector_field);
+    data_out.add_data_vector(indicators, "error_indicator", DataOut<dim>::type_cell_data);
+    data_out.build_patches(mapping, degree);
+    data_out.write_vtu_with_pvtu_record(output.directory + "/", "error_indicators", cycle,
+                                        comm, 2);
+  }
+
+  template <int dim>
+  void
   ContactProblem<dim>::write_convergence_row(const Json &r, const double cumulative)
   {
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
     unsigned int iterations = 0;
+    // Unknown values (no reference, no analytical solution) stay empty.
     auto number = [](const Json &j) {
       std::ostringstream s;
-      s << std::setprecision(8) << j.number_value();
+      if (std::isfinite(j.number_value()))
+        s << std::setprecision(8) << j.number_value();
       return s.str();
     };
     for (const auto &step : newton_iterations_of_cycle)
@@ -501,9 +519,11 @@ namespace contact_fem
                     << ',' << number(r["contact"]["active_slave_nodes"]) << ','
                     << refinement.estimator << ',' << number(r["estimated_error"]) << ','
                     << number(r["relative_estimated_error"]) << ','
+                    << number(r["effectivity_index"]) << ','
                     << number(r["analytical"]["p_max_relative_error"]) << ','
                     << number(r["analytical"]["a_error"]) << ','
-                    << number(r["pressure_l2_relative_error"]) << ',' << iterations << ','
+                    << number(r["pressure_l2_relative_error"]) << ','
+                    << number(r["energy_error"]) << ',' << iterations << ','
                     << number(r["wall_time"]) << ',' << cumulative << std::endl;
   }
 
@@ -540,6 +560,7 @@ namespace contact_fem
   template void ContactProblem<dim>::write_convergence_row(const Json &, const double); \
   template void ContactProblem<dim>::print_results(const Json &, const Json &) const; \
   template void ContactProblem<dim>::write_vtu(const unsigned int, const double); \
+  template void ContactProblem<dim>::write_error_indicators() const;             \
   template void ContactProblem<dim>::write_summary(const Json &,                  \
                                                    const double,                  \
                                                    const std::string &) const;

@@ -774,9 +774,9 @@ namespace contact_fem
       {
         convergence_csv.open(output.directory + "/convergence.csv");
         convergence_csv << "cycle,cells,dofs,active_slave_nodes,estimator,estimated_error,"
-                           "relative_estimated_error,p_max_relative_error,a_error,"
-                           "pressure_l2_relative_error,newton_iterations,wall_time,"
-                           "cumulative_wall_time\n";
+                           "relative_estimated_error,effectivity_index,p_max_relative_error,"
+                           "a_error,pressure_l2_relative_error,energy_error,"
+                           "newton_iterations,wall_time,cumulative_wall_time\n";
       }
     Json   cycles     = Json::array();
     double cumulative = 0.;
@@ -1043,15 +1043,47 @@ namespace contact_fem
     // Total potential energy 1/2 u.K u - f.u of the bodies (from the last
     // residual evaluation): its difference to that of an overkill solution
     // measures the energy-norm error.
-    cycle_record.set("strain_energy", strain_energy)
-      .set("potential_energy", strain_energy - external_work);
+    const double potential_energy = strain_energy - external_work;
+    cycle_record.set("strain_energy", strain_energy).set("potential_energy", potential_energy);
     print_results(reaction_json, hertz_json);
+    double energy_error = std::numeric_limits<double>::quiet_NaN();
+    if (std::isfinite(analytical.reference_potential_energy))
+      {
+        // A conforming discrete solution minimises the energy over a subset:
+        // its energy lies above the exact one, and 2 (Pi_h - Pi) is the
+        // squared energy-norm error (plus the contact work, see the
+        // parameter).
+        const double excess = potential_energy - analytical.reference_potential_energy;
+        energy_error        = std::sqrt(2. * std::abs(excess));
+        cycle_record.set("energy_error", energy_error);
+        pcout << "    energy-norm error:            " << energy_error
+              << " (from Pi_h - Pi_ref = " << excess << ")" << std::endl;
+        if (excess < 0.)
+          pcout << "  Warning: the potential energy is below the reference: the "
+                   "discrete problem is softer than the exact one (a polygonal "
+                   "curved boundary, the weak mortar gap) or the reference is not "
+                   "accurate enough; sqrt(2 |Pi_h - Pi_ref|) is then not a bound "
+                   "of the error."
+                << std::endl;
+      }
     if (output.write_pressure_profile && contact)
       write_pressure_profile();
     if (!converged)
       return false;
     if (refinement.n_cycles > 1)
-      estimate_error(cycle_record);
+      {
+        estimate_error(cycle_record);
+        if (energy_error > 0.)
+          {
+            const double effectivity =
+              cycle_record["estimated_error"].number_value() / energy_error;
+            cycle_record.set("effectivity_index", effectivity);
+            pcout << "    effectivity index eta / error: " << std::setprecision(3)
+                  << effectivity << std::setprecision(6) << std::endl;
+          }
+        if (output.write_vtu)
+          write_error_indicators();
+      }
     return true;
   }
 

@@ -5,6 +5,7 @@
 #include <contact_fem/parameters.h>
 
 #include <cmath>
+#include <cstdlib>
 
 namespace contact_fem
 {
@@ -423,6 +424,16 @@ namespace contact_fem
     prm.declare_entry("Radius", "8", Patterns::Double(0.), "Cylinder radius R.");
     prm.declare_entry("Center", "0", Patterns::Double(),
                       "x coordinate of the centre of the contact zone.");
+    prm.declare_entry("Reference potential energy", "",
+                      Patterns::Anything(),
+                      "Total potential energy 1/2 u.K u - f.u of the exact solution, "
+                      "if known (e.g. from an overkill or extrapolated run: "
+                      "summary.json, cycles[].potential_energy); empty if not. "
+                      "Then every cycle reports the energy-norm error "
+                      "sqrt(2 (Pi_h - Pi_ref)) and the effectivity index eta / "
+                      "error of the estimate. sqrt(2 (Pi_h - Pi_ref)) equals the "
+                      "energy-norm error without contact; with contact it exceeds "
+                      "it by the work of the exact pressure on the discrete gap.");
     prm.leave_subsection();
   }
 
@@ -433,7 +444,18 @@ namespace contact_fem
     type   = prm.get("Type");
     radius = prm.get_double("Radius");
     center = prm.get_double("Center");
+    const std::string reference = Utilities::trim(prm.get("Reference potential energy"));
     prm.leave_subsection();
+    reference_potential_energy = std::numeric_limits<double>::quiet_NaN();
+    if (!reference.empty())
+      {
+        char *end                  = nullptr;
+        reference_potential_energy = std::strtod(reference.c_str(), &end);
+        AssertThrow(end != reference.c_str() && *end == '\0' &&
+                      std::isfinite(reference_potential_energy),
+                    ExcMessage("Analytical solution/Reference potential energy: '" +
+                               reference + "' is not a number (leave it empty if unknown)."));
+      }
     AssertThrow(radius > 0., ExcMessage("Analytical solution/Radius: expected > 0."));
   }
 

@@ -147,6 +147,10 @@ namespace contact_fem
     analytical_results(const Json &contact, const Json &reaction) const;
     void
     write_vtu(const unsigned int step, const double time);
+    /// error_indicators-<cycle>.vtu: the mesh of the cycle with the
+    /// displacement and the cell indicators of the last estimate.
+    void
+    write_error_indicators() const;
     void
     write_convergence_row(const Json &cycle_record, const double cumulative_time);
     void

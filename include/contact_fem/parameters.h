@@ -6,6 +6,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -106,6 +107,9 @@ namespace contact_fem
     std::string type   = "none"; ///< "none" or "hertz cylinder"
     double      radius = 8.;
     double      center = 0.; ///< x of the first point of contact
+    /// Total potential energy of the exact solution, if known (NaN if not):
+    /// gives the energy-norm error and the effectivity of the estimate.
+    double reference_potential_energy = std::numeric_limits<double>::quiet_NaN();
 
     static void
     declare_parameters(ParameterHandler &prm);
