@@ -864,9 +864,11 @@ namespace contact_fem
   void
   ContactProblem<dim>::warn_about_large_displacements(Json &cycle_record)
   {
-    // Linear elasticity is a small-displacement theory: displacements of a
-    // tenth of the model size mean a rigid-body mode that the supports (and
+    // Linear elasticity is a small-displacement theory: displacements of
+    // half the model size mean a rigid-body mode that the supports (and
     // frictionless contact) leave free, or a load far beyond the model.
+    // (A tenth would flag prescribed rigid shifts, e.g. a deep initial
+    // overlap pushed apart.)
     Point<dim> low, high;
     for (unsigned int d = 0; d < dim; ++d)
       {
@@ -885,10 +887,10 @@ namespace contact_fem
     for (unsigned int d = 0; d < dim; ++d)
       size = std::max(size, Utilities::MPI::max(high[d], comm) + Utilities::MPI::max(-low[d], comm));
     const double u_max = solution.linfty_norm();
-    if (u_max > 0.1 * size)
+    if (u_max > 0.5 * size)
       {
         std::ostringstream text;
-        text << "the largest displacement, " << u_max << ", exceeds a tenth of the model size ("
+        text << "the largest displacement, " << u_max << ", exceeds half the model size ("
              << size << "): a rigid-body mode that the supports leave free (e.g. a rotation; "
              << "see Boundary conditions/Fixed points) or a load beyond small-strain theory";
         pcout << "  Warning: " << text.str() << "." << std::endl;
@@ -949,10 +951,15 @@ namespace contact_fem
     TrilinosWrappers::MPI::Vector saved_solution = solution;
     std::vector<double>           saved_pressure;
     std::vector<bool>             saved_active;
+    // The mortar operators of the last converged state: a failed step has
+    // searched again, and the results reported after giving up must be
+    // those of the converged state with its own operators.
+    std::unique_ptr<ContactInterface<dim>> saved_interface;
     if (contact)
       {
-        saved_pressure = contact->pressure;
-        saved_active   = contact->active;
+        saved_pressure  = contact->pressure;
+        saved_active    = contact->active;
+        saved_interface = std::make_unique<ContactInterface<dim>>(*interface);
       }
     while (t_done < end_time * (1. - 1e-12))
       {
@@ -971,6 +978,7 @@ namespace contact_fem
               {
                 contact->pressure = saved_pressure;
                 contact->active   = saved_active;
+                *interface        = *saved_interface;
               }
             // Consecutive splits are bounded, and so is the step size: a step
             // below 1e-12 of the end time cannot advance the load.
@@ -1009,8 +1017,9 @@ namespace contact_fem
         saved_solution = solution;
         if (contact)
           {
-            saved_pressure = contact->pressure;
-            saved_active   = contact->active;
+            saved_pressure   = contact->pressure;
+            saved_active     = contact->active;
+            *saved_interface = *interface;
           }
         if (output.write_vtu)
           write_vtu(n_solved, time);

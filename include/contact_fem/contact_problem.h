@@ -108,8 +108,8 @@ namespace contact_fem
     /// side much stiffer than its master.
     void
     warn_about_modelling_choices() const;
-    /// Prints and records a warning when |u|_max exceeds a tenth of the
-    /// model size.
+    /// Prints and records a warning when |u|_max exceeds half the model
+    /// size.
     void
     warn_about_large_displacements(Json &cycle_record);
     void
