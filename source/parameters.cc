@@ -419,7 +419,8 @@ namespace contact_fem
                       "Reference solution to compare with: 'hertz cylinder' = 2D "
                       "plane-strain Hertz contact of a cylinder of radius R on a "
                       "plane, with the load per unit thickness taken from the "
-                      "applied loads and E* from the materials of the contact "
+                      "transmitted contact force (so displacement-driven scenes "
+                      "compare too) and E* from the materials of the contact "
                       "pair.");
     prm.declare_entry("Radius", "8", Patterns::Double(0.), "Cylinder radius R.");
     prm.declare_entry("Center", "0", Patterns::Double(),
