@@ -46,6 +46,30 @@ namespace contact_fem
                                  "' is not a valid expression of " + variables + "."));
         }
     }
+
+    /// Component indices of letters like "xy" (spaces ignored); @p what
+    /// names the entry in the message.
+    std::vector<unsigned int>
+    parse_components(const std::string &letters,
+                     const std::string &axes,
+                     const std::string &key,
+                     const std::string &what)
+    {
+      std::vector<unsigned int> result;
+      for (const char c : letters)
+        {
+          if (c == ' ')
+            continue;
+          const auto d = axes.find(c);
+          AssertThrow(d != std::string::npos,
+                      ExcMessage(key + ": '" + std::string(1, c) +
+                                 "' is not a component; expected letters from '" + axes +
+                                 "'."));
+          result.push_back(static_cast<unsigned int>(d));
+        }
+      AssertThrow(!result.empty(), ExcMessage(key + ": " + what + " lists no components."));
+      return result;
+    }
   } // namespace
 
   std::vector<std::pair<std::string, std::string>>
@@ -129,19 +153,9 @@ namespace contact_fem
     for (const auto &[id, components] : split_key_value_list(prm.get("Fixed"), fixed_key))
       {
         const types::boundary_id b = parse_boundary_id(id, fixed_key);
-        AssertThrow(!components.empty(),
-                    ExcMessage(fixed_key + ": boundary " + id + " lists no components."));
-        for (const char c : components)
-          {
-            if (c == ' ')
-              continue;
-            const auto d = axes.find(c);
-            AssertThrow(d != std::string::npos,
-                        ExcMessage(fixed_key + ": '" + std::string(1, c) +
-                                   "' is not a component; expected letters from '" +
-                                   axes + "'."));
-            displacements.push_back({b, static_cast<unsigned int>(d), "0"});
-          }
+        for (const unsigned int d :
+             parse_components(components, axes, fixed_key, "boundary " + id))
+          displacements.push_back({b, d, "0"});
       }
     const std::string points_key = "Boundary conditions/Fixed points";
     points.clear();
@@ -168,19 +182,10 @@ namespace contact_fem
                     ExcMessage(points_key + ": '" + location +
                                "' is not of the form 'material id @ x, y" +
                                (dim == 3 ? ", z" : "") + "'."));
-        AssertThrow(!trim(components).empty(),
-                    ExcMessage(points_key + ": point '" + location +
-                               "' lists no components."));
-        for (const char c : components)
+        for (const unsigned int d :
+             parse_components(components, axes, points_key, "point '" + location + "'"))
           {
-            if (c == ' ')
-              continue;
-            const auto d = axes.find(c);
-            AssertThrow(d != std::string::npos,
-                        ExcMessage(points_key + ": '" + std::string(1, c) +
-                                   "' is not a component; expected letters from '" +
-                                   axes + "'."));
-            condition.component = static_cast<unsigned int>(d);
+            condition.component = d;
             points.push_back(condition);
           }
       }
