@@ -125,25 +125,64 @@ def aitken(p):
     return p[-1] - d2 * d2 / (d2 - d1)
 
 
+def contracting(p, n_diff=3):
+    """(ok, diffs, ratios): whether the last n_diff differences of p (fewer if
+    p is short, at least 2) have one sign and shrink in magnitude, i.e. look
+    like a geometric tail that Aitken may extrapolate."""
+    d = [b - a for a, b in zip(p[:-1], p[1:])][-n_diff:]
+    ratios = [b / a if a != 0 else float("inf") for a, b in zip(d[:-1], d[1:])]
+    ok = len(d) >= 2 and all(0 < q < 1 for q in ratios)
+    return ok, d, ratios
+
+
 def reference(ref):
-    """Pi_ref, its uncertainty delta and the reference p_max, strain energy."""
+    """Pi_ref, its uncertainty delta and the reference p_max, strain energy.
+
+    Aitken's extrapolation is used only if the last three differences of the
+    reference energies have one sign and contract (a geometric tail); then the
+    extrapolation step is the error bar. Otherwise (non-monotone or
+    non-contracting differences, e.g. the discretisation error has fallen to
+    the level of solver noise) Aitken would extrapolate in an arbitrary
+    direction: the last value is taken, with the largest of the last two
+    differences as its uncertainty."""
     c = ref["cycles"]
     pis = [x["Pi"] for x in c]
-    extrapolated = aitken(pis)
+    ok, diffs, ratios = contracting(pis)
+    extrapolated = aitken(pis) if ok else None
+    diff_text = ", ".join("%.2g" % x for x in diffs)
+    ratio_text = ", ".join("%.2f" % q for q in ratios)
     if extrapolated is not None:
         pi_ref = extrapolated
         # The extrapolation correction itself is the error bar.
         delta = abs(extrapolated - pis[-1])
-        method = "Aitken extrapolation of the last three reference cycles"
+        method = ("Aitken extrapolation of the last three reference cycles: the last "
+                  "differences %s have one sign and contract (ratios %s)" % (diff_text, ratio_text))
+        delta_text = "the size of the extrapolation step"
+        extrapolated_flag = True
     else:
         pi_ref = pis[-1]
-        delta = abs(pis[-1] - pis[-2]) if len(pis) > 1 else float("nan")
-        method = "last reference cycle (differences not monotone: no extrapolation)"
+        delta = max(abs(x) for x in diffs[-2:]) if diffs else float("nan")
+        wrong = None
+        if len(pis) >= 3 and diffs[-1] != diffs[-2]:
+            d1, d2 = diffs[-2], diffs[-1]
+            wrong = pis[-1] - d2 * d2 / (d2 - d1)
+        method = ("last reference cycle, no extrapolation: the last differences %s are %s "
+                  "(ratios %s), so they are not a geometric tail%s" % (
+                      diff_text,
+                      "not monotone" if any(q <= 0 for q in ratios) else "not contracting",
+                      ratio_text,
+                      "; Aitken on the last three would give %.10f, %s" % (
+                          wrong, "on the wrong side of the last value (above it, while Pi "
+                          "decreases)" if diffs[-1] < 0 and wrong > pis[-1] else
+                          "a step of %.2g" % (wrong - pis[-1])) if wrong is not None else ""))
+        delta_text = "the largest of the last two differences"
+        extrapolated_flag = False
     p_ref = c[-1]["p_max"]
     p_delta = abs(c[-1]["p_max"] - c[-2]["p_max"]) if len(c) > 1 else float("nan")
     strain_ref = c[-1]["strain"]
     return {
-        "Pi": pi_ref, "delta": delta, "method": method, "p_max": p_ref,
+        "Pi": pi_ref, "delta": delta, "method": method, "delta_text": delta_text,
+        "extrapolated": extrapolated_flag, "p_max": p_ref,
         "p_delta": p_delta, "strain": strain_ref, "norm": math.sqrt(2 * strain_ref),
         "cycles": c,
     }
@@ -248,7 +287,7 @@ def read_vtu(path):
         name = re.search(r'Name="([^"]*)"', attrs)
         dtype = re.search(r'type="([^"]*)"', attrs).group(1)
         key = name.group(1) if name else "points"
-        if key in ("points", "connectivity", "offsets"):
+        if key in ("points", "connectivity", "offsets", "error_indicator"):
             arrays[key] = _decode_array(body, dtype, header_fmt)
     pts = arrays["points"]
     points = [(pts[3 * i], pts[3 * i + 1]) for i in range(len(pts) // 3)]
@@ -257,7 +296,7 @@ def read_vtu(path):
     for o in offs:
         cells.append(conn[start:o])
         start = o
-    return points, cells
+    return points, cells, arrays.get("error_indicator")
 
 
 def mesh_cells(path, degree):
@@ -265,7 +304,7 @@ def mesh_cells(path, degree):
     cell is a patch of degree^2 quadrilaterals on a (degree+1)^2 lattice of
     consecutive points (lexicographic). Returns per cell its boundary polygon,
     centroid and area."""
-    points, sub = read_vtu(path)
+    points, sub, indicator = read_vtu(path)
     n = degree + 1
     per = degree * degree
     out = []
@@ -283,7 +322,10 @@ def mesh_cells(path, degree):
         area = abs(area) / 2
         cx = sum(p[0] for p in ring) / len(ring)
         cy = sum(p[1] for p in ring) / len(ring)
-        out.append({"ring": ring, "x": cx, "y": cy, "h": math.sqrt(area)})
+        # error_indicator is cell data written per patch point: constant on
+        # the patch; contact_fem writes eta_K (not squared).
+        eta = float(indicator[ids[0]]) if indicator is not None else float("nan")
+        out.append({"ring": ring, "x": cx, "y": cy, "h": math.sqrt(area), "eta": eta})
     return out
 
 
@@ -299,11 +341,8 @@ def cycle_vtus(d, cycles):
     return name(cycles[0]["n_steps"]), name(sum(c["n_steps"] for c in cycles))
 
 
-def mesh_bands(cells, a):
-    """Cells of the cylinder (y > 1) by region: the contact zone |x| < a near
-    the plate, the contact edges, the rest of the contact neighbourhood, the
-    loaded top corners and the bulk; plate cells separately."""
-    bands = [
+def band_tests(a):
+    return [
         ("contact zone: abs(x) < 0.8a, y < 1.2", lambda c: abs(c["x"]) < 0.8 * a and c["y"] < 1.2),
         ("contact edges: 0.8a <= abs(x) <= 1.2a, y < 1.2",
          lambda c: 0.8 * a <= abs(c["x"]) <= 1.2 * a and c["y"] < 1.2),
@@ -313,6 +352,33 @@ def mesh_bands(cells, a):
          lambda c: math.hypot(abs(c["x"]) - 8, c["y"] - 9) < 1),
         ("rest of the cylinder", lambda c: True),
     ]
+
+
+def eta_shares(cells, a):
+    """Share of eta^2 per region (same regions as mesh_bands, plate last) and
+    the share of the largest few cells."""
+    total = sum(c["eta"] ** 2 for c in cells)
+    if not total > 0:
+        return None
+    shares, taken = [], set()
+    cyl = [(i, c) for i, c in enumerate(cells) if c["y"] > 1]
+    for name, test in band_tests(a):
+        sel = [i for i, c in cyl if i not in taken and test(c)]
+        taken.update(sel)
+        shares.append(sum(cells[i]["eta"] ** 2 for i in sel) / total)
+    shares.append(sum(c["eta"] ** 2 for c in cells if c["y"] <= 1) / total)
+    top = sorted(cells, key=lambda c: -c["eta"])
+    top2 = sum(c["eta"] ** 2 for c in top[:2]) / total
+    top10 = sum(c["eta"] ** 2 for c in top[:10]) / total
+    return {"shares": shares, "top2": top2, "top10": top10,
+            "top": [(c["x"], c["y"], c["h"], c["eta"] ** 2 / total) for c in top[:4]]}
+
+
+def mesh_bands(cells, a):
+    """Cells of the cylinder (y > 1) by region: the contact zone |x| < a near
+    the plate, the contact edges, the rest of the contact neighbourhood, the
+    loaded top corners and the bulk; plate cells separately."""
+    bands = band_tests(a)
     rows = []
     cyl = [c for c in cells if c["y"] > 1]
     taken = set()
@@ -429,24 +495,32 @@ def main():
                 loads.append(float(r["run"].get(k, "").split()[0]))
             except (ValueError, IndexError):
                 pass
-    w("- Date: %s; machine: %s, `nproc` = %s. The cores were shared with other work: "
-      "1-minute load average %s–%s at the starts and ends of the runs (in "
-      "`results/*/run.txt`), so wall times carry that noise." % (
+    w("- Date: %s; machine: %s, `nproc` = %s. 1-minute load average %s–%s at the starts "
+      "and ends of the runs (in `results/*/run.txt`; the study itself contributes about "
+      "1)%s." % (
           study.get("date", "?"), study.get("cpu", "?"), study.get("nproc", "?"),
-          fmt(min(loads)) if loads else "?", fmt(max(loads)) if loads else "?"))
-    w("- Source: git `%s`, binary `build/contact_fem` of %s, sha256 `%s` (copied "
-      "before the first run; all runs use the copy)%s." % (
-          study.get("git", "?"), study.get("binary_mtime", "?"), study.get("binary_sha256", "?"),
-          "; **the binary in build/ changed during the study**"
+          fmt(min(loads)) if loads else "?", fmt(max(loads)) if loads else "?",
+          ": the cores were shared with other work, so wall times carry that noise"
+          if loads and max(loads) > 1.6 else ""))
+    binary = study.get("binary", "build/contact_fem")
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    if binary.startswith(root + os.sep):
+        binary = os.path.relpath(binary, root)
+    w("- Source: git `%s` (the working tree when the study started), binary `%s` of %s, "
+      "sha256 `%s` (copied before the first run; all runs use the copy)%s." % (
+          study.get("git", "?"), binary, study.get("binary_mtime", "?"),
+          study.get("binary_sha256", "?"),
+          "; **the binary at that path changed during the study**"
           if study.get("binary_changed_during_study") else ""))
     w("- Whole study (all runs below, including reference and mesh pictures): %s s." %
       study.get("study_seconds", "?"))
     w("")
     w("### Setup\n")
     w("All runs: `prm/hertz.prm` (R = 8 half-disc, E = 200, nu = 0.3 on a plate with "
-      "E = 2e12, p = 0.2 t, end time 1.001; the first cycle takes the two load steps, "
-      "later cycles solve at the end time from the transferred solution), serial, one "
-      "thread, no VTU output.\n")
+      "E = 2e12, p = 0.2 t on the flat top, which slides freely; u_x held only at two "
+      "points of the symmetry axis, (0, 1) and (0, 9); end time 1.001; the first cycle "
+      "takes the two load steps, later cycles solve at the end time from the transferred "
+      "solution), serial, one thread, no VTU output.\n")
     w("| Run | Start mesh | Refinement | Cycles |")
     w("|---|---|---|---|")
     for deg in DEGREES:
@@ -490,10 +564,10 @@ def main():
                                            c["p_max"]))
         prev = c["Pi"]
     w("")
-    w("- Pi_ref = %.10f (%s); uncertainty delta = %.2g, taken as the size of the "
-      "extrapolation step. Cycles with |Pi_h - Pi_ref| < %g delta are marked "
-      "*reference-limited* (their error is not resolved by the reference) and left out "
-      "of rates and effectivities." % (ref["Pi"], ref["method"], ref["delta"], LIMITED_FACTOR))
+    w("- Pi_ref = %.10f (%s); uncertainty delta = %.2g, taken as %s. Cycles with "
+      "|Pi_h - Pi_ref| < %g delta are marked *reference-limited* (their error is not "
+      "resolved by the reference) and left out of rates and effectivities." % (
+          ref["Pi"], ref["method"], ref["delta"], ref["delta_text"], LIMITED_FACTOR))
     w("- The finest reference mesh has %d DoFs, %.1fx the finest Q2 study mesh and "
       "%.1fx the finest Q1 study mesh." % (
           rc[-1]["dofs"],
@@ -665,25 +739,42 @@ def main():
         a_hertz = mr["cycles"][-1]["a_hertz"]
         if args.plot_data:
             write_mesh_data(cells, os.path.join(args.plot_data, "mesh-q%d.dat" % deg))
+        # The SPR-contact indicators of the last recorded cycle (written with
+        # the VTU since commit 9d9625c).
+        shares = None
+        ind = os.path.join(d, "error_indicators_%02d.0.vtu" % mr["cycles"][-1]["cycle"])
+        if os.path.exists(ind):
+            try:
+                shares = eta_shares(mesh_cells(ind, deg), a_hertz)
+            except Exception as e:
+                print("analyse.py: cannot read %s: %s" % (ind, e), file=sys.stderr)
         mesh_info.append((deg, mr, mesh_bands(cells0, a_hertz), mesh_bands(cells, a_hertz),
-                          len(cells0), len(cells)))
+                          len(cells0), len(cells), shares))
     if mesh_info:
         w("From separate Q1 and Q2 'spr contact' runs (same settings as the study, VTU "
           "written, stopped after the first cycle with >= %s DoFs): cells of the start mesh and of the last "
           "mesh by region (h = sqrt(cell area); a = %.4f is Hertz's half-width).\n" % (
               mesh_info[0][1]["run"].get("dof_cap", "?"), a_hertz))
         w("![final adaptive meshes](figures/convergence_mesh.png)\n")
-        for deg, mr, b0, b1, n0, n1 in mesh_info:
+        for deg, mr, b0, b1, n0, n1, sh in mesh_info:
             lc = mr["cycles"][-1]
             w("Q%d, cycle %d (%d DoFs, %d active slave nodes, mean active slave element "
               "%.3g; start: %d active nodes, %.3g):\n" % (
                   deg, lc["cycle"], lc["dofs"], lc["active"], lc["slave_h"],
                   mr["cycles"][0]["active"], mr["cycles"][0]["slave_h"]))
-            w("| Region | Cells start | Cells last | min h start | min h last | median h last |")
-            w("|---|---:|---:|---:|---:|---:|")
-            for (name, n_a, hmin_a, _), (_, n_b, hmin_b, hmed_b) in zip(b0, b1):
-                w("| %s | %d | %d | %s | %s | %s |" % (name, n_a, n_b, fmt(hmin_a),
-                                                       fmt(hmin_b), fmt(hmed_b)))
+            w("| Region | Cells start | Cells last | min h start | min h last | median h last "
+              "| share of eta^2 last |")
+            w("|---|---:|---:|---:|---:|---:|---:|")
+            for k, ((name, n_a, hmin_a, _), (_, n_b, hmin_b, hmed_b)) in enumerate(zip(b0, b1)):
+                w("| %s | %d | %d | %s | %s | %s | %s |" % (
+                    name, n_a, n_b, fmt(hmin_a), fmt(hmin_b), fmt(hmed_b),
+                    "%s %%" % pct(sh["shares"][k], 2) if sh else "–"))
+            if sh:
+                w("\nLargest indicators on this cycle: the 2 largest cells carry %s %% of "
+                  "eta^2, the 10 largest %s %%; the largest at %s." % (
+                      pct(sh["top2"], 2), pct(sh["top10"], 2), "; ".join(
+                          "(%.3f, %.3f), h = %.2g, %s %%" % (x, y, h, pct(q, 2))
+                          for x, y, h, q in sh["top"])))
             w("")
     w("Active slave nodes on the last cycle of the study runs: " + "; ".join(
         "Q%d %s %d" % (d, LABEL[s], r["cycles"][-1]["active"]) for (d, s), r in

@@ -32,9 +32,13 @@ GROUPS = [
     ("gap", "Initial gap and initial penetration (contact blocks)"),
     ("pull", "Loads that pull the bodies apart"),
     ("mesh", "Distorted meshes and contact sides meshed 10x finer / coarser"),
-    ("mechanism", "Rigid-body mode left free by the Hertz scene (rotation of the half-disc about its centre)"),
+    ("mechanism", "Rotation of the Hertz half-disc about its centre (held by Boundary conditions/Fixed "
+                  "points in prm/hertz.prm; the *-nofix cases remove it)"),
     ("penalty", "Automatic penalty and scale factor times 1e-6 ... 1e6 (Contact/Stiffness factor)"),
+    ("newton", "Newton damping (Newton/Damping)"),
 ]
+
+FLAGS = ("hertz", "hertz-approx", "empty", "centred")
 
 # Tolerances of the verdicts.
 HERTZ_P_TOL = 0.05        # |p_max / p_Hertz - 1|
@@ -70,7 +74,7 @@ def read_profile(path):
 
 def parse_stdout(path):
     out = {"splits": 0, "newton_failures": 0, "failure": "", "step_attempts": 0,
-           "last_t": None, "errors": []}
+           "last_t": None, "errors": [], "grows": 0, "warnings": []}
     if not os.path.exists(path):
         return out
     continuing = False
@@ -83,7 +87,11 @@ def parse_stdout(path):
                     out["failure"] += " " + s
                     continue
                 continuing = False
-            if s.startswith("Splitting the step"):
+            if s.startswith("Warning:"):
+                out["warnings"].append(s[len("Warning:"):].strip())
+            elif s.startswith("Growing the step"):
+                out["grows"] += 1
+            elif s.startswith("Splitting the step"):
                 out["splits"] += 1
             elif s.startswith("Newton failed at"):
                 out["newton_failures"] += 1
@@ -108,6 +116,41 @@ def fmt(x, spec=".2e"):
 
 def pct(x):
     return "-" if x is None else "%+.1f %%" % (100. * x)
+
+
+def parse_expect(text):
+    """Flags and key=value tokens of the EXPECT string of run.sh; a value may
+    hold spaces ("diag=no contact"): words without '=' that are not flags
+    continue the previous value."""
+    flags, kv, last = [], [], None
+    for word in text.split():
+        if word in FLAGS:
+            flags.append(word)
+            last = None
+        elif "=" in word:
+            key, _, value = word.partition("=")
+            kv.append([key, value])
+            last = kv[-1]
+        elif last is not None:
+            last[1] += " " + word
+        else:
+            flags.append(word)
+    return flags, [(k, v) for k, v in kv]
+
+
+def warning_label(text):
+    """Short label of one warning of the program, for the tables."""
+    m = re.search(r"largest displacement, (\S+),", text)
+    if m:
+        return "large displacement (|u| = %s)" % m.group(1)
+    if "lock volumetrically" in text:
+        m = re.search(r"body (\d+)", text)
+        return "locking" + (" (body %s)" % m.group(1) if m else "")
+    m = re.search(r"slave side is (\S+) times stiffer", text)
+    if m:
+        ratio = ("%.3g" % float(m.group(1))).replace("e+0", "e").replace("e+", "e")
+        return "stiff slave (%s x the master)" % ratio
+    return text if len(text) <= 60 else text[:57] + "..."
 
 
 def iterations_text(its):
@@ -137,8 +180,9 @@ def analyse_case(d):
             "name": run.get("name", os.path.basename(d)),
             "rc": int(run.get("exit_code", "-1") or -1),
             "elapsed": float(run.get("elapsed", "nan") or "nan"),
-            "expect": run.get("expect", "").split(),
             "order": int(run.get("order", "0") or 0)}
+    case["flags"], case["expect_kv"] = parse_expect(run.get("expect", ""))
+    case["expect"] = case["flags"] + ["%s=%s" % kv for kv in case["expect_kv"]]
     case["out"] = parse_stdout(os.path.join(d, "stdout.txt"))
     trim = read_kv(os.path.join(d, "trim.txt"))
     case["stdout_lines"] = int(trim["stdout_lines"]) if "stdout_lines" in trim else None
@@ -164,6 +208,28 @@ def analyse_case(d):
     case["contact"], case["reaction"], case["analytical"] = contact, reaction, analytical
     case["wall"] = summary.get("wall_time") if summary else None
     case["status"] = summary.get("status") if summary else None
+    # warnings: console lines "Warning: ..." and cycles[*].warning of summary.json
+    texts = list(case["out"]["warnings"])
+    for cyc in (summary or {}).get("cycles", []):
+        w = cyc.get("warning")
+        if w and not any(w in t for t in texts):
+            texts.append(w)
+    case["warnings"] = texts
+    labels, locked = [], []
+    for t in texts:
+        label = warning_label(t)
+        m = re.match(r"locking \(body (\d+)\)", label)
+        if m:
+            locked.append(m.group(1))
+            label = "locking"
+        if label not in labels:
+            labels.append(label)
+    if len(locked) > 1:
+        labels = [("locking (bodies %s)" % ", ".join(locked)) if l == "locking" else l
+                  for l in labels]
+    elif locked:
+        labels = [("locking (body %s)" % locked[0]) if l == "locking" else l for l in labels]
+    case["warning_labels"] = labels
 
     prof = [r for r in read_profile(os.path.join(d, "pressure_profile.csv"))
             if r.get("active", 0) > 0.5]
@@ -184,12 +250,19 @@ def analyse_case(d):
 def judge(case):
     """Sets case['verdict'] (short), case['kind'] (ok / expected / indicative /
     hang / failure / unclear / wrong) and case['notes'] (list of str)."""
-    rc, out, exp = case["rc"], case["out"], case["expect"]
+    rc, out, exp = case["rc"], case["out"], case["flags"]
     notes = []
-    # diag=TEXT may contain spaces ("diag=no contact"): take it from the
-    # re-joined string, up to the next key=value token.
-    m = re.search(r"diag=([^=]*?)(?:\s+\S+=|$)", " ".join(exp))
-    diag = m.group(1).strip() if m else None
+    kv = case["expect_kv"]
+    diag = next((v for k, v in kv if k == "diag"), None)
+    wanted = [v for k, v in kv if k == "warn"]
+    tol = next((float(v) for k, v in kv if k == "tol"), None)
+    imbalance_tol = tol if tol is not None else IMBALANCE_TOL
+    pressure_tol = tol if tol is not None else PRESSURE_TOL
+    warned = bool(case["warnings"])
+    missing = [w for w in wanted
+               if not any(w.lower() in t.lower() for t in case["warnings"])]
+    for w in missing:
+        notes.append("the expected warning '%s' is not printed" % w)
 
     if rc in (124, 137):
         lines = case["stdout_lines"]
@@ -218,9 +291,12 @@ def judge(case):
                if re.search(pattern, text, re.I)]
         text += " [message gives: %s]" % (", ".join(has) if has else "nothing")
         if diag:
-            if diag.lower() in text.lower():
+            if diag.lower() in text.lower() and not missing:
                 case["kind"] = "expected"
                 case["verdict"] = "stops as expected: " + text
+            elif diag.lower() in text.lower():
+                case["kind"] = "unclear"
+                case["verdict"] = "stops with the expected '%s', but without the expected warning: %s" % (diag, text)
             else:
                 case["kind"] = "unclear"
                 case["verdict"] = ("stops, but not with the expected '%s' diagnosis: %s" % (diag, text))
@@ -237,12 +313,13 @@ def judge(case):
         notes.append("converged although a '%s' stop was expected" % diag)
     imb = case["reaction"].get("relative_imbalance")
     applied = case["reaction"].get("applied_load")
-    if imb is not None and imb > IMBALANCE_TOL:
+    if imb is not None and imb > imbalance_tol:
+        kind = "wrong"
         if applied is not None and applied < 1e-14:
-            notes.append("relative imbalance reported as %.2g with zero applied load "
-                         "(displacement-driven: the metric is meaningless, false alarm)" % imb)
+            # since 539de7a: |sum of reactions| / (half the sum of |reactions|)
+            notes.append("reaction imbalance %.2g (no applied load: the support reactions "
+                         "do not cancel)" % imb)
         else:
-            kind = "wrong"
             notes.append("reaction imbalance %.2g" % imb)
     n_active = case["contact"].get("active_slave_nodes")
     for e in exp:
@@ -254,7 +331,7 @@ def judge(case):
             elif case["p_min"] is not None:
                 dev = max(abs(case["p_min"] / p - 1.), abs(case["p_max"] / p - 1.))
                 case["p_dev"] = dev
-                if dev > PRESSURE_TOL:
+                if dev > pressure_tol:
                     kind = "wrong"
                     notes.append("pressure %.6g … %.6g, expected %g" % (case["p_min"], case["p_max"], p))
         if e == "centred" and case["centre_h"] is not None and abs(case["centre_h"]) > CENTRE_TOL:
@@ -281,21 +358,31 @@ def judge(case):
             else:
                 kind = "indicative" if kind == "ok" else kind
                 notes.append("differs from Hertz (formula only indicative here): " + ", ".join(bad))
+    if kind == "wrong" and warned and not missing:
+        kind = "warned"
+    elif missing and kind in ("ok", "indicative"):
+        kind = "unclear"
     case["kind"] = kind
     verdict = {"ok": "converged, correct", "indicative": "converged (see note)",
-               "wrong": "CONVERGED, CHECK FAILS"}[kind]
+               "wrong": "CONVERGED, CHECK FAILS",
+               "warned": "converged, check fails, the program warns",
+               "unclear": "converged, expected warning missing"}[kind]
     if out["splits"]:
         verdict += ", after %d step split(s)" % out["splits"]
+        if out["grows"]:
+            verdict += " (the step grew back %d time(s))" % out["grows"]
     case["verdict"] = verdict
     case["notes"] = notes
 
 
-def table(cases, hertz, pressure):
+def table(cases, hertz, pressure, warnings):
     head = ["case", "what", "Newton its per step", "splits", "result", "imbalance"]
     if hertz:
         head += ["p_max err", "a err [el]", "centre [el]"]
     if pressure:
         head += ["pressure (active nodes)"]
+    if warnings:
+        head += ["warnings"]
     head += ["wall [s]"]
     rows = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for c in cases:
@@ -303,6 +390,8 @@ def table(cases, hertz, pressure):
         split_txt = str(out["splits"])
         if out["newton_failures"]:
             split_txt += " (%d failed Newton)" % out["newton_failures"]
+        if out["grows"]:
+            split_txt += ", grew back %dx" % out["grows"]
         result = c["verdict"]
         if c["notes"]:
             result += "; " + "; ".join(c["notes"])
@@ -326,10 +415,55 @@ def table(cases, hertz, pressure):
                 row.append("no active node")
             else:
                 row.append("-")
+        if warnings:
+            row.append("; ".join(c["warning_labels"]).replace("|", "\\|") or "-")
         wall = c["wall"] if c["wall"] is not None and c["rc"] in (0, 2) else None
         row.append(fmt(wall, ".2f") if wall is not None else "%.0f (killed)" % c["elapsed"]
                    if c["rc"] in (124, 137) else fmt(c["elapsed"], ".2f"))
         rows.append("| " + " | ".join(row) + " |")
+    return "\n".join(rows)
+
+
+def set_value(case, key):
+    for s in case["run"].get("sets", "").split("\t"):
+        k, sep, v = s.partition("=")
+        if sep and k == key:
+            return v.strip()
+    return None
+
+
+def locking_table(cases):
+    """p_max error of the incompressible group on the default mesh: one row
+    per nu, one column per element (Q1/Q2, standard/B-bar)."""
+    cells, nus, cols = {}, [], []
+    for c in cases:
+        keys = {s.partition("=")[0] for s in c["run"].get("sets", "").split("\t") if s}
+        if keys - {"Finite element/Degree", "Materials/Poisson's ratios",
+                   "Finite element/Volumetric strain"}:
+            continue  # refined-mesh cases
+        nu = (set_value(c, "Materials/Poisson's ratios") or "?").split(",")[0].strip()
+        deg = set_value(c, "Finite element/Degree") or "1"
+        strain = set_value(c, "Finite element/Volumetric strain") or "standard"
+        col = "Q%s %s" % (deg, strain)
+        if nu not in nus:
+            nus.append(nu)
+        if col not in cols:
+            cols.append(col)
+        a = c["analytical"] if c["rc"] == 0 else {}
+        if c["rc"] != 0:
+            txt = c["kind"]
+        else:
+            txt = pct(a.get("p_max_relative_error")) if a else "-"
+            if any(l.startswith("locking") for l in c["warning_labels"]):
+                txt += " (warns)"
+        cells[(nu, col)] = txt
+    if len(cols) < 2:
+        return ""
+    nus.sort(key=float)
+    cols.sort(key=lambda x: (x.split()[0], x.split()[1] != "standard"))
+    rows = ["| nu | " + " | ".join(cols) + " |", "|" + "---|" * (len(cols) + 1)]
+    for nu in nus:
+        rows.append("| %s | " % nu + " | ".join(cells.get((nu, col), "") for col in cols) + " |")
     return "\n".join(rows)
 
 
@@ -362,8 +496,11 @@ def main():
               "(about %.0f s of run time, one case at a time)." %
               (datetime.date.today().isoformat(), total))
     md.append("")
-    md.append("- binary: `build/contact_fem`, sha256 %s%s; sources `%s`" %
-              (", ".join("`%s`" % s for s in shas),
+    binaries = sorted({c["run"].get("binary", "build/contact_fem") for c in cases})
+    md.append("- binary: %s, sha256 %s%s; checkout at run time `%s` (the binary may be "
+              "built from another commit: see the reading below)" %
+              (", ".join("`%s`" % b.replace(REPO + "/", "") for b in binaries),
+               ", ".join("`%s`" % s for s in shas),
                " (**the binary changed during the suite**)" if len(shas) > 1 else "",
                ", ".join(gits)))
     if len(shas) > 1:
@@ -375,9 +512,13 @@ def main():
         len(cases), total, ", ".join("%d %s" % (n, k) for k, n in sorted(kinds.items()))))
     md.append("- verdict kinds: *ok* = converged and matches the expected physics; "
               "*expected* = stops with the diagnosis the case is meant to provoke; "
-              "*indicative* = converged, reference only indicative; *failure* = reported "
-              "solver failure; *unclear* = stops with a misleading diagnosis; *wrong* = "
-              "converged but a check fails (a wrong answer unless the notes explain it); *hang* = killed by the time limit.")
+              "*indicative* = converged, reference only indicative; *warned* = converged, a "
+              "check fails, and the program printed a warning (the one the case expects, if "
+              "it names one); *failure* = reported "
+              "solver failure; *unclear* = stops with a misleading diagnosis, or an expected "
+              "warning is missing; *wrong* = "
+              "converged but a check fails and nothing is said (a silent wrong answer unless "
+              "the notes explain it); *hang* = killed by the time limit.")
     md.append("- columns: *Newton its per step* lists the converged load steps only (failed "
               "attempts are counted under *splits*); *imbalance* = `reaction.relative_imbalance` "
               "(of the last converged step for failed runs); *p_max err* = "
@@ -385,9 +526,13 @@ def main():
               "`analytical.a_error_in_slave_elements`; *centre [el]* = pressure-weighted mean x "
               "of the active slave nodes (deformed position, from pressure_profile.csv) in slave "
               "elements, 0 for a centred contact; *wall* = `wall_time` of summary.json "
-              "(elapsed time for killed runs). Hertz errors are only given for converged runs.")
+              "(elapsed time for killed runs); *warnings* = the program's \"Warning:\" lines "
+              "and `cycles[*].warning` of summary.json, shortened. *splits* also counts how often "
+              "the step grew back (\"Growing the step\"). Hertz errors are only given for "
+              "converged runs. Reproduce commands name `build/contact_fem`; use the binary above.")
     md.append("- tolerances of the verdicts: |p_max err| ≤ %g, |a err| ≤ %g elements, "
-              "|centre| ≤ %g elements, imbalance ≤ %g, patch pressures within %g relative." %
+              "|centre| ≤ %g elements, imbalance ≤ %g, patch pressures within %g relative "
+              "(a case's `tol=` overrides the last two)." %
               (HERTZ_P_TOL, HERTZ_A_TOL, CENTRE_TOL, IMBALANCE_TOL, PRESSURE_TOL))
     md.append("")
 
@@ -401,21 +546,31 @@ def main():
             "hertz" in e for c in gc for e in c["expect"])
         pressure = any(e.startswith("p=") or e in ("empty", "centred")
                        for c in gc for e in c["expect"])
+        warnings = any(c["warning_labels"] for c in gc)
         md.append("## %s" % title)
         md.append("")
-        md.append(table(gc, hertz, pressure))
+        md.append(table(gc, hertz, pressure, warnings))
         md.append("")
+        if g == "incompressible":
+            pivot = locking_table(gc)
+            if pivot:
+                md.append("p_max error against Hertz side by side (default mesh; \"(warns)\" = "
+                          "the locking warning is printed):")
+                md.append("")
+                md.append(pivot)
+                md.append("")
 
     md.append("## Automatic findings")
     md.append("")
-    md.append("Cases whose verdict is *hang*, *failure*, *unclear* or *wrong*, or with a note; "
+    md.append("Cases whose verdict is *hang*, *failure*, *unclear*, *warned* or *wrong*, or with a note; "
               "each with the command that reproduces it (from the repository root).")
     md.append("")
     for c in cases:
-        if c["kind"] in ("hang", "failure", "unclear", "wrong") or c["notes"]:
-            md.append("- **%s/%s** (%s): %s%s" % (
+        if c["kind"] in ("hang", "failure", "unclear", "warned", "wrong") or c["notes"]:
+            md.append("- **%s/%s** (%s): %s%s%s" % (
                 c["group"], c["name"], c["kind"], c["verdict"],
-                ("; " + "; ".join(c["notes"])) if c["notes"] else ""))
+                ("; " + "; ".join(c["notes"])) if c["notes"] else "",
+                (" [warns: %s]" % "; ".join(c["warning_labels"])) if c["warning_labels"] else ""))
             md.append("  `%s`" % reproduce(c["run"]))
     md.append("")
 

@@ -3,7 +3,8 @@
 # run.sh - stability suite of contact_fem (issue "Stiff and extreme cases").
 #
 # Runs stiff, soft, near-incompressible, tiny/huge-load, gap/penetration,
-# pull-apart, distorted/non-matching-mesh and penalty-scaling variations of
+# pull-apart, distorted/non-matching-mesh, rigid-body-mode, penalty-scaling
+# and Newton-damping variations of
 # the Hertz scene (prm/hertz.prm) and of the contact-blocks scenes
 # (tests/scenes/*.prm), one after the other, each under a time limit, into
 # bench/stability/results/<group>/<case>/, then calls analyse.py, which
@@ -89,6 +90,13 @@ case_order() { echo "${order_of[$1]:-0}"; }
 #     empty          the run must converge with an empty active set
 #     centred        the pressure must be centred at x = 0 (within half an
 #                    element)
+#     warn=TEXT      the program must print a warning containing TEXT (a case
+#                    may expect a check to fail and the program to say so)
+#     tol=X          imbalance and patch-pressure tolerance X instead of the
+#                    defaults of analyse.py (damped Newton: results are only
+#                    as accurate as the Newton tolerances)
+#   Flags (hertz, hertz-approx, empty, centred) come before key=value tokens,
+#   since a value may contain spaces ("diag=no contact").
 run_case() {
   local group=$1 name=$2 scene=$3 limit=$4 description=$5 expect=$6
   shift 6
@@ -161,6 +169,7 @@ run_case() {
     echo "timeout=$limit"
     echo "elapsed=$(awk -v a="$start" -v b="$end" 'BEGIN{printf "%.3f", b-a}')"
     echo "binary_sha256=$sha"
+    echo "binary=$binary"
     echo "git=$git_rev"
     echo "order=$(case_order "$id")"
   } > "$dir/run.txt"
@@ -188,6 +197,8 @@ case_index=0
 # Hertz scene: cylinder (material 1, slave) on a plate (material 2, master).
 # The softer body keeps E = 200. Hertz uses E* of both bodies; with a soft
 # plate of thickness 1 (a thin layer on a clamped base) it is only indicative.
+# A cylinder stiffer than the plate is a stiff slave on a soft master: since
+# 539de7a the program warns ("... times stiffer than the master side").
 G=stiffness
 run_case $G ratio-1            "$HERTZ" 120 "E_cyl = E_plate = 200 (graded zone widened to 0.8 for a = 0.545)" "hertz-approx" \
   "Materials/Young's moduli=200, 200" "Geometry/Hertz cylinder/Refinement half width=0.8" \
@@ -198,33 +209,47 @@ run_case $G plate-1e8          "$HERTZ" 120 "E_plate / E_cyl = 1e8" "hertz" \
   "Materials/Young's moduli=200, 2e10"
 run_case $G plate-1e12         "$HERTZ" 120 "E_plate / E_cyl = 1e12" "hertz" \
   "Materials/Young's moduli=200, 2e14"
-run_case $G cyl-1e4            "$HERTZ" 120 "E_cyl / E_plate = 1e4, plate refined like the cylinder (6 rounds)" "hertz-approx" \
+run_case $G cyl-1e4            "$HERTZ" 120 "E_cyl / E_plate = 1e4, plate refined like the cylinder (6 rounds)" "hertz-approx warn=stiffer" \
   "Materials/Young's moduli=2e6, 200" "Geometry/Hertz cylinder/Plate contact refinements=6"
-run_case $G cyl-1e8            "$HERTZ" 120 "E_cyl / E_plate = 1e8, plate refined (6 rounds)" "hertz-approx" \
+run_case $G cyl-1e8            "$HERTZ" 120 "E_cyl / E_plate = 1e8, plate refined (6 rounds)" "hertz-approx warn=stiffer" \
   "Materials/Young's moduli=2e10, 200" "Geometry/Hertz cylinder/Plate contact refinements=6"
-run_case $G cyl-1e12           "$HERTZ" 120 "E_cyl / E_plate = 1e12, plate refined (6 rounds)" "hertz-approx" \
+run_case $G cyl-1e12           "$HERTZ" 120 "E_cyl / E_plate = 1e12, plate refined (6 rounds)" "hertz-approx warn=stiffer" \
   "Materials/Young's moduli=2e14, 200" "Geometry/Hertz cylinder/Plate contact refinements=6"
-run_case $G cyl-1e12-1step     "$HERTZ" 120 "E_cyl / E_plate = 1e12, plate refined, half the load (t = 0.5) in one step" "hertz-approx" \
+run_case $G cyl-1e12-1step     "$HERTZ" 120 "E_cyl / E_plate = 1e12, plate refined, half the load (t = 0.5) in one step" "hertz-approx warn=stiffer" \
   "Materials/Young's moduli=2e14, 200" "Geometry/Hertz cylinder/Plate contact refinements=6" \
   "Load stepping/End time=0.5" "Load stepping/Number of load steps=1"
-run_case $G cyl-1e4-coarse     "$HERTZ" 120 "E_cyl / E_plate = 1e4 on the default mesh (soft plate coarse: 3 rounds)" "hertz-approx" \
+run_case $G cyl-1e4-coarse     "$HERTZ" 120 "E_cyl / E_plate = 1e4 on the default mesh (soft plate coarse: 3 rounds); the step must grow back after splits" "hertz-approx warn=stiffer" \
   "Materials/Young's moduli=2e6, 200"
 run_case $G cyl-1e8-swapped    "$HERTZ" 120 "E_cyl / E_plate = 1e8, soft plate made the slave (Pairs = 4: 3), plate refined" "hertz-approx" \
   "Materials/Young's moduli=2e10, 200" "Geometry/Hertz cylinder/Plate contact refinements=6" "Contact/Pairs=4: 3"
+run_case $G cyl-1e12-swapped   "$HERTZ" 120 "E_cyl / E_plate = 1e12, soft plate made the slave (Pairs = 4: 3), plate refined" "hertz-approx" \
+  "Materials/Young's moduli=2e14, 200" "Geometry/Hertz cylinder/Plate contact refinements=6" "Contact/Pairs=4: 3"
 
-# --- 2. Near-incompressible bodies, Q1 and Q2 -----------------------------
+# --- 2. Near-incompressible bodies, Q1 and Q2, standard and B-bar ----------
 # Both bodies get the same nu; the plate stays rigid (E = 2e12), so Hertz
-# applies with E* = E_cyl / (1 - nu^2).
+# applies with E* = E_cyl / (1 - nu^2). The standard (displacement) element
+# locks; since 539de7a the program warns beyond nu = 0.49 (Q1) / 0.499 (Q2)
+# ("lock volumetrically"), and Finite element/Volumetric strain = B-bar
+# removes the locking. Each nu is run with both, side by side.
 G=incompressible
 for deg in 1 2; do
-  for nu in 0.3 0.45 0.49 0.499 0.4999; do
-    run_case $G "Q$deg-nu$nu" "$HERTZ" 180 "Q$deg, nu = $nu for both bodies" "hertz" \
+  if (( deg == 1 )); then lock_nu=0.49; else lock_nu=0.499; fi
+  for nu in 0.3 0.45 0.49 0.499 0.4999 0.49999; do
+    exp_std="hertz"
+    if awk -v a="$nu" -v b="$lock_nu" 'BEGIN{exit !(a > b)}'; then
+      exp_std="hertz warn=lock volumetrically"
+    fi
+    run_case $G "Q$deg-nu$nu" "$HERTZ" 180 "Q$deg, nu = $nu for both bodies, standard strain" "$exp_std" \
       "Finite element/Degree=$deg" "Materials/Poisson's ratios=$nu, $nu"
+    [[ $nu == 0.3 ]] && continue
+    run_case $G "Q$deg-bbar-nu$nu" "$HERTZ" 180 "Q$deg, nu = $nu for both bodies, B-bar" "hertz" \
+      "Finite element/Degree=$deg" "Materials/Poisson's ratios=$nu, $nu" "Finite element/Volumetric strain=B-bar"
   done
 done
-# Does the error at nu = 0.4999 go away with the mesh? (locking: slowly)
+# Does the error of the standard element at nu = 0.4999 go away with the
+# mesh? (locking: slowly)
 for deg in 1 2; do
-  run_case $G "Q$deg-nu0.4999-fine" "$HERTZ" 240 "Q$deg, nu = 0.4999, finer mesh (Cylinder refinements 3, Contact refinements 7)" "hertz" \
+  run_case $G "Q$deg-nu0.4999-fine" "$HERTZ" 240 "Q$deg, nu = 0.4999, standard strain, finer mesh (Cylinder refinements 3, Contact refinements 7)" "hertz warn=lock volumetrically" \
     "Finite element/Degree=$deg" "Materials/Poisson's ratios=0.4999, 0.4999" \
     "Geometry/Hertz cylinder/Cylinder refinements=3" "Geometry/Hertz cylinder/Contact refinements=7"
 done
@@ -281,9 +306,9 @@ run_case $G hertz-distort-0.1   "$HERTZ" 120 "Hertz, Distortion = 0.1" "hertz" "
 run_case $G hertz-distort-0.3   "$HERTZ" 120 "Hertz, Distortion = 0.3" "hertz" "Geometry/Distortion=0.3"
 run_case $G hertz-distort-0.3-r7 "$HERTZ" 120 "Hertz, Distortion = 0.3, one more contact refinement (7)" "hertz" \
   "Geometry/Distortion=0.3" "Geometry/Hertz cylinder/Contact refinements=7"
-run_case $G hertz-distort-0.3-Q2 "$HERTZ" 180 "Hertz, Distortion = 0.3, Q2" "hertz" \
+run_case $G hertz-distort-0.3-Q2 "$HERTZ" 180 "Hertz, Distortion = 0.3, Q2 (exit 1 before 539de7a)" "hertz" \
   "Geometry/Distortion=0.3" "Finite element/Degree=2"
-run_case $G hertz-distort-0.05-Q2 "$HERTZ" 60 "Hertz, Distortion = 0.05, Q2" "hertz" \
+run_case $G hertz-distort-0.05-Q2 "$HERTZ" 60 "Hertz, Distortion = 0.05, Q2 (exit 1 before 539de7a)" "hertz" \
   "Geometry/Distortion=0.05" "Finite element/Degree=2"
 run_case $G blocks-distort-0.3  "$PATCH" 30 "patch test (p = 2), Distortion = 0.3" "p=2" "Geometry/Distortion=0.3"
 run_case $G blocks-distort-0.3-Q2 "$PATCH" 30 "patch test, Distortion = 0.3, Q2" "p=2" \
@@ -297,22 +322,34 @@ run_case $G blocks-20-on-2-distort "$PATCH" 30 "patch test, 20 on 2, Distortion 
 run_case $G gap-2-on-20         "$GAP" 30 "closing gap, slave 2 x 2 on master 20 x 20" "p=0.666667" \
   "Geometry/Contact blocks/Upper cells=2" "Geometry/Contact blocks/Lower cells=20"
 
-# --- 7. Rigid-body mode left free by the Hertz scene --------------------------
+# --- 7. Rigid-body rotation of the Hertz half-disc ---------------------------
 # The top of the half-disc is fixed in x only and passes through the disc
 # centre: a rotation about the centre moves the top only in y and the arc only
-# tangentially, which frictionless contact does not resist.
+# tangentially, which frictionless contact does not resist. Since 539de7a
+# prm/hertz.prm holds u_x = 0 at the lowest point of the arc (Boundary
+# conditions/Fixed points = 1 @ 0, 1: x), which blocks it; the *-nofix cases
+# remove that line to show the mechanism and the large-displacement warning.
 G=mechanism
-run_case $G hertz-asym-load "$HERTZ" 60 "Hertz with a 1 % slope in the top pressure, p = 0.2 t (1 + 0.01 x): a moment about the disc centre that nothing resists" "diag=singular" \
+run_case $G hertz-asym-load "$HERTZ" 60 "Hertz with a 1 % slope in the top pressure, p = 0.2 t (1 + 0.01 x): the moment about the disc centre goes to the x-supports (top and fixed point)" "hertz" \
   "Boundary conditions/Pressure=1: 0.2*t*(1+0.01*x)"
-run_case $G hertz-asym-load-1step "$HERTZ" 60 "same load, first step only (t = 0.5005, one step)" "diag=singular" \
+run_case $G hertz-asym-load-1step "$HERTZ" 60 "same load, first step only (t = 0.5005, one step)" "hertz" \
   "Boundary conditions/Pressure=1: 0.2*t*(1+0.01*x)" "Load stepping/End time=0.5005" "Load stepping/Number of load steps=1"
+run_case $G hertz-asym-load-nofix "$HERTZ" 60 "same load without the fixed point (rotation free): the disc turns away; the large-displacement warning must name the cause" "diag=no contact warn=largest displacement" \
+  "Boundary conditions/Pressure=1: 0.2*t*(1+0.01*x)" "Boundary conditions/Fixed points="
+run_case $G hertz-asym-load-nofix-1step "$HERTZ" 60 "same without the fixed point, first step only: converges on a rotated disc; must warn" "hertz warn=largest displacement" \
+  "Boundary conditions/Pressure=1: 0.2*t*(1+0.01*x)" "Boundary conditions/Fixed points=" \
+  "Load stepping/End time=0.5005" "Load stepping/Number of load steps=1"
+run_case $G hertz-distort-0.3-nofix "$HERTZ" 60 "Hertz, Distortion = 0.3, without the fixed point (the distortion alone turned the disc by 0.0083 rad before 539de7a)" "hertz" \
+  "Geometry/Distortion=0.3" "Boundary conditions/Fixed points="
 run_case $G hertz-distort-0.3-p1e-6 "$HERTZ" 60 "Hertz, Distortion = 0.3, p = 1e-6 t" "hertz-approx" \
   "Geometry/Distortion=0.3" "Boundary conditions/Pressure=1: 1e-6*t"
-run_case $G hertz-topdisp "$HERTZ" 60 "Hertz loaded by u_y = -0.03 t on the top instead of the pressure (rotation blocked), regular mesh" "centred" \
+run_case $G hertz-topdisp "$HERTZ" 60 "Hertz loaded by u_y = -0.03 t on the top instead of the pressure, regular mesh, no analytical solution" "centred" \
   "Boundary conditions/Pressure=" "Boundary conditions/Prescribed displacement=1: y = -0.03*t" "Analytical solution/Type=none"
 run_case $G hertz-topdisp-distort-0.3 "$HERTZ" 60 "same, Distortion = 0.3" "centred" \
   "Boundary conditions/Pressure=" "Boundary conditions/Prescribed displacement=1: y = -0.03*t" "Analytical solution/Type=none" \
   "Geometry/Distortion=0.3"
+run_case $G hertz-topdisp-hertz "$HERTZ" 60 "u_y = -0.03 t on the top, compared with Hertz (reference from the transmitted contact force since 539de7a)" "hertz centred" \
+  "Boundary conditions/Pressure=" "Boundary conditions/Prescribed displacement=1: y = -0.03*t"
 
 # --- 8. Penalty / scale factor: Contact/Stiffness factor 1e-6 ... 1e6 ------
 G=penalty
@@ -327,6 +364,23 @@ for f in 1e-6 1e6; do
   run_case $G "penetration-k$f" "$PEN" 30 "initial penetration, Stiffness factor = $f" "p=1" \
     "Contact/Stiffness factor=$f"
 done
+
+# --- 9. Newton damping and step growth -------------------------------------
+# Newton/Damping = alpha < 1 (since 539de7a) makes the iteration linear: it
+# stops as soon as the residual ratio is below the tolerance (1e-4), so the
+# result is only as accurate as that tolerance, not exact to round-off. The
+# reaction balance is measured against the total reactions, not against the
+# step's initial residual, so tol=1e-3 (ten times the Newton tolerance);
+# with the tolerances tightened to 1e-8 it must be exact again. The step growth after splits is
+# shown by stiffness/cyl-1e4-coarse (column "splits").
+G=newton
+run_case $G hertz-damped "$HERTZ" 120 "Hertz, Damping = 0.5, Maximum iterations = 40" "hertz tol=1e-3" \
+  "Newton/Damping=0.5" "Newton/Maximum iterations=40"
+run_case $G gap-damped "$GAP" 30 "closing gap, Damping = 0.5, Maximum iterations = 40" "p=0.666667 tol=1e-3" \
+  "Newton/Damping=0.5" "Newton/Maximum iterations=40"
+run_case $G gap-damped-tight "$GAP" 30 "closing gap, Damping = 0.5, Maximum iterations = 60, Newton tolerances 1e-8 (tests/scenes/initial_gap_damped_01)" "p=0.666667" \
+  "Newton/Damping=0.5" "Newton/Maximum iterations=60" \
+  "Newton/Displacement relative tolerance=1e-8" "Newton/Multiplier relative tolerance=1e-8"
 
 }
 
