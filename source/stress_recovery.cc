@@ -421,8 +421,14 @@ namespace contact_fem
     void
     SPREstimator<dim>::sample_stresses()
     {
-      // Superconvergent sampling points: the p-point Gauss rule per direction.
-      const QGauss<dim>                quadrature(degree);
+      // Sampling points: for Q1 the cell centre, the superconvergent point.
+      // For Q2 the (p + 1)-point rule rather than the p-point one, whose
+      // superconvergence needs uniform straight-sided cells: on the graded,
+      // curved, hanging-node meshes of the adaptive loop the 3 x 3 points
+      // give better-determined patch fits (also on boundary patches) and
+      // measured effectivities of 1.1-1.2 instead of 1.4-1.8 on the Hertz
+      // scene (doc/convergence.md).
+      const QGauss<dim>                quadrature(degree == 1 ? 1 : degree + 1);
       FEValues<dim>                    fe_values(mapping,
                               dof_handler.get_fe(),
                               quadrature,

@@ -45,8 +45,9 @@ namespace contact_fem
    *
    * Outline (details in source/stress_recovery.cc):
    *
-   * - sigma_h = C(material id) : eps(u_h) is sampled at the Gauss points of the
-   *   p-point rule per direction (p = displacement degree) of every cell.
+   * - sigma_h = C(material id) : eps(u_h) is sampled at the Gauss points of
+   *   every cell: the centre for p = 1, the (p + 1)-point rule per
+   *   direction for p >= 2 (p = displacement degree).
    * - For every vertex and every body (material id) whose cells touch the
    *   vertex, the patch is the set of active cells of that body that have the
    *   vertex as one of their vertices. Each stress component is fitted there by
