@@ -436,10 +436,12 @@ namespace contact_fem
                       "if known (e.g. from an overkill or extrapolated run: "
                       "summary.json, cycles[].potential_energy); empty if not. "
                       "Then every cycle reports the energy-norm error "
-                      "sqrt(2 (Pi_h - Pi_ref)) and the effectivity index eta / "
-                      "error of the estimate. sqrt(2 (Pi_h - Pi_ref)) equals the "
-                      "energy-norm error without contact; with contact it exceeds "
-                      "it by the work of the exact pressure on the discrete gap.");
+                      "sqrt(2 |Pi_h - Pi_ref|) and the effectivity index eta / "
+                      "error of the estimate. Without contact this is the "
+                      "energy-norm error; with contact it exceeds it by the work "
+                      "of the exact pressure on the discrete gap. Pi_h < Pi_ref "
+                      "(a discretisation softer than the exact problem, or an "
+                      "inaccurate reference) is warned about.");
     prm.leave_subsection();
   }
 
