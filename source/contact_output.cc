@@ -207,9 +207,8 @@ namespace contact_fem
     // h^(dim-2), no force acts (bodies pulled apart, rigid motion): the
     // forces are round-off and there is no balance to check.
     const Tensor<1, dim> load = applied_load(current_time);
-    double youngs_min = std::numeric_limits<double>::max(), h_max = 0.;
-    for (const auto &[id, constants] : materials.bodies)
-      youngs_min = std::min(youngs_min, constants.youngs_modulus);
+    const double youngs_min = materials.youngs_modulus_range().first;
+    double       h_max      = 0.;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         h_max = std::max(h_max, cell->diameter());

@@ -576,12 +576,7 @@ namespace contact_fem
 
     // Stiffness ratios beyond ~1e10 leave the direct solve with too few
     // digits (measured: 1e12 fails with either body as the slave).
-    double youngs_min = std::numeric_limits<double>::max(), youngs_max = 0.;
-    for (const auto &[id, constants] : materials.bodies)
-      {
-        youngs_min = std::min(youngs_min, constants.youngs_modulus);
-        youngs_max = std::max(youngs_max, constants.youngs_modulus);
-      }
+    const auto [youngs_min, youngs_max] = materials.youngs_modulus_range();
     const std::string contrast_hint =
       youngs_max > 1e10 * youngs_min ?
         " The stiffness ratio between the bodies, " + scientific(youngs_max / youngs_min, 1) +

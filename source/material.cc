@@ -2,7 +2,9 @@
 
 #include <contact_fem/material.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace contact_fem
@@ -104,6 +106,19 @@ namespace contact_fem
                            std::to_string(id) +
                            ", which 'Materials/Material ids' does not list."));
     return it->second;
+  }
+
+  template <int dim>
+  std::pair<double, double>
+  Materials<dim>::youngs_modulus_range() const
+  {
+    std::pair<double, double> range(std::numeric_limits<double>::max(), 0.);
+    for (const auto &[id, constants] : bodies)
+      {
+        range.first  = std::min(range.first, constants.youngs_modulus);
+        range.second = std::max(range.second, constants.youngs_modulus);
+      }
+    return range;
   }
 
   template <int dim>

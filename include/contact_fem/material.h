@@ -8,6 +8,7 @@
 
 #include <map>
 #include <string>
+#include <utility>
 
 namespace contact_fem
 {
@@ -52,6 +53,10 @@ namespace contact_fem
 
     /// The material ids that have constants.
     std::map<types::material_id, ElasticConstants> bodies;
+
+    /// Smallest and largest Young's modulus of the bodies.
+    std::pair<double, double>
+    youngs_modulus_range() const;
 
     /// sigma = C : eps for material @p id.
     SymmetricTensor<2, dim>
