@@ -135,7 +135,8 @@ namespace contact_fem
     if (!contact)
       return result;
     unsigned int   n_slave = 0, n_active = 0;
-    double         p_max = 0., size_sum = 0.;
+    double         p_max = 0., p_min = std::numeric_limits<double>::max(), size_sum = 0.;
+    double         gap_max = 0.;
     double         x_min = std::numeric_limits<double>::max(), x_max = -x_min;
     for (const auto &node : interface->nodes)
       n_slave += node.slave;
@@ -144,6 +145,9 @@ namespace contact_fem
         {
           ++n_active;
           p_max = std::max(p_max, contact->pressure[s.node]);
+          p_min = std::min(p_min, contact->pressure[s.node]);
+          gap_max =
+            std::max(gap_max, std::abs(interface->gap(s, interface_displacement)) / s.size);
           size_sum += s.size;
           const double x = interface->nodes[s.node].reference[0] +
                            interface->displacement(s.node, interface_displacement)[0];
@@ -154,6 +158,8 @@ namespace contact_fem
       .set("active_slave_nodes", n_active)
       .set("contact_half_width", n_active > 0 ? 0.5 * (x_max - x_min) : 0.)
       .set("max_contact_pressure", p_max)
+      .set("min_active_contact_pressure", n_active > 0 ? p_min : 0.)
+      .set("max_gap_over_h_on_active_nodes", gap_max)
       .set("total_contact_force", total_contact_force(*interface, *contact).norm())
       .set("slave_element_size", n_active > 0 ? size_sum / n_active : 0.)
       .set("penalty", contact->penalty.empty() ? 0. : contact->penalty[0])
@@ -300,26 +306,22 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactProblem<dim>::print_results(const Json &reaction, const Json &hertz) const
+  ContactProblem<dim>::print_results(const Json &contact_json,
+                                     const Json &reaction,
+                                     const Json &hertz) const
   {
     pcout << "  Results at t = " << current_time << ":" << std::endl
           << std::setprecision(6);
-    const Tensor<1, dim> load = applied_load(current_time);
     if (contact)
       {
-        unsigned int n_slave = 0, n_active = 0;
-        double       p_min = std::numeric_limits<double>::max(), p_max = 0., gap_max = 0.;
-        for (const auto &node : interface->nodes)
-          n_slave += node.slave;
-        for (const auto &s : interface->slave_nodes)
-          if (s.paired && contact->active[s.node])
-            {
-              ++n_active;
-              p_min   = std::min(p_min, contact->pressure[s.node]);
-              p_max   = std::max(p_max, contact->pressure[s.node]);
-              gap_max = std::max(gap_max,
-                                 std::abs(interface->gap(s, interface_displacement)) / s.size);
-            }
+        // Printed from contact_results(), which computed them.
+        const auto n_slave =
+          static_cast<unsigned int>(contact_json["slave_nodes"].number_value());
+        const auto n_active =
+          static_cast<unsigned int>(contact_json["active_slave_nodes"].number_value());
+        const double p_max   = contact_json["max_contact_pressure"].number_value();
+        const double p_min   = contact_json["min_active_contact_pressure"].number_value();
+        const double gap_max = contact_json["max_gap_over_h_on_active_nodes"].number_value();
         pcout << "    slave nodes:                  " << n_slave << std::endl
               << "    active slave nodes:           " << n_active << std::endl;
         if (n_active > 0)
@@ -329,7 +331,8 @@ namespace contact_fem
                 << std::endl
                 << "    max |gap|/h on active nodes:  " << value_or_ok(gap_max, 1e-10) << std::endl;
       }
-    pcout << "    applied load:                 " << load.norm() << std::endl
+    pcout << "    applied load:                 " << reaction["applied_load"].number_value()
+          << std::endl
           << "    support reaction:             " << reaction["support_reaction"].number_value()
           << std::endl
           << "    relative imbalance:           "
@@ -557,7 +560,8 @@ namespace contact_fem
                                                         const Json &) const;     \
   template void ContactProblem<dim>::write_pressure_profile() const;             \
   template void ContactProblem<dim>::write_convergence_row(const Json &, const double); \
-  template void ContactProblem<dim>::print_results(const Json &, const Json &) const; \
+  template void ContactProblem<dim>::print_results(const Json &, const Json &,           \
+                                                   const Json &) const;                \
   template void ContactProblem<dim>::write_vtu(const unsigned int, const double); \
   template void ContactProblem<dim>::write_error_indicators() const;             \
   template void ContactProblem<dim>::write_summary(const Json &,                  \

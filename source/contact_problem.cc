@@ -1087,7 +1087,7 @@ namespace contact_fem
     // measures the energy-norm error.
     const double potential_energy = strain_energy - external_work;
     cycle_record.set("strain_energy", strain_energy).set("potential_energy", potential_energy);
-    print_results(reaction_json, hertz_json);
+    print_results(contact_json, reaction_json, hertz_json);
     double energy_error = std::numeric_limits<double>::quiet_NaN();
     if (std::isfinite(analytical.reference_potential_energy))
       {

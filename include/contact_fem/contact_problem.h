@@ -157,7 +157,7 @@ namespace contact_fem
     write_pressure_profile() const;
     /// Prints the contact results and the balance of the last load step.
     void
-    print_results(const Json &reaction, const Json &hertz) const;
+    print_results(const Json &contact_json, const Json &reaction, const Json &hertz) const;
     void
     write_summary(const Json &cycles, const double wall_time, const std::string &status) const;
     Tensor<1, dim>
