@@ -5,6 +5,7 @@
 
 #include <contact_fem/contact_problem.h>
 #include <contact_fem/format.h>
+#include <contact_fem/mortar.h>
 #include <contact_fem/refinement.h>
 #include <contact_fem/stress_recovery.h>
 
@@ -22,8 +23,10 @@ namespace contact_fem
                       Patterns::Selection("spr contact|spr|kelly|global"),
                       "Refinement indicator: 'spr contact' = superconvergent "
                       "patch recovery of the stress whose patches at active "
-                      "slave nodes also fit the contact traction (normal = "
-                      "-pressure, tangential = 0); 'spr' = the same without "
+                      "slave nodes also fit the contact traction (the N_j-"
+                      "weighted mean of sigma* n over the node's slave faces "
+                      "equals its contact force, which acts along the deformed "
+                      "normal, per unit reference length); 'spr' = the same without "
                       "contact terms; 'kelly' = gradient jumps; 'global' = "
                       "uniform refinement (the SPR-contact estimate is still "
                       "reported).");
@@ -46,7 +49,10 @@ namespace contact_fem
                       "patches of contact nodes, relative to the patch "
                       "least-squares scale.");
     prm.declare_entry("SPR tangential penalty", "1e4", Patterns::Double(0.),
-                      "Weight of the zero tangential traction condition.");
+                      "Weight of the tangential-traction condition (relative "
+                      "to the node's normal; frictionless contact forces act "
+                      "along the deformed normal, so on the reference "
+                      "configuration this traction is small but not zero).");
     prm.leave_subsection();
   }
 
@@ -69,6 +75,43 @@ namespace contact_fem
                            "not exceed 1."));
   }
 
+  namespace
+  {
+    /// Per slave node of @p interface: the Gauss points of its slave faces
+    /// in the reference configuration, weighted by the node's shape function
+    /// (weights sum to int N_j ds).
+    template <int dim>
+    std::map<unsigned int, std::vector<TractionSample<dim>>>
+    slave_support_samples(const ContactInterface<dim> &interface)
+    {
+      std::map<unsigned int, std::vector<TractionSample<dim>>> samples;
+      if constexpr (dim == 2)
+        {
+          const unsigned int p = interface.degree;
+          const QGauss<1>    quadrature(p + 2);
+          for (const auto &face : interface.faces)
+            if (face.slave)
+              {
+                Mortar::LineFace line;
+                for (const unsigned int n : face.nodes)
+                  line.nodes.push_back(interface.nodes[n].reference);
+                for (unsigned int q = 0; q < quadrature.size(); ++q)
+                  {
+                    const double xi = 2. * quadrature.point(q)[0] - 1.;
+                    const double ds = 2. * quadrature.weight(q) * line.tangent(xi).norm();
+                    const Tensor<1, 2> n = Mortar::face_normal(line, xi, face.orientation);
+                    for (unsigned int k = 0; k < face.nodes.size(); ++k)
+                      samples[face.nodes[k]].push_back(
+                        {line.point(xi), n, ds * Mortar::shape_value(p, k, xi)});
+                  }
+              }
+        }
+      else
+        AssertThrow(false, ExcNotImplemented());
+      return samples;
+    }
+  } // namespace
+
   template <int dim>
   void
   ContactProblem<dim>::estimate_error(Json &cycle_record)
@@ -77,14 +120,30 @@ namespace contact_fem
     const std::string &type = refinement.estimator;
     indicators.reinit(triangulation.n_active_cells());
 
-    // The contact tractions of the active slave nodes, in the reference
-    // configuration where the stresses are computed.
+    // The contact tractions of the active slave nodes, imposed as the
+    // N_j-weighted mean over the node's slave faces (which is what a dual
+    // multiplier is). The stresses live on the reference configuration,
+    // while the contact force -lambda_j D_j n_j acts along the normal of the
+    // deformed surface and D_j is measured there: the mean traction is that
+    // force over the reference int N_j ds. (Splitting it along the reference
+    // normal instead would be off by the surface rotation, ~ a / R in Hertz,
+    // which does not shrink under refinement.)
     std::vector<ContactNodeTraction<dim>> tractions;
     if (contact)
-      for (const auto &s : interface->slave_nodes)
-        if (s.paired && contact->active[s.node])
-          tractions.push_back({interface->nodes[s.node].reference, s.normal,
-                               contact->pressure[s.node]});
+      {
+        const auto support = slave_support_samples(*interface);
+        for (const auto &s : interface->slave_nodes)
+          if (s.paired && contact->active[s.node])
+            {
+              const auto &samples   = support.at(s.node);
+              double      reference = 0.;
+              for (const auto &q : samples)
+                reference += q.weight;
+              const double force = contact->pressure[s.node] * s.D;
+              tractions.push_back({interface->nodes[s.node].reference, s.normal,
+                                   -force / reference * s.normal, samples});
+            }
+      }
 
     typename StressRecovery<dim>::Settings settings;
     settings.contact_terms      = type != "spr";

@@ -634,15 +634,39 @@ namespace contact_fem
             scale += A(k, k);
           scale /= md;
 
+          // One penalty row sum_c sum_k a_ck c_ck = target, where a_ck is the
+          // weighted mean over the samples of (component weight of c at the
+          // sample's normal) * phi_k(sample).
           Vector<double> g(N);
-          const auto add_row = [&](const std::array<double, n_stress<dim>> &component_weights,
-                                   const double                            target,
-                                   const double                            weight) {
+          const auto add_row = [&](const ContactNodeTraction<dim> &node,
+                                   const auto                     &component_weights,
+                                   const double                    target,
+                                   const double                    weight) {
             if (weight == 0.)
               return;
-            for (unsigned int c = 0; c < ns; ++c)
-              for (unsigned int k = 0; k < md; ++k)
-                g(c * md + k) = component_weights[c] * phi[k];
+            g = 0.;
+            const auto add_point = [&](const Point<dim>     &x,
+                                       const Tensor<1, dim> &n,
+                                       const double          w) {
+              basis.values(Point<dim>((x - fit.centre) / fit.h), md, phi);
+              const std::array<double, n_stress<dim>> cw = component_weights(n);
+              for (unsigned int c = 0; c < ns; ++c)
+                for (unsigned int k = 0; k < md; ++k)
+                  g(c * md + k) += w * cw[c] * phi[k];
+            };
+            if (node.samples.empty())
+              add_point(node.location, node.normal / node.normal.norm(), 1.);
+            else
+              {
+                double total = 0.;
+                for (const TractionSample<dim> &q : node.samples)
+                  total += q.weight;
+                AssertThrow(std::abs(total) > 0.,
+                            ExcMessage("StressRecovery: the traction samples of a "
+                                       "contact node have zero total weight."));
+                for (const TractionSample<dim> &q : node.samples)
+                  add_point(q.point, q.normal / q.normal.norm(), q.weight / total);
+              }
             for (unsigned int i = 0; i < N; ++i)
               {
                 if (g(i) == 0.)
@@ -653,32 +677,29 @@ namespace contact_fem
               }
           };
 
+          // Weights of e . sigma . n in the unrolled symmetric components.
+          const auto projection_weights = [](const Tensor<1, dim> &e) {
+            return [e](const Tensor<1, dim> &n) {
+              std::array<double, n_stress<dim>> w;
+              for (unsigned int c = 0; c < n_stress<dim>; ++c)
+                {
+                  const auto ij = SymmetricTensor<2, dim>::unrolled_to_component_indices(c);
+                  w[c]          = (ij[0] == ij[1] ? e[ij[0]] * n[ij[0]] :
+                                           e[ij[0]] * n[ij[1]] + e[ij[1]] * n[ij[0]]);
+                }
+              return w;
+            };
+          };
+
           for (const unsigned int j : nodes)
             {
               const ContactNodeTraction<dim> &node = contact_nodes[j];
               const Tensor<1, dim>            n    = node.normal / node.normal.norm();
-              basis.values(Point<dim>((node.location - fit.centre) / fit.h), md, phi);
-
-              // n . sigma . n = -p
-              std::array<double, n_stress<dim>> w;
-              for (unsigned int c = 0; c < ns; ++c)
-                {
-                  const auto ij = SymmetricTensor<2, dim>::unrolled_to_component_indices(c);
-                  w[c] = (ij[0] == ij[1] ? n[ij[0]] * n[ij[0]] : 2. * n[ij[0]] * n[ij[1]]);
-                }
-              add_row(w, -node.pressure, settings.penalty_normal * scale);
-
-              // t . sigma . n = 0 for every tangent t
+              add_row(node, projection_weights(n), n * node.traction,
+                      settings.penalty_normal * scale);
               for (const Tensor<1, dim> &t : tangents<dim>(n))
-                {
-                  for (unsigned int c = 0; c < ns; ++c)
-                    {
-                      const auto ij = SymmetricTensor<2, dim>::unrolled_to_component_indices(c);
-                      w[c]          = (ij[0] == ij[1] ? t[ij[0]] * n[ij[0]] :
-                                               t[ij[0]] * n[ij[1]] + t[ij[1]] * n[ij[0]]);
-                    }
-                  add_row(w, 0., settings.penalty_tangential * scale);
-                }
+                add_row(node, projection_weights(t), t * node.traction,
+                        settings.penalty_tangential * scale);
             }
         }
 

@@ -24,20 +24,47 @@ namespace contact_fem
 {
   using namespace dealii;
 
-  /// Contact traction known at one slave node: the recovered stress there
-  /// should satisfy sigma* n = -pressure n.
+  /// A weighted point of the slave surface (see ContactNodeTraction).
+  template <int dim>
+  struct TractionSample
+  {
+    Point<dim>     point;
+    Tensor<1, dim> normal; ///< outward unit normal of the surface there
+    double         weight;
+  };
+
+  /**
+   * Contact traction known at one slave node j: the traction vector
+   * sigma* n of the recovered stress on the slave surface.
+   *
+   * A dual-mortar multiplier is not a point value of the pressure: the
+   * contact force of node j is int N_j p ds, so lambda_j is the N_j-weighted
+   * mean of the pressure over the support of N_j, which differs from the
+   * point value by O(h^2). Imposing it pointwise would cap the recovery at
+   * that accuracy (below the O(h^3) of degree-2 SPR). So when @p samples
+   * (the quadrature points of the node's slave faces, weights w_q =
+   * quadrature weight * |dx/dxi| * N_j) are given, the condition is imposed
+   * on the same weighted mean:
+   *   sum_q w_q e . sigma*(x_q) . n_q = (e . traction) sum_q w_q
+   * for e = the node's normal and its tangents. Without samples it is
+   * imposed at @p location with n_q = @p normal.
+   */
   template <int dim>
   struct ContactNodeTraction
   {
     /// Position of the slave node (a support point of the displacement
     /// element on the slave surface: a vertex, or for degree 2 also an edge
-    /// midpoint / face centre).
+    /// midpoint / face centre). Decides which patches get the condition.
     Point<dim> location;
     /// Outward unit normal of the slave surface at the node (it is normalized
-    /// again internally).
+    /// again internally); splits the condition into the normal row and the
+    /// tangential rows, which have their own penalties.
     Tensor<1, dim> normal;
-    /// Contact pressure, > 0 in compression.
-    double pressure;
+    /// The (mean) traction vector sigma* n; -p n for a frictionless contact
+    /// pressure p with the normal n of the reference configuration.
+    Tensor<1, dim> traction;
+    /// Weighted points of the support of the node (may be empty).
+    std::vector<TractionSample<dim>> samples = {};
   };
 
   /**
@@ -60,8 +87,10 @@ namespace contact_fem
    *   which is the classical Zienkiewicz-Zhu treatment of boundary nodes.
    * - Contact terms: a contact node that lies on a boundary face of a patch
    *   cell whose outward normal points along the node's normal (i.e. the
-   *   slave side) adds penalty rows (n.sigma*.n + p)^2 and |(I - n n) sigma* n|^2
-   *   to that patch's least-squares functional; the weights are the
+   *   slave side) adds penalty rows (n.(sigma* n - t))^2 and
+   *   |(I - n n)(sigma* n - t)|^2, t = the node's traction (in the
+   *   weighted-mean form of ContactNodeTraction when it has samples), to
+   *   that patch's least-squares functional; the weights are the
    *   dimensionless Settings penalties times the mean diagonal entry of the
    *   patch's least-squares matrix.
    * - The recovered field sigma* is a continuous FE_Q(p) field: the value at a
