@@ -86,7 +86,7 @@ namespace contact_fem
     template <int dim>
     Tensor<1, dim>
     total_contact_force(const ContactInterface<dim> &interface,
-                        const AlmFrictionless<dim>  &contact)
+                        const FrictionlessContact<dim>  &contact)
     {
       Tensor<1, dim> force;
       for (const auto &s : interface.slave_nodes)
@@ -164,6 +164,14 @@ namespace contact_fem
       .set("slave_element_size", n_active > 0 ? size_sum / n_active : 0.)
       .set("penalty", contact->penalty.empty() ? 0. : contact->penalty[0])
       .set("scale_factor", contact->scale.empty() ? 0. : contact->scale[0]);
+    if (contact_parameters.adaptive_penalty)
+      {
+        double largest = 0.;
+        for (const auto &s : interface->slave_nodes)
+          if (s.paired && contact->active[s.node])
+            largest = std::max(largest, contact->node_penalty[s.node]);
+        result.set("largest_adapted_penalty", largest);
+      }
     Json slave_split = Json::array(), master_split = Json::array();
     for (const unsigned int n : interface->slave_faces_per_rank)
       slave_split.push(n);
@@ -350,6 +358,14 @@ namespace contact_fem
                 << "    pressure spread (max-min)/max: " << value_or_ok((p_max - p_min) / p_max, 1e-8)
                 << std::endl
                 << "    max |gap|/h on active nodes:  " << value_or_ok(gap_max, 1e-10) << std::endl;
+        if (contact_parameters.adaptive_penalty)
+          pcout << "    penetration within the allowed " << contact_parameters.penetration_factor
+                << " h: " << (gap_max <= contact_parameters.penetration_factor ? "yes" : "no")
+                << std::endl
+                << "    largest adapted penalty / initial: "
+                << contact_json["largest_adapted_penalty"].number_value() /
+                     contact_json["penalty"].number_value()
+                << std::endl;
       }
     pcout << "    applied load:                 " << reaction["applied_load"].number_value()
           << std::endl

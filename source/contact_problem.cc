@@ -179,7 +179,7 @@ namespace contact_fem
         interface = std::make_unique<ContactInterface<dim>>();
         interface->initialize(mapping, dof_handler, contact_parameters.pairs,
                               dirichlet_constraints, materials, comm);
-        contact = std::make_unique<AlmFrictionless<dim>>(contact_parameters);
+        contact = std::make_unique<FrictionlessContact<dim>>(contact_parameters);
         contact->initialize(*interface);
       }
     // Contact constraints couple slave DoFs to master DoFs anywhere: every
@@ -401,6 +401,8 @@ namespace contact_fem
           for (const auto row : closure)
             dsp.add_entries(row, closure.begin(), closure.end(), true);
         }
+    if (contact && contact_parameters.regularised())
+      contact->add_penalty_sparsity(*interface, candidates, owned_dofs, dsp);
     SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs, comm, writable_dofs);
     system_matrix.reinit(owned_dofs, owned_dofs, dsp, comm);
   }
@@ -438,6 +440,8 @@ namespace contact_fem
           constraints.distribute_local_to_global(cell_matrices[index], load, dofs,
                                                  system_matrix, system_rhs);
         }
+    if (contact && contact_parameters.regularised())
+      contact->assemble_penalty(*interface, constraints, owned_dofs, system_matrix, system_rhs);
     system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
   }
@@ -646,7 +650,7 @@ namespace contact_fem
           }
         compute_residual();
         unsigned int                    changes = 0;
-        typename AlmFrictionless<dim>::Residuals contact_residuals;
+        typename FrictionlessContact<dim>::Residuals contact_residuals;
         if (contact)
           {
             TimerOutput::Scope t(*timer, "Contact: active set");

@@ -276,16 +276,37 @@ namespace contact_fem
                       "finer and softer surface.");
     prm.declare_entry("Formulation",
                       "alm frictionless",
-                      Patterns::Selection("alm frictionless"),
+                      Patterns::Selection("alm frictionless|penalty frictionless"),
                       "Contact formulation: 'alm frictionless' = augmented "
                       "Lagrangian, dual mortar, scalar normal multiplier, "
-                      "semi-smooth Newton.");
+                      "semi-smooth Newton: the gap of an active node is an exact "
+                      "constraint. 'penalty frictionless' = the same mortar gap, "
+                      "regularised: pressure = eps * penetration, so the bodies "
+                      "overlap by pressure / eps (no multipliers, no constraints).");
     prm.declare_entry("Penalty",
                       "auto",
                       Patterns::Anything(),
-                      "Penalty eps of the augmented normal pressure lambda - eps * "
-                      "gap that decides the active set. 'auto' = stiffness factor "
-                      "* min(E/h) over the two sides. Units: stress / length.");
+                      "Penalty eps. 'alm frictionless': of the augmented pressure "
+                      "lambda - eps * gap that decides the active set (it cannot "
+                      "change the converged answer); 'auto' = stiffness factor * "
+                      "min(E/h) over the two sides. 'penalty frictionless': the "
+                      "contact stiffness, pressure = eps * penetration; 'auto' = "
+                      "1e4 * stiffness factor * min(E/h) (penetrations ~1e-4 h * "
+                      "pressure / E), or, with Adaptive penalty, the starting value "
+                      "stiffness factor * min(E/h). Units: stress / length.");
+    prm.declare_entry("Adaptive penalty",
+                      "false",
+                      Patterns::Bool(),
+                      "'penalty frictionless' only: adapt the penalty of every "
+                      "slave node in every Newton iteration from the change of its "
+                      "penetration (Bussetta, Marceau and Ponthot's rule) until "
+                      "each penetration is below Maximum penetration factor * h; a "
+                      "node whose penalty changed counts as an active-set change.");
+    prm.declare_entry("Maximum penetration factor",
+                      "1e-3",
+                      Patterns::Double(0.),
+                      "Adaptive penalty: the allowed penetration of a slave node, "
+                      "as a fraction of its element size h.");
     prm.declare_entry("Scale factor",
                       "auto",
                       Patterns::Anything(),
@@ -370,7 +391,16 @@ namespace contact_fem
     active_check_factor = prm.get_double("Active check factor");
     search_factor       = prm.get_double("Search factor");
     allow_loss_of_contact = prm.get_bool("Allow loss of contact");
+    adaptive_penalty      = prm.get_bool("Adaptive penalty");
+    penetration_factor    = prm.get_double("Maximum penetration factor");
     prm.leave_subsection();
+    AssertThrow(!adaptive_penalty || regularised(),
+                ExcMessage("Contact/Adaptive penalty = true needs Contact/Formulation = "
+                           "penalty frictionless: in 'alm frictionless' the gap of an "
+                           "active node is an exact constraint and the penalty only "
+                           "scales the active-set test, so adapting it changes nothing."));
+    AssertThrow(!adaptive_penalty || penetration_factor > 0.,
+                ExcMessage("Contact/Maximum penetration factor: expected a value > 0."));
     AssertThrow(stiffness_factor > 0.,
                 ExcMessage("Contact/Stiffness factor: expected a value > 0."));
     AssertThrow(search_factor > 0.,

@@ -35,6 +35,8 @@ GROUPS = [
     ("mechanism", "Rotation of the Hertz half-disc about its centre (held by Boundary conditions/Fixed "
                   "points in prm/hertz.prm; the *-nofix cases remove it)"),
     ("penalty", "Automatic penalty and scale factor times 1e-6 ... 1e6 (Contact/Stiffness factor)"),
+    ("regularised", "Penalty formulation (Contact/Formulation = penalty frictionless), fixed "
+                    "and adaptive penalty (Contact/Adaptive penalty)"),
     ("newton", "Newton damping (Newton/Damping)"),
 ]
 

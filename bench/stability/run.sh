@@ -365,6 +365,32 @@ for f in 1e-6 1e6; do
     "Contact/Stiffness factor=$f"
 done
 
+# --- 8b. Penalty formulation, fixed and adaptive penalty -------------------
+# Formulation = penalty frictionless: the bodies overlap by pressure / eps.
+# The fixed automatic penalty is 1e4 E/h; the adaptive one starts at E/h and
+# must end with every penetration below Maximum penetration factor * h.
+G=regularised
+PF="Contact/Formulation=penalty frictionless"
+AP="Contact/Adaptive penalty=true"
+run_case $G hertz-penalty "$HERTZ" 120 "Hertz, penalty formulation, automatic penalty 1e4 E/h" "hertz" "$PF"
+run_case $G hertz-adaptive "$HERTZ" 120 "Hertz, adaptive penalty (limit 1e-3 h)" "hertz" "$PF" "$AP" \
+  "Newton/Maximum iterations=40"
+run_case $G hertz-adaptive-1e-5 "$HERTZ" 120 "Hertz, adaptive penalty, limit 1e-5 h" "hertz" "$PF" "$AP" \
+  "Contact/Maximum penetration factor=1e-5" "Newton/Maximum iterations=40"
+run_case $G plate-1e8-adaptive "$HERTZ" 120 "E_plate / E_cyl = 1e8, adaptive penalty" "hertz" "$PF" "$AP" \
+  "Materials/Young's moduli=200, 2e10" "Newton/Maximum iterations=40"
+run_case $G cyl-1e8-adaptive "$HERTZ" 120 "E_cyl / E_plate = 1e8, plate refined (6 rounds), adaptive penalty" "hertz-approx warn=stiffer" \
+  "$PF" "$AP" "Materials/Young's moduli=2e10, 200" "Geometry/Hertz cylinder/Plate contact refinements=6" \
+  "Newton/Maximum iterations=40"
+run_case $G x1e-8-adaptive "$HERTZ" 120 "p = 1e-8 x 0.2 t, adaptive penalty" "hertz-approx" "$PF" "$AP" \
+  "Boundary conditions/Pressure=1: 1e-8*0.2*t" "Newton/Maximum iterations=40"
+run_case $G x1e1-adaptive "$HERTZ" 120 "p = 10 x 0.2 t, graded zone 1.5, 4 steps, adaptive penalty" "hertz" "$PF" "$AP" \
+  "Boundary conditions/Pressure=1: 10*0.2*t" "Geometry/Hertz cylinder/Refinement half width=1.5" \
+  "Load stepping/Number of load steps=4" "Newton/Maximum iterations=40"
+run_case $G gap-penalty "$GAP" 30 "closing gap, penalty formulation" "p=0.666667" "$PF"
+run_case $G gap-adaptive "$GAP" 30 "closing gap, adaptive penalty" "p=0.666667" "$PF" "$AP" "Newton/Maximum iterations=40"
+run_case $G penetration-adaptive "$PEN" 30 "initial penetration, adaptive penalty" "p=1" "$PF" "$AP" "Newton/Maximum iterations=40"
+
 # --- 9. Newton damping and step growth -------------------------------------
 # Newton/Damping = alpha < 1 (since 539de7a) makes the iteration linear: it
 # stops as soon as the residual ratio is below the tolerance (1e-4), so the

@@ -1,9 +1,14 @@
-// Augmented-Lagrangian frictionless contact with dual mortar multipliers,
-// solved by a semi-smooth Newton (primal-dual active set) method.
-#ifndef contact_fem_alm_contact_h
-#define contact_fem_alm_contact_h
+// Frictionless mortar contact: the augmented-Lagrangian formulation with
+// exact active constraints (semi-smooth Newton), or its penalty
+// regularisation, optionally with adaptive nodal penalties.
+#ifndef contact_fem_frictionless_contact_h
+#define contact_fem_frictionless_contact_h
 
+#include <deal.II/base/index_set.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <contact_fem/contact_interface.h>
 #include <contact_fem/parameters.h>
@@ -30,13 +35,21 @@ namespace contact_fem
    * condensation of the multipliers), and lambda_j is recovered afterwards
    * from the residual of that eliminated DoF: lambda_j = -r_c / (D_j n_j,c).
    *
-   * Implemented in source/alm_contact.cc.
+   * With Formulation = penalty frictionless (parameters.regularised()) the
+   * same weighted gaps are penalised instead: an active node (g_j < 0)
+   * carries lambda_j = eps_j (-g_j), from the energy sum_j 1/2 eps_j D_j g_j^2,
+   * whose stiffness and load assemble_penalty() adds to the system; no
+   * constraints. With Adaptive penalty, eps_j is updated in every iteration
+   * from the penetrations of this and the previous iteration (the rule of
+   * Bussetta, Marceau and Ponthot) until each is below the allowed one.
+   *
+   * Implemented in source/frictionless_contact.cc.
    */
   template <int dim>
-  class AlmFrictionless
+  class FrictionlessContact
   {
   public:
-    explicit AlmFrictionless(const ContactParameters &parameters);
+    explicit FrictionlessContact(const ContactParameters &parameters);
 
     /// Resets the state for a new mesh of @p interface.
     void
@@ -64,7 +77,29 @@ namespace contact_fem
                     AffineConstraints<double>   &constraints,
                     const bool                   all_candidates = false) const;
 
-    /// lambda_j from the bulk residual r = C_h^T (K u - f) at the interface DoFs.
+    /**
+     * Penalty formulation: adds, for every active slave node whose first DoF
+     * is in @p owned (so that each node is added once), eps_j D_j grad g_j
+     * grad g_j^T to @p matrix and -eps_j D_j g_j(0) grad g_j to @p rhs,
+     * through @p constraints. The caller compresses.
+     */
+    void
+    assemble_penalty(const ContactInterface<dim>    &interface,
+                     const AffineConstraints<double> &constraints,
+                     const IndexSet                  &owned,
+                     TrilinosWrappers::SparseMatrix  &matrix,
+                     TrilinosWrappers::MPI::Vector   &rhs) const;
+
+    /// Penalty formulation: the couplings assemble_penalty() may create, for
+    /// every paired slave node whose first DoF is in @p owned.
+    void
+    add_penalty_sparsity(const ContactInterface<dim>    &interface,
+                         const AffineConstraints<double> &constraints,
+                         const IndexSet                  &owned,
+                         DynamicSparsityPattern          &pattern) const;
+
+    /// lambda_j from the bulk residual r = C_h^T (K u - f) at the interface DoFs
+    /// (ALM; the penalty formulation computes lambda_j from the gap instead).
     void
     recover_multipliers(const ContactInterface<dim> &interface,
                         const std::vector<double>   &residual);
@@ -93,6 +128,8 @@ namespace contact_fem
     std::vector<bool>         active;   ///< per interface node
     std::vector<double>       penalty;  ///< eps per pair
     std::vector<double>       scale;    ///< k per pair
+    /// Penalty formulation: eps_j per interface node (adapted or the pair's).
+    std::vector<double> node_penalty;
 
   private:
     ContactParameters parameters;
@@ -102,6 +139,21 @@ namespace contact_fem
                          const typename ContactInterface<dim>::SlaveNode &s) const;
     /// Multipliers of released nodes before the reset (for the residual).
     std::vector<double> released_pressure;
+    /// The DoFs of slave node @p s and its masters, with grad g_j there.
+    void
+    gap_gradient(const ContactInterface<dim>                     &interface,
+                 const typename ContactInterface<dim>::SlaveNode &s,
+                 std::vector<types::global_dof_index>            &dofs,
+                 std::vector<double>                             &gradient) const;
+    /// Penalty formulation: the gap of the previous iteration, per node.
+    std::vector<double> previous_gap;
+    /// Bussetta-Marceau-Ponthot update of a nodal penalty @p eps from the
+    /// penetrations (> 0 when overlapping) of this and the previous iteration.
+    double
+    adapted_penalty(const double eps,
+                    const double penetration,
+                    const double previous_penetration,
+                    const double allowed) const;
   };
 } // namespace contact_fem
 

@@ -80,6 +80,17 @@ namespace contact_fem
     double active_check_factor = 1e-2;
     double search_factor       = 3.;
     bool   allow_loss_of_contact = false;
+    /// Penalty formulation only: adapt the nodal penalties (Bussetta et al.)
+    /// until every penetration is below penetration_factor * h.
+    bool   adaptive_penalty   = false;
+    double penetration_factor = 1e-3;
+
+    /// The penalty-regularised formulation (else exact active constraints).
+    bool
+    regularised() const
+    {
+      return formulation == "penalty frictionless";
+    }
 
     static void
     declare_parameters(ParameterHandler &prm);
