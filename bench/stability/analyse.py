@@ -324,7 +324,9 @@ def judge(case):
         else:
             notes.append("reaction imbalance %.2g" % imb)
     n_active = case["contact"].get("active_slave_nodes")
-    for e in exp:
+    # "p=..." is a key=value token of the EXPECT string (parse_expect puts
+    # it in kv, not among the flags).
+    for e in exp + ["p=" + v for k, v in kv if k == "p"]:
         if e.startswith("p="):
             p = float(e[2:])
             if not n_active:

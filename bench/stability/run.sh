@@ -387,9 +387,16 @@ run_case $G x1e-8-adaptive "$HERTZ" 120 "p = 1e-8 x 0.2 t, adaptive penalty" "he
 run_case $G x1e1-adaptive "$HERTZ" 120 "p = 10 x 0.2 t, graded zone 1.5, 4 steps, adaptive penalty" "hertz" "$PF" "$AP" \
   "Boundary conditions/Pressure=1: 10*0.2*t" "Geometry/Hertz cylinder/Refinement half width=1.5" \
   "Load stepping/Number of load steps=4" "Newton/Maximum iterations=40"
-run_case $G gap-penalty "$GAP" 30 "closing gap, penalty formulation" "p=0.666667" "$PF"
-run_case $G gap-adaptive "$GAP" 30 "closing gap, adaptive penalty" "p=0.666667" "$PF" "$AP" "Newton/Maximum iterations=40"
-run_case $G penetration-adaptive "$PEN" 30 "initial penetration, adaptive penalty" "p=1" "$PF" "$AP" "Newton/Maximum iterations=40"
+# A penalty method does not pass a patch test exactly: the pressure is off by
+# about the penetration over the elastic compression. Measured: fixed 1e4 E/h
+# 1.6e-5; adaptive with limit 1e-3 h 3.8e-2 (the nodal penalties differ, so
+# do the penetrations), 1e-5 h 1.3e-4, 1e-6 h 1.3e-5. The tolerances below
+# bound that error; the ALM cases above are exact to 1e-6.
+run_case $G gap-penalty "$GAP" 30 "closing gap, penalty formulation" "p=0.666667 tol=1e-4" "$PF"
+run_case $G gap-adaptive "$GAP" 30 "closing gap, adaptive penalty, limit 1e-3 h" "p=0.666667 tol=5e-2" "$PF" "$AP" "Newton/Maximum iterations=40"
+run_case $G gap-adaptive-1e-5 "$GAP" 30 "closing gap, adaptive penalty, limit 1e-5 h" "p=0.666667 tol=1e-3" "$PF" "$AP" \
+  "Contact/Maximum penetration factor=1e-5" "Newton/Maximum iterations=40"
+run_case $G penetration-adaptive "$PEN" 30 "initial penetration, adaptive penalty, limit 1e-3 h" "p=1 tol=1e-2" "$PF" "$AP" "Newton/Maximum iterations=40"
 
 # --- 9. Newton damping and step growth -------------------------------------
 # Newton/Damping = alpha < 1 (since 539de7a) makes the iteration linear: it
