@@ -27,8 +27,8 @@ namespace contact_fem
   template <int dim>
   void
   FrictionlessContact<dim>::start_load_step(const ContactInterface<dim> &interface,
-                                        const std::vector<double>   &u,
-                                        const bool                   first_step)
+                                            const std::vector<double>   &u,
+                                            const bool                   first_step)
   {
     const unsigned int n_pairs = interface.pairs.size();
     penalty.assign(n_pairs, 0.);
@@ -108,9 +108,9 @@ namespace contact_fem
   template <int dim>
   void
   FrictionlessContact<dim>::add_constraints(const ContactInterface<dim> &interface,
-                                        const std::vector<double>   &fixed_values,
-                                        AffineConstraints<double>   &constraints,
-                                        const bool                   all_candidates) const
+                                            const std::vector<double>   &fixed_values,
+                                            AffineConstraints<double>   &constraints,
+                                            const bool                   all_candidates) const
   {
     // The penalty formulation has no constraints; its candidates still
     // give the sparsity pattern the slave-master couplings it needs.
@@ -252,7 +252,7 @@ namespace contact_fem
   template <int dim>
   void
   FrictionlessContact<dim>::recover_multipliers(const ContactInterface<dim> &interface,
-                                            const std::vector<double>   &residual)
+                                                const std::vector<double>   &residual)
   {
     if (parameters.regularised())
       return; // lambda_j = eps_j (-g_j), set by update_active_set()
@@ -272,7 +272,7 @@ namespace contact_fem
   template <int dim>
   unsigned int
   FrictionlessContact<dim>::update_active_set(const ContactInterface<dim> &interface,
-                                          const std::vector<double>   &u)
+                                              const std::vector<double>   &u)
   {
     unsigned int changes = 0;
     std::fill(released_pressure.begin(), released_pressure.end(), 0.);
@@ -329,7 +329,7 @@ namespace contact_fem
   template <int dim>
   typename FrictionlessContact<dim>::Residuals
   FrictionlessContact<dim>::residuals(const ContactInterface<dim> &interface,
-                                  const std::vector<double>   &u) const
+                                      const std::vector<double>   &u) const
   {
     Residuals result;
     result.contact_force.assign(interface.dofs().size(), 0.);

@@ -414,7 +414,6 @@ main(int argc, char **argv)
       StressRecovery<2>::estimate(mapping, q2.dof_handler, u, materials, weighted, with_contact);
     out << "Q2, linear stress, weighted-mean tractions: relative error "
         << zero(r_weighted.relative_error) << std::endl;
-
   }
 
   {
@@ -452,8 +451,9 @@ main(int argc, char **argv)
     const auto at_nodes = top_contact_nodes_weighted(tria, 1, materials, eps_bilinear, true);
     const auto r_at_nodes =
       StressRecovery<2>::estimate(mapping, q1.dof_handler, u_bi, materials, at_nodes, with_contact);
-    // Only the two nodes where the face length changes are off (by h/6 times
-    // the shear gradient), so the estimate is small but far above round-off.
+    // Only the nodes where the face length changes from h1 to h2 are off (by
+    // (h2 - h1) / 3 times the shear gradient), so the estimate is small but
+    // far above round-off.
     out << "Q1, linear stress, the weighted means imposed at the nodes: above 1e-5: "
         << (r_at_nodes.relative_error > 1e-5 ? "yes" : "no") << std::endl;
   }
