@@ -160,6 +160,7 @@ namespace contact_fem
     else
       indicators = spr.cell_indicators;
 
+    relative_estimate = spr.relative_error;
     cycle_record.set("estimator", type)
       .set("estimated_error", spr.estimated_error)
       .set("relative_estimated_error", spr.relative_error)
@@ -169,14 +170,25 @@ namespace contact_fem
   }
 
   template <int dim>
-  void
+  bool
   ContactProblem<dim>::refine_mesh()
   {
     TimerOutput::Scope t(*timer, "Refine");
     if (triangulation.n_global_active_cells() >= refinement.max_cells)
       {
-        pcout << "  (maximum number of cells reached: mesh kept)" << std::endl;
-        return;
+        pcout << "Maximum number of cells reached: mesh kept, remaining cycles skipped."
+              << std::endl;
+        return false;
+      }
+    // An estimate at round-off level (an exactly represented solution, as
+    // in a patch test) carries no information on where to refine: marking
+    // by it would follow the rounding of the solver and the platform.
+    if (refinement.estimator != "global" && !(relative_estimate >= 1e-10))
+      {
+        pcout << "Estimate at round-off level (eta / |u|_E < 1e-10): mesh kept, "
+                 "remaining cycles skipped."
+              << std::endl;
+        return false;
       }
     if (refinement.estimator == "global")
       {
@@ -217,11 +229,12 @@ namespace contact_fem
     TrilinosWrappers::MPI::Vector transferred(dof_handler.locally_owned_dofs(), comm);
     transfer.interpolate(transferred);
     transferred_solution = std::make_unique<TrilinosWrappers::MPI::Vector>(transferred);
+    return true;
   }
 
 #define INSTANTIATE(dim)                                           \
   template void ContactProblem<dim>::estimate_error(Json &);       \
-  template void ContactProblem<dim>::refine_mesh();
+  template bool ContactProblem<dim>::refine_mesh();
   INSTANTIATE(2)
   INSTANTIATE(3)
 #undef INSTANTIATE

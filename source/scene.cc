@@ -5,6 +5,7 @@
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria.h>
 
+#include <contact_fem/parameters.h>
 #include <contact_fem/scene.h>
 
 #include <cmath>
@@ -45,6 +46,16 @@ namespace contact_fem
                       Patterns::Integer(0, 8),
                       "Uniform refinements applied to the mesh after it is "
                       "built (each one halves every cell).");
+    prm.declare_entry("Local refinements",
+                      "",
+                      Patterns::Anything(),
+                      "Boxes refined after the global refinements, as "
+                      "'rounds: x_min, y_min, (z_min,) x_max, y_max(, z_max); "
+                      "...': 'rounds' times, the cells whose centre lies in the "
+                      "box are refined (hanging nodes; neighbours are refined "
+                      "as needed to keep one level difference). E.g. "
+                      "'2: -1, 0.5, 1, 1.5' refines a band around y = 1 twice. "
+                      "Empty: none. Distortion acts before these refinements.");
     prm.enter_subsection("Hertz cylinder");
     prm.declare_entry("Radius", "8", Patterns::Double(0.), "Radius R of the half-disc.");
     prm.declare_entry("Plate half width", "10", Patterns::Double(0.),
@@ -91,6 +102,45 @@ namespace contact_fem
     mesh_file          = prm.get("Mesh file");
     global_refinements = prm.get_integer("Global refinements");
     distortion         = prm.get_double("Distortion");
+    refinement_boxes.clear();
+    const std::string boxes_key = "Geometry/Local refinements";
+    for (const auto &[rounds, box] :
+         split_key_value_list(prm.get("Local refinements"), boxes_key))
+      {
+        RefinementBox       refinement_box;
+        std::vector<double> bounds;
+        bool                valid = true;
+        try
+          {
+            std::size_t end      = 0;
+            const int   n_rounds = std::stoi(rounds, &end);
+            valid                = end == rounds.size() && n_rounds >= 1 && n_rounds <= 8;
+            refinement_box.rounds = valid ? n_rounds : 0;
+            for (const std::string &entry : Utilities::split_string_list(box, ','))
+              {
+                bounds.push_back(std::stod(entry, &end));
+                valid = valid && end == entry.size();
+              }
+          }
+        catch (...)
+          {
+            valid = false;
+          }
+        valid = valid && bounds.size() == 2 * dim;
+        for (unsigned int d = 0; valid && d < dim; ++d)
+          {
+            refinement_box.lower[d] = bounds[d];
+            refinement_box.upper[d] = bounds[dim + d];
+            valid                   = bounds[d] < bounds[dim + d];
+          }
+        AssertThrow(valid,
+                    ExcMessage(boxes_key + ": entry '" + rounds + ": " + box +
+                               "' is not of the form 'rounds: lower corner, upper "
+                               "corner' with rounds in 1..8 and " +
+                               std::to_string(2 * dim) +
+                               " coordinates, each lower below its upper."));
+        refinement_boxes.push_back(refinement_box);
+      }
     prm.enter_subsection("Hertz cylinder");
     hertz.radius                = prm.get_double("Radius");
     hertz.plate_half_width      = prm.get_double("Plate half width");
@@ -353,6 +403,7 @@ namespace contact_fem
       tria.refine_global(global_refinements);
     if (distortion > 0.)
       GridTools::distort_random(distortion, tria, true, 20261121);
+    refine_boxes(tria);
   }
 
   template <>
@@ -364,6 +415,40 @@ namespace contact_fem
     tria.copy_triangulation(coarse);
     if (global_refinements > 0)
       tria.refine_global(global_refinements);
+    refine_boxes(tria);
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::refine_boxes(parallel::distributed::Triangulation<dim> &tria) const
+  {
+    for (unsigned int b = 0; b < refinement_boxes.size(); ++b)
+      {
+        const RefinementBox &box = refinement_boxes[b];
+        for (unsigned int round = 0; round < box.rounds; ++round)
+          {
+            unsigned int n_marked = 0;
+            for (const auto &cell : tria.active_cell_iterators())
+              if (cell->is_locally_owned())
+                {
+                  const Point<dim> centre = cell->center();
+                  bool             inside = true;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    inside = inside && centre[d] >= box.lower[d] && centre[d] <= box.upper[d];
+                  if (inside)
+                    {
+                      cell->set_refine_flag();
+                      ++n_marked;
+                    }
+                }
+            AssertThrow(Utilities::MPI::sum(n_marked, tria.get_communicator()) > 0,
+                        ExcMessage("Geometry/Local refinements: box " +
+                                   std::to_string(b + 1) +
+                                   " holds no cell centre (round " +
+                                   std::to_string(round + 1) + ")."));
+            tria.execute_coarsening_and_refinement();
+          }
+      }
   }
 
   template <int dim>

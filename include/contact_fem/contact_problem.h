@@ -15,6 +15,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <contact_fem/direct_solver.h>
 #include <contact_fem/frictionless_contact.h>
 #include <contact_fem/contact_interface.h>
 #include <contact_fem/json.h>
@@ -133,7 +134,8 @@ namespace contact_fem
     // --- adaptivity (refinement.cc)
     void
     estimate_error(Json &cycle_record);
-    void
+    /// Marks and refines; false if the mesh is kept (nothing to refine).
+    bool
     refine_mesh();
     /// Solves one cycle on the current mesh; returns false if Newton failed.
     bool
@@ -179,7 +181,6 @@ namespace contact_fem
     OutputParameters     output;
     RefinementParameters refinement;
     unsigned int       degree;
-    std::string        direct_solver;
 
     parallel::distributed::Triangulation<dim> triangulation;
     FESystem<dim>                             fe;
@@ -196,6 +197,7 @@ namespace contact_fem
     AffineConstraints<double> constraints;
 
     TrilinosWrappers::SparseMatrix system_matrix;
+    DirectSolver                   direct_solver; ///< after the matrix it refers to
     TrilinosWrappers::MPI::Vector  system_rhs;
     TrilinosWrappers::MPI::Vector  solution;         ///< owned
     TrilinosWrappers::MPI::Vector  ghosted_solution; ///< locally relevant
@@ -216,6 +218,7 @@ namespace contact_fem
     double                             current_time = 0.;
     std::vector<std::pair<double, std::string>> vtu_records;
     Vector<float>                               indicators; ///< of the last estimate
+    double relative_estimate = 0.; ///< eta / |u|_E of the last SPR estimate
     /// Displacement interpolated from the previous mesh (owned entries).
     std::unique_ptr<TrilinosWrappers::MPI::Vector> transferred_solution;
     unsigned int                                   cycle = 0;

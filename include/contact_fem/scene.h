@@ -70,6 +70,19 @@ namespace contact_fem
     unsigned int global_refinements = 0;
     double       distortion         = 0.;
 
+    /// Geometry/Local refinements: cells whose centre lies in the box are
+    /// refined 'rounds' times (after the global refinements).
+    struct RefinementBox
+    {
+      unsigned int rounds = 0;
+      Point<dim>   lower, upper;
+    };
+    std::vector<RefinementBox> refinement_boxes;
+
+    /// Refines the boxes of refinement_boxes; throws if a box holds no cell.
+    void
+    refine_boxes(parallel::distributed::Triangulation<dim> &tria) const;
+
     struct Hertz
     {
       double       radius                 = 8.;

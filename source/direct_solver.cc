@@ -1,0 +1,92 @@
+#include <deal.II/base/exceptions.h>
+
+#include <contact_fem/direct_solver.h>
+
+#include <Amesos.h>
+#include <Amesos_BaseSolver.h>
+#include <Amesos_Mumps.h>
+#include <Epetra_LinearProblem.h>
+#include <Teuchos_ParameterList.hpp>
+
+#include <cmath>
+
+namespace contact_fem
+{
+  DirectSolver::DirectSolver(const std::string &amesos_name)
+    : amesos_name(amesos_name)
+  {}
+
+  DirectSolver::~DirectSolver() = default;
+
+  void
+  DirectSolver::clear()
+  {
+    solver.reset();
+    problem.reset();
+    factorised_matrix = nullptr;
+    factorised_nonzeros = 0;
+  }
+
+  void
+  DirectSolver::factorise(const TrilinosWrappers::SparseMatrix &matrix)
+  {
+    // A re-created matrix is a new Epetra object; the entry count guards
+    // against a new object at the old address.
+    if (factorised_matrix != &matrix.trilinos_matrix() ||
+        factorised_nonzeros != matrix.n_nonzero_elements())
+      {
+        clear();
+        problem = std::make_unique<Epetra_LinearProblem>();
+        problem->SetOperator(const_cast<Epetra_CrsMatrix *>(&matrix.trilinos_matrix()));
+        Amesos factory;
+        solver.reset(factory.Create(amesos_name.c_str(), *problem));
+        AssertThrow(solver != nullptr,
+                    ExcMessage("the direct solver " + amesos_name +
+                               " is not available in this Trilinos build"));
+        if (auto *mumps = dynamic_cast<Amesos_Mumps *>(solver.get()))
+          mumps->SetICNTL(7, 5); // METIS ordering
+        AssertThrow(solver->SymbolicFactorization() == 0,
+                    ExcMessage("the symbolic factorisation of " + amesos_name + " failed"));
+        factorised_matrix   = &matrix.trilinos_matrix();
+        factorised_nonzeros = matrix.n_nonzero_elements();
+      }
+    AssertThrow(solver->NumericFactorization() == 0,
+                ExcMessage("the numeric factorisation of " + amesos_name +
+                           " failed (singular matrix?)"));
+  }
+
+  double
+  DirectSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
+                      TrilinosWrappers::MPI::Vector       &x,
+                      const TrilinosWrappers::MPI::Vector &rhs)
+  {
+    factorise(matrix);
+    const auto solve_with_factors = [this](TrilinosWrappers::MPI::Vector       &lhs,
+                                           const TrilinosWrappers::MPI::Vector &b) {
+      problem->SetLHS(&lhs.trilinos_vector());
+      problem->SetRHS(const_cast<Epetra_MultiVector *>(
+        static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
+      AssertThrow(solver->Solve() == 0, ExcMessage("the direct solve failed"));
+    };
+    solve_with_factors(x, rhs);
+
+    TrilinosWrappers::MPI::Vector check(rhs), correction(rhs);
+    double residual = matrix.residual(check, x, rhs);
+    const double target = 1e-12 * rhs.l2_norm();
+    for (unsigned int step = 0; step < 3 && std::isfinite(residual) && residual > target;
+         ++step)
+      {
+        solve_with_factors(correction, check);
+        TrilinosWrappers::MPI::Vector refined = x;
+        refined += correction;
+        TrilinosWrappers::MPI::Vector refined_check(rhs);
+        const double refined_residual = matrix.residual(refined_check, refined, rhs);
+        if (!(refined_residual < 0.5 * residual))
+          break;
+        x        = refined;
+        check    = refined_check;
+        residual = refined_residual;
+      }
+    return residual;
+  }
+} // namespace contact_fem
