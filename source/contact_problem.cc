@@ -464,6 +464,11 @@ namespace contact_fem
     // A direct solver: the stiffness contrast between bodies (up to 1e12)
     // defeats iterative solvers without a contact-aware preconditioner.
     const double linear_residual = direct_solver.solve(system_matrix, solution, system_rhs);
+    if (direct_solver.n_null_pivots() > 0)
+      {
+        ++singular_solves;
+        most_null_pivots = std::max(most_null_pivots, direct_solver.n_null_pivots());
+      }
     // A singular system (a body held by nothing) does not always make the
     // direct solver fail: check that the solution solves it. Singular
     // systems leave O(1) residuals that refinement does not reduce.
@@ -922,10 +927,28 @@ namespace contact_fem
   }
 
   template <int dim>
+  void
+  ContactProblem<dim>::warn_about_singular_stiffness(Json &cycle_record) const
+  {
+    if (singular_solves == 0)
+      return;
+    std::ostringstream text;
+    text << "the stiffness matrix was singular in " << singular_solves
+         << " Newton solve(s) of this cycle (up to " << most_null_pivots
+         << " zero pivot(s)): a rigid-body mode that neither the supports nor the "
+         << "active contact hold (see Boundary conditions/Fixed points). The solver "
+         << "held it at one DoF; results along that mode are not determined by the model";
+    pcout << "  Warning: " << text.str() << "." << std::endl;
+    cycle_record.set("singular_stiffness_warning", text.str());
+  }
+
+  template <int dim>
   bool
   ContactProblem<dim>::run_cycle(const unsigned int cycle, Json &cycle_record)
   {
     newton_iterations_of_cycle.clear();
+    singular_solves  = 0;
+    most_null_pivots = 0;
     setup_dofs();
     if (transferred_solution)
       {
@@ -1050,6 +1073,7 @@ namespace contact_fem
     current_time = t_done;
     cycle_record.set("load_steps", steps);
     warn_about_large_displacements(cycle_record);
+    warn_about_singular_stiffness(cycle_record);
     if (n_solved == 0)
       return false;
     if (!converged && contact)

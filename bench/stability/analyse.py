@@ -148,6 +148,9 @@ def warning_label(text):
     if "lock volumetrically" in text:
         m = re.search(r"body (\d+)", text)
         return "locking" + (" (body %s)" % m.group(1) if m else "")
+    m = re.search(r"singular in (\d+) Newton solve", text)
+    if m:
+        return "singular stiffness (%s solves)" % m.group(1)
     m = re.search(r"slave side is (\S+) times stiffer", text)
     if m:
         ratio = ("%.3g" % float(m.group(1))).replace("e+0", "e").replace("e+", "e")

@@ -114,6 +114,8 @@ namespace contact_fem
     void
     warn_about_large_displacements(Json &cycle_record);
     void
+    warn_about_singular_stiffness(Json &cycle_record) const;
+    void
     make_sparsity_pattern();
     void
     make_constraints();
@@ -198,6 +200,8 @@ namespace contact_fem
 
     TrilinosWrappers::SparseMatrix system_matrix;
     DirectSolver                   direct_solver; ///< after the matrix it refers to
+    /// Newton solves of this cycle whose matrix had zero pivots, and the most.
+    unsigned int singular_solves = 0, most_null_pivots = 0;
     TrilinosWrappers::MPI::Vector  system_rhs;
     TrilinosWrappers::MPI::Vector  solution;         ///< owned
     TrilinosWrappers::MPI::Vector  ghosted_solution; ///< locally relevant

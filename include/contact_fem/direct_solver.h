@@ -22,7 +22,8 @@ namespace contact_fem
    * pattern, which stays the same over the Newton iterations and load steps
    * of one mesh, so it is computed once per mesh; each solve() only
    * refactorises the values. MUMPS orders with METIS (nested dissection),
-   * the best ordering for 2D and 3D finite-element graphs.
+   * a good ordering for 2D and 3D finite-element graphs, and detects zero
+   * pivots (n_null_pivots()).
    *
    * solve() also applies up to three steps of iterative refinement with the
    * same factors: large stiffness contrasts (1e8 and more between the
@@ -49,6 +50,14 @@ namespace contact_fem
           TrilinosWrappers::MPI::Vector       &x,
           const TrilinosWrappers::MPI::Vector &rhs);
 
+    /// Zero pivots of the last factorisation (MUMPS; always 0 for KLU): the
+    /// number of rigid-body modes the matrix leaves free.
+    unsigned int
+    n_null_pivots() const
+    {
+      return null_pivots;
+    }
+
   private:
     std::string                           amesos_name;
     std::unique_ptr<Epetra_LinearProblem> problem;
@@ -56,6 +65,7 @@ namespace contact_fem
     /// The matrix whose pattern the symbolic factorisation belongs to.
     const Epetra_CrsMatrix *factorised_matrix   = nullptr;
     std::size_t             factorised_nonzeros = 0;
+    unsigned int            null_pivots         = 0;
 
     void
     factorise(const TrilinosWrappers::SparseMatrix &matrix);
