@@ -87,8 +87,10 @@ namespace contact_fem
                       Patterns::Selection("Amesos_Klu|Amesos_Mumps"),
                       "Trilinos Amesos direct solver of the condensed system: "
                       "MUMPS (METIS ordering, distributed under MPI) or KLU "
-                      "(gathers the matrix on one process). MUMPS is 2.4x "
-                      "(5k DoFs) to 7x (74k DoFs) faster (doc/performance.md).");
+                      "(gathers the matrix on one process). MUMPS is the faster "
+                      "from 5k DoFs on, 7x at 74k DoFs (doc/performance.md), and "
+                      "the only one that detects zero pivots (free rigid-body "
+                      "modes).");
     prm.leave_subsection();
     Scene<dim>::declare_parameters(prm);
     Materials<dim>::declare_parameters(prm);

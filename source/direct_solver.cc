@@ -24,7 +24,7 @@ namespace contact_fem
   {
     solver.reset();
     problem.reset();
-    factorised_matrix = nullptr;
+    factorised_matrix   = nullptr;
     factorised_nonzeros = 0;
     null_pivots         = 0;
   }
