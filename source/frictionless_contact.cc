@@ -133,35 +133,29 @@ namespace contact_fem
         const double denominator = s.D * s.normal[c];
         double       inhomogeneity = 0.;
         std::vector<std::pair<types::global_dof_index, double>> entries;
+        // A term coefficient * u of component d of interface node `node`: a
+        // fixed DoF moves its known value into the inhomogeneity.
+        const auto add_term = [&](const typename ContactInterface<dim>::Node &node,
+                                  const unsigned int                          d,
+                                  const double                                coefficient) {
+          if (std::abs(coefficient) < 1e-14)
+            return;
+          if (node.fixed[d])
+            inhomogeneity += coefficient * fixed_values[interface.position(node.dofs[d])];
+          else
+            entries.emplace_back(node.dofs[d], coefficient);
+        };
         for (const auto &[m, value] : s.M)
           {
             const auto &master = interface.nodes[m];
             inhomogeneity += value * (s.normal * master.reference) / denominator;
             for (unsigned int d = 0; d < dim; ++d)
-              {
-                const double coefficient = value * s.normal[d] / denominator;
-                if (std::abs(coefficient) < 1e-14)
-                  continue;
-                if (master.fixed[d])
-                  inhomogeneity +=
-                    coefficient * fixed_values[interface.position(master.dofs[d])];
-                else
-                  entries.emplace_back(master.dofs[d], coefficient);
-              }
+              add_term(master, d, value * s.normal[d] / denominator);
           }
         inhomogeneity -= s.normal * slave.reference / s.normal[c];
         for (unsigned int d = 0; d < dim; ++d)
           if (d != c)
-            {
-              const double coefficient = -s.normal[d] / s.normal[c];
-              if (std::abs(coefficient) < 1e-14)
-                continue;
-              if (slave.fixed[d])
-                inhomogeneity +=
-                  coefficient * fixed_values[interface.position(slave.dofs[d])];
-              else
-                entries.emplace_back(slave.dofs[d], coefficient);
-            }
+            add_term(slave, d, -s.normal[d] / s.normal[c]);
         // The same DoF may appear through two master faces: merge entries.
         std::sort(entries.begin(), entries.end());
         std::vector<std::pair<types::global_dof_index, double>> merged;

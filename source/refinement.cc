@@ -119,6 +119,10 @@ namespace contact_fem
     TimerOutput::Scope t(*timer, "Estimate");
     const std::string &type = refinement.estimator;
     indicators.reinit(triangulation.n_active_cells());
+    typename StressRecovery<dim>::Settings settings;
+    settings.contact_terms      = type != "spr";
+    settings.penalty_normal     = refinement.penalty_normal;
+    settings.penalty_tangential = refinement.penalty_tangential;
 
     // The contact tractions of the active slave nodes, imposed as the
     // N_j-weighted mean over the node's slave faces (which is what a dual
@@ -129,7 +133,7 @@ namespace contact_fem
     // normal instead would be off by the surface rotation, ~ a / R in Hertz,
     // which does not shrink under refinement.)
     std::vector<ContactNodeTraction<dim>> tractions;
-    if (contact)
+    if (contact && settings.contact_terms)
       {
         const auto support = slave_support_samples(*interface);
         for (const auto &s : interface->slave_nodes)
@@ -144,11 +148,6 @@ namespace contact_fem
                                    -force / reference * s.normal, samples});
             }
       }
-
-    typename StressRecovery<dim>::Settings settings;
-    settings.contact_terms      = type != "spr";
-    settings.penalty_normal     = refinement.penalty_normal;
-    settings.penalty_tangential = refinement.penalty_tangential;
     const auto spr = StressRecovery<dim>::estimate(mapping, dof_handler, ghosted_solution,
                                                    materials, tractions, settings,
                                                    volumetric_projection.get());
