@@ -15,7 +15,7 @@ namespace contact_fem
 {
   template <int dim>
   void
-  ContactInterface<dim>::initialize(const Mapping<dim>              &mapping,
+  ContactInterface<dim>::initialize(const MappingQ<dim>             &mapping,
                                     const DoFHandler<dim>           &dof_handler,
                                     const std::vector<ContactPair>  &contact_pairs,
                                     const AffineConstraints<double> &dirichlet,
@@ -29,12 +29,22 @@ namespace contact_fem
     owned_dofs   = dof_handler.locally_owned_dofs();
     const FiniteElement<dim> &fe = dof_handler.get_fe();
     degree                       = fe.degree;
+    geometry_degree              = std::max(degree, mapping.get_degree());
+    AssertThrow(geometry_degree == degree || (degree == 1 && geometry_degree == 2),
+                ExcMessage("Contact: the face geometry may exceed the element degree "
+                           "only for degree-1 elements on a quadratic mapping."));
     const unsigned int nodes_per_face = fe.n_dofs_per_face() / dim;
+    // Geometry nodes without DoFs: the face midpoint of Q1 on a quadratic
+    // mapping, whose faces follow the curved boundary.
+    const unsigned int n_geometry_points = geometry_degree - degree;
 
     // Support points of the base element on a face, in face DoF order.
     const Quadrature<dim - 1> support(fe.base_element(0).get_unit_face_support_points());
     FEFaceValues<dim>         fe_face(mapping, fe, support,
                               update_quadrature_points | update_normal_vectors);
+    FEFaceValues<dim>         fe_face_midpoint(mapping, fe,
+                                       Quadrature<dim - 1>(Point<dim - 1>::unit_vector(0) * 0.5),
+                                       update_quadrature_points);
 
     // Pack the local faces: [pair, slave, E, nu, orientation, then per node:
     // coordinates, dofs, fixed flags].
@@ -94,6 +104,12 @@ namespace contact_fem
                           packed.push_back(fixed ? 1. : 0.);
                         }
                     }
+                  if (n_geometry_points > 0)
+                    {
+                      fe_face_midpoint.reinit(cell, f);
+                      for (unsigned int d = 0; d < dim; ++d)
+                        packed.push_back(fe_face_midpoint.quadrature_point(0)[d]);
+                    }
                 }
 
     const auto all = Utilities::MPI::all_gather(comm, packed);
@@ -103,7 +119,7 @@ namespace contact_fem
     slave_faces_per_rank.clear();
     master_faces_per_rank.clear();
     std::map<types::global_dof_index, unsigned int> node_of_dof;
-    const unsigned int record = 5 + nodes_per_face * 3 * dim;
+    const unsigned int record = 5 + nodes_per_face * 3 * dim + n_geometry_points * dim;
     for (const auto &chunk : all)
       {
       slave_faces_per_rank.push_back(0);
@@ -138,6 +154,14 @@ namespace contact_fem
                 index = it->second;
               (face.slave ? nodes[index].slave : nodes[index].master) = true;
               face.nodes.push_back(index);
+            }
+          for (unsigned int k = 0; k < n_geometry_points; ++k)
+            {
+              const double *data = &chunk[r + 5 + nodes_per_face * 3 * dim + k * dim];
+              Point<dim>    x;
+              for (unsigned int d = 0; d < dim; ++d)
+                x[d] = data[d];
+              face.geometry_points.push_back(x);
             }
           ++(face.slave ? slave_faces_per_rank.back() : master_faces_per_rank.back());
           faces.push_back(face);
@@ -197,27 +221,33 @@ namespace contact_fem
     Tensor<1, dim> weighted = -s.D * (nodes[s.node].reference + displacement(s.node, u));
     for (const auto &[m, value] : s.M)
       weighted += value * (nodes[m].reference + displacement(m, u));
-    return s.normal * weighted / s.D;
+    return (s.normal * weighted + s.curvature_gap) / s.D;
+  }
+
+  template <int dim>
+  Mortar::LineFace
+  ContactInterface<dim>::line(const Face &face, const std::vector<Tensor<1, dim>> &u) const
+  {
+    const auto position = [&](const Point<dim> &X, const Tensor<1, dim> &displacement) {
+      Point<2> x;
+      for (unsigned int d = 0; d < 2; ++d)
+        x[d] = X[d] + displacement[d];
+      return x;
+    };
+    Mortar::LineFace result;
+    result.element_degree = degree;
+    for (const unsigned int n : face.nodes)
+      result.nodes.push_back(position(nodes[n].reference, u.empty() ? Tensor<1, dim>() : u[n]));
+    // The geometry midpoint moves with the linear displacement of the face.
+    for (const Point<dim> &X : face.geometry_points)
+      result.nodes.push_back(
+        position(X,
+                 u.empty() ? Tensor<1, dim>() : 0.5 * (u[face.nodes[0]] + u[face.nodes[1]])));
+    return result;
   }
 
   namespace
   {
-    template <int dim>
-    Mortar::LineFace
-    current_face(const typename ContactInterface<dim>::Face              &face,
-                 const std::vector<typename ContactInterface<dim>::Node> &nodes,
-                 const std::vector<Tensor<1, dim>>                       &u)
-    {
-      Mortar::LineFace line;
-      for (const unsigned int n : face.nodes)
-        {
-          Point<2> x;
-          for (unsigned int d = 0; d < 2; ++d)
-            x[d] = nodes[n].reference[d] + u[n][d];
-          line.nodes.push_back(x);
-        }
-      return line;
-    }
 
     double
     face_length(const Mortar::LineFace &line)
@@ -251,7 +281,7 @@ namespace contact_fem
         std::vector<double>           lengths(faces.size());
         for (unsigned int f = 0; f < faces.size(); ++f)
           {
-            lines[f]   = current_face<dim>(faces[f], nodes, u);
+            lines[f]   = line(faces[f], u);
             lengths[f] = face_length(lines[f]);
           }
 
@@ -292,6 +322,7 @@ namespace contact_fem
         // Broad phase: one R-tree of master face boxes per pair.
         statistics.assign(pairs.size(), PairStatistics());
         std::map<unsigned int, std::map<unsigned int, double>> M_of_node;
+        std::map<unsigned int, Tensor<1, 2>>                   weighted_gap_of_node;
         std::vector<bool> master_is_candidate(faces.size(), false);
         for (unsigned int p = 0; p < pairs.size(); ++p)
           {
@@ -377,6 +408,7 @@ namespace contact_fem
                       {
                         SlaveNode &s = slave_data[faces[f].nodes[j]];
                         s.D += ops.D[j];
+                        weighted_gap_of_node[s.node] += ops.weighted_gap[j];
                         for (unsigned int l = 0; l < faces[m].nodes.size(); ++l)
                           M_of_node[s.node][faces[m].nodes[l]] += ops.M(j, l);
                       }
@@ -413,13 +445,29 @@ namespace contact_fem
         // A node counts as paired when the master covers a fair part of its
         // support; tiny or negative dual weights at the rim of the master
         // surface would make its gap ill-defined.
+        const auto node_position = [&](const unsigned int n) {
+          Tensor<1, 2> x;
+          for (unsigned int d = 0; d < 2; ++d)
+            x[d] = nodes[n].reference[d] + u[n][d];
+          return x;
+        };
         slave_nodes.clear();
         for (auto &[n, s] : slave_data)
           {
             s.paired = s.D > 1e-2 * s.full_area;
             if (s.paired)
-              for (const auto &[m, value] : M_of_node[n])
-                s.M.emplace_back(m, value);
+              {
+                Tensor<1, 2> nodal = -s.D * node_position(n);
+                for (const auto &[m, value] : M_of_node[n])
+                  {
+                    s.M.emplace_back(m, value);
+                    nodal += value * node_position(m);
+                  }
+                Tensor<1, 2> normal;
+                for (unsigned int d = 0; d < 2; ++d)
+                  normal[d] = s.normal[d];
+                s.curvature_gap = normal * (weighted_gap_of_node[n] - nodal);
+              }
             slave_nodes.push_back(s);
           }
       }

@@ -101,7 +101,7 @@ namespace contact_fem
   ContactProblem<dim>::applied_load(const double time) const
   {
     const QGauss<dim - 1> quadrature(degree + 1);
-    FEFaceValues<dim>     fe_face(mapping, fe, quadrature,
+    FEFaceValues<dim>     fe_face(*mapping, fe, quadrature,
                               update_normal_vectors | update_quadrature_points |
                                 update_JxW_values);
     Tensor<1, dim> force;
@@ -300,16 +300,18 @@ namespace contact_fem
           l2_error += s.D * std::pow(contact->pressure[s.node] - p_exact, 2);
           l2_norm += s.D * p_exact * p_exact;
         }
-    // Degree 1 replaces the arc by its chords, which lie inside the circle
+    // A degree-1 geometry (Q1 on a linear mapping, e.g. with Finite
+    // element/Mapping degree = 1) replaces the arc by its chords, which lie inside the circle
     // by h^2 t (1 - t) / (2 R) along a chord of length h: the discrete
     // cylinder is shorter where it touches, and the contact force does the
     // extra work W = sum_faces (lambda_a + lambda_b) h^3 / (24 R) (linear
     // pressure interpolation), which lowers Pi_h by about W. On adaptive Q1
     // meshes W is as large as the squared energy error itself (see
     // doc/convergence.md), so the energy error below adds it back.
-    // Quadratic arcs deviate by O(h^4 / R^3): no term for degree 2.
+    // Quadratic arcs (Q2, or Q1 on a quadratic mapping) deviate by
+    // O(h^4 / R^3): no term.
     double chord_gap_work = 0.;
-    if (interface->degree == 1)
+    if (interface->geometry_degree == 1)
       for (const auto &face : interface->faces)
         if (face.slave)
           {
@@ -326,7 +328,7 @@ namespace contact_fem
       .set("a_error_in_slave_elements", size > 0. ? std::abs(a_num - h.a) / size : 0.)
       .set("p_max_relative_error", (p_num - h.p_max) / h.p_max)
       .set("pressure_l2_relative_error", l2_norm > 0. ? std::sqrt(l2_error / l2_norm) : 0.);
-    if (interface->degree == 1)
+    if (interface->geometry_degree == 1)
       result.set("chord_gap_work", chord_gap_work);
     return result;
   }
@@ -491,7 +493,7 @@ namespace contact_fem
       vector_field(dim, DataComponentInterpretation::component_is_part_of_vector);
     data_out.add_data_vector(dof_handler, ghosted_solution,
                              std::vector<std::string>(dim, "displacement"), vector_field);
-    const VonMises<dim> von_mises(materials, mapping, ghosted_solution,
+    const VonMises<dim> von_mises(materials, *mapping, ghosted_solution,
                                   volumetric_projection != nullptr);
     data_out.add_data_vector(dof_handler, ghosted_solution, von_mises);
     if (interface)
@@ -507,7 +509,7 @@ namespace contact_fem
         }
     data_out.add_data_vector(material, "material_id");
     data_out.add_data_vector(subdomain, "subdomain");
-    data_out.build_patches(mapping, degree);
+    data_out.build_patches(*mapping, degree);
     // One record per cycle and load step; the pvd "time" counts them.
     (void)step;
     (void)time;
@@ -532,7 +534,7 @@ namespace contact_fem
     data_out.add_data_vector(ghosted_solution, std::vector<std::string>(dim, "displacement"),
                              DataOut<dim>::type_dof_data, vector_field);
     data_out.add_data_vector(indicators, "error_indicator", DataOut<dim>::type_cell_data);
-    data_out.build_patches(mapping, degree);
+    data_out.build_patches(*mapping, degree);
     data_out.write_vtu_with_pvtu_record(output.directory + "/", "error_indicators", cycle,
                                         comm, 2);
   }
@@ -579,6 +581,7 @@ namespace contact_fem
       .set("mpi_processes", Utilities::MPI::n_mpi_processes(comm))
       .set("status", status)
       .set("degree", degree)
+      .set("mapping_degree", mapping->get_degree())
       .set("wall_time", wall_time)
       .set("cycles", cycles);
     std::ofstream out(output.directory + "/summary.json");

@@ -2,6 +2,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q_cache.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
@@ -74,6 +75,15 @@ namespace contact_fem
     prm.enter_subsection("Finite element");
     prm.declare_entry("Degree", "1", Patterns::Integer(1, 2),
                       "Polynomial degree of the displacement (Q1 or Q2).");
+    prm.declare_entry("Mapping degree", "auto", Patterns::Selection("auto|1|2"),
+                      "Polynomial degree of the geometry. auto: the element "
+                      "degree, but 2 for Q1 on scenes with curved boundaries "
+                      "(Geometry/Type = hertz cylinder): Q1 faces then follow "
+                      "the arc instead of its chords, whose sag, where the "
+                      "element size changes along a contact surface, shifts "
+                      "the gap and disturbs the contact pressure by up to "
+                      "0.5 % (doc/convergence.md). 1 keeps the chords (as "
+                      "Kratos' linear elements do).");
     prm.declare_entry("Volumetric strain", "standard",
                       Patterns::Selection("standard|B-bar"),
                       "standard: the full strain in the elastic law. B-bar: the "
@@ -114,6 +124,16 @@ namespace contact_fem
       return p;
     }
 
+    /// "auto" is resolved by the caller, which knows the scene.
+    std::string
+    read_mapping_degree(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Finite element");
+      const std::string value = prm.get("Mapping degree");
+      prm.leave_subsection();
+      return value;
+    }
+
     std::string
     read_direct_solver(ParameterHandler &prm)
     {
@@ -137,16 +157,27 @@ namespace contact_fem
                     typename Triangulation<dim>::MeshSmoothing(
                       Triangulation<dim>::limit_level_difference_at_vertices))
     , fe(FE_Q<dim>(degree), dim)
-    , mapping(degree)
     , dof_handler(triangulation)
     , direct_solver(read_direct_solver(prm))
   {
     // Every parameter is read and checked before any work is done.
+    scene.parse_parameters(prm, prm_directory);
+    const std::string mapping_degree = read_mapping_degree(prm);
+    const unsigned int geometry_degree =
+      mapping_degree != "auto" ? std::stoul(mapping_degree) :
+      scene.has_curved_boundary() ? std::max(degree, 2u) :
+                                    degree;
+    // A curved mapping takes its support points from the manifolds (the
+    // transfinite interpolation of the Hertz disc is costly): cached once
+    // per mesh, in setup_dofs().
+    if (geometry_degree > 1)
+      mapping = std::make_unique<MappingQCache<dim>>(geometry_degree);
+    else
+      mapping = std::make_unique<MappingQ<dim>>(1);
     prm.enter_subsection("Finite element");
     if (prm.get("Volumetric strain") == "B-bar")
-      volumetric_projection = std::make_unique<VolumetricProjection<dim>>(mapping, fe);
+      volumetric_projection = std::make_unique<VolumetricProjection<dim>>(*mapping, fe);
     prm.leave_subsection();
-    scene.parse_parameters(prm, prm_directory);
     materials.parse_parameters(prm);
     boundary_conditions.parse_parameters(prm, dim);
     load_stepping.parse_parameters(prm);
@@ -171,6 +202,8 @@ namespace contact_fem
   ContactProblem<dim>::setup_dofs()
   {
     TimerOutput::Scope t(*timer, "Setup: DoFs");
+    if (auto *cache = dynamic_cast<MappingQCache<dim> *>(mapping.get()))
+      cache->initialize(MappingQ<dim>(cache->get_degree()), triangulation);
     dof_handler.distribute_dofs(fe);
     owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
@@ -188,7 +221,7 @@ namespace contact_fem
     if (!contact_parameters.pairs.empty())
       {
         interface = std::make_unique<ContactInterface<dim>>();
-        interface->initialize(mapping, dof_handler, contact_parameters.pairs,
+        interface->initialize(*mapping, dof_handler, contact_parameters.pairs,
                               dirichlet_constraints, materials, comm);
         contact = std::make_unique<FrictionlessContact<dim>>(contact_parameters);
         contact->initialize(*interface);
@@ -255,7 +288,7 @@ namespace contact_fem
         function.set_time(time);
         ComponentMask mask(dim, false);
         mask.set(condition.component, true);
-        VectorTools::interpolate_boundary_values(mapping, dof_handler,
+        VectorTools::interpolate_boundary_values(*mapping, dof_handler,
                                                  condition.boundary_id, function,
                                                  dirichlet_constraints, mask);
       }
@@ -271,7 +304,7 @@ namespace contact_fem
   {
     TimerOutput::Scope t(*timer, "Assembly: bulk");
     const QGauss<dim>  quadrature(degree + 1);
-    FEValues<dim>      fe_values(mapping, fe, quadrature,
+    FEValues<dim>      fe_values(*mapping, fe, quadrature,
                             update_gradients | update_JxW_values);
     const unsigned int n = fe.n_dofs_per_cell();
     const FEValuesExtractors::Vector displacement(0);
@@ -332,7 +365,7 @@ namespace contact_fem
   {
     TimerOutput::Scope t(*timer, "Assembly: bulk");
     const QGauss<dim - 1> quadrature(degree + 1);
-    FEFaceValues<dim>     fe_face(mapping, fe, quadrature,
+    FEFaceValues<dim>     fe_face(*mapping, fe, quadrature,
                               update_values | update_normal_vectors |
                                 update_quadrature_points | update_JxW_values);
     std::vector<std::unique_ptr<FunctionParser<dim>>> pressures;
@@ -795,6 +828,9 @@ namespace contact_fem
         boundary_ids.insert({pair.slave, pair.master});
       Scene<dim>::check_mesh(triangulation, material_ids, boundary_ids);
     }
+    if (mapping->get_degree() > degree)
+      pcout << "Q" << degree << " elements on a mapping of degree " << mapping->get_degree()
+            << " (the curved boundaries are not replaced by chords)" << std::endl;
 
     if (root)
       {

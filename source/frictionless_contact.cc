@@ -128,10 +128,10 @@ namespace contact_fem
             constraints.is_constrained(slave.dofs[c]))
           continue;
 
-        // g_j(u) = n . (sum_l M_jl (X_l + u_l) - D (X_j + u_j)) / D = 0,
-        // solved for u_j,c.
+        // g_j(u) = (n . (sum_l M_jl (X_l + u_l) - D (X_j + u_j)) + c_j) / D = 0
+        // (c_j the curvature gap), solved for u_j,c.
         const double denominator = s.D * s.normal[c];
-        double       inhomogeneity = 0.;
+        double       inhomogeneity = s.curvature_gap / denominator;
         std::vector<std::pair<types::global_dof_index, double>> entries;
         // A term coefficient * u of component d of interface node `node`: a
         // fixed DoF moves its known value into the inhomogeneity.

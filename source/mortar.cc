@@ -108,7 +108,7 @@ namespace contact_fem
     dual_basis_coefficients(const LineFace                                &slave,
                             const std::vector<std::pair<double, double>> &intervals)
     {
-      const unsigned int  p = slave.degree(), n = p + 1;
+      const unsigned int  p = slave.shape_degree(), n = p + 1;
       // Exact for straight faces; curved faces have a non-polynomial
       // Jacobian, hence the generous rule.
       std::vector<double> xg, wg;
@@ -174,7 +174,7 @@ namespace contact_fem
                   const Point<2>                  &x,
                   double                          &xi)
       {
-        const unsigned int p = slave.degree();
+        const unsigned int p = slave.shape_degree();
         for (unsigned int it = 0; it < 30; ++it)
           {
             Tensor<1, 2> n, dn;
@@ -245,12 +245,13 @@ namespace contact_fem
                    const unsigned int                n_quadrature_points,
                    SegmentOperators                 &result)
     {
-      const unsigned int ps = slave.degree(), pm = master.degree();
+      const unsigned int ps = slave.shape_degree(), pm = master.shape_degree();
       double             lower = -1., upper = 1.;
       if (!overlap(slave, slave_normals, master, lower, upper))
         return false;
 
       result.D.assign(ps + 1, 0.);
+      result.weighted_gap.assign(ps + 1, Tensor<1, 2>());
       result.M.reinit(ps + 1, pm + 1);
       result.overlap_length = 0.;
       result.xi_begin       = lower;
@@ -267,11 +268,13 @@ namespace contact_fem
           Tensor<1, 2> n;
           for (unsigned int i = 0; i <= ps; ++i)
             n += shape_value(ps, i, xi) * slave_normals[i];
-          double eta = 0.;
-          if (!project_along(master, slave.point(xi), n, eta))
+          const Point<2> x_slave = slave.point(xi);
+          double         eta     = 0.;
+          if (!project_along(master, x_slave, n, eta))
             continue;
           // Guard against round-off just outside the master face.
           eta = std::max(-1., std::min(1., eta));
+          const Tensor<1, 2> separation = master.point(eta) - x_slave;
 
           result.overlap_length += jxw;
           for (unsigned int j = 0; j <= ps; ++j)
@@ -280,6 +283,7 @@ namespace contact_fem
               for (unsigned int k = 0; k <= ps; ++k)
                 phi_j += dual_coefficients(j, k) * shape_value(ps, k, xi);
               result.D[j] += phi_j * jxw;
+              result.weighted_gap[j] += phi_j * jxw * separation;
               for (unsigned int l = 0; l <= pm; ++l)
                 result.M(j, l) += phi_j * shape_value(pm, l, eta) * jxw;
             }

@@ -7,11 +7,12 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/mapping.h>
+#include <deal.II/fe/mapping_q.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <contact_fem/material.h>
+#include <contact_fem/mortar.h>
 #include <contact_fem/parameters.h>
 
 #include <array>
@@ -57,6 +58,9 @@ namespace contact_fem
     struct Face
     {
       std::vector<unsigned int> nodes;       ///< Mortar::LineFace node order
+      /// Reference positions of geometry nodes without DoFs: the midpoint of
+      /// a degree-1 face on a quadratic mapping; empty if isoparametric.
+      std::vector<Point<dim>>   geometry_points;
       double                    orientation; ///< makes the rotated tangent point outward
       unsigned int              pair;
       bool                      slave;
@@ -73,6 +77,12 @@ namespace contact_fem
       double        D         = 0.;     ///< int over the overlap of Phi_j
       double        full_area = 0.;     ///< int of N_j over the adjacent slave faces
       double        size      = 0.;     ///< nodal element size h_j
+      /// n_j . (int Phi_j (x_master - x_slave) ds - (sum_l M_jl x_l - D_j x_j))
+      /// at the search configuration: the part of the weighted gap that the
+      /// nodal form misses where the geometry is curved beyond the element
+      /// degree (the sag of a Q1 face on a quadratic mapping); zero up to
+      /// quadrature for isoparametric faces.
+      double        curvature_gap = 0.;
       std::vector<std::pair<unsigned int, double>> M; ///< (master node, M_jl)
       bool paired = false;              ///< has a master projection
     };
@@ -91,7 +101,7 @@ namespace contact_fem
      * Dirichlet constraints only (to flag fixed components).
      */
     void
-    initialize(const Mapping<dim>                 &mapping,
+    initialize(const MappingQ<dim>                &mapping,
                const DoFHandler<dim>              &dof_handler,
                const std::vector<ContactPair>     &pairs,
                const AffineConstraints<double>    &dirichlet,
@@ -129,10 +139,15 @@ namespace contact_fem
     Tensor<1, dim>
     displacement(const unsigned int n, const std::vector<double> &u) const;
 
+    /// The geometry of @p face at X + u (@p u per interface node; empty:
+    /// the reference configuration). Only 2D.
+    Mortar::LineFace
+    line(const Face &face, const std::vector<Tensor<1, dim>> &u = {}) const;
+
     /**
-     * Normalised weighted gap g_j = n_j . (sum_l M_jl x_l - D_j x_j) / D_j of
-     * a slave node at x = X + u (u at dofs()), positive when apart. The
-     * operators are those of the last update().
+     * Normalised weighted gap g_j = (n_j . (sum_l M_jl x_l - D_j x_j) +
+     * curvature_gap_j) / D_j of a slave node at x = X + u (u at dofs()),
+     * positive when apart. The operators are those of the last update().
      */
     double
     gap(const SlaveNode &s, const std::vector<double> &u) const;
@@ -142,7 +157,8 @@ namespace contact_fem
     std::vector<Face>           faces;
     std::vector<SlaveNode>      slave_nodes;
     std::vector<PairStatistics> statistics;
-    unsigned int                degree = 1;
+    unsigned int                degree = 1;          ///< of the elements
+    unsigned int                geometry_degree = 1; ///< of the face geometry
     /// How the surfaces are split over the ranks (locally owned faces).
     std::vector<unsigned int> slave_faces_per_rank, master_faces_per_rank;
 

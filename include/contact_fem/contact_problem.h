@@ -139,6 +139,10 @@ namespace contact_fem
     /// Marks and refines; false if the mesh is kept (nothing to refine).
     bool
     refine_mesh();
+    /// Refinement/Contact layers: flags the cells behind flagged contact-
+    /// surface cells, layer by layer.
+    void
+    extend_refinement_below_contact_faces();
     /// Solves one cycle on the current mesh; returns false if Newton failed.
     bool
     run_cycle(const unsigned int cycle, Json &cycle_record);
@@ -186,7 +190,10 @@ namespace contact_fem
 
     parallel::distributed::Triangulation<dim> triangulation;
     FESystem<dim>                             fe;
-    MappingQ<dim>                             mapping;
+    /// Element degree, or 2 for Q1 on curved boundaries (Finite
+    /// element/Mapping degree); made once the scene is known. Degree 2 is a
+    /// MappingQCache, filled per mesh.
+    std::unique_ptr<MappingQ<dim>>            mapping;
     DoFHandler<dim>                           dof_handler;
     /// Present with Finite element/Volumetric strain = B-bar (after fe and
     /// mapping, which it refers to).

@@ -16,18 +16,32 @@ namespace contact_fem
   namespace Mortar
   {
     /**
-     * A surface face of polynomial degree p described by its p+1 nodes.
-     * Node order follows deal.II's face DoF order: the two end vertices first
-     * (parameter xi = -1 and xi = +1), then the interior node (xi = 0, p = 2).
+     * A surface face whose geometry has polynomial degree p, described by its
+     * p+1 nodes. Node order follows deal.II's face DoF order: the two end
+     * vertices first (parameter xi = -1 and xi = +1), then the interior node
+     * (xi = 0, p = 2).
+     *
+     * The displacement and the multipliers on the face use the Lagrange
+     * shapes of shape_degree(), the element degree. It equals the geometry
+     * degree (isoparametric) unless a degree-1 element lies on a curved,
+     * degree-2 geometry (a quadratic mapping of Q1 elements): then the
+     * interior node is a geometry node only and carries no DoFs.
      */
     struct LineFace
     {
       std::vector<Point<2>> nodes;
+      /// Degree of the shape functions of the DoFs; 0: the geometry degree.
+      unsigned int element_degree = 0;
 
       unsigned int
       degree() const
       {
         return nodes.size() - 1;
+      }
+      unsigned int
+      shape_degree() const
+      {
+        return element_degree > 0 ? element_degree : degree();
       }
       /// Position at parameter xi in [-1, 1].
       Point<2>
@@ -86,6 +100,11 @@ namespace contact_fem
       std::vector<double> D;
       /// int_overlap Phi_j N^m_l ds, slave node j by master node l.
       FullMatrix<double> M;
+      /// int_overlap Phi_j (x_master - x_slave) ds for every slave node j:
+      /// the weighted gap vector on the face geometry (curved where the
+      /// geometry is), which the nodal form sum_l M_jl x_l - D_j x_j only
+      /// equals for isoparametric faces.
+      std::vector<Tensor<1, 2>> weighted_gap;
       /// Length of the overlapped part of the slave face.
       double overlap_length = 0.;
       /// Slave parameter interval of the overlap.

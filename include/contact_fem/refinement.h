@@ -17,6 +17,7 @@ namespace contact_fem
     std::string  strategy        = "fixed fraction";
     double       refine_fraction  = 0.3;
     double       coarsen_fraction = 0.;
+    unsigned int contact_layers   = 2; ///< cell layers refined below a contact face
     unsigned int max_level        = 20;
     unsigned int max_cells        = 1000000;
     double       penalty_normal     = 1e4;

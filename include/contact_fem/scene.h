@@ -65,6 +65,13 @@ namespace contact_fem
                const std::set<types::material_id>              &material_ids,
                const std::set<types::boundary_id>              &boundary_ids);
 
+    /// Whether the mesh has curved boundaries (manifolds other than flat).
+    bool
+    has_curved_boundary() const
+    {
+      return type == "hertz cylinder";
+    }
+
     std::string  type;
     std::string  mesh_file;
     unsigned int global_refinements = 0;

@@ -6,7 +6,11 @@
 //    int Phi_j N_k = delta_jk int N_k (computed here by 24-point Gauss);
 //  - a flat master parallel to the slave at distance d gives the nodal gap
 //    d at every fully covered node: sum_l M_jl y_l - D_j y_j = d D_j;
-//  - degree 1 and 2 slave faces, degree 1 and 2 master faces.
+//  - degree 1 and 2 slave faces, degree 1 and 2 master faces;
+//  - a degree-1 element on a curved (quadratic) face geometry: the dual basis
+//    stays biorthogonal, and the weighted gap vector int Phi_j (x_m - x_s)
+//    equals the gap of the curve integrated here by 24-point Gauss (the
+//    nodal form sum M y - D y only sees the straight chord).
 #include <deal.II/base/quadrature_lib.h>
 
 #include <contact_fem/mortar.h>
@@ -42,7 +46,7 @@ namespace
   void
   biorthogonality(const Mortar::LineFace &slave)
   {
-    const unsigned int       p = slave.degree();
+    const unsigned int       p = slave.shape_degree();
     const FullMatrix<double> A = Mortar::dual_basis_coefficients(slave);
     const QGauss<1>          q(24);
     double                   worst = 0.;
@@ -132,4 +136,36 @@ main()
   arc.nodes[2]         = Point<2>(0.5, -0.1);
   std::cout << "Curved slave face, degree 2" << std::endl;
   biorthogonality(arc);
+
+  // Degree-1 element on that curved face, master y = 0.1 above it: the gap
+  // is g(xi) = 0.1 + 0.1 (1 - xi^2) along the face.
+  arc.element_degree = 1;
+  std::cout << "Curved slave face, degree-1 element" << std::endl;
+  biorthogonality(arc);
+  const Mortar::LineFace   flat_master = line(Point<2>(1.5, 0.1), Point<2>(-0.5, 0.1), 1);
+  const FullMatrix<double> A           = Mortar::dual_basis_coefficients(arc);
+  const std::vector<Tensor<1, 2>> normals(2, Tensor<1, 2>({0., 1.}));
+  Mortar::SegmentOperators        ops;
+  Mortar::integrate_pair(arc, normals, A, flat_master, 6, ops);
+  const QGauss<1> q(24);
+  for (unsigned int j = 0; j < 2; ++j)
+    {
+      double expected = 0., nodal = -ops.D[j] * arc.nodes[j][1];
+      for (unsigned int i = 0; i < q.size(); ++i)
+        {
+          const double xi  = 2. * q.point(i)[0] - 1.;
+          const double jxw = 2. * q.weight(i) * arc.tangent(xi).norm();
+          const double phi = A(j, 0) * Mortar::shape_value(1, 0, xi) +
+                             A(j, 1) * Mortar::shape_value(1, 1, xi);
+          expected += phi * (0.1 - arc.point(xi)[1]) * jxw;
+        }
+      for (unsigned int l = 0; l < 2; ++l)
+        nodal += ops.M(j, l) * flat_master.nodes[l][1];
+      check("weighted gap of node " + std::to_string(j) + " on the curve",
+            ops.weighted_gap[j][1], expected, 1e-6);
+      check("nodal form of node " + std::to_string(j) + " (chord: gap 0.1 D_j)", nodal,
+            0.1 * ops.D[j], 1e-12);
+      std::cout << "  curvature part of node " << j << ": "
+                << (ops.weighted_gap[j][1] - nodal) / ops.D[j] << std::endl;
+    }
 }
