@@ -558,16 +558,25 @@ def main():
     w("Energy error: `err_E = sqrt(2 |Pi_h + W - Pi_ref|)`, Pi = 1/2 u.K u - f.u from "
       "summary.json, relative to |u_ref|_E = sqrt(2 * strain energy) = %.6g of the "
       "reference." % ref["norm"])
-    w("W (`analytical.chord_gap_work`, Q1 only) is a geometry error, not a "
-      "discretisation error of the displacement: Q1 replaces the arc by chords, which lie "
-      "inside the circle by h^2 t(1-t)/(2R), so the discrete cylinder is shorter where it "
-      "touches and the contact force does the extra work W = sum over slave faces of "
-      "(lambda_a + lambda_b) h^3 / (24 R), which lowers Pi_h by about W. On the adaptive "
-      "Q1 meshes W is as large as (Pi_h - Pi_ref) itself: without it the Q1 energy "
-      "'error' jumps up and down from cycle to cycle, with the size of the contact "
-      "elements, and the effectivities scatter (column 'raw' below). The estimate does not "
-      "see W (it measures the stress field on the discrete domain), so it is compared "
-      "with the error without W. Q2 arcs deviate from the circle by O(h^4/R^3): W = 0.\n")
+    chords = any(c["W"] != 0. for r in runs.values() for c in r["cycles"])
+    if not chords:
+        w("W = 0 in this study: the Q1 runs put their elements on a quadratic mapping "
+          "(`Finite element/Mapping degree = auto`), so the arc is not replaced by chords. "
+          "Q1 on chords (`Mapping degree = 1`) would report the chord-gap work W "
+          "(`analytical.chord_gap_work`), the work of the contact force on the sag "
+          "h^2 t(1-t)/(2R) of the chords, which lowers Pi_h by about W, as much as "
+          "(Pi_h - Pi_ref) itself on adaptive meshes; the formula then uses Pi_h + W.\n")
+    else:
+        w("W (`analytical.chord_gap_work`, Q1 only) is a geometry error, not a "
+          "discretisation error of the displacement: Q1 replaces the arc by chords, which lie "
+          "inside the circle by h^2 t(1-t)/(2R), so the discrete cylinder is shorter where it "
+          "touches and the contact force does the extra work W = sum over slave faces of "
+          "(lambda_a + lambda_b) h^3 / (24 R), which lowers Pi_h by about W. On the adaptive "
+          "Q1 meshes W is as large as (Pi_h - Pi_ref) itself: without it the Q1 energy "
+          "'error' jumps up and down from cycle to cycle, with the size of the contact "
+          "elements, and the effectivities scatter (column 'raw' below). The estimate does not "
+          "see W (it measures the stress field on the discrete domain), so it is compared "
+          "with the error without W. Q2 arcs deviate from the circle by O(h^4/R^3): W = 0.\n")
     w("Reference: one Q2 run (not a Q1 one: a Q1 overkill accurate enough would need "
       "well over a million DoFs, see below) used for both degrees; both degrees "
       "approximate the same continuous problem.\n")
@@ -604,8 +613,8 @@ def main():
                   for c in r["cycles"] if c["negative"] and c["cycle"] > 0})
     w("- Sign: for a conforming approximation of the variational inequality Pi_h >= Pi. "
       "Here Pi_h < Pi_ref occurs (marked `<0` in the table) in: %s (besides cycle 0, the "
-      "common start mesh). There the discrete problem is softer than the exact one (Q1: the "
-      "polygonal arc beyond the leading-order W; mortar contact enforces the gap weakly), the "
+      "common start mesh). There the discrete problem is softer than the exact one (Q1 on "
+      "chords: the polygonal arc beyond the leading-order W; mortar contact enforces the gap weakly), the "
       "energy difference is dominated by that consistency error and sqrt(2|dPi|) is not a "
       "bound of the energy-norm error." % (", ".join(neg) if neg else "none"))
     w("")
@@ -680,7 +689,8 @@ def main():
             e = summary.get((deg, s))
             if e:
                 raw = ""
-                if deg == 1 and e["eff_raw"]:
+                if deg == 1 and e["eff_raw"] and any(
+                        c["W"] != 0. for c in runs[(deg, s)]["cycles"]):
                     raw = "; raw, without W: %s" % " / ".join(fmt(x) for x in e["eff_raw"])
                 w("| Q%d %s effectivity in [0.8, 1.25] (last cycles %s) | %s (%s–%s)%s | %s |" % (
                     deg, LABEL[s], ",".join(str(k) for k in e["eff_cycles"]), fmt(e["eff"]),
