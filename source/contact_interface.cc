@@ -445,28 +445,19 @@ namespace contact_fem
         // A node counts as paired when the master covers a fair part of its
         // support; tiny or negative dual weights at the rim of the master
         // surface would make its gap ill-defined.
-        const auto node_position = [&](const unsigned int n) {
-          Tensor<1, 2> x;
-          for (unsigned int d = 0; d < 2; ++d)
-            x[d] = nodes[n].reference[d] + u[n][d];
-          return x;
-        };
         slave_nodes.clear();
         for (auto &[n, s] : slave_data)
           {
             s.paired = s.D > 1e-2 * s.full_area;
             if (s.paired)
               {
-                Tensor<1, 2> nodal = -s.D * node_position(n);
                 for (const auto &[m, value] : M_of_node[n])
-                  {
-                    s.M.emplace_back(m, value);
-                    nodal += value * node_position(m);
-                  }
+                  s.M.emplace_back(m, value);
+                // gap() is still the nodal form here (curvature_gap = 0).
                 Tensor<1, 2> normal;
                 for (unsigned int d = 0; d < 2; ++d)
                   normal[d] = s.normal[d];
-                s.curvature_gap = normal * (weighted_gap_of_node[n] - nodal);
+                s.curvature_gap = normal * weighted_gap_of_node[n] - s.D * gap(s, u_at_dofs);
               }
             slave_nodes.push_back(s);
           }

@@ -115,32 +115,15 @@ namespace contact_fem
 
   namespace
   {
-    unsigned int
-    read_degree(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Finite element");
-      const unsigned int p = prm.get_integer("Degree");
-      prm.leave_subsection();
-      return p;
-    }
-
-    /// "auto" is resolved by the caller, which knows the scene.
+    /// One entry of @p subsection, for the members made before the body
+    /// of the constructor runs.
     std::string
-    read_mapping_degree(ParameterHandler &prm)
+    read_entry(ParameterHandler &prm, const std::string &subsection, const std::string &key)
     {
-      prm.enter_subsection("Finite element");
-      const std::string value = prm.get("Mapping degree");
+      prm.enter_subsection(subsection);
+      const std::string value = prm.get(key);
       prm.leave_subsection();
       return value;
-    }
-
-    std::string
-    read_direct_solver(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Linear solver");
-      const std::string name = prm.get("Direct solver");
-      prm.leave_subsection();
-      return name;
     }
   } // namespace
 
@@ -152,17 +135,18 @@ namespace contact_fem
     , console(std::cout)
     , pcout(console, Utilities::MPI::this_mpi_process(comm) == 0)
     , scene_name(scene_name)
-    , degree(read_degree(prm))
+    , degree(std::stoul(read_entry(prm, "Finite element", "Degree")))
     , triangulation(comm,
                     typename Triangulation<dim>::MeshSmoothing(
                       Triangulation<dim>::limit_level_difference_at_vertices))
     , fe(FE_Q<dim>(degree), dim)
     , dof_handler(triangulation)
-    , direct_solver(read_direct_solver(prm))
+    , direct_solver(read_entry(prm, "Linear solver", "Direct solver"))
   {
     // Every parameter is read and checked before any work is done.
     scene.parse_parameters(prm, prm_directory);
-    const std::string mapping_degree = read_mapping_degree(prm);
+    // "auto" depends on the scene.
+    const std::string mapping_degree = read_entry(prm, "Finite element", "Mapping degree");
     const unsigned int geometry_degree =
       mapping_degree != "auto" ? std::stoul(mapping_degree) :
       scene.has_curved_boundary() ? std::max(degree, 2u) :
