@@ -836,10 +836,11 @@ namespace contact_fem
             break;
           }
         timer->reset();
+        uncounted_wall_time = 0.;
         Timer      cycle_timer;
         Json       record    = Json::object();
         const bool converged = run_cycle(cycle, record);
-        const double wall    = cycle_timer.wall_time();
+        const double wall    = cycle_timer.wall_time() - uncounted_wall_time;
         cumulative += wall;
         record.set("wall_time", wall).set("cumulative_wall_time", cumulative);
         Json timing = Json::object();
@@ -945,6 +946,89 @@ namespace contact_fem
              << "see Boundary conditions/Fixed points) or a load beyond small-strain theory";
         pcout << "  Warning: " << text.str() << "." << std::endl;
         cycle_record.set("warning", text.str());
+      }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::warn_about_weakly_held_rotation(Json &cycle_record)
+  {
+    // Frictionless contact on a curved surface resists a rotation about its
+    // centre of curvature only through the discretisation (a polygon or a
+    // piecewise-quadratic arc is not quite a circle): that rigid-body mode
+    // then has a stiffness far below the elastic ones, the solver finds no
+    // zero pivot, and the solution carries a rotation set by the mesh.
+    // Deformation turns a body by about its strains, so a mean rotation many
+    // times the largest mean strain of the model is such a mode.
+    constexpr double ratio_limit = 10.;
+    constexpr unsigned int n_rotations = dim == 2 ? 1 : 3;
+
+    ghosted_solution = solution;
+    const QGauss<dim>                  quadrature(degree + 1);
+    FEValues<dim>                      fe_values(*mapping, fe, quadrature,
+                                update_gradients | update_JxW_values);
+    const FEValuesExtractors::Vector   displacement(0);
+    std::vector<Tensor<2, dim>>        gradients(quadrature.size());
+    std::vector<types::material_id>    bodies;
+    for (const auto &[id, constants] : materials.bodies)
+      bodies.push_back(id);
+    // Per body: volume, integral of the rotation (skew part of grad u),
+    // integral of |eps|^2.
+    const unsigned int  stride = n_rotations + 2;
+    std::vector<double> sums(bodies.size() * stride, 0.);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_gradients(ghosted_solution, gradients);
+          const auto body = std::lower_bound(bodies.begin(), bodies.end(), cell->material_id());
+          double *s = &sums[(body - bodies.begin()) * stride];
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const Tensor<2, dim> &G  = gradients[q];
+              const double          dV = fe_values.JxW(q);
+              s[0] += dV;
+              if constexpr (dim == 2)
+                s[1] += 0.5 * (G[1][0] - G[0][1]) * dV;
+              else
+                for (unsigned int i = 0; i < 3; ++i)
+                  s[1 + i] += 0.5 * (G[(i + 2) % 3][(i + 1) % 3] - G[(i + 1) % 3][(i + 2) % 3]) * dV;
+              const SymmetricTensor<2, dim> eps = symmetrize(G);
+              s[n_rotations + 1] += (eps * eps) * dV;
+            }
+        }
+    Utilities::MPI::sum(sums, comm, sums);
+
+    double largest_strain = 0.;
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      if (sums[b * stride] > 0.)
+        largest_strain =
+          std::max(largest_strain, std::sqrt(sums[b * stride + n_rotations + 1] / sums[b * stride]));
+    if (!(largest_strain > 0.))
+      return;
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        const double volume = sums[b * stride];
+        if (!(volume > 0.))
+          continue;
+        double rotation = 0.;
+        for (unsigned int i = 0; i < n_rotations; ++i)
+          rotation += std::pow(sums[b * stride + 1 + i] / volume, 2);
+        rotation = std::sqrt(rotation);
+        if (rotation > ratio_limit * largest_strain)
+          {
+            std::ostringstream text;
+            text << "body " << static_cast<unsigned int>(bodies[b]) << " turns by " << rotation
+                 << " rad as a whole, " << std::setprecision(3) << rotation / largest_strain
+                 << std::setprecision(6) << " times the largest mean strain of the model ("
+                 << largest_strain << "): a rigid-body rotation that the supports and the "
+                 << "contact hold only weakly (frictionless contact on a curved surface "
+                 << "resists a rotation about its centre only through the discretisation), "
+                 << "so the results depend on the mesh; hold it (see Boundary "
+                 << "conditions/Fixed points)";
+            pcout << "  Warning: " << text.str() << "." << std::endl;
+            cycle_record.set("rotation_warning", text.str());
+          }
       }
   }
 
@@ -1095,6 +1179,7 @@ namespace contact_fem
     current_time = t_done;
     cycle_record.set("load_steps", steps);
     warn_about_large_displacements(cycle_record);
+    warn_about_weakly_held_rotation(cycle_record);
     warn_about_singular_stiffness(cycle_record);
     if (n_solved == 0)
       return false;
@@ -1165,6 +1250,15 @@ namespace contact_fem
             cycle_record.set("effectivity_index", effectivity);
             pcout << "    effectivity index eta / error: " << std::setprecision(3)
                   << effectivity << std::setprecision(6) << std::endl;
+            pcout << "    effectivity in [0.8, 1.25]:   "
+                  << (effectivity >= 0.8 && effectivity <= 1.25 ? "yes" : "no") << std::endl;
+            const double plain = cycle_record["plain_spr_estimated_error"].number_value();
+            if (std::isfinite(plain))
+              {
+                cycle_record.set("plain_spr_effectivity_index", plain / energy_error);
+                pcout << "    effectivity of plain SPR:     " << std::setprecision(3)
+                      << plain / energy_error << std::setprecision(6) << std::endl;
+              }
           }
         if (output.write_vtu)
           write_error_indicators();

@@ -247,6 +247,9 @@ namespace contact_fem
       read_fit(const unsigned int vertex, const types::material_id body) const;
       const std::vector<PatchFit<dim>> &
       effective_fit(const unsigned int vertex, const types::material_id body);
+      template <typename Function>
+      SymmetricTensor<2, dim>
+      traction_correction(const ContactNodeTraction<dim> &node, const Function &fitted) const;
       void
       recover_nodal_values();
       Result
@@ -279,8 +282,9 @@ namespace contact_fem
       /// Per active cell index: sampling points and FE stresses there.
       std::vector<std::vector<Point<dim>>>              sample_points;
       std::vector<std::vector<SymmetricTensor<2, dim>>> sample_stress;
-      /// Per active cell index: contact nodes on its slave boundary faces.
-      std::vector<std::vector<unsigned int>> cell_contacts;
+      /// Per active cell index: (support point of fe_q, contact node) for the
+      /// contact nodes at support points of its slave boundary faces.
+      std::vector<std::vector<std::pair<unsigned int, std::size_t>>> cell_contacts;
 
       /// Stage 1: per-vertex fits in an FE_Q(1) system (layout per slot:
       /// coefficients, h, kind).
@@ -465,8 +469,9 @@ namespace contact_fem
         }
       const auto tree = pack_rtree_of_indices(locations);
 
-      const FE_Q<dim>     fe_geometry(1);
-      FEFaceValues<dim>   fe_face(mapping, fe_geometry, QGauss<dim - 1>(1), update_normal_vectors);
+      const std::vector<Point<dim>> &unit_points = fe_q.get_unit_support_points();
+      const FE_Q<dim>                fe_geometry(1);
+      FEFaceValues<dim> fe_face(mapping, fe_geometry, QGauss<dim - 1>(1), update_normal_vectors);
       std::vector<std::size_t> hits;
 
       for (const auto &cell : tria.active_cell_iterators())
@@ -474,37 +479,15 @@ namespace contact_fem
           for (const unsigned int f : cell->face_indices())
             if (cell->face(f)->at_boundary())
               {
-                // Candidate node positions on this face: its vertices, the
-                // midpoints of its edges, and (3D) its centre.
-                std::vector<Point<dim>> unit;
-                for (unsigned int i = 0; i < GeometryInfo<dim>::vertices_per_face; ++i)
-                  unit.push_back(GeometryInfo<dim>::unit_cell_vertex(
-                    GeometryInfo<dim>::face_to_cell_vertices(f, i)));
-                const unsigned int n_face_vertices = unit.size();
-                for (unsigned int i = 0; i < n_face_vertices; ++i)
-                  for (unsigned int j = i + 1; j < n_face_vertices; ++j)
-                    {
-                      unsigned int n_differ = 0;
-                      for (unsigned int d = 0; d < dim; ++d)
-                        if (unit[i][d] != unit[j][d])
-                          ++n_differ;
-                      if (n_differ == 1)
-                        unit.push_back(Point<dim>((unit[i] + unit[j]) / 2.));
-                    }
-                if (dim == 3)
-                  {
-                    Point<dim> centre;
-                    for (unsigned int i = 0; i < n_face_vertices; ++i)
-                      centre += unit[i] / double(n_face_vertices);
-                    unit.push_back(centre);
-                  }
-
-                const double tolerance = location_tolerance * cell->diameter();
-                bool         have_normal = false;
+                const double   tolerance   = location_tolerance * cell->diameter();
+                bool           have_normal = false;
                 Tensor<1, dim> face_normal;
-                for (const Point<dim> &u : unit)
+                // The support points of the recovered field on this face.
+                for (unsigned int k = 0; k < unit_points.size(); ++k)
                   {
-                    const Point<dim> x = mapping.transform_unit_to_real_cell(cell, u);
+                    if (!fe_q.has_support_on_face(k, f))
+                      continue;
+                    const Point<dim> x     = mapping.transform_unit_to_real_cell(cell, unit_points[k]);
                     Point<dim>       lower = x, upper = x;
                     for (unsigned int d = 0; d < dim; ++d)
                       {
@@ -528,16 +511,10 @@ namespace contact_fem
                         const Tensor<1, dim> n =
                           contact_nodes[j].normal / contact_nodes[j].normal.norm();
                         if (n * face_normal > orientation_tolerance)
-                          cell_contacts[cell->active_cell_index()].push_back(j);
+                          cell_contacts[cell->active_cell_index()].emplace_back(k, j);
                       }
                   }
               }
-
-      for (auto &list : cell_contacts)
-        {
-          std::sort(list.begin(), list.end());
-          list.erase(std::unique(list.begin(), list.end()), list.end());
-        }
     }
 
     template <int dim>
@@ -602,114 +579,23 @@ namespace contact_fem
       fit.kind             = (d == degree ? full_fit : reduced_fit);
       const unsigned int md = basis.size(d);
 
-      // The least-squares system of all stress components together (they are
-      // coupled only by the contact rows).
-      const unsigned int       N = ns * md;
-      LAPACKFullMatrix<double> M(N, N);
-      Vector<double>           rhs(N);
-      for (unsigned int c = 0; c < ns; ++c)
-        for (unsigned int k = 0; k < md; ++k)
-          {
-            for (unsigned int l = 0; l < md; ++l)
-              M(c * md + k, c * md + l) = A(k, l);
-            rhs(c * md + k) = B(k, c);
-          }
-
-      // Contact rows: every contact node on a slave boundary face of a patch
-      // cell. The dimensionless penalties are multiplied by the mean diagonal
-      // entry of the patch's sampling matrix, so that a penalty of 1 weighs a
-      // contact condition like one sampling point of average magnitude; the
-      // residuals of both are stresses, so the weights carry no units.
-      std::vector<unsigned int> nodes;
-      for (const auto &cell : cells)
-        nodes.insert(nodes.end(),
-                     cell_contacts[cell->active_cell_index()].begin(),
-                     cell_contacts[cell->active_cell_index()].end());
-      std::sort(nodes.begin(), nodes.end());
-      nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-      if (!nodes.empty())
-        {
-          double scale = 0;
-          for (unsigned int k = 0; k < md; ++k)
-            scale += A(k, k);
-          scale /= md;
-
-          // One penalty row sum_c sum_k a_ck c_ck = target, where a_ck is the
-          // weighted mean over the samples of (component weight of c at the
-          // sample's normal) * phi_k(sample).
-          Vector<double> g(N);
-          const auto add_row = [&](const ContactNodeTraction<dim> &node,
-                                   const auto                     &component_weights,
-                                   const double                    target,
-                                   const double                    weight) {
-            if (weight == 0.)
-              return;
-            g = 0.;
-            const auto add_point = [&](const Point<dim>     &x,
-                                       const Tensor<1, dim> &n,
-                                       const double          w) {
-              basis.values(Point<dim>((x - fit.centre) / fit.h), md, phi);
-              const std::array<double, n_stress<dim>> cw = component_weights(n);
-              for (unsigned int c = 0; c < ns; ++c)
-                for (unsigned int k = 0; k < md; ++k)
-                  g(c * md + k) += w * cw[c] * phi[k];
-            };
-            if (node.samples.empty())
-              add_point(node.location, node.normal / node.normal.norm(), 1.);
-            else
-              {
-                double total = 0.;
-                for (const TractionSample<dim> &q : node.samples)
-                  total += q.weight;
-                AssertThrow(std::abs(total) > 0.,
-                            ExcMessage("StressRecovery: the traction samples of a "
-                                       "contact node have zero total weight."));
-                for (const TractionSample<dim> &q : node.samples)
-                  add_point(q.point, q.normal / q.normal.norm(), q.weight / total);
-              }
-            for (unsigned int i = 0; i < N; ++i)
-              {
-                if (g(i) == 0.)
-                  continue;
-                for (unsigned int j = 0; j < N; ++j)
-                  M(i, j) += weight * g(i) * g(j);
-                rhs(i) += weight * target * g(i);
-              }
-          };
-
-          // Weights of e . sigma . n in the unrolled symmetric components.
-          const auto projection_weights = [](const Tensor<1, dim> &e) {
-            return [e](const Tensor<1, dim> &n) {
-              std::array<double, n_stress<dim>> w;
-              for (unsigned int c = 0; c < n_stress<dim>; ++c)
-                {
-                  const auto ij = SymmetricTensor<2, dim>::unrolled_to_component_indices(c);
-                  w[c]          = (ij[0] == ij[1] ? e[ij[0]] * n[ij[0]] :
-                                           e[ij[0]] * n[ij[1]] + e[ij[1]] * n[ij[0]]);
-                }
-              return w;
-            };
-          };
-
-          for (const unsigned int j : nodes)
-            {
-              const ContactNodeTraction<dim> &node = contact_nodes[j];
-              const Tensor<1, dim>            n    = node.normal / node.normal.norm();
-              add_row(node, projection_weights(n), n * node.traction,
-                      settings.penalty_normal * scale);
-              for (const Tensor<1, dim> &t : tangents<dim>(n))
-                add_row(node, projection_weights(t), t * node.traction,
-                        settings.penalty_tangential * scale);
-            }
-        }
-
+      // The least-squares system, one right-hand side per stress component
+      // (all components share the sampling matrix).
+      LAPACKFullMatrix<double> M(md, md);
+      for (unsigned int k = 0; k < md; ++k)
+        for (unsigned int l = 0; l < md; ++l)
+          M(k, l) = A(k, l);
       M.compute_lu_factorization();
-      M.solve(rhs);
-
+      Vector<double> column(md);
       fit.coefficients.assign(ns * m, 0.);
       for (unsigned int c = 0; c < ns; ++c)
-        for (unsigned int k = 0; k < md; ++k)
-          fit.coefficients[c * m + k] = rhs(c * md + k);
+        {
+          for (unsigned int k = 0; k < md; ++k)
+            column(k) = B(k, c);
+          M.solve(column);
+          for (unsigned int k = 0; k < md; ++k)
+            fit.coefficients[c * m + k] = column(k);
+        }
       return fit;
     }
 
@@ -828,6 +714,53 @@ namespace contact_fem
       return effective_cache.emplace(key, std::move(result)).first->second;
     }
 
+    // The recovered value at a contact node solves the node's patch problem
+    // augmented by the traction condition: minimise
+    //   |sigma* - sigma_fit|^2 + alpha_n (n.(r))^2 + alpha_t |(I - n n) r|^2,
+    //   r = t - mean of sigma* n over the node's support,
+    // over constant shifts sigma* = sigma_fit + delta of the node's fitted
+    // polynomial (Frobenius norm, which counts a shear component twice). The
+    // minimiser changes only the traction components:
+    //   delta = alpha_n / (1 + alpha_n) (n.r) n(x)n
+    //         + sum_t alpha_t / (2 + alpha_t) (t.r) (n(x)t + t(x)n).
+    // The shift is applied to this node's value only: a contact condition in
+    // the fits of neighbouring patches (as first implemented) fitted the
+    // pressure's variation along the slightly curved surface with the
+    // polynomial's gradient across it, and overestimated the error several
+    // times on coarse contact zones.
+    template <int dim>
+    template <typename Function>
+    SymmetricTensor<2, dim>
+    SPREstimator<dim>::traction_correction(const ContactNodeTraction<dim> &node,
+                                           const Function                 &fitted) const
+    {
+      Tensor<1, dim> mean_traction;
+      if (node.samples.empty())
+        mean_traction = fitted(node.location) * (node.normal / node.normal.norm());
+      else
+        {
+          double total = 0.;
+          for (const TractionSample<dim> &q : node.samples)
+            {
+              mean_traction += q.weight * (fitted(q.point) * (q.normal / q.normal.norm()));
+              total += q.weight;
+            }
+          AssertThrow(std::abs(total) > 0.,
+                      ExcMessage("StressRecovery: the traction samples of a contact node "
+                                 "have zero total weight."));
+          mean_traction /= total;
+        }
+      const Tensor<1, dim> r = node.traction - mean_traction;
+      const Tensor<1, dim> n = node.normal / node.normal.norm();
+
+      const double alpha_n = settings.penalty_normal, alpha_t = settings.penalty_tangential;
+      SymmetricTensor<2, dim> delta =
+        (alpha_n / (1. + alpha_n) * (n * r)) * symmetrize(outer_product(n, n));
+      for (const Tensor<1, dim> &t : tangents<dim>(n))
+        delta += (alpha_t / (2. + alpha_t) * (t * r) * 2.) * symmetrize(outer_product(n, t));
+      return delta;
+    }
+
     template <int dim>
     void
     SPREstimator<dim>::recover_nodal_values()
@@ -869,9 +802,24 @@ namespace contact_fem
         }
       const std::vector<Point<dim>> &unit_points = fe_q.get_unit_support_points();
 
+      // The contact node at a support point, keyed by the DoF of the first
+      // stress component of the slave body's slot there (a DoF may be
+      // reached from a cell without the slave face, so the match found on
+      // the cells with it is recorded per DoF).
+      std::map<types::global_dof_index, std::size_t> contact_of_dof;
+      std::vector<types::global_dof_index> dof_indices(fe_recovered->n_dofs_per_cell());
+      for (const auto &dof_cell : dof_recovered.active_cell_iterators())
+        if (!dof_cell->is_artificial() && !cell_contacts[dof_cell->active_cell_index()].empty())
+          {
+            dof_cell->get_dof_indices(dof_indices);
+            const unsigned int slot = slot_of(dof_cell->material_id());
+            for (const auto &[k, j] : cell_contacts[dof_cell->active_cell_index()])
+              contact_of_dof.emplace(
+                dof_indices[fe_recovered->component_to_system_index(slot * n_stress<dim>, k)], j);
+          }
+
       TrilinosWrappers::MPI::Vector        owned_values(owned, comm);
       std::vector<bool>                    done(owned.n_elements(), false);
-      std::vector<types::global_dof_index> dof_indices(fe_recovered->n_dofs_per_cell());
       for (const auto &dof_cell : dof_recovered.active_cell_iterators())
         if (dof_cell->is_locally_owned())
           {
@@ -908,17 +856,28 @@ namespace contact_fem
                     // body's value; slots of bodies absent here are unused (0).
                     if (present)
                       {
+                        // The recovered polynomial of this support point: the
+                        // mean of the fits of its object's vertices.
+                        const auto fitted = [&](const Point<dim> &x) {
+                          SymmetricTensor<2, dim> sigma;
+                          for (const unsigned int v : object_vertices[k])
+                            {
+                              const auto &fits_v = effective_fit(cell->vertex_index(v), body);
+                              for (const PatchFit<dim> &fit : fits_v)
+                                sigma += evaluate(fit, basis, x) /
+                                         double(fits_v.size() * object_vertices[k].size());
+                            }
+                          return sigma;
+                        };
                         const Point<dim> x =
                           (k < GeometryInfo<dim>::vertices_per_cell ?
                              vertex_point[cell->vertex_index(k)] :
                              mapping.transform_unit_to_real_cell(cell, unit_points[k]));
-                        for (const unsigned int v : object_vertices[k])
-                          {
-                            const auto &fits_v = effective_fit(cell->vertex_index(v), body);
-                            for (const PatchFit<dim> &fit : fits_v)
-                              value += evaluate(fit, basis, x) /
-                                       double(fits_v.size() * object_vertices[k].size());
-                          }
+                        value = fitted(x);
+                        const auto contact = contact_of_dof.find(
+                          dof_indices[fe_recovered->component_to_system_index(slot * n_stress<dim>, k)]);
+                        if (contact != contact_of_dof.end())
+                          value += traction_correction(contact_nodes[contact->second], fitted);
                       }
                     found = values.emplace(key, value).first;
                   }

@@ -168,6 +168,10 @@ if (( analyse_only == 0 )); then
   study_start=$(date +%s)
 
   common=(--set "Output/Write VTU=false" --set "Output/Write pressure profile=false")
+  # Study runs: plain SPR alongside the SPR-contact estimate, on the same
+  # solution (not counted in the cycle wall times): what the contact terms
+  # change.
+  compare=(--set "Refinement/Compare with plain SPR=true")
   start_mesh=(--set "Geometry/Hertz cylinder/Contact refinements=$start_cr")
   adaptive=(--set "Refinement/Strategy=fixed fraction" --set "Refinement/Refine fraction=0.3"
             --set "Refinement/Coarsen fraction=0" --set "Refinement/Number of cycles=30")
@@ -175,10 +179,10 @@ if (( analyse_only == 0 )); then
   for degree in 1 2; do
     if (( degree == 1 )); then cap=$dof_cap_q1; global_cycles=4; else cap=$dof_cap_q2; global_cycles=3; fi
     fe=(--set "Finite element/Degree=$degree")
-    run_case "q$degree-global" 0 "${common[@]}" "${start_mesh[@]}" "${fe[@]}" \
+    run_case "q$degree-global" 0 "${common[@]}" "${compare[@]}" "${start_mesh[@]}" "${fe[@]}" \
       --set "Refinement/Estimator=global" --set "Refinement/Number of cycles=$global_cycles"
     for est in kelly spr "spr contact"; do
-      run_case "q$degree-${est// /-}" "$cap" "${common[@]}" "${start_mesh[@]}" "${fe[@]}" \
+      run_case "q$degree-${est// /-}" "$cap" "${common[@]}" "${compare[@]}" "${start_mesh[@]}" "${fe[@]}" \
         "${adaptive[@]}" --set "Refinement/Estimator=$est"
     done
   done

@@ -113,6 +113,10 @@ namespace contact_fem
     /// size.
     void
     warn_about_large_displacements(Json &cycle_record);
+    /// Prints and records a warning when a body's mean rotation exceeds
+    /// ten times the largest mean strain: a weakly held rigid-body mode.
+    void
+    warn_about_weakly_held_rotation(Json &cycle_record);
     void
     warn_about_singular_stiffness(Json &cycle_record) const;
     void
@@ -230,6 +234,8 @@ namespace contact_fem
     std::vector<std::pair<double, std::string>> vtu_records;
     Vector<float>                               indicators; ///< of the last estimate
     double relative_estimate = 0.; ///< eta / |u|_E of the last SPR estimate
+    /// Time of diagnostics of the current cycle left out of its wall time.
+    double uncounted_wall_time = 0.;
     /// Displacement interpolated from the previous mesh (owned entries).
     std::unique_ptr<TrilinosWrappers::MPI::Vector> transferred_solution;
     unsigned int                                   cycle = 0;

@@ -22,6 +22,9 @@ namespace contact_fem
     unsigned int max_cells        = 1000000;
     double       penalty_normal     = 1e4;
     double       penalty_tangential = 1e4;
+    /// Also compute plain SPR on the same solution (studies of what the
+    /// contact terms change); its time is left out of the cycle's wall time.
+    bool compare_plain_spr = false;
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -1,7 +1,7 @@
 // Superconvergent patch recovery (SPR, Zienkiewicz-Zhu) of the stress and the
 // resulting a posteriori error estimator, with optional contact-traction terms
-// in the patch fits (in the spirit of the "SPR-C" recoveries that impose known
-// boundary tractions on the patch polynomials).
+// at the slave nodes (in the spirit of the "SPR-C" recoveries that impose known
+// boundary tractions on the recovered stress).
 #ifndef contact_fem_stress_recovery_h
 #define contact_fem_stress_recovery_h
 
@@ -85,14 +85,16 @@ namespace contact_fem
    *   vertices) use the average of the full fits of the neighbouring vertices
    *   (the vertices of the patch cells), evaluated at the point in question,
    *   which is the classical Zienkiewicz-Zhu treatment of boundary nodes.
-   * - Contact terms: a contact node that lies on a boundary face of a patch
-   *   cell whose outward normal points along the node's normal (i.e. the
-   *   slave side) adds penalty rows (n.(sigma* n - t))^2 and
-   *   |(I - n n)(sigma* n - t)|^2, t = the node's traction (in the
-   *   weighted-mean form of ContactNodeTraction when it has samples), to
-   *   that patch's least-squares functional; the weights are the
-   *   dimensionless Settings penalties times the mean diagonal entry of the
-   *   patch's least-squares matrix.
+   * - Contact terms: the recovered value at a contact node (a support point
+   *   of the recovered field on a boundary face whose outward normal points
+   *   along the node's normal, i.e. on the slave side) is its fitted value
+   *   shifted so that the traction condition holds: the node's patch problem
+   *   augmented by the penalty terms alpha_n (n.r)^2 + alpha_t |(I - n n) r|^2,
+   *   r = t - sigma* n (in the weighted-mean form of ContactNodeTraction when
+   *   it has samples), t = the node's traction, alpha = the dimensionless
+   *   Settings penalties weighing the condition against the fitted value.
+   *   Only the node's own value carries its condition: the fits of the
+   *   neighbouring patches stay plain least-squares fits.
    * - The recovered field sigma* is a continuous FE_Q(p) field: the value at a
    *   support point is the mean of the (effective) fits of the vertices of the
    *   geometric object the support point belongs to; hanging support points
@@ -107,11 +109,12 @@ namespace contact_fem
     {
       /// false: plain SPR, the contact nodes are ignored.
       bool contact_terms = true;
-      /// Weight of (n.sigma*.n + p)^2, relative to the patch's least-squares
-      /// scale (mean diagonal entry of the patch's sampling matrix).
+      /// Weight of (n.sigma*.n + p)^2 against the squared change of the
+      /// node's fitted value: the normal traction moves alpha / (1 + alpha)
+      /// of the way to the condition.
       double penalty_normal = 1e4;
-      /// Weight of |(I - n n) sigma* n|^2 (frictionless: zero shear traction),
-      /// relative to the same scale.
+      /// Weight of |(I - n n) sigma* n|^2 (frictionless: zero shear traction)
+      /// on the same scale; the shear moves alpha / (2 + alpha) of the way.
       double penalty_tangential = 1e4;
     };
 
