@@ -69,20 +69,24 @@ namespace contact_fem
     null_pivots = mumps ? std::max(mumps->GetINFOG()[27], 0) : 0;
   }
 
+  void
+  DirectSolver::solve_with_last_factors(TrilinosWrappers::MPI::Vector       &x,
+                                        const TrilinosWrappers::MPI::Vector &rhs)
+  {
+    AssertThrow(has_factorisation(), ExcMessage("the direct solver has no factorisation"));
+    problem->SetLHS(&x.trilinos_vector());
+    problem->SetRHS(const_cast<Epetra_MultiVector *>(
+      static_cast<const Epetra_MultiVector *>(&rhs.trilinos_vector())));
+    AssertThrow(solver->Solve() == 0, ExcMessage("the direct solve failed"));
+  }
+
   double
   DirectSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
                       TrilinosWrappers::MPI::Vector       &x,
                       const TrilinosWrappers::MPI::Vector &rhs)
   {
     factorise(matrix);
-    const auto solve_with_factors = [this](TrilinosWrappers::MPI::Vector       &lhs,
-                                           const TrilinosWrappers::MPI::Vector &b) {
-      problem->SetLHS(&lhs.trilinos_vector());
-      problem->SetRHS(const_cast<Epetra_MultiVector *>(
-        static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
-      AssertThrow(solver->Solve() == 0, ExcMessage("the direct solve failed"));
-    };
-    solve_with_factors(x, rhs);
+    solve_with_last_factors(x, rhs);
 
     TrilinosWrappers::MPI::Vector check(rhs), correction(rhs);
     double residual = matrix.residual(check, x, rhs);
@@ -90,7 +94,7 @@ namespace contact_fem
     for (unsigned int step = 0; step < 3 && std::isfinite(residual) && residual > target;
          ++step)
       {
-        solve_with_factors(correction, check);
+        solve_with_last_factors(correction, check);
         TrilinosWrappers::MPI::Vector refined = x;
         refined += correction;
         TrilinosWrappers::MPI::Vector refined_check(rhs);

@@ -151,9 +151,9 @@ def warning_label(text):
     m = re.search(r"singular in (\d+) Newton solve", text)
     if m:
         return "singular stiffness (%s solves)" % m.group(1)
-    m = re.search(r"body (\d+) turns by (\S+) rad as a whole, (\S+) times", text)
+    m = re.search(r"body (\d+) is held only weakly against rotation: a couple turns it (\S+) times", text)
     if m:
-        return "weakly held rotation (body %s, %s rad, %s x the strains)" % m.groups()
+        return "weakly held rotation (body %s, theta G V = %s)" % m.groups()
     m = re.search(r"slave side is (\S+) times stiffer", text)
     if m:
         ratio = ("%.3g" % float(m.group(1))).replace("e+0", "e").replace("e+", "e")

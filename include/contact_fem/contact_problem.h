@@ -113,8 +113,9 @@ namespace contact_fem
     /// size.
     void
     warn_about_large_displacements(Json &cycle_record);
-    /// Prints and records a warning when a body's mean rotation exceeds
-    /// ten times the largest mean strain: a weakly held rigid-body mode.
+    /// Prints and records a warning when a couple on a body in contact
+    /// turns it far more than it strains the model (a weakly held rotation);
+    /// uses the factors of the converged system.
     void
     warn_about_weakly_held_rotation(Json &cycle_record);
     void
@@ -234,6 +235,9 @@ namespace contact_fem
     std::vector<std::pair<double, std::string>> vtu_records;
     Vector<float>                               indicators; ///< of the last estimate
     double relative_estimate = 0.; ///< eta / |u|_E of the last SPR estimate
+    /// The direct solver holds the factors of the current load step's
+    /// last Newton system.
+    bool factorisation_current = false;
     /// Time of diagnostics of the current cycle left out of its wall time.
     double uncounted_wall_time = 0.;
     /// Displacement interpolated from the previous mesh (owned entries).

@@ -50,6 +50,19 @@ namespace contact_fem
           TrilinosWrappers::MPI::Vector       &x,
           const TrilinosWrappers::MPI::Vector &rhs);
 
+    /// Solves with the factors of the last solve() (back substitution only,
+    /// no refinement): the response of the same system to another load.
+    /// Requires a factorisation (has_factorisation()).
+    void
+    solve_with_last_factors(TrilinosWrappers::MPI::Vector       &x,
+                            const TrilinosWrappers::MPI::Vector &rhs);
+
+    bool
+    has_factorisation() const
+    {
+      return solver != nullptr && factorised_matrix != nullptr;
+    }
+
     /// Zero pivots of the last factorisation (MUMPS; always 0 for KLU): the
     /// number of rigid-body modes the matrix leaves free.
     unsigned int
