@@ -113,9 +113,9 @@ namespace contact_fem
     /// size.
     void
     warn_about_large_displacements(Json &cycle_record);
-    /// Prints and records a warning when a couple on a body in contact
-    /// turns it far more than it strains the model (a weakly held rotation);
-    /// uses the factors of the converged system.
+    /// Prints and records a warning when a unit couple on a body in contact
+    /// turns it by theta with theta G V > 50 (a weakly held rotation); uses
+    /// the factors of the converged system.
     void
     warn_about_weakly_held_rotation(Json &cycle_record);
     void
