@@ -424,11 +424,16 @@ def same_mesh_effectivities(run):
         return None
     contact = sum(c["eff"] for c in ok) / len(ok)
     plain = sum(c["eff_plain"] for c in ok) / len(ok)
-    gap = abs(math.log(plain)) - abs(math.log(contact))
-    verdict = ("yes" if gap > 5e-4 else
-               ("no (equal within 0.05 %)" if abs(gap) <= 5e-4 else "no (farther)"))
     return {"contact": contact, "plain": plain, "cycles": [c["cycle"] for c in ok],
-            "verdict": verdict}
+            "verdict": closer_verdict(contact, plain)}
+
+
+def closer_verdict(contact, plain):
+    """Is the effectivity @p contact closer to 1 than @p plain (on a log
+    scale), by more than 0.05 %?"""
+    gap = abs(math.log(plain)) - abs(math.log(contact))
+    return ("yes" if gap > 5e-4 else
+            ("no (equal within 0.05 %)" if abs(gap) <= 5e-4 else "no (farther)"))
 
 
 def fmt(x, digits=3):
@@ -720,9 +725,9 @@ def main():
                     "yes" if 0.8 <= e["eff_min"] and e["eff_max"] <= 1.25 else "no"))
         a, b = summary.get((deg, "spr-contact")), summary.get((deg, "spr"))
         if a and b:
-            closer = abs(math.log(a["eff"])) < abs(math.log(b["eff"]))
             w("| Q%d spr contact closer to 1 than spr, separate runs (different meshes) "
-              "| %s vs %s | %s |" % (deg, fmt(a["eff"]), fmt(b["eff"]), "yes" if closer else "no"))
+              "| %s vs %s | %s |" % (deg, fmt(a["eff"], 4), fmt(b["eff"], 4),
+                                     closer_verdict(a["eff"], b["eff"])))
         same = same_mesh_effectivities(runs.get((deg, "spr-contact")))
         if same:
             w("| Q%d spr contact closer to 1 than spr, same meshes (last cycles %s of the spr "
