@@ -152,8 +152,9 @@ namespace contact_fem
       mapping_degree != "auto" ? std::stoul(mapping_degree) :
       scene.has_curved_boundary() ? std::max(degree, 2u) :
                                     degree;
-    // A curved mapping: its support points are cached once per mesh, in
-    // setup_dofs() (curved along the boundary only, see there).
+    // A curved mapping takes its support points from the manifolds (the
+    // transfinite interpolation of the Hertz disc is costly): cached once
+    // per mesh, in setup_dofs().
     if (geometry_degree > 1)
       mapping = std::make_unique<MappingQCache<dim>>(geometry_degree);
     else
@@ -181,55 +182,13 @@ namespace contact_fem
     dof_handler.clear();
   }
 
-  namespace
-  {
-    /// Support points of a degree-2 mapping of a quadrilateral that is curved
-    /// along the boundary only: the vertices; the line midpoints from the
-    /// manifold on boundary lines and straight inside; the centre by
-    /// transfinite (Coons) blending of the four edges. An interior line is
-    /// straight for both cells that share it, so the mapping is conforming.
-    /// (MappingQ(2) would evaluate the manifolds everywhere: on the Hertz
-    /// disc a transfinite interpolation, whose pull-backs made filling the
-    /// cache about 12 % of a Q1 cycle.)
-    std::vector<Point<2>>
-    boundary_curved_support_points(const Triangulation<2>::cell_iterator &cell)
-    {
-      std::vector<Point<2>> points(9);
-      Tensor<1, 2>          centre;
-      for (const unsigned int v : cell->vertex_indices())
-        {
-          points[v] = cell->vertex(v);
-          centre -= 0.25 * points[v];
-        }
-      for (const unsigned int l : cell->line_indices())
-        {
-          const auto line = cell->line(l);
-          points[4 + l]   = line->at_boundary() ? line->center(true) :
-                                                  Point<2>(0.5 * (line->vertex(0) + line->vertex(1)));
-          centre += 0.5 * points[4 + l];
-        }
-      points[8] = Point<2>(centre);
-      return points;
-    }
-  } // namespace
-
   template <int dim>
   void
   ContactProblem<dim>::setup_dofs()
   {
     TimerOutput::Scope t(*timer, "Setup: DoFs");
     if (auto *cache = dynamic_cast<MappingQCache<dim> *>(mapping.get()))
-      {
-        bool filled = false;
-        if constexpr (dim == 2)
-          if (cache->get_degree() == 2)
-            {
-              cache->initialize(triangulation, boundary_curved_support_points);
-              filled = true;
-            }
-        if (!filled)
-          cache->initialize(MappingQ<dim>(cache->get_degree()), triangulation);
-      }
+      cache->initialize(MappingQ<dim>(cache->get_degree()), triangulation);
     dof_handler.distribute_dofs(fe);
     owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
@@ -1007,7 +966,7 @@ namespace contact_fem
     // substitution). An elastically held body of volume V turns by about
     // 1 / (G V), G a shear modulus; the softest one of the model is taken,
     // since a stiff body may rest on a soft one. Measured on the Hertz disc
-    // (theta G V): 3.4 with its fixed points, 2,200-2,500 without them.
+    // (theta G V): 3.4 with its fixed points, 300-500 without them.
     constexpr double compliance_limit = 50.;
     if (!contact || !factorisation_current || direct_solver.n_null_pivots() > 0)
       return;
