@@ -971,16 +971,16 @@ namespace contact_fem
     if (!contact || !factorisation_current || direct_solver.n_null_pivots() > 0)
       return;
     TimerOutput::Scope t(*timer, "Check: held rotation");
-    double softest = std::numeric_limits<double>::max();
+    double                          softest = std::numeric_limits<double>::max();
+    std::vector<types::material_id> bodies;
     for (const auto &[id, constants] : materials.bodies)
-      softest = std::min(softest, constants.mu());
-
+      {
+        softest = std::min(softest, constants.mu());
+        bodies.push_back(id);
+      }
     std::set<types::boundary_id> contact_ids;
     for (const auto &pair : contact_parameters.pairs)
       contact_ids.insert({pair.slave, pair.master});
-    std::vector<types::material_id> bodies;
-    for (const auto &[id, constants] : materials.bodies)
-      bodies.push_back(id);
     std::vector<unsigned int> touches(bodies.size(), 0);
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -1004,9 +1004,9 @@ namespace contact_fem
       {
         if (touches[b] == 0)
           continue;
-        // Centroid and polar moment of the body.
-        double         volume = 0., second_moment = 0.;
-        Tensor<1, dim> first_moment;
+        // Centroid and second moments int x_i^2 of the body.
+        double         volume = 0.;
+        Tensor<1, dim> first_moment, second_moments;
         for (const auto &cell : dof_handler.active_cell_iterators())
           if (cell->is_locally_owned() && cell->material_id() == bodies[b])
             {
@@ -1016,22 +1016,27 @@ namespace contact_fem
                   const Point<dim> &x = fe_values.quadrature_point(q);
                   volume += fe_values.JxW(q);
                   first_moment += x * fe_values.JxW(q);
-                  second_moment += x.square() * fe_values.JxW(q);
+                  for (unsigned int i = 0; i < dim; ++i)
+                    second_moments[i] += x[i] * x[i] * fe_values.JxW(q);
                 }
             }
         volume        = Utilities::MPI::sum(volume, comm);
         first_moment  = Utilities::MPI::sum(first_moment, comm);
-        second_moment = Utilities::MPI::sum(second_moment, comm);
+        second_moments = Utilities::MPI::sum(second_moments, comm);
         const Point<dim> centre(first_moment / volume);
-        const double     polar = second_moment - volume * centre.square();
 
         for (unsigned int axis = 0; axis < n_axes; ++axis)
           {
-            // A body force f = omega x (x - c) / polar: no net force, unit
-            // moment about the axis.
+            // A body force f = omega x (x - c) / J: no net force, and with
+            // J = int |x - c|^2 minus the part along the axis, unit moment
+            // about the axis.
             Tensor<1, dim> omega_axis;
             if constexpr (dim == 3)
               omega_axis[axis] = 1.;
+            double polar = 0.;
+            for (unsigned int i = 0; i < dim; ++i)
+              if (dim == 2 || i != axis)
+                polar += second_moments[i] - volume * centre[i] * centre[i];
             const auto couple = [&](const Point<dim> &x) {
               const Tensor<1, dim> r = x - centre;
               Tensor<1, dim>       f;
