@@ -288,18 +288,6 @@ namespace contact_fem
     const double p_num = contact_json["max_contact_pressure"].number_value();
     const double a_num = contact_json["contact_half_width"].number_value();
     const double size  = contact_json["slave_element_size"].number_value();
-    // L2 error of the pressure over the slave surface, with the mortar
-    // weights D_j as nodal quadrature weights.
-    double l2_error = 0., l2_norm = 0.;
-    for (const auto &s : interface->slave_nodes)
-      if (s.paired)
-        {
-          const double x = interface->nodes[s.node].reference[0] +
-                           interface->displacement(s.node, interface_displacement)[0];
-          const double p_exact = h.pressure(x - analytical.center);
-          l2_error += s.D * std::pow(contact->pressure[s.node] - p_exact, 2);
-          l2_norm += s.D * p_exact * p_exact;
-        }
     // A degree-1 geometry (Q1 on a linear mapping, e.g. with Finite
     // element/Mapping degree = 1) replaces the arc by its chords, which lie inside the circle
     // by h^2 t (1 - t) / (2 R) along a chord of length h: the discrete
@@ -327,10 +315,55 @@ namespace contact_fem
       .set("a_error", std::abs(a_num - h.a))
       .set("a_error_in_slave_elements", size > 0. ? std::abs(a_num - h.a) / size : 0.)
       .set("p_max_relative_error", (p_num - h.p_max) / h.p_max)
-      .set("pressure_l2_relative_error", l2_norm > 0. ? std::sqrt(l2_error / l2_norm) : 0.);
+      .set("pressure_l2_relative_error", hertz_pressure_error(contact->pressure));
     if (interface->geometry_degree == 1)
       result.set("chord_gap_work", chord_gap_work);
     return result;
+  }
+
+
+  namespace
+  {
+    /// Relative L2 error of a pressure per interface node against
+    /// @p exact(x) over the paired slave nodes, with the mortar weights D_j
+    /// as nodal quadrature weights, at the deformed positions x of the nodes.
+    template <int dim, typename Exact>
+    double
+    pressure_l2_relative_error(const ContactInterface<dim>         &interface,
+                               const std::vector<double>           &interface_displacement,
+                               const std::vector<double>           &pressure,
+                               const Exact                         &exact)
+    {
+      double l2_error = 0., l2_norm = 0.;
+      for (const auto &s : interface.slave_nodes)
+        if (s.paired)
+          {
+            const double x = interface.nodes[s.node].reference[0] +
+                             interface.displacement(s.node, interface_displacement)[0];
+            const double p_exact = exact(x);
+            l2_error += s.D * std::pow(pressure[s.node] - p_exact, 2);
+            l2_norm += s.D * p_exact * p_exact;
+          }
+      return l2_norm > 0. ? std::sqrt(l2_error / l2_norm) : 0.;
+    }
+  } // namespace
+
+  template <int dim>
+  double
+  ContactProblem<dim>::hertz_pressure_error(const std::vector<double> &pressure) const
+  {
+    const Hertz h =
+      hertz_solution(*interface, total_contact_force(*interface, *contact).norm(), analytical.radius);
+    return pressure_l2_relative_error(*interface, interface_displacement, pressure,
+                                      [&](const double x) { return h.pressure(x - analytical.center); });
+  }
+
+  template <int dim>
+  double
+  ContactProblem<dim>::reference_pressure_error(const std::vector<double> &pressure) const
+  {
+    return pressure_l2_relative_error(*interface, interface_displacement, pressure,
+                                      [&](const double x) { return analytical.reference_pressure(x); });
   }
 
 
@@ -598,6 +631,10 @@ namespace contact_fem
   template Json ContactProblem<dim>::analytical_results(const Json &,            \
                                                         const Json &) const;     \
   template void ContactProblem<dim>::write_pressure_profile() const;             \
+  template double ContactProblem<dim>::hertz_pressure_error(                      \
+    const std::vector<double> &) const;                                           \
+  template double ContactProblem<dim>::reference_pressure_error(                  \
+    const std::vector<double> &) const;                                           \
   template void ContactProblem<dim>::write_convergence_row(const Json &, const double); \
   template void ContactProblem<dim>::print_results(const Json &, const Json &,           \
                                                    const Json &) const;                \

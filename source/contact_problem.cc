@@ -8,6 +8,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <contact_fem/contact_problem.h>
+#include <contact_fem/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -169,7 +170,7 @@ namespace contact_fem
     contact_parameters.parse_parameters(prm);
     newton_parameters.parse_parameters(prm);
     refinement.parse_parameters(prm);
-    analytical.parse_parameters(prm);
+    analytical.parse_parameters(prm, prm_directory);
     output.parse_parameters(prm);
 
     timer = std::make_unique<TimerOutput>(comm, pcout, TimerOutput::never,
@@ -1290,6 +1291,13 @@ namespace contact_fem
     const double potential_energy = strain_energy - external_work;
     cycle_record.set("strain_energy", strain_energy).set("potential_energy", potential_energy);
     print_results(contact_json, reaction_json, hertz_json);
+    if (contact && !analytical.reference_pressure_profile.empty())
+      {
+        const double error = reference_pressure_error(contact->pressure);
+        cycle_record.set("pressure_reference_l2_relative_error", error);
+        pcout << "    pressure, L2 error against the reference: " << value_or_ok(error, 1e-10)
+              << std::endl;
+      }
     double energy_error = std::numeric_limits<double>::quiet_NaN();
     if (std::isfinite(analytical.reference_potential_energy))
       {

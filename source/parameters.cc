@@ -4,8 +4,13 @@
 
 #include <contact_fem/parameters.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace contact_fem
 {
@@ -477,18 +482,108 @@ namespace contact_fem
                       "a geometry error the estimate does not measure. Pi_h < "
                       "Pi_ref (a discretisation softer than the exact problem, "
                       "or an inaccurate reference) is warned about.");
+    prm.declare_entry("Reference pressure profile", "", Patterns::Anything(),
+                      "CSV file with the columns 'x' and 'pressure' (any others "
+                      "are ignored), e.g. the pressure_profile.csv of an overkill "
+                      "run; a relative name is taken relative to the .prm file; "
+                      "empty if none. Then every cycle also measures the contact "
+                      "pressure against it (interpolated linearly in x, zero "
+                      "outside its range): the mortar pressure, and the normal "
+                      "traction of the recovered stress of the SPR estimators "
+                      "(summary.json: *_reference_l2_relative_error). Unlike the "
+                      "Hertz half-space pressure, an overkill run of the same "
+                      "finite bodies has no modelling error.");
     prm.leave_subsection();
   }
 
+  namespace
+  {
+    /// The (x, pressure) rows of a CSV file with a header line naming the
+    /// columns, sorted by x.
+    std::vector<std::pair<double, double>>
+    read_pressure_profile(const std::string &file_name)
+    {
+      const std::string key = "Analytical solution/Reference pressure profile: ";
+      std::ifstream     in(file_name);
+      AssertThrow(in, ExcMessage(key + "cannot open '" + file_name + "'."));
+      std::string line;
+      AssertThrow(static_cast<bool>(std::getline(in, line)),
+                  ExcMessage(key + "'" + file_name + "' is empty (expected a header line "
+                             "naming the columns x and pressure)."));
+      const std::vector<std::string> header = Utilities::split_string_list(line, ',');
+      const auto column = [&](const std::string &name) {
+        const auto found = std::find(header.begin(), header.end(), name);
+        AssertThrow(found != header.end(),
+                    ExcMessage(key + "'" + file_name + "', line 1: no column '" + name +
+                               "' (expected a header line naming the columns x and "
+                               "pressure)."));
+        return static_cast<std::size_t>(found - header.begin());
+      };
+      const std::size_t x_column = column("x"), p_column = column("pressure");
+
+      std::vector<std::pair<double, double>> rows;
+      for (unsigned int line_number = 2; std::getline(in, line); ++line_number)
+        {
+          if (Utilities::trim(line).empty())
+            continue;
+          const std::vector<std::string> fields = Utilities::split_string_list(line, ',');
+          double                         values[2];
+          const std::size_t              columns[2] = {x_column, p_column};
+          for (unsigned int i = 0; i < 2; ++i)
+            {
+              const std::string field = columns[i] < fields.size() ? fields[columns[i]] : "";
+              char             *end   = nullptr;
+              values[i]               = std::strtod(field.c_str(), &end);
+              AssertThrow(!field.empty() && *end == '\0' && std::isfinite(values[i]),
+                          ExcMessage(key + "'" + file_name + "', line " +
+                                     std::to_string(line_number) + ": column '" +
+                                     header[columns[i]] + "' is '" + field +
+                                     "', expected a number."));
+            }
+          rows.emplace_back(values[0], values[1]);
+        }
+      AssertThrow(rows.size() >= 2,
+                  ExcMessage(key + "'" + file_name + "' has " + std::to_string(rows.size()) +
+                             " data rows, expected at least 2."));
+      std::sort(rows.begin(), rows.end());
+      return rows;
+    }
+  } // namespace
+
+  double
+  AnalyticalSolution::reference_pressure(const double x) const
+  {
+    const auto &rows = reference_pressure_profile;
+    if (rows.empty() || x < rows.front().first || x > rows.back().first)
+      return 0.;
+    const auto upper = std::lower_bound(rows.begin(), rows.end(), std::make_pair(x, -HUGE_VAL));
+    if (upper == rows.begin())
+      return upper->second;
+    const auto   lower = upper - 1;
+    const double width = upper->first - lower->first;
+    if (width <= 0.)
+      return upper->second;
+    const double t = (x - lower->first) / width;
+    return (1. - t) * lower->second + t * upper->second;
+  }
+
   void
-  AnalyticalSolution::parse_parameters(ParameterHandler &prm)
+  AnalyticalSolution::parse_parameters(ParameterHandler &prm, const std::string &prm_directory)
   {
     prm.enter_subsection("Analytical solution");
     type   = prm.get("Type");
     radius = prm.get_double("Radius");
     center = prm.get_double("Center");
     const std::string reference = Utilities::trim(prm.get("Reference potential energy"));
+    std::string       profile   = Utilities::trim(prm.get("Reference pressure profile"));
     prm.leave_subsection();
+    reference_pressure_profile.clear();
+    if (!profile.empty())
+      {
+        if (profile[0] != '/' && !prm_directory.empty())
+          profile = prm_directory + "/" + profile;
+        reference_pressure_profile = read_pressure_profile(profile);
+      }
     reference_potential_energy = std::numeric_limits<double>::quiet_NaN();
     if (!reference.empty())
       {

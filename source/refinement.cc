@@ -136,6 +136,70 @@ namespace contact_fem
 
   template <int dim>
   void
+  ContactProblem<dim>::report_recovered_tractions(
+    const std::vector<ContactNodeTraction<dim>>  &nodes,
+    const std::vector<SymmetricTensor<2, dim>> &node_stresses,
+    const std::string                           &prefix,
+    Json                                        &cycle_record) const
+  {
+    // How well the recovered stress carries the contact traction, in the
+    // convention of the imposed condition: the traction sigma* n0 on the
+    // reference surface (n0 = the node's N_j-weighted mean reference normal)
+    // against -p n (n = the deformed normal the force acts along). Its
+    // normal part, scaled from the reference to the deformed surface by
+    // int N_j ds / D_j (the mortar pressure is a force per deformed area;
+    // the scenes' surface strains reach 1 %), is compared with the exact
+    // pressure by the same L2 measure as the mortar pressure; its shear
+    // part, which a frictionless contact makes zero, is reported as the
+    // largest over the active nodes.
+    std::vector<double> pressure(interface->nodes.size(), 0.);
+    double              largest_shear = 0., p_max = 0.;
+    std::size_t         i = 0; // @p nodes are the paired slave nodes in order
+    for (const auto &s : interface->slave_nodes)
+      if (s.paired)
+        {
+          Tensor<1, dim> n0;
+          double         reference_length = 0.;
+          for (const auto &q : nodes[i].samples)
+            {
+              n0 += q.weight * q.normal;
+              reference_length += q.weight;
+            }
+          n0 /= n0.norm();
+          const Tensor<1, dim> n        = nodes[i].normal / nodes[i].normal.norm();
+          const Tensor<1, dim> traction = node_stresses[i] * n0;
+          const double         normal   = -(traction * n);
+          pressure[s.node]              = s.D > 0. ? normal * reference_length / s.D : normal;
+          if (contact->active[s.node])
+            {
+              largest_shear = std::max(largest_shear, (traction + normal * n).norm());
+              p_max         = std::max(p_max, contact->pressure[s.node]);
+            }
+          ++i;
+        }
+    AssertThrow(i == nodes.size() && i == node_stresses.size(), ExcInternalError());
+    const double      shear = p_max > 0. ? largest_shear / p_max : 0.;
+    const std::string label = prefix.empty() ? "    recovered" : "    plain SPR recovered";
+    cycle_record.set(prefix + "recovered_shear_traction_max_relative", shear);
+    pcout << label << " shear traction / p_max: " << value_or_ok(shear, 1e-6) << std::endl;
+    if (analytical.type == "hertz cylinder")
+      {
+        const double error = hertz_pressure_error(pressure);
+        cycle_record.set(prefix + "recovered_pressure_l2_relative_error", error);
+        pcout << label << " pressure, L2 error against Hertz: " << value_or_ok(error, 1e-10)
+              << std::endl;
+      }
+    if (!analytical.reference_pressure_profile.empty())
+      {
+        const double error = reference_pressure_error(pressure);
+        cycle_record.set(prefix + "recovered_pressure_reference_l2_relative_error", error);
+        pcout << label << " pressure, L2 error against the reference: "
+              << value_or_ok(error, 1e-10) << std::endl;
+      }
+  }
+
+  template <int dim>
+  void
   ContactProblem<dim>::estimate_error(Json &cycle_record)
   {
     TimerOutput::Scope t(*timer, "Estimate");
@@ -153,21 +217,23 @@ namespace contact_fem
     // deformed surface and D_j is measured there: the mean traction is that
     // force over the reference int N_j ds. (Splitting it along the reference
     // normal instead would be off by the surface rotation, ~ a / R in Hertz,
-    // which does not shrink under refinement.)
+    // which does not shrink under refinement.) The inactive paired nodes are
+    // listed too, not imposed: they only report their recovered traction.
     std::vector<ContactNodeTraction<dim>> tractions;
-    if (contact && settings.contact_terms)
+    if (contact)
       {
         const auto support = slave_support_samples(*interface);
         for (const auto &s : interface->slave_nodes)
-          if (s.paired && contact->active[s.node])
+          if (s.paired)
             {
               const auto &samples   = support.at(s.node);
               double      reference = 0.;
               for (const auto &q : samples)
                 reference += q.weight;
-              const double force = contact->pressure[s.node] * s.D;
+              const bool   active = contact->active[s.node];
+              const double force  = active ? contact->pressure[s.node] * s.D : 0.;
               tractions.push_back({interface->nodes[s.node].reference, s.normal,
-                                   -force / reference * s.normal, samples});
+                                   -force / reference * s.normal, samples, active});
             }
       }
     const auto spr = StressRecovery<dim>::estimate(*mapping, dof_handler, ghosted_solution,
@@ -188,6 +254,10 @@ namespace contact_fem
       .set("solution_energy_norm", spr.solution_energy_norm);
     pcout << "    estimated error (SPR" << (settings.contact_terms ? " contact" : "")
           << "): eta / |u|_E = " << value_or_ok(spr.relative_error, 1e-10) << std::endl;
+    const bool pressure_known = contact && (analytical.type == "hertz cylinder" ||
+                                            !analytical.reference_pressure_profile.empty());
+    if (pressure_known)
+      report_recovered_tractions(tractions, spr.node_stresses, "", cycle_record);
 
     t.stop();
     if (refinement.compare_plain_spr && settings.contact_terms)
@@ -195,11 +265,14 @@ namespace contact_fem
         Timer comparison;
         settings.contact_terms = false;
         const auto plain       = StressRecovery<dim>::estimate(
-          *mapping, dof_handler, ghosted_solution, materials, {}, settings,
+          *mapping, dof_handler, ghosted_solution, materials, tractions, settings,
           volumetric_projection.get());
         cycle_record.set("plain_spr_estimated_error", plain.estimated_error);
         pcout << "    plain SPR on the same mesh:   eta / |u|_E = "
               << value_or_ok(plain.relative_error, 1e-10) << std::endl;
+        if (pressure_known)
+          report_recovered_tractions(tractions, plain.node_stresses, "plain_spr_",
+                                     cycle_record);
         uncounted_wall_time += comparison.wall_time();
       }
   }

@@ -301,6 +301,8 @@ namespace contact_fem
       std::unique_ptr<FESystem<dim>> fe_recovered;
       DoFHandler<dim>               dof_recovered;
       TrilinosWrappers::MPI::Vector recovered;
+      /// See Result::node_stresses.
+      std::vector<SymmetricTensor<2, dim>> node_stresses;
     };
 
     template <int dim>
@@ -456,7 +458,7 @@ namespace contact_fem
     SPREstimator<dim>::match_contact_nodes()
     {
       cell_contacts.assign(tria.n_active_cells(), {});
-      if (!settings.contact_terms || contact_nodes.empty())
+      if (contact_nodes.empty())
         return;
 
       std::vector<Point<dim>> locations;
@@ -818,6 +820,11 @@ namespace contact_fem
                 dof_indices[fe_recovered->component_to_system_index(slot * n_stress<dim>, k)], j);
           }
 
+      // Recovered stress per contact node, summed over the owners of its
+      // support point (normally one) and averaged below.
+      node_stresses.assign(contact_nodes.size(), SymmetricTensor<2, dim>());
+      std::vector<double> node_hits(contact_nodes.size(), 0.);
+
       TrilinosWrappers::MPI::Vector        owned_values(owned, comm);
       std::vector<bool>                    done(owned.n_elements(), false);
       for (const auto &dof_cell : dof_recovered.active_cell_iterators())
@@ -877,7 +884,13 @@ namespace contact_fem
                         const auto contact = contact_of_dof.find(
                           dof_indices[fe_recovered->component_to_system_index(slot * n_stress<dim>, k)]);
                         if (contact != contact_of_dof.end())
-                          value += traction_correction(contact_nodes[contact->second], fitted);
+                          {
+                            const ContactNodeTraction<dim> &node = contact_nodes[contact->second];
+                            if (settings.contact_terms && node.imposed)
+                              value += traction_correction(node, fitted);
+                            node_stresses[contact->second] += value;
+                            node_hits[contact->second] += 1.;
+                          }
                       }
                     found = values.emplace(key, value).first;
                   }
@@ -886,6 +899,27 @@ namespace contact_fem
               }
           }
       owned_values.compress(VectorOperation::insert);
+      {
+        // One reduction: the stress components and the hit count per node.
+        constexpr unsigned int stride = n_stress<dim> + 1;
+        std::vector<double>    packed;
+        packed.reserve(contact_nodes.size() * stride);
+        for (std::size_t j = 0; j < contact_nodes.size(); ++j)
+          {
+            for (unsigned int c = 0; c < n_stress<dim>; ++c)
+              packed.push_back(
+                node_stresses[j][SymmetricTensor<2, dim>::unrolled_to_component_indices(c)]);
+            packed.push_back(node_hits[j]);
+          }
+        Utilities::MPI::sum(packed, comm, packed);
+        for (std::size_t j = 0; j < contact_nodes.size(); ++j)
+          {
+            const double hits = packed[j * stride + n_stress<dim>];
+            for (unsigned int c = 0; c < n_stress<dim>; ++c)
+              node_stresses[j][SymmetricTensor<2, dim>::unrolled_to_component_indices(c)] =
+                hits > 0. ? packed[j * stride + c] / hits : 0.;
+          }
+      }
       hanging_nodes.distribute(owned_values);
       recovered.reinit(owned, relevant, comm);
       recovered = owned_values;
@@ -961,7 +995,9 @@ namespace contact_fem
       match_contact_nodes();
       compute_vertex_fits();
       recover_nodal_values();
-      return integrate();
+      Result result         = integrate();
+      result.node_stresses  = node_stresses;
+      return result;
     }
   } // namespace
 

@@ -33,6 +33,9 @@ namespace contact_fem
 {
   using namespace dealii;
 
+  template <int dim>
+  struct ContactNodeTraction;
+
   /// An output stream that writes to the console and, once attached, to a log file.
   class TeeStream : public std::ostream
   {
@@ -141,6 +144,16 @@ namespace contact_fem
     // --- adaptivity (refinement.cc)
     void
     estimate_error(Json &cycle_record);
+    /// Records and prints how far the traction of the recovered stress at
+    /// the paired slave nodes (@p node_stresses at @p nodes, the paired
+    /// interface->slave_nodes in their order) is from the exact pressure
+    /// (Hertz, reference profile) and from zero shear; keys prefixed with
+    /// @p prefix.
+    void
+    report_recovered_tractions(const std::vector<ContactNodeTraction<dim>> &nodes,
+                               const std::vector<SymmetricTensor<2, dim>> &node_stresses,
+                               const std::string                 &prefix,
+                               Json                              &cycle_record) const;
     /// Marks and refines; false if the mesh is kept (nothing to refine).
     bool
     refine_mesh();
@@ -158,6 +171,13 @@ namespace contact_fem
     reaction_results() const;
     Json
     analytical_results(const Json &contact, const Json &reaction) const;
+    /// Relative L2 error of a pressure per interface node against the Hertz
+    /// pressure over the paired slave nodes (Hertz scenes with contact).
+    double
+    hertz_pressure_error(const std::vector<double> &pressure) const;
+    /// The same against Analytical solution/Reference pressure profile.
+    double
+    reference_pressure_error(const std::vector<double> &pressure) const;
     void
     write_vtu(const unsigned int step, const double time);
     /// error_indicators-<cycle>.vtu: the mesh of the cycle with the

@@ -8,6 +8,7 @@
 
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace contact_fem
@@ -121,11 +122,20 @@ namespace contact_fem
     /// Total potential energy of the exact solution, if known (NaN if not):
     /// gives the energy-norm error and the effectivity of the estimate.
     double reference_potential_energy = std::numeric_limits<double>::quiet_NaN();
+    /// (x, pressure) of a reference contact pressure, sorted by x; empty if
+    /// none was given.
+    std::vector<std::pair<double, double>> reference_pressure_profile;
+
+    /// The reference pressure at @p x: linear between the rows, zero
+    /// outside their range.
+    double
+    reference_pressure(const double x) const;
 
     static void
     declare_parameters(ParameterHandler &prm);
+    /// Relative file names are taken relative to @p prm_directory.
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(ParameterHandler &prm, const std::string &prm_directory);
   };
 
   struct OutputParameters

@@ -6,6 +6,7 @@
 #define contact_fem_stress_recovery_h
 
 #include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
 #include <deal.II/dofs/dof_handler.h>
@@ -65,6 +66,9 @@ namespace contact_fem
     Tensor<1, dim> traction;
     /// Weighted points of the support of the node (may be empty).
     std::vector<TractionSample<dim>> samples = {};
+    /// false: the node's condition is not imposed (an inactive slave node);
+    /// its recovered stress is only reported (Result::node_stresses).
+    bool imposed = true;
   };
 
   /**
@@ -107,7 +111,8 @@ namespace contact_fem
   public:
     struct Settings
     {
-      /// false: plain SPR, the contact nodes are ignored.
+      /// false: plain SPR, the contact nodes only report their recovered
+      /// stress.
       bool contact_terms = true;
       /// Weight of (n.sigma*.n + p)^2 against the squared change of the
       /// node's fitted value: the normal traction moves alpha / (1 + alpha)
@@ -130,6 +135,12 @@ namespace contact_fem
       /// eta / solution_energy_norm (0 if both vanish, +inf if only the
       /// energy norm vanishes).
       double relative_error = 0;
+      /// Per contact node (in the order given, the same on every rank): the
+      /// recovered stress sigma*(x_j) at the node, with the node's
+      /// correction if it was imposed. Plain SPR (contact_terms = false)
+      /// reports it too, so the two recoveries can be compared. Zero for a
+      /// node that is not a support point of a slave face.
+      std::vector<SymmetricTensor<2, dim>> node_stresses;
     };
 
     /**
