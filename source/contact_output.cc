@@ -368,6 +368,37 @@ namespace contact_fem
 
 
   template <int dim>
+  Json
+  ContactProblem<dim>::probe_results() const
+  {
+    // Each DoF is added by its owner only, so the sum over ranks is its value.
+    std::vector<double> values(probe_dofs.size() * dim, 0.);
+    for (unsigned int i = 0; i < probe_dofs.size(); ++i)
+      for (unsigned int d = 0; d < probe_dofs[i].size(); ++d)
+        if (owned_dofs.is_element(probe_dofs[i][d]))
+          values[i * dim + d] = solution(probe_dofs[i][d]);
+    Utilities::MPI::sum(values, comm, values);
+
+    Json probes = Json::array();
+    for (unsigned int i = 0; i < probe_dofs.size(); ++i)
+      {
+        Json displacement = Json::array();
+        pcout << "    displacement at " << to_string(output.displacement_probes[i]) << ":"
+              << std::scientific << std::setprecision(7);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            displacement.push(values[i * dim + d]);
+            pcout << "  u" << "xyz"[d] << " = " << values[i * dim + d];
+          }
+        pcout << std::defaultfloat << std::setprecision(6) << std::endl;
+        probes.push(Json::object()
+                      .set("point", to_string(output.displacement_probes[i]))
+                      .set("displacement", displacement));
+      }
+    return probes;
+  }
+
+  template <int dim>
   void
   ContactProblem<dim>::print_results(const Json &contact_json,
                                      const Json &reaction,
@@ -647,6 +678,7 @@ namespace contact_fem
   template Json ContactProblem<dim>::analytical_results(const Json &,            \
                                                         const Json &) const;     \
   template void ContactProblem<dim>::write_pressure_profile() const;             \
+  template Json ContactProblem<dim>::probe_results() const;                      \
   template double ContactProblem<dim>::hertz_pressure_error(                      \
     const std::vector<double> &) const;                                           \
   template double ContactProblem<dim>::reference_pressure_error(                  \

@@ -171,7 +171,7 @@ namespace contact_fem
     newton_parameters.parse_parameters(prm);
     refinement.parse_parameters(prm);
     analytical.parse_parameters(prm, prm_directory);
-    output.parse_parameters(prm);
+    output.parse_parameters(prm, dim);
 
     timer = std::make_unique<TimerOutput>(comm, pcout, TimerOutput::never,
                                           TimerOutput::wall_times);
@@ -226,37 +226,44 @@ namespace contact_fem
   }
 
   template <int dim>
+  std::vector<types::global_dof_index>
+  ContactProblem<dim>::vertex_dofs(const BodyPoint &point, const std::string &key) const
+  {
+    Point<dim> location;
+    for (unsigned int d = 0; d < dim; ++d)
+      location[d] = point.coordinates[d];
+    std::vector<types::global_dof_index> dofs;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial() && cell->material_id() == point.material_id)
+        for (const auto v : cell->vertex_indices())
+          if (dofs.empty() && cell->vertex(v).distance(location) < 1e-8 * cell->diameter())
+            for (unsigned int d = 0; d < dim; ++d)
+              dofs.push_back(cell->vertex_dof_index(v, d));
+    const unsigned int found = dofs.empty() ? 0 : 1;
+    AssertThrow(Utilities::MPI::sum(found, comm) > 0,
+                ExcMessage(key + ": body " + std::to_string(point.material_id) +
+                           " has no mesh vertex at (" +
+                           to_string(point).substr(to_string(point).find('@') + 2) + ")."));
+    return dofs;
+  }
+
+  template <int dim>
   void
   ContactProblem<dim>::locate_fixed_points()
   {
     fixed_point_dofs.clear();
-    for (const auto &point : boundary_conditions.points)
+    for (const auto &condition : boundary_conditions.points)
       {
-        Point<dim> location;
-        for (unsigned int d = 0; d < dim; ++d)
-          location[d] = point.coordinates[d];
-        unsigned int found = 0;
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          if (!cell->is_artificial() && cell->material_id() == point.material_id)
-            for (const auto v : cell->vertex_indices())
-              if (cell->vertex(v).distance(location) < 1e-8 * cell->diameter())
-                {
-                  fixed_point_dofs.push_back(cell->vertex_dof_index(v, point.component));
-                  found += cell->is_locally_owned();
-                }
-        AssertThrow(Utilities::MPI::sum(found, comm) > 0,
-                    ExcMessage("Boundary conditions/Fixed points: body " +
-                               std::to_string(point.material_id) +
-                               " has no mesh vertex at (" +
-                               Utilities::to_string(point.coordinates[0]) + ", " +
-                               Utilities::to_string(point.coordinates[1]) +
-                               (dim == 3 ? ", " + Utilities::to_string(point.coordinates[dim - 1]) :
-                                           std::string()) +
-                               ")."));
+        const auto dofs = vertex_dofs(condition.point, "Boundary conditions/Fixed points");
+        if (!dofs.empty())
+          fixed_point_dofs.push_back(dofs[condition.component]);
       }
     std::sort(fixed_point_dofs.begin(), fixed_point_dofs.end());
     fixed_point_dofs.erase(std::unique(fixed_point_dofs.begin(), fixed_point_dofs.end()),
                            fixed_point_dofs.end());
+    probe_dofs.clear();
+    for (const auto &probe : output.displacement_probes)
+      probe_dofs.push_back(vertex_dofs(probe, "Output/Displacement probes"));
   }
 
   template <int dim>
@@ -1291,6 +1298,8 @@ namespace contact_fem
     const double potential_energy = strain_energy - external_work;
     cycle_record.set("strain_energy", strain_energy).set("potential_energy", potential_energy);
     print_results(contact_json, reaction_json, hertz_json);
+    if (!probe_dofs.empty())
+      cycle_record.set("displacement_probes", probe_results());
     if (contact && !analytical.reference_pressure_profile.empty())
       {
         const double error = reference_pressure_error(contact->pressure);

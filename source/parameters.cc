@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iomanip>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -115,6 +117,42 @@ namespace contact_fem
     return static_cast<types::boundary_id>(id);
   }
 
+  BodyPoint
+  parse_body_point(const std::string &text, const unsigned int dim, const std::string &key)
+  {
+    const auto at = text.find('@');
+    BodyPoint  point;
+    bool       valid = at != std::string::npos;
+    if (valid)
+      try
+        {
+          const int id = Utilities::string_to_int(trim(text.substr(0, at)));
+          point.coordinates =
+            Utilities::string_to_double(Utilities::split_string_list(text.substr(at + 1)));
+          valid = id >= 0 && id < 255 && point.coordinates.size() == dim;
+          point.material_id = static_cast<types::material_id>(id);
+        }
+      catch (...)
+        {
+          valid = false;
+        }
+    AssertThrow(valid,
+                ExcMessage(key + ": '" + trim(text) + "' is not of the form 'material id @ x, y" +
+                           (dim == 3 ? ", z" : "") + "'."));
+    return point;
+  }
+
+  std::string
+  to_string(const BodyPoint &point)
+  {
+    // 10 digits: the coordinates as written (1.001, not 1.0009999999999999).
+    std::ostringstream text;
+    text << static_cast<unsigned int>(point.material_id) << " @ " << std::setprecision(10);
+    for (unsigned int d = 0; d < point.coordinates.size(); ++d)
+      text << (d > 0 ? ", " : "") << point.coordinates[d];
+    return text.str();
+  }
+
   void
   BoundaryConditions::declare_parameters(ParameterHandler &prm)
   {
@@ -167,26 +205,8 @@ namespace contact_fem
     for (const auto &[location, components] :
          split_key_value_list(prm.get("Fixed points"), points_key))
       {
-        const auto at = location.find('@');
         PointCondition condition;
-        bool           valid = at != std::string::npos;
-        if (valid)
-          try
-            {
-              const int id = Utilities::string_to_int(trim(location.substr(0, at)));
-              condition.coordinates =
-                Utilities::string_to_double(Utilities::split_string_list(location.substr(at + 1)));
-              valid = id >= 0 && id < 255 && condition.coordinates.size() == dim;
-              condition.material_id = static_cast<types::material_id>(id);
-            }
-          catch (...)
-            {
-              valid = false;
-            }
-        AssertThrow(valid,
-                    ExcMessage(points_key + ": '" + location +
-                               "' is not of the form 'material id @ x, y" +
-                               (dim == 3 ? ", z" : "") + "'."));
+        condition.point = parse_body_point(location, dim, points_key);
         for (const unsigned int d :
              parse_components(components, axes, points_key, "point '" + location + "'"))
           {
@@ -614,11 +634,16 @@ namespace contact_fem
     prm.declare_entry("Print timing", "true", Patterns::Bool(),
                       "Print wall times on the console (they are always in "
                       "summary.json). Tests switch this off.");
+    prm.declare_entry("Displacement probes", "", Patterns::Anything(),
+                      "Mesh vertices whose displacement every cycle prints and "
+                      "writes to summary.json (displacement_probes), as "
+                      "'material id @ x, y; ...' (the vertex of that body at that "
+                      "point, as for Fixed points); the vertex must exist.");
     prm.leave_subsection();
   }
 
   void
-  OutputParameters::parse_parameters(ParameterHandler &prm)
+  OutputParameters::parse_parameters(ParameterHandler &prm, const unsigned int dim)
   {
     directory = prm.get("Output directory");
     AssertThrow(!trim(directory).empty(),
@@ -627,6 +652,11 @@ namespace contact_fem
     write_vtu              = prm.get_bool("Write VTU");
     write_pressure_profile = prm.get_bool("Write pressure profile");
     print_timing           = prm.get_bool("Print timing");
+    displacement_probes.clear();
+    const std::string probes_key = "Output/Displacement probes";
+    for (const std::string &probe : Utilities::split_string_list(prm.get("Displacement probes"), ';'))
+      if (!trim(probe).empty())
+        displacement_probes.push_back(parse_body_point(probe, dim, probes_key));
     prm.leave_subsection();
   }
 } // namespace contact_fem

@@ -102,8 +102,13 @@ namespace contact_fem
     compute_cell_matrices();
     void
     compute_cell_loads(const double time);
-    /// Finds the DoFs of the "Fixed points" on this mesh; throws if a point
-    /// is not a vertex of its body.
+    /// The dim DoFs of the vertex @p point of its body, if a non-artificial
+    /// cell of this rank has it (else empty); throws naming @p key if no rank
+    /// has it. Collective.
+    std::vector<types::global_dof_index>
+    vertex_dofs(const BodyPoint &point, const std::string &key) const;
+    /// Finds the DoFs of the "Fixed points" and of the displacement probes on
+    /// this mesh; throws if a point is not a vertex of its body.
     void
     locate_fixed_points();
     void
@@ -178,6 +183,9 @@ namespace contact_fem
     /// The same against Analytical solution/Reference pressure profile.
     double
     reference_pressure_error(const std::vector<double> &pressure) const;
+    /// Prints and returns the displacements at Output/Displacement probes.
+    Json
+    probe_results() const;
     void
     write_vtu(const unsigned int step, const double time);
     /// error_indicators-<cycle>.vtu: the mesh of the cycle with the
@@ -228,6 +236,9 @@ namespace contact_fem
     AffineConstraints<double> hanging_constraints;
     AffineConstraints<double> dirichlet_constraints;
     std::vector<types::global_dof_index> fixed_point_dofs; ///< locally relevant
+    /// Per Output/Displacement probes entry: its vertex DoFs (see
+    /// vertex_dofs()).
+    std::vector<std::vector<types::global_dof_index>> probe_dofs;
     AffineConstraints<double> constraints;
 
     TrilinosWrappers::SparseMatrix system_matrix;

@@ -32,11 +32,25 @@ namespace contact_fem
 
   /// A displacement component held at zero at one vertex of one body, to
   /// remove a rigid-body mode that the boundary conditions leave free.
+  /// A mesh vertex of one body, written 'material id @ x, y(, z)'.
+  struct BodyPoint
+  {
+    types::material_id  material_id = 0;
+    std::vector<double> coordinates;
+  };
+
+  /// Parses 'material id @ x, y(, z)'; throws naming @p key otherwise.
+  BodyPoint
+  parse_body_point(const std::string &text, const unsigned int dim, const std::string &key);
+
+  /// The text 'material id @ x, y(, z)' of @p point (for messages and output).
+  std::string
+  to_string(const BodyPoint &point);
+
   struct PointCondition
   {
-    types::material_id  material_id;
-    std::vector<double> coordinates;
-    unsigned int        component;
+    BodyPoint    point;
+    unsigned int component;
   };
 
   struct BoundaryConditions
@@ -144,11 +158,13 @@ namespace contact_fem
     bool        write_vtu              = true;
     bool        write_pressure_profile = true;
     bool        print_timing           = true;
+    /// Vertices whose displacement every cycle reports.
+    std::vector<BodyPoint> displacement_probes;
 
     static void
     declare_parameters(ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(ParameterHandler &prm, const unsigned int dim);
   };
 
   /// Parses "a: b; c: d" style lists; throws naming @p key on malformed input.
