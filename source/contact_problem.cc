@@ -234,16 +234,24 @@ namespace contact_fem
       location[d] = point.coordinates[d];
     std::vector<types::global_dof_index> dofs;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (!cell->is_artificial() && cell->material_id() == point.material_id)
+      {
+        if (cell->is_artificial() || cell->material_id() != point.material_id)
+          continue;
         for (const auto v : cell->vertex_indices())
-          if (dofs.empty() && cell->vertex(v).distance(location) < 1e-8 * cell->diameter())
-            for (unsigned int d = 0; d < dim; ++d)
-              dofs.push_back(cell->vertex_dof_index(v, d));
+          if (cell->vertex(v).distance(location) < 1e-8 * cell->diameter())
+            {
+              for (unsigned int d = 0; d < dim; ++d)
+                dofs.push_back(cell->vertex_dof_index(v, d));
+              break;
+            }
+        if (!dofs.empty())
+          break;
+      }
     const unsigned int found = dofs.empty() ? 0 : 1;
+    const std::string  text  = to_string(point);
     AssertThrow(Utilities::MPI::sum(found, comm) > 0,
                 ExcMessage(key + ": body " + std::to_string(point.material_id) +
-                           " has no mesh vertex at (" +
-                           to_string(point).substr(to_string(point).find('@') + 2) + ")."));
+                           " has no mesh vertex at (" + text.substr(text.find('@') + 2) + ")."));
     return dofs;
   }
 

@@ -217,14 +217,18 @@ namespace contact_fem
     // deformed surface and D_j is measured there: the mean traction is that
     // force over the reference int N_j ds. (Splitting it along the reference
     // normal instead would be off by the surface rotation, ~ a / R in Hertz,
-    // which does not shrink under refinement.) The inactive paired nodes are
-    // listed too, not imposed: they only report their recovered traction.
+    // which does not shrink under refinement.) When the recovered traction
+    // is reported (a known pressure), every paired node is listed, the
+    // inactive ones not imposed, in the order report_recovered_tractions()
+    // expects.
+    const bool pressure_known = contact && (analytical.type == "hertz cylinder" ||
+                                            !analytical.reference_pressure_profile.empty());
     std::vector<ContactNodeTraction<dim>> tractions;
-    if (contact)
+    if (contact && (settings.contact_terms || pressure_known))
       {
         const auto support = slave_support_samples(*interface);
         for (const auto &s : interface->slave_nodes)
-          if (s.paired)
+          if (s.paired && (pressure_known || contact->active[s.node]))
             {
               const auto &samples   = support.at(s.node);
               double      reference = 0.;
@@ -254,8 +258,6 @@ namespace contact_fem
       .set("solution_energy_norm", spr.solution_energy_norm);
     pcout << "    estimated error (SPR" << (settings.contact_terms ? " contact" : "")
           << "): eta / |u|_E = " << value_or_ok(spr.relative_error, 1e-10) << std::endl;
-    const bool pressure_known = contact && (analytical.type == "hertz cylinder" ||
-                                            !analytical.reference_pressure_profile.empty());
     if (pressure_known)
       report_recovered_tractions(tractions, spr.node_stresses, "", cycle_record);
 

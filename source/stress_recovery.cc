@@ -995,8 +995,8 @@ namespace contact_fem
       match_contact_nodes();
       compute_vertex_fits();
       recover_nodal_values();
-      Result result         = integrate();
-      result.node_stresses  = node_stresses;
+      Result result        = integrate();
+      result.node_stresses = std::move(node_stresses);
       return result;
     }
   } // namespace

@@ -30,8 +30,6 @@ namespace contact_fem
     std::string        expression; ///< function of x, y, (z,) t
   };
 
-  /// A displacement component held at zero at one vertex of one body, to
-  /// remove a rigid-body mode that the boundary conditions leave free.
   /// A mesh vertex of one body, written 'material id @ x, y(, z)'.
   struct BodyPoint
   {
@@ -47,6 +45,8 @@ namespace contact_fem
   std::string
   to_string(const BodyPoint &point);
 
+  /// A displacement component held at zero at one vertex of one body, to
+  /// remove a rigid-body mode that the boundary conditions leave free.
   struct PointCondition
   {
     BodyPoint    point;
