@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace contact_fem
 {
@@ -248,6 +249,16 @@ namespace contact_fem
 
   namespace
   {
+    /// The box of the nodes of @p line (a 2D face; dim is the space's).
+    template <int dim>
+    BoundingBox<dim>
+    face_box(const Mortar::LineFace &line)
+    {
+      std::vector<Point<dim>> points;
+      for (const auto &x : line.nodes)
+        points.push_back(Point<dim>(x[0], x[1]));
+      return BoundingBox<dim>(points);
+    }
 
     double
     face_length(const Mortar::LineFace &line)
@@ -263,16 +274,20 @@ namespace contact_fem
   template <int dim>
   void
   ContactInterface<dim>::update(const std::vector<double> &u_at_dofs,
-                                const double               search_factor)
+                                const double               search_factor,
+                                const std::vector<double> &motion_allowance)
   {
     if constexpr (dim != 2)
       {
         (void)u_at_dofs;
         (void)search_factor;
+        (void)motion_allowance;
         AssertThrow(false, ExcNotImplemented());
       }
     else
       {
+        search_displacement = u_at_dofs;
+        reach_of_search.assign(pairs.size(), std::numeric_limits<double>::max());
         std::vector<Tensor<1, dim>> u(nodes.size());
         for (unsigned int n = 0; n < nodes.size(); ++n)
           u[n] = displacement(n, u_at_dofs);
@@ -326,14 +341,12 @@ namespace contact_fem
         std::vector<bool> master_is_candidate(faces.size(), false);
         for (unsigned int p = 0; p < pairs.size(); ++p)
           {
+            const double allowance = motion_allowance.empty() ? 0. : motion_allowance[p];
             std::vector<std::pair<BoundingBox<dim>, unsigned int>> master_boxes;
             for (unsigned int f = 0; f < faces.size(); ++f)
               if (!faces[f].slave && faces[f].pair == p)
                 {
-                  std::vector<Point<dim>> points;
-                  for (const auto &x : lines[f].nodes)
-                    points.push_back(Point<dim>(x[0], x[1]));
-                  BoundingBox<dim> box(points);
+                  BoundingBox<dim> box = face_box<dim>(lines[f]);
                   box.extend(1e-2 * lengths[f]);
                   master_boxes.emplace_back(box, f);
                   ++statistics[p].master_faces;
@@ -347,11 +360,10 @@ namespace contact_fem
                 if (!faces[f].slave || faces[f].pair != p)
                   continue;
                 ++statistics[p].slave_faces;
-                std::vector<Point<dim>> points;
-                for (const auto &x : lines[f].nodes)
-                  points.push_back(Point<dim>(x[0], x[1]));
-                BoundingBox<dim> box(points);
-                box.extend(search_factor * lengths[f]);
+                BoundingBox<dim> box = face_box<dim>(lines[f]);
+                box.extend(search_factor * lengths[f] + allowance);
+                reach_of_search[p] =
+                  std::min(reach_of_search[p], search_factor * lengths[f] + allowance);
 
                 std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
                 tree.query(boost::geometry::index::intersects(box),
@@ -462,6 +474,168 @@ namespace contact_fem
             slave_nodes.push_back(s);
           }
       }
+  }
+
+  template <int dim>
+  std::vector<double>
+  ContactInterface<dim>::relative_motion(const std::vector<double> &from,
+                                         const std::vector<double> &to) const
+  {
+    std::vector<double> slave_motion(pairs.size(), 0.), master_motion(pairs.size(), 0.);
+    for (const auto &face : faces)
+      for (const unsigned int n : face.nodes)
+        {
+          const double change =
+            (displacement(n, to) - displacement(n, from)).norm();
+          double &largest = face.slave ? slave_motion[face.pair] : master_motion[face.pair];
+          largest         = std::max(largest, change);
+        }
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      slave_motion[p] += master_motion[p];
+    return slave_motion;
+  }
+
+  template <int dim>
+  double
+  ContactInterface<dim>::nodal_gap(const SlaveNode &s, const std::vector<double> &u) const
+  {
+    return gap(s, u) - s.curvature_gap / s.D;
+  }
+
+  template <int dim>
+  double
+  ContactInterface<dim>::slip_since_search(const SlaveNode           &s,
+                                           const std::vector<double> &u) const
+  {
+    const auto change = [&](const unsigned int n) {
+      return displacement(n, u) - displacement(n, search_displacement);
+    };
+    Tensor<1, dim> relative = s.D * change(s.node);
+    for (const auto &[m, value] : s.M)
+      relative -= value * change(m);
+    return relative.norm() / s.D;
+  }
+
+  namespace
+  {
+    /// The point of @p face closest to @p x: its parameter in [-1, 1]
+    /// (Gauss-Newton from the chord projection, exact for straight faces).
+    double
+    closest_parameter(const Mortar::LineFace &face, const Point<2> &x)
+    {
+      const Tensor<1, 2> chord = face.nodes[1] - face.nodes[0];
+      double xi = std::clamp(2. * ((x - face.nodes[0]) * chord) / chord.norm_square() - 1.,
+                             -1., 1.);
+      if (face.degree() == 1)
+        return xi;
+      for (unsigned int it = 0; it < 20; ++it)
+        {
+          const Tensor<1, 2> t    = face.tangent(xi);
+          const double       step = ((x - face.point(xi)) * t) / t.norm_square();
+          const double       next = std::clamp(xi + step, -1., 1.);
+          const bool         done = std::abs(next - xi) < 1e-12;
+          xi                      = next;
+          if (done)
+            break;
+        }
+      return xi;
+    }
+  } // namespace
+
+  template <int dim>
+  std::vector<double>
+  ContactInterface<dim>::surface_distances(const std::vector<double> &u_at_dofs) const
+  {
+    std::vector<double> distances(slave_nodes.size(),
+                                  std::numeric_limits<double>::infinity());
+    if constexpr (dim != 2)
+      {
+        (void)u_at_dofs;
+        AssertThrow(false, ExcNotImplemented());
+      }
+    else
+      {
+        std::vector<Tensor<1, dim>> u(nodes.size());
+        for (unsigned int n = 0; n < nodes.size(); ++n)
+          u[n] = displacement(n, u_at_dofs);
+        // Master faces per node, to tell a vertex inside the master surface
+        // (two faces: sign by their mean normal) from its rim (one face).
+        std::vector<std::vector<unsigned int>> master_faces_of_node(nodes.size());
+        std::vector<Mortar::LineFace>          lines(faces.size());
+        for (unsigned int f = 0; f < faces.size(); ++f)
+          if (!faces[f].slave)
+            {
+              lines[f] = line(faces[f], u);
+              for (const unsigned int n : faces[f].nodes)
+                master_faces_of_node[n].push_back(f);
+            }
+        const auto outward_normal = [&](const unsigned int f, const double xi) {
+          return Mortar::face_normal(lines[f], xi, faces[f].orientation);
+        };
+
+        for (unsigned int p = 0; p < pairs.size(); ++p)
+          {
+            std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
+            for (unsigned int f = 0; f < faces.size(); ++f)
+              if (!faces[f].slave && faces[f].pair == p)
+                boxes.emplace_back(face_box<dim>(lines[f]), f);
+            if (boxes.empty())
+              continue;
+            const auto tree = pack_rtree(boxes);
+
+            for (unsigned int i = 0; i < slave_nodes.size(); ++i)
+              {
+                const SlaveNode &s = slave_nodes[i];
+                if (s.pair != p)
+                  continue;
+                const Point<dim> xd = nodes[s.node].reference + u[s.node];
+                const Point<2>   x(xd[0], xd[1]);
+                // The nearest box bounds the distance from above; every face
+                // closer than that has its box within that distance.
+                std::vector<std::pair<BoundingBox<dim>, unsigned int>> nearest;
+                tree.query(boost::geometry::index::nearest(xd, 1),
+                           std::back_inserter(nearest));
+                const auto  &first = lines[nearest[0].second];
+                const double bound = x.distance(first.point(closest_parameter(first, x)));
+                BoundingBox<dim> around(std::make_pair(xd, xd));
+                around.extend(bound * (1. + 1e-12) + 1e-300);
+                std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
+                tree.query(boost::geometry::index::intersects(around),
+                           std::back_inserter(hits));
+
+                double       best = std::numeric_limits<double>::infinity(), best_xi = 0.;
+                unsigned int best_face = 0;
+                for (const auto &hit : hits)
+                  {
+                    const unsigned int f  = hit.second;
+                    const double       xi = closest_parameter(lines[f], x);
+                    const double       d  = x.distance(lines[f].point(xi));
+                    // Ties (a shared vertex) go to the lower face index, so
+                    // the result does not depend on the query order.
+                    if (d < best - 1e-14 * bound || (d <= best && f < best_face))
+                      {
+                        best      = d;
+                        best_xi   = xi;
+                        best_face = f;
+                      }
+                  }
+                Tensor<1, 2> normal;
+                if (std::abs(best_xi) < 1.)
+                  normal = outward_normal(best_face, best_xi);
+                else
+                  {
+                    const unsigned int vertex = faces[best_face].nodes[best_xi < 0. ? 0 : 1];
+                    if (master_faces_of_node[vertex].size() < 2)
+                      continue; // beyond the rim of the master surface
+                    for (const unsigned int f : master_faces_of_node[vertex])
+                      normal += outward_normal(f, faces[f].nodes[0] == vertex ? -1. : 1.);
+                  }
+                const double side = (x - lines[best_face].point(best_xi)) * normal;
+                distances[i]      = side < 0. ? -best : best;
+              }
+          }
+      }
+    return distances;
   }
 
   template class ContactInterface<2>;

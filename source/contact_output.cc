@@ -163,7 +163,8 @@ namespace contact_fem
       .set("total_contact_force", total_contact_force(*interface, *contact).norm())
       .set("slave_element_size", n_active > 0 ? size_sum / n_active : 0.)
       .set("penalty", contact->penalty.empty() ? 0. : contact->penalty[0])
-      .set("scale_factor", contact->scale.empty() ? 0. : contact->scale[0]);
+      .set("scale_factor", contact->scale.empty() ? 0. : contact->scale[0])
+      .set("largest_unexplained_penetration_over_h", last_penetration_excess);
     if (contact_parameters.adaptive_penalty)
       {
         double largest = 0.;
@@ -424,6 +425,15 @@ namespace contact_fem
                 << "    pressure spread (max-min)/max: " << value_or_ok((p_max - p_min) / p_max, 1e-8)
                 << std::endl
                 << "    max |gap|/h on active nodes:  " << value_or_ok(gap_max, 1e-10) << std::endl;
+        // Round-off-free: at or below 1e-6 h the excess is not printed as a
+        // number (an exactly resolved contact gives noise there).
+        const double excess =
+          contact_json["largest_unexplained_penetration_over_h"].number_value();
+        pcout << "    penetration check:            every slave node against the whole "
+                 "master surface, unexplained penetration "
+              << (excess < 1e-6 ? std::string("< 1e-6") : scientific(excess, 1))
+              << " h (tolerance " << contact_parameters.penetration_tolerance << " h)"
+              << std::endl;
         if (contact_parameters.adaptive_penalty)
           pcout << "    penetration within the allowed " << contact_parameters.penetration_factor
                 << " h: " << (gap_max <= contact_parameters.penetration_factor ? "yes" : "no")

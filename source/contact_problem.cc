@@ -51,14 +51,6 @@ namespace contact_fem
 
   namespace
   {
-    std::string
-    scientific(const double x, const unsigned int digits = 3)
-    {
-      std::ostringstream s;
-      s << std::scientific << std::setprecision(digits) << x;
-      return s.str();
-    }
-
     /// "= value", or "< tolerance" for a residual at round-off level (which
     /// differs between runs and must not reach compared output).
     std::string
@@ -573,9 +565,172 @@ namespace contact_fem
   }
 
   template <int dim>
+  double
+  ContactProblem<dim>::prescribed_increment() const
+  {
+    double largest = 0.;
+    for (const auto i : owned_dofs)
+      if (dirichlet_constraints.is_constrained(i) &&
+          dirichlet_constraints.get_constraint_entries(i)->empty())
+        largest =
+          std::max(largest, std::abs(dirichlet_constraints.get_inhomogeneity(i) - solution(i)));
+    return Utilities::MPI::max(largest, comm);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::search_for_step(const double prescribed,
+                                       const double step_size,
+                                       const bool   first_step)
+  {
+    TimerOutput::Scope t(*timer, "Contact: search");
+    interface_fixed_values = interface->gather([this](const types::global_dof_index i) {
+      return dirichlet_constraints.is_constrained(i) ?
+               dirichlet_constraints.get_inhomogeneity(i) :
+               0.;
+    });
+    interface_displacement  = interface->gather(solution);
+    step_start_displacement = interface_displacement;
+    search_configuration =
+      contact_parameters.updated_kinematics ?
+        interface_displacement :
+        std::vector<double>(interface_displacement.size(), 0.);
+    // The step moves the surfaces at least as far as the prescribed
+    // displacements change, and about as far as the last step did per unit
+    // of load; with small kinematics the operators must also reach as far as
+    // the surfaces have moved from the reference configuration.
+    const std::vector<double> moved =
+      interface->relative_motion(search_configuration, interface_displacement);
+    motion_allowance.assign(interface->pairs.size(), 0.);
+    for (unsigned int p = 0; p < motion_allowance.size(); ++p)
+      {
+        double predicted = prescribed;
+        if (p < last_step_motion.size() && last_step_size > 0.)
+          predicted = std::max(predicted, last_step_motion[p] * step_size / last_step_size);
+        motion_allowance[p] = search_growth * (moved[p] + predicted);
+      }
+    interface->update(search_configuration, contact_parameters.search_factor, motion_allowance);
+    contact->start_load_step(*interface, interface_displacement, first_step);
+  }
+
+  template <int dim>
+  bool
+  ContactProblem<dim>::extend_search_if_outrun()
+  {
+    const std::vector<double> motion = interface->motion_since_search(interface_displacement);
+    bool                      outrun = false;
+    for (unsigned int p = 0; p < motion.size(); ++p)
+      if (motion[p] > interface->search_reach()[p])
+        {
+          motion_allowance[p] = std::max(motion_allowance[p], search_growth * motion[p]);
+          outrun              = true;
+        }
+    if (outrun)
+      {
+        pcout << "    the surfaces moved beyond the search reach: ";
+        search_again();
+      }
+    return outrun;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::widen_search(const unsigned int pair, const double depth)
+  {
+    const double motion = interface->motion_since_search(interface_displacement)[pair];
+    motion_allowance[pair] =
+      std::max(2. * motion_allowance[pair], search_growth * motion) + depth;
+    pcout << "    a slave node penetrates the master where no master face is paired with "
+             "it: ";
+    search_again();
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::search_again()
+  {
+    pcout << "searching again with room for "
+          << scientific(*std::max_element(motion_allowance.begin(), motion_allowance.end()), 2)
+          << std::endl;
+    {
+      TimerOutput::Scope t(*timer, "Contact: search");
+      interface->update(search_configuration, contact_parameters.search_factor,
+                        motion_allowance);
+      contact->start_load_step(*interface, interface_displacement, false);
+    }
+    make_sparsity_pattern();
+  }
+
+  template <int dim>
+  typename ContactProblem<dim>::PenetrationCheck
+  ContactProblem<dim>::check_penetration() const
+  {
+    TimerOutput::Scope        t(*timer, "Contact: check");
+    const std::vector<double> distance = interface->surface_distances(interface_displacement);
+    PenetrationCheck          check;
+    for (unsigned int i = 0; i < interface->slave_nodes.size(); ++i)
+      {
+        const auto  &s           = interface->slave_nodes[i];
+        const double penetration = std::max(0., -distance[i]);
+        // What the node's own mortar gap says (with a penalty, or at the
+        // nodal value of a curved face's weighted gap, a node may lie
+        // inside), and the error of a gap linearised in the motion: a slip s
+        // along a surface whose normal turns by theta on the way moves the
+        // node off the linearised surface by about s theta, which small
+        // sliding bounds by theta < max_sliding_angle.
+        const double allowed =
+          s.paired ? std::max(0., -interface->nodal_gap(s, interface_displacement)) +
+                       max_sliding_angle *
+                         interface->slip_since_search(s, interface_displacement) :
+                     0.;
+        if ((penetration - allowed) / s.size > check.excess)
+          {
+            check.excess      = (penetration - allowed) / s.size;
+            check.node        = i;
+            check.penetration = penetration;
+            check.allowed     = allowed;
+          }
+      }
+    return check;
+  }
+
+  template <int dim>
+  NewtonFailure
+  ContactProblem<dim>::penetration_failure(const PenetrationCheck &check,
+                                           const unsigned int      step,
+                                           const double            time) const
+  {
+    const auto        &s = interface->slave_nodes[check.node];
+    const std::string configuration = contact_parameters.updated_kinematics ?
+                                        "configuration of the step's start" :
+                                        "reference configuration";
+    std::ostringstream message;
+    message << "load step " << step + 1 << " (t = " << time
+            << "): the converged solution is not a contact solution. The slave node at ("
+            << interface->nodes[s.node].reference << ") penetrates the master surface by "
+            << scientific(check.penetration, 3) << " (h = " << scientific(s.size, 3) << "), ";
+    if (s.paired)
+      message << "of which its mortar gap and its linearisation allow "
+              << scientific(check.allowed, 3)
+              << ": the surfaces slid or turned farther than the operators built on the "
+              << configuration << " can follow";
+    else
+      message << "and no master face is paired with it, also after a wider search (its "
+                 "normal does not meet the master surface in the "
+              << configuration << ")";
+    message << " (Contact/Penetration tolerance = " << contact_parameters.penetration_tolerance
+            << " h).";
+    if (!contact_parameters.updated_kinematics)
+      message << " This motion is beyond small sliding, so smaller load steps cannot help: "
+                 "use Contact/Kinematics = updated with enough load steps.";
+    return NewtonFailure(message.str(), contact_parameters.updated_kinematics);
+  }
+
+  template <int dim>
   void
   ContactProblem<dim>::solve_load_step(const unsigned int step,
                                        const double       time,
+                                       const double       step_size,
                                        const bool         first_step,
                                        Json              &record)
   {
@@ -584,21 +739,11 @@ namespace contact_fem
     make_dirichlet_constraints(time);
     compute_cell_loads(time);
     // Start from the last converged state with the new prescribed values.
+    const double prescribed = contact ? prescribed_increment() : 0.;
     dirichlet_constraints.distribute(solution);
     ghosted_solution = solution;
-
     if (contact)
-      {
-        TimerOutput::Scope t(*timer, "Contact: search");
-        interface_fixed_values = interface->gather([this](const types::global_dof_index i) {
-          return dirichlet_constraints.is_constrained(i) ?
-                   dirichlet_constraints.get_inhomogeneity(i) :
-                   0.;
-        });
-        interface_displacement = interface->gather(solution);
-        interface->update(interface_displacement, contact_parameters.search_factor);
-        contact->start_load_step(*interface, interface_displacement, first_step);
-      }
+      search_for_step(prescribed, step_size, first_step);
     make_sparsity_pattern();
 
     // Stiffness ratios beyond ~1e10 leave the direct solve with too few
@@ -626,7 +771,7 @@ namespace contact_fem
     unsigned int previous_changes = 1;
     unsigned int last_changes = 0;
     bool         converged = false;
-    unsigned int iteration = 0;
+    unsigned int iteration = 0, searches_after_check = 0;
     for (; iteration <= newton_parameters.max_iterations; ++iteration)
       {
         if (iteration > 0 && contact && contact->n_active() == 0 &&
@@ -676,11 +821,14 @@ namespace contact_fem
         compute_residual();
         unsigned int                    changes = 0;
         typename FrictionlessContact<dim>::Residuals contact_residuals;
+        bool searched_again = false;
         if (contact)
           {
-            TimerOutput::Scope t(*timer, "Contact: active set");
-            interface_residual     = interface->gather(residual);
             interface_displacement = interface->gather(solution);
+            if (iteration > 0)
+              searched_again = extend_search_if_outrun();
+            TimerOutput::Scope t(*timer, "Contact: active set");
+            interface_residual = interface->gather(residual);
             if (iteration > 0)
               {
                 contact->recover_multipliers(*interface, interface_residual);
@@ -732,7 +880,7 @@ namespace contact_fem
                                 changes == 0 && previous_changes == 0 &&
                                 r_u > 0.5 * previous_r_u && ratio_u <= 1e-2 &&
                                 ratio_lambda <= newton_parameters.multiplier_relative_tolerance;
-        converged = iteration > 0 &&
+        converged = iteration > 0 && !searched_again &&
                     ((residuals_small && (changes == 0 || at_round_off)) || stagnating);
         previous_changes = iteration > 0 ? changes : 1;
         previous_r_u     = r_u;
@@ -761,6 +909,27 @@ namespace contact_fem
                                                  " converged to linear-solver accuracy") :
                               "")
               << std::endl;
+        if (converged && contact)
+          {
+            // The promise behind "converged": no slave node inside the
+            // master beyond what its gap accounts for. A node no master face
+            // is paired with gets a few wider searches.
+            const PenetrationCheck check = check_penetration();
+            if (check.excess > contact_parameters.penetration_tolerance)
+              {
+                if (interface->slave_nodes[check.node].paired ||
+                    searches_after_check == max_searches_after_check)
+                  throw penetration_failure(check, step, time);
+                ++searches_after_check;
+                converged            = false;
+                widen_search(interface->slave_nodes[check.node].pair, check.penetration);
+                continue;
+              }
+            last_penetration_excess = check.excess;
+            last_step_motion =
+              interface->relative_motion(step_start_displacement, interface_displacement);
+            last_step_size = step_size;
+          }
         if (converged)
           break;
       }
@@ -970,6 +1139,50 @@ namespace contact_fem
 
   template <int dim>
   void
+  ContactProblem<dim>::warn_about_large_strains(Json &cycle_record)
+  {
+    // Linear elasticity and a contact gap linear in u assume small strains
+    // and rotations: beyond a few percent the answer is that of a model the
+    // bodies no longer follow (and the step count would matter to any
+    // geometry update).
+    constexpr double   strain_limit = 0.05, rotation_limit = 0.1;
+    const QGauss<dim>  quadrature(fe.degree + 1);
+    FEValues<dim>      fe_values(*mapping, fe, quadrature, update_gradients);
+    const FEValuesExtractors::Vector                 displacement(0);
+    std::vector<Tensor<2, dim>>                      gradients(quadrature.size());
+    double                                           strain = 0., rotation = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_gradients(ghosted_solution, gradients);
+          for (const auto &grad : gradients)
+            {
+              const auto eigenvalues = dealii::eigenvalues(symmetrize(grad));
+              for (const double e : eigenvalues)
+                strain = std::max(strain, std::abs(e));
+              // The infinitesimal rotation: the skew part's largest entry.
+              for (unsigned int i = 0; i < dim; ++i)
+                for (unsigned int j = 0; j < i; ++j)
+                  rotation = std::max(rotation, 0.5 * std::abs(grad[i][j] - grad[j][i]));
+            }
+        }
+    strain   = Utilities::MPI::max(strain, comm);
+    rotation = Utilities::MPI::max(rotation, comm);
+    cycle_record.set("largest_strain", strain).set("largest_rotation", rotation);
+    if (strain <= strain_limit && rotation <= rotation_limit)
+      return;
+    std::ostringstream text;
+    text << "the solution leaves the small-strain range (largest principal strain "
+         << scientific(strain, 2) << ", largest rotation " << scientific(rotation, 2)
+         << " rad; linear elasticity and the contact gap assume below " << strain_limit
+         << " and " << rotation_limit << "): the load is beyond what this model describes";
+    pcout << "  Warning: " << text.str() << "." << std::endl;
+    cycle_record.set("small_strain_warning", text.str());
+  }
+
+  template <int dim>
+  void
   ContactProblem<dim>::warn_about_weakly_held_rotation(Json &cycle_record)
   {
     // Frictionless contact on a curved surface resists a rotation about its
@@ -1150,6 +1363,9 @@ namespace contact_fem
   ContactProblem<dim>::run_cycle(const unsigned int cycle, Json &cycle_record)
   {
     newton_iterations_of_cycle.clear();
+    last_step_motion.clear();
+    last_step_size          = 0.;
+    last_penetration_excess = 0.;
     singular_solves  = 0;
     most_null_pivots = 0;
     setup_dofs();
@@ -1216,7 +1432,7 @@ namespace contact_fem
         Json         step_record = Json::object();
         try
           {
-            solve_load_step(n_solved, time, n_solved == 0, step_record);
+            solve_load_step(n_solved, time, time - t_done, n_solved == 0, step_record);
           }
         catch (const NewtonFailure &failure)
           {
@@ -1276,6 +1492,8 @@ namespace contact_fem
     current_time = t_done;
     cycle_record.set("load_steps", steps);
     warn_about_large_displacements(cycle_record);
+    if (n_solved > 0)
+      warn_about_large_strains(cycle_record);
     warn_about_weakly_held_rotation(cycle_record);
     warn_about_singular_stiffness(cycle_record);
     if (n_solved == 0)

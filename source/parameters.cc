@@ -357,8 +357,35 @@ namespace contact_fem
     prm.declare_entry("Search factor",
                       "3",
                       Patterns::Double(0.),
-                      "The bounding box of a slave face is enlarged by this factor "
-                      "times its length before the master faces are searched.");
+                      "Tuning knob of the broad phase: the bounding box of a slave "
+                      "face is enlarged by this factor times its length, plus the "
+                      "motion the step may bring (predicted from the prescribed "
+                      "displacements and the previous step, and enlarged during "
+                      "Newton whenever an iterate moves farther). Correctness does "
+                      "not depend on it: after convergence every slave node is "
+                      "checked against the whole master surface.");
+    prm.declare_entry("Kinematics",
+                      "small",
+                      Patterns::Selection("small|updated"),
+                      "'small': the mortar operators (pairing, normals, D, M) are "
+                      "built on the reference configuration and the gap is linear in "
+                      "the displacement, consistent with the small-strain bulk: "
+                      "frictionless results do not depend on the load steps (small "
+                      "sliding, small rotations). 'updated': the operators are "
+                      "rebuilt on the configuration X + u of the start of every load "
+                      "step (follows larger sliding, but the answer then depends on "
+                      "the number of load steps and adaptive cycles; see "
+                      "doc/design.md).");
+    prm.declare_entry("Penetration tolerance",
+                      "0.05",
+                      Patterns::Double(0.),
+                      "After a step converges, every slave node is located against "
+                      "the whole master surface of its pair (R-tree, closest point). "
+                      "A node that penetrates by more than this fraction of its "
+                      "element size beyond what its own mortar gap accounts for (the "
+                      "search missed it, or the geometry moved beyond the operators) "
+                      "makes the step search again, split, or stop with a "
+                      "diagnosis.");
     prm.leave_subsection();
   }
 
@@ -415,6 +442,8 @@ namespace contact_fem
     stiffness_factor    = prm.get_double("Stiffness factor");
     active_check_factor = prm.get_double("Active check factor");
     search_factor       = prm.get_double("Search factor");
+    updated_kinematics  = prm.get("Kinematics") == "updated";
+    penetration_tolerance = prm.get_double("Penetration tolerance");
     allow_loss_of_contact = prm.get_bool("Allow loss of contact");
     adaptive_penalty      = prm.get_bool("Adaptive penalty");
     penetration_factor    = prm.get_double("Maximum penetration factor");
@@ -430,6 +459,8 @@ namespace contact_fem
                 ExcMessage("Contact/Stiffness factor: expected a value > 0."));
     AssertThrow(search_factor > 0.,
                 ExcMessage("Contact/Search factor: expected a value > 0."));
+    AssertThrow(penetration_tolerance > 0.,
+                ExcMessage("Contact/Penetration tolerance: expected a value > 0."));
   }
 
   void

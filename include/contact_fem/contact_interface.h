@@ -131,9 +131,62 @@ namespace contact_fem
     std::vector<double>
     gather(const std::function<double(types::global_dof_index)> &value_on_owner) const;
 
-    /// Search and mortar integration on X + u, @p u given at dofs().
+    /**
+     * Search and mortar integration on X + u, @p u given at dofs(). The box
+     * of a slave face of pair p is enlarged by @p search_factor times its
+     * length plus @p motion_allowance[p] (empty: none), the relative motion
+     * of the surfaces the operators must reach.
+     */
     void
-    update(const std::vector<double> &u, const double search_factor);
+    update(const std::vector<double> &u,
+           const double               search_factor,
+           const std::vector<double> &motion_allowance = {});
+
+    /// Per pair: a bound of how far the slave surface moved relative to the
+    /// master from @p from to @p to (both at dofs()): the largest slave plus
+    /// the largest master displacement change.
+    std::vector<double>
+    relative_motion(const std::vector<double> &from, const std::vector<double> &to) const;
+
+    /// relative_motion() since the configuration of the last search.
+    std::vector<double>
+    motion_since_search(const std::vector<double> &u) const
+    {
+      return relative_motion(search_displacement, u);
+    }
+
+    /// Per pair: the motion the last search is sure to cover (its allowance
+    /// plus the search factor times the smallest slave face).
+    const std::vector<double> &
+    search_reach() const
+    {
+      return reach_of_search;
+    }
+
+    /**
+     * Independent check of the contact: the signed distance of every slave
+     * node (in slave_nodes order) at X + u to the whole master surface of its
+     * pair, on the true face geometry, by an R-tree of the master faces and
+     * the closest point; negative when the node is inside the master body.
+     * +infinity where the closest point lies beyond the rim of the master
+     * surface. Does not use the mortar operators.
+     */
+    std::vector<double>
+    surface_distances(const std::vector<double> &u) const;
+
+    /**
+     * The gap the mortar operators predict at the node itself: the nodal
+     * form n_j . (sum_l M_jl x_l - D_j x_j) / D_j, which differs from gap()
+     * by the curvature gap (the weighted mean along a curved face). Only
+     * for paired nodes.
+     */
+    double
+    nodal_gap(const SlaveNode &s, const std::vector<double> &u) const;
+
+    /// How far a paired slave node moved relative to the master point it is
+    /// paired with (the M-weighted master displacement) since the search.
+    double
+    slip_since_search(const SlaveNode &s, const std::vector<double> &u) const;
 
     /// Displacement of node @p n from values at dofs().
     Tensor<1, dim>
@@ -163,6 +216,9 @@ namespace contact_fem
     std::vector<unsigned int> slave_faces_per_rank, master_faces_per_rank;
 
   private:
+    /// Displacement at dofs() of the last search, and its reach per pair.
+    std::vector<double>                                 search_displacement;
+    std::vector<double>                                 reach_of_search;
     std::vector<types::global_dof_index>               interface_dofs;
     std::map<types::global_dof_index, unsigned int>     dof_position;
     IndexSet                                            owned_dofs;

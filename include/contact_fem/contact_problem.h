@@ -121,6 +121,10 @@ namespace contact_fem
     /// size.
     void
     warn_about_large_displacements(Json &cycle_record);
+    /// Records the largest strain and rotation, and prints and records a
+    /// warning when they leave the small-strain range.
+    void
+    warn_about_large_strains(Json &cycle_record);
     /// Prints and records a warning when a unit couple on a body in contact
     /// turns it by theta with theta G V > 50 (a weakly held rotation); uses
     /// the factors of the converged system.
@@ -128,6 +132,48 @@ namespace contact_fem
     warn_about_weakly_held_rotation(Json &cycle_record);
     void
     warn_about_singular_stiffness(Json &cycle_record) const;
+    /// The largest change of a prescribed displacement from the current
+    /// solution to the values at the present time (before they are
+    /// distributed): a lower bound of the motion of the step. Collective.
+    double
+    prescribed_increment() const;
+    /// Searches the interface with the motion the step may bring (per pair,
+    /// predicted from @p prescribed and the last step) and starts the
+    /// load step of the formulation.
+    void
+    search_for_step(const double prescribed, const double step_size, const bool first_step);
+    /// During Newton: if the iterate moved the surfaces farther than the
+    /// search reaches, makes room for 1.5 times that motion and searches
+    /// again; returns whether it did.
+    bool
+    extend_search_if_outrun();
+    /// Makes room for twice the motion allowance of @p pair plus @p depth
+    /// and searches again.
+    void
+    widen_search(const unsigned int pair, const double depth);
+    /// Searches the same configuration with the present motion_allowance,
+    /// restarts the formulation's active set from the current iterate and
+    /// rebuilds the sparsity pattern.
+    void
+    search_again();
+    /// The slave node that penetrates the master most beyond what its own
+    /// mortar gap (and a small-sliding linearisation) accounts for.
+    struct PenetrationCheck
+    {
+      double       excess = 0.; ///< over the node's element size
+      unsigned int node   = 0;  ///< in interface->slave_nodes
+      double       penetration = 0., allowed = 0.;
+    };
+    /// After convergence: every slave node against the whole master surface
+    /// (ContactInterface::surface_distances()).
+    PenetrationCheck
+    check_penetration() const;
+    /// The diagnosis of a failed check_penetration(); splittable with
+    /// updated kinematics only.
+    NewtonFailure
+    penetration_failure(const PenetrationCheck &check,
+                        const unsigned int      step,
+                        const double            time) const;
     void
     make_sparsity_pattern();
     void
@@ -136,6 +182,7 @@ namespace contact_fem
     void
     solve_load_step(const unsigned int step,
                     const double       time,
+                    const double       step_size,
                     const bool         first_step,
                     Json              &step_record);
     void
@@ -260,6 +307,26 @@ namespace contact_fem
     std::vector<double>                    interface_fixed_values;
     std::vector<double>                    interface_residual;
     std::vector<bool>                      interface_dof_fixed;
+    /// Interface displacement of the configuration the operators are built
+    /// on: zero with small kinematics, the step's start with updated.
+    std::vector<double>                    search_configuration;
+    /// Interface displacement at the start of the current load step.
+    std::vector<double>                    step_start_displacement;
+    /// The search reaches this many times the motion it is sized for.
+    static constexpr double                search_growth = 1.5;
+    /// Wider searches for an unpaired penetrating node before giving up.
+    static constexpr unsigned int          max_searches_after_check = 3;
+    /// Small sliding: the normal turns by less than this (radians) along
+    /// the slip of a node, so a linearised gap errs by less than this times
+    /// the slip (check_penetration()).
+    static constexpr double                max_sliding_angle = 0.1;
+    /// Per pair: the motion allowance of the current search, and the
+    /// relative surface motion of the last converged step (with its size),
+    /// from which the next step's is predicted.
+    std::vector<double>                    motion_allowance, last_step_motion;
+    double                                 last_step_size = 0.;
+    /// Of the last converged step: the largest unexplained penetration / h.
+    double                                 last_penetration_excess = 0.;
 
     std::unique_ptr<TimerOutput>       timer; ///< made once the input is valid
     double                             current_time = 0.;

@@ -9,6 +9,15 @@
 
 namespace contact_fem
 {
+  /// @p x in scientific notation with @p digits after the point.
+  inline std::string
+  scientific(const double x, const unsigned int digits = 3)
+  {
+    std::ostringstream s;
+    s << std::scientific << std::setprecision(digits) << x;
+    return s.str();
+  }
+
   /// The value, or "ok (< tol)" when its magnitude is below the tolerance:
   /// round-off must not reach test output (numdiff compares digits).
   inline std::string

@@ -94,6 +94,11 @@ namespace contact_fem
     double stiffness_factor = 1.;
     double active_check_factor = 1e-2;
     double search_factor       = 3.;
+    /// Mortar operators rebuilt at every load step (else once, on the
+    /// reference configuration).
+    bool   updated_kinematics    = false;
+    /// Unexplained penetration allowed after convergence, over the element size.
+    double penetration_tolerance = 0.05;
     bool   allow_loss_of_contact = false;
     /// Penalty formulation only: adapt the nodal penalties (Bussetta et al.)
     /// until every penetration is below penetration_factor * h.
