@@ -38,13 +38,20 @@ GROUPS = [
     ("regularised", "Penalty formulation (Contact/Formulation = penalty frictionless), fixed "
                     "and adaptive penalty (Contact/Adaptive penalty)"),
     ("newton", "Newton damping (Newton/Damping)"),
+    ("reach", "Search reach and kinematics (gaps closed in one step, fine meshes in one step, "
+              "fast approach, load-step independence, beyond small sliding)"),
 ]
+
+# same=GROUP/CASE: the contact answer (p_max and the transmitted force) must
+# equal that case's to this relative tolerance (load-step independence).
+SAME_TOL = 1e-8
 
 FLAGS = ("hertz", "hertz-approx", "empty", "centred")
 
 # Tolerances of the verdicts.
 HERTZ_P_TOL = 0.05        # |p_max / p_Hertz - 1|
 HERTZ_A_TOL = 1.5         # |a - a_Hertz| in slave elements
+HERTZ_A_REL_TOL = 0.03  # ... unless within 3 % of a (the finite-body limit is ~2 %)
 CENTRE_TOL = 0.5          # |centre of the pressure| in slave elements
 IMBALANCE_TOL = 1e-6
 PRESSURE_TOL = 1e-6       # patch-type cases: max |p_i / p - 1|
@@ -154,6 +161,10 @@ def warning_label(text):
     m = re.search(r"body (\d+) is held only weakly against rotation: a couple turns it (\S+) times", text)
     if m:
         return "weakly held rotation (body %s, theta G V = %s)" % m.groups()
+    m = re.search(r"leaves the small-strain range \(largest principal strain (\S+), "
+                  r"largest rotation (\S+) rad", text)
+    if m:
+        return "beyond small strain (strain %s, rotation %s)" % m.groups()
     m = re.search(r"slave side is (\S+) times stiffer", text)
     if m:
         ratio = ("%.3g" % float(m.group(1))).replace("e+0", "e").replace("e+", "e")
@@ -357,7 +368,11 @@ def judge(case):
         bad = []
         if perr is not None and abs(perr) > HERTZ_P_TOL:
             bad.append("p_max %s" % pct(perr))
-        if aerr is not None and abs(aerr) > HERTZ_A_TOL:
+        # On fine meshes the half-width settles ~2 % below Hertz (the half-disc
+        # is a finite body, not a half-space): many elements, but no mesh error.
+        arel = (a.get("a_error") / a["a"]) if a.get("a_error") is not None and a.get("a") else None
+        if aerr is not None and abs(aerr) > HERTZ_A_TOL and not (
+                arel is not None and abs(arel) <= HERTZ_A_REL_TOL):
             bad.append("a off by %.2g elements" % aerr)
         if case["centre_h"] is not None and abs(case["centre_h"]) > CENTRE_TOL:
             bad.append("pressure centre off by %.2g elements" % case["centre_h"])
@@ -383,6 +398,36 @@ def judge(case):
             verdict += " (the step grew back %d time(s))" % out["grows"]
     case["verdict"] = verdict
     case["notes"] = notes
+
+
+def judge_same(cases):
+    """Applies the same=GROUP/CASE tokens: a converged case whose p_max or
+    contact force differs from the named case's by more than SAME_TOL is
+    wrong (unless it warns)."""
+    by_id = {c["group"] + "/" + c["name"]: c for c in cases}
+    for c in cases:
+        for key, other_id in c["expect_kv"]:
+            if key != "same" or c["rc"] != 0:
+                continue
+            other = by_id.get(other_id)
+            if other is None or other["rc"] != 0:
+                c["notes"].append("no converged run of %s to compare with" % other_id)
+                continue
+            diffs = []
+            for name in ("max_contact_pressure", "total_contact_force"):
+                a, b = c["contact"].get(name), other["contact"].get(name)
+                if a is None or b is None or b == 0:
+                    continue
+                diffs.append(abs(a / b - 1.))
+            diff = max(diffs) if diffs else float("nan")
+            if not diff <= SAME_TOL:
+                c["kind"] = "warned" if c["warnings"] else "wrong"
+                c["verdict"] = ("CONVERGED, CHECK FAILS" if c["kind"] == "wrong" else
+                                "converged, check fails, the program warns")
+                c["notes"].append("p_max / contact force differ from %s by %.2g" % (other_id, diff))
+            else:
+                c["notes"].append("same p_max and contact force as %s (%.1g relative)"
+                                  % (other_id, diff))
 
 
 def table(cases, hertz, pressure, warnings):
@@ -490,6 +535,7 @@ def main():
         print("analyse.py: no runs under %s" % args.results, file=sys.stderr)
         return 1
     cases.sort(key=lambda c: c["order"])
+    judge_same(cases)
 
     shas = sorted({c["run"].get("binary_sha256", "?") for c in cases})
     gits = sorted({c["run"].get("git", "?") for c in cases})
@@ -540,10 +586,13 @@ def main():
               "and `cycles[*].warning` of summary.json, shortened. *splits* also counts how often "
               "the step grew back (\"Growing the step\"). Hertz errors are only given for "
               "converged runs. Reproduce commands name `build/contact_fem`; use the binary above.")
-    md.append("- tolerances of the verdicts: |p_max err| ≤ %g, |a err| ≤ %g elements, "
+    md.append("- tolerances of the verdicts: |p_max err| ≤ %g, |a err| ≤ %g elements "
+              "(or ≤ %g a on meshes so fine that the half-disc's finite-body effect, ~2 %% "
+              "of a, spans more elements), "
               "|centre| ≤ %g elements, imbalance ≤ %g, patch pressures within %g relative "
               "(a case's `tol=` overrides the last two)." %
-              (HERTZ_P_TOL, HERTZ_A_TOL, CENTRE_TOL, IMBALANCE_TOL, PRESSURE_TOL))
+              (HERTZ_P_TOL, HERTZ_A_TOL, HERTZ_A_REL_TOL, CENTRE_TOL, IMBALANCE_TOL,
+               PRESSURE_TOL))
     md.append("")
 
     known = [g for g, _ in GROUPS]

@@ -276,7 +276,8 @@ run_case $G x1e2-narrow "$HERTZ" 180 "p = 100 x 0.2 t on the default mesh (grade
 
 # --- 4. Initial gap / initial penetration (contact blocks) -----------------
 G=gap
-run_case $G gap-closing       "$GAP" 30 "tests/scenes/initial_gap_01.prm: gap 0.01 closed by u_top = -0.02 t, 4 steps (closure exactly at t = 0.5)" "p=0.666667"
+run_case $G gap-closing       "$GAP" 30 "tests/scenes/initial_gap_01.prm: gap 0.01 closed by u_top = -0.02 t, 4 steps (closure exactly at t = 0.5)" "p=0.666667" \
+  "Load stepping/Number of load steps=4"
 run_case $G gap-closing-3     "$GAP" 30 "same, 3 steps (closure inside step 2)" "p=0.666667" \
   "Load stepping/Number of load steps=3"
 run_case $G gap-no-loss       "$GAP" 30 "same with Allow loss of contact = false (steps 1-2 have no contact by design)" "diag=no contact" \
@@ -415,6 +416,45 @@ run_case $G gap-damped-tight "$GAP" 30 "closing gap, Damping = 0.5, Maximum iter
   "Newton/Damping=0.5" "Newton/Maximum iterations=60" \
   "Newton/Displacement relative tolerance=1e-8" "Newton/Multiplier relative tolerance=1e-8"
 
+
+# --- 10. Search reach and kinematics ---------------------------------------
+# Motion within one step far beyond the slave faces (the search must be sized
+# from the motion, and the penetration check must catch what it misses);
+# Contact/Kinematics = small must give one answer for any number of steps;
+# loads beyond small sliding must stop (small) or split and warn (updated).
+G=reach
+run_case $G gap-0.8-1step "$GAP" 30 "gap 0.8 (3 slave faces) closed by u_top = -0.82 in one step" "p=1.333333333" \
+  "Geometry/Contact blocks/Initial gap=0.8" "Boundary conditions/Prescribed displacement=1: y = -0.82*t" \
+  "Load stepping/Number of load steps=1"
+run_case $G gap-0.8-1step-updated "$GAP" 30 "same, Kinematics = updated" "p=1.333333333" \
+  "Geometry/Contact blocks/Initial gap=0.8" "Boundary conditions/Prescribed displacement=1: y = -0.82*t" \
+  "Load stepping/Number of load steps=1" "Contact/Kinematics=updated"
+run_case $G gap-0.5-fine-1step "$GAP" 30 "fast approach: gap 0.5 = 20 slave faces (40 x 40 cells on 3 x 3) closed by u_top = -0.52 in one step" "p=1.333333333" \
+  "Geometry/Contact blocks/Initial gap=0.5" "Boundary conditions/Prescribed displacement=1: y = -0.52*t" \
+  "Geometry/Contact blocks/Upper cells=40" "Load stepping/Number of load steps=1"
+run_case $G penetration-0.2-1step "$PEN" 30 "initial overlap 0.2 pushed apart in one step" "p=1" \
+  "Geometry/Contact blocks/Initial gap=-0.2" "Load stepping/Number of load steps=1"
+run_case $G hertz-cr12-1step "$HERTZ" 120 "Hertz, Contact refinements = 12 (slave faces 7.7e-4, motion ~0.075), one step (was p_max +1949 %)" "hertz" \
+  "Geometry/Hertz cylinder/Contact refinements=12" "Load stepping/Number of load steps=1"
+run_case $G hertz-cr13 "$HERTZ" 120 "Hertz, Contact refinements = 13, two steps (was p_max +259 %)" "hertz" \
+  "Geometry/Hertz cylinder/Contact refinements=13"
+run_case $G hertz-cyl8 "$HERTZ" 300 "Hertz, Cylinder refinements = 8 (588k DoFs, was p_max +88 %)" "hertz" \
+  "Geometry/Hertz cylinder/Cylinder refinements=8"
+for n in 1 2 8 32; do
+  run_case $G "hertz-steps-$n" "$HERTZ" 120 "Hertz, $n load step(s), Kinematics = small: the same answer for every n" "hertz same=reach/hertz-steps-1" \
+    "Load stepping/Number of load steps=$n"
+done
+for n in 1 32; do
+  run_case $G "hertz-steps-$n-updated" "$HERTZ" 120 "Hertz, $n load step(s), Kinematics = updated (depends on n by design: p_max 5.3353 / 5.3641)" "hertz" \
+    "Load stepping/Number of load steps=$n" "Contact/Kinematics=updated"
+done
+run_case $G hertz-x1e3-small "$HERTZ" 60 "p = 1000 x 0.2 t, Kinematics = small: the disc flows through the plate's linearised surface" "diag=not a contact solution" \
+  "Boundary conditions/Pressure=1: 200*t" "Load stepping/Number of load steps=1"
+run_case $G hertz-x1e3-updated "$HERTZ" 120 "p = 1000 x 0.2 t, Kinematics = updated, 20 steps: converges far beyond small strain, must warn" "hertz-approx warn=small-strain range" \
+  "Boundary conditions/Pressure=1: 200*t" "Load stepping/Number of load steps=20" "Contact/Kinematics=updated"
+run_case $G hertz-x50-updated-1step "$HERTZ" 60 "p = 50 x 0.2 t, Kinematics = updated, one step on a coarse mesh: the penetration check splits the step" "hertz-approx warn=small-strain range" \
+  "Boundary conditions/Pressure=1: 10*t" "Load stepping/Number of load steps=1" "Contact/Kinematics=updated" \
+  "Geometry/Hertz cylinder/Contact refinements=4"
 }
 
 define_cases
