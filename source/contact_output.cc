@@ -85,13 +85,13 @@ namespace contact_fem
     /// every rank: the interface is known everywhere).
     template <int dim>
     Tensor<1, dim>
-    total_contact_force(const ContactInterface<dim> &interface,
-                        const FrictionlessContact<dim>  &contact)
+    total_contact_force(const ContactInterface<dim>   &interface,
+                        const ContactFormulation<dim> &contact)
     {
       Tensor<1, dim> force;
       for (const auto &s : interface.slave_nodes)
-        if (s.paired && contact.active[s.node])
-          force += contact.pressure[s.node] * s.D * s.normal;
+        if (s.paired && contact.is_active(s.node))
+          force += contact.normal_pressure(s.node) * s.D * s.normal;
       return force;
     }
   } // namespace
@@ -141,11 +141,11 @@ namespace contact_fem
     for (const auto &node : interface->nodes)
       n_slave += node.slave;
     for (const auto &s : interface->slave_nodes)
-      if (s.paired && contact->active[s.node])
+      if (s.paired && contact->is_active(s.node))
         {
           ++n_active;
-          p_max = std::max(p_max, contact->pressure[s.node]);
-          p_min = std::min(p_min, contact->pressure[s.node]);
+          p_max = std::max(p_max, contact->normal_pressure(s.node));
+          p_min = std::min(p_min, contact->normal_pressure(s.node));
           gap_max =
             std::max(gap_max, std::abs(interface->gap(s, interface_displacement)) / s.size);
           size_sum += s.size;
@@ -161,18 +161,9 @@ namespace contact_fem
       .set("min_active_contact_pressure", n_active > 0 ? p_min : 0.)
       .set("max_gap_over_h_on_active_nodes", gap_max)
       .set("total_contact_force", total_contact_force(*interface, *contact).norm())
-      .set("slave_element_size", n_active > 0 ? size_sum / n_active : 0.)
-      .set("penalty", contact->penalty.empty() ? 0. : contact->penalty[0])
-      .set("scale_factor", contact->scale.empty() ? 0. : contact->scale[0])
-      .set("largest_unexplained_penetration_over_h", last_penetration_excess);
-    if (contact_parameters.adaptive_penalty)
-      {
-        double largest = 0.;
-        for (const auto &s : interface->slave_nodes)
-          if (s.paired && contact->active[s.node])
-            largest = std::max(largest, contact->node_penalty[s.node]);
-        result.set("largest_adapted_penalty", largest);
-      }
+      .set("slave_element_size", n_active > 0 ? size_sum / n_active : 0.);
+    contact->add_results(*interface, result);
+    result.set("largest_unexplained_penetration_over_h", last_penetration_excess);
     Json slave_split = Json::array(), master_split = Json::array();
     for (const unsigned int n : interface->slave_faces_per_rank)
       slave_split.push(n);
@@ -307,7 +298,8 @@ namespace contact_fem
             const unsigned int a = face.nodes[0], b = face.nodes[1];
             const double h = interface->nodes[a].reference.distance(interface->nodes[b].reference);
             chord_gap_work +=
-              (contact->pressure[a] + contact->pressure[b]) * h * h * h / (24. * analytical.radius);
+              (contact->normal_pressure(a) + contact->normal_pressure(b)) * h * h * h /
+              (24. * analytical.radius);
           }
     result.set("type", analytical.type)
       .set("load", load)
@@ -316,7 +308,7 @@ namespace contact_fem
       .set("a_error", std::abs(a_num - h.a))
       .set("a_error_in_slave_elements", size > 0. ? std::abs(a_num - h.a) / size : 0.)
       .set("p_max_relative_error", (p_num - h.p_max) / h.p_max)
-      .set("pressure_l2_relative_error", hertz_pressure_error(contact->pressure));
+      .set("pressure_l2_relative_error", hertz_pressure_error(contact->pressures(*interface)));
     if (interface->geometry_degree == 1)
       result.set("chord_gap_work", chord_gap_work);
     return result;
@@ -434,14 +426,9 @@ namespace contact_fem
               << (excess < 1e-6 ? std::string("< 1e-6") : scientific(excess, 1))
               << " h (tolerance " << contact_parameters.penetration_tolerance << " h)"
               << std::endl;
-        if (contact_parameters.adaptive_penalty)
-          pcout << "    penetration within the allowed " << contact_parameters.penetration_factor
-                << " h: " << (gap_max <= contact_parameters.penetration_factor ? "yes" : "no")
-                << std::endl
-                << "    largest adapted penalty / initial: "
-                << contact_json["largest_adapted_penalty"].number_value() /
-                     contact_json["penalty"].number_value()
-                << std::endl;
+        std::ostringstream own_checks;
+        contact->print_results(*interface, interface_displacement, own_checks);
+        pcout << own_checks.str();
       }
     pcout << "    applied load:                 " << reaction["applied_load"].number_value()
           << std::endl
@@ -483,10 +470,10 @@ namespace contact_fem
         {
           const double x = interface->nodes[s.node].reference[0] +
                            interface->displacement(s.node, interface_displacement)[0];
-          rows.push_back({{x, contact->pressure[s.node],
+          rows.push_back({{x, contact->normal_pressure(s.node),
                           hertz ? h.pressure(x - analytical.center) : 0.,
                           interface->gap(s, interface_displacement),
-                          contact->active[s.node] ? 1. : 0.}});
+                          contact->is_active(s.node) ? 1. : 0.}});
         }
     std::sort(rows.begin(), rows.end());
     std::ofstream out(output.directory + "/pressure_profile.csv");
@@ -557,9 +544,9 @@ namespace contact_fem
                     if (!scalar_owned.is_element(scalar_dof))
                       continue;
                     const unsigned int n = it->second;
-                    fields[0](scalar_dof) = contact->pressure[n];
+                    fields[0](scalar_dof) = contact->normal_pressure(n);
                     fields[1](scalar_dof) = gap[n];
-                    fields[2](scalar_dof) = contact->active[n] ? 1. : 0.;
+                    fields[2](scalar_dof) = contact->is_active(n) ? 1. : 0.;
                     fields[3](scalar_dof) = interface->nodes[n].slave ? 1. : 0.;
                     fields[4](scalar_dof) = interface->nodes[n].master ? 1. : 0.;
                   }

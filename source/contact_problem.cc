@@ -101,6 +101,7 @@ namespace contact_fem
     BoundaryConditions::declare_parameters(prm);
     LoadStepping::declare_parameters(prm);
     ContactParameters::declare_parameters(prm);
+    ContactFormulation<dim>::declare_parameters(prm);
     NewtonParameters::declare_parameters(prm);
     RefinementParameters::declare_parameters(prm);
     AnalyticalSolution::declare_parameters(prm);
@@ -160,6 +161,11 @@ namespace contact_fem
     boundary_conditions.parse_parameters(prm, dim);
     load_stepping.parse_parameters(prm);
     contact_parameters.parse_parameters(prm);
+    // Read (and checked) whether or not the scene has contact pairs; kept
+    // only if it has.
+    auto formulation = ContactFormulation<dim>::create(prm);
+    if (!contact_parameters.pairs.empty())
+      contact = std::move(formulation);
     newton_parameters.parse_parameters(prm);
     refinement.parse_parameters(prm);
     analytical.parse_parameters(prm, prm_directory);
@@ -201,7 +207,6 @@ namespace contact_fem
         interface = std::make_unique<ContactInterface<dim>>();
         interface->initialize(*mapping, dof_handler, contact_parameters.pairs,
                               dirichlet_constraints, materials, comm);
-        contact = std::make_unique<FrictionlessContact<dim>>(contact_parameters);
         contact->initialize(*interface);
       }
     // Contact constraints couple slave DoFs to master DoFs anywhere: every
@@ -438,8 +443,8 @@ namespace contact_fem
           for (const auto row : closure)
             dsp.add_entries(row, closure.begin(), closure.end(), true);
         }
-    if (contact && contact_parameters.regularised())
-      contact->add_penalty_sparsity(*interface, candidates, owned_dofs, dsp);
+    if (contact)
+      contact->add_sparsity(*interface, candidates, owned_dofs, dsp);
     SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs, comm, writable_dofs);
     direct_solver.clear();
     system_matrix.reinit(owned_dofs, owned_dofs, dsp, comm);
@@ -453,7 +458,7 @@ namespace contact_fem
     constraints.reinit(writable_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     if (contact)
-      contact->add_constraints(*interface, interface_fixed_values, constraints);
+      contact->add_constraints(*interface, interface_fixed_values, constraints, false);
     constraints.merge(dirichlet_constraints,
                       AffineConstraints<double>::left_object_wins, true);
     constraints.close();
@@ -478,8 +483,8 @@ namespace contact_fem
           constraints.distribute_local_to_global(cell_matrices[index], load, dofs,
                                                  system_matrix, system_rhs);
         }
-    if (contact && contact_parameters.regularised())
-      contact->assemble_penalty(*interface, constraints, owned_dofs, system_matrix, system_rhs);
+    if (contact)
+      contact->assemble(*interface, constraints, owned_dofs, system_matrix, system_rhs);
     system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
   }
@@ -820,7 +825,7 @@ namespace contact_fem
           }
         compute_residual();
         unsigned int                    changes = 0;
-        typename FrictionlessContact<dim>::Residuals contact_residuals;
+        typename ContactFormulation<dim>::Residuals contact_residuals;
         bool searched_again = false;
         if (contact)
           {
@@ -1414,16 +1419,14 @@ namespace contact_fem
     Json               steps     = Json::array();
     bool               converged = true;
     TrilinosWrappers::MPI::Vector saved_solution = solution;
-    std::vector<double>           saved_pressure;
-    std::vector<bool>             saved_active;
+    std::unique_ptr<typename ContactFormulation<dim>::State> saved_state;
     // The mortar operators of the last converged state: a failed step has
     // searched again, and the results reported after giving up must be
     // those of the converged state with its own operators.
     std::unique_ptr<ContactInterface<dim>> saved_interface;
     if (contact)
       {
-        saved_pressure  = contact->pressure;
-        saved_active    = contact->active;
+        saved_state     = contact->save_state();
         saved_interface = std::make_unique<ContactInterface<dim>>(*interface);
       }
     while (t_done < end_time * (1. - 1e-12))
@@ -1441,8 +1444,7 @@ namespace contact_fem
             ghosted_solution = solution;
             if (contact)
               {
-                contact->pressure = saved_pressure;
-                contact->active   = saved_active;
+                contact->restore_state(*saved_state);
                 *interface        = *saved_interface;
               }
             // Consecutive splits are bounded, and so is the step size: a step
@@ -1482,8 +1484,7 @@ namespace contact_fem
         saved_solution = solution;
         if (contact)
           {
-            saved_pressure   = contact->pressure;
-            saved_active     = contact->active;
+            saved_state      = contact->save_state();
             *saved_interface = *interface;
           }
         if (output.write_vtu)
@@ -1528,7 +1529,7 @@ namespace contact_fem
       cycle_record.set("displacement_probes", probe_results());
     if (contact && !analytical.reference_pressure_profile.empty())
       {
-        const double error = reference_pressure_error(contact->pressure);
+        const double error = reference_pressure_error(contact->pressures(*interface));
         cycle_record.set("pressure_reference_l2_relative_error", error);
         pcout << "    pressure, L2 error against the reference: " << value_or_ok(error, 1e-10)
               << std::endl;

@@ -299,55 +299,6 @@ namespace contact_fem
                       "...'. Empty: no contact (plain elasticity, no contact code "
                       "runs). The slave side carries the multipliers: make it the "
                       "finer and softer surface.");
-    prm.declare_entry("Formulation",
-                      "alm frictionless",
-                      Patterns::Selection("alm frictionless|penalty frictionless"),
-                      "Contact formulation: 'alm frictionless' = augmented "
-                      "Lagrangian, dual mortar, scalar normal multiplier, "
-                      "semi-smooth Newton: the gap of an active node is an exact "
-                      "constraint. 'penalty frictionless' = the same mortar gap, "
-                      "regularised: pressure = eps * penetration, so the bodies "
-                      "overlap by pressure / eps (no multipliers, no constraints).");
-    prm.declare_entry("Penalty",
-                      "auto",
-                      Patterns::Anything(),
-                      "Penalty eps. 'alm frictionless': of the augmented pressure "
-                      "lambda - eps * gap that decides the active set (it cannot "
-                      "change the converged answer); 'auto' = stiffness factor * "
-                      "min(E/h) over the two sides. 'penalty frictionless': the "
-                      "contact stiffness, pressure = eps * penetration; 'auto' = "
-                      "1e4 * stiffness factor * min(E/h) (penetrations ~1e-4 h * "
-                      "pressure / E), or, with Adaptive penalty, the starting value "
-                      "stiffness factor * min(E/h). Units: stress / length.");
-    prm.declare_entry("Adaptive penalty",
-                      "false",
-                      Patterns::Bool(),
-                      "'penalty frictionless' only: adapt the penalty of every "
-                      "slave node in every Newton iteration from the change of its "
-                      "penetration (Bussetta, Marceau and Ponthot's rule) until "
-                      "each penetration is below Maximum penetration factor * h; a "
-                      "node whose penalty changed counts as an active-set change.");
-    prm.declare_entry("Maximum penetration factor",
-                      "1e-3",
-                      Patterns::Double(0.),
-                      "Adaptive penalty: the allowed penetration of a slave node, "
-                      "as a fraction of its element size h.");
-    prm.declare_entry("Scale factor",
-                      "auto",
-                      Patterns::Anything(),
-                      "Scale factor k of the multipliers (the multiplier residual "
-                      "is reported as (lambda - max(0, lambda - eps g)) / k, a "
-                      "length). 'auto' = stiffness factor * min(E/h). Units: stress "
-                      "/ length.");
-    prm.declare_entry("Stiffness factor",
-                      "1",
-                      Patterns::Double(0.),
-                      "Multiplies the automatic penalty and scale factor.");
-    prm.declare_entry("Active check factor",
-                      "1e-2",
-                      Patterns::Double(0.),
-                      "At the first load step, slave nodes whose gap is below this "
-                      "factor times their nodal size start in the active set.");
     prm.declare_entry("Allow loss of contact",
                       "false",
                       Patterns::Bool(),
@@ -389,31 +340,6 @@ namespace contact_fem
     prm.leave_subsection();
   }
 
-  namespace
-  {
-    double
-    parse_auto_or_positive(const std::string &text, const std::string &key)
-    {
-      if (trim(text) == "auto")
-        return 0.;
-      double value = -1.;
-      try
-        {
-          std::size_t pos = 0;
-          value           = std::stod(trim(text), &pos);
-          if (pos != trim(text).size())
-            value = -1.;
-        }
-      catch (...)
-        {
-          value = -1.;
-        }
-      AssertThrow(value > 0. && std::isfinite(value),
-                  ExcMessage(key + ": got '" + text +
-                             "'; expected 'auto' or a number > 0."));
-      return value;
-    }
-  } // namespace
 
   void
   ContactParameters::parse_parameters(ParameterHandler &prm)
@@ -436,27 +362,11 @@ namespace contact_fem
                                "one pair only and may not be a master elsewhere."));
         pairs.push_back(pair);
       }
-    formulation         = prm.get("Formulation");
-    penalty             = parse_auto_or_positive(prm.get("Penalty"), "Contact/Penalty");
-    scale_factor        = parse_auto_or_positive(prm.get("Scale factor"), "Contact/Scale factor");
-    stiffness_factor    = prm.get_double("Stiffness factor");
-    active_check_factor = prm.get_double("Active check factor");
     search_factor       = prm.get_double("Search factor");
     updated_kinematics  = prm.get("Kinematics") == "updated";
     penetration_tolerance = prm.get_double("Penetration tolerance");
     allow_loss_of_contact = prm.get_bool("Allow loss of contact");
-    adaptive_penalty      = prm.get_bool("Adaptive penalty");
-    penetration_factor    = prm.get_double("Maximum penetration factor");
     prm.leave_subsection();
-    AssertThrow(!adaptive_penalty || regularised(),
-                ExcMessage("Contact/Adaptive penalty = true needs Contact/Formulation = "
-                           "penalty frictionless: in 'alm frictionless' the gap of an "
-                           "active node is an exact constraint and the penalty only "
-                           "scales the active-set test, so adapting it changes nothing."));
-    AssertThrow(!adaptive_penalty || penetration_factor > 0.,
-                ExcMessage("Contact/Maximum penetration factor: expected a value > 0."));
-    AssertThrow(stiffness_factor > 0.,
-                ExcMessage("Contact/Stiffness factor: expected a value > 0."));
     AssertThrow(search_factor > 0.,
                 ExcMessage("Contact/Search factor: expected a value > 0."));
     AssertThrow(penetration_tolerance > 0.,

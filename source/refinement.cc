@@ -170,10 +170,10 @@ namespace contact_fem
           const Tensor<1, dim> traction = node_stresses[i] * n0;
           const double         normal   = -(traction * n);
           pressure[s.node]              = s.D > 0. ? normal * reference_length / s.D : normal;
-          if (contact->active[s.node])
+          if (contact->is_active(s.node))
             {
               largest_shear = std::max(largest_shear, (traction + normal * n).norm());
-              p_max         = std::max(p_max, contact->pressure[s.node]);
+              p_max         = std::max(p_max, contact->normal_pressure(s.node));
             }
           ++i;
         }
@@ -228,14 +228,14 @@ namespace contact_fem
       {
         const auto support = slave_support_samples(*interface);
         for (const auto &s : interface->slave_nodes)
-          if (s.paired && (pressure_known || contact->active[s.node]))
+          if (s.paired && (pressure_known || contact->is_active(s.node)))
             {
               const auto &samples   = support.at(s.node);
               double      reference = 0.;
               for (const auto &q : samples)
                 reference += q.weight;
-              const bool   active = contact->active[s.node];
-              const double force  = active ? contact->pressure[s.node] * s.D : 0.;
+              const bool   active = contact->is_active(s.node);
+              const double force  = active ? contact->normal_pressure(s.node) * s.D : 0.;
               tractions.push_back({interface->nodes[s.node].reference, s.normal,
                                    -force / reference * s.normal, samples, active});
             }

@@ -16,7 +16,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <contact_fem/direct_solver.h>
-#include <contact_fem/frictionless_contact.h>
+#include <contact_fem/contact/formulations/contact_formulation.h>
 #include <contact_fem/contact_interface.h>
 #include <contact_fem/json.h>
 #include <contact_fem/material.h>
@@ -302,7 +302,7 @@ namespace contact_fem
 
     /// Present only when the scene has contact pairs.
     std::unique_ptr<ContactInterface<dim>> interface;
-    std::unique_ptr<FrictionlessContact<dim>>  contact;
+    std::unique_ptr<ContactFormulation<dim>> contact;
     std::vector<double>                    interface_displacement;
     std::vector<double>                    interface_fixed_values;
     std::vector<double>                    interface_residual;

@@ -88,11 +88,6 @@ namespace contact_fem
   struct ContactParameters
   {
     std::vector<ContactPair> pairs; ///< empty: no contact code runs
-    std::string              formulation = "alm frictionless";
-    double penalty          = 0.; ///< 0: automatic, stiffness factor * E/h
-    double scale_factor     = 0.; ///< 0: automatic, stiffness factor * E/h
-    double stiffness_factor = 1.;
-    double active_check_factor = 1e-2;
     double search_factor       = 3.;
     /// Mortar operators rebuilt at every load step (else once, on the
     /// reference configuration).
@@ -100,17 +95,6 @@ namespace contact_fem
     /// Unexplained penetration allowed after convergence, over the element size.
     double penetration_tolerance = 0.05;
     bool   allow_loss_of_contact = false;
-    /// Penalty formulation only: adapt the nodal penalties (Bussetta et al.)
-    /// until every penetration is below penetration_factor * h.
-    bool   adaptive_penalty   = false;
-    double penetration_factor = 1e-3;
-
-    /// The penalty-regularised formulation (else exact active constraints).
-    bool
-    regularised() const
-    {
-      return formulation == "penalty frictionless";
-    }
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -1,0 +1,73 @@
+// Frictionless contact by the augmented Lagrangian with exact active
+// constraints (semi-smooth Newton, dual mortar multipliers condensed).
+#ifndef contact_fem_alm_frictionless_h
+#define contact_fem_alm_frictionless_h
+
+#include <contact_fem/contact/formulations/frictionless_formulation.h>
+
+namespace contact_fem
+{
+  /**
+   * "alm frictionless": the normal contact conditions of every paired slave
+   * node j,
+   *   lambda_j >= 0,  g_j >= 0,  lambda_j g_j = 0,
+   * written as the nonlinear complementarity function
+   *   C_j = lambda_j - max(0, lambda_j - eps g_j) = 0,
+   * where lambda_j is the contact pressure, g_j the normalised weighted gap
+   * and eps the penalty. Its semi-smooth Newton linearisation is: on the
+   * active set A = {lambda_j - eps g_j > 0} the gap vanishes, elsewhere
+   * lambda_j = 0.
+   *
+   * Because the dual basis makes D diagonal, the condition g_j = 0 of an
+   * active node fixes one displacement component of that node in terms of
+   * the master DoFs, so it is imposed as an affine constraint (exact static
+   * condensation of the multipliers), and lambda_j is recovered afterwards
+   * from the residual of that eliminated DoF: lambda_j = -r_c / (D_j n_j,c).
+   * eps only decides the active set; it cannot change the converged answer.
+   */
+  template <int dim>
+  class AlmFrictionless : public FrictionlessFormulation<dim>
+  {
+  public:
+    using typename FrictionlessFormulation<dim>::Residuals;
+    using typename FrictionlessFormulation<dim>::Parameters;
+
+    /// Reads the shared frictionless keys; refuses the penalty-only ones.
+    explicit AlmFrictionless(ParameterHandler &prm);
+
+    void
+    initialize(const ContactInterface<dim> &interface) override;
+
+    void
+    start_load_step(const ContactInterface<dim> &interface,
+                    const std::vector<double>   &u,
+                    const bool                   first_step) override;
+
+    void
+    add_constraints(const ContactInterface<dim> &interface,
+                    const std::vector<double>   &fixed_values,
+                    AffineConstraints<double>   &constraints,
+                    const bool                   all_candidates) const override;
+
+    void
+    recover_multipliers(const ContactInterface<dim> &interface,
+                        const std::vector<double>   &residual) override;
+
+    unsigned int
+    update_active_set(const ContactInterface<dim> &interface,
+                      const std::vector<double>   &u) override;
+
+    /// |(g_A, lambda_I / k)|: the gap of the active nodes and the released
+    /// multipliers of the others, a length.
+    Residuals
+    residuals(const ContactInterface<dim> &interface,
+              const std::vector<double>   &u) const override;
+
+  private:
+    /// Multipliers of the nodes released in the last update (for the
+    /// residual).
+    std::vector<double> released_pressure;
+  };
+} // namespace contact_fem
+
+#endif

@@ -1,0 +1,173 @@
+// The plug-in point of the contact formulations: what the driver needs from
+// a contact law, and the registry that makes one from its .prm name.
+#ifndef contact_fem_contact_formulation_h
+#define contact_fem_contact_formulation_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <contact_fem/contact_interface.h>
+#include <contact_fem/json.h>
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace contact_fem
+{
+  using namespace dealii;
+
+  /**
+   * A contact formulation: the conditions imposed at the slave nodes of a
+   * ContactInterface, their multipliers and their active set, seen by the
+   * driver only through this interface.
+   *
+   * Per load step the driver calls start_load_step() after each search;
+   * per Newton iteration it imposes add_constraints() (formulations with
+   * exact constraints) and/or adds assemble() (formulations with matrix and
+   * residual contributions) to the bulk system, solves, and calls
+   * recover_multipliers(), update_active_set() and residuals(). The state
+   * of the iteration (multipliers, active and stick/slip sets, ...) lives in
+   * the formulation; save_state() / restore_state() take it back to the last
+   * converged step when a step is split.
+   *
+   * A new formulation is one new class derived from this one and one line in
+   * the registry (source/contact/formulations/contact_formulation.cc).
+   */
+  template <int dim>
+  class ContactFormulation
+  {
+  public:
+    virtual ~ContactFormulation() = default;
+
+    /// Residuals of the current iterate for the active set just computed.
+    struct Residuals
+    {
+      double              multiplier = 0.; ///< of the contact conditions, a length
+      std::vector<double> contact_force;   ///< at the interface DoFs
+    };
+
+    /// The state restore_state() takes back (opaque to the driver).
+    struct State
+    {
+      virtual ~State() = default;
+    };
+
+    /// Resets the state for a new mesh of @p interface.
+    virtual void
+    initialize(const ContactInterface<dim> &interface) = 0;
+
+    /// After a search: scaling and active set at the start of a load step
+    /// (or after a wider search during it), at the interface displacement
+    /// @p u; on the first step of a mesh nodes about to touch start active.
+    virtual void
+    start_load_step(const ContactInterface<dim> &interface,
+                    const std::vector<double>   &u,
+                    const bool                   first_step) = 0;
+
+    /// Adds the conditions imposed as affine constraints (of the active set,
+    /// or of every paired node with @p all_candidates, for the sparsity
+    /// pattern); @p fixed_values are the Dirichlet values at the interface
+    /// DoFs. Default: none.
+    virtual void
+    add_constraints(const ContactInterface<dim> &interface,
+                    const std::vector<double>   &fixed_values,
+                    AffineConstraints<double>   &constraints,
+                    const bool                   all_candidates) const;
+
+    /// Adds the couplings assemble() may create, for the nodes whose first
+    /// DoF is in @p owned. Default: none.
+    virtual void
+    add_sparsity(const ContactInterface<dim>    &interface,
+                 const AffineConstraints<double> &constraints,
+                 const IndexSet                  &owned,
+                 DynamicSparsityPattern          &pattern) const;
+
+    /// Adds the contact stiffness and load of the nodes whose first DoF is
+    /// in @p owned to the system, through @p constraints; the caller
+    /// compresses. Default: none.
+    virtual void
+    assemble(const ContactInterface<dim>    &interface,
+             const AffineConstraints<double> &constraints,
+             const IndexSet                  &owned,
+             TrilinosWrappers::SparseMatrix  &matrix,
+             TrilinosWrappers::MPI::Vector   &rhs) const;
+
+    /// The multipliers of the new iterate, from the bulk residual
+    /// C_h^T (K u - f) at the interface DoFs.
+    virtual void
+    recover_multipliers(const ContactInterface<dim> &interface,
+                        const std::vector<double>   &residual) = 0;
+
+    /// Updates the active (and stick/slip) sets at @p u; returns the number
+    /// of changes (the iteration has converged only without any).
+    virtual unsigned int
+    update_active_set(const ContactInterface<dim> &interface,
+                      const std::vector<double>   &u) = 0;
+
+    virtual Residuals
+    residuals(const ContactInterface<dim> &interface, const std::vector<double> &u) const = 0;
+
+    /// Number of active slave nodes.
+    virtual unsigned int
+    n_active() const = 0;
+
+    /// Whether interface node @p n is an active slave node.
+    virtual bool
+    is_active(const unsigned int n) const = 0;
+
+    /// The contact pressure (normal traction, positive in compression) of
+    /// interface node @p n.
+    virtual double
+    normal_pressure(const unsigned int n) const = 0;
+
+    /// The contact traction on the slave at slave node @p s: -p_n n plus the
+    /// tangential traction of a frictional law (zero when frictionless).
+    virtual Tensor<1, dim>
+    traction(const typename ContactInterface<dim>::SlaveNode &s) const = 0;
+
+    /// normal_pressure() of every interface node.
+    std::vector<double>
+    pressures(const ContactInterface<dim> &interface) const;
+
+    virtual std::unique_ptr<State>
+    save_state() const = 0;
+
+    virtual void
+    restore_state(const State &state) = 0;
+
+    /// Adds what the formulation chose (penalties, scale factors, ...) to
+    /// the contact results.
+    virtual void
+    add_results(const ContactInterface<dim> &interface, Json &contact) const = 0;
+
+    /// Prints the formulation's own checks of the results, if any.
+    virtual void
+    print_results(const ContactInterface<dim> &interface,
+                  const std::vector<double>   &u,
+                  std::ostream                &out) const;
+
+    /// Declares the parameters of every registered formulation.
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// The formulation named by Contact/Formulation, with its parameters
+    /// read from @p prm (throws naming the key on bad input).
+    static std::unique_ptr<ContactFormulation<dim>>
+    create(ParameterHandler &prm);
+
+    /// The names Contact/Formulation accepts, separated by '|'.
+    static std::string
+    names();
+  };
+} // namespace contact_fem
+
+#endif

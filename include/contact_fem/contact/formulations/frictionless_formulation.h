@@ -1,0 +1,124 @@
+// What the frictionless formulations share: one scalar normal multiplier
+// (the contact pressure) per slave node, its active set, and the per-pair
+// penalty and scale factor from E/h of the interface.
+#ifndef contact_fem_frictionless_formulation_h
+#define contact_fem_frictionless_formulation_h
+
+#include <contact_fem/contact/formulations/contact_formulation.h>
+
+namespace contact_fem
+{
+  /**
+   * Base of the frictionless formulations: the contact pressure lambda_j of
+   * every slave node j (positive in compression), the active set, and
+   * eps / k per contact pair (given, or stiffness factor * min(E/h) over
+   * the overlapping faces of the two sides).
+   *
+   * The pressure acts on the slave node as -lambda_j D_j n_j and on the
+   * master nodes as +lambda_j M_jl n_j (the contact forces of residuals()).
+   */
+  template <int dim>
+  class FrictionlessFormulation : public ContactFormulation<dim>
+  {
+  public:
+    using typename ContactFormulation<dim>::Residuals;
+    using typename ContactFormulation<dim>::State;
+
+    /// The keys both frictionless formulations read (subsection Contact).
+    struct Parameters
+    {
+      double penalty             = 0.; ///< 0: automatic
+      double scale_factor        = 0.; ///< 0: automatic
+      double stiffness_factor    = 1.;
+      double active_check_factor = 1e-2;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    explicit FrictionlessFormulation(const Parameters &parameters);
+
+    void
+    initialize(const ContactInterface<dim> &interface) override;
+
+    unsigned int
+    n_active() const override;
+
+    bool
+    is_active(const unsigned int n) const override
+    {
+      return active[n];
+    }
+
+    double
+    normal_pressure(const unsigned int n) const override
+    {
+      return pressure[n];
+    }
+
+    Tensor<1, dim>
+    traction(const typename ContactInterface<dim>::SlaveNode &s) const override
+    {
+      return -pressure[s.node] * s.normal;
+    }
+
+    std::unique_ptr<State>
+    save_state() const override;
+
+    void
+    restore_state(const State &state) override;
+
+    void
+    add_results(const ContactInterface<dim> &interface, Json &contact) const override;
+
+  protected:
+    /// Sets eps and k of every pair from the statistics of the last search;
+    /// the automatic eps is @p penalty_factor * stiffness factor * E/h.
+    void
+    set_pair_scaling(const ContactInterface<dim> &interface, const double penalty_factor);
+
+    /// The DoFs of slave node @p s and its masters, with grad g_j there:
+    /// -n_j at the slave node, n_j M_jl / D_j at master l.
+    void
+    gap_gradient(const ContactInterface<dim>                     &interface,
+                 const typename ContactInterface<dim>::SlaveNode &s,
+                 std::vector<types::global_dof_index>            &dofs,
+                 std::vector<double>                             &gradient) const;
+
+    /// The component eliminated for an active node, or dim if none can be:
+    /// the free component with the largest normal part (a node whose free
+    /// components are nearly tangential cannot carry a normal constraint).
+    unsigned int
+    eliminated_component(const ContactInterface<dim>                     &interface,
+                         const typename ContactInterface<dim>::SlaveNode &s) const;
+
+    /// Adds g_j(u) = 0, solved for the eliminated component of node j, for
+    /// every paired node (only the active ones with @p only_active).
+    void
+    add_gap_constraints(const ContactInterface<dim> &interface,
+                        const std::vector<double>   &fixed_values,
+                        AffineConstraints<double>   &constraints,
+                        const bool                   only_active) const;
+
+    /// The contact forces of the current pressures at the interface DoFs.
+    std::vector<double>
+    contact_forces(const ContactInterface<dim> &interface) const;
+
+    Parameters          parameters;
+    std::vector<double> pressure; ///< lambda per interface node
+    std::vector<bool>   active;   ///< per interface node
+    std::vector<double> penalty;  ///< eps per pair
+    std::vector<double> scale;    ///< k per pair
+
+  private:
+    struct PressureState : public State
+    {
+      std::vector<double> pressure;
+      std::vector<bool>   active;
+    };
+  };
+} // namespace contact_fem
+
+#endif

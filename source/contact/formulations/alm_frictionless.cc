@@ -1,0 +1,157 @@
+#include <contact_fem/contact/formulations/alm_frictionless.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace contact_fem
+{
+  namespace
+  {
+    template <int dim>
+    typename FrictionlessFormulation<dim>::Parameters
+    read_parameters(ParameterHandler &prm)
+    {
+      typename FrictionlessFormulation<dim>::Parameters parameters;
+      parameters.parse_parameters(prm);
+      // A key of the penalty formulation set with this one is a mistake
+      // worth a message, not a silent no-op.
+      prm.enter_subsection("Contact");
+      const bool adaptive = prm.get_bool("Adaptive penalty");
+      prm.leave_subsection();
+      AssertThrow(!adaptive,
+                  ExcMessage("Contact/Adaptive penalty = true needs Contact/Formulation = "
+                             "penalty frictionless: in 'alm frictionless' the gap of an "
+                             "active node is an exact constraint and the penalty only "
+                             "scales the active-set test, so adapting it changes nothing."));
+      return parameters;
+    }
+  } // namespace
+
+  template <int dim>
+  AlmFrictionless<dim>::AlmFrictionless(ParameterHandler &prm)
+    : FrictionlessFormulation<dim>(read_parameters<dim>(prm))
+  {}
+
+  template <int dim>
+  void
+  AlmFrictionless<dim>::initialize(const ContactInterface<dim> &interface)
+  {
+    FrictionlessFormulation<dim>::initialize(interface);
+    released_pressure.assign(interface.nodes.size(), 0.);
+  }
+
+  template <int dim>
+  void
+  AlmFrictionless<dim>::start_load_step(const ContactInterface<dim> &interface,
+                                        const std::vector<double>   &u,
+                                        const bool                   first_step)
+  {
+    this->set_pair_scaling(interface, 1.);
+    std::fill(released_pressure.begin(), released_pressure.end(), 0.);
+    auto &pressure = this->pressure;
+    auto &active   = this->active;
+    for (const auto &s : interface.slave_nodes)
+      {
+        if (!s.paired)
+          {
+            active[s.node]   = false;
+            pressure[s.node] = 0.;
+            continue;
+          }
+        const double g = interface.gap(s, u);
+        bool         a = pressure[s.node] - this->penalty[s.pair] * g > 0.;
+        if (first_step && g <= this->parameters.active_check_factor * s.size)
+          a = true;
+        active[s.node] = a && this->eliminated_component(interface, s) < dim;
+        if (!active[s.node])
+          {
+            released_pressure[s.node] = pressure[s.node];
+            pressure[s.node]          = 0.;
+          }
+      }
+    // Nodes that lost their master projection since the last search.
+    for (unsigned int n = 0; n < interface.nodes.size(); ++n)
+      if (!interface.nodes[n].slave)
+        active[n] = false;
+  }
+
+  template <int dim>
+  void
+  AlmFrictionless<dim>::add_constraints(const ContactInterface<dim> &interface,
+                                        const std::vector<double>   &fixed_values,
+                                        AffineConstraints<double>   &constraints,
+                                        const bool                   all_candidates) const
+  {
+    this->add_gap_constraints(interface, fixed_values, constraints, !all_candidates);
+  }
+
+  template <int dim>
+  void
+  AlmFrictionless<dim>::recover_multipliers(const ContactInterface<dim> &interface,
+                                            const std::vector<double>   &residual)
+  {
+    for (const auto &s : interface.slave_nodes)
+      {
+        if (!s.paired || !this->active[s.node])
+          {
+            this->pressure[s.node] = 0.;
+            continue;
+          }
+        const unsigned int c = this->eliminated_component(interface, s);
+        const double       r = residual[interface.position(interface.nodes[s.node].dofs[c])];
+        this->pressure[s.node] = -r / (s.D * s.normal[c]);
+      }
+  }
+
+  template <int dim>
+  unsigned int
+  AlmFrictionless<dim>::update_active_set(const ContactInterface<dim> &interface,
+                                          const std::vector<double>   &u)
+  {
+    unsigned int changes = 0;
+    std::fill(released_pressure.begin(), released_pressure.end(), 0.);
+    auto &pressure = this->pressure;
+    auto &active   = this->active;
+    for (const auto &s : interface.slave_nodes)
+      {
+        if (!s.paired)
+          continue;
+        const double augmented  = pressure[s.node] - this->penalty[s.pair] * interface.gap(s, u);
+        const bool   now_active = augmented > 0. && this->eliminated_component(interface, s) < dim;
+        if (now_active != active[s.node])
+          ++changes;
+        if (!now_active)
+          {
+            released_pressure[s.node] = pressure[s.node];
+            pressure[s.node]          = 0.;
+          }
+        active[s.node] = now_active;
+      }
+    return changes;
+  }
+
+  template <int dim>
+  typename AlmFrictionless<dim>::Residuals
+  AlmFrictionless<dim>::residuals(const ContactInterface<dim> &interface,
+                                  const std::vector<double>   &u) const
+  {
+    Residuals result;
+    double    sum = 0.;
+    for (const auto &s : interface.slave_nodes)
+      {
+        if (!s.paired)
+          continue;
+        // g = 0 on the active set, lambda = 0 elsewhere (the multiplier of
+        // a node released in this update still counts).
+        const double r = this->active[s.node] ? interface.gap(s, u) :
+                                                released_pressure[s.node] / this->scale[s.pair];
+        sum += r * r;
+      }
+    result.multiplier    = std::sqrt(sum);
+    result.contact_force = this->contact_forces(interface);
+    return result;
+  }
+
+  template class AlmFrictionless<2>;
+  template class AlmFrictionless<3>;
+} // namespace contact_fem

@@ -1,0 +1,124 @@
+#include <contact_fem/contact/formulations/alm_frictionless.h>
+#include <contact_fem/contact/formulations/contact_formulation.h>
+#include <contact_fem/contact/formulations/penalty_frictionless.h>
+
+namespace contact_fem
+{
+  namespace
+  {
+    /// The registry: a formulation's .prm name, how to declare its own keys,
+    /// and how to make it. A new formulation adds one entry.
+    template <int dim>
+    struct Registered
+    {
+      std::string                                                        name;
+      std::function<void(ParameterHandler &)>                            declare;
+      std::function<std::unique_ptr<ContactFormulation<dim>>(ParameterHandler &)> create;
+    };
+
+    template <int dim>
+    std::vector<Registered<dim>>
+    registry()
+    {
+      return {{"alm frictionless",
+               [](ParameterHandler &) {},
+               [](ParameterHandler &prm) {
+                 return std::make_unique<AlmFrictionless<dim>>(prm);
+               }},
+              {"penalty frictionless",
+               PenaltyFrictionless<dim>::declare_parameters,
+               [](ParameterHandler &prm) {
+                 return std::make_unique<PenaltyFrictionless<dim>>(prm);
+               }}};
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ContactFormulation<dim>::add_constraints(const ContactInterface<dim> &,
+                                           const std::vector<double> &,
+                                           AffineConstraints<double> &,
+                                           const bool) const
+  {}
+
+  template <int dim>
+  void
+  ContactFormulation<dim>::add_sparsity(const ContactInterface<dim> &,
+                                        const AffineConstraints<double> &,
+                                        const IndexSet &,
+                                        DynamicSparsityPattern &) const
+  {}
+
+  template <int dim>
+  void
+  ContactFormulation<dim>::assemble(const ContactInterface<dim> &,
+                                    const AffineConstraints<double> &,
+                                    const IndexSet &,
+                                    TrilinosWrappers::SparseMatrix &,
+                                    TrilinosWrappers::MPI::Vector &) const
+  {}
+
+  template <int dim>
+  void
+  ContactFormulation<dim>::print_results(const ContactInterface<dim> &,
+                                         const std::vector<double> &,
+                                         std::ostream &) const
+  {}
+
+  template <int dim>
+  std::vector<double>
+  ContactFormulation<dim>::pressures(const ContactInterface<dim> &interface) const
+  {
+    std::vector<double> result(interface.nodes.size());
+    for (unsigned int n = 0; n < result.size(); ++n)
+      result[n] = normal_pressure(n);
+    return result;
+  }
+
+  template <int dim>
+  void
+  ContactFormulation<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    prm.declare_entry("Formulation",
+                      "alm frictionless",
+                      Patterns::Selection(names()),
+                      "Contact formulation: 'alm frictionless' = augmented "
+                      "Lagrangian, dual mortar, scalar normal multiplier, "
+                      "semi-smooth Newton: the gap of an active node is an exact "
+                      "constraint. 'penalty frictionless' = the same mortar gap, "
+                      "regularised: pressure = eps * penetration, so the bodies "
+                      "overlap by pressure / eps (no multipliers, no constraints).");
+    prm.leave_subsection();
+    FrictionlessFormulation<dim>::Parameters::declare_parameters(prm);
+    for (const auto &entry : registry<dim>())
+      entry.declare(prm);
+  }
+
+  template <int dim>
+  std::unique_ptr<ContactFormulation<dim>>
+  ContactFormulation<dim>::create(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    const std::string name = prm.get("Formulation");
+    prm.leave_subsection();
+    for (const auto &entry : registry<dim>())
+      if (entry.name == name)
+        return entry.create(prm);
+    AssertThrow(false, ExcMessage("Contact/Formulation: unknown formulation '" + name + "'."));
+    return nullptr;
+  }
+
+  template <int dim>
+  std::string
+  ContactFormulation<dim>::names()
+  {
+    std::string result;
+    for (const auto &entry : registry<dim>())
+      result += (result.empty() ? "" : "|") + entry.name;
+    return result;
+  }
+
+  template class ContactFormulation<2>;
+  template class ContactFormulation<3>;
+} // namespace contact_fem

@@ -1,0 +1,281 @@
+#include <deal.II/lac/full_matrix.h>
+
+#include <contact_fem/contact/formulations/frictionless_formulation.h>
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace contact_fem
+{
+  namespace
+  {
+    double
+    parse_auto_or_positive(const std::string &text, const std::string &key)
+    {
+      if (Utilities::trim(text) == "auto")
+        return 0.;
+      double value = -1.;
+      try
+        {
+          std::size_t pos = 0;
+          value           = std::stod(Utilities::trim(text), &pos);
+          if (pos != Utilities::trim(text).size())
+            value = -1.;
+        }
+      catch (...)
+        {
+          value = -1.;
+        }
+      AssertThrow(value > 0. && std::isfinite(value),
+                  ExcMessage(key + ": got '" + text +
+                             "'; expected 'auto' or a number > 0."));
+      return value;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  FrictionlessFormulation<dim>::Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    prm.declare_entry("Penalty",
+                      "auto",
+                      Patterns::Anything(),
+                      "Penalty eps. 'alm frictionless': of the augmented pressure "
+                      "lambda - eps * gap that decides the active set (it cannot "
+                      "change the converged answer); 'auto' = stiffness factor * "
+                      "min(E/h) over the two sides. 'penalty frictionless': the "
+                      "contact stiffness, pressure = eps * penetration; 'auto' = "
+                      "1e4 * stiffness factor * min(E/h) (penetrations ~1e-4 h * "
+                      "pressure / E), or, with Adaptive penalty, the starting value "
+                      "stiffness factor * min(E/h). Units: stress / length.");
+    prm.declare_entry("Scale factor",
+                      "auto",
+                      Patterns::Anything(),
+                      "Scale factor k of the multipliers (the multiplier residual "
+                      "is reported as (lambda - max(0, lambda - eps g)) / k, a "
+                      "length). 'auto' = stiffness factor * min(E/h). Units: stress "
+                      "/ length.");
+    prm.declare_entry("Stiffness factor",
+                      "1",
+                      Patterns::Double(0.),
+                      "Multiplies the automatic penalty and scale factor.");
+    prm.declare_entry("Active check factor",
+                      "1e-2",
+                      Patterns::Double(0.),
+                      "At the first load step, slave nodes whose gap is below this "
+                      "factor times their nodal size start in the active set.");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  FrictionlessFormulation<dim>::Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    penalty             = parse_auto_or_positive(prm.get("Penalty"), "Contact/Penalty");
+    scale_factor        = parse_auto_or_positive(prm.get("Scale factor"), "Contact/Scale factor");
+    stiffness_factor    = prm.get_double("Stiffness factor");
+    active_check_factor = prm.get_double("Active check factor");
+    prm.leave_subsection();
+    AssertThrow(stiffness_factor > 0.,
+                ExcMessage("Contact/Stiffness factor: expected a value > 0."));
+  }
+
+  template <int dim>
+  FrictionlessFormulation<dim>::FrictionlessFormulation(const Parameters &parameters)
+    : parameters(parameters)
+  {}
+
+  template <int dim>
+  void
+  FrictionlessFormulation<dim>::initialize(const ContactInterface<dim> &interface)
+  {
+    pressure.assign(interface.nodes.size(), 0.);
+    active.assign(interface.nodes.size(), false);
+  }
+
+  template <int dim>
+  unsigned int
+  FrictionlessFormulation<dim>::n_active() const
+  {
+    return std::count(active.begin(), active.end(), true);
+  }
+
+  template <int dim>
+  std::unique_ptr<typename ContactFormulation<dim>::State>
+  FrictionlessFormulation<dim>::save_state() const
+  {
+    auto state      = std::make_unique<PressureState>();
+    state->pressure = pressure;
+    state->active   = active;
+    return state;
+  }
+
+  template <int dim>
+  void
+  FrictionlessFormulation<dim>::restore_state(const State &state)
+  {
+    const auto &saved = dynamic_cast<const PressureState &>(state);
+    pressure          = saved.pressure;
+    active            = saved.active;
+  }
+
+  template <int dim>
+  void
+  FrictionlessFormulation<dim>::add_results(const ContactInterface<dim> &, Json &contact) const
+  {
+    contact.set("penalty", penalty.empty() ? 0. : penalty[0])
+      .set("scale_factor", scale.empty() ? 0. : scale[0]);
+  }
+
+  template <int dim>
+  void
+  FrictionlessFormulation<dim>::set_pair_scaling(const ContactInterface<dim> &interface,
+                                                 const double                 penalty_factor)
+  {
+    const unsigned int n_pairs = interface.pairs.size();
+    penalty.assign(n_pairs, 0.);
+    scale.assign(n_pairs, 0.);
+    for (unsigned int p = 0; p < n_pairs; ++p)
+      {
+        const auto &stat     = interface.statistics[p];
+        double      E_over_h = 0.;
+        if (stat.mean_slave_size > 0.)
+          E_over_h = parameters.stiffness_factor *
+                     std::min(stat.slave_modulus / stat.mean_slave_size,
+                              stat.master_modulus / stat.mean_master_size);
+        const double automatic = penalty_factor * E_over_h;
+        penalty[p] = parameters.penalty > 0. ? parameters.penalty : automatic;
+        scale[p]   = parameters.scale_factor > 0. ? parameters.scale_factor : E_over_h;
+        if (scale[p] <= 0.)
+          scale[p] = 1.;
+      }
+  }
+
+  template <int dim>
+  void
+  FrictionlessFormulation<dim>::gap_gradient(
+    const ContactInterface<dim>                     &interface,
+    const typename ContactInterface<dim>::SlaveNode &s,
+    std::vector<types::global_dof_index>            &dofs,
+    std::vector<double>                             &gradient) const
+  {
+    dofs.clear();
+    gradient.clear();
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        dofs.push_back(interface.nodes[s.node].dofs[d]);
+        gradient.push_back(-s.normal[d]);
+      }
+    for (const auto &[m, value] : s.M)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          dofs.push_back(interface.nodes[m].dofs[d]);
+          gradient.push_back(value * s.normal[d] / s.D);
+        }
+  }
+
+  template <int dim>
+  unsigned int
+  FrictionlessFormulation<dim>::eliminated_component(
+    const ContactInterface<dim>                     &interface,
+    const typename ContactInterface<dim>::SlaveNode &s) const
+  {
+    unsigned int best       = dim;
+    double       best_value = 0.1;
+    for (unsigned int d = 0; d < dim; ++d)
+      if (!interface.nodes[s.node].fixed[d] && std::abs(s.normal[d]) > best_value)
+        {
+          best       = d;
+          best_value = std::abs(s.normal[d]);
+        }
+    return best;
+  }
+
+  template <int dim>
+  void
+  FrictionlessFormulation<dim>::add_gap_constraints(const ContactInterface<dim> &interface,
+                                                    const std::vector<double>   &fixed_values,
+                                                    AffineConstraints<double>   &constraints,
+                                                    const bool only_active) const
+  {
+    for (const auto &s : interface.slave_nodes)
+      {
+        if (!s.paired || (only_active && !active[s.node]))
+          continue;
+        const unsigned int c = eliminated_component(interface, s);
+        if (c == dim)
+          continue;
+        const auto &slave = interface.nodes[s.node];
+        if (!constraints.can_store_line(slave.dofs[c]) ||
+            constraints.is_constrained(slave.dofs[c]))
+          continue;
+
+        // g_j(u) = (n . (sum_l M_jl (X_l + u_l) - D (X_j + u_j)) + c_j) / D = 0
+        // (c_j the curvature gap), solved for u_j,c.
+        const double denominator   = s.D * s.normal[c];
+        double       inhomogeneity = s.curvature_gap / denominator;
+        std::vector<std::pair<types::global_dof_index, double>> entries;
+        // A term coefficient * u of component d of interface node `node`: a
+        // fixed DoF moves its known value into the inhomogeneity.
+        const auto add_term = [&](const typename ContactInterface<dim>::Node &node,
+                                  const unsigned int                          d,
+                                  const double                                coefficient) {
+          if (std::abs(coefficient) < 1e-14)
+            return;
+          if (node.fixed[d])
+            inhomogeneity += coefficient * fixed_values[interface.position(node.dofs[d])];
+          else
+            entries.emplace_back(node.dofs[d], coefficient);
+        };
+        for (const auto &[m, value] : s.M)
+          {
+            const auto &master = interface.nodes[m];
+            inhomogeneity += value * (s.normal * master.reference) / denominator;
+            for (unsigned int d = 0; d < dim; ++d)
+              add_term(master, d, value * s.normal[d] / denominator);
+          }
+        inhomogeneity -= s.normal * slave.reference / s.normal[c];
+        for (unsigned int d = 0; d < dim; ++d)
+          if (d != c)
+            add_term(slave, d, -s.normal[d] / s.normal[c]);
+        // The same DoF may appear through two master faces: merge entries.
+        std::sort(entries.begin(), entries.end());
+        std::vector<std::pair<types::global_dof_index, double>> merged;
+        for (const auto &e : entries)
+          if (!merged.empty() && merged.back().first == e.first)
+            merged.back().second += e.second;
+          else
+            merged.push_back(e);
+        constraints.add_line(slave.dofs[c]);
+        constraints.add_entries(slave.dofs[c], merged);
+        constraints.set_inhomogeneity(slave.dofs[c], inhomogeneity);
+      }
+  }
+
+  template <int dim>
+  std::vector<double>
+  FrictionlessFormulation<dim>::contact_forces(const ContactInterface<dim> &interface) const
+  {
+    // -lambda D n on the slave, +lambda M n on the masters.
+    std::vector<double> force(interface.dofs().size(), 0.);
+    for (const auto &s : interface.slave_nodes)
+      {
+        const double lambda = pressure[s.node];
+        if (!s.paired || lambda == 0.)
+          continue;
+        for (unsigned int d = 0; d < dim; ++d)
+          force[interface.position(interface.nodes[s.node].dofs[d])] -=
+            lambda * s.D * s.normal[d];
+        for (const auto &[m, value] : s.M)
+          for (unsigned int d = 0; d < dim; ++d)
+            force[interface.position(interface.nodes[m].dofs[d])] += lambda * value * s.normal[d];
+      }
+    return force;
+  }
+
+  template class FrictionlessFormulation<2>;
+  template class FrictionlessFormulation<3>;
+} // namespace contact_fem

@@ -1,0 +1,292 @@
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <contact_fem/contact/formulations/penalty_frictionless.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace contact_fem
+{
+  template <int dim>
+  void
+  PenaltyFrictionless<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    prm.declare_entry("Adaptive penalty",
+                      "false",
+                      Patterns::Bool(),
+                      "'penalty frictionless' only: adapt the penalty of every "
+                      "slave node in every Newton iteration from the change of its "
+                      "penetration (Bussetta, Marceau and Ponthot's rule) until "
+                      "each penetration is below Maximum penetration factor * h; a "
+                      "node whose penalty changed counts as an active-set change.");
+    prm.declare_entry("Maximum penetration factor",
+                      "1e-3",
+                      Patterns::Double(0.),
+                      "Adaptive penalty: the allowed penetration of a slave node, "
+                      "as a fraction of its element size h.");
+    prm.leave_subsection();
+  }
+
+  namespace
+  {
+    template <int dim>
+    typename FrictionlessFormulation<dim>::Parameters
+    read_shared_parameters(ParameterHandler &prm)
+    {
+      typename FrictionlessFormulation<dim>::Parameters parameters;
+      parameters.parse_parameters(prm);
+      return parameters;
+    }
+  } // namespace
+
+  template <int dim>
+  PenaltyFrictionless<dim>::PenaltyFrictionless(ParameterHandler &prm)
+    : FrictionlessFormulation<dim>(read_shared_parameters<dim>(prm))
+  {
+    prm.enter_subsection("Contact");
+    adaptive           = prm.get_bool("Adaptive penalty");
+    penetration_factor = prm.get_double("Maximum penetration factor");
+    prm.leave_subsection();
+    AssertThrow(!adaptive || penetration_factor > 0.,
+                ExcMessage("Contact/Maximum penetration factor: expected a value > 0."));
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictionless<dim>::initialize(const ContactInterface<dim> &interface)
+  {
+    FrictionlessFormulation<dim>::initialize(interface);
+    node_penalty.assign(interface.nodes.size(), 0.);
+    previous_gap.assign(interface.nodes.size(), 0.);
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictionless<dim>::start_load_step(const ContactInterface<dim> &interface,
+                                            const std::vector<double>   &u,
+                                            const bool                   first_step)
+  {
+    // A stiff spring (penetration ~ 1e-4 h p / E) unless the adaptive rule
+    // raises it where needed.
+    this->set_pair_scaling(interface, adaptive ? 1. : 1e4);
+    auto &pressure = this->pressure;
+    auto &active   = this->active;
+    for (const auto &s : interface.slave_nodes)
+      {
+        if (!s.paired)
+          {
+            active[s.node]   = false;
+            pressure[s.node] = 0.;
+            continue;
+          }
+        const double g = interface.gap(s, u);
+        // Adapted penalties live as long as the mesh.
+        if (node_penalty[s.node] == 0. || !adaptive)
+          node_penalty[s.node] = this->penalty[s.pair];
+        previous_gap[s.node] = g;
+        bool a = pressure[s.node] - this->penalty[s.pair] * g > 0.;
+        if (first_step && g <= this->parameters.active_check_factor * s.size)
+          a = true;
+        active[s.node] = a;
+        if (!active[s.node])
+          pressure[s.node] = 0.;
+      }
+    for (unsigned int n = 0; n < interface.nodes.size(); ++n)
+      if (!interface.nodes[n].slave)
+        active[n] = false;
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictionless<dim>::add_constraints(const ContactInterface<dim> &interface,
+                                            const std::vector<double>   &fixed_values,
+                                            AffineConstraints<double>   &constraints,
+                                            const bool                   all_candidates) const
+  {
+    if (all_candidates)
+      this->add_gap_constraints(interface, fixed_values, constraints, false);
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictionless<dim>::add_sparsity(const ContactInterface<dim>    &interface,
+                                         const AffineConstraints<double> &constraints,
+                                         const IndexSet                  &owned,
+                                         DynamicSparsityPattern          &pattern) const
+  {
+    std::vector<types::global_dof_index> dofs;
+    std::vector<double>                  gradient;
+    for (const auto &s : interface.slave_nodes)
+      if (s.paired && owned.is_element(interface.nodes[s.node].dofs[0]))
+        {
+          this->gap_gradient(interface, s, dofs, gradient);
+          constraints.add_entries_local_to_global(dofs, pattern, true);
+        }
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictionless<dim>::assemble(const ContactInterface<dim>    &interface,
+                                     const AffineConstraints<double> &constraints,
+                                     const IndexSet                  &owned,
+                                     TrilinosWrappers::SparseMatrix  &matrix,
+                                     TrilinosWrappers::MPI::Vector   &rhs) const
+  {
+    // g_j is affine in u within a load step: g_j(u) = g_j(0) + grad g_j . u.
+    const std::vector<double>            zero(interface.dofs().size(), 0.);
+    std::vector<types::global_dof_index> dofs;
+    std::vector<double>                  gradient;
+    for (const auto &s : interface.slave_nodes)
+      {
+        if (!s.paired || !this->active[s.node] ||
+            !owned.is_element(interface.nodes[s.node].dofs[0]))
+          continue;
+        this->gap_gradient(interface, s, dofs, gradient);
+        const double       stiffness = node_penalty[s.node] * s.D;
+        const double       g0        = interface.gap(s, zero);
+        const unsigned int n         = dofs.size();
+        FullMatrix<double> local_matrix(n, n);
+        Vector<double>     local_rhs(n);
+        for (unsigned int a = 0; a < n; ++a)
+          {
+            for (unsigned int b = 0; b < n; ++b)
+              local_matrix(a, b) = stiffness * gradient[a] * gradient[b];
+            local_rhs(a) = -stiffness * g0 * gradient[a];
+          }
+        constraints.distribute_local_to_global(local_matrix, local_rhs, dofs, matrix, rhs);
+      }
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictionless<dim>::recover_multipliers(const ContactInterface<dim> &,
+                                                const std::vector<double> &)
+  {}
+
+  template <int dim>
+  unsigned int
+  PenaltyFrictionless<dim>::update_active_set(const ContactInterface<dim> &interface,
+                                              const std::vector<double>   &u)
+  {
+    unsigned int changes = 0;
+    for (const auto &s : interface.slave_nodes)
+      {
+        if (!s.paired)
+          continue;
+        const double g          = interface.gap(s, u);
+        const bool   now_active = g < 0.;
+        if (now_active != this->active[s.node])
+          ++changes;
+        // The pressure of the penalty this solution was computed with.
+        this->pressure[s.node] = now_active ? node_penalty[s.node] * (-g) : 0.;
+        if (adaptive && (now_active || this->active[s.node]))
+          {
+            // A penalty that vanishes or explodes would make the system
+            // singular: it stays within 1e-6 ... 1e12 of the pair's value.
+            const double eps =
+              std::clamp(adapted_penalty(node_penalty[s.node], -g, -previous_gap[s.node],
+                                         penetration_factor * s.size),
+                         1e-6 * this->penalty[s.pair],
+                         1e12 * this->penalty[s.pair]);
+            if (eps != node_penalty[s.node])
+              ++changes;
+            node_penalty[s.node] = eps;
+          }
+        previous_gap[s.node]   = g;
+        this->active[s.node]   = now_active;
+      }
+    return changes;
+  }
+
+  template <int dim>
+  typename PenaltyFrictionless<dim>::Residuals
+  PenaltyFrictionless<dim>::residuals(const ContactInterface<dim> &interface,
+                                      const std::vector<double>   &u) const
+  {
+    Residuals result;
+    double    sum = 0.;
+    if (adaptive)
+      for (const auto &s : interface.slave_nodes)
+        if (s.paired && this->active[s.node])
+          {
+            const double r = std::max(0., -interface.gap(s, u) - penetration_factor * s.size);
+            sum += r * r;
+          }
+    result.multiplier    = std::sqrt(sum);
+    result.contact_force = this->contact_forces(interface);
+    return result;
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictionless<dim>::add_results(const ContactInterface<dim> &interface,
+                                        Json                        &contact) const
+  {
+    FrictionlessFormulation<dim>::add_results(interface, contact);
+    if (!adaptive)
+      return;
+    double largest = 0.;
+    for (const auto &s : interface.slave_nodes)
+      if (s.paired && this->active[s.node])
+        largest = std::max(largest, node_penalty[s.node]);
+    contact.set("largest_adapted_penalty", largest);
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictionless<dim>::print_results(const ContactInterface<dim> &interface,
+                                          const std::vector<double>   &u,
+                                          std::ostream                &out) const
+  {
+    if (!adaptive)
+      return;
+    double gap_max = 0., largest = 0.;
+    for (const auto &s : interface.slave_nodes)
+      if (s.paired && this->active[s.node])
+        {
+          gap_max = std::max(gap_max, std::abs(interface.gap(s, u)) / s.size);
+          largest = std::max(largest, node_penalty[s.node]);
+        }
+    out << "    penetration within the allowed " << penetration_factor
+        << " h: " << (gap_max <= penetration_factor ? "yes" : "no") << std::endl
+        << "    largest adapted penalty / initial: "
+        << largest / (this->penalty.empty() ? 0. : this->penalty[0]) << std::endl;
+  }
+
+  template <int dim>
+  double
+  PenaltyFrictionless<dim>::adapted_penalty(const double eps,
+                                            const double penetration,
+                                            const double previous_penetration,
+                                            const double allowed) const
+  {
+    // A node that closes in this iteration counts as having had no
+    // penetration before: the crossing rule is for a node pushed out again
+    // (too stiff a penalty), not for one that makes first contact.
+    const double p = penetration, q = std::max(previous_penetration, 0.);
+    double       result = eps;
+    if (q > 0. && p < 0.)
+      // Pushed out: soften by the ratio of the two penetrations (more
+      // strongly if the previous one was within the limit).
+      result = std::abs(q) > allowed ?
+                 std::abs(eps * q / p * (std::abs(p) + allowed) / (p - q)) :
+                 std::abs(eps * q / (10. * p));
+    else if (p > allowed)
+      {
+        if (std::abs(p - q) > std::max({p / 10., q / 10., 5. * allowed}))
+          result = 2. * eps; // still moving a lot: double
+        else if (std::abs(std::abs(p) - std::abs(q)) <= 0.01 * std::abs(q) && p < 10. * allowed)
+          result = eps * std::pow(std::sqrt(p / allowed - 1.) + 1., 2); // stalled near the limit
+        else if (p > 1.01 * std::abs(q))
+          result = 2. * eps * std::abs(q) / p; // growing
+        else
+          result = eps * (std::sqrt(p / allowed - 1.) + 1.);
+      }
+    return result;
+  }
+
+  template class PenaltyFrictionless<2>;
+  template class PenaltyFrictionless<3>;
+} // namespace contact_fem
