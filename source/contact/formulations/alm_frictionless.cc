@@ -59,20 +59,15 @@ namespace contact_fem
             continue;
           }
         const double g = interface.gap(s, u);
-        bool         a = pressure[s.node] - this->penalty[s.pair] * g > 0.;
-        if (first_step && g <= this->parameters.active_check_factor * s.size)
-          a = true;
-        active[s.node] = a && this->eliminated_component(interface, s) < dim;
+        active[s.node] =
+          this->starts_active(s, g, first_step) && this->eliminated_component(interface, s) < dim;
         if (!active[s.node])
           {
             released_pressure[s.node] = pressure[s.node];
             pressure[s.node]          = 0.;
           }
       }
-    // Nodes that lost their master projection since the last search.
-    for (unsigned int n = 0; n < interface.nodes.size(); ++n)
-      if (!interface.nodes[n].slave)
-        active[n] = false;
+    this->deactivate_master_nodes(interface);
   }
 
   template <int dim>

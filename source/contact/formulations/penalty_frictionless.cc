@@ -86,16 +86,11 @@ namespace contact_fem
         if (node_penalty[s.node] == 0. || !adaptive)
           node_penalty[s.node] = this->penalty[s.pair];
         previous_gap[s.node] = g;
-        bool a = pressure[s.node] - this->penalty[s.pair] * g > 0.;
-        if (first_step && g <= this->parameters.active_check_factor * s.size)
-          a = true;
-        active[s.node] = a;
+        active[s.node]       = this->starts_active(s, g, first_step);
         if (!active[s.node])
           pressure[s.node] = 0.;
       }
-    for (unsigned int n = 0; n < interface.nodes.size(); ++n)
-      if (!interface.nodes[n].slave)
-        active[n] = false;
+    this->deactivate_master_nodes(interface);
   }
 
   template <int dim>

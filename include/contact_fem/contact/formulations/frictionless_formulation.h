@@ -79,6 +79,26 @@ namespace contact_fem
     void
     set_pair_scaling(const ContactInterface<dim> &interface, const double penalty_factor);
 
+    /// The start-of-step rule: lambda_j - eps g_j > 0, and on the first step
+    /// of a mesh also g_j <= Active check factor * h_j (about to touch).
+    bool
+    starts_active(const typename ContactInterface<dim>::SlaveNode &s,
+                  const double                                     g,
+                  const bool                                       first_step) const
+    {
+      return pressure[s.node] - penalty[s.pair] * g > 0. ||
+             (first_step && g <= parameters.active_check_factor * s.size);
+    }
+
+    /// Interface nodes that are only master nodes are never active.
+    void
+    deactivate_master_nodes(const ContactInterface<dim> &interface)
+    {
+      for (unsigned int n = 0; n < interface.nodes.size(); ++n)
+        if (!interface.nodes[n].slave)
+          active[n] = false;
+    }
+
     /// The DoFs of slave node @p s and its masters, with grad g_j there:
     /// -n_j at the slave node, n_j M_jl / D_j at master l.
     void
