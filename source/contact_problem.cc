@@ -429,8 +429,10 @@ namespace contact_fem
           // A slave DoF may also be the parent of a hanging node: follow the
           // hanging parents and the (closed) candidate masters of every DoF
           // reached, so both the chained and the unchained forms are covered.
+          // Every DoF enters the closure once, so the walk ends by itself
+          // (a bound on it cut off the DoFs of a Q2 hexahedron, 81 > 64).
           closure = dofs;
-          for (unsigned int k = 0; k < closure.size() && k < 64; ++k)
+          for (unsigned int k = 0; k < closure.size(); ++k)
             for (const auto *c : {&hanging_constraints, &candidates})
               if (c->can_store_line(closure[k]))
                 if (const auto *entries = c->get_constraint_entries(closure[k]))
