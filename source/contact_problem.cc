@@ -86,16 +86,7 @@ namespace contact_fem
                       "for Q1, Q2-P1 for Q2), which removes volumetric locking "
                       "of nearly incompressible bodies (nu close to 0.5).");
     prm.leave_subsection();
-    prm.enter_subsection("Linear solver");
-    prm.declare_entry("Direct solver", "Amesos_Mumps",
-                      Patterns::Selection("Amesos_Klu|Amesos_Mumps"),
-                      "Trilinos Amesos direct solver of the condensed system: "
-                      "MUMPS (METIS ordering, distributed under MPI) or KLU "
-                      "(gathers the matrix on one process). MUMPS is the faster "
-                      "from 5k DoFs on, 7x at 74k DoFs (doc/performance.md), and "
-                      "the only one that detects zero pivots (free rigid-body "
-                      "modes).");
-    prm.leave_subsection();
+    LinearSolver::declare_parameters(prm);
     Scene<dim>::declare_parameters(prm);
     Materials<dim>::declare_parameters(prm);
     BoundaryConditions::declare_parameters(prm);
@@ -136,7 +127,7 @@ namespace contact_fem
                       Triangulation<dim>::limit_level_difference_at_vertices))
     , fe(FE_Q<dim>(degree), dim)
     , dof_handler(triangulation)
-    , direct_solver(read_entry(prm, "Linear solver", "Direct solver"))
+    , linear_solver(LinearSolver::create(prm))
   {
     // Every parameter is read and checked before any work is done.
     scene.parse_parameters(prm, prm_directory);
@@ -448,7 +439,7 @@ namespace contact_fem
     if (contact)
       contact->add_sparsity(*interface, candidates, owned_dofs, dsp);
     SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs, comm, writable_dofs);
-    direct_solver.clear();
+    linear_solver->clear();
     system_matrix.reinit(owned_dofs, owned_dofs, dsp, comm);
   }
 
@@ -496,13 +487,11 @@ namespace contact_fem
   ContactProblem<dim>::solve_linear_system()
   {
     TimerOutput::Scope t(*timer, "Solve: linear");
-    // A direct solver: the stiffness contrast between bodies (up to 1e12)
-    // defeats iterative solvers without a contact-aware preconditioner.
-    const double linear_residual = direct_solver.solve(system_matrix, solution, system_rhs);
-    if (direct_solver.n_null_pivots() > 0)
+    const double linear_residual = linear_solver->solve(system_matrix, solution, system_rhs);
+    if (linear_solver->n_null_pivots() > 0)
       {
         ++singular_solves;
-        most_null_pivots = std::max(most_null_pivots, direct_solver.n_null_pivots());
+        most_null_pivots = std::max(most_null_pivots, linear_solver->n_null_pivots());
       }
     // A singular system (a body held by nothing) does not always make the
     // direct solver fail: check that the solution solves it. Singular
@@ -1204,7 +1193,8 @@ namespace contact_fem
     // since a stiff body may rest on a soft one. Measured on the Hertz disc
     // (theta G V): 3.4 with its fixed points, 300-500 without them.
     constexpr double compliance_limit = 50.;
-    if (!contact || !factorisation_current || direct_solver.n_null_pivots() > 0)
+    if (!contact || !factorisation_current || !linear_solver->can_solve_again() ||
+        linear_solver->n_null_pivots() > 0)
       return;
     TimerOutput::Scope t(*timer, "Check: held rotation");
     double                          softest = std::numeric_limits<double>::max();
@@ -1306,7 +1296,7 @@ namespace contact_fem
             // Response: solution + K^-1 probe, distributed, minus solution
             // (the inhomogeneities cancel).
             TrilinosWrappers::MPI::Vector response(owned_dofs, comm);
-            direct_solver.solve_with_last_factors(response, probe_load);
+            linear_solver->solve_again(response, probe_load);
             response += solution;
             constraints.distribute(response);
             response -= solution;

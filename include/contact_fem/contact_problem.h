@@ -15,7 +15,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <contact_fem/direct_solver.h>
+#include <contact_fem/linear_solver.h>
 #include <contact_fem/contact/formulations/contact_formulation.h>
 #include <contact_fem/contact_interface.h>
 #include <contact_fem/json.h>
@@ -289,7 +289,7 @@ namespace contact_fem
     AffineConstraints<double> constraints;
 
     TrilinosWrappers::SparseMatrix system_matrix;
-    DirectSolver                   direct_solver; ///< after the matrix it refers to
+    std::unique_ptr<LinearSolver>  linear_solver; ///< after the matrix it refers to
     /// Newton solves of this cycle whose matrix had zero pivots, and the most.
     unsigned int singular_solves = 0, most_null_pivots = 0;
     TrilinosWrappers::MPI::Vector  system_rhs;
@@ -333,8 +333,8 @@ namespace contact_fem
     std::vector<std::pair<double, std::string>> vtu_records;
     Vector<float>                               indicators; ///< of the last estimate
     double relative_estimate = 0.; ///< eta / |u|_E of the last SPR estimate
-    /// The direct solver holds the factors of the current load step's
-    /// last Newton system.
+    /// The linear solver can still answer for the current load step's last
+    /// Newton system (LinearSolver::solve_again()).
     bool factorisation_current = false;
     /// Time of diagnostics of the current cycle left out of its wall time.
     double uncounted_wall_time = 0.;

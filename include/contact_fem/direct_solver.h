@@ -2,8 +2,7 @@
 #ifndef contact_fem_direct_solver_h
 #define contact_fem_direct_solver_h
 
-#include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
+#include <contact_fem/linear_solver.h>
 
 #include <memory>
 #include <string>
@@ -32,7 +31,7 @@ namespace contact_fem
    *
    * Implemented in source/direct_solver.cc.
    */
-  class DirectSolver
+  class DirectSolver : public LinearSolver
   {
   public:
     /// @p amesos_name: "Amesos_Klu" or "Amesos_Mumps".
@@ -42,13 +41,26 @@ namespace contact_fem
     /// Forgets the factorisation. Must be called before the matrix is
     /// re-created (new sparsity pattern): the solver refers to it.
     void
-    clear();
+    clear() override;
 
     /// Solves matrix x = rhs; returns the l2 norm of the final residual.
     double
     solve(const TrilinosWrappers::SparseMatrix &matrix,
           TrilinosWrappers::MPI::Vector       &x,
-          const TrilinosWrappers::MPI::Vector &rhs);
+          const TrilinosWrappers::MPI::Vector &rhs) override;
+
+    bool
+    can_solve_again() const override
+    {
+      return has_factorisation();
+    }
+
+    void
+    solve_again(TrilinosWrappers::MPI::Vector       &x,
+                const TrilinosWrappers::MPI::Vector &rhs) override
+    {
+      solve_with_last_factors(x, rhs);
+    }
 
     /// Solves with the factors of the last solve() (back substitution only,
     /// no refinement): the response of the same system to another load.
@@ -66,7 +78,7 @@ namespace contact_fem
     /// Zero pivots of the last factorisation (MUMPS; always 0 for KLU): the
     /// number of rigid-body modes the matrix leaves free.
     unsigned int
-    n_null_pivots() const
+    n_null_pivots() const override
     {
       return null_pivots;
     }
