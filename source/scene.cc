@@ -28,10 +28,15 @@ namespace contact_fem
     prm.declare_entry("Mesh file",
                       "",
                       Patterns::Anything(),
-                      "Gmsh file (format 2.2 or 4) for Type = mesh file; a "
+                      "Gmsh file (ASCII, format 2.2 or 4) for Type = mesh file; a "
                       "relative name is taken relative to the .prm file. Bodies "
                       "are the cells' physical tags (material ids), surfaces the "
-                      "faces' physical tags (boundary ids).");
+                      "faces' physical tags (boundary ids). Cells: first-order "
+                      "quadrilaterals (hexahedra in 3D). Read and checked with "
+                      "the input (also by --validate): binary, truncated, "
+                      "simplex or wrong-dimension files and bodies cut by "
+                      "unmerged nodes are refused with a message; bodies in "
+                      "contact keep their own nodes (different material ids).");
     prm.declare_entry("Distortion",
                       "0",
                       Patterns::Double(0., 0.45),
@@ -182,11 +187,33 @@ namespace contact_fem
         in.seekg(0, std::ios::end);
         AssertThrow(in.tellg() > 0,
                     ExcMessage("Geometry/Mesh file: '" + mesh_file + "' is empty."));
+        read_mesh_file();
       }
     else
       AssertThrow(dim == 2,
                   ExcMessage("Geometry/Type: the built-in geometry '" + type +
                              "' exists in 2D only so far; use a mesh file in 3D."));
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::read_mesh_file()
+  {
+    // Every check runs here, before any work and under --validate.
+    auto coarse = std::make_shared<Triangulation<dim>>();
+    read_gmsh(mesh_file, *coarse);
+    check_unmerged_vertices(*coarse, mesh_file);
+    coarse_mesh = coarse;
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::create_from_mesh_file(parallel::distributed::Triangulation<dim> &tria) const
+  {
+    AssertThrow(coarse_mesh, ExcMessage("Scene: parse_parameters() reads the mesh file, "
+                                        "create_mesh() uses it once."));
+    tria.copy_triangulation(*coarse_mesh);
+    coarse_mesh.reset();
   }
 
   namespace
@@ -220,26 +247,6 @@ namespace contact_fem
       result.create_triangulation(vertices, cells, SubCellData());
     }
 
-    /// Reads a Gmsh file into @p coarse; throws naming the file on failure.
-    template <int dim>
-    void
-    read_gmsh(const std::string &file, Triangulation<dim> &coarse)
-    {
-      GridIn<dim> grid_in;
-      grid_in.attach_triangulation(coarse);
-      std::ifstream in(file);
-      try
-        {
-          grid_in.read_msh(in);
-        }
-      catch (const std::exception &e)
-        {
-          AssertThrow(false,
-                      ExcMessage("Geometry/Mesh file: cannot read '" + file +
-                                 "' as a Gmsh mesh: " + e.what()));
-        }
-    }
-
     bool
     close(const double a, const double b, const double scale)
     {
@@ -254,10 +261,7 @@ namespace contact_fem
     Triangulation<2> coarse;
 
     if (type == "mesh file")
-      {
-        read_gmsh(mesh_file, coarse);
-        tria.copy_triangulation(coarse);
-      }
+      create_from_mesh_file(tria);
     else if (type == "hertz cylinder")
       {
         const double R = hertz.radius, t = hertz.plate_thickness;
@@ -410,9 +414,7 @@ namespace contact_fem
   void
   Scene<3>::create_mesh(parallel::distributed::Triangulation<3> &tria) const
   {
-    Triangulation<3> coarse;
-    read_gmsh(mesh_file, coarse);
-    tria.copy_triangulation(coarse);
+    create_from_mesh_file(tria);
     if (global_refinements > 0)
       tria.refine_global(global_refinements);
     refine_boxes(tria);
@@ -485,26 +487,8 @@ namespace contact_fem
     // all positive.
     unsigned int bad_cells = 0;
     for (const auto &cell : tria.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const double h = cell->diameter();
-          if (dim == 2)
-            {
-              static const unsigned int next[4] = {1, 3, 0, 2}, prev[4] = {2, 0, 3, 1};
-              for (unsigned int v = 0; v < 4; ++v)
-                {
-                  const Tensor<1, dim> a = cell->vertex(next[v]) - cell->vertex(v);
-                  const Tensor<1, dim> b = cell->vertex(prev[v]) - cell->vertex(v);
-                  if (a[0] * b[1] - a[1] * b[0] <= 1e-12 * h * h)
-                    {
-                      ++bad_cells;
-                      break;
-                    }
-                }
-            }
-          else if (cell->measure() <= 1e-12 * std::pow(h, dim))
-            ++bad_cells;
-        }
+      if (cell->is_locally_owned() && is_inverted<dim>(cell))
+        ++bad_cells;
     bad_cells = Utilities::MPI::sum(bad_cells, tria.get_communicator());
     AssertThrow(bad_cells == 0,
                 ExcMessage("Geometry: the mesh has " + std::to_string(bad_cells) +

@@ -6,6 +6,9 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/distributed/tria.h>
 
+#include <contact_fem/mesh_file.h>
+
+#include <memory>
 #include <set>
 #include <string>
 
@@ -40,7 +43,9 @@ namespace contact_fem
    * numbers of cells (non-matching interface). Other faces have id 0.
    *
    * "mesh file": a Gmsh .msh file; bodies and surfaces carry the physical
-   * tags of the file as material and boundary ids.
+   * tags of the file as material and boundary ids. The file is read and
+   * checked in parse_parameters() (so --validate checks it too): ASCII,
+   * complete, quadrilaterals (hexahedra), no body cut by unmerged nodes.
    *
    * Implemented in source/scene.cc.
    */
@@ -54,7 +59,8 @@ namespace contact_fem
     void
     parse_parameters(ParameterHandler &prm, const std::string &prm_directory);
 
-    /// Creates the mesh (with global refinements) and attaches the manifolds.
+    /// Creates the mesh (with global refinements) and attaches the manifolds;
+    /// once per parse_parameters() for a mesh file.
     void
     create_mesh(parallel::distributed::Triangulation<dim> &tria) const;
 
@@ -89,6 +95,20 @@ namespace contact_fem
     /// Refines the boxes of refinement_boxes; throws if a box holds no cell.
     void
     refine_boxes(parallel::distributed::Triangulation<dim> &tria) const;
+
+  private:
+    /// Reads and checks the mesh file into coarse_mesh.
+    void
+    read_mesh_file();
+    /// The mesh file's coarse mesh, into @p tria.
+    void
+    create_from_mesh_file(parallel::distributed::Triangulation<dim> &tria) const;
+
+  public:
+    /// The coarse mesh of a mesh file, read and checked by
+    /// parse_parameters(); released by
+    /// create_mesh() once copied (a large mesh need not be held twice).
+    mutable std::shared_ptr<Triangulation<dim>> coarse_mesh;
 
     struct Hertz
     {

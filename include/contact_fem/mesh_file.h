@@ -1,0 +1,55 @@
+// Gmsh mesh files: reading with messages that name the file and what is
+// wrong, and checks of the coarse mesh that deal.II's reader does not make.
+#ifndef contact_fem_mesh_file_h
+#define contact_fem_mesh_file_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/types.h>
+#include <deal.II/grid/tria.h>
+
+#include <string>
+#include <vector>
+
+namespace contact_fem
+{
+  using namespace dealii;
+
+  /**
+   * Reads the Gmsh file @p file into @p coarse after a scan of its text:
+   * ASCII (MSH 1, 2.x, 4.x), complete (every section closed, the announced
+   * numbers of nodes and elements present), first-order quadrilaterals
+   * (dim = 2) or hexahedra (dim = 3) as cells, and in 2D nodes in one plane
+   * z = const. Each finding throws with a message naming the file (and the
+   * line) and the fix; deal.II's reader would report a binary file as "The
+   * string <\x01", a 3D mesh as an unknown element type, and accept
+   * triangles only to crash later in p4est.
+   *
+   * Implemented in source/mesh_file.cc.
+   */
+  template <int dim>
+  void
+  read_gmsh(const std::string &file, Triangulation<dim> &coarse);
+
+  /**
+   * Throws if a body (material id) of @p coarse is cut by an internal
+   * crack: two of its boundary faces lie on top of each other (coincident
+   * vertices that the cells on either side do not share) and at least one
+   * of them has no boundary id (0: untagged in the mesh file). Such a body
+   * deforms as if cut, without any message (a Gmsh mesh of several surfaces
+   * without Coherence). Coincident vertices of different bodies are how
+   * contact pairs are meshed, and tagged coincident faces of one body are
+   * taken to be a deliberate internal surface: both pass. O(n log n): an
+   * R-tree of the boundary vertices.
+   */
+  template <int dim>
+  void
+  check_unmerged_vertices(const Triangulation<dim> &coarse, const std::string &file);
+
+  /// Whether @p cell is inverted or degenerate: a non-positive Jacobian at a
+  /// corner (2D), a non-positive measure (3D), relative to its size.
+  template <int dim>
+  bool
+  is_inverted(const typename Triangulation<dim>::cell_iterator &cell);
+} // namespace contact_fem
+
+#endif
