@@ -623,6 +623,195 @@ namespace contact_fem
 
   template <int dim>
   bool
+  fit_sphere(const std::vector<Point<dim>> &points,
+             Point<dim>                    &centre,
+             double                        &radius,
+             double                        &max_deviation)
+  {
+    if (points.size() < dim + 1)
+      return false;
+    // Relative to the centroid, for the conditioning: 2 c.y + k = |y|^2.
+    Point<dim> mean;
+    for (const auto &p : points)
+      mean += p / static_cast<double>(points.size());
+    constexpr unsigned int n = dim + 1;
+    double                 A[n][n + 1] = {};
+    for (const auto &p : points)
+      {
+        const Tensor<1, dim> y = p - mean;
+        double               row[n];
+        for (unsigned int d = 0; d < dim; ++d)
+          row[d] = 2. * y[d];
+        row[dim] = 1.;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            for (unsigned int j = 0; j < n; ++j)
+              A[i][j] += row[i] * row[j];
+            A[i][n] += row[i] * y.norm_square();
+          }
+      }
+    // Gaussian elimination with partial pivoting; a tiny pivot means the
+    // points lie on a line (plane): no circle (sphere).
+    double scale = 0.;
+    for (unsigned int i = 0; i < n; ++i)
+      scale = std::max(scale, std::abs(A[i][i]));
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        unsigned int pivot = i;
+        for (unsigned int r = i + 1; r < n; ++r)
+          if (std::abs(A[r][i]) > std::abs(A[pivot][i]))
+            pivot = r;
+        if (!(std::abs(A[pivot][i]) > 1e-12 * scale))
+          return false;
+        for (unsigned int j = 0; j <= n; ++j)
+          std::swap(A[i][j], A[pivot][j]);
+        for (unsigned int r = 0; r < n; ++r)
+          if (r != i)
+            {
+              const double factor = A[r][i] / A[i][i];
+              for (unsigned int j = i; j <= n; ++j)
+                A[r][j] -= factor * A[i][j];
+            }
+      }
+    Tensor<1, dim> c;
+    for (unsigned int d = 0; d < dim; ++d)
+      c[d] = A[d][n] / A[d][d];
+    const double k = A[dim][n] / A[dim][dim];
+    if (!(k + c.norm_square() > 0.))
+      return false;
+    centre        = mean + c;
+    radius        = std::sqrt(k + c.norm_square());
+    max_deviation = 0.;
+    for (const auto &p : points)
+      max_deviation = std::max(max_deviation, std::abs(p.distance(centre) - radius));
+    return std::isfinite(radius);
+  }
+
+  namespace
+  {
+    /// The outward unit normal of the (straight or bilinear) face @p f.
+    template <int dim>
+    Tensor<1, dim>
+    outward_normal(const typename Triangulation<dim>::cell_iterator &cell, const unsigned int f)
+    {
+      const auto     face = cell->face(f);
+      Tensor<1, dim> n;
+      if constexpr (dim == 2)
+        {
+          const Tensor<1, dim> t = face->vertex(1) - face->vertex(0);
+          n[0]                   = t[1];
+          n[1]                   = -t[0];
+        }
+      else
+        {
+          // The cross product of the diagonals of the quadrilateral.
+          const Tensor<1, dim> a = face->vertex(3) - face->vertex(0);
+          const Tensor<1, dim> b = face->vertex(2) - face->vertex(1);
+          n[0]                   = a[1] * b[2] - a[2] * b[1];
+          n[1]                   = a[2] * b[0] - a[0] * b[2];
+          n[2]                   = a[0] * b[1] - a[1] * b[0];
+        }
+      if (n * (face->center() - cell->center()) < 0.)
+        n *= -1.;
+      return n.norm() > 0. ? n / n.norm() : n;
+    }
+
+    /// The joints of a face with its neighbours on the boundary: its
+    /// vertices in 2D, its lines in 3D.
+    template <int dim>
+    std::vector<unsigned int>
+    joints_of(const typename Triangulation<dim>::face_iterator &face)
+    {
+      std::vector<unsigned int> joints;
+      if constexpr (dim == 2)
+        for (unsigned int v = 0; v < face->n_vertices(); ++v)
+          joints.push_back(face->vertex_index(v));
+      else
+        for (unsigned int l = 0; l < face->n_lines(); ++l)
+          joints.push_back(face->line_index(l));
+      return joints;
+    }
+  } // namespace
+
+  template <int dim>
+  std::vector<PolygonalBoundary<dim>>
+  find_polygonal_boundaries(const Triangulation<dim>            &coarse,
+                            const std::vector<types::boundary_id> &skip)
+  {
+    // A polygonal circle of n sides turns by 2 pi / n at each vertex: 30
+    // degrees for n = 12. Below 1e-4 rad (0.006 degrees) the sag of the
+    // chords is negligible, and flat faces turn by round-off only.
+    constexpr double min_kink = 1e-4, max_kink = numbers::PI / 6.;
+    struct Side
+    {
+      unsigned int       joint;
+      types::boundary_id id;
+      Tensor<1, dim>     normal;
+    };
+    std::vector<Side>                                         sides;
+    std::map<types::boundary_id, std::vector<unsigned int>> vertices;
+    for (const auto &cell : coarse.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          {
+            const types::boundary_id id = cell->face(f)->boundary_id();
+            if (std::find(skip.begin(), skip.end(), id) != skip.end())
+              continue;
+            const Tensor<1, dim> n = outward_normal<dim>(cell, f);
+            for (const unsigned int joint : joints_of<dim>(cell->face(f)))
+              sides.push_back({joint, id, n});
+            for (unsigned int v = 0; v < cell->face(f)->n_vertices(); ++v)
+              vertices[id].push_back(cell->face(f)->vertex_index(v));
+          }
+    std::sort(sides.begin(), sides.end(), [](const Side &a, const Side &b) {
+      return std::tie(a.joint, a.id) < std::tie(b.joint, b.id);
+    });
+
+    std::map<types::boundary_id, PolygonalBoundary<dim>> found;
+    for (std::size_t k = 0; k < sides.size();)
+      {
+        std::size_t end = k;
+        while (end < sides.size() && sides[end].joint == sides[k].joint &&
+               sides[end].id == sides[k].id)
+          ++end;
+        // Exactly two faces of one id at a joint: a joint along a surface.
+        if (end - k == 2)
+          {
+            auto &b = found[sides[k].id];
+            b.id    = sides[k].id;
+            ++b.n_joints;
+            const double angle =
+              std::acos(std::clamp(sides[k].normal * sides[k + 1].normal, -1., 1.));
+            if (angle > min_kink && angle < max_kink)
+              {
+                b.min_angle = b.n_kinks == 0 ? angle : std::min(b.min_angle, angle);
+                b.max_angle = std::max(b.max_angle, angle);
+                ++b.n_kinks;
+              }
+          }
+        k = end;
+      }
+
+    std::vector<PolygonalBoundary<dim>> result;
+    for (auto &[id, b] : found)
+      if (b.n_kinks >= 3 && 2 * b.n_kinks > b.n_joints)
+        {
+          auto &ids = vertices[id];
+          std::sort(ids.begin(), ids.end());
+          ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+          std::vector<Point<dim>> points;
+          for (const unsigned int v : ids)
+            points.push_back(coarse.get_vertices()[v]);
+          double deviation = 0.;
+          b.fits_sphere    = fit_sphere(points, b.centre, b.radius, deviation) &&
+                          deviation <= 1e-4 * b.radius;
+          result.push_back(b);
+        }
+    return result;
+  }
+
+  template <int dim>
+  bool
   is_inverted(const typename Triangulation<dim>::cell_iterator &cell)
   {
     const double h = cell->diameter();
@@ -644,6 +833,12 @@ namespace contact_fem
   template void read_gmsh<3>(const std::string &, Triangulation<3> &);
   template void check_unmerged_vertices<2>(const Triangulation<2> &, const std::string &);
   template void check_unmerged_vertices<3>(const Triangulation<3> &, const std::string &);
+  template std::vector<PolygonalBoundary<2>>
+  find_polygonal_boundaries<2>(const Triangulation<2> &, const std::vector<types::boundary_id> &);
+  template std::vector<PolygonalBoundary<3>>
+  find_polygonal_boundaries<3>(const Triangulation<3> &, const std::vector<types::boundary_id> &);
+  template bool fit_sphere<2>(const std::vector<Point<2>> &, Point<2> &, double &, double &);
+  template bool fit_sphere<3>(const std::vector<Point<3>> &, Point<3> &, double &, double &);
   template bool is_inverted<2>(const Triangulation<2>::cell_iterator &);
   template bool is_inverted<3>(const Triangulation<3>::cell_iterator &);
 } // namespace contact_fem

@@ -10,6 +10,8 @@
 
 #include <cmath>
 #include <fstream>
+#include <iomanip>
+#include <sstream>
 
 namespace contact_fem
 {
@@ -61,6 +63,23 @@ namespace contact_fem
                       "as needed to keep one level difference). E.g. "
                       "'2: -1, 0.5, 1, 1.5' refines a band around y = 1 twice. "
                       "Empty: none. Distortion acts before these refinements.");
+    prm.declare_entry("Manifolds",
+                      "",
+                      Patterns::Anything(),
+                      "Type = mesh file: the curved surfaces of the mesh, as 'boundary "
+                      "id: surface; ...' with the surface 'circle cx, cy, R' in 2D, "
+                      "'sphere cx, cy, cz, R' or 'cylinder px, py, pz, dx, dy, dz, R' "
+                      "(a point on the axis, its direction, the radius) in 3D, e.g. "
+                      "'3: circle 0, 8, 8; 4: circle 0, -8, 8'. Refinement then puts "
+                      "the new vertices of these boundaries on their surface instead "
+                      "of on the chords of the coarse mesh, the interior of every "
+                      "body with such a boundary follows by transfinite "
+                      "interpolation (unless Distortion > 0), and Q1 runs on a "
+                      "quadratic mapping (Finite element/Mapping degree = auto). "
+                      "Every vertex of these boundaries must lie on its surface "
+                      "within 1e-4 R. Empty: the faces of the file stay straight, "
+                      "and a boundary that looks like a polygon of a curve is "
+                      "warned about when the mesh is refined.");
     prm.enter_subsection("Hertz cylinder");
     prm.declare_entry("Radius", "8", Patterns::Double(0.), "Radius R of the half-disc.");
     prm.declare_entry("Plate half width", "10", Patterns::Double(0.),
@@ -146,6 +165,11 @@ namespace contact_fem
                                " coordinates, each lower below its upper."));
         refinement_boxes.push_back(refinement_box);
       }
+    const std::string manifolds_key = "Geometry/Manifolds";
+    manifolds = parse_boundary_manifolds<dim>(prm.get("Manifolds"), manifolds_key);
+    AssertThrow(manifolds.empty() || type == "mesh file",
+                ExcMessage(manifolds_key + ": only for Type = mesh file (the built-in "
+                           "geometries attach their own manifolds)."));
     prm.enter_subsection("Hertz cylinder");
     hertz.radius                = prm.get_double("Radius");
     hertz.plate_half_width      = prm.get_double("Plate half width");
@@ -200,10 +224,21 @@ namespace contact_fem
   Scene<dim>::read_mesh_file()
   {
     // Every check runs here, before any work and under --validate.
-    auto coarse = std::make_shared<Triangulation<dim>>();
+    const std::string key    = "Geometry/Manifolds";
+    auto              coarse = std::make_shared<Triangulation<dim>>();
     read_gmsh(mesh_file, *coarse);
     check_unmerged_vertices(*coarse, mesh_file);
-    coarse_mesh = coarse;
+    check_boundary_manifolds(manifolds, *coarse, key);
+    // Random vertex moves would invalidate the transfinite chart of the
+    // coarse cells (as for the Hertz disc): a distorted mesh keeps straight
+    // interior lines.
+    set_manifold_ids(manifolds, distortion == 0., *coarse);
+    check_refinement_on_manifolds(manifolds, distortion == 0., *coarse, key);
+    std::vector<types::boundary_id> with_manifold;
+    for (const auto &m : manifolds)
+      with_manifold.push_back(m.boundary_id);
+    polygonal_boundaries = find_polygonal_boundaries(*coarse, with_manifold);
+    coarse_mesh          = coarse;
   }
 
   template <int dim>
@@ -214,6 +249,53 @@ namespace contact_fem
                                         "create_mesh() uses it once."));
     tria.copy_triangulation(*coarse_mesh);
     coarse_mesh.reset();
+    attach_manifolds(manifolds, distortion == 0., tria);
+  }
+
+  template <int dim>
+  std::string
+  Scene<dim>::chord_warning() const
+  {
+    if (polygonal_boundaries.empty())
+      return "";
+    const bool         one = polygonal_boundaries.size() == 1;
+    std::ostringstream ids, details, fitted;
+    ids << (one ? "boundary " : "boundaries ");
+    details << std::setprecision(2);
+    fitted << std::setprecision(8);
+    for (unsigned int i = 0; i < polygonal_boundaries.size(); ++i)
+      {
+        const auto &b = polygonal_boundaries[i];
+        ids << (i == 0 ? "" : i + 1 == polygonal_boundaries.size() ? " and " : ", ")
+            << static_cast<unsigned int>(b.id)
+            << (b.id == 0 ? " (the faces without a physical tag)" : "");
+        details << (i == 0 ? "" : "; ")
+                << (one ? "its faces turn by " :
+                          "boundary " + std::to_string(b.id) + ": faces turning by ")
+                << b.min_angle * 180. / numbers::PI << " to "
+                << b.max_angle * 180. / numbers::PI << " degrees at " << b.n_kinks << " of "
+                << b.n_joints << (dim == 2 ? " vertices" : " edges");
+        if (b.fits_sphere)
+          {
+            fitted << (fitted.tellp() > 0 ? "; " : "") << static_cast<unsigned int>(b.id)
+                   << (dim == 2 ? ": circle " : ": sphere ");
+            for (unsigned int d = 0; d < dim; ++d)
+              fitted << (std::abs(b.centre[d]) < 1e-12 * b.radius ? 0. : b.centre[d]) << ", ";
+            fitted << b.radius;
+          }
+      }
+    const std::string example =
+      fitted.tellp() > 0 ? "'" + fitted.str() + "' (fitted to the vertices)" :
+                           (dim == 2 ? "'id: circle cx, cy, R'" : "'id: sphere cx, cy, cz, R'");
+    return ids.str() + " of the mesh file " +
+           (one ? "looks like a polygon standing for a curve (" :
+                  "look like polygons standing for curves (") +
+           details.str() + ") but " +
+           (one ? "has" : "have") + " no manifold: refinement keeps the chords of the coarse "
+           "mesh (new vertices on the straight edges, a kink and a pressure spike at every "
+           "original vertex). Attach the true " + (one ? "surface" : "surfaces") +
+           " with Geometry/Manifolds, e.g. " +
+           example + ".";
   }
 
   namespace

@@ -45,6 +45,47 @@ namespace contact_fem
   void
   check_unmerged_vertices(const Triangulation<dim> &coarse, const std::string &file);
 
+  /// A boundary id whose faces look like a polygonal approximation of a
+  /// curved surface (see find_polygonal_boundaries()).
+  template <int dim>
+  struct PolygonalBoundary
+  {
+    types::boundary_id id = 0;
+    unsigned int       n_kinks  = 0; ///< joints turning by a small nonzero angle
+    unsigned int       n_joints = 0; ///< joints of two faces of this id
+    double             min_angle = 0., max_angle = 0.; ///< of the kinks, radians
+    /// Whether the vertices fit one circle (sphere), with these:
+    bool       fits_sphere = false;
+    Point<dim> centre;
+    double     radius = 0.;
+  };
+
+  /**
+   * The boundary ids of @p coarse (except @p skip) along which neighbouring
+   * faces of the same id turn by a small nonzero angle (0.006 to 30
+   * degrees) at more than half of their joints, and at least at three: a
+   * polygon standing for a curve. Flat boundaries (no turn) and true
+   * corners (large turns) do not count. Each comes with the circle (2D) or
+   * sphere (3D) fitted to its vertices, if they lie on one.
+   */
+  template <int dim>
+  std::vector<PolygonalBoundary<dim>>
+  find_polygonal_boundaries(const Triangulation<dim>            &coarse,
+                            const std::vector<types::boundary_id> &skip);
+
+  /**
+   * Least-squares circle (sphere) through @p points (the algebraic fit:
+   * |x|^2 = 2 c.x + k, exact for points on a sphere). Returns false if the
+   * points do not determine one (fewer than dim + 1, or collinear);
+   * @p max_deviation is the largest | |x - c| - r |.
+   */
+  template <int dim>
+  bool
+  fit_sphere(const std::vector<Point<dim>> &points,
+             Point<dim>                    &centre,
+             double                        &radius,
+             double                        &max_deviation);
+
   /// Whether @p cell is inverted or degenerate: a non-positive Jacobian at a
   /// corner (2D), a non-positive measure (3D), relative to its size.
   template <int dim>
