@@ -836,8 +836,8 @@ namespace contact_fem
     // from the converged value with every level: say so once, up front.
     const bool refines = scene.global_refinements > 0 || !scene.refinement_boxes.empty() ||
                          refinement.n_cycles > 1;
-    if (refines && !scene.chord_warning().empty())
-      pcout << "Warning: " << scene.chord_warning() << std::endl;
+    if (const std::string chords = scene.chord_warning(); refines && !chords.empty())
+      pcout << "Warning: " << chords << std::endl;
     if (mapping->get_degree() > degree)
       pcout << "Q" << degree << " elements on a mapping of degree " << mapping->get_degree()
             << " (the curved boundaries are not replaced by chords)" << std::endl;
