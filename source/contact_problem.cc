@@ -72,8 +72,9 @@ namespace contact_fem
     prm.declare_entry("Mapping degree", "auto", Patterns::Selection("auto|1|2"),
                       "Polynomial degree of the geometry. auto: the element "
                       "degree, but 2 for Q1 on scenes with curved boundaries "
-                      "(Geometry/Type = hertz cylinder): Q1 faces then follow "
-                      "the arc instead of its chords, whose sag, where the "
+                      "(Geometry/Type = hertz cylinder, or Geometry/Manifolds): Q1 "
+                      "faces then follow the arc instead of its chords, whose "
+                      "sag, where the "
                       "element size changes along a contact surface, shifts "
                       "the gap and disturbs the contact pressure by up to "
                       "0.5 % (doc/convergence.md). 1 keeps the chords (as "
@@ -996,6 +997,12 @@ namespace contact_fem
         boundary_ids.insert({pair.slave, pair.master});
       Scene<dim>::check_mesh(triangulation, material_ids, boundary_ids);
     }
+    // Refining a polygon of a curve without its manifold moves p_max away
+    // from the converged value with every level: say so once, up front.
+    const bool refines = scene.global_refinements > 0 || !scene.refinement_boxes.empty() ||
+                         refinement.n_cycles > 1;
+    if (const std::string chords = scene.chord_warning(); refines && !chords.empty())
+      pcout << "Warning: " << chords << std::endl;
     if (mapping->get_degree() > degree)
       pcout << "Q" << degree << " elements on a mapping of degree " << mapping->get_degree()
             << " (the curved boundaries are not replaced by chords)" << std::endl;

@@ -10,6 +10,8 @@
 
 #include <cmath>
 #include <fstream>
+#include <iomanip>
+#include <sstream>
 
 namespace contact_fem
 {
@@ -28,10 +30,15 @@ namespace contact_fem
     prm.declare_entry("Mesh file",
                       "",
                       Patterns::Anything(),
-                      "Gmsh file (format 2.2 or 4) for Type = mesh file; a "
+                      "Gmsh file (ASCII, format 2.2 or 4) for Type = mesh file; a "
                       "relative name is taken relative to the .prm file. Bodies "
                       "are the cells' physical tags (material ids), surfaces the "
-                      "faces' physical tags (boundary ids).");
+                      "faces' physical tags (boundary ids). Cells: first-order "
+                      "quadrilaterals (hexahedra in 3D). Read and checked with "
+                      "the input (also by --validate): binary, truncated, "
+                      "simplex or wrong-dimension files and bodies cut by "
+                      "unmerged nodes are refused with a message; bodies in "
+                      "contact keep their own nodes (different material ids).");
     prm.declare_entry("Distortion",
                       "0",
                       Patterns::Double(0., 0.45),
@@ -56,6 +63,23 @@ namespace contact_fem
                       "as needed to keep one level difference). E.g. "
                       "'2: -1, 0.5, 1, 1.5' refines a band around y = 1 twice. "
                       "Empty: none. Distortion acts before these refinements.");
+    prm.declare_entry("Manifolds",
+                      "",
+                      Patterns::Anything(),
+                      "Type = mesh file: the curved surfaces of the mesh, as 'boundary "
+                      "id: surface; ...' with the surface 'circle cx, cy, R' in 2D, "
+                      "'sphere cx, cy, cz, R' or 'cylinder px, py, pz, dx, dy, dz, R' "
+                      "(a point on the axis, its direction, the radius) in 3D, e.g. "
+                      "'3: circle 0, 8, 8; 4: circle 0, -8, 8'. Refinement then puts "
+                      "the new vertices of these boundaries on their surface instead "
+                      "of on the chords of the coarse mesh, the interior of every "
+                      "body with such a boundary follows by transfinite "
+                      "interpolation (unless Distortion > 0), and Q1 runs on a "
+                      "quadratic mapping (Finite element/Mapping degree = auto). "
+                      "Every vertex of these boundaries must lie on its surface "
+                      "within 1e-4 R. Empty: the faces of the file stay straight, "
+                      "and a boundary that looks like a polygon of a curve is "
+                      "warned about when the mesh is refined.");
     prm.enter_subsection("Hertz cylinder");
     prm.declare_entry("Radius", "8", Patterns::Double(0.), "Radius R of the half-disc.");
     prm.declare_entry("Plate half width", "10", Patterns::Double(0.),
@@ -141,6 +165,11 @@ namespace contact_fem
                                " coordinates, each lower below its upper."));
         refinement_boxes.push_back(refinement_box);
       }
+    const std::string manifolds_key = "Geometry/Manifolds";
+    manifolds = parse_boundary_manifolds<dim>(prm.get("Manifolds"), manifolds_key);
+    AssertThrow(manifolds.empty() || type == "mesh file",
+                ExcMessage(manifolds_key + ": only for Type = mesh file (the built-in "
+                           "geometries attach their own manifolds)."));
     prm.enter_subsection("Hertz cylinder");
     hertz.radius                = prm.get_double("Radius");
     hertz.plate_half_width      = prm.get_double("Plate half width");
@@ -182,11 +211,91 @@ namespace contact_fem
         in.seekg(0, std::ios::end);
         AssertThrow(in.tellg() > 0,
                     ExcMessage("Geometry/Mesh file: '" + mesh_file + "' is empty."));
+        read_mesh_file();
       }
     else
       AssertThrow(dim == 2,
                   ExcMessage("Geometry/Type: the built-in geometry '" + type +
                              "' exists in 2D only so far; use a mesh file in 3D."));
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::read_mesh_file()
+  {
+    // Every check runs here, before any work and under --validate.
+    const std::string key    = "Geometry/Manifolds";
+    auto              coarse = std::make_shared<Triangulation<dim>>();
+    read_gmsh(mesh_file, *coarse);
+    check_unmerged_vertices(*coarse, mesh_file);
+    check_boundary_manifolds(manifolds, *coarse, key);
+    // Random vertex moves would invalidate the transfinite chart of the
+    // coarse cells (as for the Hertz disc): a distorted mesh keeps straight
+    // interior lines.
+    set_manifold_ids(manifolds, distortion == 0., *coarse);
+    check_refinement_on_manifolds(manifolds, distortion == 0., *coarse, key);
+    std::vector<types::boundary_id> with_manifold;
+    for (const auto &m : manifolds)
+      with_manifold.push_back(m.boundary_id);
+    polygonal_boundaries = find_polygonal_boundaries(*coarse, with_manifold);
+    coarse_mesh          = coarse;
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::create_from_mesh_file(parallel::distributed::Triangulation<dim> &tria) const
+  {
+    AssertThrow(coarse_mesh, ExcMessage("Scene: parse_parameters() reads the mesh file, "
+                                        "create_mesh() uses it once."));
+    tria.copy_triangulation(*coarse_mesh);
+    coarse_mesh.reset();
+    attach_manifolds(manifolds, distortion == 0., tria);
+  }
+
+  template <int dim>
+  std::string
+  Scene<dim>::chord_warning() const
+  {
+    if (polygonal_boundaries.empty())
+      return "";
+    const bool         one = polygonal_boundaries.size() == 1;
+    std::ostringstream ids, details, fitted;
+    ids << (one ? "boundary " : "boundaries ");
+    details << std::setprecision(2);
+    fitted << std::setprecision(8);
+    for (unsigned int i = 0; i < polygonal_boundaries.size(); ++i)
+      {
+        const auto &b = polygonal_boundaries[i];
+        ids << (i == 0 ? "" : i + 1 == polygonal_boundaries.size() ? " and " : ", ")
+            << static_cast<unsigned int>(b.id)
+            << (b.id == 0 ? " (the faces without a physical tag)" : "");
+        details << (i == 0 ? "" : "; ")
+                << (one ? "its faces turn by " :
+                          "boundary " + std::to_string(b.id) + ": faces turning by ")
+                << b.min_angle * 180. / numbers::PI << " to "
+                << b.max_angle * 180. / numbers::PI << " degrees at " << b.n_kinks << " of "
+                << b.n_joints << (dim == 2 ? " vertices" : " edges");
+        if (b.fits_sphere)
+          {
+            fitted << (fitted.tellp() > 0 ? "; " : "") << static_cast<unsigned int>(b.id)
+                   << (dim == 2 ? ": circle " : ": sphere ");
+            for (unsigned int d = 0; d < dim; ++d)
+              fitted << (std::abs(b.centre[d]) < 1e-12 * b.radius ? 0. : b.centre[d]) << ", ";
+            fitted << b.radius;
+          }
+      }
+    const std::string example =
+      fitted.tellp() > 0 ? "'" + fitted.str() + "' (fitted to the vertices)" :
+                           (dim == 2 ? "'id: circle cx, cy, R'" : "'id: sphere cx, cy, cz, R'");
+    return ids.str() + " of the mesh file " +
+           (one ? "looks like a polygon standing for a curve (" :
+                  "look like polygons standing for curves (") +
+           details.str() + ") but " +
+           (one ? "has" : "have") + " no manifold: refinement keeps the chords of the coarse "
+           "mesh (new vertices on the straight edges, a kink and a pressure spike at every "
+           "original vertex). Attach the true " + (one ? "surface" : "surfaces") +
+           " with Geometry/Manifolds, e.g. " +
+           example + ".";
   }
 
   namespace
@@ -220,26 +329,6 @@ namespace contact_fem
       result.create_triangulation(vertices, cells, SubCellData());
     }
 
-    /// Reads a Gmsh file into @p coarse; throws naming the file on failure.
-    template <int dim>
-    void
-    read_gmsh(const std::string &file, Triangulation<dim> &coarse)
-    {
-      GridIn<dim> grid_in;
-      grid_in.attach_triangulation(coarse);
-      std::ifstream in(file);
-      try
-        {
-          grid_in.read_msh(in);
-        }
-      catch (const std::exception &e)
-        {
-          AssertThrow(false,
-                      ExcMessage("Geometry/Mesh file: cannot read '" + file +
-                                 "' as a Gmsh mesh: " + e.what()));
-        }
-    }
-
     bool
     close(const double a, const double b, const double scale)
     {
@@ -254,10 +343,7 @@ namespace contact_fem
     Triangulation<2> coarse;
 
     if (type == "mesh file")
-      {
-        read_gmsh(mesh_file, coarse);
-        tria.copy_triangulation(coarse);
-      }
+      create_from_mesh_file(tria);
     else if (type == "hertz cylinder")
       {
         const double R = hertz.radius, t = hertz.plate_thickness;
@@ -410,9 +496,7 @@ namespace contact_fem
   void
   Scene<3>::create_mesh(parallel::distributed::Triangulation<3> &tria) const
   {
-    Triangulation<3> coarse;
-    read_gmsh(mesh_file, coarse);
-    tria.copy_triangulation(coarse);
+    create_from_mesh_file(tria);
     if (global_refinements > 0)
       tria.refine_global(global_refinements);
     refine_boxes(tria);
@@ -485,26 +569,8 @@ namespace contact_fem
     // all positive.
     unsigned int bad_cells = 0;
     for (const auto &cell : tria.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const double h = cell->diameter();
-          if (dim == 2)
-            {
-              static const unsigned int next[4] = {1, 3, 0, 2}, prev[4] = {2, 0, 3, 1};
-              for (unsigned int v = 0; v < 4; ++v)
-                {
-                  const Tensor<1, dim> a = cell->vertex(next[v]) - cell->vertex(v);
-                  const Tensor<1, dim> b = cell->vertex(prev[v]) - cell->vertex(v);
-                  if (a[0] * b[1] - a[1] * b[0] <= 1e-12 * h * h)
-                    {
-                      ++bad_cells;
-                      break;
-                    }
-                }
-            }
-          else if (cell->measure() <= 1e-12 * std::pow(h, dim))
-            ++bad_cells;
-        }
+      if (cell->is_locally_owned() && is_inverted<dim>(cell))
+        ++bad_cells;
     bad_cells = Utilities::MPI::sum(bad_cells, tria.get_communicator());
     AssertThrow(bad_cells == 0,
                 ExcMessage("Geometry: the mesh has " + std::to_string(bad_cells) +

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <string>
 
@@ -20,8 +21,14 @@ main(int argc, char **argv)
     }
   const std::string prm       = argv[1];
   const std::string directory = prm.substr(0, prm.find_last_of('/'));
-  // Options for the run may follow a "# args:" line in the .prm file.
-  std::string command = std::string(CONTACT_FEM_EXECUTABLE) + " '" + prm +
+  // Options for the run may follow a "# args:" line in the .prm file
+  // (e.g. --validate, to check that it catches the error too).
+  std::string   options;
+  std::ifstream in(prm);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("# args:", 0) == 0)
+      options += " " + line.substr(7);
+  std::string command = std::string(CONTACT_FEM_EXECUTABLE) + options + " '" + prm +
                         "' --output-directory results 2>&1";
   FILE *pipe = popen(command.c_str(), "r");
   if (!pipe)

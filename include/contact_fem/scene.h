@@ -6,6 +6,10 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/distributed/tria.h>
 
+#include <contact_fem/boundary_manifolds.h>
+#include <contact_fem/mesh_file.h>
+
+#include <memory>
 #include <set>
 #include <string>
 
@@ -40,7 +44,12 @@ namespace contact_fem
    * numbers of cells (non-matching interface). Other faces have id 0.
    *
    * "mesh file": a Gmsh .msh file; bodies and surfaces carry the physical
-   * tags of the file as material and boundary ids.
+   * tags of the file as material and boundary ids. The file is read and
+   * checked in parse_parameters() (so --validate checks it too): ASCII,
+   * complete, quadrilaterals (hexahedra), no body cut by unmerged nodes,
+   * and the surfaces of Geometry/Manifolds on their circles (spheres,
+   * cylinders). Boundaries that look like polygons of a curve but have no
+   * manifold are remembered for chord_warning().
    *
    * Implemented in source/scene.cc.
    */
@@ -54,9 +63,16 @@ namespace contact_fem
     void
     parse_parameters(ParameterHandler &prm, const std::string &prm_directory);
 
-    /// Creates the mesh (with global refinements) and attaches the manifolds.
+    /// Creates the mesh (with global refinements) and attaches the manifolds;
+    /// once per parse_parameters() for a mesh file.
     void
     create_mesh(parallel::distributed::Triangulation<dim> &tria) const;
+
+    /// For a run that refines the mesh: a warning naming the boundaries of
+    /// the mesh file that look curved but have no manifold (refinement
+    /// keeps their chords), with the parameter that fixes it; empty if none.
+    std::string
+    chord_warning() const;
 
     /// Checks that the mesh has these material and boundary ids and no
     /// inverted or degenerate cells; throws with the parameter name otherwise.
@@ -69,7 +85,7 @@ namespace contact_fem
     bool
     has_curved_boundary() const
     {
-      return type == "hertz cylinder";
+      return type == "hertz cylinder" || !manifolds.empty();
     }
 
     std::string  type;
@@ -89,6 +105,25 @@ namespace contact_fem
     /// Refines the boxes of refinement_boxes; throws if a box holds no cell.
     void
     refine_boxes(parallel::distributed::Triangulation<dim> &tria) const;
+
+  private:
+    /// Reads and checks the mesh file into coarse_mesh.
+    void
+    read_mesh_file();
+    /// The mesh file's coarse mesh with its manifolds, into @p tria.
+    void
+    create_from_mesh_file(parallel::distributed::Triangulation<dim> &tria) const;
+
+  public:
+    /// Geometry/Manifolds: the surfaces of boundary ids of a mesh file.
+    std::vector<BoundaryManifold<dim>> manifolds;
+    /// The coarse mesh of a mesh file, read and checked by
+    /// parse_parameters(), with the manifold ids set; released by
+    /// create_mesh() once copied (a large mesh need not be held twice).
+    mutable std::shared_ptr<Triangulation<dim>> coarse_mesh;
+    /// Boundaries of the mesh file that look like polygons of a curve and
+    /// have no manifold.
+    std::vector<PolygonalBoundary<dim>> polygonal_boundaries;
 
     struct Hertz
     {

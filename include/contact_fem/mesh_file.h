@@ -1,0 +1,96 @@
+// Gmsh mesh files: reading with messages that name the file and what is
+// wrong, and checks of the coarse mesh that deal.II's reader does not make.
+#ifndef contact_fem_mesh_file_h
+#define contact_fem_mesh_file_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/types.h>
+#include <deal.II/grid/tria.h>
+
+#include <string>
+#include <vector>
+
+namespace contact_fem
+{
+  using namespace dealii;
+
+  /**
+   * Reads the Gmsh file @p file into @p coarse after a scan of its text:
+   * ASCII (MSH 1, 2.x, 4.x), complete (every section closed, the announced
+   * numbers of nodes and elements present), first-order quadrilaterals
+   * (dim = 2) or hexahedra (dim = 3) as cells, and in 2D nodes in one plane
+   * z = const. Each finding throws with a message naming the file (and the
+   * line) and the fix; deal.II's reader would report a binary file as "The
+   * string <\x01", a 3D mesh as an unknown element type, and accept
+   * triangles only to crash later in p4est.
+   *
+   * Implemented in source/mesh_file.cc.
+   */
+  template <int dim>
+  void
+  read_gmsh(const std::string &file, Triangulation<dim> &coarse);
+
+  /**
+   * Throws if a body (material id) of @p coarse is cut by an internal
+   * crack: two of its boundary faces lie on top of each other (coincident
+   * vertices that the cells on either side do not share) and at least one
+   * of them has no boundary id (0: untagged in the mesh file). Such a body
+   * deforms as if cut, without any message (a Gmsh mesh of several surfaces
+   * without Coherence). Coincident vertices of different bodies are how
+   * contact pairs are meshed, and tagged coincident faces of one body are
+   * taken to be a deliberate internal surface: both pass. O(n log n): an
+   * R-tree of the boundary vertices.
+   */
+  template <int dim>
+  void
+  check_unmerged_vertices(const Triangulation<dim> &coarse, const std::string &file);
+
+  /// A boundary id whose faces look like a polygonal approximation of a
+  /// curved surface (see find_polygonal_boundaries()).
+  template <int dim>
+  struct PolygonalBoundary
+  {
+    types::boundary_id id = 0;
+    unsigned int       n_kinks  = 0; ///< joints turning by a small nonzero angle
+    unsigned int       n_joints = 0; ///< joints of two faces of this id
+    double             min_angle = 0., max_angle = 0.; ///< of the kinks, radians
+    /// Whether the vertices fit one circle (sphere), with these:
+    bool       fits_sphere = false;
+    Point<dim> centre;
+    double     radius = 0.;
+  };
+
+  /**
+   * The boundary ids of @p coarse (except @p skip) along which neighbouring
+   * faces of the same id turn by a small nonzero angle (0.006 to 30
+   * degrees) at more than half of their joints, and at least at three: a
+   * polygon standing for a curve. Flat boundaries (no turn) and true
+   * corners (large turns) do not count. Each comes with the circle (2D) or
+   * sphere (3D) fitted to its vertices, if they lie on one.
+   */
+  template <int dim>
+  std::vector<PolygonalBoundary<dim>>
+  find_polygonal_boundaries(const Triangulation<dim>            &coarse,
+                            const std::vector<types::boundary_id> &skip);
+
+  /**
+   * Least-squares circle (sphere) through @p points (the algebraic fit:
+   * |x|^2 = 2 c.x + k, exact for points on a sphere). Returns false if the
+   * points do not determine one (fewer than dim + 1, or collinear);
+   * @p max_deviation is the largest | |x - c| - r |.
+   */
+  template <int dim>
+  bool
+  fit_sphere(const std::vector<Point<dim>> &points,
+             Point<dim>                    &centre,
+             double                        &radius,
+             double                        &max_deviation);
+
+  /// Whether @p cell is inverted or degenerate: a non-positive Jacobian at a
+  /// corner (2D), a non-positive measure (3D), relative to its size.
+  template <int dim>
+  bool
+  is_inverted(const typename Triangulation<dim>::cell_iterator &cell);
+} // namespace contact_fem
+
+#endif
