@@ -96,6 +96,7 @@ namespace contact_fem
     ContactFormulation<dim>::declare_parameters(prm);
     NewtonParameters::declare_parameters(prm);
     RefinementParameters::declare_parameters(prm);
+    StressRecoverySettings::declare_parameters(prm);
     AnalyticalSolution::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
   }
@@ -160,6 +161,7 @@ namespace contact_fem
       contact = std::move(formulation);
     newton_parameters.parse_parameters(prm);
     refinement.parse_parameters(prm);
+    spr_settings.parse_parameters(prm);
     analytical.parse_parameters(prm, prm_directory);
     output.parse_parameters(prm, dim);
 

@@ -55,18 +55,6 @@ namespace contact_fem
                       "Cells at this refinement level are not refined further.");
     prm.declare_entry("Maximum cells", "1000000", Patterns::Integer(1),
                       "No refinement once the mesh has this many cells.");
-    prm.declare_entry("SPR normal penalty", "1e4", Patterns::Double(0.),
-                      "Weight of the normal-traction condition at a contact "
-                      "node against the change of its SPR-fitted value: the "
-                      "recovered normal traction moves penalty / (1 + penalty) "
-                      "of the way to the contact pressure.");
-    prm.declare_entry("SPR tangential penalty", "1e4", Patterns::Double(0.),
-                      "Weight of the tangential-traction condition, on the "
-                      "same scale (tangential relative to the node's normal, "
-                      "moved penalty / (2 + penalty) of the way; frictionless "
-                      "contact forces act "
-                      "along the deformed normal, so on the reference "
-                      "configuration this traction is small but not zero).");
     prm.declare_entry("Compare with plain SPR", "false", Patterns::Bool(),
                       "When the SPR-contact estimate is computed (every "
                       "estimator but 'spr'), also compute plain SPR on the "
@@ -90,8 +78,6 @@ namespace contact_fem
     contact_layers     = prm.get_integer("Contact layers");
     max_level          = prm.get_integer("Maximum level");
     max_cells          = prm.get_integer("Maximum cells");
-    penalty_normal     = prm.get_double("SPR normal penalty");
-    penalty_tangential = prm.get_double("SPR tangential penalty");
     compare_plain_spr  = prm.get_bool("Compare with plain SPR");
     prm.leave_subsection();
     AssertThrow(refine_fraction + coarsen_fraction <= 1.,
@@ -207,8 +193,8 @@ namespace contact_fem
     indicators.reinit(triangulation.n_active_cells());
     typename StressRecovery<dim>::Settings settings;
     settings.contact_terms      = type != "spr";
-    settings.penalty_normal     = refinement.penalty_normal;
-    settings.penalty_tangential = refinement.penalty_tangential;
+    settings.penalty_normal     = spr_settings.penalty_normal;
+    settings.penalty_tangential = spr_settings.penalty_tangential;
 
     // The contact tractions of the active slave nodes, imposed as the
     // N_j-weighted mean over the node's slave faces (which is what a dual

@@ -46,6 +46,34 @@
 
 namespace contact_fem
 {
+  void
+  StressRecoverySettings::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Refinement");
+    prm.declare_entry("SPR normal penalty", "1e4", Patterns::Double(0.),
+                      "Weight of the normal-traction condition at a contact "
+                      "node against the change of its SPR-fitted value: the "
+                      "recovered normal traction moves penalty / (1 + penalty) "
+                      "of the way to the contact pressure.");
+    prm.declare_entry("SPR tangential penalty", "1e4", Patterns::Double(0.),
+                      "Weight of the tangential-traction condition, on the "
+                      "same scale (tangential relative to the node's normal, "
+                      "moved penalty / (2 + penalty) of the way; frictionless "
+                      "contact forces act "
+                      "along the deformed normal, so on the reference "
+                      "configuration this traction is small but not zero).");
+    prm.leave_subsection();
+  }
+
+  void
+  StressRecoverySettings::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Refinement");
+    penalty_normal     = prm.get_double("SPR normal penalty");
+    penalty_tangential = prm.get_double("SPR tangential penalty");
+    prm.leave_subsection();
+  }
+
   namespace
   {
     /// A patch fit is accepted with the full degree p only if the smallest

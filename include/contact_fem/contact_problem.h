@@ -23,6 +23,7 @@
 #include <contact_fem/parameters.h>
 #include <contact_fem/refinement.h>
 #include <contact_fem/scene.h>
+#include <contact_fem/stress_recovery.h>
 #include <contact_fem/volumetric_projection.h>
 
 #include <fstream>
@@ -266,6 +267,7 @@ namespace contact_fem
     AnalyticalSolution analytical;
     OutputParameters     output;
     RefinementParameters refinement;
+    StressRecoverySettings spr_settings; ///< the contact-traction penalties of SPR
     unsigned int       degree;
 
     parallel::distributed::Triangulation<dim> triangulation;

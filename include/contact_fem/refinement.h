@@ -20,8 +20,6 @@ namespace contact_fem
     unsigned int contact_layers   = 2; ///< cell layers refined below a contact face
     unsigned int max_level        = 20;
     unsigned int max_cells        = 1000000;
-    double       penalty_normal     = 1e4;
-    double       penalty_tangential = 1e4;
     /// Also compute plain SPR on the same solution (studies of what the
     /// contact terms change); its time is left out of the cycle's wall time.
     bool compare_plain_spr = false;

@@ -5,6 +5,7 @@
 #ifndef contact_fem_stress_recovery_h
 #define contact_fem_stress_recovery_h
 
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
@@ -105,23 +106,33 @@ namespace contact_fem
    *   take their values from the hanging-node constraints.
    * - eta_K^2 = int_K (sigma* - sigma_h) : C^{-1} : (sigma* - sigma_h).
    */
+  /// How StressRecovery imposes the contact tractions; its keys live in the
+  /// subsection "Refinement".
+  struct StressRecoverySettings
+  {
+    /// false: plain SPR, the contact nodes only report their recovered
+    /// stress.
+    bool contact_terms = true;
+    /// Weight of (n.sigma*.n + p)^2 against the squared change of the
+    /// node's fitted value: the normal traction moves alpha / (1 + alpha)
+    /// of the way to the condition.
+    double penalty_normal = 1e4;
+    /// Weight of |(I - n n) sigma* n|^2 (frictionless: zero shear traction)
+    /// on the same scale; the shear moves alpha / (2 + alpha) of the way.
+    double penalty_tangential = 1e4;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    /// Reads the penalties (contact_terms is the caller's choice).
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
   template <int dim>
   class StressRecovery
   {
   public:
-    struct Settings
-    {
-      /// false: plain SPR, the contact nodes only report their recovered
-      /// stress.
-      bool contact_terms = true;
-      /// Weight of (n.sigma*.n + p)^2 against the squared change of the
-      /// node's fitted value: the normal traction moves alpha / (1 + alpha)
-      /// of the way to the condition.
-      double penalty_normal = 1e4;
-      /// Weight of |(I - n n) sigma* n|^2 (frictionless: zero shear traction)
-      /// on the same scale; the shear moves alpha / (2 + alpha) of the way.
-      double penalty_tangential = 1e4;
-    };
+    using Settings = StressRecoverySettings;
 
     struct Result
     {
