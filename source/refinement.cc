@@ -6,6 +6,7 @@
 
 #include <contact_fem/contact_problem.h>
 #include <contact_fem/format.h>
+#include <contact_fem/marking.h>
 #include <contact_fem/mortar.h>
 #include <contact_fem/refinement.h>
 #include <contact_fem/stress_recovery.h>
@@ -266,65 +267,6 @@ namespace contact_fem
   }
 
   template <int dim>
-  void
-  ContactProblem<dim>::extend_refinement_below_contact_faces()
-  {
-    std::set<types::boundary_id> contact_ids;
-    for (const auto &pair : contact_parameters.pairs)
-      contact_ids.insert({pair.slave, pair.master});
-    if (contact_ids.empty())
-      return;
-
-    // The front: the cells flagged in the last layer. Each process pulls
-    // the flags of its cells from the front cells next to them, ghosts
-    // included, so the result does not depend on the partition.
-    std::vector<bool> in_front(triangulation.n_active_cells(), false);
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->refine_flag_set())
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary() && contact_ids.count(cell->face(f)->boundary_id()))
-            in_front[cell->active_cell_index()] = true;
-
-    using CellIterator = typename Triangulation<dim>::active_cell_iterator;
-    for (unsigned int layer = 1; layer < refinement.contact_layers; ++layer)
-      {
-        GridTools::exchange_cell_data_to_ghosts<unsigned char, Triangulation<dim>>(
-          triangulation,
-          [&](const CellIterator &cell) -> std_cxx17::optional<unsigned char> {
-            return static_cast<unsigned char>(in_front[cell->active_cell_index()]);
-          },
-          [&](const CellIterator &cell, const unsigned char &value) {
-            in_front[cell->active_cell_index()] = value != 0;
-          });
-        // A cell joins if a front cell of its level or finer shares a face.
-        const auto in_front_cell = [&](const CellIterator &neighbor) {
-          return neighbor->is_active() && in_front[neighbor->active_cell_index()];
-        };
-        std::vector<bool> next(in_front.size(), false);
-        for (const auto &cell : triangulation.active_cell_iterators())
-          if (cell->is_locally_owned() && !cell->refine_flag_set())
-            for (const auto f : cell->face_indices())
-              {
-                if (cell->at_boundary(f))
-                  continue;
-                const auto neighbor = cell->neighbor(f);
-                bool       joins    = false;
-                if (!neighbor->has_children())
-                  joins = neighbor->level() == cell->level() && in_front_cell(neighbor);
-                else
-                  for (unsigned int sf = 0; sf < cell->face(f)->n_children(); ++sf)
-                    joins = joins || in_front_cell(cell->neighbor_child_on_subface(f, sf));
-                if (joins)
-                  next[cell->active_cell_index()] = true;
-              }
-        for (const auto &cell : triangulation.active_cell_iterators())
-          if (next[cell->active_cell_index()])
-            cell->set_refine_flag();
-        in_front = std::move(next);
-      }
-  }
-
-  template <int dim>
   bool
   ContactProblem<dim>::refine_mesh()
   {
@@ -345,32 +287,14 @@ namespace contact_fem
               << std::endl;
         return false;
       }
-    if (refinement.estimator == "global")
-      {
-        for (const auto &cell : triangulation.active_cell_iterators())
-          if (cell->is_locally_owned())
-            cell->set_refine_flag();
-      }
-    else if (refinement.strategy == "fixed fraction")
-      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_fraction(
-        triangulation, indicators, refinement.refine_fraction, refinement.coarsen_fraction);
-    else if (refinement.strategy == "fixed number")
-      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
-        triangulation, indicators, refinement.refine_fraction, refinement.coarsen_fraction);
-    else
-      {
-        float local_max = 0.;
-        for (const auto &cell : triangulation.active_cell_iterators())
-          if (cell->is_locally_owned())
-            local_max = std::max(local_max, indicators(cell->active_cell_index()));
-        const double threshold =
-          refinement.refine_fraction * Utilities::MPI::max(double(local_max), comm);
-        for (const auto &cell : triangulation.active_cell_iterators())
-          if (cell->is_locally_owned() && indicators(cell->active_cell_index()) > threshold)
-            cell->set_refine_flag();
-      }
+    Marking::flag_cells(triangulation, indicators, refinement);
     if (refinement.estimator != "global")
-      extend_refinement_below_contact_faces();
+      {
+        std::set<types::boundary_id> contact_ids;
+        for (const auto &pair : contact_parameters.pairs)
+          contact_ids.insert({pair.slave, pair.master});
+        Marking::flag_layers_behind_faces(triangulation, contact_ids, refinement.contact_layers);
+      }
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned() && cell->level() >= int(refinement.max_level))
         cell->clear_refine_flag();
@@ -391,8 +315,7 @@ namespace contact_fem
 
 #define INSTANTIATE(dim)                                           \
   template void ContactProblem<dim>::estimate_error(Json &);       \
-  template bool ContactProblem<dim>::refine_mesh();              \
-  template void ContactProblem<dim>::extend_refinement_below_contact_faces();
+  template bool ContactProblem<dim>::refine_mesh();
   INSTANTIATE(2)
   INSTANTIATE(3)
 #undef INSTANTIATE

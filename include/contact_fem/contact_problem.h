@@ -210,10 +210,6 @@ namespace contact_fem
     /// Marks and refines; false if the mesh is kept (nothing to refine).
     bool
     refine_mesh();
-    /// Refinement/Contact layers: flags the cells behind flagged contact-
-    /// surface cells, layer by layer.
-    void
-    extend_refinement_below_contact_faces();
     /// Solves one cycle on the current mesh; returns false if Newton failed.
     bool
     run_cycle(const unsigned int cycle, Json &cycle_record);
