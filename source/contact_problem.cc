@@ -51,20 +51,21 @@ namespace contact_fem
 
   namespace
   {
-    std::string
-    scientific(const double x, const unsigned int digits = 3)
-    {
-      std::ostringstream s;
-      s << std::scientific << std::setprecision(digits) << x;
-      return s.str();
-    }
+    /// Residuals below this fraction of their first value in a load step
+    /// are round-off: their digits differ between machines and partitions
+    /// (at ~1e-14 of it), so they are not printed as numbers.
+    constexpr double round_off_ratio = 1e-10;
 
-    /// "= value", or "< tolerance" for a residual at round-off level (which
-    /// differs between runs and must not reach compared output).
+    /// "= value", or "< tolerance" for a residual below its tolerance, or
+    /// "at round-off" for one below round_off_ratio of its first value
+    /// @p reference (which differ between runs and must not reach compared
+    /// output).
     std::string
-    residual_text(const double value, const double tolerance)
+    residual_text(const double value, const double tolerance, const double reference)
     {
-      return value <= tolerance ? "< " + scientific(tolerance, 0) : "= " + scientific(value);
+      return value <= tolerance                  ? "< " + scientific(tolerance, 0) :
+             value < round_off_ratio * reference ? std::string("at round-off") :
+                                                   "= " + scientific(value);
     }
   } // namespace
 
@@ -745,6 +746,9 @@ namespace contact_fem
           if (value <= tolerance)
             s << std::setw(11) << "-" << " | " << std::setw(9)
               << ("< " + scientific(tolerance, 0));
+          else if (ratio < round_off_ratio)
+            s << std::setw(11) << ("< " + scientific(round_off_ratio, 0)) << " | "
+              << std::setw(9) << "round-off";
           else
             s << std::setw(11) << scientific(ratio) << " | " << std::setw(9)
               << scientific(value, 2);
@@ -777,9 +781,12 @@ namespace contact_fem
                           std::to_string(time) + ") did not converge in " +
                           std::to_string(newton_parameters.max_iterations) +
                           " iterations (last: |r_u| " +
-                          residual_text(last_u, newton_parameters.displacement_absolute_tolerance) +
+                          residual_text(last_u, newton_parameters.displacement_absolute_tolerance,
+                                        reference_u) +
                           ", |r_lambda| " +
-                          residual_text(last_lambda, newton_parameters.multiplier_absolute_tolerance) +
+                          residual_text(last_lambda,
+                                        newton_parameters.multiplier_absolute_tolerance,
+                                        reference_lambda) +
                           ", " +
                           std::to_string(last_changes) +
                           " active-set changes). Hint: more load steps, more "
