@@ -12,7 +12,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <iomanip>
 #include <limits>
 #include <set>
@@ -33,20 +32,39 @@ namespace contact_fem
     buffer.second = file.rdbuf();
   }
 
+  bool
+  TeeStream::file_failed() const
+  {
+    return buffer.file_failed;
+  }
+
+  // Only the console decides the state of the stream: a log file that
+  // fails (a full disk, ...) used to put the whole stream into a failed
+  // state, after which nothing more reached the console either. The file is
+  // dropped instead and the run says so at its end.
   int
   TeeStream::Buffer::overflow(int c)
   {
     if (c == EOF)
       return !EOF;
-    const int a = first->sputc(c), b = second ? second->sputc(c) : c;
-    return (a == EOF || b == EOF) ? EOF : c;
+    if (second && second->sputc(c) == EOF)
+      drop_file();
+    return first->sputc(c);
   }
 
   int
   TeeStream::Buffer::sync()
   {
-    const int a = first->pubsync(), b = second ? second->pubsync() : 0;
-    return (a == 0 && b == 0) ? 0 : -1;
+    if (second && second->pubsync() != 0)
+      drop_file();
+    return first->pubsync();
+  }
+
+  void
+  TeeStream::Buffer::drop_file()
+  {
+    second      = nullptr;
+    file_failed = true;
   }
 
   namespace
@@ -806,22 +824,15 @@ namespace contact_fem
   ContactProblem<dim>::run()
   {
     Timer total_timer;
-    // The output directory is made only now, after all input was checked.
+    // The output directory is prepared only now, after all input was
+    // checked: an earlier run's files go (they would pass for this run's),
+    // and a directory that cannot take the new ones stops the run before
+    // any work.
     const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
-    if (root)
-      {
-        std::error_code error;
-        std::filesystem::create_directories(output.directory, error);
-        AssertThrow(!error && std::filesystem::is_directory(output.directory),
-                    ExcMessage("Output directory: cannot create '" + output.directory +
-                               "': " + error.message()));
-        // A summary of an earlier run must not pass for this one's.
-        std::filesystem::remove(output.directory + "/summary.json", error);
-        log_file.open(output.directory + "/log.txt");
-        console.attach(log_file);
-      }
+    const OutputDirectoryReport earlier_outputs = open_output_directory();
     pcout << "contact_fem: scene '" << scene_name << "', " << dim << "D, "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI process(es)" << std::endl;
+    report_earlier_outputs(earlier_outputs);
 
     {
       TimerOutput::Scope t(*timer, "Setup: mesh");
@@ -850,6 +861,7 @@ namespace contact_fem
                            "a_error,pressure_l2_relative_error,energy_error,"
                            "newton_iterations,wall_time,cumulative_wall_time\n";
       }
+    check_written(output.directory + "/convergence.csv", !root || convergence_csv.good());
     Json   cycles     = Json::array();
     double cumulative = 0.;
     int    exit_code  = 0;
@@ -898,6 +910,11 @@ namespace contact_fem
             break;
           }
       }
+    if (console.file_failed())
+      pcout << "Warning: writing '" << output.directory
+            << "/log.txt' failed during the run: the log is incomplete (the console has "
+               "everything)."
+            << std::endl;
     return exit_code;
   }
 

@@ -698,7 +698,12 @@ namespace contact_fem
                       Patterns::Anything(),
                       "Directory of every output file of the run (created if "
                       "needed): summary.json, log.txt, pressure profiles, VTU. "
-                      "Must not be named 'output' in tests.");
+                      "Before any work the run removes the files of an earlier "
+                      "run from it (only the names contact_fem writes: "
+                      "summary.json, log.txt, convergence.csv, "
+                      "pressure_profile.csv, solution.pvd, solution_*.pvtu/vtu, "
+                      "error_indicators_*.pvtu/vtu) and checks that it can write "
+                      "there. Must not be named 'output' in tests.");
     prm.enter_subsection("Output");
     prm.declare_entry("Write VTU", "true", Patterns::Bool(),
                       "Write the fields of every load step as VTU/PVTU.");

@@ -20,6 +20,7 @@
 #include <contact_fem/contact_interface.h>
 #include <contact_fem/json.h>
 #include <contact_fem/material.h>
+#include <contact_fem/output_files.h>
 #include <contact_fem/parameters.h>
 #include <contact_fem/refinement.h>
 #include <contact_fem/scene.h>
@@ -44,18 +45,27 @@ namespace contact_fem
     /// Also write to @p file from now on.
     void
     attach(std::ostream &file);
+    /// Whether writing to the file failed (it is then no longer written;
+    /// the console goes on).
+    bool
+    file_failed() const;
 
   private:
     class Buffer : public std::streambuf
     {
     public:
       std::streambuf *first = nullptr, *second = nullptr;
+      bool            file_failed = false;
 
     protected:
       int
       overflow(int c) override;
       int
       sync() override;
+
+    private:
+      void
+      drop_file();
     } buffer;
   };
 
@@ -201,6 +211,16 @@ namespace contact_fem
     print_results(const Json &contact_json, const Json &reaction, const Json &hertz) const;
     void
     write_summary(const Json &cycles, const double wall_time, const std::string &status) const;
+    /// Prepares the output directory (prepare_output_directory()) and opens
+    /// log.txt; throws naming the path if either fails. Collective.
+    OutputDirectoryReport
+    open_output_directory();
+    /// Says how many files of an earlier run the preparation removed.
+    void
+    report_earlier_outputs(const OutputDirectoryReport &report);
+    /// Throws naming @p path unless @p ok on every rank. Collective.
+    void
+    check_written(const std::string &path, const bool ok) const;
     Tensor<1, dim>
     applied_load(const double time) const;
 
