@@ -191,6 +191,7 @@ namespace contact_fem
     refinement.parse_parameters(prm);
     analytical.parse_parameters(prm, prm_directory);
     output.parse_parameters(prm, dim);
+    check_scene_before_meshing();
 
     timer = std::make_unique<TimerOutput>(comm, pcout, TimerOutput::never,
                                           TimerOutput::wall_times);
@@ -833,6 +834,7 @@ namespace contact_fem
     pcout << "contact_fem: scene '" << scene_name << "', " << dim << "D, "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI process(es)" << std::endl;
     report_earlier_outputs(earlier_outputs);
+    print_input_warnings();
 
     {
       TimerOutput::Scope t(*timer, "Setup: mesh");

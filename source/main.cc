@@ -239,7 +239,10 @@ namespace
     {
       contact_fem::ContactProblem<dim> problem(prm, name, directory);
       if (validate_only)
-        return 0;
+        {
+          problem.print_input_warnings();
+          return 0;
+        }
       try
         {
           code = problem.run();

@@ -27,6 +27,7 @@
 #include <contact_fem/volumetric_projection.h>
 
 #include <fstream>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -104,6 +105,11 @@ namespace contact_fem
     int
     run();
 
+    /// Prints the warnings the checks of the input found (e.g. a mesh that
+    /// takes more than half the available memory); run() prints them too.
+    void
+    print_input_warnings() const;
+
   private:
     // --- set-up (contact_problem.cc)
     void
@@ -179,6 +185,23 @@ namespace contact_fem
     /// Solves one cycle on the current mesh; returns false if Newton failed.
     bool
     run_cycle(const unsigned int cycle, Json &cycle_record);
+    // --- checks of the input on the scene's mesh (contact_setup_checks.cc)
+    /// Builds the scene without its global and box refinements, and checks
+    /// on that mesh the contact pairs and the memory the full mesh will
+    /// need: input errors found before any work.
+    void
+    check_scene_before_meshing();
+    /// Refuses a contact pair whose two surfaces belong to the same body.
+    void
+    check_contact_pairs(const Triangulation<dim> &tria) const;
+    /// The parameters that set the size of the mesh, for messages.
+    std::string
+    refinement_keys() const;
+    /// Refuses a mesh whose estimated memory exceeds what the machine has
+    /// available, and keeps a warning in memory_warning when it takes more
+    /// than half.
+    void
+    check_memory_estimate(const parallel::distributed::Triangulation<dim> &coarse);
     // --- results (contact_output.cc)
     Json
     contact_results() const;
@@ -297,6 +320,8 @@ namespace contact_fem
     std::vector<unsigned int> newton_iterations_of_cycle; ///< per load step
     double strain_energy = 0., external_work = 0.; ///< at the last residual
     std::ofstream                                  convergence_csv;
+    /// Set by check_memory_estimate(), printed by run().
+    std::string memory_warning;
   };
 } // namespace contact_fem
 
