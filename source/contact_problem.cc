@@ -621,15 +621,13 @@ namespace contact_fem
       }
     make_sparsity_pattern();
 
-    // Stiffness ratios beyond ~1e10 leave the direct solve with too few
-    // digits (measured: 1e12 fails with either body as the slave).
-    const auto [youngs_min, youngs_max] = materials.youngs_modulus_range();
-    const std::string contrast_hint =
-      youngs_max > 1e10 * youngs_min ?
-        " The stiffness ratio between the bodies, " + scientific(youngs_max / youngs_min, 1) +
-          ", is beyond what a direct solve in double precision resolves (about 1e10): "
-          "model the stiff body as rigid (fixed) instead." :
-        std::string();
+    // Stiffness ratios beyond ~1e10 (measured: 1e12 fails with either body
+    // as the slave) and nearly incompressible bodies leave the direct solve
+    // with too few digits: then that is the likely cause of any failure.
+    const auto precision_hint = [this]() {
+      const std::string cause = precision_limits();
+      return cause.empty() ? cause : " Likely cause: " + cause + ".";
+    };
 
     factorisation_current = false;
     pcout << "  Load step " << step + 1 << ", t = " << time << std::endl
@@ -645,19 +643,16 @@ namespace contact_fem
     double       last_u = 0., last_lambda = 0., previous_r_u = 0.;
     unsigned int previous_changes = 1;
     unsigned int last_changes = 0;
-    bool         converged = false;
+    bool         converged = false, stalled = false;
     unsigned int iteration = 0;
     for (; iteration <= newton_parameters.max_iterations; ++iteration)
       {
         if (iteration > 0 && contact && contact->n_active() == 0 &&
             !contact_parameters.allow_loss_of_contact)
-          throw NewtonFailure("load step " + std::to_string(step + 1) + " (t = " +
-                              std::to_string(time) + "), iteration " +
-                              std::to_string(iteration) +
-                              ": no contact. No slave node is active (every node is "
-                              "in tension or apart): the load separates the bodies. "
-                              "Set Contact/Allow loss of contact = true if the scene "
-                              "may lose contact.",
+          throw NewtonFailure(no_contact_message("load step " + std::to_string(step + 1) +
+                                                   " (t = " + std::to_string(time) +
+                                                   "), iteration " + std::to_string(iteration),
+                                                 true),
                               false);
         if (iteration > 0)
           {
@@ -681,7 +676,7 @@ namespace contact_fem
                                          std::string("the linear solver failed")) +
                                       ". Hint: is every body held by supports or by at "
                                       "least one active contact node?" +
-                                      contrast_hint,
+                                      precision_hint(),
                                     false);
               }
             // Both iterates satisfy the hanging-node and Dirichlet
@@ -748,10 +743,15 @@ namespace contact_fem
         // its trend.
         // (Damped iterations shrink the residual by a fixed factor: not
         // stagnation.)
-        const bool stagnating = newton_parameters.damping == 1. && iteration > 1 &&
-                                changes == 0 && previous_changes == 0 &&
-                                r_u > 0.5 * previous_r_u && ratio_u <= 1e-2 &&
+        // Flat: a settled active set, and the residual decreases by less
+        // than half what the (damped) update should remove.
+        const bool flat = iteration > 1 && changes == 0 && previous_changes == 0 &&
+                          r_u > (1. - 0.5 * newton_parameters.damping) * previous_r_u;
+        const bool stagnating = newton_parameters.damping == 1. && flat && ratio_u <= 1e-2 &&
                                 ratio_lambda <= newton_parameters.multiplier_relative_tolerance;
+        // Flat with both residuals eight orders below their start: round-off,
+        // which no tolerance below it can wait for.
+        stalled = flat && ratio_u <= 1e-8 && ratio_lambda <= 1e-8;
         converged = iteration > 0 &&
                     ((residuals_small && (changes == 0 || at_round_off)) || stagnating);
         previous_changes = iteration > 0 ? changes : 1;
@@ -789,11 +789,9 @@ namespace contact_fem
       }
     if (converged && contact && contact->n_active() == 0 &&
         !contact_parameters.allow_loss_of_contact)
-      throw NewtonFailure("load step " + std::to_string(step + 1) + " (t = " +
-                          std::to_string(time) +
-                          "): no contact. No slave node is active: the load "
-                          "separates the bodies. Set Contact/Allow loss of contact "
-                          "= true if the scene may lose contact.",
+      throw NewtonFailure(no_contact_message("load step " + std::to_string(step + 1) +
+                                               " (t = " + std::to_string(time) + ")",
+                                             false),
                           false);
     if (!converged)
       throw NewtonFailure("load step " + std::to_string(step + 1) + " (t = " +
@@ -807,10 +805,9 @@ namespace contact_fem
                                         newton_parameters.multiplier_absolute_tolerance,
                                         reference_lambda) +
                           ", " +
-                          std::to_string(last_changes) +
-                          " active-set changes). Hint: more load steps, more "
-                          "Newton iterations, or a different Contact/Penalty." +
-                          contrast_hint);
+                          std::to_string(last_changes) + " active-set changes)." +
+                          non_convergence_hint(stalled, last_u, last_lambda) + precision_hint(),
+                        !stalled);
 
     newton_iterations_of_cycle.push_back(iteration);
     record.set("time", time)
@@ -872,7 +869,7 @@ namespace contact_fem
         if (cycle > 0 && !refine_mesh())
           {
             // The last cycle's results are final: mark the run complete.
-            write_summary(cycles, total_timer.wall_time(), "converged");
+            write_summary(cycles, total_timer.wall_time(), converged_status());
             break;
           }
         timer->reset();
@@ -895,7 +892,8 @@ namespace contact_fem
         const bool last = !converged || cycle + 1 == refinement.n_cycles;
         write_summary(cycles, total_timer.wall_time(),
                       !converged ? "failed: results of the last converged load step" :
-                                   (last ? "converged" : "running"));
+                      !last      ? "running" :
+                                   converged_status());
         if (output.print_timing)
           {
             pcout << "  Wall time of cycle " << cycle << ": " << wall << " s (cumulative "
@@ -921,9 +919,19 @@ namespace contact_fem
   }
 
   template <int dim>
+  std::string
+  ContactProblem<dim>::converged_status() const
+  {
+    return balance_failed ? "converged, but the reactions do not balance the load "
+                            "(cycles[].balance_warning)" :
+                            "converged";
+  }
+
+  template <int dim>
   void
   ContactProblem<dim>::warn_about_modelling_choices() const
   {
+    warn_about_precision_limits();
     // Volumetric locking: measured on the Hertz scene, p_max is off by more
     // than 2 % beyond these Poisson's ratios without B-bar
     // (doc/stability.md).
@@ -1163,10 +1171,15 @@ namespace contact_fem
       return;
     std::ostringstream text;
     text << "the stiffness matrix was singular in " << singular_solves
-         << " Newton solve(s) of this cycle (up to " << most_null_pivots
-         << " zero pivot(s)): a rigid-body mode that neither the supports nor the "
-         << "active contact hold (see Boundary conditions/Fixed points). The solver "
-         << "held it at one DoF; results along that mode are not determined by the model";
+         << " Newton solve(s) of this cycle (up to " << most_null_pivots << " zero pivot(s))";
+    // Zero pivots also come from stiffness lost in round-off: then that is
+    // the cause, not a free rigid-body mode.
+    if (const std::string cause = precision_limits(); !cause.empty())
+      text << ": " << cause;
+    else
+      text << ": a rigid-body mode that neither the supports nor the "
+           << "active contact hold (see Boundary conditions/Fixed points). The solver "
+           << "held it at one DoF; results along that mode are not determined by the model";
     pcout << "  Warning: " << text.str() << "." << std::endl;
     cycle_record.set("singular_stiffness_warning", text.str());
   }
@@ -1318,6 +1331,8 @@ namespace contact_fem
     const Json contact_json  = contact_results();
     const Json reaction_json = reaction_results();
     cycle_record.set("contact", contact_json).set("reaction", reaction_json);
+    if (converged)
+      check_reaction_balance(reaction_json, cycle_record);
     Json hertz_json = Json::object();
     if (analytical.type != "none")
       {

@@ -133,6 +133,9 @@ namespace contact_fem
     /// side much stiffer than its master.
     void
     warn_about_modelling_choices() const;
+    /// The summary status of a run whose last cycle converged.
+    std::string
+    converged_status() const;
     /// Prints and records a warning when |u|_max exceeds half the model
     /// size.
     void
@@ -202,6 +205,52 @@ namespace contact_fem
     /// than half.
     void
     check_memory_estimate(const parallel::distributed::Triangulation<dim> &coarse);
+    // --- diagnoses (contact_diagnosis.cc)
+    /// The resultant of the applied pressures on each body. Collective.
+    std::map<types::material_id, Tensor<1, dim>>
+    body_loads(const double time) const;
+    /// The integral of the outward normal over boundary @p id. Collective.
+    Tensor<1, dim>
+    surface_normal(const types::boundary_id id) const;
+    /// The largest distance of a vertex from the origin. Collective.
+    double
+    model_size() const;
+    /// The displacement the load at @p time causes: applied force over the
+    /// smallest Young's modulus, or the largest prescribed displacement.
+    double
+    load_displacement_scale(const double time) const;
+    /// Why the load at @p time is at the round-off of the geometry, or "".
+    std::string
+    load_at_round_off(const double time) const;
+    /// Why double precision cannot resolve this model (stiffness ratio,
+    /// nearly incompressible body), or "".
+    std::string
+    precision_limits() const;
+    /// The stiffness ratio part of precision_limits().
+    std::string
+    stiffness_contrast_limit() const;
+    /// The nearly incompressible part of precision_limits().
+    std::string
+    incompressibility_limit() const;
+    /// The applied loads along the outward normals of the contact surfaces
+    /// of their bodies: > 0 pushes the bodies together. Collective.
+    double
+    load_toward_contact(const double time) const;
+    /// The diagnosis of a step without active slave nodes at @p where:
+    /// the separating load, or the real cause if the load does not
+    /// separate the bodies. Collective.
+    std::string
+    no_contact_message(const std::string &where, const bool in_iteration) const;
+    /// The hint of a Newton failure; @p stalled: the residuals stopped
+    /// decreasing without active-set changes.
+    std::string
+    non_convergence_hint(const bool stalled, const double r_u, const double r_lambda) const;
+    /// Warns and records when the reactions do not balance the load.
+    void
+    check_reaction_balance(const Json &reaction, Json &cycle_record);
+    /// Warns about Poisson's ratios and loads beyond double precision.
+    void
+    warn_about_precision_limits() const;
     // --- results (contact_output.cc)
     Json
     contact_results() const;
@@ -322,6 +371,8 @@ namespace contact_fem
     std::ofstream                                  convergence_csv;
     /// Set by check_memory_estimate(), printed by run().
     std::string memory_warning;
+    /// A cycle's reactions did not balance its load (check_reaction_balance()).
+    bool balance_failed = false;
   };
 } // namespace contact_fem
 
