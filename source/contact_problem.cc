@@ -520,6 +520,8 @@ namespace contact_fem
     // A direct solver: the stiffness contrast between bodies (up to 1e12)
     // defeats iterative solvers without a contact-aware preconditioner.
     const double linear_residual = direct_solver.solve(system_matrix, solution, system_rhs);
+    if (const std::string note = direct_solver.take_note(); !note.empty())
+      pcout << "    Note: " << note << "." << std::endl;
     if (direct_solver.n_null_pivots() > 0)
       {
         ++singular_solves;
@@ -663,6 +665,17 @@ namespace contact_fem
               {
                 solve_linear_system();
                 factorisation_current = true;
+              }
+            catch (const DirectSolverFailure &e)
+              {
+                throw NewtonFailure("load step " + std::to_string(step + 1) + " (t = " +
+                                      std::to_string(time) + "), iteration " +
+                                      std::to_string(iteration) + ": " + e.what() + "." +
+                                      (e.singular ? " Hint: is every body held by supports "
+                                                    "or by at least one active contact node?" :
+                                                    "") +
+                                      precision_hint(),
+                                    false);
               }
             catch (const std::exception &e)
               {
