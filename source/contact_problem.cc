@@ -12,7 +12,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <iomanip>
 #include <limits>
 #include <set>
@@ -33,30 +32,58 @@ namespace contact_fem
     buffer.second = file.rdbuf();
   }
 
+  bool
+  TeeStream::file_failed() const
+  {
+    return buffer.file_failed;
+  }
+
+  // Only the console decides the state of the stream: a log file that
+  // fails (a full disk, ...) used to put the whole stream into a failed
+  // state, after which nothing more reached the console either. The file is
+  // dropped instead and the run says so at its end.
   int
   TeeStream::Buffer::overflow(int c)
   {
     if (c == EOF)
       return !EOF;
-    const int a = first->sputc(c), b = second ? second->sputc(c) : c;
-    return (a == EOF || b == EOF) ? EOF : c;
+    if (second && second->sputc(c) == EOF)
+      drop_file();
+    return first->sputc(c);
   }
 
   int
   TeeStream::Buffer::sync()
   {
-    const int a = first->pubsync(), b = second ? second->pubsync() : 0;
-    return (a == 0 && b == 0) ? 0 : -1;
+    if (second && second->pubsync() != 0)
+      drop_file();
+    return first->pubsync();
+  }
+
+  void
+  TeeStream::Buffer::drop_file()
+  {
+    second      = nullptr;
+    file_failed = true;
   }
 
   namespace
   {
-    /// "= value", or "< tolerance" for a residual at round-off level (which
-    /// differs between runs and must not reach compared output).
+    /// Residuals below this fraction of their first value in a load step
+    /// are round-off: their digits differ between machines and partitions
+    /// (at ~1e-14 of it), so they are not printed as numbers.
+    constexpr double round_off_ratio = 1e-10;
+
+    /// "= value", or "< tolerance" for a residual below its tolerance, or
+    /// "at round-off" for one below round_off_ratio of its first value
+    /// @p reference (which differ between runs and must not reach compared
+    /// output).
     std::string
-    residual_text(const double value, const double tolerance)
+    residual_text(const double value, const double tolerance, const double reference)
     {
-      return value <= tolerance ? "< " + scientific(tolerance, 0) : "= " + scientific(value);
+      return value <= tolerance                  ? "< " + scientific(tolerance, 0) :
+             value < round_off_ratio * reference ? std::string("at round-off") :
+                                                   "= " + scientific(value);
     }
   } // namespace
 
@@ -164,6 +191,7 @@ namespace contact_fem
     spr_settings.parse_parameters(prm);
     analytical.parse_parameters(prm, prm_directory);
     output.parse_parameters(prm, dim);
+    check_scene_before_meshing();
 
     timer = std::make_unique<TimerOutput>(comm, pcout, TimerOutput::never,
                                           TimerOutput::wall_times);
@@ -491,6 +519,8 @@ namespace contact_fem
   {
     TimerOutput::Scope t(*timer, "Solve: linear");
     const double linear_residual = linear_solver->solve(system_matrix, solution, system_rhs);
+    if (const std::string note = linear_solver->take_note(); !note.empty())
+      pcout << "    Note: " << note << "." << std::endl;
     if (linear_solver->n_null_pivots() > 0)
       {
         ++singular_solves;
@@ -745,15 +775,13 @@ namespace contact_fem
       search_for_step(prescribed, step_size, first_step);
     make_sparsity_pattern();
 
-    // Stiffness ratios beyond ~1e10 leave the direct solve with too few
-    // digits (measured: 1e12 fails with either body as the slave).
-    const auto [youngs_min, youngs_max] = materials.youngs_modulus_range();
-    const std::string contrast_hint =
-      youngs_max > 1e10 * youngs_min ?
-        " The stiffness ratio between the bodies, " + scientific(youngs_max / youngs_min, 1) +
-          ", is beyond what a direct solve in double precision resolves (about 1e10): "
-          "model the stiff body as rigid (fixed) instead." :
-        std::string();
+    // Stiffness ratios beyond ~1e10 (measured: 1e12 fails with either body
+    // as the slave) and nearly incompressible bodies leave the direct solve
+    // with too few digits: then that is the likely cause of any failure.
+    const auto precision_hint = [this]() {
+      const std::string cause = precision_limits();
+      return cause.empty() ? cause : " Likely cause: " + cause + ".";
+    };
 
     factorisation_current = false;
     pcout << "  Load step " << step + 1 << ", t = " << time << std::endl
@@ -769,19 +797,16 @@ namespace contact_fem
     double       last_u = 0., last_lambda = 0., previous_r_u = 0.;
     unsigned int previous_changes = 1;
     unsigned int last_changes = 0;
-    bool         converged = false;
+    bool         converged = false, stalled = false;
     unsigned int iteration = 0, searches_after_check = 0;
     for (; iteration <= newton_parameters.max_iterations; ++iteration)
       {
         if (iteration > 0 && contact && contact->n_active() == 0 &&
             !contact_parameters.allow_loss_of_contact)
-          throw NewtonFailure("load step " + std::to_string(step + 1) + " (t = " +
-                              std::to_string(time) + "), iteration " +
-                              std::to_string(iteration) +
-                              ": no contact. No slave node is active (every node is "
-                              "in tension or apart): the load separates the bodies. "
-                              "Set Contact/Allow loss of contact = true if the scene "
-                              "may lose contact.",
+          throw NewtonFailure(no_contact_message("load step " + std::to_string(step + 1) +
+                                                   " (t = " + std::to_string(time) +
+                                                   "), iteration " + std::to_string(iteration),
+                                                 true),
                               false);
         if (iteration > 0)
           {
@@ -792,6 +817,17 @@ namespace contact_fem
               {
                 solve_linear_system();
                 factorisation_current = true;
+              }
+            catch (const LinearSolverFailure &e)
+              {
+                throw NewtonFailure("load step " + std::to_string(step + 1) + " (t = " +
+                                      std::to_string(time) + "), iteration " +
+                                      std::to_string(iteration) + ": " + e.what() + "." +
+                                      (e.singular ? " Hint: is every body held by supports "
+                                                    "or by at least one active contact node?" :
+                                                    "") +
+                                      precision_hint(),
+                                    false);
               }
             catch (const std::exception &e)
               {
@@ -805,7 +841,7 @@ namespace contact_fem
                                          std::string("the linear solver failed")) +
                                       ". Hint: is every body held by supports or by at "
                                       "least one active contact node?" +
-                                      contrast_hint,
+                                      precision_hint(),
                                     false);
               }
             // Both iterates satisfy the hanging-node and Dirichlet
@@ -875,10 +911,15 @@ namespace contact_fem
         // its trend.
         // (Damped iterations shrink the residual by a fixed factor: not
         // stagnation.)
-        const bool stagnating = newton_parameters.damping == 1. && iteration > 1 &&
-                                changes == 0 && previous_changes == 0 &&
-                                r_u > 0.5 * previous_r_u && ratio_u <= 1e-2 &&
+        // Flat: a settled active set, and the residual decreases by less
+        // than half what the (damped) update should remove.
+        const bool flat = iteration > 1 && changes == 0 && previous_changes == 0 &&
+                          r_u > (1. - 0.5 * newton_parameters.damping) * previous_r_u;
+        const bool stagnating = newton_parameters.damping == 1. && flat && ratio_u <= 1e-2 &&
                                 ratio_lambda <= newton_parameters.multiplier_relative_tolerance;
+        // Flat with both residuals eight orders below their start: round-off,
+        // which no tolerance below it can wait for.
+        stalled = flat && ratio_u <= 1e-8 && ratio_lambda <= 1e-8;
         converged = iteration > 0 && !searched_again &&
                     ((residuals_small && (changes == 0 || at_round_off)) || stagnating);
         previous_changes = iteration > 0 ? changes : 1;
@@ -892,6 +933,9 @@ namespace contact_fem
           if (value <= tolerance)
             s << std::setw(11) << "-" << " | " << std::setw(9)
               << ("< " + scientific(tolerance, 0));
+          else if (ratio < round_off_ratio)
+            s << std::setw(11) << ("< " + scientific(round_off_ratio, 0)) << " | "
+              << std::setw(9) << "round-off";
           else
             s << std::setw(11) << scientific(ratio) << " | " << std::setw(9)
               << scientific(value, 2);
@@ -934,25 +978,25 @@ namespace contact_fem
       }
     if (converged && contact && contact->n_active() == 0 &&
         !contact_parameters.allow_loss_of_contact)
-      throw NewtonFailure("load step " + std::to_string(step + 1) + " (t = " +
-                          std::to_string(time) +
-                          "): no contact. No slave node is active: the load "
-                          "separates the bodies. Set Contact/Allow loss of contact "
-                          "= true if the scene may lose contact.",
+      throw NewtonFailure(no_contact_message("load step " + std::to_string(step + 1) +
+                                               " (t = " + std::to_string(time) + ")",
+                                             false),
                           false);
     if (!converged)
       throw NewtonFailure("load step " + std::to_string(step + 1) + " (t = " +
                           std::to_string(time) + ") did not converge in " +
                           std::to_string(newton_parameters.max_iterations) +
                           " iterations (last: |r_u| " +
-                          residual_text(last_u, newton_parameters.displacement_absolute_tolerance) +
+                          residual_text(last_u, newton_parameters.displacement_absolute_tolerance,
+                                        reference_u) +
                           ", |r_lambda| " +
-                          residual_text(last_lambda, newton_parameters.multiplier_absolute_tolerance) +
+                          residual_text(last_lambda,
+                                        newton_parameters.multiplier_absolute_tolerance,
+                                        reference_lambda) +
                           ", " +
-                          std::to_string(last_changes) +
-                          " active-set changes). Hint: more load steps, more "
-                          "Newton iterations, or a different Contact/Penalty." +
-                          contrast_hint);
+                          std::to_string(last_changes) + " active-set changes)." +
+                          non_convergence_hint(stalled, last_u, last_lambda) + precision_hint(),
+                        !stalled);
 
     newton_iterations_of_cycle.push_back(iteration);
     record.set("time", time)
@@ -967,22 +1011,16 @@ namespace contact_fem
   ContactProblem<dim>::run()
   {
     Timer total_timer;
-    // The output directory is made only now, after all input was checked.
+    // The output directory is prepared only now, after all input was
+    // checked: an earlier run's files go (they would pass for this run's),
+    // and a directory that cannot take the new ones stops the run before
+    // any work.
     const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
-    if (root)
-      {
-        std::error_code error;
-        std::filesystem::create_directories(output.directory, error);
-        AssertThrow(!error && std::filesystem::is_directory(output.directory),
-                    ExcMessage("Output directory: cannot create '" + output.directory +
-                               "': " + error.message()));
-        // A summary of an earlier run must not pass for this one's.
-        std::filesystem::remove(output.directory + "/summary.json", error);
-        log_file.open(output.directory + "/log.txt");
-        console.attach(log_file);
-      }
+    const OutputDirectoryReport earlier_outputs = open_output_directory();
     pcout << "contact_fem: scene '" << scene_name << "', " << dim << "D, "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI process(es)" << std::endl;
+    report_earlier_outputs(earlier_outputs);
+    print_input_warnings();
 
     {
       TimerOutput::Scope t(*timer, "Setup: mesh");
@@ -1017,6 +1055,7 @@ namespace contact_fem
                            "a_error,pressure_l2_relative_error,energy_error,"
                            "newton_iterations,wall_time,cumulative_wall_time\n";
       }
+    check_written(output.directory + "/convergence.csv", !root || convergence_csv.good());
     Json   cycles     = Json::array();
     double cumulative = 0.;
     int    exit_code  = 0;
@@ -1025,7 +1064,7 @@ namespace contact_fem
         if (cycle > 0 && !refine_mesh())
           {
             // The last cycle's results are final: mark the run complete.
-            write_summary(cycles, total_timer.wall_time(), "converged");
+            write_summary(cycles, total_timer.wall_time(), converged_status());
             break;
           }
         timer->reset();
@@ -1048,7 +1087,8 @@ namespace contact_fem
         const bool last = !converged || cycle + 1 == refinement.n_cycles;
         write_summary(cycles, total_timer.wall_time(),
                       !converged ? "failed: results of the last converged load step" :
-                                   (last ? "converged" : "running"));
+                      !last      ? "running" :
+                                   converged_status());
         if (output.print_timing)
           {
             pcout << "  Wall time of cycle " << cycle << ": " << wall << " s (cumulative "
@@ -1065,13 +1105,28 @@ namespace contact_fem
             break;
           }
       }
+    if (console.file_failed())
+      pcout << "Warning: writing '" << output.directory
+            << "/log.txt' failed during the run: the log is incomplete (the console has "
+               "everything)."
+            << std::endl;
     return exit_code;
+  }
+
+  template <int dim>
+  std::string
+  ContactProblem<dim>::converged_status() const
+  {
+    return balance_failed ? "converged, but the reactions do not balance the load "
+                            "(cycles[].balance_warning)" :
+                            "converged";
   }
 
   template <int dim>
   void
   ContactProblem<dim>::warn_about_modelling_choices() const
   {
+    warn_about_precision_limits();
     // Volumetric locking: measured on the Hertz scene, p_max is off by more
     // than 2 % beyond these Poisson's ratios without B-bar
     // (doc/stability.md).
@@ -1356,10 +1411,15 @@ namespace contact_fem
       return;
     std::ostringstream text;
     text << "the stiffness matrix was singular in " << singular_solves
-         << " Newton solve(s) of this cycle (up to " << most_null_pivots
-         << " zero pivot(s)): a rigid-body mode that neither the supports nor the "
-         << "active contact hold (see Boundary conditions/Fixed points). The solver "
-         << "held it at one DoF; results along that mode are not determined by the model";
+         << " Newton solve(s) of this cycle (up to " << most_null_pivots << " zero pivot(s))";
+    // Zero pivots also come from stiffness lost in round-off: then that is
+    // the cause, not a free rigid-body mode.
+    if (const std::string cause = precision_limits(); !cause.empty())
+      text << ": " << cause;
+    else
+      text << ": a rigid-body mode that neither the supports nor the "
+           << "active contact hold (see Boundary conditions/Fixed points). The solver "
+           << "held it at one DoF; results along that mode are not determined by the model";
     pcout << "  Warning: " << text.str() << "." << std::endl;
     cycle_record.set("singular_stiffness_warning", text.str());
   }
@@ -1512,6 +1572,8 @@ namespace contact_fem
     const Json contact_json  = contact_results();
     const Json reaction_json = reaction_results();
     cycle_record.set("contact", contact_json).set("reaction", reaction_json);
+    if (converged)
+      check_reaction_balance(reaction_json, cycle_record);
     Json hertz_json = Json::object();
     if (analytical.type != "none")
       {

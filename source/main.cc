@@ -8,6 +8,7 @@
 #include <boost/property_tree/ptree.hpp>
 
 #include <cctype>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <iostream>
@@ -82,6 +83,50 @@ namespace
                                    "' and '" + arg + "').");
       }
     return cl;
+  }
+
+  /// Whether a line of a .prm file may set something: not a comment, a
+  /// blank line, 'subsection' or 'end' (malformed lines count, so that
+  /// ParameterHandler reports them).
+  bool
+  is_setting(const std::string &line)
+  {
+    std::istringstream words(line.substr(0, line.find('#')));
+    std::string        first;
+    words >> first;
+    return !first.empty() && first != "subsection" && first != "end";
+  }
+
+  /// Refuses a parameter file that is a directory or holds no settings:
+  /// ParameterHandler reads both as an empty file and the run would solve
+  /// the default scene as if asked to.
+  void
+  check_parameter_file(const std::string &file)
+  {
+    std::error_code error;
+    if (std::filesystem::is_directory(file, error))
+      throw std::runtime_error("the parameter file '" + file +
+                               "' is a directory; expected a .prm file.");
+    std::ifstream in(file);
+    if (!in)
+      throw std::runtime_error("cannot open the parameter file '" + file + "'.");
+    const bool prm_syntax = file.size() < 5 || (file.substr(file.size() - 5) != ".json" &&
+                                                file.substr(file.size() - 4) != ".xml");
+    std::string line;
+    bool        empty = true, settings = false;
+    while (std::getline(in, line))
+      {
+        empty    = empty && line.find_first_not_of(" \t\r") == std::string::npos;
+        settings = settings || (prm_syntax ? is_setting(line) : !empty);
+      }
+    if (empty)
+      throw std::runtime_error("the parameter file '" + file +
+                               "' is empty: it has no settings (an empty file would run "
+                               "the default scene).");
+    if (!settings)
+      throw std::runtime_error("the parameter file '" + file +
+                               "' has no settings, only comments or subsections (it would "
+                               "run the default scene).");
   }
 
   /// Applies "A/B/Key=value" by parsing the equivalent prm text, so that the
@@ -194,7 +239,10 @@ namespace
     {
       contact_fem::ContactProblem<dim> problem(prm, name, directory);
       if (validate_only)
-        return 0;
+        {
+          problem.print_input_warnings();
+          return 0;
+        }
       try
         {
           code = problem.run();
@@ -242,11 +290,7 @@ main(int argc, char **argv)
         }
       if (cl.prm_file.empty())
         throw std::runtime_error("no parameter file given.\n\n" + std::string(usage));
-      {
-        std::ifstream in(cl.prm_file);
-        if (!in)
-          throw std::runtime_error("cannot open the parameter file '" + cl.prm_file + "'.");
-      }
+      check_parameter_file(cl.prm_file);
       prm.parse_input(cl.prm_file);
       for (const auto &[path, value] : cl.overrides)
         apply_override(prm, path, value);

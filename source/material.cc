@@ -1,9 +1,11 @@
 #include <deal.II/base/exceptions.h>
 
 #include <contact_fem/material.h>
+#include <contact_fem/parameters.h>
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 
@@ -18,7 +20,32 @@ namespace contact_fem
       s << x;
       return s.str();
     }
+
+    /// Refuses a Poisson's ratio whose lambda / mu exceeds
+    /// max_lambda_over_mu(): see there.
+    void
+    check_bulk_to_shear_ratio(const double nu, const unsigned int entry, const std::string &text)
+    {
+      const double ratio = lambda_over_mu(nu);
+      std::ostringstream message;
+      message << "Materials/Poisson's ratios: entry " << entry + 1 << " is " << text
+              << ": lambda/mu = 2 nu / (1 - 2 nu) = " << std::setprecision(2) << ratio
+              << " exceeds " << max_lambda_over_mu()
+              << " = 1 / (10 eps): where the stiffness matrix adds lambda and mu, double "
+                 "precision keeps no digit of the shear stiffness (the factorisation "
+                 "finds hundreds of zero pivots). Nearly incompressible bodies keep "
+                 "their balance to about 1e-14 lambda/mu (nu = 0.49999999 with B-bar: "
+                 "lambda/mu = 5e7, imbalance 2e-7).";
+      AssertThrow(!(ratio > max_lambda_over_mu()), ExcMessage(message.str()));
+    }
   } // namespace
+
+  double
+  lambda_over_mu(const double nu)
+  {
+    // 1 - 2 nu is exact near nu = 0.5 (Sterbenz), so the ratio is accurate.
+    return 2. * nu / (1. - 2. * nu);
+  }
 
   double
   ElasticConstants::lambda() const
@@ -47,12 +74,18 @@ namespace contact_fem
     prm.declare_entry("Young's moduli",
                       "200, 2e12",
                       Patterns::List(Patterns::Double(), 1),
-                      "Young's modulus of each body, > 0. Units: stress.");
+                      "Young's modulus of each body, a positive normal double "
+                      "(2.2e-308 to 1.8e308). Units: stress.");
     prm.declare_entry("Poisson's ratios",
                       "0.3, 0.3",
                       Patterns::List(Patterns::Double(), 1),
                       "Poisson's ratio of each body, in (-1, 0.5). 2D bodies are "
-                      "in plane strain.");
+                      "in plane strain. Ratios whose lambda/mu = 2 nu / (1 - 2 "
+                      "nu) exceeds 4.5e14 (nu > 0.499999999999999) are refused: "
+                      "double precision then keeps no digit of the shear "
+                      "stiffness; beyond 1e8 (nu > 0.499999995) the set-up "
+                      "warns, since the reactions balance the load only to "
+                      "about 1e-14 lambda/mu.");
     prm.leave_subsection();
   }
 
@@ -63,11 +96,13 @@ namespace contact_fem
     prm.enter_subsection("Materials");
     const auto ids = Utilities::string_to_int(
       Utilities::split_string_list(prm.get("Material ids")));
-    const auto E = Utilities::string_to_double(
-      Utilities::split_string_list(prm.get("Young's moduli")));
-    const auto nu = Utilities::string_to_double(
-      Utilities::split_string_list(prm.get("Poisson's ratios")));
+    const std::string E_text = prm.get("Young's moduli"), nu_text = prm.get("Poisson's ratios");
     prm.leave_subsection();
+    const auto E  = parse_number_list(E_text, "Materials/Young's moduli",
+                                     "a positive normal double (2.2e-308 to 1.8e308)");
+    const auto nu = parse_number_list(nu_text, "Materials/Poisson's ratios",
+                                      "a value in (-1, 0.5)");
+    const auto nu_entries = Utilities::split_string_list(nu_text, ',');
 
     AssertThrow(E.size() == ids.size() && nu.size() == ids.size(),
                 ExcMessage("Materials: 'Material ids', 'Young's moduli' and "
@@ -89,6 +124,7 @@ namespace contact_fem
                                std::to_string(i + 1) + " is " +
                                format(nu[i]) +
                                "; expected a value in (-1, 0.5)."));
+        check_bulk_to_shear_ratio(nu[i], i, nu_entries[i]);
         AssertThrow(bodies.count(ids[i]) == 0,
                     ExcMessage("Materials/Material ids: id " +
                                std::to_string(ids[i]) + " is listed twice."));

@@ -5,6 +5,7 @@
 #include <contact_fem/parameters.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -79,6 +80,44 @@ namespace contact_fem
     }
   } // namespace
 
+  std::string
+  number_problem(const std::string &text, double &value)
+  {
+    const std::string number = trim(text);
+    char             *end    = nullptr;
+    errno                    = 0;
+    value                    = std::strtod(number.c_str(), &end);
+    if (number.empty() || end != number.c_str() + number.size())
+      return "is not a number";
+    if (!std::isfinite(value))
+      return "is not finite";
+    // strtod() reports both overflow and underflow (a subnormal result) as
+    // ERANGE.
+    if (errno == ERANGE || (value != 0. && !std::isnormal(value)))
+      return std::abs(value) >= 1. ?
+               "is beyond the largest double (1.8e308)" :
+               "is below the smallest normal double (2.2e-308), where only a few digits "
+               "are kept";
+    return "";
+  }
+
+  std::vector<double>
+  parse_number_list(const std::string &text, const std::string &key, const std::string &expected)
+  {
+    std::vector<double>            values;
+    const std::vector<std::string> entries = Utilities::split_string_list(text, ',');
+    for (unsigned int i = 0; i < entries.size(); ++i)
+      {
+        double            value   = 0.;
+        const std::string problem = number_problem(entries[i], value);
+        AssertThrow(problem.empty(),
+                    ExcMessage(key + ": entry " + std::to_string(i + 1) + ", '" + entries[i] +
+                               "', " + problem + "; expected " + expected + "."));
+        values.push_back(value);
+      }
+    return values;
+  }
+
   std::vector<std::pair<std::string, std::string>>
   split_key_value_list(const std::string &text, const std::string &key)
   {
@@ -127,10 +166,24 @@ namespace contact_fem
       try
         {
           const int id = Utilities::string_to_int(trim(text.substr(0, at)));
-          point.coordinates =
-            Utilities::string_to_double(Utilities::split_string_list(text.substr(at + 1)));
-          valid = id >= 0 && id < 255 && point.coordinates.size() == dim;
+          for (const std::string &coordinate : Utilities::split_string_list(text.substr(at + 1)))
+            {
+              // A coordinate that is a number but not a usable double is
+              // reported as such, not as a malformed entry.
+              double            value   = 0.;
+              const std::string problem = number_problem(coordinate, value);
+              AssertThrow(problem.empty() || problem == "is not a number",
+                          ExcMessage(key + ": '" + trim(text) + "': coordinate '" + coordinate +
+                                     "' " + problem + "; expected a normal double or 0."));
+              valid = valid && problem.empty();
+              point.coordinates.push_back(value);
+            }
+          valid = valid && id >= 0 && id < 255 && point.coordinates.size() == dim;
           point.material_id = static_cast<types::material_id>(id);
+        }
+      catch (const ExcMessage &)
+        {
+          throw;
         }
       catch (...)
         {
@@ -384,11 +437,14 @@ namespace contact_fem
                       "(or the absolute test holds), for the equilibrium residual "
                       "r_u of the free DoFs.");
     prm.declare_entry("Displacement absolute tolerance", "1e-9", Patterns::Double(0.),
-                      "Absolute bound on |r_u|. Units: force.");
+                      "Absolute bound on |r_u|. Units: force. The relative and the "
+                      "absolute tolerance may not both be 0 (residuals stall at "
+                      "round-off).");
     prm.declare_entry("Multiplier relative tolerance", "1e-4", Patterns::Double(0.),
                       "Same for the complementarity residual of the multipliers.");
     prm.declare_entry("Multiplier absolute tolerance", "1e-9", Patterns::Double(0.),
-                      "Absolute bound on the multiplier residual. Units: length.");
+                      "Absolute bound on the multiplier residual. Units: length. "
+                      "The relative and the absolute tolerance may not both be 0.");
     prm.declare_entry("Damping", "1", Patterns::Double(0.),
                       "Step length alpha in (0, 1] of every Newton update, u <- u + "
                       "alpha du. Below 1 it damps an active set that cycles between "
@@ -408,6 +464,23 @@ namespace contact_fem
     multiplier_absolute_tolerance   = prm.get_double("Multiplier absolute tolerance");
     damping                         = prm.get_double("Damping");
     prm.leave_subsection();
+    // The residuals are computed in double precision: they stall at
+    // round-off (measured on prm/hertz.prm: |r_u| ~ 1e-14, |r_lambda| ~
+    // 2e-16) and never reach 0, so a pair of zero tolerances makes every
+    // step fail after its iterations, and the step splits do not help.
+    const auto check_pair = [](const double relative, const double absolute,
+                               const std::string &name, const std::string &defaults) {
+      AssertThrow(relative > 0. || absolute > 0.,
+                  ExcMessage("Newton/" + name + " relative tolerance and Newton/" + name +
+                             " absolute tolerance are both 0: a residual computed in double "
+                             "precision stalls at round-off and never reaches 0, so no load "
+                             "step could converge; set at least one of them > 0 (defaults " +
+                             defaults + ")."));
+    };
+    check_pair(displacement_relative_tolerance, displacement_absolute_tolerance,
+               "Displacement", "1e-4 and 1e-9");
+    check_pair(multiplier_relative_tolerance, multiplier_absolute_tolerance, "Multiplier",
+               "1e-4 and 1e-9");
     AssertThrow(damping > 0. && damping <= 1.,
                 ExcMessage("Newton/Damping: expected a value in (0, 1]."));
   }
@@ -566,7 +639,12 @@ namespace contact_fem
                       Patterns::Anything(),
                       "Directory of every output file of the run (created if "
                       "needed): summary.json, log.txt, pressure profiles, VTU. "
-                      "Must not be named 'output' in tests.");
+                      "Before any work the run removes the files of an earlier "
+                      "run from it (only the names contact_fem writes: "
+                      "summary.json, log.txt, convergence.csv, "
+                      "pressure_profile.csv, solution.pvd, solution_*.pvtu/vtu, "
+                      "error_indicators_*.pvtu/vtu) and checks that it can write "
+                      "there. Must not be named 'output' in tests.");
     prm.enter_subsection("Output");
     prm.declare_entry("Write VTU", "true", Patterns::Bool(),
                       "Write the fields of every load step as VTU/PVTU.");

@@ -3,13 +3,168 @@
 // so the output does not depend on where the sources are) and its exit
 // status. Succeeds only if contact_fem failed with a non-zero exit code and
 // did not crash (no signal, no abort).
+//
+// The run starts in a fresh working directory (the output directory
+// 'results' of an earlier run of the test is removed). Lines of the .prm
+// file of the form '# driver: DIRECTIVE' prepare the case:
+//   # driver: args ARGUMENTS         more command-line arguments (after
+//                                    --output-directory results)
+//   # driver: env NAME=VALUE         an environment variable of the run
+//   # driver: parameter directory    run on a directory named scene.prm
+//                                    instead of the .prm file
+//   # driver: mkdir PATH             a directory (in the working directory)
+//   # driver: write PATH [TEXT]      a file holding TEXT
+//   # driver: read-only PATH         a directory nobody may write to: the
+//                                    run then has no root privileges (root
+//                                    ignores permissions)
+//   # driver: list PATH              after the run, print the names in PATH
+//   # driver: keep REGEX             print only the lines of the run that
+//                                    contain a match (for runs whose other
+//                                    lines are round-off, e.g. after a
+//                                    singular solve)
+#include <sys/stat.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <regex>
+#include <set>
+#include <sstream>
 #include <string>
+#include <vector>
+
+namespace
+{
+  namespace fs = std::filesystem;
+
+  struct Case
+  {
+    std::string                                      arguments;
+    std::vector<std::pair<std::string, std::string>> environment;
+    bool                                             parameter_directory = false;
+    std::vector<std::string>                         read_only, listed;
+    std::string                                      keep;
+  };
+
+  /// Lets the test directory be removed again by a non-root user.
+  void
+  make_writable(const fs::path &path)
+  {
+    std::error_code error;
+    if (fs::is_directory(fs::symlink_status(path, error)))
+      {
+        fs::permissions(path, fs::perms::owner_all, fs::perm_options::add, error);
+        for (const auto &entry : fs::directory_iterator(path, error))
+          make_writable(entry.path());
+      }
+  }
+
+  /// Reads the directives of @p prm and prepares the working directory.
+  Case
+  prepare(const std::string &prm)
+  {
+    make_writable("results");
+    fs::remove_all("results");
+    Case          c;
+    std::ifstream in(prm);
+    std::string   line;
+    const std::string marker = "# driver: ";
+    while (std::getline(in, line))
+      {
+        if (line.compare(0, marker.size(), marker) != 0)
+          continue;
+        std::istringstream words(line.substr(marker.size()));
+        std::string        directive, argument, rest;
+        words >> directive >> argument;
+        std::getline(words, rest);
+        rest = rest.empty() ? rest : rest.substr(1);
+        if (directive == "args")
+          c.arguments += " " + argument + (rest.empty() ? "" : " " + rest);
+        else if (directive == "env")
+          {
+            const auto eq = argument.find('=');
+            c.environment.emplace_back(argument.substr(0, eq), argument.substr(eq + 1));
+          }
+        else if (directive == "parameter" && argument == "directory")
+          c.parameter_directory = true;
+        else if (directive == "mkdir")
+          fs::create_directories(argument);
+        else if (directive == "write")
+          {
+            fs::create_directories(fs::path(argument).parent_path());
+            std::ofstream(argument) << rest << (rest.empty() ? "" : "\n");
+          }
+        else if (directive == "read-only")
+          {
+            fs::create_directories(argument);
+            c.read_only.push_back(argument);
+          }
+        else if (directive == "list")
+          c.listed.push_back(argument);
+        else if (directive == "keep")
+          c.keep = argument + (rest.empty() ? "" : " " + rest);
+        else
+          {
+            std::cerr << "expect_failure: unknown directive in '" << line << "'" << std::endl;
+            std::exit(2);
+          }
+      }
+    for (const auto &directory : c.read_only)
+      fs::permissions(directory,
+                      fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                        fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec,
+                      fs::perm_options::replace);
+    return c;
+  }
+
+  /// Runs @p command through the shell with the environment and privileges
+  /// of @p c; returns its output (stdout and stderr) and sets @p status.
+  std::string
+  run(const std::string &command, const Case &c, int &status)
+  {
+    int channel[2];
+    if (pipe(channel) != 0)
+      std::exit(2);
+    const pid_t child = fork();
+    if (child == 0)
+      {
+        dup2(channel[1], 1);
+        dup2(channel[1], 2);
+        close(channel[0]);
+        close(channel[1]);
+        for (const auto &[name, value] : c.environment)
+          setenv(name.c_str(), value.c_str(), 1);
+        if (!c.read_only.empty() && geteuid() == 0)
+          {
+            // nobody: permissions apply again.
+            setenv("HOME", "/tmp", 1);
+            if (setgid(65534) != 0 || setuid(65534) != 0)
+              {
+                std::printf("expect_failure: cannot drop root privileges for a "
+                            "read-only directory\n");
+                std::exit(3);
+              }
+          }
+        execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char *>(nullptr));
+        std::exit(127);
+      }
+    close(channel[1]);
+    std::string            text;
+    std::array<char, 4096> buffer;
+    ssize_t                n;
+    while ((n = read(channel[0], buffer.data(), buffer.size())) > 0)
+      text.append(buffer.data(), n);
+    close(channel[0]);
+    waitpid(child, &status, 0);
+    return text;
+  }
+} // namespace
 
 int
 main(int argc, char **argv)
@@ -21,28 +176,48 @@ main(int argc, char **argv)
     }
   const std::string prm       = argv[1];
   const std::string directory = prm.substr(0, prm.find_last_of('/'));
-  // Options for the run may follow a "# args:" line in the .prm file
-  // (e.g. --validate, to check that it catches the error too).
-  std::string   options;
-  std::ifstream in(prm);
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind("# args:", 0) == 0)
-      options += " " + line.substr(7);
-  std::string command = std::string(CONTACT_FEM_EXECUTABLE) + options + " '" + prm +
-                        "' --output-directory results 2>&1";
-  FILE *pipe = popen(command.c_str(), "r");
-  if (!pipe)
-    return 2;
-  std::string           text;
-  std::array<char, 4096> buffer;
-  while (fgets(buffer.data(), buffer.size(), pipe))
-    text += buffer.data();
-  const int status = pclose(pipe);
+  const Case        c         = prepare(prm);
+
+  std::string parameter_file = prm;
+  if (c.parameter_directory)
+    {
+      parameter_file = "scene.prm";
+      fs::remove_all(parameter_file);
+      fs::create_directory(parameter_file);
+    }
+  const std::string command = std::string(CONTACT_FEM_EXECUTABLE) + " '" + parameter_file +
+                              "' --output-directory results" + c.arguments + " 2>&1";
+  int         status = 0;
+  std::string text   = run(command, c, status);
 
   for (std::size_t pos = text.find(directory); pos != std::string::npos;
        pos             = text.find(directory))
     text.replace(pos, directory.size(), "<dir>");
-  std::cout << text;
+  if (c.keep.empty())
+    std::cout << text;
+  else
+    {
+      const std::regex   pattern(c.keep);
+      std::istringstream lines(text);
+      std::string        line;
+      while (std::getline(lines, line))
+        if (std::regex_search(line, pattern))
+          std::cout << line << std::endl;
+    }
+
+  for (const auto &listed : c.listed)
+    {
+      std::set<std::string> names;
+      std::error_code       error;
+      for (const auto &entry : fs::directory_iterator(listed, error))
+        names.insert(entry.path().filename().string());
+      std::cout << "files in " << listed << ":";
+      for (const auto &name : names)
+        std::cout << " " << name;
+      std::cout << std::endl;
+    }
+  for (const auto &read_only : c.read_only)
+    make_writable(read_only);
 
   const bool exited = WIFEXITED(status);
   const int  code   = exited ? WEXITSTATUS(status) : -1;

@@ -20,6 +20,7 @@
 #include <contact_fem/contact_interface.h>
 #include <contact_fem/json.h>
 #include <contact_fem/material.h>
+#include <contact_fem/output_files.h>
 #include <contact_fem/parameters.h>
 #include <contact_fem/refinement.h>
 #include <contact_fem/scene.h>
@@ -27,6 +28,7 @@
 #include <contact_fem/volumetric_projection.h>
 
 #include <fstream>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -45,18 +47,27 @@ namespace contact_fem
     /// Also write to @p file from now on.
     void
     attach(std::ostream &file);
+    /// Whether writing to the file failed (it is then no longer written;
+    /// the console goes on).
+    bool
+    file_failed() const;
 
   private:
     class Buffer : public std::streambuf
     {
     public:
       std::streambuf *first = nullptr, *second = nullptr;
+      bool            file_failed = false;
 
     protected:
       int
       overflow(int c) override;
       int
       sync() override;
+
+    private:
+      void
+      drop_file();
     } buffer;
   };
 
@@ -95,6 +106,11 @@ namespace contact_fem
     int
     run();
 
+    /// Prints the warnings the checks of the input found (e.g. a mesh that
+    /// takes more than half the available memory); run() prints them too.
+    void
+    print_input_warnings() const;
+
   private:
     // --- set-up (contact_problem.cc)
     void
@@ -118,6 +134,9 @@ namespace contact_fem
     /// side much stiffer than its master.
     void
     warn_about_modelling_choices() const;
+    /// The summary status of a run whose last cycle converged.
+    std::string
+    converged_status() const;
     /// Prints and records a warning when |u|_max exceeds half the model
     /// size.
     void
@@ -213,6 +232,69 @@ namespace contact_fem
     /// Solves one cycle on the current mesh; returns false if Newton failed.
     bool
     run_cycle(const unsigned int cycle, Json &cycle_record);
+    // --- checks of the input on the scene's mesh (contact_setup_checks.cc)
+    /// Builds the scene without its global and box refinements, and checks
+    /// on that mesh the contact pairs and the memory the full mesh will
+    /// need: input errors found before any work.
+    void
+    check_scene_before_meshing();
+    /// Refuses a contact pair whose two surfaces belong to the same body.
+    void
+    check_contact_pairs(const Triangulation<dim> &tria) const;
+    /// The parameters that set the size of the mesh, for messages.
+    std::string
+    refinement_keys() const;
+    /// Refuses a mesh whose estimated memory exceeds what the machine has
+    /// available, and keeps a warning in memory_warning when it takes more
+    /// than half.
+    void
+    check_memory_estimate(const parallel::distributed::Triangulation<dim> &coarse);
+    // --- diagnoses (contact_diagnosis.cc)
+    /// The resultant of the applied pressures on each body. Collective.
+    std::map<types::material_id, Tensor<1, dim>>
+    body_loads(const double time) const;
+    /// The integral of the outward normal over boundary @p id. Collective.
+    Tensor<1, dim>
+    surface_normal(const types::boundary_id id) const;
+    /// The largest distance of a vertex from the origin. Collective.
+    double
+    model_size() const;
+    /// The displacement the load at @p time causes: applied force over the
+    /// smallest Young's modulus, or the largest prescribed displacement.
+    double
+    load_displacement_scale(const double time) const;
+    /// Why the load at @p time is at the round-off of the geometry, or "".
+    std::string
+    load_at_round_off(const double time) const;
+    /// Why double precision cannot resolve this model (stiffness ratio,
+    /// nearly incompressible body), or "".
+    std::string
+    precision_limits() const;
+    /// The stiffness ratio part of precision_limits().
+    std::string
+    stiffness_contrast_limit() const;
+    /// The nearly incompressible part of precision_limits().
+    std::string
+    incompressibility_limit() const;
+    /// The applied loads along the outward normals of the contact surfaces
+    /// of their bodies: > 0 pushes the bodies together. Collective.
+    double
+    load_toward_contact(const double time) const;
+    /// The diagnosis of a step without active slave nodes at @p where:
+    /// the separating load, or the real cause if the load does not
+    /// separate the bodies. Collective.
+    std::string
+    no_contact_message(const std::string &where, const bool in_iteration) const;
+    /// The hint of a Newton failure; @p stalled: the residuals stopped
+    /// decreasing without active-set changes.
+    std::string
+    non_convergence_hint(const bool stalled, const double r_u, const double r_lambda) const;
+    /// Warns and records when the reactions do not balance the load.
+    void
+    check_reaction_balance(const Json &reaction, Json &cycle_record);
+    /// Warns about Poisson's ratios and loads beyond double precision.
+    void
+    warn_about_precision_limits() const;
     // --- results (contact_output.cc)
     Json
     contact_results() const;
@@ -245,6 +327,16 @@ namespace contact_fem
     print_results(const Json &contact_json, const Json &reaction, const Json &hertz) const;
     void
     write_summary(const Json &cycles, const double wall_time, const std::string &status) const;
+    /// Prepares the output directory (prepare_output_directory()) and opens
+    /// log.txt; throws naming the path if either fails. Collective.
+    OutputDirectoryReport
+    open_output_directory();
+    /// Says how many files of an earlier run the preparation removed.
+    void
+    report_earlier_outputs(const OutputDirectoryReport &report);
+    /// Throws naming @p path unless @p ok on every rank. Collective.
+    void
+    check_written(const std::string &path, const bool ok) const;
     Tensor<1, dim>
     applied_load(const double time) const;
 
@@ -342,6 +434,10 @@ namespace contact_fem
     std::vector<unsigned int> newton_iterations_of_cycle; ///< per load step
     double strain_energy = 0., external_work = 0.; ///< at the last residual
     std::ofstream                                  convergence_csv;
+    /// Set by check_memory_estimate(), printed by run().
+    std::string memory_warning;
+    /// A cycle's reactions did not balance its load (check_reaction_balance()).
+    bool balance_failed = false;
   };
 } // namespace contact_fem
 

@@ -5,6 +5,7 @@
 #include <contact_fem/linear_solver.h>
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 class Amesos_BaseSolver;
@@ -14,6 +15,7 @@ class Epetra_LinearProblem;
 namespace contact_fem
 {
   using namespace dealii;
+
 
   /**
    * A Trilinos Amesos direct solver (KLU or MUMPS) for one sparsity pattern.
@@ -28,6 +30,12 @@ namespace contact_fem
    * same factors: large stiffness contrasts (1e8 and more between the
    * bodies) cost the factorisation most of its digits, and refinement
    * recovers them as long as the system is not singular.
+   *
+   * A MUMPS factorisation that runs out of its workspace (INFOG(1) = -8,
+   * -9, -17, -20: numerical pivoting delayed more pivots than the analysis
+   * foresaw) is retried once with a larger workspace (ICNTL(14)); other
+   * failures throw LinearSolverFailure with the MUMPS error code and its
+   * meaning.
    *
    * Implemented in source/direct_solver.cc.
    */
@@ -83,8 +91,18 @@ namespace contact_fem
       return null_pivots;
     }
 
+    /// What the solver had to do beyond the plain factorisation since the
+    /// last call (e.g. a retry with a larger workspace), for the log; empty
+    /// if nothing. Clears it.
+    std::string
+    take_note() override;
+
   private:
     std::string                           amesos_name;
+    std::string                           note;
+    /// MUMPS ICNTL(14) once a factorisation ran out of workspace; 0: the
+    /// default.
+    int workspace_percent = 0;
     std::unique_ptr<Epetra_LinearProblem> problem;
     std::unique_ptr<Amesos_BaseSolver>    solver;
     /// The matrix whose pattern the symbolic factorisation belongs to.
@@ -94,6 +112,14 @@ namespace contact_fem
 
     void
     factorise(const TrilinosWrappers::SparseMatrix &matrix);
+    /// The symbolic factorisation of a new pattern.
+    void
+    analyse(const TrilinosWrappers::SparseMatrix &matrix);
+    /// MUMPS: retries a numeric factorisation that ran out of workspace
+    /// once with a larger one; throws LinearSolverFailure if it still fails
+    /// or failed for another reason.
+    void
+    handle_mumps_failure(const TrilinosWrappers::SparseMatrix &matrix);
   };
 } // namespace contact_fem
 

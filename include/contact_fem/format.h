@@ -9,12 +9,29 @@
 
 namespace contact_fem
 {
-  /// @p x in scientific notation with @p digits after the point.
+  /**
+   * @p value in scientific notation with @p digits decimals, or with one
+   * more where it lies within 0.2 % of a unit of the last digit from a
+   * rounding tie. Exact binary fractions sit on decimal ties (the ratios of
+   * a damped Newton iteration are 2^-k: 2^-6 = 1.5625e-02), and there
+   * round-off noise decides the last digit: 1.562e-02 on one machine,
+   * 1.563e-02 on another. With the extra digit the value is printed as it
+   * is (1.5625e-02), and noise cannot move it. The band is 20 times the
+   * noise of the printed residuals (1e-7 of their value at most, 1e-4 of a
+   * unit at 4 digits) and catches 1 value in 250 that is not a tie.
+   */
   inline std::string
-  scientific(const double x, const unsigned int digits = 3)
+  scientific(const double value, const unsigned int digits = 3)
   {
+    // Three guard digits beyond the last printed one.
+    std::ostringstream guarded;
+    guarded << std::scientific << std::setprecision(digits + 3) << value;
+    const std::string text      = guarded.str();
+    const auto        exponent  = text.find('e');
+    const int         guard     = exponent >= 3 ? std::stoi(text.substr(exponent - 3, 3)) : 0;
+    const bool        near_tie  = std::abs(guard - 500) <= 2;
     std::ostringstream s;
-    s << std::scientific << std::setprecision(digits) << x;
+    s << std::scientific << std::setprecision(digits + (near_tie ? 1 : 0)) << value;
     return s.str();
   }
 
@@ -27,7 +44,7 @@ namespace contact_fem
     if (std::abs(value) < tolerance)
       s << "ok (< " << tolerance << ")";
     else
-      s << std::setprecision(4) << std::scientific << value;
+      s << scientific(value, 4);
     return s.str();
   }
 } // namespace contact_fem

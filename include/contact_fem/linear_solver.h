@@ -7,10 +7,26 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <memory>
+#include <stdexcept>
+#include <string>
 
 namespace contact_fem
 {
   using namespace dealii;
+
+  /// Thrown when the linear solver cannot solve the system. The message
+  /// names the solver's error and its meaning; singular tells a singular
+  /// matrix (a body that nothing holds) from the solver's own limits
+  /// (workspace, memory), so that the caller does not blame the supports
+  /// for a workspace shortage.
+  struct LinearSolverFailure : public std::runtime_error
+  {
+    LinearSolverFailure(const std::string &what, const bool singular)
+      : std::runtime_error(what)
+      , singular(singular)
+    {}
+    bool singular;
+  };
 
   /**
    * Solves the condensed Newton systems of one sparsity pattern. The driver
@@ -56,6 +72,15 @@ namespace contact_fem
     /// leaves), for a solver that detects them; 0 otherwise.
     virtual unsigned int
     n_null_pivots() const = 0;
+
+    /// What the solver had to do beyond the ordinary since the last call
+    /// (e.g. retry with more workspace), for the console; empty if nothing.
+    /// Clears it.
+    virtual std::string
+    take_note()
+    {
+      return {};
+    }
   };
 } // namespace contact_fem
 

@@ -28,6 +28,32 @@ namespace contact_fem
     mu() const;
   };
 
+  /// lambda / mu = 2 nu / (1 - 2 nu) of a Poisson's ratio: the ratio of the
+  /// volumetric to the shear stiffness, which the stiffness matrix adds up.
+  double
+  lambda_over_mu(const double nu);
+
+  /// Above this lambda / mu (1 / (10 eps) = 4.5e14, nu > 0.499999999999999)
+  /// mu is within ten units of round-off of lambda: the stiffness matrix
+  /// holds no digit of the shear stiffness (the Hertz scene with nu =
+  /// 0.4999999999999999 and B-bar: MUMPS runs out of workspace, then finds
+  /// 1771 zero pivots). Materials::parse_parameters() refuses such ratios.
+  constexpr double
+  max_lambda_over_mu()
+  {
+    return 0.1 / 2.220446049250313e-16;
+  }
+
+  /// Above this lambda / mu (nu > 0.499999995) the results lose balance
+  /// beyond 1e-6 of the load (measured on the Hertz scene with B-bar: the
+  /// relative reaction imbalance is about 1e-14 lambda/mu, 2.3e-7 at nu =
+  /// 0.49999999, 4.6e-5 at 0.4999999999); set-up warns.
+  constexpr double
+  warn_lambda_over_mu()
+  {
+    return 1e8;
+  }
+
   /**
    * The isotropic linear elastic law of every body, keyed by the cells'
    * material id. In 2D the bodies are in plane strain: the out-of-plane

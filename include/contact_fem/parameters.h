@@ -156,6 +156,20 @@ namespace contact_fem
     parse_parameters(ParameterHandler &prm, const unsigned int dim);
   };
 
+  /// Why @p text is not a usable double, or an empty string if it is one
+  /// (then stored in @p value): not a number, not finite, or outside the
+  /// normal range of double precision. strtod() turns '1e-320' into a
+  /// subnormal that keeps only a few digits, and deal.II's conversion then
+  /// fails with a message that names neither key nor entry.
+  std::string
+  number_problem(const std::string &text, double &value);
+
+  /// The comma-separated numbers of @p text; throws naming @p key, the
+  /// entry and what was expected (@p expected, e.g. "a positive normal
+  /// double") if one is not a usable double (number_problem()).
+  std::vector<double>
+  parse_number_list(const std::string &text, const std::string &key, const std::string &expected);
+
   /// Parses "a: b; c: d" style lists; throws naming @p key on malformed input.
   std::vector<std::pair<std::string, std::string>>
   split_key_value_list(const std::string &text, const std::string &key);

@@ -1,0 +1,28 @@
+// Small queries of a mesh shared by the set-up checks and the diagnoses.
+#ifndef contact_fem_mesh_queries_h
+#define contact_fem_mesh_queries_h
+
+#include <deal.II/base/types.h>
+#include <deal.II/grid/tria.h>
+
+#include <set>
+
+namespace contact_fem
+{
+  /// The material ids (bodies) of the cells with a face on boundary @p id.
+  /// The coarse cells carry the boundary ids and are known on every rank,
+  /// so the answer is the same everywhere.
+  template <int dim>
+  std::set<dealii::types::material_id>
+  bodies_of_surface(const dealii::Triangulation<dim> &tria, const dealii::types::boundary_id id)
+  {
+    std::set<dealii::types::material_id> bodies;
+    for (const auto &cell : tria.cell_iterators_on_level(0))
+      for (const auto f : cell->face_indices())
+        if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
+          bodies.insert(cell->material_id());
+    return bodies;
+  }
+} // namespace contact_fem
+
+#endif
