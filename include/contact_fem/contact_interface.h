@@ -32,9 +32,11 @@ namespace contact_fem
    * interface redundantly: every rank then knows every constraint that touches
    * its DoFs, and the result does not depend on the partition.
    *
-   * Geometry is updated at every load step: search and mortar integration run
-   * on the configuration X + u of the start of the step, and the gap is linear
-   * in the displacement within the step ("small sliding per load step").
+   * Search and mortar integration run on the configuration X + u the
+   * caller gives (the reference configuration with Contact/Kinematics =
+   * small, the start of every load step with updated); the gap is then
+   * linear in the displacement. surface_distances() checks a converged
+   * state against the whole master surface, independently of the operators.
    *
    * Only 2D (line faces of degree 1 or 2) is implemented; 3D throws.
    *
