@@ -2,7 +2,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <contact_fem/contact_problem.h>
+#include <contact_fem/simulator/contact_problem.h>
 
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>

@@ -21,9 +21,9 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <contact_fem/contact/formulations/contact_formulation.h>
-#include <contact_fem/contact_interface.h>
-#include <contact_fem/material.h>
-#include <contact_fem/parameters.h>
+#include <contact_fem/contact/contact_interface.h>
+#include <contact_fem/material/material.h>
+#include <contact_fem/core/parameters.h>
 
 #include <iomanip>
 #include <iostream>

@@ -20,8 +20,8 @@
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria.h>
 
-#include <contact_fem/boundary_manifolds.h>
-#include <contact_fem/mesh_file.h>
+#include <contact_fem/geometry/boundary_manifolds.h>
+#include <contact_fem/geometry/mesh_file.h>
 
 #include <cmath>
 #include <iomanip>

@@ -13,7 +13,7 @@
 //    nodal form sum M y - D y only sees the straight chord).
 #include <deal.II/base/quadrature_lib.h>
 
-#include <contact_fem/mortar.h>
+#include <contact_fem/contact/mortar.h>
 
 #include <cmath>
 #include <iostream>

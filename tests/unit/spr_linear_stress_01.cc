@@ -32,8 +32,8 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
-#include <contact_fem/material.h>
-#include <contact_fem/stress_recovery.h>
+#include <contact_fem/material/material.h>
+#include <contact_fem/adaptivity/stress_recovery.h>
 
 #include <algorithm>
 #include <cmath>

@@ -11,8 +11,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <contact_fem/contact_interface.h>
-#include <contact_fem/json.h>
+#include <contact_fem/contact/contact_interface.h>
+#include <contact_fem/core/json.h>
 
 #include <functional>
 #include <map>

@@ -1,0 +1,231 @@
+// The contact surfaces of all pairs, gathered on every rank, with the search
+// and the mortar operators of the slave nodes.
+#ifndef contact_fem_contact_interface_h
+#define contact_fem_contact_interface_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <contact_fem/material/material.h>
+#include <contact_fem/contact/mortar.h>
+#include <contact_fem/core/parameters.h>
+
+#include <array>
+#include <map>
+#include <vector>
+
+namespace contact_fem
+{
+  using namespace dealii;
+
+  /**
+   * The slave and master surfaces of every contact pair.
+   *
+   * The surfaces are lower-dimensional, so each rank gathers all of them
+   * (faces, reference coordinates and DoF indices of their nodes) once per
+   * mesh, and computes the search and the mortar operators of the whole
+   * interface redundantly: every rank then knows every constraint that touches
+   * its DoFs, and the result does not depend on the partition.
+   *
+   * Search and mortar integration run on the configuration X + u the
+   * caller gives (the reference configuration with Contact/Kinematics =
+   * small, the start of every load step with updated); the gap is then
+   * linear in the displacement. surface_distances() checks a converged
+   * state against the whole master surface, independently of the operators.
+   *
+   * Only 2D (line faces of degree 1 or 2) is implemented; 3D throws.
+   *
+   * Implemented in source/contact_interface.cc.
+   */
+  template <int dim>
+  class ContactInterface
+  {
+  public:
+    /// A node (support point) of a contact surface.
+    struct Node
+    {
+      Point<dim>                                reference;
+      std::array<types::global_dof_index, dim> dofs;
+      std::array<bool, dim>                     fixed; ///< Dirichlet component
+      bool                                      slave = false;
+      bool                                      master = false;
+    };
+
+    /// A face of a contact surface.
+    struct Face
+    {
+      std::vector<unsigned int> nodes;       ///< Mortar::LineFace node order
+      /// Reference positions of geometry nodes without DoFs: the midpoint of
+      /// a degree-1 face on a quadratic mapping; empty if isoparametric.
+      std::vector<Point<dim>>   geometry_points;
+      double                    orientation; ///< makes the rotated tangent point outward
+      unsigned int              pair;
+      bool                      slave;
+      double                    youngs_modulus;
+      double                    poisson_ratio;
+    };
+
+    /// Mortar data of one slave node at the current search.
+    struct SlaveNode
+    {
+      unsigned int  node;
+      unsigned int  pair;
+      Tensor<1, dim> normal;            ///< unit, out of the slave body
+      double        D         = 0.;     ///< int over the overlap of Phi_j
+      double        full_area = 0.;     ///< int of N_j over the adjacent slave faces
+      double        size      = 0.;     ///< nodal element size h_j
+      /// n_j . (int Phi_j (x_master - x_slave) ds - (sum_l M_jl x_l - D_j x_j))
+      /// at the search configuration: the part of the weighted gap that the
+      /// nodal form misses where the geometry is curved beyond the element
+      /// degree (the sag of a Q1 face on a quadratic mapping); zero up to
+      /// quadrature for isoparametric faces.
+      double        curvature_gap = 0.;
+      std::vector<std::pair<unsigned int, double>> M; ///< (master node, M_jl)
+      bool paired = false;              ///< has a master projection
+    };
+
+    /// Interface statistics of the last search, per pair.
+    struct PairStatistics
+    {
+      double       mean_slave_size = 0., mean_master_size = 0.;
+      double       slave_modulus = 0., master_modulus = 0.;
+      unsigned int slave_faces = 0, master_faces = 0;
+      unsigned int candidate_pairs = 0, overlapping_pairs = 0;
+    };
+
+    /**
+     * Collects the faces of @p pairs from all ranks. @p dirichlet holds the
+     * Dirichlet constraints only (to flag fixed components).
+     */
+    void
+    initialize(const MappingQ<dim>                &mapping,
+               const DoFHandler<dim>              &dof_handler,
+               const std::vector<ContactPair>     &pairs,
+               const AffineConstraints<double>    &dirichlet,
+               const Materials<dim>               &materials,
+               const MPI_Comm                      comm);
+
+    /// Sorted DoF indices of all interface nodes.
+    const std::vector<types::global_dof_index> &
+    dofs() const
+    {
+      return interface_dofs;
+    }
+
+    /// Position of @p dof in dofs().
+    unsigned int
+    position(const types::global_dof_index dof) const
+    {
+      return dof_position.at(dof);
+    }
+
+    /// The values of @p v at dofs(), from their owners, on every rank.
+    std::vector<double>
+    gather(const TrilinosWrappers::MPI::Vector &v) const;
+
+    /// The values of @p value_on_owner at dofs(), evaluated by the owner of
+    /// each DoF, on every rank.
+    std::vector<double>
+    gather(const std::function<double(types::global_dof_index)> &value_on_owner) const;
+
+    /**
+     * Search and mortar integration on X + u, @p u given at dofs(). The box
+     * of a slave face of pair p is enlarged by @p search_factor times its
+     * length plus @p motion_allowance[p] (empty: none), the relative motion
+     * of the surfaces the operators must reach.
+     */
+    void
+    update(const std::vector<double> &u,
+           const double               search_factor,
+           const std::vector<double> &motion_allowance = {});
+
+    /// Per pair: a bound of how far the slave surface moved relative to the
+    /// master from @p from to @p to (both at dofs()): the largest slave plus
+    /// the largest master displacement change.
+    std::vector<double>
+    relative_motion(const std::vector<double> &from, const std::vector<double> &to) const;
+
+    /// relative_motion() since the configuration of the last search.
+    std::vector<double>
+    motion_since_search(const std::vector<double> &u) const
+    {
+      return relative_motion(search_displacement, u);
+    }
+
+    /// Per pair: the motion the last search is sure to cover (its allowance
+    /// plus the search factor times the smallest slave face).
+    const std::vector<double> &
+    search_reach() const
+    {
+      return reach_of_search;
+    }
+
+    /**
+     * Independent check of the contact: the signed distance of every slave
+     * node (in slave_nodes order) at X + u to the whole master surface of its
+     * pair, on the true face geometry, by an R-tree of the master faces and
+     * the closest point; negative when the node is inside the master body.
+     * +infinity where the closest point lies beyond the rim of the master
+     * surface. Does not use the mortar operators.
+     */
+    std::vector<double>
+    surface_distances(const std::vector<double> &u) const;
+
+    /**
+     * The gap the mortar operators predict at the node itself: the nodal
+     * form n_j . (sum_l M_jl x_l - D_j x_j) / D_j, which differs from gap()
+     * by the curvature gap (the weighted mean along a curved face). Only
+     * for paired nodes.
+     */
+    double
+    nodal_gap(const SlaveNode &s, const std::vector<double> &u) const;
+
+    /// How far a paired slave node moved relative to the master point it is
+    /// paired with (the M-weighted master displacement) since the search.
+    double
+    slip_since_search(const SlaveNode &s, const std::vector<double> &u) const;
+
+    /// Displacement of node @p n from values at dofs().
+    Tensor<1, dim>
+    displacement(const unsigned int n, const std::vector<double> &u) const;
+
+    /// The geometry of @p face at X + u (@p u per interface node; empty:
+    /// the reference configuration). Only 2D.
+    Mortar::LineFace
+    line(const Face &face, const std::vector<Tensor<1, dim>> &u = {}) const;
+
+    /**
+     * Normalised weighted gap g_j = (n_j . (sum_l M_jl x_l - D_j x_j) +
+     * curvature_gap_j) / D_j of a slave node at x = X + u (u at dofs()),
+     * positive when apart. The operators are those of the last update().
+     */
+    double
+    gap(const SlaveNode &s, const std::vector<double> &u) const;
+
+    std::vector<ContactPair>    pairs;
+    std::vector<Node>           nodes;
+    std::vector<Face>           faces;
+    std::vector<SlaveNode>      slave_nodes;
+    std::vector<PairStatistics> statistics;
+    unsigned int                degree = 1;          ///< of the elements
+    unsigned int                geometry_degree = 1; ///< of the face geometry
+    /// How the surfaces are split over the ranks (locally owned faces).
+    std::vector<unsigned int> slave_faces_per_rank, master_faces_per_rank;
+
+  private:
+    /// Displacement at dofs() of the last search, and its reach per pair.
+    std::vector<double>                                 search_displacement;
+    std::vector<double>                                 reach_of_search;
+    std::vector<types::global_dof_index>               interface_dofs;
+    std::map<types::global_dof_index, unsigned int>     dof_position;
+    IndexSet                                            owned_dofs;
+    MPI_Comm                                            communicator;
+  };
+} // namespace contact_fem
+
+#endif

@@ -1,0 +1,148 @@
+// The geometry of a scene: built-in meshes or a Gmsh file, with the bodies
+// named by material id and the surfaces by boundary id.
+#ifndef contact_fem_scene_h
+#define contact_fem_scene_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/distributed/tria.h>
+
+#include <contact_fem/geometry/boundary_manifolds.h>
+#include <contact_fem/geometry/mesh_file.h>
+
+#include <memory>
+#include <set>
+#include <string>
+
+namespace contact_fem
+{
+  using namespace dealii;
+
+  /**
+   * Builds the coarse mesh of a scene on a parallel::distributed::Triangulation.
+   *
+   * Built-in geometries and their ids (the shipped .prm files rely on them):
+   *
+   * "hertz cylinder": a half-disc of radius R (material 1) whose lowest point
+   * touches the top of a plate (material 2) at the origin of x.
+   * @code
+   *        1 (flat top, loaded)
+   *   ______________________
+   *   \                    /
+   *    \  3 (arc, slave)  /      disc centre (0, t + R)
+   *      \______________/
+   *   ___________o__________    4 (plate top, master), contact at (0, t)
+   *  |           2          |   plate [-w, w] x [0, t], base 2 fixed
+   * @endcode
+   * The mesh is refined toward the contact zone: cells closer to the
+   * segment |x| < "Refinement half width" of the plate top than "Grading
+   * factor" times their diameter are refined, "Contact refinements" times in the disc and "Plate
+   * contact refinements" times in the plate.
+   *
+   * "contact blocks": a lower block [0, W] x [0, H] (material 2, top = 4,
+   * bottom = 2, left side = 6) and an upper block [0, W] x [H + gap, 2H + gap]
+   * (material 1, bottom = 3, top = 1, left side = 5), meshed with different
+   * numbers of cells (non-matching interface). Other faces have id 0.
+   *
+   * "mesh file": a Gmsh .msh file; bodies and surfaces carry the physical
+   * tags of the file as material and boundary ids. The file is read and
+   * checked in parse_parameters() (so --validate checks it too): ASCII,
+   * complete, quadrilaterals (hexahedra), no body cut by unmerged nodes,
+   * and the surfaces of Geometry/Manifolds on their circles (spheres,
+   * cylinders). Boundaries that look like polygons of a curve but have no
+   * manifold are remembered for chord_warning().
+   *
+   * Implemented in source/scene.cc.
+   */
+  template <int dim>
+  class Scene
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+    /// @p prm_directory resolves relative mesh file names.
+    void
+    parse_parameters(ParameterHandler &prm, const std::string &prm_directory);
+
+    /// Creates the mesh (with global refinements) and attaches the manifolds;
+    /// once per parse_parameters() for a mesh file.
+    void
+    create_mesh(parallel::distributed::Triangulation<dim> &tria) const;
+
+    /// For a run that refines the mesh: a warning naming the boundaries of
+    /// the mesh file that look curved but have no manifold (refinement
+    /// keeps their chords), with the parameter that fixes it; empty if none.
+    std::string
+    chord_warning() const;
+
+    /// Checks that the mesh has these material and boundary ids and no
+    /// inverted or degenerate cells; throws with the parameter name otherwise.
+    static void
+    check_mesh(const parallel::distributed::Triangulation<dim> &tria,
+               const std::set<types::material_id>              &material_ids,
+               const std::set<types::boundary_id>              &boundary_ids);
+
+    /// Whether the mesh has curved boundaries (manifolds other than flat).
+    bool
+    has_curved_boundary() const
+    {
+      return type == "hertz cylinder" || !manifolds.empty();
+    }
+
+    std::string  type;
+    std::string  mesh_file;
+    unsigned int global_refinements = 0;
+    double       distortion         = 0.;
+
+    /// Geometry/Local refinements: cells whose centre lies in the box are
+    /// refined 'rounds' times (after the global refinements).
+    struct RefinementBox
+    {
+      unsigned int rounds = 0;
+      Point<dim>   lower, upper;
+    };
+    std::vector<RefinementBox> refinement_boxes;
+
+    /// Refines the boxes of refinement_boxes; throws if a box holds no cell.
+    void
+    refine_boxes(parallel::distributed::Triangulation<dim> &tria) const;
+
+  private:
+    /// Reads and checks the mesh file into coarse_mesh.
+    void
+    read_mesh_file();
+    /// The mesh file's coarse mesh with its manifolds, into @p tria.
+    void
+    create_from_mesh_file(parallel::distributed::Triangulation<dim> &tria) const;
+
+  public:
+    /// Geometry/Manifolds: the surfaces of boundary ids of a mesh file.
+    std::vector<BoundaryManifold<dim>> manifolds;
+    /// The coarse mesh of a mesh file, read and checked by
+    /// parse_parameters(), with the manifold ids set; released by
+    /// create_mesh() once copied (a large mesh need not be held twice).
+    mutable std::shared_ptr<Triangulation<dim>> coarse_mesh;
+    /// Boundaries of the mesh file that look like polygons of a curve and
+    /// have no manifold.
+    std::vector<PolygonalBoundary<dim>> polygonal_boundaries;
+
+    struct Hertz
+    {
+      double       radius                 = 8.;
+      double       plate_half_width       = 10.;
+      double       plate_thickness        = 1.;
+      double       refinement_half_width  = 0.5;
+      unsigned int cylinder_refinements   = 2;
+      unsigned int contact_refinements    = 6;
+      double       grading_factor         = 4.;
+      unsigned int plate_refinements      = 3;
+    } hertz;
+
+    struct Blocks
+    {
+      double       width = 1., height = 1., gap = 0.;
+      unsigned int lower_cells = 3, upper_cells = 5;
+    } blocks;
+  };
+} // namespace contact_fem
+
+#endif

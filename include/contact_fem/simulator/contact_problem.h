@@ -1,0 +1,444 @@
+// The driver of a scene: mesh, load steps, semi-smooth Newton, results.
+#ifndef contact_fem_contact_problem_h
+#define contact_fem_contact_problem_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <contact_fem/solvers/linear_solver.h>
+#include <contact_fem/contact/formulations/contact_formulation.h>
+#include <contact_fem/contact/contact_interface.h>
+#include <contact_fem/core/json.h>
+#include <contact_fem/material/material.h>
+#include <contact_fem/simulator/output_files.h>
+#include <contact_fem/core/parameters.h>
+#include <contact_fem/adaptivity/refinement.h>
+#include <contact_fem/geometry/scene.h>
+#include <contact_fem/adaptivity/stress_recovery.h>
+#include <contact_fem/material/volumetric_projection.h>
+
+#include <fstream>
+#include <map>
+#include <memory>
+#include <string>
+
+namespace contact_fem
+{
+  using namespace dealii;
+
+  template <int dim>
+  struct ContactNodeTraction;
+
+  /// An output stream that writes to the console and, once attached, to a log file.
+  class TeeStream : public std::ostream
+  {
+  public:
+    explicit TeeStream(std::ostream &console);
+    /// Also write to @p file from now on.
+    void
+    attach(std::ostream &file);
+    /// Whether writing to the file failed (it is then no longer written;
+    /// the console goes on).
+    bool
+    file_failed() const;
+
+  private:
+    class Buffer : public std::streambuf
+    {
+    public:
+      std::streambuf *first = nullptr, *second = nullptr;
+      bool            file_failed = false;
+
+    protected:
+      int
+      overflow(int c) override;
+      int
+      sync() override;
+
+    private:
+      void
+      drop_file();
+    } buffer;
+  };
+
+  /// Thrown when a load step cannot be solved; carries the diagnosis.
+  struct NewtonFailure : public std::runtime_error
+  {
+    explicit NewtonFailure(const std::string &what, const bool splittable = true)
+      : std::runtime_error(what)
+      , splittable(splittable)
+    {}
+    /// false if a smaller step cannot help (e.g. the bodies separate).
+    bool splittable;
+  };
+
+  /**
+   * Solves one scene: builds the mesh, steps the load, solves each step with
+   * the semi-smooth Newton method, and writes the results.
+   *
+   * Declared here, implemented in source/contact_problem.cc (set-up, Newton)
+   * and source/contact_output.cc (results, VTU, summary).
+   */
+  template <int dim>
+  class ContactProblem
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// @p prm_directory resolves relative file names of the scene.
+    ContactProblem(ParameterHandler &prm,
+                   const std::string &scene_name,
+                   const std::string &prm_directory);
+    ~ContactProblem();
+
+    /// Runs the scene; returns the process exit code.
+    int
+    run();
+
+    /// Prints the warnings the checks of the input found (e.g. a mesh that
+    /// takes more than half the available memory); run() prints them too.
+    void
+    print_input_warnings() const;
+
+  private:
+    // --- set-up (contact_problem.cc)
+    void
+    setup_dofs();
+    void
+    compute_cell_matrices();
+    void
+    compute_cell_loads(const double time);
+    /// The dim DoFs of the vertex @p point of its body, if a non-artificial
+    /// cell of this rank has it (else empty); throws naming @p key if no rank
+    /// has it. Collective.
+    std::vector<types::global_dof_index>
+    vertex_dofs(const BodyPoint &point, const std::string &key) const;
+    /// Finds the DoFs of the "Fixed points" and of the displacement probes on
+    /// this mesh; throws if a point is not a vertex of its body.
+    void
+    locate_fixed_points();
+    void
+    make_dirichlet_constraints(const double time);
+    /// Prints warnings for locking-prone Poisson's ratios and for a slave
+    /// side much stiffer than its master.
+    void
+    warn_about_modelling_choices() const;
+    /// The summary status of a run whose last cycle converged.
+    std::string
+    converged_status() const;
+    /// Prints and records a warning when |u|_max exceeds half the model
+    /// size.
+    void
+    warn_about_large_displacements(Json &cycle_record);
+    /// Records the largest strain and rotation, and prints and records a
+    /// warning when they leave the small-strain range.
+    void
+    warn_about_large_strains(Json &cycle_record);
+    /// Prints and records a warning when a unit couple on a body in contact
+    /// turns it by theta with theta G V > 50 (a weakly held rotation); uses
+    /// the factors of the converged system.
+    void
+    warn_about_weakly_held_rotation(Json &cycle_record);
+    void
+    warn_about_singular_stiffness(Json &cycle_record) const;
+    /// The largest change of a prescribed displacement from the current
+    /// solution to the values at the present time (before they are
+    /// distributed): a lower bound of the motion of the step. Collective.
+    double
+    prescribed_increment() const;
+    /// Searches the interface with the motion the step may bring (per pair,
+    /// predicted from @p prescribed and the last step) and starts the
+    /// load step of the formulation.
+    void
+    search_for_step(const double prescribed, const double step_size, const bool first_step);
+    /// During Newton: if the iterate moved the surfaces farther than the
+    /// search reaches, makes room for 1.5 times that motion and searches
+    /// again; returns whether it did.
+    bool
+    extend_search_if_outrun();
+    /// Makes room for twice the motion allowance of @p pair plus @p depth
+    /// and searches again.
+    void
+    widen_search(const unsigned int pair, const double depth);
+    /// Searches the same configuration with the present motion_allowance,
+    /// restarts the formulation's active set from the current iterate and
+    /// rebuilds the sparsity pattern.
+    void
+    search_again();
+    /// The slave node that penetrates the master most beyond what its own
+    /// mortar gap (and a small-sliding linearisation) accounts for.
+    struct PenetrationCheck
+    {
+      double       excess = 0.; ///< over the node's element size
+      unsigned int node   = 0;  ///< in interface->slave_nodes
+      double       penetration = 0., allowed = 0.;
+    };
+    /// After convergence: every slave node against the whole master surface
+    /// (ContactInterface::surface_distances()).
+    PenetrationCheck
+    check_penetration() const;
+    /// The diagnosis of a failed check_penetration(); splittable with
+    /// updated kinematics only.
+    NewtonFailure
+    penetration_failure(const PenetrationCheck &check,
+                        const unsigned int      step,
+                        const double            time) const;
+    void
+    make_sparsity_pattern();
+    void
+    make_constraints();
+    // --- Newton (contact_problem.cc)
+    void
+    solve_load_step(const unsigned int step,
+                    const double       time,
+                    const double       step_size,
+                    const bool         first_step,
+                    Json              &step_record);
+    void
+    assemble_system();
+    void
+    solve_linear_system();
+    void
+    compute_residual();
+    double
+    equilibrium_residual_norm(const std::vector<double> &contact_force_at_interface) const;
+    // --- adaptivity (refinement.cc)
+    void
+    estimate_error(Json &cycle_record);
+    /// Records and prints how far the traction of the recovered stress at
+    /// the paired slave nodes (@p node_stresses at @p nodes, the paired
+    /// interface->slave_nodes in their order) is from the exact pressure
+    /// (Hertz, reference profile) and from zero shear; keys prefixed with
+    /// @p prefix.
+    void
+    report_recovered_tractions(const std::vector<ContactNodeTraction<dim>> &nodes,
+                               const std::vector<SymmetricTensor<2, dim>> &node_stresses,
+                               const std::string                 &prefix,
+                               Json                              &cycle_record) const;
+    /// Marks and refines; false if the mesh is kept (nothing to refine).
+    bool
+    refine_mesh();
+    /// Solves one cycle on the current mesh; returns false if Newton failed.
+    bool
+    run_cycle(const unsigned int cycle, Json &cycle_record);
+    // --- checks of the input on the scene's mesh (contact_setup_checks.cc)
+    /// Builds the scene without its global and box refinements, and checks
+    /// on that mesh the contact pairs and the memory the full mesh will
+    /// need: input errors found before any work.
+    void
+    check_scene_before_meshing();
+    /// Refuses a contact pair whose two surfaces belong to the same body.
+    void
+    check_contact_pairs(const Triangulation<dim> &tria) const;
+    /// The parameters that set the size of the mesh, for messages.
+    std::string
+    refinement_keys() const;
+    /// Refuses a mesh whose estimated memory exceeds what the machine has
+    /// available, and keeps a warning in memory_warning when it takes more
+    /// than half.
+    void
+    check_memory_estimate(const parallel::distributed::Triangulation<dim> &coarse);
+    // --- diagnoses (contact_diagnosis.cc)
+    /// The resultant of the applied pressures on each body. Collective.
+    std::map<types::material_id, Tensor<1, dim>>
+    body_loads(const double time) const;
+    /// The integral of the outward normal over boundary @p id. Collective.
+    Tensor<1, dim>
+    surface_normal(const types::boundary_id id) const;
+    /// The largest distance of a vertex from the origin. Collective.
+    double
+    model_size() const;
+    /// The displacement the load at @p time causes: applied force over the
+    /// smallest Young's modulus, or the largest prescribed displacement.
+    double
+    load_displacement_scale(const double time) const;
+    /// Why the load at @p time is at the round-off of the geometry, or "".
+    std::string
+    load_at_round_off(const double time) const;
+    /// Why double precision cannot resolve this model (stiffness ratio,
+    /// nearly incompressible body), or "".
+    std::string
+    precision_limits() const;
+    /// The stiffness ratio part of precision_limits().
+    std::string
+    stiffness_contrast_limit() const;
+    /// The nearly incompressible part of precision_limits().
+    std::string
+    incompressibility_limit() const;
+    /// The applied loads along the outward normals of the contact surfaces
+    /// of their bodies: > 0 pushes the bodies together. Collective.
+    double
+    load_toward_contact(const double time) const;
+    /// The diagnosis of a step without active slave nodes at @p where:
+    /// the separating load, or the real cause if the load does not
+    /// separate the bodies. Collective.
+    std::string
+    no_contact_message(const std::string &where, const bool in_iteration) const;
+    /// The hint of a Newton failure; @p stalled: the residuals stopped
+    /// decreasing without active-set changes.
+    std::string
+    non_convergence_hint(const bool stalled, const double r_u, const double r_lambda) const;
+    /// Warns and records when the reactions do not balance the load.
+    void
+    check_reaction_balance(const Json &reaction, Json &cycle_record);
+    /// Warns about Poisson's ratios and loads beyond double precision.
+    void
+    warn_about_precision_limits() const;
+    // --- results (contact_output.cc)
+    Json
+    contact_results() const;
+    Json
+    reaction_results() const;
+    Json
+    analytical_results(const Json &contact, const Json &reaction) const;
+    /// Relative L2 error of a pressure per interface node against the Hertz
+    /// pressure over the paired slave nodes (Hertz scenes with contact).
+    double
+    hertz_pressure_error(const std::vector<double> &pressure) const;
+    /// The same against Analytical solution/Reference pressure profile.
+    double
+    reference_pressure_error(const std::vector<double> &pressure) const;
+    /// Prints and returns the displacements at Output/Displacement probes.
+    Json
+    probe_results() const;
+    void
+    write_vtu(const unsigned int step, const double time);
+    /// error_indicators-<cycle>.vtu: the mesh of the cycle with the
+    /// displacement and the cell indicators of the last estimate.
+    void
+    write_error_indicators() const;
+    void
+    write_convergence_row(const Json &cycle_record, const double cumulative_time);
+    void
+    write_pressure_profile() const;
+    /// Prints the contact results and the balance of the last load step.
+    void
+    print_results(const Json &contact_json, const Json &reaction, const Json &hertz) const;
+    void
+    write_summary(const Json &cycles, const double wall_time, const std::string &status) const;
+    /// Prepares the output directory (prepare_output_directory()) and opens
+    /// log.txt; throws naming the path if either fails. Collective.
+    OutputDirectoryReport
+    open_output_directory();
+    /// Says how many files of an earlier run the preparation removed.
+    void
+    report_earlier_outputs(const OutputDirectoryReport &report);
+    /// Throws naming @p path unless @p ok on every rank. Collective.
+    void
+    check_written(const std::string &path, const bool ok) const;
+    Tensor<1, dim>
+    applied_load(const double time) const;
+
+    MPI_Comm           comm;
+    std::ofstream      log_file;
+    TeeStream          console;
+    ConditionalOStream pcout;
+
+    std::string        scene_name;
+    Scene<dim>         scene;
+    Materials<dim>     materials;
+    BoundaryConditions boundary_conditions;
+    LoadStepping       load_stepping;
+    ContactParameters  contact_parameters;
+    NewtonParameters   newton_parameters;
+    AnalyticalSolution analytical;
+    OutputParameters     output;
+    RefinementParameters refinement;
+    StressRecoverySettings spr_settings; ///< the contact-traction penalties of SPR
+    unsigned int       degree;
+
+    parallel::distributed::Triangulation<dim> triangulation;
+    FESystem<dim>                             fe;
+    /// Element degree, or 2 for Q1 on curved boundaries (Finite
+    /// element/Mapping degree); made once the scene is known. Degree 2 is a
+    /// MappingQCache, filled per mesh.
+    std::unique_ptr<MappingQ<dim>>            mapping;
+    DoFHandler<dim>                           dof_handler;
+    /// Present with Finite element/Volumetric strain = B-bar (after fe and
+    /// mapping, which it refers to).
+    std::unique_ptr<VolumetricProjection<dim>> volumetric_projection;
+    IndexSet                                  owned_dofs, relevant_dofs, writable_dofs;
+
+    AffineConstraints<double> hanging_constraints;
+    AffineConstraints<double> dirichlet_constraints;
+    std::vector<types::global_dof_index> fixed_point_dofs; ///< locally relevant
+    /// Per Output/Displacement probes entry: its vertex DoFs (see
+    /// vertex_dofs()).
+    std::vector<std::vector<types::global_dof_index>> probe_dofs;
+    AffineConstraints<double> constraints;
+
+    TrilinosWrappers::SparseMatrix system_matrix;
+    std::unique_ptr<LinearSolver>  linear_solver; ///< after the matrix it refers to
+    /// Newton solves of this cycle whose matrix had zero pivots, and the most.
+    unsigned int singular_solves = 0, most_null_pivots = 0;
+    TrilinosWrappers::MPI::Vector  system_rhs;
+    TrilinosWrappers::MPI::Vector  solution;         ///< owned
+    TrilinosWrappers::MPI::Vector  ghosted_solution; ///< locally relevant
+    TrilinosWrappers::MPI::Vector  residual;         ///< C_h^T (K u - f), writable
+
+    std::vector<FullMatrix<double>> cell_matrices; ///< by active cell index
+    std::vector<Vector<double>>     cell_loads;    ///< by active cell index, may be empty
+
+    /// Present only when the scene has contact pairs.
+    std::unique_ptr<ContactInterface<dim>> interface;
+    std::unique_ptr<ContactFormulation<dim>> contact;
+    std::vector<double>                    interface_displacement;
+    std::vector<double>                    interface_fixed_values;
+    std::vector<double>                    interface_residual;
+    std::vector<bool>                      interface_dof_fixed;
+    /// Interface displacement of the configuration the operators are built
+    /// on: zero with small kinematics, the step's start with updated.
+    std::vector<double>                    search_configuration;
+    /// Interface displacement at the start of the current load step.
+    std::vector<double>                    step_start_displacement;
+    /// The search reaches this many times the motion it is sized for.
+    static constexpr double                search_growth = 1.5;
+    /// Wider searches for an unpaired penetrating node before giving up.
+    static constexpr unsigned int          max_searches_after_check = 3;
+    /// Small sliding: the normal turns by less than this (radians) along
+    /// the slip of a node, so a linearised gap errs by less than this times
+    /// the slip (check_penetration()).
+    static constexpr double                max_sliding_angle = 0.1;
+    /// Per pair: the motion allowance of the current search, and the
+    /// relative surface motion of the last converged step (with its size),
+    /// from which the next step's is predicted.
+    std::vector<double>                    motion_allowance, last_step_motion;
+    double                                 last_step_size = 0.;
+    /// Of the last converged step: the largest unexplained penetration / h.
+    double                                 last_penetration_excess = 0.;
+
+    std::unique_ptr<TimerOutput>       timer; ///< made once the input is valid
+    double                             current_time = 0.;
+    std::vector<std::pair<double, std::string>> vtu_records;
+    Vector<float>                               indicators; ///< of the last estimate
+    double relative_estimate = 0.; ///< eta / |u|_E of the last SPR estimate
+    /// The linear solver can still answer for the current load step's last
+    /// Newton system (LinearSolver::solve_again()).
+    bool factorisation_current = false;
+    /// Time of diagnostics of the current cycle left out of its wall time.
+    double uncounted_wall_time = 0.;
+    /// Displacement interpolated from the previous mesh (owned entries).
+    std::unique_ptr<TrilinosWrappers::MPI::Vector> transferred_solution;
+    unsigned int                                   cycle = 0;
+    std::vector<unsigned int> newton_iterations_of_cycle; ///< per load step
+    double strain_energy = 0., external_work = 0.; ///< at the last residual
+    std::ofstream                                  convergence_csv;
+    /// Set by check_memory_estimate(), printed by run().
+    std::string memory_warning;
+    /// A cycle's reactions did not balance its load (check_reaction_balance()).
+    bool balance_failed = false;
+  };
+} // namespace contact_fem
+
+#endif

@@ -1,0 +1,113 @@
+#include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <contact_fem/adaptivity/marking.h>
+
+#include <vector>
+
+namespace contact_fem::Marking
+{
+  template <int dim>
+  void
+  flag_cells(parallel::distributed::Triangulation<dim> &triangulation,
+             const Vector<float>                       &indicators,
+             const RefinementParameters                &parameters)
+  {
+    if (parameters.estimator == "global")
+      {
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            cell->set_refine_flag();
+      }
+    else if (parameters.strategy == "fixed fraction")
+      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_fraction(
+        triangulation, indicators, parameters.refine_fraction, parameters.coarsen_fraction);
+    else if (parameters.strategy == "fixed number")
+      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
+        triangulation, indicators, parameters.refine_fraction, parameters.coarsen_fraction);
+    else
+      {
+        float local_max = 0.;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            local_max = std::max(local_max, indicators(cell->active_cell_index()));
+        const double largest =
+          Utilities::MPI::max(double(local_max), triangulation.get_communicator());
+        const double threshold = parameters.refine_fraction * largest;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned() && indicators(cell->active_cell_index()) > threshold)
+            cell->set_refine_flag();
+      }
+  }
+
+  template <int dim>
+  void
+  flag_layers_behind_faces(parallel::distributed::Triangulation<dim> &triangulation,
+                           const std::set<types::boundary_id>        &contact_ids,
+                           const unsigned int                         layers)
+  {
+    if (contact_ids.empty())
+      return;
+
+    // The front: the cells flagged in the last layer. Each process pulls
+    // the flags of its cells from the front cells next to them, ghosts
+    // included, so the result does not depend on the partition.
+    std::vector<bool> in_front(triangulation.n_active_cells(), false);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->refine_flag_set())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary() && contact_ids.count(cell->face(f)->boundary_id()))
+            in_front[cell->active_cell_index()] = true;
+
+    using CellIterator = typename Triangulation<dim>::active_cell_iterator;
+    for (unsigned int layer = 1; layer < layers; ++layer)
+      {
+        GridTools::exchange_cell_data_to_ghosts<unsigned char, Triangulation<dim>>(
+          triangulation,
+          [&](const CellIterator &cell) -> std_cxx17::optional<unsigned char> {
+            return static_cast<unsigned char>(in_front[cell->active_cell_index()]);
+          },
+          [&](const CellIterator &cell, const unsigned char &value) {
+            in_front[cell->active_cell_index()] = value != 0;
+          });
+        // A cell joins if a front cell of its level or finer shares a face.
+        const auto in_front_cell = [&](const CellIterator &neighbor) {
+          return neighbor->is_active() && in_front[neighbor->active_cell_index()];
+        };
+        std::vector<bool> next(in_front.size(), false);
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned() && !cell->refine_flag_set())
+            for (const auto f : cell->face_indices())
+              {
+                if (cell->at_boundary(f))
+                  continue;
+                const auto neighbor = cell->neighbor(f);
+                bool       joins    = false;
+                if (!neighbor->has_children())
+                  joins = neighbor->level() == cell->level() && in_front_cell(neighbor);
+                else
+                  for (unsigned int sf = 0; sf < cell->face(f)->n_children(); ++sf)
+                    joins = joins || in_front_cell(cell->neighbor_child_on_subface(f, sf));
+                if (joins)
+                  next[cell->active_cell_index()] = true;
+              }
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (next[cell->active_cell_index()])
+            cell->set_refine_flag();
+        in_front = std::move(next);
+      }
+  }
+
+  template void
+  flag_cells(parallel::distributed::Triangulation<2> &, const Vector<float> &,
+             const RefinementParameters &);
+  template void
+  flag_cells(parallel::distributed::Triangulation<3> &, const Vector<float> &,
+             const RefinementParameters &);
+  template void
+  flag_layers_behind_faces(parallel::distributed::Triangulation<2> &,
+                           const std::set<types::boundary_id> &, const unsigned int);
+  template void
+  flag_layers_behind_faces(parallel::distributed::Triangulation<3> &,
+                           const std::set<types::boundary_id> &, const unsigned int);
+} // namespace contact_fem::Marking

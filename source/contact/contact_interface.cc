@@ -1,0 +1,643 @@
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/boost_adaptors/bounding_box.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/numerics/rtree.h>
+
+#include <contact_fem/contact/contact_interface.h>
+#include <contact_fem/contact/mortar.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace contact_fem
+{
+  template <int dim>
+  void
+  ContactInterface<dim>::initialize(const MappingQ<dim>             &mapping,
+                                    const DoFHandler<dim>           &dof_handler,
+                                    const std::vector<ContactPair>  &contact_pairs,
+                                    const AffineConstraints<double> &dirichlet,
+                                    const Materials<dim>            &materials,
+                                    const MPI_Comm                   comm)
+  {
+    AssertThrow(dim == 2,
+                ExcMessage("Contact: mortar contact is implemented in 2D only so far."));
+    pairs        = contact_pairs;
+    communicator = comm;
+    owned_dofs   = dof_handler.locally_owned_dofs();
+    const FiniteElement<dim> &fe = dof_handler.get_fe();
+    degree                       = fe.degree;
+    geometry_degree              = std::max(degree, mapping.get_degree());
+    AssertThrow(geometry_degree == degree || (degree == 1 && geometry_degree == 2),
+                ExcMessage("Contact: the face geometry may exceed the element degree "
+                           "only for degree-1 elements on a quadratic mapping."));
+    const unsigned int nodes_per_face = fe.n_dofs_per_face() / dim;
+    // Geometry nodes without DoFs: the face midpoint of Q1 on a quadratic
+    // mapping, whose faces follow the curved boundary.
+    const unsigned int n_geometry_points = geometry_degree - degree;
+
+    // Support points of the base element on a face, in face DoF order.
+    const Quadrature<dim - 1> support(fe.base_element(0).get_unit_face_support_points());
+    FEFaceValues<dim>         fe_face(mapping, fe, support,
+                              update_quadrature_points | update_normal_vectors);
+    FEFaceValues<dim>         fe_face_midpoint(mapping, fe,
+                                       Quadrature<dim - 1>(Point<dim - 1>::unit_vector(0) * 0.5),
+                                       update_quadrature_points);
+
+    // Pack the local faces: [pair, slave, E, nu, orientation, then per node:
+    // coordinates, dofs, fixed flags].
+    std::vector<double>                  packed;
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            for (unsigned int p = 0; p < pairs.size(); ++p)
+              for (const bool slave : {true, false})
+                {
+                  const types::boundary_id id = slave ? pairs[p].slave : pairs[p].master;
+                  if (cell->face(f)->boundary_id() != id)
+                    continue;
+                  fe_face.reinit(cell, f);
+                  cell->face(f)->get_dof_indices(face_dofs);
+                  std::vector<std::array<types::global_dof_index, dim>> node_dofs(
+                    nodes_per_face);
+                  for (unsigned int i = 0; i < face_dofs.size(); ++i)
+                    {
+                      const auto ci = fe.face_system_to_component_index(i, f);
+                      node_dofs[ci.second][ci.first] = face_dofs[i];
+                    }
+                  // Orientation: compare the rotated tangent of the node
+                  // polygon with the outward normal.
+                  Mortar::LineFace line;
+                  for (unsigned int k = 0; k < nodes_per_face; ++k)
+                    {
+                      Point<2> x;
+                      for (unsigned int d = 0; d < 2; ++d)
+                        x[d] = fe_face.quadrature_point(k)[d];
+                      line.nodes.push_back(x);
+                    }
+                  const Tensor<1, 2> n_rot = Mortar::face_normal(line, -1., 1.);
+                  double             dot   = 0.;
+                  for (unsigned int d = 0; d < 2; ++d)
+                    dot += n_rot[d] * fe_face.normal_vector(0)[d];
+
+                  packed.push_back(p);
+                  packed.push_back(slave ? 1. : 0.);
+                  packed.push_back(materials.constants(cell->material_id()).youngs_modulus);
+                  packed.push_back(materials.constants(cell->material_id()).poisson_ratio);
+                  packed.push_back(dot > 0 ? 1. : -1.);
+                  for (unsigned int k = 0; k < nodes_per_face; ++k)
+                    {
+                      for (unsigned int d = 0; d < dim; ++d)
+                        packed.push_back(fe_face.quadrature_point(k)[d]);
+                      for (unsigned int d = 0; d < dim; ++d)
+                        packed.push_back(static_cast<double>(node_dofs[k][d]));
+                      for (unsigned int d = 0; d < dim; ++d)
+                        {
+                          const auto dof = node_dofs[k][d];
+                          const bool fixed =
+                            dirichlet.is_constrained(dof) &&
+                            dirichlet.get_constraint_entries(dof)->empty();
+                          packed.push_back(fixed ? 1. : 0.);
+                        }
+                    }
+                  if (n_geometry_points > 0)
+                    {
+                      fe_face_midpoint.reinit(cell, f);
+                      for (unsigned int d = 0; d < dim; ++d)
+                        packed.push_back(fe_face_midpoint.quadrature_point(0)[d]);
+                    }
+                }
+
+    const auto all = Utilities::MPI::all_gather(comm, packed);
+
+    nodes.clear();
+    faces.clear();
+    slave_faces_per_rank.clear();
+    master_faces_per_rank.clear();
+    std::map<types::global_dof_index, unsigned int> node_of_dof;
+    const unsigned int record = 5 + nodes_per_face * 3 * dim + n_geometry_points * dim;
+    for (const auto &chunk : all)
+      {
+      slave_faces_per_rank.push_back(0);
+      master_faces_per_rank.push_back(0);
+      for (unsigned int r = 0; r + record <= chunk.size(); r += record)
+        {
+          Face face;
+          face.pair           = static_cast<unsigned int>(chunk[r]);
+          face.slave          = chunk[r + 1] > 0.5;
+          face.youngs_modulus = chunk[r + 2];
+          face.poisson_ratio  = chunk[r + 3];
+          face.orientation    = chunk[r + 4];
+          for (unsigned int k = 0; k < nodes_per_face; ++k)
+            {
+              const double *data = &chunk[r + 5 + k * 3 * dim];
+              Node          node;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  node.reference[d] = data[d];
+                  node.dofs[d] = static_cast<types::global_dof_index>(data[dim + d]);
+                  node.fixed[d] = data[2 * dim + d] > 0.5;
+                }
+              const auto it = node_of_dof.find(node.dofs[0]);
+              unsigned int index;
+              if (it == node_of_dof.end())
+                {
+                  index                     = nodes.size();
+                  node_of_dof[node.dofs[0]] = index;
+                  nodes.push_back(node);
+                }
+              else
+                index = it->second;
+              (face.slave ? nodes[index].slave : nodes[index].master) = true;
+              face.nodes.push_back(index);
+            }
+          for (unsigned int k = 0; k < n_geometry_points; ++k)
+            {
+              const double *data = &chunk[r + 5 + nodes_per_face * 3 * dim + k * dim];
+              Point<dim>    x;
+              for (unsigned int d = 0; d < dim; ++d)
+                x[d] = data[d];
+              face.geometry_points.push_back(x);
+            }
+          ++(face.slave ? slave_faces_per_rank.back() : master_faces_per_rank.back());
+          faces.push_back(face);
+        }
+      }
+
+    interface_dofs.clear();
+    for (const auto &node : nodes)
+      for (unsigned int d = 0; d < dim; ++d)
+        interface_dofs.push_back(node.dofs[d]);
+    std::sort(interface_dofs.begin(), interface_dofs.end());
+    dof_position.clear();
+    for (unsigned int i = 0; i < interface_dofs.size(); ++i)
+      dof_position[interface_dofs[i]] = i;
+    slave_nodes.clear();
+    statistics.assign(pairs.size(), PairStatistics());
+  }
+
+  template <int dim>
+  std::vector<double>
+  ContactInterface<dim>::gather(const TrilinosWrappers::MPI::Vector &v) const
+  {
+    return gather([&v](const types::global_dof_index i) { return v(i); });
+  }
+
+  template <int dim>
+  std::vector<double>
+  ContactInterface<dim>::gather(
+    const std::function<double(types::global_dof_index)> &value_on_owner) const
+  {
+    std::vector<double> values(interface_dofs.size(), 0.);
+    for (unsigned int i = 0; i < interface_dofs.size(); ++i)
+      if (owned_dofs.is_element(interface_dofs[i]))
+        values[i] = value_on_owner(interface_dofs[i]);
+    // Each value has exactly one owner, so the sum is exact.
+    std::vector<double> result(values.size());
+    Utilities::MPI::sum(ArrayView<const double>(values), communicator,
+                        ArrayView<double>(result));
+    return result;
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  ContactInterface<dim>::displacement(const unsigned int         n,
+                                      const std::vector<double> &u) const
+  {
+    Tensor<1, dim> result;
+    for (unsigned int d = 0; d < dim; ++d)
+      result[d] = u[dof_position.at(nodes[n].dofs[d])];
+    return result;
+  }
+
+  template <int dim>
+  double
+  ContactInterface<dim>::gap(const SlaveNode &s, const std::vector<double> &u) const
+  {
+    Tensor<1, dim> weighted = -s.D * (nodes[s.node].reference + displacement(s.node, u));
+    for (const auto &[m, value] : s.M)
+      weighted += value * (nodes[m].reference + displacement(m, u));
+    return (s.normal * weighted + s.curvature_gap) / s.D;
+  }
+
+  template <int dim>
+  Mortar::LineFace
+  ContactInterface<dim>::line(const Face &face, const std::vector<Tensor<1, dim>> &u) const
+  {
+    const auto position = [&](const Point<dim> &X, const Tensor<1, dim> &displacement) {
+      Point<2> x;
+      for (unsigned int d = 0; d < 2; ++d)
+        x[d] = X[d] + displacement[d];
+      return x;
+    };
+    Mortar::LineFace result;
+    result.element_degree = degree;
+    for (const unsigned int n : face.nodes)
+      result.nodes.push_back(position(nodes[n].reference, u.empty() ? Tensor<1, dim>() : u[n]));
+    // The geometry midpoint moves with the linear displacement of the face.
+    for (const Point<dim> &X : face.geometry_points)
+      result.nodes.push_back(
+        position(X,
+                 u.empty() ? Tensor<1, dim>() : 0.5 * (u[face.nodes[0]] + u[face.nodes[1]])));
+    return result;
+  }
+
+  namespace
+  {
+    /// The box of the nodes of @p line (a 2D face; dim is the space's).
+    template <int dim>
+    BoundingBox<dim>
+    face_box(const Mortar::LineFace &line)
+    {
+      std::vector<Point<dim>> points;
+      for (const auto &x : line.nodes)
+        points.push_back(Point<dim>(x[0], x[1]));
+      return BoundingBox<dim>(points);
+    }
+
+    double
+    face_length(const Mortar::LineFace &line)
+    {
+      const QGauss<1> q(3);
+      double          length = 0.;
+      for (unsigned int i = 0; i < q.size(); ++i)
+        length += 2. * q.weight(i) * line.tangent(2. * q.point(i)[0] - 1.).norm();
+      return length;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ContactInterface<dim>::update(const std::vector<double> &u_at_dofs,
+                                const double               search_factor,
+                                const std::vector<double> &motion_allowance)
+  {
+    if constexpr (dim != 2)
+      {
+        (void)u_at_dofs;
+        (void)search_factor;
+        (void)motion_allowance;
+        AssertThrow(false, ExcNotImplemented());
+      }
+    else
+      {
+        search_displacement = u_at_dofs;
+        reach_of_search.assign(pairs.size(), std::numeric_limits<double>::max());
+        std::vector<Tensor<1, dim>> u(nodes.size());
+        for (unsigned int n = 0; n < nodes.size(); ++n)
+          u[n] = displacement(n, u_at_dofs);
+
+        std::vector<Mortar::LineFace> lines(faces.size());
+        std::vector<double>           lengths(faces.size());
+        for (unsigned int f = 0; f < faces.size(); ++f)
+          {
+            lines[f]   = line(faces[f], u);
+            lengths[f] = face_length(lines[f]);
+          }
+
+        // Nodal normals, areas and sizes of the slave nodes.
+        std::map<unsigned int, SlaveNode> slave_data;
+        for (unsigned int f = 0; f < faces.size(); ++f)
+          if (faces[f].slave)
+            for (unsigned int k = 0; k < faces[f].nodes.size(); ++k)
+              {
+                SlaveNode &s = slave_data[faces[f].nodes[k]];
+                s.node       = faces[f].nodes[k];
+                s.pair       = faces[f].pair;
+                const Tensor<1, 2> n =
+                  Mortar::face_normal(lines[f], Mortar::node_parameter(degree, k),
+                                      faces[f].orientation);
+                for (unsigned int d = 0; d < 2; ++d)
+                  s.normal[d] += lengths[f] * n[d];
+                const QGauss<1> q(degree + 1);
+                for (unsigned int i = 0; i < q.size(); ++i)
+                  {
+                    const double xi = 2. * q.point(i)[0] - 1.;
+                    s.full_area += 2. * q.weight(i) * lines[f].tangent(xi).norm() *
+                                   Mortar::shape_value(degree, k, xi);
+                  }
+                s.size += lengths[f] / degree;
+              }
+        std::map<unsigned int, unsigned int> n_adjacent;
+        for (const auto &face : faces)
+          if (face.slave)
+            for (const unsigned int n : face.nodes)
+              ++n_adjacent[n];
+        for (auto &[n, s] : slave_data)
+          {
+            s.normal /= s.normal.norm();
+            s.size /= n_adjacent[n];
+          }
+
+        // Broad phase: one R-tree of master face boxes per pair.
+        statistics.assign(pairs.size(), PairStatistics());
+        std::map<unsigned int, std::map<unsigned int, double>> M_of_node;
+        std::map<unsigned int, Tensor<1, 2>>                   weighted_gap_of_node;
+        std::vector<bool> master_is_candidate(faces.size(), false);
+        for (unsigned int p = 0; p < pairs.size(); ++p)
+          {
+            const double allowance = motion_allowance.empty() ? 0. : motion_allowance[p];
+            std::vector<std::pair<BoundingBox<dim>, unsigned int>> master_boxes;
+            for (unsigned int f = 0; f < faces.size(); ++f)
+              if (!faces[f].slave && faces[f].pair == p)
+                {
+                  BoundingBox<dim> box = face_box<dim>(lines[f]);
+                  box.extend(1e-2 * lengths[f]);
+                  master_boxes.emplace_back(box, f);
+                  ++statistics[p].master_faces;
+                }
+            const auto tree = pack_rtree(master_boxes);
+
+            double       slave_length = 0., slave_modulus = 0.;
+            unsigned int n_overlapping_faces = 0;
+            for (unsigned int f = 0; f < faces.size(); ++f)
+              {
+                if (!faces[f].slave || faces[f].pair != p)
+                  continue;
+                ++statistics[p].slave_faces;
+                BoundingBox<dim> box = face_box<dim>(lines[f]);
+                box.extend(search_factor * lengths[f] + allowance);
+                reach_of_search[p] =
+                  std::min(reach_of_search[p], search_factor * lengths[f] + allowance);
+
+                std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
+                tree.query(boost::geometry::index::intersects(box),
+                           std::back_inserter(hits));
+                std::sort(hits.begin(), hits.end(),
+                          [](const auto &a, const auto &b) { return a.second < b.second; });
+                if (hits.empty())
+                  continue;
+
+                // Narrow phase: opposing normals, then exact segmentation.
+                std::vector<Tensor<1, 2>> normals;
+                for (const unsigned int n : faces[f].nodes)
+                  {
+                    Tensor<1, 2> nn;
+                    for (unsigned int d = 0; d < 2; ++d)
+                      nn[d] = slave_data[n].normal[d];
+                    normals.push_back(nn);
+                  }
+                const Tensor<1, 2> n_slave =
+                  Mortar::face_normal(lines[f], 0., faces[f].orientation);
+                // Segmentation first: the dual basis is built on the part of
+                // the slave face that the masters cover.
+                std::vector<unsigned int>               masters;
+                std::vector<std::pair<double, double>> intervals;
+                for (const auto &hit : hits)
+                  {
+                    const unsigned int m = hit.second;
+                    ++statistics[p].candidate_pairs;
+                    const Tensor<1, 2> n_master =
+                      Mortar::face_normal(lines[m], 0., faces[m].orientation);
+                    double lower, upper;
+                    if (n_slave * n_master < 0. &&
+                        Mortar::overlap(lines[f], normals, lines[m], lower, upper))
+                      {
+                        masters.push_back(m);
+                        intervals.emplace_back(lower, upper);
+                      }
+                  }
+                if (masters.empty())
+                  continue;
+                const FullMatrix<double> A =
+                  Mortar::dual_basis_coefficients(lines[f], intervals);
+                bool overlapping = false;
+                for (const unsigned int m : masters)
+                  {
+                    Mortar::SegmentOperators ops;
+                    if (!Mortar::integrate_pair(lines[f], normals, A, lines[m],
+                                                degree + 3, ops))
+                      continue;
+                    ++statistics[p].overlapping_pairs;
+                    overlapping            = true;
+                    master_is_candidate[m] = true;
+                    for (unsigned int j = 0; j < faces[f].nodes.size(); ++j)
+                      {
+                        SlaveNode &s = slave_data[faces[f].nodes[j]];
+                        s.D += ops.D[j];
+                        weighted_gap_of_node[s.node] += ops.weighted_gap[j];
+                        for (unsigned int l = 0; l < faces[m].nodes.size(); ++l)
+                          M_of_node[s.node][faces[m].nodes[l]] += ops.M(j, l);
+                      }
+                  }
+                if (overlapping)
+                  {
+                    ++n_overlapping_faces;
+                    slave_length += lengths[f];
+                    slave_modulus += lengths[f] * faces[f].youngs_modulus;
+                  }
+              }
+
+            double master_length = 0., master_modulus = 0.;
+            unsigned int n_master = 0;
+            for (unsigned int f = 0; f < faces.size(); ++f)
+              if (!faces[f].slave && faces[f].pair == p && master_is_candidate[f])
+                {
+                  master_length += lengths[f];
+                  master_modulus += lengths[f] * faces[f].youngs_modulus;
+                  ++n_master;
+                }
+            // Moduli and sizes of the overlapping faces only: the parts of
+            // the surfaces far from contact must not dilute the penalty.
+            PairStatistics &stat = statistics[p];
+            if (n_overlapping_faces > 0)
+              {
+                stat.slave_modulus    = slave_modulus / slave_length;
+                stat.mean_slave_size  = slave_length / n_overlapping_faces;
+                stat.master_modulus   = master_modulus / master_length;
+                stat.mean_master_size = master_length / n_master;
+              }
+          }
+
+        // A node counts as paired when the master covers a fair part of its
+        // support; tiny or negative dual weights at the rim of the master
+        // surface would make its gap ill-defined.
+        slave_nodes.clear();
+        for (auto &[n, s] : slave_data)
+          {
+            s.paired = s.D > 1e-2 * s.full_area;
+            if (s.paired)
+              {
+                for (const auto &[m, value] : M_of_node[n])
+                  s.M.emplace_back(m, value);
+                // gap() is still the nodal form here (curvature_gap = 0).
+                Tensor<1, 2> normal;
+                for (unsigned int d = 0; d < 2; ++d)
+                  normal[d] = s.normal[d];
+                s.curvature_gap = normal * weighted_gap_of_node[n] - s.D * gap(s, u_at_dofs);
+              }
+            slave_nodes.push_back(s);
+          }
+      }
+  }
+
+  template <int dim>
+  std::vector<double>
+  ContactInterface<dim>::relative_motion(const std::vector<double> &from,
+                                         const std::vector<double> &to) const
+  {
+    std::vector<double> slave_motion(pairs.size(), 0.), master_motion(pairs.size(), 0.);
+    for (const auto &face : faces)
+      for (const unsigned int n : face.nodes)
+        {
+          const double change =
+            (displacement(n, to) - displacement(n, from)).norm();
+          double &largest = face.slave ? slave_motion[face.pair] : master_motion[face.pair];
+          largest         = std::max(largest, change);
+        }
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      slave_motion[p] += master_motion[p];
+    return slave_motion;
+  }
+
+  template <int dim>
+  double
+  ContactInterface<dim>::nodal_gap(const SlaveNode &s, const std::vector<double> &u) const
+  {
+    return gap(s, u) - s.curvature_gap / s.D;
+  }
+
+  template <int dim>
+  double
+  ContactInterface<dim>::slip_since_search(const SlaveNode           &s,
+                                           const std::vector<double> &u) const
+  {
+    const auto change = [&](const unsigned int n) {
+      return displacement(n, u) - displacement(n, search_displacement);
+    };
+    Tensor<1, dim> relative = s.D * change(s.node);
+    for (const auto &[m, value] : s.M)
+      relative -= value * change(m);
+    return relative.norm() / s.D;
+  }
+
+  namespace
+  {
+    /// The point of @p face closest to @p x: its parameter in [-1, 1]
+    /// (Gauss-Newton from the chord projection, exact for straight faces).
+    double
+    closest_parameter(const Mortar::LineFace &face, const Point<2> &x)
+    {
+      const Tensor<1, 2> chord = face.nodes[1] - face.nodes[0];
+      double xi = std::clamp(2. * ((x - face.nodes[0]) * chord) / chord.norm_square() - 1.,
+                             -1., 1.);
+      if (face.degree() == 1)
+        return xi;
+      for (unsigned int it = 0; it < 20; ++it)
+        {
+          const Tensor<1, 2> t    = face.tangent(xi);
+          const double       step = ((x - face.point(xi)) * t) / t.norm_square();
+          const double       next = std::clamp(xi + step, -1., 1.);
+          const bool         done = std::abs(next - xi) < 1e-12;
+          xi                      = next;
+          if (done)
+            break;
+        }
+      return xi;
+    }
+  } // namespace
+
+  template <int dim>
+  std::vector<double>
+  ContactInterface<dim>::surface_distances(const std::vector<double> &u_at_dofs) const
+  {
+    std::vector<double> distances(slave_nodes.size(),
+                                  std::numeric_limits<double>::infinity());
+    if constexpr (dim != 2)
+      {
+        (void)u_at_dofs;
+        AssertThrow(false, ExcNotImplemented());
+      }
+    else
+      {
+        std::vector<Tensor<1, dim>> u(nodes.size());
+        for (unsigned int n = 0; n < nodes.size(); ++n)
+          u[n] = displacement(n, u_at_dofs);
+        // Master faces per node, to tell a vertex inside the master surface
+        // (two faces: sign by their mean normal) from its rim (one face).
+        std::vector<std::vector<unsigned int>> master_faces_of_node(nodes.size());
+        std::vector<Mortar::LineFace>          lines(faces.size());
+        for (unsigned int f = 0; f < faces.size(); ++f)
+          if (!faces[f].slave)
+            {
+              lines[f] = line(faces[f], u);
+              for (const unsigned int n : faces[f].nodes)
+                master_faces_of_node[n].push_back(f);
+            }
+        const auto outward_normal = [&](const unsigned int f, const double xi) {
+          return Mortar::face_normal(lines[f], xi, faces[f].orientation);
+        };
+
+        for (unsigned int p = 0; p < pairs.size(); ++p)
+          {
+            std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
+            for (unsigned int f = 0; f < faces.size(); ++f)
+              if (!faces[f].slave && faces[f].pair == p)
+                boxes.emplace_back(face_box<dim>(lines[f]), f);
+            if (boxes.empty())
+              continue;
+            const auto tree = pack_rtree(boxes);
+
+            for (unsigned int i = 0; i < slave_nodes.size(); ++i)
+              {
+                const SlaveNode &s = slave_nodes[i];
+                if (s.pair != p)
+                  continue;
+                const Point<dim> xd = nodes[s.node].reference + u[s.node];
+                const Point<2>   x(xd[0], xd[1]);
+                // The nearest box bounds the distance from above; every face
+                // closer than that has its box within that distance.
+                std::vector<std::pair<BoundingBox<dim>, unsigned int>> nearest;
+                tree.query(boost::geometry::index::nearest(xd, 1),
+                           std::back_inserter(nearest));
+                const auto  &first = lines[nearest[0].second];
+                const double bound = x.distance(first.point(closest_parameter(first, x)));
+                BoundingBox<dim> around(std::make_pair(xd, xd));
+                around.extend(bound * (1. + 1e-12) + 1e-300);
+                std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
+                tree.query(boost::geometry::index::intersects(around),
+                           std::back_inserter(hits));
+
+                double       best = std::numeric_limits<double>::infinity(), best_xi = 0.;
+                unsigned int best_face = 0;
+                for (const auto &hit : hits)
+                  {
+                    const unsigned int f  = hit.second;
+                    const double       xi = closest_parameter(lines[f], x);
+                    const double       d  = x.distance(lines[f].point(xi));
+                    // Ties (a shared vertex) go to the lower face index, so
+                    // the result does not depend on the query order.
+                    if (d < best - 1e-14 * bound || (d <= best && f < best_face))
+                      {
+                        best      = d;
+                        best_xi   = xi;
+                        best_face = f;
+                      }
+                  }
+                Tensor<1, 2> normal;
+                if (std::abs(best_xi) < 1.)
+                  normal = outward_normal(best_face, best_xi);
+                else
+                  {
+                    const unsigned int vertex = faces[best_face].nodes[best_xi < 0. ? 0 : 1];
+                    if (master_faces_of_node[vertex].size() < 2)
+                      continue; // beyond the rim of the master surface
+                    for (const unsigned int f : master_faces_of_node[vertex])
+                      normal += outward_normal(f, faces[f].nodes[0] == vertex ? -1. : 1.);
+                  }
+                const double side = (x - lines[best_face].point(best_xi)) * normal;
+                distances[i]      = side < 0. ? -best : best;
+              }
+          }
+      }
+    return distances;
+  }
+
+  template class ContactInterface<2>;
+  template class ContactInterface<3>;
+} // namespace contact_fem

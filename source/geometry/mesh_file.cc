@@ -1,0 +1,844 @@
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/numerics/rtree.h>
+
+#include <contact_fem/geometry/mesh_file.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <sstream>
+
+namespace contact_fem
+{
+  namespace
+  {
+    const std::string mesh_key = "Geometry/Mesh file";
+
+    /// The Gmsh element types that meshes of contact_fem's kind may hold,
+    /// and the common ones it refuses (for a message naming them).
+    struct ElementType
+    {
+      int          gmsh_type;
+      unsigned int dim;
+      unsigned int n_nodes;
+      const char  *singular;
+      const char  *plural;
+      bool         simplex;
+      bool         first_order;
+    };
+
+    const ElementType element_types[] = {
+      {15, 0, 1, "point", "points", false, true},
+      {1, 1, 2, "line", "lines", false, true},
+      {2, 2, 3, "triangle", "triangles", true, true},
+      {3, 2, 4, "quadrilateral", "quadrilaterals", false, true},
+      {4, 3, 4, "tetrahedron", "tetrahedra", true, true},
+      {5, 3, 8, "hexahedron", "hexahedra", false, true},
+      {6, 3, 6, "prism", "prisms", true, true},
+      {7, 3, 5, "pyramid", "pyramids", true, true},
+      {8, 1, 3, "3-node line", "3-node lines", false, false},
+      {9, 2, 6, "6-node triangle", "6-node triangles", true, false},
+      {10, 2, 9, "9-node quadrilateral", "9-node quadrilaterals", false, false},
+      {11, 3, 10, "10-node tetrahedron", "10-node tetrahedra", true, false},
+      {12, 3, 27, "27-node hexahedron", "27-node hexahedra", false, false},
+      {13, 3, 18, "18-node prism", "18-node prisms", true, false},
+      {14, 3, 14, "14-node pyramid", "14-node pyramids", true, false},
+      {16, 2, 8, "8-node quadrilateral", "8-node quadrilaterals", false, false},
+      {17, 3, 20, "20-node hexahedron", "20-node hexahedra", false, false},
+      {18, 3, 15, "15-node prism", "15-node prisms", true, false},
+      {19, 3, 13, "13-node pyramid", "13-node pyramids", true, false}};
+
+    const ElementType *
+    find_element_type(const int gmsh_type)
+    {
+      for (const auto &type : element_types)
+        if (type.gmsh_type == gmsh_type)
+          return &type;
+      return nullptr;
+    }
+
+    /// What the scan found in the file.
+    struct Contents
+    {
+      std::map<int, std::size_t> elements; ///< Gmsh type -> count
+      std::size_t                n_nodes = 0;
+      bool                       have_nodes = false, have_elements = false;
+      double z_min = std::numeric_limits<double>::max(), z_max = -z_min;
+      double extent = 0.; ///< largest |x|, |y| or |z| of a node
+    };
+
+    /// Reads a text file line by line and knows the line number, so that
+    /// every message can name it.
+    class LineReader
+    {
+    public:
+      explicit LineReader(const std::string &file)
+        : file(file)
+        , in(file)
+      {}
+
+      /// The next line without its line ending; false at the end of the file.
+      bool
+      next(std::string &line)
+      {
+        if (!std::getline(in, line))
+          return false;
+        ++line_number;
+        if (!line.empty() && line.back() == '\r')
+          line.pop_back();
+        return true;
+      }
+
+      /// The next line, which must exist: the file is cut short otherwise.
+      std::string
+      require(const std::string &section, const std::string &progress)
+      {
+        std::string line;
+        if (!next(line))
+          fail_file("ends at line " + std::to_string(line_number) + " inside " + section +
+                    progress + ": the file is truncated (an interrupted write or copy?).");
+        return line;
+      }
+
+      /// The numbers of the next line; at least @p n_min of them.
+      std::vector<double>
+      numbers(const std::string &section, const std::string &progress, const std::string &form,
+              const std::size_t n_min)
+      {
+        const std::string   line = require(section, progress);
+        std::istringstream  text(line);
+        std::vector<double> values;
+        double              v;
+        while (text >> v)
+          values.push_back(v);
+        if (values.size() < n_min || !(text.eof() || Utilities::trim(line).empty()))
+          fail("expected " + form + " in " + section + ", found '" + Utilities::trim(line) +
+               "'" + (values.size() < n_min ? " (a line cut short: truncated file?)." : "."));
+        return values;
+      }
+
+      /// The next line must be @p marker.
+      void
+      expect(const std::string &marker, const std::string &section)
+      {
+        const std::string line = Utilities::trim(require(section, ""));
+        if (line != marker)
+          fail("expected " + marker + ", found '" + line + "' (" + section +
+               " holds more entries than its count announces?).");
+      }
+
+      [[noreturn]] void
+      fail(const std::string &what) const
+      {
+        AssertThrow(false,
+                    ExcMessage(mesh_key + ": '" + file + "', line " +
+                               std::to_string(line_number) + ": " + what));
+        std::abort();
+      }
+
+      [[noreturn]] void
+      fail_file(const std::string &what) const
+      {
+        AssertThrow(false, ExcMessage(mesh_key + ": '" + file + "' " + what));
+        std::abort();
+      }
+
+      const std::string file;
+      unsigned int      line_number = 0;
+
+    private:
+      std::ifstream in;
+    };
+
+    std::string
+    short_number(const double value)
+    {
+      std::ostringstream text;
+      text << value;
+      return text.str();
+    }
+
+    std::string
+    count_of(const std::size_t i, const std::size_t n, const std::string &what)
+    {
+      return " (after " + std::to_string(i) + " of " + std::to_string(n) + " " + what + ")";
+    }
+
+    void
+    record_node(const std::vector<double> &xyz, Contents &contents)
+    {
+      contents.z_min = std::min(contents.z_min, xyz[2]);
+      contents.z_max = std::max(contents.z_max, xyz[2]);
+      for (unsigned int d = 0; d < 3; ++d)
+        contents.extent = std::max(contents.extent, std::abs(xyz[d]));
+      ++contents.n_nodes;
+    }
+
+    /// $Nodes of MSH 1 ($NOD) and 2.x: a count, then 'tag x y z' lines.
+    void
+    scan_nodes_v2(LineReader &reader, const std::string &section, Contents &contents)
+    {
+      const auto n = static_cast<std::size_t>(
+        reader.numbers(section, "", "the number of nodes", 1)[0]);
+      for (std::size_t i = 0; i < n; ++i)
+        {
+          const auto v = reader.numbers(section, count_of(i, n, "nodes"), "'tag x y z'", 4);
+          record_node({v[1], v[2], v[3]}, contents);
+        }
+      reader.expect(section == "$NOD" ? "$ENDNOD" : "$EndNodes", section);
+    }
+
+    /// $Nodes of MSH 4.x: entity blocks. 4.1 lists a block's tags, then its
+    /// coordinates; 4.0 one 'tag x y z' line per node.
+    void
+    scan_nodes_v4(LineReader &reader, const double version, Contents &contents)
+    {
+      const std::string section = "$Nodes";
+      const auto header = reader.numbers(section, "", "'blocks nodes ...'", 2);
+      const auto n_blocks = static_cast<std::size_t>(header[0]);
+      const auto n_nodes  = static_cast<std::size_t>(header[1]);
+      std::size_t seen = 0;
+      for (std::size_t b = 0; b < n_blocks; ++b)
+        {
+          const auto block = reader.numbers(section, count_of(seen, n_nodes, "nodes"),
+                                            "an entity block header", 4);
+          const auto n = static_cast<std::size_t>(block[3]);
+          if (version >= 4.1)
+            for (std::size_t i = 0; i < n; ++i)
+              reader.numbers(section, count_of(seen, n_nodes, "nodes"), "a node tag", 1);
+          for (std::size_t i = 0; i < n; ++i, ++seen)
+            {
+              const auto v = reader.numbers(section, count_of(seen, n_nodes, "nodes"),
+                                            version >= 4.1 ? "'x y z'" : "'tag x y z'",
+                                            version >= 4.1 ? 3 : 4);
+              const std::size_t o = version >= 4.1 ? 0 : 1;
+              record_node({v[o], v[o + 1], v[o + 2]}, contents);
+            }
+        }
+      if (seen != n_nodes)
+        reader.fail("$Nodes announces " + std::to_string(n_nodes) + " nodes, its blocks hold " +
+                    std::to_string(seen) + ".");
+      reader.expect("$EndNodes", section);
+    }
+
+    /// The number of numbers an element line of @p type must have after
+    /// @p before leading ones; 0 if the type is unknown (not checked).
+    std::size_t
+    element_line_length(const int type, const std::size_t before)
+    {
+      const ElementType *t = find_element_type(type);
+      return t ? before + t->n_nodes : 0;
+    }
+
+    /// $Elements (2.x: 'tag type n_tags tags... nodes...') or $ELM (1:
+    /// 'tag type physical elementary n_nodes nodes...').
+    void
+    scan_elements_v2(LineReader &reader, const std::string &section, Contents &contents)
+    {
+      const auto n = static_cast<std::size_t>(
+        reader.numbers(section, "", "the number of elements", 1)[0]);
+      for (std::size_t i = 0; i < n; ++i)
+        {
+          const auto v = reader.numbers(section, count_of(i, n, "elements"),
+                                        "an element line", 3);
+          const int         type   = static_cast<int>(v[1]);
+          const std::size_t before = section == "$ELM" ? 5 : 3 + static_cast<std::size_t>(v[2]);
+          const std::size_t length = element_line_length(type, before);
+          if (v.size() < length)
+            reader.fail("element " + std::to_string(static_cast<long>(v[0])) + " has " +
+                        std::to_string(v.size()) + " numbers, expected " +
+                        std::to_string(length) + " (a line cut short: truncated file?).");
+          ++contents.elements[type];
+        }
+      reader.expect(section == "$ELM" ? "$ENDELM" : "$EndElements", section);
+    }
+
+    /// $Elements of MSH 4.x: entity blocks 'dim tag type count' (4.0: 'tag
+    /// dim type count'), then 'tag nodes...' lines.
+    void
+    scan_elements_v4(LineReader &reader, Contents &contents)
+    {
+      const std::string section = "$Elements";
+      const auto header = reader.numbers(section, "", "'blocks elements ...'", 2);
+      const auto n_blocks   = static_cast<std::size_t>(header[0]);
+      const auto n_elements = static_cast<std::size_t>(header[1]);
+      std::size_t seen = 0;
+      for (std::size_t b = 0; b < n_blocks; ++b)
+        {
+          const auto block = reader.numbers(section, count_of(seen, n_elements, "elements"),
+                                            "an entity block header", 4);
+          const int  type = static_cast<int>(block[2]);
+          const auto n    = static_cast<std::size_t>(block[3]);
+          for (std::size_t i = 0; i < n; ++i, ++seen)
+            {
+              const auto v = reader.numbers(section, count_of(seen, n_elements, "elements"),
+                                            "an element line", 2);
+              if (v.size() < element_line_length(type, 1))
+                reader.fail("element " + std::to_string(static_cast<long>(v[0])) +
+                            " is cut short (truncated file?).");
+            }
+          contents.elements[type] += n;
+        }
+      if (seen != n_elements)
+        reader.fail("$Elements announces " + std::to_string(n_elements) +
+                    " elements, its blocks hold " + std::to_string(seen) + ".");
+      reader.expect("$EndElements", section);
+    }
+
+    /// Skips a section this program does not need, up to its end marker.
+    void
+    skip_section(LineReader &reader, const std::string &section)
+    {
+      const std::string end = "$End" + section.substr(1);
+      std::string       line;
+      while (Utilities::trim(line = reader.require(section, "")) != end)
+        if (!line.empty() && line[0] == '$')
+          reader.fail("expected " + end + ", found '" + Utilities::trim(line) + "'.");
+    }
+
+    /// The MSH version of the file (1 for the old format that starts with
+    /// $NOD, left for the caller as @p pending section). Binary files stop
+    /// here.
+    double
+    read_format(LineReader &reader, std::string &pending)
+    {
+      std::string line;
+      while (reader.next(line) && Utilities::trim(line).empty())
+        ;
+      line = Utilities::trim(line);
+      if (line == "$NOD")
+        {
+          pending = line;
+          return 1.;
+        }
+      if (line != "$MeshFormat")
+        reader.fail("expected $MeshFormat (or $NOD) at the start of a Gmsh mesh file, found '" +
+                    line.substr(0, 40) + "'.");
+      const auto v = reader.numbers("$MeshFormat", "", "'version file-type data-size'", 2);
+      if (v[1] != 0.)
+        reader.fail_file(
+          "is a binary Gmsh file; contact_fem reads ASCII meshes only. Save it as ASCII: "
+          "gmsh FILE.msh -save -format msh22 -o ASCII.msh (without -bin), or "
+          "Mesh.Binary = 0; in the .geo file.");
+      if (v[0] < 2. || v[0] >= 5.)
+        reader.fail("MSH version " + short_number(v[0]) +
+                    " is not supported; expected 2.x or 4.x (gmsh -format msh22 or msh41).");
+      reader.expect("$EndMeshFormat", "$MeshFormat");
+      return v[0];
+    }
+
+    Contents
+    scan_gmsh(const std::string &file)
+    {
+      LineReader   reader(file);
+      std::string  section;
+      const double version = read_format(reader, section);
+      Contents     contents;
+      std::string  line;
+      while (!section.empty() || reader.next(line))
+        {
+          if (section.empty())
+            section = Utilities::trim(line);
+          if (section.empty())
+            continue;
+          if (section[0] != '$')
+            reader.fail("expected a section such as $Nodes or $Elements, found '" +
+                        section.substr(0, 40) + "'.");
+          if (section == "$Nodes" || section == "$NOD")
+            {
+              version >= 4. ? scan_nodes_v4(reader, version, contents) :
+                              scan_nodes_v2(reader, section, contents);
+              contents.have_nodes = true;
+            }
+          else if (section == "$Elements" || section == "$ELM")
+            {
+              version >= 4. ? scan_elements_v4(reader, contents) :
+                              scan_elements_v2(reader, section, contents);
+              contents.have_elements = true;
+            }
+          else
+            skip_section(reader, section);
+          section.clear();
+        }
+      for (const auto &[have, name] : {std::make_pair(contents.have_nodes, "$Nodes"),
+                                       std::make_pair(contents.have_elements, "$Elements")})
+        if (!have)
+          reader.fail_file("ends at line " + std::to_string(reader.line_number) +
+                           " without a " + name + " section: the file is truncated or not "
+                           "a mesh (a .geo file? run gmsh -2 on it).");
+      return contents;
+    }
+
+    /// "12 triangles, 3 prisms": the elements of @p contents that @p take selects.
+    template <typename Predicate>
+    std::string
+    describe(const Contents &contents, const Predicate &take)
+    {
+      std::string text;
+      for (const auto &[type, count] : contents.elements)
+        {
+          const ElementType *t = find_element_type(type);
+          if (t && take(*t))
+            text += (text.empty() ? "" : ", ") + std::to_string(count) + " " +
+                    (count == 1 ? t->singular : t->plural);
+        }
+      return text;
+    }
+
+    /// Refuses what the scan found but deal.II's reader (or p4est) cannot
+    /// take, or would take wrongly.
+    void
+    check_contents(const Contents &contents, const std::string &file, const unsigned int dim)
+    {
+      const std::string prefix = mesh_key + ": '" + file + "' ";
+      const std::string Dd     = std::to_string(dim) + "D";
+      unsigned int      top    = 0;
+      for (const auto &[type, count] : contents.elements)
+        {
+          const ElementType *t = find_element_type(type);
+          AssertThrow(t != nullptr,
+                      ExcMessage(prefix + "holds elements of Gmsh type " + std::to_string(type) +
+                                 ", which contact_fem does not read (quadrilaterals in 2D, "
+                                 "hexahedra in 3D, with their boundary lines or faces)."));
+          top = std::max(top, t->dim);
+        }
+      // deal.II's reader names only an unknown element type for these.
+      AssertThrow(top <= dim,
+                  ExcMessage(prefix + "holds " + std::to_string(top) + "D cells (" +
+                             describe(contents, [&](const ElementType &t) { return t.dim == top; }) +
+                             ") but Dimension = " + std::to_string(dim) + "."));
+      AssertThrow(top == dim,
+                  ExcMessage(prefix + "holds no " + Dd + " cells, only " +
+                             describe(contents, [](const ElementType &) { return true; }) +
+                             " (Dimension = " + std::to_string(dim) + "; mesh the " +
+                             (dim == 2 ? "surfaces: gmsh -2)." : "volumes: gmsh -3).")));
+      const std::string simplices =
+        describe(contents, [&](const ElementType &t) { return t.simplex && t.dim == dim; });
+      AssertThrow(simplices.empty(),
+                  ExcMessage(prefix + "holds " + simplices +
+                             ": simplex cells are not supported; contact_fem needs "
+                             "quadrilaterals in 2D and hexahedra in 3D. In Gmsh: "
+                             "Mesh.RecombineAll = 1 (with Mesh.Algorithm = 8, or "
+                             "transfinite surfaces), or Mesh.SubdivisionAlgorithm = 1, "
+                             "which splits every triangle into quadrilaterals."));
+      const std::string high_order =
+        describe(contents, [](const ElementType &t) { return !t.first_order; });
+      AssertThrow(high_order.empty(),
+                  ExcMessage(prefix + "holds second-order elements (" + high_order +
+                             "); contact_fem reads first-order meshes (Gmsh: "
+                             "Mesh.ElementOrder = 1) and curves boundaries through "
+                             "Geometry/Manifolds."));
+      const double z_range = contents.z_max - contents.z_min;
+      AssertThrow(dim == 3 || z_range <= 1e-10 * std::max(contents.extent, 1e-300),
+                  ExcMessage(prefix + "has nodes from z = " + short_number(contents.z_min) +
+                             " to z = " + short_number(contents.z_max) +
+                             ": a 2D mesh must lie in a plane z = const (a surface mesh "
+                             "of a 3D body cannot be read in 2D)."));
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  read_gmsh(const std::string &file, Triangulation<dim> &coarse)
+  {
+    check_contents(scan_gmsh(file), file, dim);
+    GridIn<dim> grid_in;
+    grid_in.attach_triangulation(coarse);
+    std::ifstream in(file);
+    try
+      {
+        grid_in.read_msh(in);
+      }
+    catch (const std::exception &e)
+      {
+        AssertThrow(false,
+                    ExcMessage(mesh_key + ": cannot read '" + file + "' as a Gmsh mesh: " +
+                               e.what()));
+      }
+  }
+
+  namespace
+  {
+    /// "(x, y)" with 8 significant digits.
+    template <int dim>
+    std::string
+    coordinates(const Point<dim> &p)
+    {
+      std::ostringstream text;
+      text << std::setprecision(8) << "(";
+      for (unsigned int d = 0; d < dim; ++d)
+        text << (d > 0 ? ", " : "") << (std::abs(p[d]) < 1e-300 ? 0. : p[d]);
+      text << ")";
+      return text.str();
+    }
+
+    /// Union-find over vertex indices.
+    class Clusters
+    {
+    public:
+      explicit Clusters(const std::size_t n)
+        : parent(n)
+      {
+        std::iota(parent.begin(), parent.end(), 0);
+      }
+      std::size_t
+      root(std::size_t i)
+      {
+        while (parent[i] != i)
+          i = parent[i] = parent[parent[i]];
+        return i;
+      }
+      void
+      join(const std::size_t i, const std::size_t j)
+      {
+        parent[root(i)] = root(j);
+      }
+
+    private:
+      std::vector<std::size_t> parent;
+    };
+
+    /// A boundary face of the coarse mesh, by vertex index.
+    template <int dim>
+    struct BoundaryFace
+    {
+      types::material_id body;
+      types::boundary_id id;
+      std::array<unsigned int, GeometryInfo<dim>::vertices_per_face> vertices;
+    };
+
+    /// Groups the vertices of @p faces that lie within a small tolerance of
+    /// each other: an R-tree query per vertex, O(n log n).
+    template <int dim>
+    Clusters
+    coincident_vertices(const Triangulation<dim> &coarse, const std::vector<BoundaryFace<dim>> &faces)
+    {
+      std::vector<unsigned int> indices;
+      double                    shortest = std::numeric_limits<double>::max();
+      for (const auto &face : faces)
+        for (unsigned int i = 0; i < face.vertices.size(); ++i)
+          {
+            indices.push_back(face.vertices[i]);
+            const double length = coarse.get_vertices()[face.vertices[i]].distance(
+              coarse.get_vertices()[face.vertices[(i + 1) % face.vertices.size()]]);
+            if (length > 0.)
+              shortest = std::min(shortest, length);
+          }
+      std::sort(indices.begin(), indices.end());
+      indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
+      std::vector<Point<dim>> points;
+      for (const unsigned int v : indices)
+        points.push_back(coarse.get_vertices()[v]);
+      // Far below any edge of the mesh, far above round-off of coordinates.
+      const double tolerance = 1e-6 * shortest;
+      const auto   tree      = pack_rtree_of_indices(points);
+      Clusters     clusters(coarse.n_vertices());
+      std::vector<std::size_t> hits;
+      for (std::size_t i = 0; i < points.size(); ++i)
+        {
+          Point<dim> lower = points[i], upper = points[i];
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              lower[d] -= tolerance;
+              upper[d] += tolerance;
+            }
+          hits.clear();
+          tree.query(boost::geometry::index::intersects(BoundingBox<dim>({lower, upper})),
+                     std::back_inserter(hits));
+          for (const std::size_t j : hits)
+            clusters.join(indices[i], indices[j]);
+        }
+      return clusters;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  check_unmerged_vertices(const Triangulation<dim> &coarse, const std::string &file)
+  {
+    std::vector<BoundaryFace<dim>> faces;
+    for (const auto &cell : coarse.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          {
+            BoundaryFace<dim> face{cell->material_id(), cell->face(f)->boundary_id(), {}};
+            for (unsigned int v = 0; v < face.vertices.size(); ++v)
+              face.vertices[v] = cell->face(f)->vertex_index(v);
+            faces.push_back(face);
+          }
+    if (faces.empty())
+      return;
+    Clusters clusters = coincident_vertices(coarse, faces);
+
+    // Two boundary faces of one body on the same places are a crack.
+    using Key = std::pair<types::material_id, std::array<unsigned int, GeometryInfo<dim>::vertices_per_face>>;
+    std::vector<std::pair<Key, unsigned int>> keys;
+    for (unsigned int i = 0; i < faces.size(); ++i)
+      {
+        Key key{faces[i].body, faces[i].vertices};
+        for (auto &v : key.second)
+          v = clusters.root(v);
+        std::sort(key.second.begin(), key.second.end());
+        keys.emplace_back(key, i);
+      }
+    std::sort(keys.begin(), keys.end());
+    unsigned int n_cracked = 0, first = 0, second = 0;
+    for (unsigned int k = 0; k + 1 < keys.size(); ++k)
+      if (keys[k].first == keys[k + 1].first &&
+          (faces[keys[k].second].id == 0 || faces[keys[k + 1].second].id == 0))
+        {
+          if (n_cracked++ == 0)
+            std::tie(first, second) = std::make_pair(keys[k].second, keys[k + 1].second);
+        }
+    if (n_cracked == 0)
+      return;
+
+    // A node of the first face that the second one does not share.
+    const auto &a = faces[first].vertices, &b = faces[second].vertices;
+    unsigned int loose = a[0];
+    for (const unsigned int v : a)
+      if (std::find(b.begin(), b.end(), v) == b.end())
+        loose = v;
+    AssertThrow(false,
+                ExcMessage(mesh_key + ": '" + file + "': the body of material id " +
+                           std::to_string(faces[first].body) + " is cut inside: its cells on "
+                           "either side of the node at " +
+                           coordinates(coarse.get_vertices()[loose]) +
+                           " use two coincident copies of it, so " + std::to_string(n_cracked) +
+                           " pair(s) of boundary faces without a boundary id lie on top of "
+                           "each other (an internal crack). Merge the duplicate nodes: in "
+                           "Gmsh, Coherence; (built-in kernel), BooleanFragments "
+                           "(OpenCASCADE) or Coherence Mesh; before saving. Bodies in contact "
+                           "keep their own nodes: give each body its own material id. An "
+                           "intended internal surface of one body needs a physical tag "
+                           "(boundary id) on both sides."));
+  }
+
+  template <int dim>
+  bool
+  fit_sphere(const std::vector<Point<dim>> &points,
+             Point<dim>                    &centre,
+             double                        &radius,
+             double                        &max_deviation)
+  {
+    if (points.size() < dim + 1)
+      return false;
+    // Relative to the centroid, for the conditioning: 2 c.y + k = |y|^2.
+    Point<dim> mean;
+    for (const auto &p : points)
+      mean += p / static_cast<double>(points.size());
+    constexpr unsigned int n = dim + 1;
+    double                 A[n][n + 1] = {};
+    for (const auto &p : points)
+      {
+        const Tensor<1, dim> y = p - mean;
+        double               row[n];
+        for (unsigned int d = 0; d < dim; ++d)
+          row[d] = 2. * y[d];
+        row[dim] = 1.;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            for (unsigned int j = 0; j < n; ++j)
+              A[i][j] += row[i] * row[j];
+            A[i][n] += row[i] * y.norm_square();
+          }
+      }
+    // Gaussian elimination with partial pivoting; a tiny pivot means the
+    // points lie on a line (plane): no circle (sphere).
+    double scale = 0.;
+    for (unsigned int i = 0; i < n; ++i)
+      scale = std::max(scale, std::abs(A[i][i]));
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        unsigned int pivot = i;
+        for (unsigned int r = i + 1; r < n; ++r)
+          if (std::abs(A[r][i]) > std::abs(A[pivot][i]))
+            pivot = r;
+        if (!(std::abs(A[pivot][i]) > 1e-12 * scale))
+          return false;
+        for (unsigned int j = 0; j <= n; ++j)
+          std::swap(A[i][j], A[pivot][j]);
+        for (unsigned int r = 0; r < n; ++r)
+          if (r != i)
+            {
+              const double factor = A[r][i] / A[i][i];
+              for (unsigned int j = i; j <= n; ++j)
+                A[r][j] -= factor * A[i][j];
+            }
+      }
+    Tensor<1, dim> c;
+    for (unsigned int d = 0; d < dim; ++d)
+      c[d] = A[d][n] / A[d][d];
+    const double k = A[dim][n] / A[dim][dim];
+    if (!(k + c.norm_square() > 0.))
+      return false;
+    centre        = mean + c;
+    radius        = std::sqrt(k + c.norm_square());
+    max_deviation = 0.;
+    for (const auto &p : points)
+      max_deviation = std::max(max_deviation, std::abs(p.distance(centre) - radius));
+    return std::isfinite(radius);
+  }
+
+  namespace
+  {
+    /// The outward unit normal of the (straight or bilinear) face @p f.
+    template <int dim>
+    Tensor<1, dim>
+    outward_normal(const typename Triangulation<dim>::cell_iterator &cell, const unsigned int f)
+    {
+      const auto     face = cell->face(f);
+      Tensor<1, dim> n;
+      if constexpr (dim == 2)
+        {
+          const Tensor<1, dim> t = face->vertex(1) - face->vertex(0);
+          n[0]                   = t[1];
+          n[1]                   = -t[0];
+        }
+      else
+        {
+          // The cross product of the diagonals of the quadrilateral.
+          const Tensor<1, dim> a = face->vertex(3) - face->vertex(0);
+          const Tensor<1, dim> b = face->vertex(2) - face->vertex(1);
+          n[0]                   = a[1] * b[2] - a[2] * b[1];
+          n[1]                   = a[2] * b[0] - a[0] * b[2];
+          n[2]                   = a[0] * b[1] - a[1] * b[0];
+        }
+      if (n * (face->center() - cell->center()) < 0.)
+        n *= -1.;
+      return n.norm() > 0. ? n / n.norm() : n;
+    }
+
+    /// The joints of a face with its neighbours on the boundary: its
+    /// vertices in 2D, its lines in 3D.
+    template <int dim>
+    std::vector<unsigned int>
+    joints_of(const typename Triangulation<dim>::face_iterator &face)
+    {
+      std::vector<unsigned int> joints;
+      if constexpr (dim == 2)
+        for (unsigned int v = 0; v < face->n_vertices(); ++v)
+          joints.push_back(face->vertex_index(v));
+      else
+        for (unsigned int l = 0; l < face->n_lines(); ++l)
+          joints.push_back(face->line_index(l));
+      return joints;
+    }
+  } // namespace
+
+  template <int dim>
+  std::vector<PolygonalBoundary<dim>>
+  find_polygonal_boundaries(const Triangulation<dim>            &coarse,
+                            const std::vector<types::boundary_id> &skip)
+  {
+    // A polygonal circle of n sides turns by 2 pi / n at each vertex: 30
+    // degrees for n = 12. Below 1e-4 rad (0.006 degrees) the sag of the
+    // chords is negligible, and flat faces turn by round-off only.
+    constexpr double min_kink = 1e-4, max_kink = numbers::PI / 6.;
+    struct Side
+    {
+      unsigned int       joint;
+      types::boundary_id id;
+      Tensor<1, dim>     normal;
+    };
+    std::vector<Side>                                         sides;
+    std::map<types::boundary_id, std::vector<unsigned int>> vertices;
+    for (const auto &cell : coarse.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          {
+            const types::boundary_id id = cell->face(f)->boundary_id();
+            if (std::find(skip.begin(), skip.end(), id) != skip.end())
+              continue;
+            const Tensor<1, dim> n = outward_normal<dim>(cell, f);
+            for (const unsigned int joint : joints_of<dim>(cell->face(f)))
+              sides.push_back({joint, id, n});
+            for (unsigned int v = 0; v < cell->face(f)->n_vertices(); ++v)
+              vertices[id].push_back(cell->face(f)->vertex_index(v));
+          }
+    std::sort(sides.begin(), sides.end(), [](const Side &a, const Side &b) {
+      return std::tie(a.joint, a.id) < std::tie(b.joint, b.id);
+    });
+
+    std::map<types::boundary_id, PolygonalBoundary<dim>> found;
+    for (std::size_t k = 0; k < sides.size();)
+      {
+        std::size_t end = k;
+        while (end < sides.size() && sides[end].joint == sides[k].joint &&
+               sides[end].id == sides[k].id)
+          ++end;
+        // Exactly two faces of one id at a joint: a joint along a surface.
+        if (end - k == 2)
+          {
+            auto &b = found[sides[k].id];
+            b.id    = sides[k].id;
+            ++b.n_joints;
+            const double angle =
+              std::acos(std::clamp(sides[k].normal * sides[k + 1].normal, -1., 1.));
+            if (angle > min_kink && angle < max_kink)
+              {
+                b.min_angle = b.n_kinks == 0 ? angle : std::min(b.min_angle, angle);
+                b.max_angle = std::max(b.max_angle, angle);
+                ++b.n_kinks;
+              }
+          }
+        k = end;
+      }
+
+    std::vector<PolygonalBoundary<dim>> result;
+    for (auto &[id, b] : found)
+      if (b.n_kinks >= 3 && 2 * b.n_kinks > b.n_joints)
+        {
+          auto &ids = vertices[id];
+          std::sort(ids.begin(), ids.end());
+          ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+          std::vector<Point<dim>> points;
+          for (const unsigned int v : ids)
+            points.push_back(coarse.get_vertices()[v]);
+          double deviation = 0.;
+          b.fits_sphere    = fit_sphere(points, b.centre, b.radius, deviation) &&
+                          deviation <= 1e-4 * b.radius;
+          result.push_back(b);
+        }
+    return result;
+  }
+
+  template <int dim>
+  bool
+  is_inverted(const typename Triangulation<dim>::cell_iterator &cell)
+  {
+    const double h = cell->diameter();
+    if (dim == 3)
+      return cell->measure() <= 1e-12 * std::pow(h, dim);
+    // Corner Jacobians of a valid quadrilateral are all positive.
+    static const unsigned int next[4] = {1, 3, 0, 2}, prev[4] = {2, 0, 3, 1};
+    for (unsigned int v = 0; v < 4; ++v)
+      {
+        const Tensor<1, dim> a = cell->vertex(next[v]) - cell->vertex(v);
+        const Tensor<1, dim> b = cell->vertex(prev[v]) - cell->vertex(v);
+        if (a[0] * b[1] - a[1] * b[0] <= 1e-12 * h * h)
+          return true;
+      }
+    return false;
+  }
+
+  template void read_gmsh<2>(const std::string &, Triangulation<2> &);
+  template void read_gmsh<3>(const std::string &, Triangulation<3> &);
+  template void check_unmerged_vertices<2>(const Triangulation<2> &, const std::string &);
+  template void check_unmerged_vertices<3>(const Triangulation<3> &, const std::string &);
+  template std::vector<PolygonalBoundary<2>>
+  find_polygonal_boundaries<2>(const Triangulation<2> &, const std::vector<types::boundary_id> &);
+  template std::vector<PolygonalBoundary<3>>
+  find_polygonal_boundaries<3>(const Triangulation<3> &, const std::vector<types::boundary_id> &);
+  template bool fit_sphere<2>(const std::vector<Point<2>> &, Point<2> &, double &, double &);
+  template bool fit_sphere<3>(const std::vector<Point<3>> &, Point<3> &, double &, double &);
+  template bool is_inverted<2>(const Triangulation<2>::cell_iterator &);
+  template bool is_inverted<3>(const Triangulation<3>::cell_iterator &);
+} // namespace contact_fem

@@ -1,0 +1,583 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+#include <deal.II/grid/tria.h>
+
+#include <contact_fem/core/parameters.h>
+#include <contact_fem/geometry/scene.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace contact_fem
+{
+  template <int dim>
+  void
+  Scene<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    prm.declare_entry("Type",
+                      "hertz cylinder",
+                      Patterns::Selection("hertz cylinder|contact blocks|mesh file"),
+                      "The mesh: 'hertz cylinder' (half-disc on a plate, built in "
+                      "code and graded toward the contact zone), 'contact blocks' "
+                      "(two stacked blocks with non-matching meshes), or 'mesh "
+                      "file' (a Gmsh .msh file named by 'Mesh file').");
+    prm.declare_entry("Mesh file",
+                      "",
+                      Patterns::Anything(),
+                      "Gmsh file (ASCII, format 2.2 or 4) for Type = mesh file; a "
+                      "relative name is taken relative to the .prm file. Bodies "
+                      "are the cells' physical tags (material ids), surfaces the "
+                      "faces' physical tags (boundary ids). Cells: first-order "
+                      "quadrilaterals (hexahedra in 3D). Read and checked with "
+                      "the input (also by --validate): binary, truncated, "
+                      "simplex or wrong-dimension files and bodies cut by "
+                      "unmerged nodes are refused with a message; bodies in "
+                      "contact keep their own nodes (different material ids).");
+    prm.declare_entry("Distortion",
+                      "0",
+                      Patterns::Double(0., 0.45),
+                      "Moves every interior vertex in a random direction by this "
+                      "fraction of its shortest adjacent edge (fixed seed, so "
+                      "runs repeat exactly); boundary vertices stay. For "
+                      "robustness studies on distorted meshes. The Hertz disc "
+                      "then has straight interior cell edges (only its arc is "
+                      "curved).");
+    prm.declare_entry("Global refinements",
+                      "0",
+                      Patterns::Integer(0, 8),
+                      "Uniform refinements applied to the mesh after it is "
+                      "built (each one halves every cell).");
+    prm.declare_entry("Local refinements",
+                      "",
+                      Patterns::Anything(),
+                      "Boxes refined after the global refinements, as "
+                      "'rounds: x_min, y_min, (z_min,) x_max, y_max(, z_max); "
+                      "...': 'rounds' times, the cells whose centre lies in the "
+                      "box are refined (hanging nodes; neighbours are refined "
+                      "as needed to keep one level difference). E.g. "
+                      "'2: -1, 0.5, 1, 1.5' refines a band around y = 1 twice. "
+                      "Empty: none. Distortion acts before these refinements.");
+    prm.declare_entry("Manifolds",
+                      "",
+                      Patterns::Anything(),
+                      "Type = mesh file: the curved surfaces of the mesh, as 'boundary "
+                      "id: surface; ...' with the surface 'circle cx, cy, R' in 2D, "
+                      "'sphere cx, cy, cz, R' or 'cylinder px, py, pz, dx, dy, dz, R' "
+                      "(a point on the axis, its direction, the radius) in 3D, e.g. "
+                      "'3: circle 0, 8, 8; 4: circle 0, -8, 8'. Refinement then puts "
+                      "the new vertices of these boundaries on their surface instead "
+                      "of on the chords of the coarse mesh, the interior of every "
+                      "body with such a boundary follows by transfinite "
+                      "interpolation (unless Distortion > 0), and Q1 runs on a "
+                      "quadratic mapping (Finite element/Mapping degree = auto). "
+                      "Every vertex of these boundaries must lie on its surface "
+                      "within 1e-4 R. Empty: the faces of the file stay straight, "
+                      "and a boundary that looks like a polygon of a curve is "
+                      "warned about when the mesh is refined.");
+    prm.enter_subsection("Hertz cylinder");
+    prm.declare_entry("Radius", "8", Patterns::Double(0.), "Radius R of the half-disc.");
+    prm.declare_entry("Plate half width", "10", Patterns::Double(0.),
+                      "The plate spans [-w, w] in x.");
+    prm.declare_entry("Plate thickness", "1", Patterns::Double(0.),
+                      "The plate spans [0, t] in y; the disc touches it at (0, t).");
+    prm.declare_entry("Refinement half width", "0.5", Patterns::Double(0.),
+                      "Half width of the zone of the plate top toward which the "
+                      "mesh is graded; should exceed the expected contact "
+                      "half-width.");
+    prm.declare_entry("Cylinder refinements", "2", Patterns::Integer(0, 8),
+                      "Uniform refinement rounds of the whole disc before the "
+                      "graded ones (resolution of the bulk stress field).");
+    prm.declare_entry("Grading factor", "4", Patterns::Double(1.),
+                      "A cell is refined in a graded round when its distance to "
+                      "the contact zone is below this factor times its diameter: "
+                      "larger values give a wider, smoother transition.");
+    prm.declare_entry("Contact refinements", "6", Patterns::Integer(0, 14),
+                      "Number of graded refinement rounds of the disc toward the "
+                      "contact zone (each halves the contact elements).");
+    prm.declare_entry("Plate contact refinements", "3", Patterns::Integer(0, 14),
+                      "Number of graded refinement rounds of the plate.");
+    prm.leave_subsection();
+    prm.enter_subsection("Contact blocks");
+    prm.declare_entry("Width", "1", Patterns::Double(0.), "Width W of both blocks.");
+    prm.declare_entry("Height", "1", Patterns::Double(0.), "Height H of each block.");
+    prm.declare_entry("Initial gap", "0", Patterns::Double(),
+                      "Initial distance between the blocks; negative values "
+                      "make them overlap (initial penetration).");
+    prm.declare_entry("Lower cells", "3", Patterns::Integer(1, 1000),
+                      "Cells per direction of the lower (master) block.");
+    prm.declare_entry("Upper cells", "5", Patterns::Integer(1, 1000),
+                      "Cells per direction of the upper (slave) block.");
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::parse_parameters(ParameterHandler &prm, const std::string &prm_directory)
+  {
+    prm.enter_subsection("Geometry");
+    type               = prm.get("Type");
+    mesh_file          = prm.get("Mesh file");
+    global_refinements = prm.get_integer("Global refinements");
+    distortion         = prm.get_double("Distortion");
+    refinement_boxes.clear();
+    const std::string boxes_key = "Geometry/Local refinements";
+    for (const auto &[rounds, box] :
+         split_key_value_list(prm.get("Local refinements"), boxes_key))
+      {
+        RefinementBox       refinement_box;
+        std::vector<double> bounds;
+        bool                valid = true;
+        try
+          {
+            std::size_t end      = 0;
+            const int   n_rounds = std::stoi(rounds, &end);
+            valid                = end == rounds.size() && n_rounds >= 1 && n_rounds <= 8;
+            refinement_box.rounds = valid ? n_rounds : 0;
+            for (const std::string &entry : Utilities::split_string_list(box, ','))
+              {
+                bounds.push_back(std::stod(entry, &end));
+                valid = valid && end == entry.size();
+              }
+          }
+        catch (...)
+          {
+            valid = false;
+          }
+        valid = valid && bounds.size() == 2 * dim;
+        for (unsigned int d = 0; valid && d < dim; ++d)
+          {
+            refinement_box.lower[d] = bounds[d];
+            refinement_box.upper[d] = bounds[dim + d];
+            valid                   = bounds[d] < bounds[dim + d];
+          }
+        AssertThrow(valid,
+                    ExcMessage(boxes_key + ": entry '" + rounds + ": " + box +
+                               "' is not of the form 'rounds: lower corner, upper "
+                               "corner' with rounds in 1..8 and " +
+                               std::to_string(2 * dim) +
+                               " coordinates, each lower below its upper."));
+        refinement_boxes.push_back(refinement_box);
+      }
+    const std::string manifolds_key = "Geometry/Manifolds";
+    manifolds = parse_boundary_manifolds<dim>(prm.get("Manifolds"), manifolds_key);
+    AssertThrow(manifolds.empty() || type == "mesh file",
+                ExcMessage(manifolds_key + ": only for Type = mesh file (the built-in "
+                           "geometries attach their own manifolds)."));
+    prm.enter_subsection("Hertz cylinder");
+    hertz.radius                = prm.get_double("Radius");
+    hertz.plate_half_width      = prm.get_double("Plate half width");
+    hertz.plate_thickness       = prm.get_double("Plate thickness");
+    hertz.refinement_half_width = prm.get_double("Refinement half width");
+    hertz.cylinder_refinements  = prm.get_integer("Cylinder refinements");
+    hertz.contact_refinements   = prm.get_integer("Contact refinements");
+    hertz.grading_factor        = prm.get_double("Grading factor");
+    hertz.plate_refinements     = prm.get_integer("Plate contact refinements");
+    prm.leave_subsection();
+    prm.enter_subsection("Contact blocks");
+    blocks.width       = prm.get_double("Width");
+    blocks.height      = prm.get_double("Height");
+    blocks.gap         = prm.get_double("Initial gap");
+    blocks.lower_cells = prm.get_integer("Lower cells");
+    blocks.upper_cells = prm.get_integer("Upper cells");
+    prm.leave_subsection();
+    prm.leave_subsection();
+
+    for (const double v : {hertz.radius, hertz.plate_half_width, hertz.plate_thickness,
+                           blocks.width, blocks.height})
+      AssertThrow(v > 0.,
+                  ExcMessage("Geometry: lengths must be > 0 (got " + std::to_string(v) +
+                             ")."));
+    AssertThrow(std::abs(blocks.gap) < blocks.height,
+                ExcMessage("Geometry/Contact blocks/Initial gap: |gap| must be "
+                           "smaller than the block height."));
+
+    if (type == "mesh file")
+      {
+        AssertThrow(!mesh_file.empty(),
+                    ExcMessage("Geometry/Mesh file: Type = mesh file needs a file name."));
+        if (mesh_file[0] != '/' && !prm_directory.empty())
+          mesh_file = prm_directory + "/" + mesh_file;
+        std::ifstream in(mesh_file);
+        AssertThrow(in.good(),
+                    ExcMessage("Geometry/Mesh file: cannot open '" + mesh_file +
+                               "' (no such file, or not readable)."));
+        in.seekg(0, std::ios::end);
+        AssertThrow(in.tellg() > 0,
+                    ExcMessage("Geometry/Mesh file: '" + mesh_file + "' is empty."));
+        read_mesh_file();
+      }
+    else
+      AssertThrow(dim == 2,
+                  ExcMessage("Geometry/Type: the built-in geometry '" + type +
+                             "' exists in 2D only so far; use a mesh file in 3D."));
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::read_mesh_file()
+  {
+    // Every check runs here, before any work and under --validate.
+    const std::string key    = "Geometry/Manifolds";
+    auto              coarse = std::make_shared<Triangulation<dim>>();
+    read_gmsh(mesh_file, *coarse);
+    check_unmerged_vertices(*coarse, mesh_file);
+    check_boundary_manifolds(manifolds, *coarse, key);
+    // Random vertex moves would invalidate the transfinite chart of the
+    // coarse cells (as for the Hertz disc): a distorted mesh keeps straight
+    // interior lines.
+    set_manifold_ids(manifolds, distortion == 0., *coarse);
+    check_refinement_on_manifolds(manifolds, distortion == 0., *coarse, key);
+    std::vector<types::boundary_id> with_manifold;
+    for (const auto &m : manifolds)
+      with_manifold.push_back(m.boundary_id);
+    polygonal_boundaries = find_polygonal_boundaries(*coarse, with_manifold);
+    coarse_mesh          = coarse;
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::create_from_mesh_file(parallel::distributed::Triangulation<dim> &tria) const
+  {
+    AssertThrow(coarse_mesh, ExcMessage("Scene: parse_parameters() reads the mesh file, "
+                                        "create_mesh() uses it once."));
+    tria.copy_triangulation(*coarse_mesh);
+    coarse_mesh.reset();
+    attach_manifolds(manifolds, distortion == 0., tria);
+  }
+
+  template <int dim>
+  std::string
+  Scene<dim>::chord_warning() const
+  {
+    if (polygonal_boundaries.empty())
+      return "";
+    const bool         one = polygonal_boundaries.size() == 1;
+    std::ostringstream ids, details, fitted;
+    ids << (one ? "boundary " : "boundaries ");
+    details << std::setprecision(2);
+    fitted << std::setprecision(8);
+    for (unsigned int i = 0; i < polygonal_boundaries.size(); ++i)
+      {
+        const auto &b = polygonal_boundaries[i];
+        ids << (i == 0 ? "" : i + 1 == polygonal_boundaries.size() ? " and " : ", ")
+            << static_cast<unsigned int>(b.id)
+            << (b.id == 0 ? " (the faces without a physical tag)" : "");
+        details << (i == 0 ? "" : "; ")
+                << (one ? "its faces turn by " :
+                          "boundary " + std::to_string(b.id) + ": faces turning by ")
+                << b.min_angle * 180. / numbers::PI << " to "
+                << b.max_angle * 180. / numbers::PI << " degrees at " << b.n_kinks << " of "
+                << b.n_joints << (dim == 2 ? " vertices" : " edges");
+        if (b.fits_sphere)
+          {
+            fitted << (fitted.tellp() > 0 ? "; " : "") << static_cast<unsigned int>(b.id)
+                   << (dim == 2 ? ": circle " : ": sphere ");
+            for (unsigned int d = 0; d < dim; ++d)
+              fitted << (std::abs(b.centre[d]) < 1e-12 * b.radius ? 0. : b.centre[d]) << ", ";
+            fitted << b.radius;
+          }
+      }
+    const std::string example =
+      fitted.tellp() > 0 ? "'" + fitted.str() + "' (fitted to the vertices)" :
+                           (dim == 2 ? "'id: circle cx, cy, R'" : "'id: sphere cx, cy, cz, R'");
+    return ids.str() + " of the mesh file " +
+           (one ? "looks like a polygon standing for a curve (" :
+                  "look like polygons standing for curves (") +
+           details.str() + ") but " +
+           (one ? "has" : "have") + " no manifold: refinement keeps the chords of the coarse "
+           "mesh (new vertices on the straight edges, a kink and a pressure spike at every "
+           "original vertex). Attach the true " + (one ? "surface" : "surfaces") +
+           " with Geometry/Manifolds, e.g. " +
+           example + ".";
+  }
+
+  namespace
+  {
+    /// Puts several coarse meshes side by side in one triangulation without
+    /// merging coincident vertices: the bodies stay disconnected even where
+    /// they touch. The cells of mesh k get material id material_ids[k].
+    void
+    join_bodies(const std::vector<const Triangulation<2> *> &parts,
+                const std::vector<types::material_id>       &material_ids,
+                Triangulation<2>                            &result)
+    {
+      std::vector<Point<2>>    vertices;
+      std::vector<CellData<2>> cells;
+      for (unsigned int k = 0; k < parts.size(); ++k)
+        {
+          const unsigned int offset = vertices.size();
+          vertices.insert(vertices.end(), parts[k]->get_vertices().begin(),
+                          parts[k]->get_vertices().end());
+          for (const auto &cell : parts[k]->active_cell_iterators())
+            {
+              CellData<2> c(4);
+              for (unsigned int v = 0; v < 4; ++v)
+                c.vertices[v] = cell->vertex_index(v) + offset;
+              c.material_id = material_ids[k];
+              cells.push_back(c);
+            }
+        }
+      // deal.II wants the lines shared by two cells to be oriented alike.
+      GridTools::consistently_order_cells(cells);
+      result.create_triangulation(vertices, cells, SubCellData());
+    }
+
+    bool
+    close(const double a, const double b, const double scale)
+    {
+      return std::abs(a - b) < 1e-8 * scale;
+    }
+  } // namespace
+
+  template <>
+  void
+  Scene<2>::create_mesh(parallel::distributed::Triangulation<2> &tria) const
+  {
+    Triangulation<2> coarse;
+
+    if (type == "mesh file")
+      create_from_mesh_file(tria);
+    else if (type == "hertz cylinder")
+      {
+        const double R = hertz.radius, t = hertz.plate_thickness;
+        const Point<2> c(0., t + R);
+        // Coarse half-disc: a centre cell under the flat top and three cells
+        // along the arc; the lowest point of the arc lies inside the bottom
+        // cell, so the contact zone is free of coarse vertices.
+        const double             s = std::sqrt(0.5);
+        const std::vector<Point<2>> v = {c + Point<2>(-R, 0.),
+                                         c + Point<2>(R, 0.),
+                                         c + Point<2>(-R * s, -R * s),
+                                         c + Point<2>(R * s, -R * s),
+                                         c + Point<2>(-0.4375 * R, 0.),
+                                         c + Point<2>(0.4375 * R, 0.),
+                                         c + Point<2>(-0.4375 * R, -0.5 * R),
+                                         c + Point<2>(0.4375 * R, -0.5 * R)};
+        std::vector<CellData<2>>     cells(4, CellData<2>(4));
+        const unsigned int           cell_vertices[4][4] = {{6, 7, 4, 5},
+                                                            {2, 3, 6, 7},
+                                                            {2, 6, 0, 4},
+                                                            {7, 3, 5, 1}};
+        for (unsigned int i = 0; i < 4; ++i)
+          for (unsigned int j = 0; j < 4; ++j)
+            cells[i].vertices[j] = cell_vertices[i][j];
+        Triangulation<2> disc;
+        GridTools::consistently_order_cells(cells);
+        disc.create_triangulation(v, cells, SubCellData());
+
+        Triangulation<2>   plate;
+        const unsigned int nx =
+          std::max(1, static_cast<int>(std::round(2. * hertz.plate_half_width / t)));
+        GridGenerator::subdivided_hyper_rectangle(plate,
+                                                  {nx, 1},
+                                                  Point<2>(-hertz.plate_half_width, 0.),
+                                                  Point<2>(hertz.plate_half_width, t));
+        join_bodies({&disc, &plate}, {1, 2}, coarse);
+
+        for (const auto &cell : coarse.active_cell_iterators())
+          {
+            // The transfinite interpolation of the disc interior is charted
+            // on the coarse cells: random vertex moves invalidate the chart
+            // (its pull-back fails for degree 2), so a distorted disc has
+            // straight interior lines and only the arc is curved.
+            if (cell->material_id() == 1)
+              cell->set_all_manifold_ids(distortion > 0. ? numbers::flat_manifold_id : 2);
+            for (const auto f : cell->face_indices())
+              if (cell->face(f)->at_boundary())
+                {
+                  const Point<2> fc = cell->face(f)->center();
+                  if (cell->material_id() == 1)
+                    {
+                      if (close(fc[1], t + R, R))
+                        cell->face(f)->set_boundary_id(1);
+                      else
+                        {
+                          cell->face(f)->set_boundary_id(3);
+                          cell->face(f)->set_manifold_id(1);
+                        }
+                    }
+                  else if (close(fc[1], 0., t))
+                    cell->face(f)->set_boundary_id(2);
+                  else if (close(fc[1], t, t))
+                    cell->face(f)->set_boundary_id(4);
+                  else
+                    cell->face(f)->set_boundary_id(0);
+                }
+          }
+        tria.copy_triangulation(coarse);
+        tria.set_manifold(1, PolarManifold<2>(c));
+        TransfiniteInterpolationManifold<2> tfi;
+        if (distortion == 0.)
+          {
+            tfi.initialize(tria);
+            tria.set_manifold(2, tfi);
+          }
+
+        // Uniform rounds on the disc only: the plate is nearly rigid in the
+        // reference scene and needs no resolution away from the contact.
+        for (unsigned int round = 0; round < hertz.cylinder_refinements; ++round)
+          {
+            for (const auto &cell : tria.active_cell_iterators())
+              if (cell->is_locally_owned() && cell->material_id() == 1)
+                cell->set_refine_flag();
+            tria.execute_coarsening_and_refinement();
+          }
+        // Graded rounds toward the segment |x| < w_r of the plate top.
+        const unsigned int n_rounds =
+          std::max(hertz.contact_refinements, hertz.plate_refinements);
+        for (unsigned int round = 0; round < n_rounds; ++round)
+          {
+            for (const auto &cell : tria.active_cell_iterators())
+              {
+                if (!cell->is_locally_owned())
+                  continue;
+                const unsigned int rounds_of_body = cell->material_id() == 1 ?
+                                                      hertz.contact_refinements :
+                                                      hertz.plate_refinements;
+                if (round >= rounds_of_body)
+                  continue;
+                const Point<2> p = cell->center();
+                const double   dx =
+                  std::max(0., std::abs(p[0]) - hertz.refinement_half_width);
+                const double distance = std::hypot(dx, p[1] - t);
+                if (distance < hertz.grading_factor * cell->diameter())
+                  cell->set_refine_flag();
+              }
+            tria.execute_coarsening_and_refinement();
+          }
+      }
+    else if (type == "contact blocks")
+      {
+        const double W = blocks.width, H = blocks.height;
+        Triangulation<2> lower, upper;
+        GridGenerator::subdivided_hyper_rectangle(lower,
+                                                  {blocks.lower_cells, blocks.lower_cells},
+                                                  Point<2>(0., 0.),
+                                                  Point<2>(W, H));
+        GridGenerator::subdivided_hyper_rectangle(upper,
+                                                  {blocks.upper_cells, blocks.upper_cells},
+                                                  Point<2>(0., H + blocks.gap),
+                                                  Point<2>(W, 2. * H + blocks.gap));
+        join_bodies({&upper, &lower}, {1, 2}, coarse);
+        for (const auto &cell : coarse.active_cell_iterators())
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              {
+                const Point<2> fc    = cell->face(f)->center();
+                const bool     upper_body = cell->material_id() == 1;
+                const double   y0 = upper_body ? H + blocks.gap : 0.;
+                types::boundary_id id = 0;
+                if (close(fc[1], y0, H))
+                  id = upper_body ? 3 : 2;
+                else if (close(fc[1], y0 + H, H))
+                  id = upper_body ? 1 : 4;
+                else if (close(fc[0], 0., W))
+                  id = upper_body ? 5 : 6;
+                cell->face(f)->set_boundary_id(id);
+              }
+        tria.copy_triangulation(coarse);
+      }
+
+    if (global_refinements > 0)
+      tria.refine_global(global_refinements);
+    if (distortion > 0.)
+      GridTools::distort_random(distortion, tria, true, 20261121);
+    refine_boxes(tria);
+  }
+
+  template <>
+  void
+  Scene<3>::create_mesh(parallel::distributed::Triangulation<3> &tria) const
+  {
+    create_from_mesh_file(tria);
+    if (global_refinements > 0)
+      tria.refine_global(global_refinements);
+    refine_boxes(tria);
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::refine_boxes(parallel::distributed::Triangulation<dim> &tria) const
+  {
+    for (unsigned int b = 0; b < refinement_boxes.size(); ++b)
+      {
+        const RefinementBox &box = refinement_boxes[b];
+        for (unsigned int round = 0; round < box.rounds; ++round)
+          {
+            unsigned int n_marked = 0;
+            for (const auto &cell : tria.active_cell_iterators())
+              if (cell->is_locally_owned())
+                {
+                  const Point<dim> centre = cell->center();
+                  bool             inside = true;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    inside = inside && centre[d] >= box.lower[d] && centre[d] <= box.upper[d];
+                  if (inside)
+                    {
+                      cell->set_refine_flag();
+                      ++n_marked;
+                    }
+                }
+            AssertThrow(Utilities::MPI::sum(n_marked, tria.get_communicator()) > 0,
+                        ExcMessage("Geometry/Local refinements: box " +
+                                   std::to_string(b + 1) +
+                                   " holds no cell centre (round " +
+                                   std::to_string(round + 1) + ")."));
+            tria.execute_coarsening_and_refinement();
+          }
+      }
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::check_mesh(const parallel::distributed::Triangulation<dim> &tria,
+                         const std::set<types::material_id>              &material_ids,
+                         const std::set<types::boundary_id>              &boundary_ids)
+  {
+    AssertThrow(tria.n_global_active_cells() > 0,
+                ExcMessage("Geometry: the mesh has no cells."));
+
+    // The coarse mesh is known on every rank: its ids are those of the mesh.
+    std::set<types::material_id> mesh_materials;
+    for (const auto &cell : tria.cell_iterators_on_level(0))
+      mesh_materials.insert(cell->material_id());
+    const std::vector<types::boundary_id> mesh_boundaries = tria.get_boundary_ids();
+
+    for (const auto id : material_ids)
+      AssertThrow(mesh_materials.count(id) == 1,
+                  ExcMessage("Materials/Material ids: the mesh has no cells with "
+                             "material id " +
+                             std::to_string(id) + "."));
+    for (const auto id : mesh_materials)
+      AssertThrow(material_ids.count(id) == 1,
+                  ExcMessage("Materials/Material ids: the mesh has cells with material id " +
+                             std::to_string(id) + ", which has no material constants."));
+    for (const auto id : boundary_ids)
+      AssertThrow(std::find(mesh_boundaries.begin(), mesh_boundaries.end(), id) !=
+                    mesh_boundaries.end(),
+                  ExcMessage("Boundary conditions / Contact: boundary id " +
+                             std::to_string(id) + " does not exist in the mesh."));
+
+    // Inverted or degenerate cells: the corner Jacobians of a valid cell are
+    // all positive.
+    unsigned int bad_cells = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned() && is_inverted<dim>(cell))
+        ++bad_cells;
+    bad_cells = Utilities::MPI::sum(bad_cells, tria.get_communicator());
+    AssertThrow(bad_cells == 0,
+                ExcMessage("Geometry: the mesh has " + std::to_string(bad_cells) +
+                           " inverted or degenerate cells (non-positive Jacobian at "
+                           "a corner)."));
+  }
+
+  template class Scene<2>;
+  template class Scene<3>;
+} // namespace contact_fem

@@ -1,0 +1,338 @@
+// The diagnoses of what went wrong during a run: a lost contact, a
+// stalled Newton iteration, forces that do not balance, a model beyond
+// double precision. Each names the real cause rather than the most common
+// one.
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <contact_fem/simulator/contact_problem.h>
+#include <contact_fem/core/format.h>
+#include <contact_fem/geometry/mesh_queries.h>
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <map>
+#include <sstream>
+
+namespace contact_fem
+{
+  namespace
+  {
+    std::string
+    format(const double x, const unsigned int digits = 2)
+    {
+      std::ostringstream s;
+      s << std::setprecision(digits) << x;
+      return s.str();
+    }
+
+    /// Loads smaller than this many units of round-off of the coordinates
+    /// leave the gaps without a significant digit (measured on
+    /// prm/hertz.prm: at 1e-12 of its load, 4 units, the reactions balance
+    /// to 9e-5; at 1e-15 the contact is lost).
+    constexpr double round_off_units = 1e3;
+  } // namespace
+
+  template <int dim>
+  std::map<types::material_id, Tensor<1, dim>>
+  ContactProblem<dim>::body_loads(const double time) const
+  {
+    // The resultant of the applied pressures on each body, as in
+    // applied_load().
+    const QGauss<dim - 1> quadrature(degree + 1);
+    FEFaceValues<dim>     fe_face(*mapping, fe, quadrature,
+                              update_normal_vectors | update_quadrature_points |
+                                update_JxW_values);
+    std::map<types::material_id, Tensor<1, dim>> loads;
+    for (const auto &[id, constants] : materials.bodies)
+      loads[id] = Tensor<1, dim>();
+    for (const auto &condition : boundary_conditions.pressures)
+      {
+        FunctionParser<dim> pressure(1);
+        pressure.initialize(dim == 2 ? "x,y,t" : "x,y,z,t", condition.expression, {}, true);
+        pressure.set_time(time);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const auto f : cell->face_indices())
+              if (cell->face(f)->at_boundary() &&
+                  cell->face(f)->boundary_id() == condition.boundary_id)
+                {
+                  fe_face.reinit(cell, f);
+                  for (unsigned int q = 0; q < quadrature.size(); ++q)
+                    loads[cell->material_id()] -= pressure.value(fe_face.quadrature_point(q)) *
+                                                  fe_face.normal_vector(q) * fe_face.JxW(q);
+                }
+      }
+    for (auto &[id, load] : loads)
+      load = Utilities::MPI::sum(load, comm);
+    return loads;
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  ContactProblem<dim>::surface_normal(const types::boundary_id id) const
+  {
+    const QGauss<dim - 1> quadrature(degree + 1);
+    FEFaceValues<dim> fe_face(*mapping, fe, quadrature, update_normal_vectors | update_JxW_values);
+    Tensor<1, dim>    normal;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
+            {
+              fe_face.reinit(cell, f);
+              for (unsigned int q = 0; q < quadrature.size(); ++q)
+                normal += fe_face.normal_vector(q) * fe_face.JxW(q);
+            }
+    return Utilities::MPI::sum(normal, comm);
+  }
+
+  template <int dim>
+  double
+  ContactProblem<dim>::model_size() const
+  {
+    double size = 0.;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto v : cell->vertex_indices())
+          size = std::max(size, cell->vertex(v).norm());
+    return Utilities::MPI::max(size, comm);
+  }
+
+  template <int dim>
+  double
+  ContactProblem<dim>::load_displacement_scale(const double time) const
+  {
+    // A force F per unit thickness (2D) moves a body of modulus E by about
+    // F / E: the softest body is the one that moves.
+    const double youngs_min = materials.youngs_modulus_range().first;
+    const double by_force =
+      applied_load(time).norm() / (youngs_min * std::pow(model_size(), dim - 2.));
+    double prescribed = 0.;
+    for (const auto &condition : boundary_conditions.displacements)
+      {
+        if (condition.expression == "0")
+          continue;
+        FunctionParser<dim> function(1);
+        function.initialize(dim == 2 ? "x,y,t" : "x,y,z,t", condition.expression, {}, true);
+        function.set_time(time);
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const auto f : cell->face_indices())
+              if (cell->face(f)->at_boundary() &&
+                  cell->face(f)->boundary_id() == condition.boundary_id)
+                for (const auto v : cell->face(f)->vertex_indices())
+                  prescribed =
+                    std::max(prescribed, std::abs(function.value(cell->face(f)->vertex(v))));
+      }
+    return std::max(by_force, Utilities::MPI::max(prescribed, comm));
+  }
+
+  template <int dim>
+  std::string
+  ContactProblem<dim>::load_at_round_off(const double time) const
+  {
+    const double displacement = load_displacement_scale(time);
+    const double resolution   = std::numeric_limits<double>::epsilon() * model_size();
+    if (displacement == 0. || displacement >= round_off_units * resolution)
+      return "";
+    return "the load is at the round-off of the geometry: it moves the bodies by about " +
+           format(displacement) + ", while coordinates of size " + format(model_size()) +
+           " are resolved to " + format(resolution) +
+           " in double precision, so the gaps and the active set are rounding noise; "
+           "scale the load (or the units) up";
+  }
+
+  template <int dim>
+  std::string
+  ContactProblem<dim>::precision_limits() const
+  {
+    const std::string contrast = stiffness_contrast_limit();
+    return contrast.empty() ? incompressibility_limit() : contrast;
+  }
+
+  template <int dim>
+  std::string
+  ContactProblem<dim>::stiffness_contrast_limit() const
+  {
+    const auto [youngs_min, youngs_max] = materials.youngs_modulus_range();
+    if (!(youngs_max > 1e10 * youngs_min))
+      return "";
+    return "the stiffness ratio between the bodies, " + format(youngs_max / youngs_min) +
+             ", is beyond what a direct solve in double precision resolves (about 1e10)" +
+             (most_null_pivots > 0 ? ": the factorisation found " +
+                                       std::to_string(most_null_pivots) +
+                                       " zero pivot(s), i.e. the softer body's stiffness "
+                                       "vanished in round-off" :
+                                     std::string()) +
+             "; model the stiff body as rigid (fixed) instead";
+  }
+
+  template <int dim>
+  std::string
+  ContactProblem<dim>::incompressibility_limit() const
+  {
+    for (const auto &[id, constants] : materials.bodies)
+      if (lambda_over_mu(constants.poisson_ratio) > warn_lambda_over_mu())
+        return "body " + std::to_string(static_cast<unsigned int>(id)) +
+               " is nearly incompressible: lambda/mu = " +
+               format(lambda_over_mu(constants.poisson_ratio)) +
+               ", and double precision resolves its shear stiffness next to its volumetric "
+               "one only to about 1e-14 lambda/mu" +
+               (most_null_pivots > 0 ? " (the factorisation found " +
+                                         std::to_string(most_null_pivots) + " zero pivot(s))" :
+                                       std::string()) +
+               "; use a Poisson's ratio of at most 0.49999999 (lambda/mu = 5e7)";
+    return "";
+  }
+
+  template <int dim>
+  double
+  ContactProblem<dim>::load_toward_contact(const double time) const
+  {
+    // Per pair: the load on the slave bodies along the slave surface's
+    // outward normal, plus the load on the master bodies along the master
+    // surface's: positive pushes the bodies together.
+    const auto loads = body_loads(time);
+    double     push  = 0.;
+    for (const auto &pair : contact_parameters.pairs)
+      for (const types::boundary_id id : {pair.slave, pair.master})
+        {
+          const Tensor<1, dim> normal = surface_normal(id);
+          if (normal.norm() == 0.)
+            continue;
+          for (const auto body : bodies_of_surface(triangulation, id))
+            push += loads.at(body) * normal / normal.norm();
+        }
+    return push;
+  }
+
+  template <int dim>
+  std::string
+  ContactProblem<dim>::no_contact_message(const std::string &where, const bool in_iteration) const
+  {
+    const std::string separation =
+      where + ": no contact. No slave node is active" +
+      (in_iteration ? " (every node is in tension or apart)" : "") +
+      ": the load separates the bodies. Set Contact/Allow loss of contact = true if the "
+      "scene may lose contact.";
+    // Causes other than a separating load, most specific first.
+    std::string cause = precision_limits();
+    if (cause.empty())
+      cause = load_at_round_off(current_time);
+    if (!cause.empty())
+      return where + ": no contact. No slave node is active, but not because the load "
+                     "separates the bodies: " +
+             cause + ".";
+    double total = 0.;
+    for (const auto &[id, load] : body_loads(current_time))
+      total += load.norm();
+    const double push = load_toward_contact(current_time);
+    if (total > 0. && push > 1e-3 * total)
+      return where + ": no contact. No slave node is active, although the applied load "
+                     "pushes the bodies together (its resultant along the outward normals "
+                     "of the contact surfaces is " +
+             format(push, 3) +
+             "): the contact was lost numerically, not by the load. Hint: more load steps, "
+             "or a different Contact/Penalty.";
+    return separation;
+  }
+
+  template <int dim>
+  std::string
+  ContactProblem<dim>::non_convergence_hint(const bool   stalled,
+                                            const double r_u,
+                                            const double r_lambda) const
+  {
+    // (The caller adds the precision limits of the model, if any.)
+    if (!stalled)
+      return precision_limits().empty() ?
+               " Hint: more load steps, more Newton iterations, or a different "
+               "Contact/Penalty." :
+               "";
+    // The residuals no longer decrease and the active set stays: that is
+    // the round-off of this system, and more iterations or smaller steps do
+    // not lower it.
+    std::string keys;
+    if (r_u > newton_parameters.displacement_absolute_tolerance)
+      keys = "Newton/Displacement absolute tolerance (" +
+             format(newton_parameters.displacement_absolute_tolerance) + ")";
+    if (r_lambda > newton_parameters.multiplier_absolute_tolerance)
+      keys += std::string(keys.empty() ? "" : " or ") + "Newton/Multiplier absolute tolerance (" +
+              format(newton_parameters.multiplier_absolute_tolerance) + ")";
+    return " The residuals stalled at the round-off of this system (no active-set change, "
+           "no decrease): the tolerances lie below what double precision reaches here. Raise " +
+           keys + " above the last residuals.";
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::check_reaction_balance(const Json &reaction, Json &cycle_record)
+  {
+    // The stability study's verdict tolerance (doc/stability.md): converged
+    // runs of the shipped scenes balance to 1e-10 or better, damped ones
+    // with tightened tolerances to about 2e-8.
+    constexpr double tolerance = 1e-6;
+    const double     imbalance = reaction["relative_imbalance"].number_value();
+    if (!(imbalance > tolerance))
+      return;
+    std::string cause = precision_limits();
+    if (cause.empty())
+      cause = load_at_round_off(current_time);
+    if (cause.empty())
+      cause = "the Newton tolerances leave that much out of balance (Newton/Displacement "
+              "relative tolerance = " +
+              format(newton_parameters.displacement_relative_tolerance) +
+              "); tighten them";
+    const std::string text = "the applied load and the support reactions are out of "
+                             "balance by " +
+                             scientific(imbalance, 1) + " of the forces (tolerance " +
+                             format(tolerance) + "): " + cause;
+    pcout << "  Warning: " << text << "." << std::endl;
+    cycle_record.set("balance_warning", text);
+    balance_failed = true;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::warn_about_precision_limits() const
+  {
+    for (const auto &[id, constants] : materials.bodies)
+      if (lambda_over_mu(constants.poisson_ratio) > warn_lambda_over_mu())
+        pcout << "  Warning: body " << static_cast<unsigned int>(id) << " has Poisson's ratio "
+              << std::setprecision(16) << constants.poisson_ratio << std::setprecision(6)
+              << ": lambda/mu = " << format(lambda_over_mu(constants.poisson_ratio))
+              << ", beyond " << format(warn_lambda_over_mu())
+              << ", where double precision resolves the shear stiffness next to the "
+                 "volumetric one only to about 1e-14 lambda/mu: expect the reactions to "
+                 "balance the load to about that, or the solver to fail."
+              << std::endl;
+    if (const std::string contrast = stiffness_contrast_limit(); !contrast.empty())
+      pcout << "  Warning: " << contrast << "." << std::endl;
+    const std::string round_off = load_at_round_off(load_stepping.end_time);
+    if (!round_off.empty())
+      pcout << "  Warning: " << round_off << "." << std::endl;
+  }
+
+  // The class is instantiated in contact_problem.cc; here only the members
+  // defined in this file.
+#define INSTANTIATE(dim) \
+  template std::map<types::material_id, Tensor<1, dim>> ContactProblem<dim>::body_loads( const double) const; \
+  template Tensor<1, dim> ContactProblem<dim>::surface_normal(const types::boundary_id) const; \
+  template double ContactProblem<dim>::model_size() const; \
+  template double ContactProblem<dim>::load_displacement_scale(const double) const; \
+  template std::string ContactProblem<dim>::load_at_round_off(const double) const; \
+  template std::string ContactProblem<dim>::precision_limits() const; \
+  template std::string ContactProblem<dim>::stiffness_contrast_limit() const; \
+  template std::string ContactProblem<dim>::incompressibility_limit() const; \
+  template double      ContactProblem<dim>::load_toward_contact(const double) const; \
+  template std::string ContactProblem<dim>::no_contact_message(const std::string &, const bool) const; \
+  template std::string ContactProblem<dim>::non_convergence_hint(const bool, const double, const double) const; \
+  template void ContactProblem<dim>::check_reaction_balance(const Json &, Json &); \
+  template void ContactProblem<dim>::warn_about_precision_limits() const;
+  INSTANTIATE(2)
+  INSTANTIATE(3)
+#undef INSTANTIATE
+} // namespace contact_fem

@@ -1,0 +1,782 @@
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <contact_fem/simulator/contact_problem.h>
+#include <contact_fem/core/format.h>
+#include <contact_fem/simulator/output_files.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <unordered_map>
+
+namespace contact_fem
+{
+  namespace
+  {
+    /// Von Mises stress of the FE displacement, cell by cell material; with
+    /// B-bar (@p b_bar) from the projected volumetric strain.
+    template <int dim>
+    class VonMises : public DataPostprocessorScalar<dim>
+    {
+    public:
+      VonMises(const Materials<dim>                &materials,
+               const Mapping<dim>                  &mapping,
+               const TrilinosWrappers::MPI::Vector &solution,
+               const bool                           b_bar)
+        : DataPostprocessorScalar<dim>("von_Mises", update_gradients | update_quadrature_points)
+        , materials(materials)
+        , mapping(mapping)
+        , solution(solution)
+        , b_bar(b_bar)
+      {}
+
+      void
+      evaluate_vector_field(const DataPostprocessorInputs::Vector<dim> &inputs,
+                            std::vector<Vector<double>> &computed) const override
+      {
+        const typename DoFHandler<dim>::active_cell_iterator cell =
+          inputs.template get_cell<dim>();
+        const auto id = cell->material_id();
+        // Patches are built on several threads: each call has its own
+        // projection (output only, so its set-up cost does not matter).
+        std::unique_ptr<VolumetricProjection<dim>> projection;
+        Vector<double>                              local_values;
+        if (b_bar)
+          {
+            projection =
+              std::make_unique<VolumetricProjection<dim>>(mapping, cell->get_fe());
+            projection->reinit(cell);
+            local_values.reinit(cell->get_fe().n_dofs_per_cell());
+            cell->get_dof_values(solution, local_values);
+          }
+        for (unsigned int q = 0; q < computed.size(); ++q)
+          {
+            SymmetricTensor<2, dim> strain;
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j <= i; ++j)
+                strain[i][j] =
+                  0.5 * (inputs.solution_gradients[q][i][j] + inputs.solution_gradients[q][j][i]);
+            const SymmetricTensor<2, dim> stress =
+              b_bar ? materials.stress(id,
+                                       strain,
+                                       projection->value(local_values,
+                                                         mapping.transform_real_to_unit_cell(
+                                                           cell, inputs.evaluation_points[q]))) :
+                      materials.stress(id, strain);
+            computed[q](0) = materials.von_mises(id, stress);
+          }
+      }
+
+    private:
+      const Materials<dim>                &materials;
+      const Mapping<dim>                  &mapping;
+      const TrilinosWrappers::MPI::Vector &solution;
+      const bool                           b_bar;
+    };
+
+    /// Resultant of the contact pressures on the slave side (the same on
+    /// every rank: the interface is known everywhere).
+    template <int dim>
+    Tensor<1, dim>
+    total_contact_force(const ContactInterface<dim>   &interface,
+                        const ContactFormulation<dim> &contact)
+    {
+      Tensor<1, dim> force;
+      for (const auto &s : interface.slave_nodes)
+        if (s.paired && contact.is_active(s.node))
+          force += contact.normal_pressure(s.node) * s.D * s.normal;
+      return force;
+    }
+  } // namespace
+
+  namespace
+  {
+    /// The net support reaction, or "0 (...)" when it is below 1e-10 of the
+    /// forces of the scene: displacement-driven scenes have no net
+    /// reaction, and the round-off left (1e-15 serial, 9e-16 on two ranks
+    /// in kratos_patch_01) must not be printed as a number.
+    std::string
+    support_reaction_text(const double reaction, const double force_scale)
+    {
+      std::ostringstream s;
+      if (reaction < 1e-10 * force_scale)
+        s << "0 (< 1e-10 of the forces)";
+      else
+        s << reaction;
+      return s.str();
+    }
+  } // namespace
+
+  template <int dim>
+  Tensor<1, dim>
+  ContactProblem<dim>::applied_load(const double time) const
+  {
+    const QGauss<dim - 1> quadrature(degree + 1);
+    FEFaceValues<dim>     fe_face(*mapping, fe, quadrature,
+                              update_normal_vectors | update_quadrature_points |
+                                update_JxW_values);
+    Tensor<1, dim> force;
+    for (const auto &condition : boundary_conditions.pressures)
+      {
+        FunctionParser<dim> pressure(1);
+        pressure.initialize(dim == 2 ? "x,y,t" : "x,y,z,t", condition.expression, {}, true);
+        pressure.set_time(time);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const auto f : cell->face_indices())
+              if (cell->face(f)->at_boundary() &&
+                  cell->face(f)->boundary_id() == condition.boundary_id)
+                {
+                  fe_face.reinit(cell, f);
+                  for (unsigned int q = 0; q < quadrature.size(); ++q)
+                    force -= pressure.value(fe_face.quadrature_point(q)) *
+                             fe_face.normal_vector(q) * fe_face.JxW(q);
+                }
+      }
+    for (unsigned int d = 0; d < dim; ++d)
+      force[d] = Utilities::MPI::sum(force[d], comm);
+    return force;
+  }
+
+  template <int dim>
+  Json
+  ContactProblem<dim>::contact_results() const
+  {
+    Json result = Json::object();
+    if (!contact)
+      return result;
+    unsigned int   n_slave = 0, n_active = 0;
+    double         p_max = 0., p_min = std::numeric_limits<double>::max(), size_sum = 0.;
+    double         gap_max = 0.;
+    double         x_min = std::numeric_limits<double>::max(), x_max = -x_min;
+    for (const auto &node : interface->nodes)
+      n_slave += node.slave;
+    for (const auto &s : interface->slave_nodes)
+      if (s.paired && contact->is_active(s.node))
+        {
+          ++n_active;
+          p_max = std::max(p_max, contact->normal_pressure(s.node));
+          p_min = std::min(p_min, contact->normal_pressure(s.node));
+          gap_max =
+            std::max(gap_max, std::abs(interface->gap(s, interface_displacement)) / s.size);
+          size_sum += s.size;
+          const double x = interface->nodes[s.node].reference[0] +
+                           interface->displacement(s.node, interface_displacement)[0];
+          x_min = std::min(x_min, x);
+          x_max = std::max(x_max, x);
+        }
+    result.set("slave_nodes", n_slave)
+      .set("active_slave_nodes", n_active)
+      .set("contact_half_width", n_active > 0 ? 0.5 * (x_max - x_min) : 0.)
+      .set("max_contact_pressure", p_max)
+      .set("min_active_contact_pressure", n_active > 0 ? p_min : 0.)
+      .set("max_gap_over_h_on_active_nodes", gap_max)
+      .set("total_contact_force", total_contact_force(*interface, *contact).norm())
+      .set("slave_element_size", n_active > 0 ? size_sum / n_active : 0.);
+    contact->add_results(*interface, result);
+    result.set("largest_unexplained_penetration_over_h", last_penetration_excess);
+    Json slave_split = Json::array(), master_split = Json::array();
+    for (const unsigned int n : interface->slave_faces_per_rank)
+      slave_split.push(n);
+    for (const unsigned int n : interface->master_faces_per_rank)
+      master_split.push(n);
+    result.set("slave_faces_per_rank", slave_split).set("master_faces_per_rank", master_split);
+    return result;
+  }
+
+  template <int dim>
+  Json
+  ContactProblem<dim>::reaction_results() const
+  {
+    // Reactions are the residual K u - f at the Dirichlet DoFs, less the
+    // contact force where such a DoF belongs to the interface (a fixed
+    // component of a contact node): contact forces are internal.
+    std::vector<double> contact_force;
+    if (contact)
+      contact_force = contact->residuals(*interface, interface_displacement).contact_force;
+    Tensor<1, dim>            reaction;
+    double                    absolute_sum = 0.;
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    std::set<types::global_dof_index>    seen;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            if (owned_dofs.is_element(dofs[i]) &&
+                dirichlet_constraints.is_constrained(dofs[i]) &&
+                seen.insert(dofs[i]).second)
+              {
+                double r = residual(dofs[i]);
+                if (interface && std::binary_search(interface->dofs().begin(),
+                                                    interface->dofs().end(), dofs[i]))
+                  r -= contact_force[interface->position(dofs[i])];
+                reaction[fe.system_to_component_index(i).first] += r;
+                absolute_sum += std::abs(r);
+              }
+        }
+    for (unsigned int d = 0; d < dim; ++d)
+      reaction[d] = Utilities::MPI::sum(reaction[d], comm);
+    absolute_sum = Utilities::MPI::sum(absolute_sum, comm);
+    // Scale of the balance: the applied load, or for displacement-driven
+    // scenes (no applied load, reactions that cancel) half the sum of the
+    // reaction magnitudes. When even that is below 1e-10 E_min |u|_max
+    // h^(dim-2), no force acts (bodies pulled apart, rigid motion): the
+    // forces are round-off and there is no balance to check.
+    const Tensor<1, dim> load = applied_load(current_time);
+    const double youngs_min = materials.youngs_modulus_range().first;
+    double       h_max      = 0.;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        h_max = std::max(h_max, cell->diameter());
+    h_max = Utilities::MPI::max(h_max, comm);
+    const double no_force =
+      1e-10 * youngs_min * solution.linfty_norm() * std::pow(h_max, dim - 2.);
+    const double scale = std::max(load.norm(), 0.5 * absolute_sum);
+    Json                 result = Json::object();
+    result.set("applied_load", load.norm())
+      .set("support_reaction", reaction.norm())
+      .set("force_scale", scale)
+      .set("relative_imbalance", scale > no_force ? (load + reaction).norm() / scale : 0.);
+    return result;
+  }
+
+  namespace
+  {
+    /// Plane-strain Hertz contact of a cylinder on a plane.
+    struct Hertz
+    {
+      double a, p_max;
+      double
+      pressure(const double x) const
+      {
+        return std::abs(x) < a ? p_max * std::sqrt(1. - x * x / (a * a)) : 0.;
+      }
+    };
+
+    template <int dim>
+    Hertz
+    hertz_solution(const ContactInterface<dim> &interface,
+                   const double                 load,
+                   const double                 radius)
+    {
+      double E[2] = {0., 0.}, nu[2] = {0., 0.};
+      for (const auto &face : interface.faces)
+        if (face.pair == 0)
+          {
+            E[face.slave]  = face.youngs_modulus;
+            nu[face.slave] = face.poisson_ratio;
+          }
+      const double E_star =
+        1. / ((1. - nu[0] * nu[0]) / E[0] + (1. - nu[1] * nu[1]) / E[1]);
+      Hertz h;
+      h.a     = std::sqrt(4. * load * radius / (numbers::PI * E_star));
+      h.p_max = 2. * load / (numbers::PI * h.a);
+      return h;
+    }
+  } // namespace
+
+  template <int dim>
+  Json
+  ContactProblem<dim>::analytical_results(const Json &contact_json, const Json &) const
+  {
+    Json result = Json::object();
+    if (!contact)
+      return result;
+    // The Hertz load is the transmitted force: the same as the applied
+    // pressure resultant when the balance holds, and the only measure when
+    // the scene is driven by a prescribed displacement.
+    const double load = total_contact_force(*interface, *contact).norm();
+    const Hertz  h    = hertz_solution(*interface, load, analytical.radius);
+    // The numerical values come from contact_results().
+    const double p_num = contact_json["max_contact_pressure"].number_value();
+    const double a_num = contact_json["contact_half_width"].number_value();
+    const double size  = contact_json["slave_element_size"].number_value();
+    // A degree-1 geometry (Q1 on a linear mapping, e.g. with Finite
+    // element/Mapping degree = 1) replaces the arc by its chords, which lie inside the circle
+    // by h^2 t (1 - t) / (2 R) along a chord of length h: the discrete
+    // cylinder is shorter where it touches, and the contact force does the
+    // extra work W = sum_faces (lambda_a + lambda_b) h^3 / (24 R) (linear
+    // pressure interpolation), which lowers Pi_h by about W. On adaptive Q1
+    // meshes W is as large as the squared energy error itself (see
+    // doc/convergence.md), so the energy error below adds it back.
+    // Quadratic arcs (Q2, or Q1 on a quadratic mapping) deviate by
+    // O(h^4 / R^3): no term.
+    double chord_gap_work = 0.;
+    if (interface->geometry_degree == 1)
+      for (const auto &face : interface->faces)
+        if (face.slave)
+          {
+            const unsigned int a = face.nodes[0], b = face.nodes[1];
+            const double h = interface->nodes[a].reference.distance(interface->nodes[b].reference);
+            chord_gap_work +=
+              (contact->normal_pressure(a) + contact->normal_pressure(b)) * h * h * h /
+              (24. * analytical.radius);
+          }
+    result.set("type", analytical.type)
+      .set("load", load)
+      .set("a", h.a)
+      .set("p_max", h.p_max)
+      .set("a_error", std::abs(a_num - h.a))
+      .set("a_error_in_slave_elements", size > 0. ? std::abs(a_num - h.a) / size : 0.)
+      .set("p_max_relative_error", (p_num - h.p_max) / h.p_max)
+      .set("pressure_l2_relative_error", hertz_pressure_error(contact->pressures(*interface)));
+    if (interface->geometry_degree == 1)
+      result.set("chord_gap_work", chord_gap_work);
+    return result;
+  }
+
+
+  namespace
+  {
+    /// Relative L2 error of a pressure per interface node against
+    /// @p exact(x) over the paired slave nodes, with the mortar weights D_j
+    /// as nodal quadrature weights, at the deformed positions x of the nodes.
+    template <int dim, typename Exact>
+    double
+    pressure_l2_relative_error(const ContactInterface<dim>         &interface,
+                               const std::vector<double>           &interface_displacement,
+                               const std::vector<double>           &pressure,
+                               const Exact                         &exact)
+    {
+      double l2_error = 0., l2_norm = 0.;
+      for (const auto &s : interface.slave_nodes)
+        if (s.paired)
+          {
+            const double x = interface.nodes[s.node].reference[0] +
+                             interface.displacement(s.node, interface_displacement)[0];
+            const double p_exact = exact(x);
+            l2_error += s.D * std::pow(pressure[s.node] - p_exact, 2);
+            l2_norm += s.D * p_exact * p_exact;
+          }
+      return l2_norm > 0. ? std::sqrt(l2_error / l2_norm) : 0.;
+    }
+  } // namespace
+
+  template <int dim>
+  double
+  ContactProblem<dim>::hertz_pressure_error(const std::vector<double> &pressure) const
+  {
+    const Hertz h =
+      hertz_solution(*interface, total_contact_force(*interface, *contact).norm(), analytical.radius);
+    return pressure_l2_relative_error(*interface, interface_displacement, pressure,
+                                      [&](const double x) { return h.pressure(x - analytical.center); });
+  }
+
+  template <int dim>
+  double
+  ContactProblem<dim>::reference_pressure_error(const std::vector<double> &pressure) const
+  {
+    return pressure_l2_relative_error(*interface, interface_displacement, pressure,
+                                      [&](const double x) { return analytical.reference_pressure(x); });
+  }
+
+
+  template <int dim>
+  Json
+  ContactProblem<dim>::probe_results() const
+  {
+    // Each DoF is added by its owner only, so the sum over ranks is its value.
+    std::vector<double> values(probe_dofs.size() * dim, 0.);
+    for (unsigned int i = 0; i < probe_dofs.size(); ++i)
+      for (unsigned int d = 0; d < probe_dofs[i].size(); ++d)
+        if (owned_dofs.is_element(probe_dofs[i][d]))
+          values[i * dim + d] = solution(probe_dofs[i][d]);
+    Utilities::MPI::sum(values, comm, values);
+
+    Json probes = Json::array();
+    for (unsigned int i = 0; i < probe_dofs.size(); ++i)
+      {
+        Json displacement = Json::array();
+        pcout << "    displacement at " << to_string(output.displacement_probes[i]) << ":"
+              << std::scientific << std::setprecision(7);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            displacement.push(values[i * dim + d]);
+            pcout << "  u" << "xyz"[d] << " = " << values[i * dim + d];
+          }
+        pcout << std::defaultfloat << std::setprecision(6) << std::endl;
+        probes.push(Json::object()
+                      .set("point", to_string(output.displacement_probes[i]))
+                      .set("displacement", displacement));
+      }
+    return probes;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::print_results(const Json &contact_json,
+                                     const Json &reaction,
+                                     const Json &hertz) const
+  {
+    pcout << "  Results at t = " << current_time << ":" << std::endl
+          << std::setprecision(6);
+    if (contact)
+      {
+        // Printed from contact_results(), which computed them.
+        const auto n_slave =
+          static_cast<unsigned int>(contact_json["slave_nodes"].number_value());
+        const auto n_active =
+          static_cast<unsigned int>(contact_json["active_slave_nodes"].number_value());
+        const double p_max   = contact_json["max_contact_pressure"].number_value();
+        const double p_min   = contact_json["min_active_contact_pressure"].number_value();
+        const double gap_max = contact_json["max_gap_over_h_on_active_nodes"].number_value();
+        pcout << "    slave nodes:                  " << n_slave << std::endl
+              << "    active slave nodes:           " << n_active << std::endl;
+        if (n_active > 0)
+          pcout << "    max contact pressure:         " << p_max << std::endl
+                << "    min active contact pressure:  " << p_min << std::endl
+                << "    pressure spread (max-min)/max: " << value_or_ok((p_max - p_min) / p_max, 1e-8)
+                << std::endl
+                << "    max |gap|/h on active nodes:  " << value_or_ok(gap_max, 1e-10) << std::endl;
+        // Round-off-free: at or below 1e-6 h the excess is not printed as a
+        // number (an exactly resolved contact gives noise there).
+        const double excess =
+          contact_json["largest_unexplained_penetration_over_h"].number_value();
+        pcout << "    penetration check:            every slave node against the whole "
+                 "master surface, unexplained penetration "
+              << (excess < 1e-6 ? std::string("< 1e-6") : scientific(excess, 1))
+              << " h (tolerance " << contact_parameters.penetration_tolerance << " h)"
+              << std::endl;
+        std::ostringstream own_checks;
+        contact->print_results(*interface, interface_displacement, own_checks);
+        pcout << own_checks.str();
+      }
+    pcout << "    applied load:                 " << reaction["applied_load"].number_value()
+          << std::endl
+          << "    support reaction:             "
+          << support_reaction_text(reaction["support_reaction"].number_value(),
+                                   reaction["force_scale"].number_value())
+          << std::endl
+          << "    relative imbalance:           "
+          << value_or_ok(reaction["relative_imbalance"].number_value(), 1e-10) << std::endl;
+    if (analytical.type == "hertz cylinder" && contact)
+      pcout << "    Hertz a:                      " << hertz["a"].number_value() << std::endl
+            << "    Hertz p_max:                  " << hertz["p_max"].number_value() << std::endl
+            << "    p_max relative error:         "
+            << std::setprecision(3) << hertz["p_max_relative_error"].number_value() << std::endl
+            << "    |a - a_Hertz| / slave h:      "
+            << hertz["a_error_in_slave_elements"].number_value() << std::endl
+            << "    p_max within 2 % of Hertz:    "
+            << (std::abs(hertz["p_max_relative_error"].number_value()) < 0.02 ? "yes" : "no")
+            << std::endl
+            << "    a within one slave element:   "
+            << (hertz["a_error_in_slave_elements"].number_value() <= 1. ? "yes" : "no")
+            << std::endl
+            << std::setprecision(6);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::write_pressure_profile() const
+  {
+    const bool   hertz = analytical.type == "hertz cylinder";
+    Hertz        h{0., 0.};
+    if (hertz)
+      h = hertz_solution(*interface,
+                         total_contact_force(*interface, *contact).norm(),
+                         analytical.radius);
+    const std::string path = output.directory + "/pressure_profile.csv";
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      {
+        check_written(path, true);
+        return;
+      }
+    std::vector<std::array<double, 5>> rows;
+    for (const auto &s : interface->slave_nodes)
+      if (s.paired)
+        {
+          const double x = interface->nodes[s.node].reference[0] +
+                           interface->displacement(s.node, interface_displacement)[0];
+          rows.push_back({{x, contact->normal_pressure(s.node),
+                          hertz ? h.pressure(x - analytical.center) : 0.,
+                          interface->gap(s, interface_displacement),
+                          contact->is_active(s.node) ? 1. : 0.}});
+        }
+    std::sort(rows.begin(), rows.end());
+    std::ostringstream out;
+    out << "x,pressure,hertz_pressure,gap,active\n" << std::setprecision(10);
+    for (const auto &r : rows)
+      out << r[0] << ',' << r[1] << ',' << r[2] << ',' << r[3] << ',' << r[4] << '\n';
+    check_written(path, write_file_atomically(path, out.str()));
+  }
+
+  namespace
+  {
+    /// zlib's fastest level: deal.II's default (best compression) took 60 %
+    /// of the VTU time of prm/hertz.prm for 6 % smaller files
+    /// (doc/performance.md).
+    DataOutBase::VtkFlags
+    fast_vtk_flags()
+    {
+      DataOutBase::VtkFlags flags;
+      flags.compression_level = DataOutBase::VtkFlags::best_speed;
+      return flags;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ContactProblem<dim>::write_vtu(const unsigned int step, const double time)
+  {
+    TimerOutput::Scope t(*timer, "Output: VTU");
+    // Nodal contact fields live on a scalar Q_p space on the same mesh.
+    const FE_Q<dim> scalar_fe(degree);
+    DoFHandler<dim> scalar_dofs(triangulation);
+    scalar_dofs.distribute_dofs(scalar_fe);
+    const IndexSet scalar_owned = scalar_dofs.locally_owned_dofs();
+    IndexSet       scalar_relevant;
+    DoFTools::extract_locally_relevant_dofs(scalar_dofs, scalar_relevant);
+
+    const std::vector<std::string> names = {"contact_pressure", "weighted_gap", "active",
+                                            "slave", "master"};
+    std::vector<TrilinosWrappers::MPI::Vector> fields(names.size());
+    for (auto &f : fields)
+      f.reinit(scalar_owned, comm);
+
+    if (interface)
+      {
+        std::unordered_map<types::global_dof_index, unsigned int> node_of_dof;
+        for (unsigned int n = 0; n < interface->nodes.size(); ++n)
+          node_of_dof[interface->nodes[n].dofs[0]] = n;
+        std::vector<double> gap(interface->nodes.size(), 0.);
+        for (const auto &s : interface->slave_nodes)
+          if (s.paired)
+            gap[s.node] = interface->gap(s, interface_displacement);
+
+        std::vector<types::global_dof_index> vector_dofs(fe.n_dofs_per_cell()),
+          scalar_dofs_of_cell(scalar_fe.n_dofs_per_cell());
+        auto scalar_cell = scalar_dofs.begin_active();
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          {
+            if (cell->is_locally_owned())
+              {
+                cell->get_dof_indices(vector_dofs);
+                scalar_cell->get_dof_indices(scalar_dofs_of_cell);
+                for (unsigned int i = 0; i < vector_dofs.size(); ++i)
+                  {
+                    const auto ci = fe.system_to_component_index(i);
+                    const auto it = node_of_dof.find(vector_dofs[i]);
+                    if (ci.first != 0 || it == node_of_dof.end())
+                      continue;
+                    const auto scalar_dof = scalar_dofs_of_cell[ci.second];
+                    if (!scalar_owned.is_element(scalar_dof))
+                      continue;
+                    const unsigned int n = it->second;
+                    fields[0](scalar_dof) = contact->normal_pressure(n);
+                    fields[1](scalar_dof) = gap[n];
+                    fields[2](scalar_dof) = contact->is_active(n) ? 1. : 0.;
+                    fields[3](scalar_dof) = interface->nodes[n].slave ? 1. : 0.;
+                    fields[4](scalar_dof) = interface->nodes[n].master ? 1. : 0.;
+                  }
+              }
+            ++scalar_cell;
+          }
+      }
+    std::vector<TrilinosWrappers::MPI::Vector> ghosted_fields(names.size());
+    for (unsigned int k = 0; k < names.size(); ++k)
+      {
+        fields[k].compress(VectorOperation::insert);
+        ghosted_fields[k].reinit(scalar_owned, scalar_relevant, comm);
+        ghosted_fields[k] = fields[k];
+      }
+
+    DataOut<dim> data_out;
+    data_out.attach_triangulation(triangulation);
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      vector_field(dim, DataComponentInterpretation::component_is_part_of_vector);
+    data_out.add_data_vector(dof_handler, ghosted_solution,
+                             std::vector<std::string>(dim, "displacement"), vector_field);
+    const VonMises<dim> von_mises(materials, *mapping, ghosted_solution,
+                                  volumetric_projection != nullptr);
+    data_out.add_data_vector(dof_handler, ghosted_solution, von_mises);
+    if (interface)
+      for (unsigned int k = 0; k < names.size(); ++k)
+        data_out.add_data_vector(scalar_dofs, ghosted_fields[k], names[k]);
+    Vector<float> material(triangulation.n_active_cells()),
+      subdomain(triangulation.n_active_cells());
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          material(cell->active_cell_index())  = cell->material_id();
+          subdomain(cell->active_cell_index()) = triangulation.locally_owned_subdomain();
+        }
+    data_out.add_data_vector(material, "material_id");
+    data_out.add_data_vector(subdomain, "subdomain");
+    data_out.build_patches(*mapping, degree);
+    data_out.set_flags(fast_vtk_flags());
+    // One record per cycle and load step; the pvd "time" counts them.
+    (void)step;
+    (void)time;
+    const std::string name = data_out.write_vtu_with_pvtu_record(
+      output.directory + "/", "solution", vtu_records.size() + 1, comm, 3);
+    vtu_records.emplace_back(vtu_records.size() + 1, name);
+    std::ostringstream pvd;
+    DataOutBase::write_pvd_record(pvd, vtu_records);
+    const std::string path = output.directory + "/solution.pvd";
+    check_written(path, Utilities::MPI::this_mpi_process(comm) != 0 ||
+                          write_file_atomically(path, pvd.str()));
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::write_error_indicators() const
+  {
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      vector_field(dim, DataComponentInterpretation::component_is_part_of_vector);
+    data_out.add_data_vector(ghosted_solution, std::vector<std::string>(dim, "displacement"),
+                             DataOut<dim>::type_dof_data, vector_field);
+    data_out.add_data_vector(indicators, "error_indicator", DataOut<dim>::type_cell_data);
+    data_out.build_patches(*mapping, degree);
+    data_out.set_flags(fast_vtk_flags());
+    data_out.write_vtu_with_pvtu_record(output.directory + "/", "error_indicators", cycle,
+                                        comm, 2);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::write_convergence_row(const Json &r, const double cumulative)
+  {
+    const std::string path = output.directory + "/convergence.csv";
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      {
+        check_written(path, true);
+        return;
+      }
+    unsigned int iterations = 0;
+    // Unknown values (no reference, no analytical solution) stay empty.
+    auto number = [](const Json &j) {
+      std::ostringstream s;
+      if (std::isfinite(j.number_value()))
+        s << std::setprecision(8) << j.number_value();
+      return s.str();
+    };
+    for (const auto &step : newton_iterations_of_cycle)
+      iterations += step;
+    convergence_csv << cycle << ',' << number(r["n_cells"]) << ',' << number(r["n_dofs"])
+                    << ',' << number(r["contact"]["active_slave_nodes"]) << ','
+                    << refinement.estimator << ',' << number(r["estimated_error"]) << ','
+                    << number(r["relative_estimated_error"]) << ','
+                    << number(r["effectivity_index"]) << ','
+                    << number(r["analytical"]["p_max_relative_error"]) << ','
+                    << number(r["analytical"]["a_error"]) << ','
+                    << number(r["pressure_l2_relative_error"]) << ','
+                    << number(r["energy_error"]) << ',' << iterations << ','
+                    << number(r["wall_time"]) << ',' << cumulative << std::endl;
+    check_written(path, convergence_csv.good());
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::write_summary(const Json        &cycles,
+                                     const double       wall_time,
+                                     const std::string &status) const
+  {
+    const std::string path = output.directory + "/summary.json";
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      {
+        check_written(path, true);
+        return;
+      }
+    Json summary = Json::object();
+    summary.set("scene", scene_name)
+      .set("dim", dim)
+      .set("mpi_processes", Utilities::MPI::n_mpi_processes(comm))
+      .set("status", status)
+      .set("degree", degree)
+      .set("mapping_degree", mapping->get_degree())
+      .set("wall_time", wall_time)
+      .set("cycles", cycles);
+    std::ostringstream out;
+    summary.write(out);
+    out << '\n';
+    check_written(path, write_file_atomically(path, out.str()));
+  }
+
+  template <int dim>
+  OutputDirectoryReport
+  ContactProblem<dim>::open_output_directory()
+  {
+    const OutputDirectoryReport report = prepare_output_directory(output.directory, comm);
+    const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+    if (root)
+      log_file.open(output.directory + "/log.txt");
+    check_written(output.directory + "/log.txt", !root || static_cast<bool>(log_file));
+    if (root)
+      console.attach(log_file);
+    return report;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::report_earlier_outputs(const OutputDirectoryReport &report)
+  {
+    if (report.removed == 0)
+      return;
+    std::ostringstream text;
+    text << "Output directory '" << output.directory << "': removed " << report.removed
+         << " file(s) of an earlier run";
+    // A rerun of the same scene replaces its own results, as expected: the
+    // log says so, the console (and test output) stays the same for every
+    // rerun. Results of another scene are worth a word on the console.
+    if (report.earlier_scene == scene_name)
+      {
+        console.flush();
+        if (log_file.is_open())
+          log_file << text.str() << " of this scene." << std::endl;
+      }
+    else
+      pcout << text.str()
+            << (report.earlier_scene.empty() ? std::string(" (its scene is unknown)") :
+                                               " of scene '" + report.earlier_scene + "'")
+            << "." << std::endl;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::check_written(const std::string &path, const bool ok) const
+  {
+    // Collective, so that every rank stops if rank 0 could not write.
+    const bool all_ok = Utilities::MPI::min(ok ? 1 : 0, comm) == 1;
+    AssertThrow(all_ok, ExcMessage("Output: cannot write '" + path + "'."));
+  }
+
+  // The class is instantiated in contact_problem.cc; here only the members
+  // defined in this file.
+#define INSTANTIATE(dim)                                                        \
+  template Tensor<1, dim> ContactProblem<dim>::applied_load(const double) const; \
+  template Json           ContactProblem<dim>::contact_results() const;          \
+  template Json           ContactProblem<dim>::reaction_results() const;         \
+  template Json ContactProblem<dim>::analytical_results(const Json &,            \
+                                                        const Json &) const;     \
+  template void ContactProblem<dim>::write_pressure_profile() const;             \
+  template Json ContactProblem<dim>::probe_results() const;                      \
+  template double ContactProblem<dim>::hertz_pressure_error(                      \
+    const std::vector<double> &) const;                                           \
+  template double ContactProblem<dim>::reference_pressure_error(                  \
+    const std::vector<double> &) const;                                           \
+  template void ContactProblem<dim>::write_convergence_row(const Json &, const double); \
+  template void ContactProblem<dim>::print_results(const Json &, const Json &,           \
+                                                   const Json &) const;                \
+  template void ContactProblem<dim>::write_vtu(const unsigned int, const double); \
+  template void ContactProblem<dim>::write_error_indicators() const;             \
+  template void ContactProblem<dim>::write_summary(const Json &,                  \
+                                                   const double,                  \
+                                                   const std::string &) const; \
+  template OutputDirectoryReport ContactProblem<dim>::open_output_directory(); \
+  template void ContactProblem<dim>::report_earlier_outputs(const OutputDirectoryReport &); \
+  template void ContactProblem<dim>::check_written(const std::string &, const bool) const;
+  INSTANTIATE(2)
+  INSTANTIATE(3)
+#undef INSTANTIATE
+} // namespace contact_fem

@@ -1,0 +1,1659 @@
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q_cache.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <contact_fem/simulator/contact_problem.h>
+#include <contact_fem/core/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <set>
+#include <sstream>
+
+namespace contact_fem
+{
+  TeeStream::TeeStream(std::ostream &console)
+    : std::ostream(&buffer)
+  {
+    buffer.first = console.rdbuf();
+  }
+
+  void
+  TeeStream::attach(std::ostream &file)
+  {
+    flush();
+    buffer.second = file.rdbuf();
+  }
+
+  bool
+  TeeStream::file_failed() const
+  {
+    return buffer.file_failed;
+  }
+
+  // Only the console decides the state of the stream: a log file that
+  // fails (a full disk, ...) used to put the whole stream into a failed
+  // state, after which nothing more reached the console either. The file is
+  // dropped instead and the run says so at its end.
+  int
+  TeeStream::Buffer::overflow(int c)
+  {
+    if (c == EOF)
+      return !EOF;
+    if (second && second->sputc(c) == EOF)
+      drop_file();
+    return first->sputc(c);
+  }
+
+  int
+  TeeStream::Buffer::sync()
+  {
+    if (second && second->pubsync() != 0)
+      drop_file();
+    return first->pubsync();
+  }
+
+  void
+  TeeStream::Buffer::drop_file()
+  {
+    second      = nullptr;
+    file_failed = true;
+  }
+
+  namespace
+  {
+    /// Residuals below this fraction of their first value in a load step
+    /// are round-off: their digits differ between machines and partitions
+    /// (at ~1e-14 of it), so they are not printed as numbers.
+    constexpr double round_off_ratio = 1e-10;
+
+    /// "= value", or "< tolerance" for a residual below its tolerance, or
+    /// "at round-off" for one below round_off_ratio of its first value
+    /// @p reference (which differ between runs and must not reach compared
+    /// output).
+    std::string
+    residual_text(const double value, const double tolerance, const double reference)
+    {
+      return value <= tolerance                  ? "< " + scientific(tolerance, 0) :
+             value < round_off_ratio * reference ? std::string("at round-off") :
+                                                   "= " + scientific(value);
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ContactProblem<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3),
+                      "Space dimension of the scene (only 2 is implemented so far).");
+    prm.enter_subsection("Finite element");
+    prm.declare_entry("Degree", "1", Patterns::Integer(1, 2),
+                      "Polynomial degree of the displacement (Q1 or Q2).");
+    prm.declare_entry("Mapping degree", "auto", Patterns::Selection("auto|1|2"),
+                      "Polynomial degree of the geometry. auto: the element "
+                      "degree, but 2 for Q1 on scenes with curved boundaries "
+                      "(Geometry/Type = hertz cylinder, or Geometry/Manifolds): Q1 "
+                      "faces then follow the arc instead of its chords, whose "
+                      "sag, where the "
+                      "element size changes along a contact surface, shifts "
+                      "the gap and disturbs the contact pressure by up to "
+                      "0.5 % (doc/convergence.md). 1 keeps the chords (as "
+                      "Kratos' linear elements do).");
+    prm.declare_entry("Volumetric strain", "standard",
+                      Patterns::Selection("standard|B-bar"),
+                      "standard: the full strain in the elastic law. B-bar: the "
+                      "volumetric strain div u is projected per cell onto "
+                      "polynomials of degree p - 1 (selective, mean dilatation "
+                      "for Q1, Q2-P1 for Q2), which removes volumetric locking "
+                      "of nearly incompressible bodies (nu close to 0.5).");
+    prm.leave_subsection();
+    LinearSolver::declare_parameters(prm);
+    Scene<dim>::declare_parameters(prm);
+    Materials<dim>::declare_parameters(prm);
+    BoundaryConditions::declare_parameters(prm);
+    LoadStepping::declare_parameters(prm);
+    ContactParameters::declare_parameters(prm);
+    ContactFormulation<dim>::declare_parameters(prm);
+    NewtonParameters::declare_parameters(prm);
+    RefinementParameters::declare_parameters(prm);
+    StressRecoverySettings::declare_parameters(prm);
+    AnalyticalSolution::declare_parameters(prm);
+    OutputParameters::declare_parameters(prm);
+  }
+
+  namespace
+  {
+    /// One entry of @p subsection, for the members made before the body
+    /// of the constructor runs.
+    std::string
+    read_entry(ParameterHandler &prm, const std::string &subsection, const std::string &key)
+    {
+      prm.enter_subsection(subsection);
+      const std::string value = prm.get(key);
+      prm.leave_subsection();
+      return value;
+    }
+  } // namespace
+
+  template <int dim>
+  ContactProblem<dim>::ContactProblem(ParameterHandler  &prm,
+                                      const std::string &scene_name,
+                                      const std::string &prm_directory)
+    : comm(MPI_COMM_WORLD)
+    , console(std::cout)
+    , pcout(console, Utilities::MPI::this_mpi_process(comm) == 0)
+    , scene_name(scene_name)
+    , degree(std::stoul(read_entry(prm, "Finite element", "Degree")))
+    , triangulation(comm,
+                    typename Triangulation<dim>::MeshSmoothing(
+                      Triangulation<dim>::limit_level_difference_at_vertices))
+    , fe(FE_Q<dim>(degree), dim)
+    , dof_handler(triangulation)
+    , linear_solver(LinearSolver::create(prm))
+  {
+    // Every parameter is read and checked before any work is done.
+    scene.parse_parameters(prm, prm_directory);
+    // "auto" depends on the scene.
+    const std::string mapping_degree = read_entry(prm, "Finite element", "Mapping degree");
+    const unsigned int geometry_degree =
+      mapping_degree != "auto" ? std::stoul(mapping_degree) :
+      scene.has_curved_boundary() ? std::max(degree, 2u) :
+                                    degree;
+    // A curved mapping takes its support points from the manifolds (the
+    // transfinite interpolation of the Hertz disc is costly): cached once
+    // per mesh, in setup_dofs().
+    if (geometry_degree > 1)
+      mapping = std::make_unique<MappingQCache<dim>>(geometry_degree);
+    else
+      mapping = std::make_unique<MappingQ<dim>>(1);
+    prm.enter_subsection("Finite element");
+    if (prm.get("Volumetric strain") == "B-bar")
+      volumetric_projection = std::make_unique<VolumetricProjection<dim>>(*mapping, fe);
+    prm.leave_subsection();
+    materials.parse_parameters(prm);
+    boundary_conditions.parse_parameters(prm, dim);
+    load_stepping.parse_parameters(prm);
+    contact_parameters.parse_parameters(prm);
+    // Read (and checked) whether or not the scene has contact pairs; kept
+    // only if it has.
+    auto formulation = ContactFormulation<dim>::create(prm);
+    if (!contact_parameters.pairs.empty())
+      contact = std::move(formulation);
+    newton_parameters.parse_parameters(prm);
+    refinement.parse_parameters(prm);
+    spr_settings.parse_parameters(prm);
+    analytical.parse_parameters(prm, prm_directory);
+    output.parse_parameters(prm, dim);
+    check_scene_before_meshing();
+
+    timer = std::make_unique<TimerOutput>(comm, pcout, TimerOutput::never,
+                                          TimerOutput::wall_times);
+  }
+
+  template <int dim>
+  ContactProblem<dim>::~ContactProblem()
+  {
+    dof_handler.clear();
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::setup_dofs()
+  {
+    TimerOutput::Scope t(*timer, "Setup: DoFs");
+    if (auto *cache = dynamic_cast<MappingQCache<dim> *>(mapping.get()))
+      cache->initialize(MappingQ<dim>(cache->get_degree()), triangulation);
+    dof_handler.distribute_dofs(fe);
+    owned_dofs = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
+
+    hanging_constraints.clear();
+    hanging_constraints.reinit(relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, hanging_constraints);
+    hanging_constraints.close();
+
+    solution.reinit(owned_dofs, comm);
+    ghosted_solution.reinit(owned_dofs, relevant_dofs, comm);
+
+    locate_fixed_points();
+    make_dirichlet_constraints(0.);
+    if (!contact_parameters.pairs.empty())
+      {
+        interface = std::make_unique<ContactInterface<dim>>();
+        interface->initialize(*mapping, dof_handler, contact_parameters.pairs,
+                              dirichlet_constraints, materials, comm);
+        contact->initialize(*interface);
+      }
+    // Contact constraints couple slave DoFs to master DoFs anywhere: every
+    // rank may write to the rows and entries of all interface DoFs.
+    writable_dofs = relevant_dofs;
+    if (interface)
+      {
+        IndexSet interface_set(dof_handler.n_dofs());
+        interface_set.add_indices(interface->dofs().begin(), interface->dofs().end());
+        writable_dofs.add_indices(interface_set);
+      }
+    system_rhs.reinit(owned_dofs, writable_dofs, comm, true);
+    residual.reinit(owned_dofs, writable_dofs, comm, true);
+  }
+
+  template <int dim>
+  std::vector<types::global_dof_index>
+  ContactProblem<dim>::vertex_dofs(const BodyPoint &point, const std::string &key) const
+  {
+    Point<dim> location;
+    for (unsigned int d = 0; d < dim; ++d)
+      location[d] = point.coordinates[d];
+    std::vector<types::global_dof_index> dofs;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        if (cell->is_artificial() || cell->material_id() != point.material_id)
+          continue;
+        for (const auto v : cell->vertex_indices())
+          if (cell->vertex(v).distance(location) < 1e-8 * cell->diameter())
+            {
+              for (unsigned int d = 0; d < dim; ++d)
+                dofs.push_back(cell->vertex_dof_index(v, d));
+              break;
+            }
+        if (!dofs.empty())
+          break;
+      }
+    const unsigned int found = dofs.empty() ? 0 : 1;
+    const std::string  text  = to_string(point);
+    AssertThrow(Utilities::MPI::sum(found, comm) > 0,
+                ExcMessage(key + ": body " + std::to_string(point.material_id) +
+                           " has no mesh vertex at (" + text.substr(text.find('@') + 2) + ")."));
+    return dofs;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::locate_fixed_points()
+  {
+    fixed_point_dofs.clear();
+    for (const auto &condition : boundary_conditions.points)
+      {
+        const auto dofs = vertex_dofs(condition.point, "Boundary conditions/Fixed points");
+        if (!dofs.empty())
+          fixed_point_dofs.push_back(dofs[condition.component]);
+      }
+    std::sort(fixed_point_dofs.begin(), fixed_point_dofs.end());
+    fixed_point_dofs.erase(std::unique(fixed_point_dofs.begin(), fixed_point_dofs.end()),
+                           fixed_point_dofs.end());
+    probe_dofs.clear();
+    for (const auto &probe : output.displacement_probes)
+      probe_dofs.push_back(vertex_dofs(probe, "Output/Displacement probes"));
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::make_dirichlet_constraints(const double time)
+  {
+    dirichlet_constraints.clear();
+    dirichlet_constraints.reinit(relevant_dofs);
+    for (const auto &condition : boundary_conditions.displacements)
+      {
+        std::vector<std::string> expressions(dim, "0");
+        expressions[condition.component] = condition.expression;
+        FunctionParser<dim> function(dim);
+        function.initialize(dim == 2 ? "x,y,t" : "x,y,z,t", expressions, {}, true);
+        function.set_time(time);
+        ComponentMask mask(dim, false);
+        mask.set(condition.component, true);
+        VectorTools::interpolate_boundary_values(*mapping, dof_handler,
+                                                 condition.boundary_id, function,
+                                                 dirichlet_constraints, mask);
+      }
+    for (const auto dof : fixed_point_dofs)
+      if (!dirichlet_constraints.is_constrained(dof))
+        dirichlet_constraints.add_line(dof);
+    dirichlet_constraints.close();
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::compute_cell_matrices()
+  {
+    TimerOutput::Scope t(*timer, "Assembly: bulk");
+    const QGauss<dim>  quadrature(degree + 1);
+    FEValues<dim>      fe_values(*mapping, fe, quadrature,
+                            update_gradients | update_JxW_values);
+    const unsigned int n = fe.n_dofs_per_cell();
+    const FEValuesExtractors::Vector displacement(0);
+    std::vector<SymmetricTensor<2, dim>> strains(n);
+    std::vector<double>                  theta(n);
+
+    cell_matrices.assign(triangulation.n_active_cells(), FullMatrix<double>());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          FullMatrix<double> &K = cell_matrices[cell->active_cell_index()];
+          K.reinit(n, n);
+          if (volumetric_projection)
+            {
+              // B-bar: 2 mu eps:eps + lambda theta theta, theta projected.
+              volumetric_projection->reinit(cell);
+              const ElasticConstants &c      = materials.constants(cell->material_id());
+              const double            lambda = c.lambda(), mu = c.mu();
+              for (unsigned int q = 0; q < quadrature.size(); ++q)
+                {
+                  for (unsigned int i = 0; i < n; ++i)
+                    {
+                      strains[i] = fe_values[displacement].symmetric_gradient(i, q);
+                      theta[i]   = volumetric_projection->shape_value(i, quadrature.point(q));
+                    }
+                  for (unsigned int i = 0; i < n; ++i)
+                    for (unsigned int j = 0; j <= i; ++j)
+                      K(i, j) += (2. * mu * (strains[i] * strains[j]) +
+                                  lambda * theta[i] * theta[j]) *
+                                 fe_values.JxW(q);
+                }
+            }
+          else
+            {
+              const SymmetricTensor<4, dim> C = materials.stiffness_tensor(cell->material_id());
+              for (unsigned int q = 0; q < quadrature.size(); ++q)
+                {
+                  for (unsigned int i = 0; i < n; ++i)
+                    strains[i] = fe_values[displacement].symmetric_gradient(i, q);
+                  for (unsigned int i = 0; i < n; ++i)
+                    {
+                      const SymmetricTensor<2, dim> Ceps = C * strains[i];
+                      for (unsigned int j = 0; j <= i; ++j)
+                        K(i, j) += (Ceps * strains[j]) * fe_values.JxW(q);
+                    }
+                }
+            }
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = i + 1; j < n; ++j)
+              K(i, j) = K(j, i);
+        }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::compute_cell_loads(const double time)
+  {
+    TimerOutput::Scope t(*timer, "Assembly: bulk");
+    const QGauss<dim - 1> quadrature(degree + 1);
+    FEFaceValues<dim>     fe_face(*mapping, fe, quadrature,
+                              update_values | update_normal_vectors |
+                                update_quadrature_points | update_JxW_values);
+    std::vector<std::unique_ptr<FunctionParser<dim>>> pressures;
+    for (const auto &condition : boundary_conditions.pressures)
+      {
+        pressures.push_back(std::make_unique<FunctionParser<dim>>(1));
+        pressures.back()->initialize(dim == 2 ? "x,y,t" : "x,y,z,t",
+                                     condition.expression, {}, true);
+        pressures.back()->set_time(time);
+      }
+    cell_loads.assign(triangulation.n_active_cells(), Vector<double>());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            for (unsigned int c = 0; c < pressures.size(); ++c)
+              if (cell->face(f)->boundary_id() == boundary_conditions.pressures[c].boundary_id)
+                {
+                  fe_face.reinit(cell, f);
+                  Vector<double> &load = cell_loads[cell->active_cell_index()];
+                  if (load.size() == 0)
+                    load.reinit(fe.n_dofs_per_cell());
+                  for (unsigned int q = 0; q < quadrature.size(); ++q)
+                    {
+                      const double p = pressures[c]->value(fe_face.quadrature_point(q));
+                      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                        {
+                          const unsigned int comp = fe.system_to_component_index(i).first;
+                          load(i) -= p * fe_face.normal_vector(q)[comp] *
+                                     fe_face.shape_value(i, q) * fe_face.JxW(q);
+                        }
+                    }
+                }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::make_sparsity_pattern()
+  {
+    TimerOutput::Scope t(*timer, "Setup: sparsity");
+    // All candidate contact constraints at once: the pattern then holds
+    // every coupling any active set of this search can create, and the
+    // constrained rows keep their own entries (keep_constrained_dofs).
+    AffineConstraints<double> candidates;
+    candidates.reinit(writable_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, candidates);
+    if (contact)
+      contact->add_constraints(*interface, interface_fixed_values, candidates, true);
+    candidates.merge(dirichlet_constraints,
+                     AffineConstraints<double>::left_object_wins, true);
+    candidates.close();
+
+    // Every DoF of a cell couples with every other one and with the masters
+    // of those that are constrained: a superset of the couplings of any
+    // subset of the candidate constraints.
+    DynamicSparsityPattern               dsp(writable_dofs);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> closure;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          // A slave DoF may also be the parent of a hanging node: follow the
+          // hanging parents and the (closed) candidate masters of every DoF
+          // reached, so both the chained and the unchained forms are covered.
+          // Every DoF enters the closure once, so the walk ends by itself
+          // (a bound on it cut off the DoFs of a Q2 hexahedron, 81 > 64).
+          closure = dofs;
+          for (unsigned int k = 0; k < closure.size(); ++k)
+            for (const auto *c : {&hanging_constraints, &candidates})
+              if (c->can_store_line(closure[k]))
+                if (const auto *entries = c->get_constraint_entries(closure[k]))
+                  for (const auto &entry : *entries)
+                    if (std::find(closure.begin(), closure.end(), entry.first) ==
+                        closure.end())
+                      closure.push_back(entry.first);
+          std::sort(closure.begin(), closure.end());
+          closure.erase(std::unique(closure.begin(), closure.end()), closure.end());
+          for (const auto row : closure)
+            dsp.add_entries(row, closure.begin(), closure.end(), true);
+        }
+    if (contact)
+      contact->add_sparsity(*interface, candidates, owned_dofs, dsp);
+    SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs, comm, writable_dofs);
+    linear_solver->clear();
+    system_matrix.reinit(owned_dofs, owned_dofs, dsp, comm);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::make_constraints()
+  {
+    constraints.clear();
+    constraints.reinit(writable_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    if (contact)
+      contact->add_constraints(*interface, interface_fixed_values, constraints, false);
+    constraints.merge(dirichlet_constraints,
+                      AffineConstraints<double>::left_object_wins, true);
+    constraints.close();
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::assemble_system()
+  {
+    TimerOutput::Scope t(*timer, "Assembly: system");
+    system_matrix = 0.;
+    system_rhs    = 0.;
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    const Vector<double>                 no_load(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          const unsigned int index = cell->active_cell_index();
+          const Vector<double> &load =
+            cell_loads[index].size() > 0 ? cell_loads[index] : no_load;
+          constraints.distribute_local_to_global(cell_matrices[index], load, dofs,
+                                                 system_matrix, system_rhs);
+        }
+    if (contact)
+      contact->assemble(*interface, constraints, owned_dofs, system_matrix, system_rhs);
+    system_matrix.compress(VectorOperation::add);
+    system_rhs.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::solve_linear_system()
+  {
+    TimerOutput::Scope t(*timer, "Solve: linear");
+    const double linear_residual = linear_solver->solve(system_matrix, solution, system_rhs);
+    if (const std::string note = linear_solver->take_note(); !note.empty())
+      pcout << "    Note: " << note << "." << std::endl;
+    if (linear_solver->n_null_pivots() > 0)
+      {
+        ++singular_solves;
+        most_null_pivots = std::max(most_null_pivots, linear_solver->n_null_pivots());
+      }
+    // A singular system (a body held by nothing) does not always make the
+    // direct solver fail: check that the solution solves it. Singular
+    // systems leave O(1) residuals that refinement does not reduce.
+    AssertThrow(std::isfinite(linear_residual) &&
+                  linear_residual <= 1e-3 * system_rhs.l2_norm() + 1e-300,
+                ExcMessage("the linear system is singular (relative residual " +
+                           scientific(linear_residual / system_rhs.l2_norm()) +
+                           " after the direct solve)"));
+    constraints.distribute(solution);
+    ghosted_solution = solution;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::compute_residual()
+  {
+    TimerOutput::Scope t(*timer, "Assembly: residual");
+    residual = 0.;
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    Vector<double> local_u(fe.n_dofs_per_cell()), local_r(fe.n_dofs_per_cell());
+    double         local_strain = 0., local_work = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            local_u(i) = ghosted_solution(dofs[i]);
+          const unsigned int index = cell->active_cell_index();
+          cell_matrices[index].vmult(local_r, local_u);
+          local_strain += 0.5 * (local_u * local_r);
+          if (cell_loads[index].size() > 0)
+            {
+              local_work += local_u * cell_loads[index];
+              local_r -= cell_loads[index];
+            }
+          // Hanging DoFs pass their residual to their parents (C_h^T r).
+          hanging_constraints.distribute_local_to_global(local_r, dofs, residual);
+        }
+    residual.compress(VectorOperation::add);
+    strain_energy = Utilities::MPI::sum(local_strain, comm);
+    external_work = Utilities::MPI::sum(local_work, comm);
+  }
+
+  template <int dim>
+  double
+  ContactProblem<dim>::equilibrium_residual_norm(
+    const std::vector<double> &contact_force) const
+  {
+    // Free DoFs: not Dirichlet, not hanging. Interface DoFs are added from
+    // the replicated interface data, the others by their owners.
+    double local = 0.;
+    for (const auto i : owned_dofs)
+      if (!dirichlet_constraints.is_constrained(i) && !hanging_constraints.is_constrained(i) &&
+          !(interface && std::binary_search(interface->dofs().begin(),
+                                            interface->dofs().end(), i)))
+        local += residual(i) * residual(i);
+    double sum = Utilities::MPI::sum(local, comm);
+    if (interface)
+      for (unsigned int k = 0; k < interface->dofs().size(); ++k)
+        if (!interface_dof_fixed[k])
+          {
+            const double r = interface_residual[k] - contact_force[k]; // K u - f - f_contact
+            sum += r * r;
+          }
+    return std::sqrt(sum);
+  }
+
+  template <int dim>
+  double
+  ContactProblem<dim>::prescribed_increment() const
+  {
+    double largest = 0.;
+    for (const auto i : owned_dofs)
+      if (dirichlet_constraints.is_constrained(i) &&
+          dirichlet_constraints.get_constraint_entries(i)->empty())
+        largest =
+          std::max(largest, std::abs(dirichlet_constraints.get_inhomogeneity(i) - solution(i)));
+    return Utilities::MPI::max(largest, comm);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::search_for_step(const double prescribed,
+                                       const double step_size,
+                                       const bool   first_step)
+  {
+    TimerOutput::Scope t(*timer, "Contact: search");
+    interface_fixed_values = interface->gather([this](const types::global_dof_index i) {
+      return dirichlet_constraints.is_constrained(i) ?
+               dirichlet_constraints.get_inhomogeneity(i) :
+               0.;
+    });
+    interface_displacement  = interface->gather(solution);
+    step_start_displacement = interface_displacement;
+    search_configuration =
+      contact_parameters.updated_kinematics ?
+        interface_displacement :
+        std::vector<double>(interface_displacement.size(), 0.);
+    // The step moves the surfaces at least as far as the prescribed
+    // displacements change, and about as far as the last step did per unit
+    // of load; with small kinematics the operators must also reach as far as
+    // the surfaces have moved from the reference configuration.
+    const std::vector<double> moved =
+      interface->relative_motion(search_configuration, interface_displacement);
+    motion_allowance.assign(interface->pairs.size(), 0.);
+    for (unsigned int p = 0; p < motion_allowance.size(); ++p)
+      {
+        double predicted = prescribed;
+        if (p < last_step_motion.size() && last_step_size > 0.)
+          predicted = std::max(predicted, last_step_motion[p] * step_size / last_step_size);
+        motion_allowance[p] = search_growth * (moved[p] + predicted);
+      }
+    interface->update(search_configuration, contact_parameters.search_factor, motion_allowance);
+    contact->start_load_step(*interface, interface_displacement, first_step);
+  }
+
+  template <int dim>
+  bool
+  ContactProblem<dim>::extend_search_if_outrun()
+  {
+    const std::vector<double> motion = interface->motion_since_search(interface_displacement);
+    bool                      outrun = false;
+    for (unsigned int p = 0; p < motion.size(); ++p)
+      if (motion[p] > interface->search_reach()[p])
+        {
+          motion_allowance[p] = std::max(motion_allowance[p], search_growth * motion[p]);
+          outrun              = true;
+        }
+    if (outrun)
+      {
+        pcout << "    the surfaces moved beyond the search reach: ";
+        search_again();
+      }
+    return outrun;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::widen_search(const unsigned int pair, const double depth)
+  {
+    const double motion = interface->motion_since_search(interface_displacement)[pair];
+    motion_allowance[pair] =
+      std::max(2. * motion_allowance[pair], search_growth * motion) + depth;
+    pcout << "    a slave node penetrates the master where no master face is paired with "
+             "it: ";
+    search_again();
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::search_again()
+  {
+    pcout << "searching again with room for "
+          << scientific(*std::max_element(motion_allowance.begin(), motion_allowance.end()), 2)
+          << std::endl;
+    {
+      TimerOutput::Scope t(*timer, "Contact: search");
+      interface->update(search_configuration, contact_parameters.search_factor,
+                        motion_allowance);
+      contact->start_load_step(*interface, interface_displacement, false);
+    }
+    make_sparsity_pattern();
+  }
+
+  template <int dim>
+  typename ContactProblem<dim>::PenetrationCheck
+  ContactProblem<dim>::check_penetration() const
+  {
+    TimerOutput::Scope        t(*timer, "Contact: check");
+    const std::vector<double> distance = interface->surface_distances(interface_displacement);
+    PenetrationCheck          check;
+    for (unsigned int i = 0; i < interface->slave_nodes.size(); ++i)
+      {
+        const auto  &s           = interface->slave_nodes[i];
+        const double penetration = std::max(0., -distance[i]);
+        // What the node's own mortar gap says (with a penalty, or at the
+        // nodal value of a curved face's weighted gap, a node may lie
+        // inside), and the error of a gap linearised in the motion: a slip s
+        // along a surface whose normal turns by theta on the way moves the
+        // node off the linearised surface by about s theta, which small
+        // sliding bounds by theta < max_sliding_angle.
+        const double allowed =
+          s.paired ? std::max(0., -interface->nodal_gap(s, interface_displacement)) +
+                       max_sliding_angle *
+                         interface->slip_since_search(s, interface_displacement) :
+                     0.;
+        if ((penetration - allowed) / s.size > check.excess)
+          {
+            check.excess      = (penetration - allowed) / s.size;
+            check.node        = i;
+            check.penetration = penetration;
+            check.allowed     = allowed;
+          }
+      }
+    return check;
+  }
+
+  template <int dim>
+  NewtonFailure
+  ContactProblem<dim>::penetration_failure(const PenetrationCheck &check,
+                                           const unsigned int      step,
+                                           const double            time) const
+  {
+    const auto        &s = interface->slave_nodes[check.node];
+    const std::string configuration = contact_parameters.updated_kinematics ?
+                                        "configuration of the step's start" :
+                                        "reference configuration";
+    std::ostringstream message;
+    message << "load step " << step + 1 << " (t = " << time
+            << "): the converged solution is not a contact solution. The slave node at ("
+            << interface->nodes[s.node].reference << ") penetrates the master surface by "
+            << scientific(check.penetration, 3) << " (h = " << scientific(s.size, 3) << "), ";
+    if (s.paired)
+      message << "of which its mortar gap and its linearisation allow "
+              << scientific(check.allowed, 3)
+              << ": the surfaces slid or turned farther than the operators built on the "
+              << configuration << " can follow";
+    else
+      message << "and no master face is paired with it, also after a wider search (its "
+                 "normal does not meet the master surface in the "
+              << configuration << ")";
+    message << " (Contact/Penetration tolerance = " << contact_parameters.penetration_tolerance
+            << " h).";
+    if (!contact_parameters.updated_kinematics)
+      message << " This motion is beyond small sliding, so smaller load steps cannot help: "
+                 "use Contact/Kinematics = updated with enough load steps.";
+    return NewtonFailure(message.str(), contact_parameters.updated_kinematics);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::solve_load_step(const unsigned int step,
+                                       const double       time,
+                                       const double       step_size,
+                                       const bool         first_step,
+                                       Json              &record)
+  {
+    Timer step_timer;
+    current_time = time;
+    make_dirichlet_constraints(time);
+    compute_cell_loads(time);
+    // Start from the last converged state with the new prescribed values.
+    const double prescribed = contact ? prescribed_increment() : 0.;
+    dirichlet_constraints.distribute(solution);
+    ghosted_solution = solution;
+    if (contact)
+      search_for_step(prescribed, step_size, first_step);
+    make_sparsity_pattern();
+
+    // Stiffness ratios beyond ~1e10 (measured: 1e12 fails with either body
+    // as the slave) and nearly incompressible bodies leave the direct solve
+    // with too few digits: then that is the likely cause of any failure.
+    const auto precision_hint = [this]() {
+      const std::string cause = precision_limits();
+      return cause.empty() ? cause : " Likely cause: " + cause + ".";
+    };
+
+    factorisation_current = false;
+    pcout << "  Load step " << step + 1 << ", t = " << time << std::endl
+          << "    | it | disp. ratio | disp. abs | mult. ratio | mult. abs | changes | active |"
+          << std::endl;
+
+    // Residuals of the current iterate: the equilibrium of the free DoFs
+    // with the multipliers of the current active set, and the
+    // complementarity residual (gap of active nodes, multiplier / k of the
+    // others). With it > 0 the multipliers are first recovered from the
+    // solution of iteration it and the active set is updated.
+    double       reference_u = 0., reference_lambda = 0.;
+    double       last_u = 0., last_lambda = 0., previous_r_u = 0.;
+    unsigned int previous_changes = 1;
+    unsigned int last_changes = 0;
+    bool         converged = false, stalled = false;
+    unsigned int iteration = 0, searches_after_check = 0;
+    for (; iteration <= newton_parameters.max_iterations; ++iteration)
+      {
+        if (iteration > 0 && contact && contact->n_active() == 0 &&
+            !contact_parameters.allow_loss_of_contact)
+          throw NewtonFailure(no_contact_message("load step " + std::to_string(step + 1) +
+                                                   " (t = " + std::to_string(time) +
+                                                   "), iteration " + std::to_string(iteration),
+                                                 true),
+                              false);
+        if (iteration > 0)
+          {
+            make_constraints();
+            assemble_system();
+            const TrilinosWrappers::MPI::Vector previous_solution = solution;
+            try
+              {
+                solve_linear_system();
+                factorisation_current = true;
+              }
+            catch (const LinearSolverFailure &e)
+              {
+                throw NewtonFailure("load step " + std::to_string(step + 1) + " (t = " +
+                                      std::to_string(time) + "), iteration " +
+                                      std::to_string(iteration) + ": " + e.what() + "." +
+                                      (e.singular ? " Hint: is every body held by supports "
+                                                    "or by at least one active contact node?" :
+                                                    "") +
+                                      precision_hint(),
+                                    false);
+              }
+            catch (const std::exception &e)
+              {
+                const std::string what = e.what();
+                const auto        pos  = what.find("the linear system is singular");
+                throw NewtonFailure("load step " + std::to_string(step + 1) + " (t = " +
+                                      std::to_string(time) + "), iteration " +
+                                      std::to_string(iteration) + ": " +
+                                      (pos != std::string::npos ?
+                                         what.substr(pos, what.find(')', pos) - pos + 1) :
+                                         std::string("the linear solver failed")) +
+                                      ". Hint: is every body held by supports or by at "
+                                      "least one active contact node?" +
+                                      precision_hint(),
+                                    false);
+              }
+            // Both iterates satisfy the hanging-node and Dirichlet
+            // constraints, and so does their combination.
+            if (newton_parameters.damping < 1.)
+              {
+                solution.sadd(newton_parameters.damping, 1. - newton_parameters.damping,
+                              previous_solution);
+                ghosted_solution = solution;
+              }
+          }
+        compute_residual();
+        unsigned int                    changes = 0;
+        typename ContactFormulation<dim>::Residuals contact_residuals;
+        bool searched_again = false;
+        if (contact)
+          {
+            interface_displacement = interface->gather(solution);
+            if (iteration > 0)
+              searched_again = extend_search_if_outrun();
+            TimerOutput::Scope t(*timer, "Contact: active set");
+            interface_residual = interface->gather(residual);
+            if (iteration > 0)
+              {
+                contact->recover_multipliers(*interface, interface_residual);
+                changes = contact->update_active_set(*interface, interface_displacement);
+              }
+            contact_residuals = contact->residuals(*interface, interface_displacement);
+          }
+        else
+          contact_residuals.contact_force.assign(interface_residual.size(), 0.);
+
+        const double r_u      = equilibrium_residual_norm(contact_residuals.contact_force);
+        const double r_lambda = contact_residuals.multiplier;
+        if (!std::isfinite(r_u) || !std::isfinite(r_lambda))
+          throw NewtonFailure("load step " + std::to_string(step + 1) + " (t = " +
+                              std::to_string(time) + "), iteration " +
+                              std::to_string(iteration) +
+                              ": the residual is not a number (|r_u| = " + scientific(r_u) +
+                              ", |r_lambda| = " + scientific(r_lambda) +
+                              "). The linear system is singular or the input is "
+                              "extreme: is every body held by supports or by at "
+                              "least one active contact node?");
+        last_u           = r_u;
+        last_lambda      = r_lambda;
+        last_changes     = changes;
+        reference_u      = std::max(reference_u, r_u);
+        reference_lambda = std::max(reference_lambda, r_lambda);
+        const double ratio_u = reference_u > 0. ? r_u / reference_u : 0.;
+        const double ratio_lambda = reference_lambda > 0. ? r_lambda / reference_lambda : 0.;
+
+        const bool residuals_small =
+          (ratio_u <= newton_parameters.displacement_relative_tolerance ||
+           r_u <= newton_parameters.displacement_absolute_tolerance) &&
+          (ratio_lambda <= newton_parameters.multiplier_relative_tolerance ||
+           r_lambda <= newton_parameters.multiplier_absolute_tolerance);
+        // Nodes with lambda = 0 and g = 0 to round-off (a gap closing exactly
+        // at this load) may flip state forever without changing anything:
+        // with both residuals at round-off the active set counts as settled.
+        const bool at_round_off =
+          r_u <= newton_parameters.displacement_absolute_tolerance &&
+          r_lambda <= newton_parameters.multiplier_absolute_tolerance;
+        // With a settled active set each further solve returns the same
+        // displacement: a residual that stops decreasing is the accuracy of
+        // the linear solver (very large stiffness contrasts), not a failure.
+        // Bounded: a residual above 1e-2 of the step's is a failure whatever
+        // its trend.
+        // (Damped iterations shrink the residual by a fixed factor: not
+        // stagnation.)
+        // Flat: a settled active set, and the residual decreases by less
+        // than half what the (damped) update should remove.
+        const bool flat = iteration > 1 && changes == 0 && previous_changes == 0 &&
+                          r_u > (1. - 0.5 * newton_parameters.damping) * previous_r_u;
+        const bool stagnating = newton_parameters.damping == 1. && flat && ratio_u <= 1e-2 &&
+                                ratio_lambda <= newton_parameters.multiplier_relative_tolerance;
+        // Flat with both residuals eight orders below their start: round-off,
+        // which no tolerance below it can wait for.
+        stalled = flat && ratio_u <= 1e-8 && ratio_lambda <= 1e-8;
+        converged = iteration > 0 && !searched_again &&
+                    ((residuals_small && (changes == 0 || at_round_off)) || stagnating);
+        previous_changes = iteration > 0 ? changes : 1;
+        previous_r_u     = r_u;
+
+        // Residuals at or below their absolute tolerance are round-off:
+        // neither they nor their ratios are printed as numbers, so that
+        // reruns and MPI runs print the same table.
+        auto cells = [](const double ratio, const double value, const double tolerance) {
+          std::ostringstream s;
+          if (value <= tolerance)
+            s << std::setw(11) << "-" << " | " << std::setw(9)
+              << ("< " + scientific(tolerance, 0));
+          else if (ratio < round_off_ratio)
+            s << std::setw(11) << ("< " + scientific(round_off_ratio, 0)) << " | "
+              << std::setw(9) << "round-off";
+          else
+            s << std::setw(11) << scientific(ratio) << " | " << std::setw(9)
+              << scientific(value, 2);
+          return s.str();
+        };
+        pcout << "    | " << std::setw(2) << iteration << " | "
+              << cells(ratio_u, r_u, newton_parameters.displacement_absolute_tolerance)
+              << " | "
+              << cells(ratio_lambda, r_lambda, newton_parameters.multiplier_absolute_tolerance)
+              << " | " << std::setw(7)
+              << (iteration == 0 ? std::string("-") : std::to_string(changes)) << " | "
+              << std::setw(6) << (contact ? contact->n_active() : 0u) << " |"
+              << (converged ? (residuals_small ? " converged" :
+                                                 " converged to linear-solver accuracy") :
+                              "")
+              << std::endl;
+        if (converged && contact)
+          {
+            // The promise behind "converged": no slave node inside the
+            // master beyond what its gap accounts for. A node no master face
+            // is paired with gets a few wider searches.
+            const PenetrationCheck check = check_penetration();
+            if (check.excess > contact_parameters.penetration_tolerance)
+              {
+                if (interface->slave_nodes[check.node].paired ||
+                    searches_after_check == max_searches_after_check)
+                  throw penetration_failure(check, step, time);
+                ++searches_after_check;
+                converged            = false;
+                widen_search(interface->slave_nodes[check.node].pair, check.penetration);
+                continue;
+              }
+            last_penetration_excess = check.excess;
+            last_step_motion =
+              interface->relative_motion(step_start_displacement, interface_displacement);
+            last_step_size = step_size;
+          }
+        if (converged)
+          break;
+      }
+    if (converged && contact && contact->n_active() == 0 &&
+        !contact_parameters.allow_loss_of_contact)
+      throw NewtonFailure(no_contact_message("load step " + std::to_string(step + 1) +
+                                               " (t = " + std::to_string(time) + ")",
+                                             false),
+                          false);
+    if (!converged)
+      throw NewtonFailure("load step " + std::to_string(step + 1) + " (t = " +
+                          std::to_string(time) + ") did not converge in " +
+                          std::to_string(newton_parameters.max_iterations) +
+                          " iterations (last: |r_u| " +
+                          residual_text(last_u, newton_parameters.displacement_absolute_tolerance,
+                                        reference_u) +
+                          ", |r_lambda| " +
+                          residual_text(last_lambda,
+                                        newton_parameters.multiplier_absolute_tolerance,
+                                        reference_lambda) +
+                          ", " +
+                          std::to_string(last_changes) + " active-set changes)." +
+                          non_convergence_hint(stalled, last_u, last_lambda) + precision_hint(),
+                        !stalled);
+
+    newton_iterations_of_cycle.push_back(iteration);
+    record.set("time", time)
+      .set("newton_iterations", iteration)
+      .set("converged", converged)
+      .set("active_slave_nodes", contact ? contact->n_active() : 0u)
+      .set("wall_time", step_timer.wall_time());
+  }
+
+  template <int dim>
+  int
+  ContactProblem<dim>::run()
+  {
+    Timer total_timer;
+    // The output directory is prepared only now, after all input was
+    // checked: an earlier run's files go (they would pass for this run's),
+    // and a directory that cannot take the new ones stops the run before
+    // any work.
+    const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+    const OutputDirectoryReport earlier_outputs = open_output_directory();
+    pcout << "contact_fem: scene '" << scene_name << "', " << dim << "D, "
+          << Utilities::MPI::n_mpi_processes(comm) << " MPI process(es)" << std::endl;
+    report_earlier_outputs(earlier_outputs);
+    print_input_warnings();
+
+    {
+      TimerOutput::Scope t(*timer, "Setup: mesh");
+      scene.create_mesh(triangulation);
+      std::set<types::material_id> material_ids;
+      for (const auto &[id, constants] : materials.bodies)
+        material_ids.insert(id);
+      std::set<types::boundary_id> boundary_ids;
+      for (const auto &c : boundary_conditions.displacements)
+        boundary_ids.insert(c.boundary_id);
+      for (const auto &c : boundary_conditions.pressures)
+        boundary_ids.insert(c.boundary_id);
+      for (const auto &pair : contact_parameters.pairs)
+        boundary_ids.insert({pair.slave, pair.master});
+      Scene<dim>::check_mesh(triangulation, material_ids, boundary_ids);
+    }
+    // Refining a polygon of a curve without its manifold moves p_max away
+    // from the converged value with every level: say so once, up front.
+    const bool refines = scene.global_refinements > 0 || !scene.refinement_boxes.empty() ||
+                         refinement.n_cycles > 1;
+    if (const std::string chords = scene.chord_warning(); refines && !chords.empty())
+      pcout << "Warning: " << chords << std::endl;
+    if (mapping->get_degree() > degree)
+      pcout << "Q" << degree << " elements on a mapping of degree " << mapping->get_degree()
+            << " (the curved boundaries are not replaced by chords)" << std::endl;
+
+    if (root)
+      {
+        convergence_csv.open(output.directory + "/convergence.csv");
+        convergence_csv << "cycle,cells,dofs,active_slave_nodes,estimator,estimated_error,"
+                           "relative_estimated_error,effectivity_index,p_max_relative_error,"
+                           "a_error,pressure_l2_relative_error,energy_error,"
+                           "newton_iterations,wall_time,cumulative_wall_time\n";
+      }
+    check_written(output.directory + "/convergence.csv", !root || convergence_csv.good());
+    Json   cycles     = Json::array();
+    double cumulative = 0.;
+    int    exit_code  = 0;
+    for (cycle = 0; cycle < refinement.n_cycles; ++cycle)
+      {
+        if (cycle > 0 && !refine_mesh())
+          {
+            // The last cycle's results are final: mark the run complete.
+            write_summary(cycles, total_timer.wall_time(), converged_status());
+            break;
+          }
+        timer->reset();
+        uncounted_wall_time = 0.;
+        Timer      cycle_timer;
+        Json       record    = Json::object();
+        const bool converged = run_cycle(cycle, record);
+        const double wall    = cycle_timer.wall_time() - uncounted_wall_time;
+        cumulative += wall;
+        record.set("wall_time", wall).set("cumulative_wall_time", cumulative);
+        Json timing = Json::object();
+        for (const auto &[name, seconds] :
+             timer->get_summary_data(TimerOutput::total_wall_time))
+          timing.set(name, seconds);
+        record.set("timing", timing);
+        cycles.push(record);
+        write_convergence_row(record, cumulative);
+        // Written after every cycle, so an interrupted study keeps its data;
+        // the status says whether the run is complete.
+        const bool last = !converged || cycle + 1 == refinement.n_cycles;
+        write_summary(cycles, total_timer.wall_time(),
+                      !converged ? "failed: results of the last converged load step" :
+                      !last      ? "running" :
+                                   converged_status());
+        if (output.print_timing)
+          {
+            pcout << "  Wall time of cycle " << cycle << ": " << wall << " s (cumulative "
+                  << cumulative << " s), of which" << std::endl;
+            for (const auto &[name, seconds] :
+                 timer->get_summary_data(TimerOutput::total_wall_time))
+              pcout << "    " << std::left << std::setw(22) << name << std::right
+                    << std::setw(10) << std::fixed << std::setprecision(4) << seconds
+                    << " s" << std::defaultfloat << std::setprecision(6) << std::endl;
+          }
+        if (!converged)
+          {
+            exit_code = 2;
+            break;
+          }
+      }
+    if (console.file_failed())
+      pcout << "Warning: writing '" << output.directory
+            << "/log.txt' failed during the run: the log is incomplete (the console has "
+               "everything)."
+            << std::endl;
+    return exit_code;
+  }
+
+  template <int dim>
+  std::string
+  ContactProblem<dim>::converged_status() const
+  {
+    return balance_failed ? "converged, but the reactions do not balance the load "
+                            "(cycles[].balance_warning)" :
+                            "converged";
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::warn_about_modelling_choices() const
+  {
+    warn_about_precision_limits();
+    // Volumetric locking: measured on the Hertz scene, p_max is off by more
+    // than 2 % beyond these Poisson's ratios without B-bar
+    // (doc/stability.md).
+    const double locking_nu = degree == 1 ? 0.49 : 0.499;
+    if (!volumetric_projection)
+      for (const auto &[id, constants] : materials.bodies)
+        if (constants.poisson_ratio > locking_nu)
+          pcout << "  Warning: body " << static_cast<unsigned int>(id)
+                << " has Poisson's ratio " << constants.poisson_ratio << ": degree " << degree
+                << " elements lock volumetrically beyond about " << locking_nu
+                << "; set Finite element/Volumetric strain = B-bar." << std::endl;
+    // The mortar side should be the softer one (and the finer mesh): a stiff
+    // slave on a soft, coarse master cannot represent the pressure.
+    if (interface)
+      for (unsigned int p = 0; p < contact_parameters.pairs.size(); ++p)
+        {
+          double slave_E = 0., master_E = 0.;
+          for (const auto &face : interface->faces)
+            if (face.pair == p)
+              (face.slave ? slave_E : master_E) = std::max(face.slave ? slave_E : master_E,
+                                                          face.youngs_modulus);
+          if (master_E > 0. && slave_E > 10. * master_E)
+            pcout << "  Warning: contact pair "
+                  << static_cast<unsigned int>(contact_parameters.pairs[p].slave) << ": "
+                  << static_cast<unsigned int>(contact_parameters.pairs[p].master)
+                  << ": the slave side is " << slave_E / master_E
+                  << " times stiffer than the master side; the softer (and finer) "
+                     "surface should be the slave (Contact/Pairs)."
+                  << std::endl;
+        }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::warn_about_large_displacements(Json &cycle_record)
+  {
+    // Linear elasticity is a small-displacement theory: displacements of
+    // half the model size mean a rigid-body mode that the supports (and
+    // frictionless contact) leave free, or a load far beyond the model.
+    // (A tenth would flag prescribed rigid shifts, e.g. a deep initial
+    // overlap pushed apart.)
+    Point<dim> low, high;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        low[d]  = std::numeric_limits<double>::max();
+        high[d] = -std::numeric_limits<double>::max();
+      }
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto v : cell->vertex_indices())
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              low[d]  = std::min(low[d], cell->vertex(v)[d]);
+              high[d] = std::max(high[d], cell->vertex(v)[d]);
+            }
+    double size = 0.;
+    for (unsigned int d = 0; d < dim; ++d)
+      size = std::max(size, Utilities::MPI::max(high[d], comm) + Utilities::MPI::max(-low[d], comm));
+    const double u_max = solution.linfty_norm();
+    if (u_max > 0.5 * size)
+      {
+        std::ostringstream text;
+        text << "the largest displacement, " << u_max << ", exceeds half the model size ("
+             << size << "): a rigid-body mode that the supports leave free (e.g. a rotation; "
+             << "see Boundary conditions/Fixed points) or a load beyond small-strain theory";
+        pcout << "  Warning: " << text.str() << "." << std::endl;
+        cycle_record.set("warning", text.str());
+      }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::warn_about_large_strains(Json &cycle_record)
+  {
+    // Linear elasticity and a contact gap linear in u assume small strains
+    // and rotations: beyond a few percent the answer is that of a model the
+    // bodies no longer follow (and the step count would matter to any
+    // geometry update).
+    constexpr double   strain_limit = 0.05, rotation_limit = 0.1;
+    const QGauss<dim>  quadrature(fe.degree + 1);
+    FEValues<dim>      fe_values(*mapping, fe, quadrature, update_gradients);
+    const FEValuesExtractors::Vector                 displacement(0);
+    std::vector<Tensor<2, dim>>                      gradients(quadrature.size());
+    double                                           strain = 0., rotation = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_gradients(ghosted_solution, gradients);
+          for (const auto &grad : gradients)
+            {
+              const auto eigenvalues = dealii::eigenvalues(symmetrize(grad));
+              for (const double e : eigenvalues)
+                strain = std::max(strain, std::abs(e));
+              // The infinitesimal rotation: the skew part's largest entry.
+              for (unsigned int i = 0; i < dim; ++i)
+                for (unsigned int j = 0; j < i; ++j)
+                  rotation = std::max(rotation, 0.5 * std::abs(grad[i][j] - grad[j][i]));
+            }
+        }
+    strain   = Utilities::MPI::max(strain, comm);
+    rotation = Utilities::MPI::max(rotation, comm);
+    cycle_record.set("largest_strain", strain).set("largest_rotation", rotation);
+    if (strain <= strain_limit && rotation <= rotation_limit)
+      return;
+    std::ostringstream text;
+    text << "the solution leaves the small-strain range (largest principal strain "
+         << scientific(strain, 2) << ", largest rotation " << scientific(rotation, 2)
+         << " rad; linear elasticity and the contact gap assume below " << strain_limit
+         << " and " << rotation_limit << "): the load is beyond what this model describes";
+    pcout << "  Warning: " << text.str() << "." << std::endl;
+    cycle_record.set("small_strain_warning", text.str());
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::warn_about_weakly_held_rotation(Json &cycle_record)
+  {
+    // Frictionless contact on a curved surface resists a rotation about its
+    // centre of curvature only through the discretisation (a polygon or a
+    // piecewise-quadratic arc is not quite a circle): that rigid-body mode
+    // has a stiffness far below the elastic ones, the solver finds no zero
+    // pivot, and the solution carries a rotation set by the mesh. Probe:
+    // load every body that touches a contact surface with a unit couple and
+    // solve with the factors of the converged system (one back
+    // substitution). An elastically held body of volume V turns by about
+    // 1 / (G V), G a shear modulus; the softest one of the model is taken,
+    // since a stiff body may rest on a soft one. Measured on the Hertz disc
+    // (theta G V): 3.4 with its fixed points, 300-500 without them.
+    constexpr double compliance_limit = 50.;
+    if (!contact || !factorisation_current || !linear_solver->can_solve_again() ||
+        linear_solver->n_null_pivots() > 0)
+      return;
+    TimerOutput::Scope t(*timer, "Check: held rotation");
+    double                          softest = std::numeric_limits<double>::max();
+    std::vector<types::material_id> bodies;
+    for (const auto &[id, constants] : materials.bodies)
+      {
+        softest = std::min(softest, constants.mu());
+        bodies.push_back(id);
+      }
+    std::set<types::boundary_id> contact_ids;
+    for (const auto &pair : contact_parameters.pairs)
+      contact_ids.insert({pair.slave, pair.master});
+    std::vector<unsigned int> touches(bodies.size(), 0);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary() && contact_ids.count(cell->face(f)->boundary_id()))
+            touches[std::lower_bound(bodies.begin(), bodies.end(), cell->material_id()) -
+                    bodies.begin()] = 1;
+    Utilities::MPI::max(touches, comm, touches);
+
+    const QGauss<dim>                quadrature(degree + 1);
+    FEValues<dim>                    fe_values(*mapping, fe, quadrature,
+                                update_values | update_gradients | update_quadrature_points |
+                                  update_JxW_values);
+    const FEValuesExtractors::Vector displacement(0);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    Vector<double>                       cell_load(fe.n_dofs_per_cell());
+    std::vector<Tensor<2, dim>>          gradients(quadrature.size());
+    constexpr unsigned int               n_axes = dim == 2 ? 1 : 3;
+
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        if (touches[b] == 0)
+          continue;
+        // Centroid and second moments int x_i^2 of the body.
+        double         volume = 0.;
+        Tensor<1, dim> first_moment, second_moments;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned() && cell->material_id() == bodies[b])
+            {
+              fe_values.reinit(cell);
+              for (unsigned int q = 0; q < quadrature.size(); ++q)
+                {
+                  const Point<dim> &x = fe_values.quadrature_point(q);
+                  volume += fe_values.JxW(q);
+                  first_moment += x * fe_values.JxW(q);
+                  for (unsigned int i = 0; i < dim; ++i)
+                    second_moments[i] += x[i] * x[i] * fe_values.JxW(q);
+                }
+            }
+        volume        = Utilities::MPI::sum(volume, comm);
+        first_moment  = Utilities::MPI::sum(first_moment, comm);
+        second_moments = Utilities::MPI::sum(second_moments, comm);
+        const Point<dim> centre(first_moment / volume);
+
+        for (unsigned int axis = 0; axis < n_axes; ++axis)
+          {
+            // A body force f = omega x (x - c) / J: no net force, and with
+            // J = int |x - c|^2 minus the part along the axis, unit moment
+            // about the axis.
+            Tensor<1, dim> omega_axis;
+            if constexpr (dim == 3)
+              omega_axis[axis] = 1.;
+            double polar = 0.;
+            for (unsigned int i = 0; i < dim; ++i)
+              if (dim == 2 || i != axis)
+                polar += second_moments[i] - volume * centre[i] * centre[i];
+            const auto couple = [&](const Point<dim> &x) {
+              const Tensor<1, dim> r = x - centre;
+              Tensor<1, dim>       f;
+              if constexpr (dim == 2)
+                {
+                  f[0] = -r[1];
+                  f[1] = r[0];
+                }
+              else
+                f = cross_product_3d(omega_axis, r);
+              return f / polar;
+            };
+            TrilinosWrappers::MPI::Vector probe_load(owned_dofs, comm);
+            for (const auto &cell : dof_handler.active_cell_iterators())
+              if (cell->is_locally_owned() && cell->material_id() == bodies[b])
+                {
+                  fe_values.reinit(cell);
+                  cell_load = 0.;
+                  for (unsigned int q = 0; q < quadrature.size(); ++q)
+                    {
+                      const Tensor<1, dim> f = couple(fe_values.quadrature_point(q));
+                      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                        cell_load(i) += fe_values[displacement].value(i, q) * f * fe_values.JxW(q);
+                    }
+                  cell->get_dof_indices(dofs);
+                  // The vector form condenses without inhomogeneities.
+                  constraints.distribute_local_to_global(cell_load, dofs, probe_load);
+                }
+            probe_load.compress(VectorOperation::add);
+
+            // Response: solution + K^-1 probe, distributed, minus solution
+            // (the inhomogeneities cancel).
+            TrilinosWrappers::MPI::Vector response(owned_dofs, comm);
+            linear_solver->solve_again(response, probe_load);
+            response += solution;
+            constraints.distribute(response);
+            response -= solution;
+            TrilinosWrappers::MPI::Vector ghosted_response(owned_dofs, relevant_dofs, comm);
+            ghosted_response = response;
+
+            // Mean rotation of the body about the axis.
+            double rotation = 0.;
+            for (const auto &cell : dof_handler.active_cell_iterators())
+              if (cell->is_locally_owned() && cell->material_id() == bodies[b])
+                {
+                  fe_values.reinit(cell);
+                  fe_values[displacement].get_function_gradients(ghosted_response, gradients);
+                  const unsigned int i = (axis + 1) % 3, j = (axis + 2) % 3;
+                  for (unsigned int q = 0; q < quadrature.size(); ++q)
+                    {
+                      const Tensor<2, dim> &G = gradients[q];
+                      rotation += (dim == 2 ? 0.5 * (G[1][0] - G[0][1]) :
+                                              0.5 * (G[j % dim][i % dim] - G[i % dim][j % dim])) *
+                                  fe_values.JxW(q);
+                    }
+                }
+            rotation = std::abs(Utilities::MPI::sum(rotation, comm)) / volume;
+            const double compliance = rotation * softest * volume;
+            if (!(compliance > compliance_limit))
+              continue;
+            std::ostringstream text;
+            text << "body " << static_cast<unsigned int>(bodies[b])
+                 << " is held only weakly against rotation: a couple turns it "
+                 << std::setprecision(3) << compliance << std::setprecision(6)
+                 << " times more than elasticity would (theta G V, G the smallest shear "
+                 << "modulus); frictionless contact on a curved surface resists a rotation "
+                 << "about its centre only through the discretisation, so the results along "
+                 << "that rotation depend on the mesh; hold it (see Boundary "
+                 << "conditions/Fixed points)";
+            pcout << "  Warning: " << text.str() << "." << std::endl;
+            cycle_record.set("rotation_warning", text.str());
+            break;
+          }
+      }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::warn_about_singular_stiffness(Json &cycle_record) const
+  {
+    if (singular_solves == 0)
+      return;
+    std::ostringstream text;
+    text << "the stiffness matrix was singular in " << singular_solves
+         << " Newton solve(s) of this cycle (up to " << most_null_pivots << " zero pivot(s))";
+    // Zero pivots also come from stiffness lost in round-off: then that is
+    // the cause, not a free rigid-body mode.
+    if (const std::string cause = precision_limits(); !cause.empty())
+      text << ": " << cause;
+    else
+      text << ": a rigid-body mode that neither the supports nor the "
+           << "active contact hold (see Boundary conditions/Fixed points). The solver "
+           << "held it at one DoF; results along that mode are not determined by the model";
+    pcout << "  Warning: " << text.str() << "." << std::endl;
+    cycle_record.set("singular_stiffness_warning", text.str());
+  }
+
+  template <int dim>
+  bool
+  ContactProblem<dim>::run_cycle(const unsigned int cycle, Json &cycle_record)
+  {
+    newton_iterations_of_cycle.clear();
+    last_step_motion.clear();
+    last_step_size          = 0.;
+    last_penetration_excess = 0.;
+    singular_solves  = 0;
+    most_null_pivots = 0;
+    setup_dofs();
+    if (transferred_solution)
+      {
+        solution = *transferred_solution;
+        hanging_constraints.distribute(solution);
+        ghosted_solution = solution;
+        transferred_solution.reset();
+      }
+    if (interface)
+      {
+        interface_dof_fixed.assign(interface->dofs().size(), false);
+        for (const auto &node : interface->nodes)
+          for (unsigned int d = 0; d < dim; ++d)
+            interface_dof_fixed[interface->position(node.dofs[d])] = node.fixed[d];
+      }
+    compute_cell_matrices();
+    pcout << "Cycle " << cycle << ": " << triangulation.n_global_active_cells()
+          << " cells, " << dof_handler.n_dofs() << " DoFs";
+    if (interface)
+      {
+        unsigned int n_slave = 0;
+        for (const auto &node : interface->nodes)
+          n_slave += node.slave;
+        pcout << ", " << n_slave << " slave nodes";
+      }
+    pcout << std::endl;
+
+    if (cycle == 0)
+      warn_about_modelling_choices();
+
+    cycle_record.set("cycle", cycle)
+      .set("n_cells", static_cast<double>(triangulation.n_global_active_cells()))
+      .set("n_dofs", static_cast<double>(dof_handler.n_dofs()));
+
+    // The first cycle steps the load; later cycles start from the
+    // transferred solution at the end time. A step whose Newton iteration
+    // fails is split and retried from the last converged state.
+    const unsigned int n_steps   = cycle == 0 ? load_stepping.n_steps : 1;
+    const double       end_time  = load_stepping.end_time;
+    double             t_done    = cycle == 0 ? 0. : end_time * (n_steps - 1) / n_steps;
+    const double       nominal_step = end_time / n_steps;
+    double             step_size    = nominal_step;
+    unsigned int       splits = 0, n_solved = 0, successes_since_split = 0;
+    Json               steps     = Json::array();
+    bool               converged = true;
+    TrilinosWrappers::MPI::Vector saved_solution = solution;
+    std::unique_ptr<typename ContactFormulation<dim>::State> saved_state;
+    // The mortar operators of the last converged state: a failed step has
+    // searched again, and the results reported after giving up must be
+    // those of the converged state with its own operators.
+    std::unique_ptr<ContactInterface<dim>> saved_interface;
+    if (contact)
+      {
+        saved_state     = contact->save_state();
+        saved_interface = std::make_unique<ContactInterface<dim>>(*interface);
+      }
+    while (t_done < end_time * (1. - 1e-12))
+      {
+        const double time = std::min(end_time, t_done + step_size);
+        Json         step_record = Json::object();
+        try
+          {
+            solve_load_step(n_solved, time, time - t_done, n_solved == 0, step_record);
+          }
+        catch (const NewtonFailure &failure)
+          {
+            pcout << "  Newton failed at " << failure.what() << std::endl;
+            solution         = saved_solution;
+            ghosted_solution = solution;
+            if (contact)
+              {
+                contact->restore_state(*saved_state);
+                *interface        = *saved_interface;
+              }
+            // Consecutive splits are bounded, and so is the step size: a step
+            // below 1e-12 of the end time cannot advance the load.
+            if (failure.splittable && splits < load_stepping.max_splits &&
+                step_size / load_stepping.split_factor > 1e-12 * end_time)
+              {
+                ++splits;
+                successes_since_split = 0;
+                step_size /= load_stepping.split_factor;
+                pcout << "  Splitting the step: retrying from t = " << t_done
+                      << " with step " << step_size << " (split " << splits << " of at most "
+                      << load_stepping.max_splits << ")" << std::endl;
+                continue;
+              }
+            pcout << std::endl
+                  << "Error: giving up at " << failure.what() << std::endl
+                  << "The results written are those of the last converged load step"
+                  << " (t = " << t_done << ")." << std::endl;
+            converged = false;
+            break;
+          }
+        steps.push(step_record);
+        ++n_solved;
+        splits = 0;
+        t_done = time;
+        // After a split, two converged steps in a row let the step grow
+        // back toward the nominal size, so one hard moment does not cost
+        // small steps for the rest of the load path.
+        if (step_size < nominal_step && t_done < end_time * (1. - 1e-12) &&
+            ++successes_since_split == 2)
+          {
+            step_size = std::min(nominal_step, step_size * load_stepping.split_factor);
+            successes_since_split = 0;
+            pcout << "  Growing the step to " << step_size << std::endl;
+          }
+        saved_solution = solution;
+        if (contact)
+          {
+            saved_state      = contact->save_state();
+            *saved_interface = *interface;
+          }
+        if (output.write_vtu)
+          write_vtu(n_solved, time);
+      }
+    current_time = t_done;
+    cycle_record.set("load_steps", steps);
+    warn_about_large_displacements(cycle_record);
+    if (n_solved > 0)
+      warn_about_large_strains(cycle_record);
+    warn_about_weakly_held_rotation(cycle_record);
+    warn_about_singular_stiffness(cycle_record);
+    if (n_solved == 0)
+      return false;
+    if (!converged && contact)
+      {
+        // Results of the last converged state: its residual and gaps.
+        make_dirichlet_constraints(current_time);
+        compute_cell_loads(current_time);
+        compute_residual();
+        interface_displacement = interface->gather(solution);
+      }
+
+    const Json contact_json  = contact_results();
+    const Json reaction_json = reaction_results();
+    cycle_record.set("contact", contact_json).set("reaction", reaction_json);
+    if (converged)
+      check_reaction_balance(reaction_json, cycle_record);
+    Json hertz_json = Json::object();
+    if (analytical.type != "none")
+      {
+        hertz_json = analytical_results(contact_json, reaction_json);
+        cycle_record.set("analytical", hertz_json);
+        cycle_record.set("pressure_l2_relative_error",
+                         hertz_json["pressure_l2_relative_error"]);
+      }
+    // Total potential energy 1/2 u.K u - f.u of the bodies (from the last
+    // residual evaluation): its difference to that of an overkill solution
+    // measures the energy-norm error.
+    const double potential_energy = strain_energy - external_work;
+    cycle_record.set("strain_energy", strain_energy).set("potential_energy", potential_energy);
+    print_results(contact_json, reaction_json, hertz_json);
+    if (!probe_dofs.empty())
+      cycle_record.set("displacement_probes", probe_results());
+    if (contact && !analytical.reference_pressure_profile.empty())
+      {
+        const double error = reference_pressure_error(contact->pressures(*interface));
+        cycle_record.set("pressure_reference_l2_relative_error", error);
+        pcout << "    pressure, L2 error against the reference: " << value_or_ok(error, 1e-10)
+              << std::endl;
+      }
+    double energy_error = std::numeric_limits<double>::quiet_NaN();
+    if (std::isfinite(analytical.reference_potential_energy))
+      {
+        // A conforming discrete solution minimises the energy over a subset:
+        // its energy lies above the exact one, and 2 (Pi_h - Pi) is the
+        // squared energy-norm error (plus the contact work, see the
+        // parameter).
+        // Degree-1 Hertz: the work of the contact force on the chord gap
+        // (analytical_results()) is a geometry error of the polygonal arc, not
+        // part of the discretisation error the estimate is compared with.
+        const double chord_work = hertz_json["chord_gap_work"].number_value();
+        const double chord_gap_work = std::isfinite(chord_work) ? chord_work : 0.;
+        const double excess =
+          potential_energy + chord_gap_work - analytical.reference_potential_energy;
+        energy_error = std::sqrt(2. * std::abs(excess));
+        cycle_record.set("energy_error", energy_error);
+        pcout << "    energy-norm error:            " << energy_error << " (from Pi_h "
+              << (chord_gap_work > 0. ? "+ W_chord " : "") << "- Pi_ref = " << excess << ")"
+              << std::endl;
+        if (excess < 0.)
+          pcout << "  Warning: the potential energy is below the reference: the "
+                   "discrete problem is softer than the exact one (a polygonal "
+                   "curved boundary, the weak mortar gap) or the reference is not "
+                   "accurate enough; sqrt(2 |Pi_h - Pi_ref|) is then not a bound "
+                   "of the error."
+                << std::endl;
+      }
+    if (output.write_pressure_profile && contact)
+      write_pressure_profile();
+    if (!converged)
+      return false;
+    if (refinement.n_cycles > 1)
+      {
+        estimate_error(cycle_record);
+        if (energy_error > 0.)
+          {
+            const double effectivity =
+              cycle_record["estimated_error"].number_value() / energy_error;
+            cycle_record.set("effectivity_index", effectivity);
+            pcout << "    effectivity index eta / error: " << std::setprecision(3)
+                  << effectivity << std::setprecision(6) << std::endl;
+            pcout << "    effectivity in [0.8, 1.25]:   "
+                  << (effectivity >= 0.8 && effectivity <= 1.25 ? "yes" : "no") << std::endl;
+            const double plain = cycle_record["plain_spr_estimated_error"].number_value();
+            if (std::isfinite(plain))
+              {
+                cycle_record.set("plain_spr_effectivity_index", plain / energy_error);
+                pcout << "    effectivity of plain SPR:     " << std::setprecision(3)
+                      << plain / energy_error << std::setprecision(6) << std::endl;
+              }
+          }
+        if (output.write_vtu)
+          write_error_indicators();
+      }
+    return true;
+  }
+
+  template class ContactProblem<2>;
+  template class ContactProblem<3>;
+} // namespace contact_fem

@@ -1,0 +1,251 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/distributed/solution_transfer.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/numerics/error_estimator.h>
+
+#include <contact_fem/simulator/contact_problem.h>
+#include <contact_fem/core/format.h>
+#include <contact_fem/adaptivity/marking.h>
+#include <contact_fem/contact/mortar.h>
+#include <contact_fem/adaptivity/refinement.h>
+#include <contact_fem/adaptivity/stress_recovery.h>
+
+#include <set>
+
+namespace contact_fem
+{
+  namespace
+  {
+    /// Per slave node of @p interface: the Gauss points of its slave faces
+    /// in the reference configuration, weighted by the node's shape function
+    /// (weights sum to int N_j ds).
+    template <int dim>
+    std::map<unsigned int, std::vector<TractionSample<dim>>>
+    slave_support_samples(const ContactInterface<dim> &interface)
+    {
+      std::map<unsigned int, std::vector<TractionSample<dim>>> samples;
+      if constexpr (dim == 2)
+        {
+          const unsigned int p = interface.degree;
+          const QGauss<1>    quadrature(p + 2);
+          for (const auto &face : interface.faces)
+            if (face.slave)
+              {
+                const Mortar::LineFace line = interface.line(face);
+                for (unsigned int q = 0; q < quadrature.size(); ++q)
+                  {
+                    const double xi = 2. * quadrature.point(q)[0] - 1.;
+                    const double ds = 2. * quadrature.weight(q) * line.tangent(xi).norm();
+                    const Tensor<1, 2> n = Mortar::face_normal(line, xi, face.orientation);
+                    for (unsigned int k = 0; k < face.nodes.size(); ++k)
+                      samples[face.nodes[k]].push_back(
+                        {line.point(xi), n, ds * Mortar::shape_value(p, k, xi)});
+                  }
+              }
+        }
+      else
+        AssertThrow(false, ExcNotImplemented());
+      return samples;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ContactProblem<dim>::report_recovered_tractions(
+    const std::vector<ContactNodeTraction<dim>>  &nodes,
+    const std::vector<SymmetricTensor<2, dim>> &node_stresses,
+    const std::string                           &prefix,
+    Json                                        &cycle_record) const
+  {
+    // How well the recovered stress carries the contact traction, in the
+    // convention of the imposed condition: the traction sigma* n0 on the
+    // reference surface (n0 = the node's N_j-weighted mean reference normal)
+    // against -p n (n = the deformed normal the force acts along). Its
+    // normal part, scaled from the reference to the deformed surface by
+    // int N_j ds / D_j (the mortar pressure is a force per deformed area;
+    // the scenes' surface strains reach 1 %), is compared with the exact
+    // pressure by the same L2 measure as the mortar pressure; its shear
+    // part, which a frictionless contact makes zero, is reported as the
+    // largest over the active nodes.
+    std::vector<double> pressure(interface->nodes.size(), 0.);
+    double              largest_shear = 0., p_max = 0.;
+    std::size_t         i = 0; // @p nodes are the paired slave nodes in order
+    for (const auto &s : interface->slave_nodes)
+      if (s.paired)
+        {
+          Tensor<1, dim> n0;
+          double         reference_length = 0.;
+          for (const auto &q : nodes[i].samples)
+            {
+              n0 += q.weight * q.normal;
+              reference_length += q.weight;
+            }
+          n0 /= n0.norm();
+          const Tensor<1, dim> n        = nodes[i].normal / nodes[i].normal.norm();
+          const Tensor<1, dim> traction = node_stresses[i] * n0;
+          const double         normal   = -(traction * n);
+          pressure[s.node]              = s.D > 0. ? normal * reference_length / s.D : normal;
+          if (contact->is_active(s.node))
+            {
+              largest_shear = std::max(largest_shear, (traction + normal * n).norm());
+              p_max         = std::max(p_max, contact->normal_pressure(s.node));
+            }
+          ++i;
+        }
+    AssertThrow(i == nodes.size() && i == node_stresses.size(), ExcInternalError());
+    const double      shear = p_max > 0. ? largest_shear / p_max : 0.;
+    const std::string label = prefix.empty() ? "    recovered" : "    plain SPR recovered";
+    cycle_record.set(prefix + "recovered_shear_traction_max_relative", shear);
+    pcout << label << " shear traction / p_max: " << value_or_ok(shear, 1e-6) << std::endl;
+    if (analytical.type == "hertz cylinder")
+      {
+        const double error = hertz_pressure_error(pressure);
+        cycle_record.set(prefix + "recovered_pressure_l2_relative_error", error);
+        pcout << label << " pressure, L2 error against Hertz: " << value_or_ok(error, 1e-10)
+              << std::endl;
+      }
+    if (!analytical.reference_pressure_profile.empty())
+      {
+        const double error = reference_pressure_error(pressure);
+        cycle_record.set(prefix + "recovered_pressure_reference_l2_relative_error", error);
+        pcout << label << " pressure, L2 error against the reference: "
+              << value_or_ok(error, 1e-10) << std::endl;
+      }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::estimate_error(Json &cycle_record)
+  {
+    TimerOutput::Scope t(*timer, "Estimate");
+    const std::string &type = refinement.estimator;
+    indicators.reinit(triangulation.n_active_cells());
+    typename StressRecovery<dim>::Settings settings;
+    settings.contact_terms      = type != "spr";
+    settings.penalty_normal     = spr_settings.penalty_normal;
+    settings.penalty_tangential = spr_settings.penalty_tangential;
+
+    // The contact tractions of the active slave nodes, imposed as the
+    // N_j-weighted mean over the node's slave faces (which is what a dual
+    // multiplier is). The stresses live on the reference configuration,
+    // while the contact force -lambda_j D_j n_j acts along the normal of the
+    // deformed surface and D_j is measured there: the mean traction is that
+    // force over the reference int N_j ds. (Splitting it along the reference
+    // normal instead would be off by the surface rotation, ~ a / R in Hertz,
+    // which does not shrink under refinement.) When the recovered traction
+    // is reported (a known pressure), every paired node is listed, the
+    // inactive ones not imposed, in the order report_recovered_tractions()
+    // expects.
+    const bool pressure_known = contact && (analytical.type == "hertz cylinder" ||
+                                            !analytical.reference_pressure_profile.empty());
+    std::vector<ContactNodeTraction<dim>> tractions;
+    if (contact && (settings.contact_terms || pressure_known))
+      {
+        const auto support = slave_support_samples(*interface);
+        for (const auto &s : interface->slave_nodes)
+          if (s.paired && (pressure_known || contact->is_active(s.node)))
+            {
+              const auto &samples   = support.at(s.node);
+              double      reference = 0.;
+              for (const auto &q : samples)
+                reference += q.weight;
+              const bool   active = contact->is_active(s.node);
+              const double force  = active ? contact->normal_pressure(s.node) * s.D : 0.;
+              tractions.push_back({interface->nodes[s.node].reference, s.normal,
+                                   -force / reference * s.normal, samples, active});
+            }
+      }
+    const auto spr = StressRecovery<dim>::estimate(*mapping, dof_handler, ghosted_solution,
+                                                   materials, tractions, settings,
+                                                   volumetric_projection.get());
+    if (type == "kelly")
+      KellyErrorEstimator<dim>::estimate(*mapping, dof_handler, QGauss<dim - 1>(degree + 1),
+                                         {}, ghosted_solution, indicators, ComponentMask(),
+                                         nullptr, numbers::invalid_unsigned_int,
+                                         triangulation.locally_owned_subdomain());
+    else
+      indicators = spr.cell_indicators;
+
+    relative_estimate = spr.relative_error;
+    cycle_record.set("estimator", type)
+      .set("estimated_error", spr.estimated_error)
+      .set("relative_estimated_error", spr.relative_error)
+      .set("solution_energy_norm", spr.solution_energy_norm);
+    pcout << "    estimated error (SPR" << (settings.contact_terms ? " contact" : "")
+          << "): eta / |u|_E = " << value_or_ok(spr.relative_error, 1e-10) << std::endl;
+    if (pressure_known)
+      report_recovered_tractions(tractions, spr.node_stresses, "", cycle_record);
+
+    t.stop();
+    if (refinement.compare_plain_spr && settings.contact_terms)
+      {
+        Timer comparison;
+        settings.contact_terms = false;
+        const auto plain       = StressRecovery<dim>::estimate(
+          *mapping, dof_handler, ghosted_solution, materials, tractions, settings,
+          volumetric_projection.get());
+        cycle_record.set("plain_spr_estimated_error", plain.estimated_error);
+        pcout << "    plain SPR on the same mesh:   eta / |u|_E = "
+              << value_or_ok(plain.relative_error, 1e-10) << std::endl;
+        if (pressure_known)
+          report_recovered_tractions(tractions, plain.node_stresses, "plain_spr_",
+                                     cycle_record);
+        uncounted_wall_time += comparison.wall_time();
+      }
+  }
+
+  template <int dim>
+  bool
+  ContactProblem<dim>::refine_mesh()
+  {
+    TimerOutput::Scope t(*timer, "Refine");
+    if (triangulation.n_global_active_cells() >= refinement.max_cells)
+      {
+        pcout << "Maximum number of cells reached: mesh kept, remaining cycles skipped."
+              << std::endl;
+        return false;
+      }
+    // An estimate at round-off level (an exactly represented solution, as
+    // in a patch test) carries no information on where to refine: marking
+    // by it would follow the rounding of the solver and the platform.
+    if (refinement.estimator != "global" && !(relative_estimate >= 1e-10))
+      {
+        pcout << "Estimate at round-off level (eta / |u|_E < 1e-10): mesh kept, "
+                 "remaining cycles skipped."
+              << std::endl;
+        return false;
+      }
+    Marking::flag_cells(triangulation, indicators, refinement);
+    if (refinement.estimator != "global")
+      {
+        std::set<types::boundary_id> contact_ids;
+        for (const auto &pair : contact_parameters.pairs)
+          contact_ids.insert({pair.slave, pair.master});
+        Marking::flag_layers_behind_faces(triangulation, contact_ids, refinement.contact_layers);
+      }
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->level() >= int(refinement.max_level))
+        cell->clear_refine_flag();
+
+    // The displacement moves to the new mesh; the active set follows from
+    // the transferred gaps at the first step of the next cycle.
+    parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector> transfer(
+      dof_handler);
+    triangulation.prepare_coarsening_and_refinement();
+    transfer.prepare_for_coarsening_and_refinement(ghosted_solution);
+    triangulation.execute_coarsening_and_refinement();
+    dof_handler.distribute_dofs(fe);
+    TrilinosWrappers::MPI::Vector transferred(dof_handler.locally_owned_dofs(), comm);
+    transfer.interpolate(transferred);
+    transferred_solution = std::make_unique<TrilinosWrappers::MPI::Vector>(transferred);
+    return true;
+  }
+
+#define INSTANTIATE(dim)                                           \
+  template void ContactProblem<dim>::estimate_error(Json &);       \
+  template bool ContactProblem<dim>::refine_mesh();
+  INSTANTIATE(2)
+  INSTANTIATE(3)
+#undef INSTANTIATE
+} // namespace contact_fem

@@ -1,0 +1,165 @@
+// Checks of the input that need the scene's mesh, done before any work:
+// the contact pairs and the memory the mesh will need.
+#include <contact_fem/simulator/contact_problem.h>
+#include <contact_fem/geometry/mesh_queries.h>
+#include <contact_fem/core/resources.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <vector>
+
+namespace contact_fem
+{
+  namespace
+  {
+    std::string
+    format(const double x)
+    {
+      std::ostringstream s;
+      s << std::setprecision(2) << x;
+      return s.str();
+    }
+
+    /// Fraction of the bounding box of @p cell inside @p box: how much of
+    /// the cell a box refines, after enough refinements.
+    template <int dim, typename Cell, typename Box>
+    double
+    fraction_inside(const Cell &cell, const Box &box)
+    {
+      const BoundingBox<dim> bounds = cell->bounding_box();
+      double                 inside = 1.;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const double low   = std::max(bounds.get_boundary_points().first[d], box.lower[d]);
+          const double high  = std::min(bounds.get_boundary_points().second[d], box.upper[d]);
+          const double width = bounds.get_boundary_points().second[d] -
+                               bounds.get_boundary_points().first[d];
+          inside *= width > 0. ? std::max(0., high - low) / width : 0.;
+        }
+      return inside;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ContactProblem<dim>::check_scene_before_meshing()
+  {
+    // The scene without its global refinements, refinement boxes and
+    // distortion: cheap to build, and the mesh those refinements multiply.
+    Scene<dim> coarse_scene         = scene;
+    coarse_scene.global_refinements = 0;
+    coarse_scene.refinement_boxes.clear();
+    coarse_scene.distortion = 0.;
+    parallel::distributed::Triangulation<dim> coarse(comm);
+    coarse_scene.create_mesh(coarse);
+    check_contact_pairs(coarse);
+    check_memory_estimate(coarse);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::print_input_warnings() const
+  {
+    if (!memory_warning.empty())
+      pcout << "Warning: " << memory_warning << "." << std::endl;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::check_contact_pairs(const Triangulation<dim> &tria) const
+  {
+    // Mortar contact needs two bodies: a surface in contact with another
+    // surface of its own body would be self-contact, which the mortar
+    // interface does not implement; it used to be accepted and fail later
+    // as a "load that separates the bodies".
+    for (const auto &pair : contact_parameters.pairs)
+      for (const auto body : bodies_of_surface(tria, pair.slave))
+        AssertThrow(bodies_of_surface(tria, pair.master).count(body) == 0,
+                    ExcMessage("Contact/Pairs: pair '" +
+                               std::to_string(static_cast<unsigned int>(pair.slave)) + ": " +
+                               std::to_string(static_cast<unsigned int>(pair.master)) +
+                               "': both surfaces belong to body " +
+                               std::to_string(static_cast<unsigned int>(body)) +
+                               " (material id); a contact pair joins surfaces of two "
+                               "different bodies (self-contact is not implemented)."));
+  }
+
+  template <int dim>
+  std::string
+  ContactProblem<dim>::refinement_keys() const
+  {
+    std::vector<std::string> keys;
+    if (scene.global_refinements > 0)
+      keys.push_back("Geometry/Global refinements = " +
+                     std::to_string(scene.global_refinements));
+    if (!scene.refinement_boxes.empty())
+      keys.push_back("Geometry/Local refinements");
+    if (keys.empty())
+      keys.push_back(scene.type == "hertz cylinder" ?
+                       "Geometry/Hertz cylinder/Cylinder refinements and Contact refinements" :
+                     scene.type == "contact blocks" ?
+                       "Geometry/Contact blocks/Lower cells and Upper cells" :
+                       "Geometry/Mesh file");
+    std::string text = keys[0];
+    for (unsigned int k = 1; k < keys.size(); ++k)
+      text += " with " + keys[k];
+    return text;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::check_memory_estimate(
+    const parallel::distributed::Triangulation<dim> &coarse)
+  {
+    // Uniform refinement multiplies the cells by 2^dim; a box multiplies the
+    // cells inside it by 2^dim per round (its 2:1 balance adds a few more).
+    const double per_refinement = std::pow(2., dim);
+    const double refined        = std::pow(per_refinement, scene.global_refinements);
+    double       cells          = coarse.n_global_active_cells() * refined;
+    for (const auto &box : scene.refinement_boxes)
+      {
+        double inside = 0.;
+        for (const auto &cell : coarse.active_cell_iterators())
+          if (cell->is_locally_owned())
+            inside += fraction_inside<dim>(cell, box);
+        inside = Utilities::MPI::sum(inside, comm) * refined;
+        cells += inside * (std::pow(per_refinement, box.rounds) - 1.);
+      }
+    // dim DoFs per node, and about degree^dim nodes per cell.
+    const double dofs  = dim * std::pow(degree, dim) * cells;
+    const double bytes = estimated_memory(dofs, Utilities::MPI::n_mpi_processes(comm));
+    AvailableMemory available;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      available = available_memory();
+    available.bytes  = Utilities::MPI::broadcast(comm, available.bytes, 0);
+    available.source = Utilities::MPI::broadcast(comm, available.source, 0);
+    if (!(available.bytes > 0.))
+      return;
+
+    std::ostringstream estimate;
+    estimate << refinement_keys() << ": the mesh will have about " << format(cells)
+             << " cells and " << format(dofs) << " DoFs (Q" << degree << "), which need about "
+             << format_bytes(bytes) << " of memory (about 4 kB per DoF, measured), ";
+    AssertThrow(bytes <= available.bytes,
+                ExcMessage(estimate.str() + "more than the " + format_bytes(available.bytes) +
+                           " available (" + available.source +
+                           "). Refine less: each refinement multiplies the cells by " +
+                           format(per_refinement) + "."));
+    if (bytes > 0.5 * available.bytes)
+      memory_warning = estimate.str() + "more than half of the " +
+                       format_bytes(available.bytes) + " available (" + available.source + ")";
+  }
+
+  // The class is instantiated in contact_problem.cc; here only the members
+  // defined in this file.
+#define INSTANTIATE(dim) \
+  template void ContactProblem<dim>::check_scene_before_meshing(); \
+  template void ContactProblem<dim>::print_input_warnings() const; \
+  template void ContactProblem<dim>::check_contact_pairs(const Triangulation<dim> &) const; \
+  template std::string ContactProblem<dim>::refinement_keys() const; \
+  template void        ContactProblem<dim>::check_memory_estimate( const parallel::distributed::Triangulation<dim> &);
+  INSTANTIATE(2)
+  INSTANTIATE(3)
+#undef INSTANTIATE
+} // namespace contact_fem
