@@ -269,10 +269,16 @@ run_case $G x1      "$HERTZ" 120 "reference Hertz scene (a = 0.385)" "hertz" \
 run_case $G x1e1    "$HERTZ" 120 "p = 10 x 0.2 t (a = 1.22), graded zone 1.5, 4 steps" "hertz" \
   "Boundary conditions/Pressure=1: 10*0.2*t" "Geometry/Hertz cylinder/Refinement half width=1.5" \
   "Load stepping/Number of load steps=4"
-run_case $G x1e2    "$HERTZ" 180 "p = 100 x 0.2 t (a = 3.85 = 0.48 R), graded zone 4.5, 10 steps" "hertz-approx" \
+# Beyond ~20 x the load the contact zone turns by 0.2 rad and more and the
+# strains pass 10 %: small kinematics (the default) must stop with the
+# penetration check's diagnosis; updated kinematics follows (and warns).
+run_case $G x1e2    "$HERTZ" 180 "p = 100 x 0.2 t (a = 3.85 = 0.48 R), graded zone 4.5, 10 steps, small kinematics: beyond small sliding" "diag=not a contact solution" \
   "Boundary conditions/Pressure=1: 100*0.2*t" "Geometry/Hertz cylinder/Refinement half width=4.5" \
   "Load stepping/Number of load steps=10"
-run_case $G x1e2-narrow "$HERTZ" 180 "p = 100 x 0.2 t on the default mesh (graded zone 0.5 << a), 2 steps" "hertz-approx" \
+run_case $G x1e2-updated "$HERTZ" 180 "same with Kinematics = updated" "hertz-approx warn=small-strain range" \
+  "Boundary conditions/Pressure=1: 100*0.2*t" "Geometry/Hertz cylinder/Refinement half width=4.5" \
+  "Load stepping/Number of load steps=10" "Contact/Kinematics=updated"
+run_case $G x1e2-narrow "$HERTZ" 180 "p = 100 x 0.2 t on the default mesh (graded zone 0.5 << a), 2 steps, small kinematics" "diag=not a contact solution" \
   "Boundary conditions/Pressure=1: 100*0.2*t"
 
 # --- 4. Initial gap / initial penetration (contact blocks) -----------------
