@@ -274,13 +274,26 @@ namespace contact_fem
     // The stability study's verdict tolerance (doc/stability.md): converged
     // runs of the shipped scenes balance to 1e-10 or better, damped ones
     // with tightened tolerances to about 2e-8.
-    constexpr double tolerance = 1e-6;
+    constexpr double tolerance               = 1e-6;
+    constexpr double contrast_costing_digits = 1e6;
     const double     imbalance = reaction["relative_imbalance"].number_value();
     if (!(imbalance > tolerance))
       return;
     std::string cause = precision_limits();
     if (cause.empty())
       cause = load_at_round_off(current_time);
+    // Below the 1e10 limit a large contrast still costs the direct solve
+    // about log10(ratio) of its 16 digits (stiffness/cyl-1e8-swapped: 1.5e-6
+    // with the Newton residuals at their absolute tolerance, and smaller
+    // Newton tolerances do not lower it).
+    const auto [youngs_min, youngs_max] = materials.youngs_modulus_range();
+    if (cause.empty() && youngs_max > contrast_costing_digits * youngs_min)
+      cause = "the stiffness ratio between the bodies, " + format(youngs_max / youngs_min) +
+              ", costs the solve about " +
+              std::to_string(static_cast<int>(std::log10(youngs_max / youngs_min))) +
+              " of the 16 digits of double precision, and the reactions balance only "
+              "that well (smaller Newton tolerances do not help; a stiff body modelled "
+              "as rigid does)";
     if (cause.empty())
       cause = "the Newton tolerances leave that much out of balance (Newton/Displacement "
               "relative tolerance = " +
