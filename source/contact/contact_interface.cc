@@ -349,7 +349,6 @@ namespace contact_fem
                   BoundingBox<dim> box = face_box<dim>(lines[f]);
                   box.extend(1e-2 * lengths[f]);
                   master_boxes.emplace_back(box, f);
-                  ++statistics[p].master_faces;
                 }
             const auto tree = pack_rtree(master_boxes);
 
@@ -359,7 +358,6 @@ namespace contact_fem
               {
                 if (!faces[f].slave || faces[f].pair != p)
                   continue;
-                ++statistics[p].slave_faces;
                 BoundingBox<dim> box = face_box<dim>(lines[f]);
                 box.extend(search_factor * lengths[f] + allowance);
                 reach_of_search[p] =
@@ -391,7 +389,6 @@ namespace contact_fem
                 for (const auto &hit : hits)
                   {
                     const unsigned int m = hit.second;
-                    ++statistics[p].candidate_pairs;
                     const Tensor<1, 2> n_master =
                       Mortar::face_normal(lines[m], 0., faces[m].orientation);
                     double lower, upper;
@@ -413,7 +410,6 @@ namespace contact_fem
                     if (!Mortar::integrate_pair(lines[f], normals, A, lines[m],
                                                 degree + 3, ops))
                       continue;
-                    ++statistics[p].overlapping_pairs;
                     overlapping            = true;
                     master_is_candidate[m] = true;
                     for (unsigned int j = 0; j < faces[f].nodes.size(); ++j)

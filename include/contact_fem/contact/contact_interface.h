@@ -94,8 +94,6 @@ namespace contact_fem
     {
       double       mean_slave_size = 0., mean_master_size = 0.;
       double       slave_modulus = 0., master_modulus = 0.;
-      unsigned int slave_faces = 0, master_faces = 0;
-      unsigned int candidate_pairs = 0, overlapping_pairs = 0;
     };
 
     /**
