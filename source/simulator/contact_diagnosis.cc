@@ -39,8 +39,8 @@ namespace contact_fem
   std::map<types::material_id, Tensor<1, dim>>
   ContactProblem<dim>::body_loads(const double time) const
   {
-    // The resultant of the applied pressures on each body, as in
-    // applied_load().
+    // The resultant of the applied pressures on each body (their sum is
+    // applied_load()).
     const QGauss<dim - 1> quadrature(degree + 1);
     FEFaceValues<dim>     fe_face(*mapping, fe, quadrature,
                               update_normal_vectors | update_quadrature_points |

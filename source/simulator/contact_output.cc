@@ -119,30 +119,9 @@ namespace contact_fem
   Tensor<1, dim>
   ContactProblem<dim>::applied_load(const double time) const
   {
-    const QGauss<dim - 1> quadrature(degree + 1);
-    FEFaceValues<dim>     fe_face(*mapping, fe, quadrature,
-                              update_normal_vectors | update_quadrature_points |
-                                update_JxW_values);
     Tensor<1, dim> force;
-    for (const auto &condition : boundary_conditions.pressures)
-      {
-        FunctionParser<dim> pressure(1);
-        pressure.initialize(dim == 2 ? "x,y,t" : "x,y,z,t", condition.expression, {}, true);
-        pressure.set_time(time);
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
-            for (const auto f : cell->face_indices())
-              if (cell->face(f)->at_boundary() &&
-                  cell->face(f)->boundary_id() == condition.boundary_id)
-                {
-                  fe_face.reinit(cell, f);
-                  for (unsigned int q = 0; q < quadrature.size(); ++q)
-                    force -= pressure.value(fe_face.quadrature_point(q)) *
-                             fe_face.normal_vector(q) * fe_face.JxW(q);
-                }
-      }
-    for (unsigned int d = 0; d < dim; ++d)
-      force[d] = Utilities::MPI::sum(force[d], comm);
+    for (const auto &[id, load] : body_loads(time))
+      force += load;
     return force;
   }
 
