@@ -25,7 +25,7 @@ END = "<!-- hertz_speed:end -->"
 # TimerOutput sections of contact_fem, grouped into the report columns.
 GROUPS = {
     "assembly": ["Assembly: bulk", "Assembly: system", "Assembly: residual"],
-    "contact": ["Contact: search", "Contact: active set"],
+    "contact": ["Contact: search", "Contact: active set", "Contact: check"],
     "solve": ["Solve: linear"],
     "setup": ["Setup: mesh", "Setup: DoFs", "Setup: sparsity"],
     "output": ["Output: VTU"],
