@@ -1425,8 +1425,8 @@ namespace contact_fem
   }
 
   template <int dim>
-  bool
-  ContactProblem<dim>::run_cycle(const unsigned int cycle, Json &cycle_record)
+  void
+  ContactProblem<dim>::start_cycle(const unsigned int cycle, Json &cycle_record)
   {
     newton_iterations_of_cycle.clear();
     last_step_motion.clear();
@@ -1467,18 +1467,22 @@ namespace contact_fem
     cycle_record.set("cycle", cycle)
       .set("n_cells", static_cast<double>(triangulation.n_global_active_cells()))
       .set("n_dofs", static_cast<double>(dof_handler.n_dofs()));
+  }
 
+  template <int dim>
+  typename ContactProblem<dim>::LoadPath
+  ContactProblem<dim>::step_the_load(const unsigned int cycle, Json &cycle_record)
+  {
     // The first cycle steps the load; later cycles start from the
     // transferred solution at the end time. A step whose Newton iteration
     // fails is split and retried from the last converged state.
-    const unsigned int n_steps   = cycle == 0 ? load_stepping.n_steps : 1;
-    const double       end_time  = load_stepping.end_time;
-    double             t_done    = cycle == 0 ? 0. : end_time * (n_steps - 1) / n_steps;
-    const double       nominal_step = end_time / n_steps;
-    double             step_size    = nominal_step;
-    unsigned int       splits = 0, n_solved = 0, successes_since_split = 0;
-    Json               steps     = Json::array();
-    bool               converged = true;
+    const unsigned int n_steps = cycle == 0 ? load_stepping.n_steps : 1;
+    LoadStepControl    control(load_stepping,
+                            cycle == 0 ? 0. :
+                                         load_stepping.end_time * (n_steps - 1) / n_steps,
+                            n_steps);
+    LoadPath           path;
+    Json               steps = Json::array();
     TrilinosWrappers::MPI::Vector saved_solution = solution;
     std::unique_ptr<typename ContactFormulation<dim>::State> saved_state;
     // The mortar operators of the last converged state: a failed step has
@@ -1490,13 +1494,14 @@ namespace contact_fem
         saved_state     = contact->save_state();
         saved_interface = std::make_unique<ContactInterface<dim>>(*interface);
       }
-    while (t_done < end_time * (1. - 1e-12))
+    while (!control.finished())
       {
-        const double time = std::min(end_time, t_done + step_size);
+        const double time        = control.next_time();
         Json         step_record = Json::object();
         try
           {
-            solve_load_step(n_solved, time, time - t_done, n_solved == 0, step_record);
+            solve_load_step(path.n_solved, time, time - control.converged_time(),
+                            path.n_solved == 0, step_record);
           }
         catch (const NewtonFailure &failure)
           {
@@ -1506,42 +1511,27 @@ namespace contact_fem
             if (contact)
               {
                 contact->restore_state(*saved_state);
-                *interface        = *saved_interface;
+                *interface = *saved_interface;
               }
-            // Consecutive splits are bounded, and so is the step size: a step
-            // below 1e-12 of the end time cannot advance the load.
-            if (failure.splittable && splits < load_stepping.max_splits &&
-                step_size / load_stepping.split_factor > 1e-12 * end_time)
+            if (failure.splittable && control.split())
               {
-                ++splits;
-                successes_since_split = 0;
-                step_size /= load_stepping.split_factor;
-                pcout << "  Splitting the step: retrying from t = " << t_done
-                      << " with step " << step_size << " (split " << splits << " of at most "
-                      << load_stepping.max_splits << ")" << std::endl;
+                pcout << "  Splitting the step: retrying from t = " << control.converged_time()
+                      << " with step " << control.step_size() << " (split "
+                      << control.n_splits() << " of at most " << load_stepping.max_splits
+                      << ")" << std::endl;
                 continue;
               }
             pcout << std::endl
                   << "Error: giving up at " << failure.what() << std::endl
                   << "The results written are those of the last converged load step"
-                  << " (t = " << t_done << ")." << std::endl;
-            converged = false;
+                  << " (t = " << control.converged_time() << ")." << std::endl;
+            path.converged = false;
             break;
           }
         steps.push(step_record);
-        ++n_solved;
-        splits = 0;
-        t_done = time;
-        // After a split, two converged steps in a row let the step grow
-        // back toward the nominal size, so one hard moment does not cost
-        // small steps for the rest of the load path.
-        if (step_size < nominal_step && t_done < end_time * (1. - 1e-12) &&
-            ++successes_since_split == 2)
-          {
-            step_size = std::min(nominal_step, step_size * load_stepping.split_factor);
-            successes_since_split = 0;
-            pcout << "  Growing the step to " << step_size << std::endl;
-          }
+        ++path.n_solved;
+        if (control.accept())
+          pcout << "  Growing the step to " << control.step_size() << std::endl;
         saved_solution = solution;
         if (contact)
           {
@@ -1549,10 +1539,21 @@ namespace contact_fem
             *saved_interface = *interface;
           }
         if (output.write_vtu)
-          write_vtu(n_solved, time);
+          write_vtu(path.n_solved, time);
       }
-    current_time = t_done;
+    current_time = control.converged_time();
     cycle_record.set("load_steps", steps);
+    return path;
+  }
+
+  template <int dim>
+  bool
+  ContactProblem<dim>::run_cycle(const unsigned int cycle, Json &cycle_record)
+  {
+    start_cycle(cycle, cycle_record);
+    const LoadPath path      = step_the_load(cycle, cycle_record);
+    const unsigned int n_solved  = path.n_solved;
+    const bool         converged = path.converged;
     warn_about_large_displacements(cycle_record);
     if (n_solved > 0)
       warn_about_large_strains(cycle_record);

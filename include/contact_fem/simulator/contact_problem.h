@@ -16,6 +16,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <contact_fem/solvers/linear_solver.h>
+#include <contact_fem/solvers/load_step_control.h>
 #include <contact_fem/contact/formulations/contact_formulation.h>
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/core/json.h>
@@ -232,6 +233,20 @@ namespace contact_fem
     /// Solves one cycle on the current mesh; returns false if Newton failed.
     bool
     run_cycle(const unsigned int cycle, Json &cycle_record);
+    /// A new mesh: DoFs, the transferred solution, cell matrices, the
+    /// cycle's first line and record entries.
+    void
+    start_cycle(const unsigned int cycle, Json &cycle_record);
+    /// How the load path of a cycle ended.
+    struct LoadPath
+    {
+      unsigned int n_solved  = 0;    ///< converged load steps
+      bool         converged = true; ///< false: gave up after splitting
+    };
+    /// Steps the load of the cycle (LoadStepControl), splitting failed steps
+    /// and restoring the last converged state; records the steps.
+    LoadPath
+    step_the_load(const unsigned int cycle, Json &cycle_record);
     // --- checks of the input on the scene's mesh (contact_setup_checks.cc)
     /// Builds the scene without its global and box refinements, and checks
     /// on that mesh the contact pairs and the memory the full mesh will

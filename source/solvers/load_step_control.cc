@@ -1,0 +1,54 @@
+#include <contact_fem/solvers/load_step_control.h>
+
+#include <algorithm>
+
+namespace contact_fem
+{
+  LoadStepControl::LoadStepControl(const LoadStepping &parameters,
+                                   const double        start_time,
+                                   const unsigned int  n_steps)
+    : parameters(parameters)
+    , nominal_step(parameters.end_time / n_steps)
+    , t_done(start_time)
+    , step(nominal_step)
+  {}
+
+  bool
+  LoadStepControl::finished() const
+  {
+    return !(t_done < parameters.end_time * (1. - 1e-12));
+  }
+
+  double
+  LoadStepControl::next_time() const
+  {
+    return std::min(parameters.end_time, t_done + step);
+  }
+
+  bool
+  LoadStepControl::split()
+  {
+    // A step below 1e-12 of the end time cannot advance the load.
+    if (splits >= parameters.max_splits ||
+        !(step / parameters.split_factor > 1e-12 * parameters.end_time))
+      return false;
+    ++splits;
+    successes_since_split = 0;
+    step /= parameters.split_factor;
+    return true;
+  }
+
+  bool
+  LoadStepControl::accept()
+  {
+    t_done = next_time();
+    splits = 0;
+    if (step < nominal_step && !finished() && ++successes_since_split == 2)
+      {
+        step                  = std::min(nominal_step, step * parameters.split_factor);
+        successes_since_split = 0;
+        return true;
+      }
+    return false;
+  }
+} // namespace contact_fem
