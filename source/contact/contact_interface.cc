@@ -272,6 +272,78 @@ namespace contact_fem
   } // namespace
 
   template <int dim>
+  std::map<unsigned int, typename ContactInterface<dim>::SlaveNode>
+  ContactInterface<dim>::slave_node_geometry(const std::vector<Mortar::LineFace> &lines,
+                                             const std::vector<double>           &lengths) const
+  {
+    // Nodal normals (length-weighted mean of the face normals), the
+    // integral of N_j over the adjacent slave faces, and the nodal sizes.
+    std::map<unsigned int, SlaveNode> slave_data;
+    for (unsigned int f = 0; f < faces.size(); ++f)
+      if (faces[f].slave)
+        for (unsigned int k = 0; k < faces[f].nodes.size(); ++k)
+          {
+            SlaveNode &s = slave_data[faces[f].nodes[k]];
+            s.node       = faces[f].nodes[k];
+            s.pair       = faces[f].pair;
+            const Tensor<1, 2> n =
+              Mortar::face_normal(lines[f], Mortar::node_parameter(degree, k),
+                                  faces[f].orientation);
+            for (unsigned int d = 0; d < 2; ++d)
+              s.normal[d] += lengths[f] * n[d];
+            const QGauss<1> q(degree + 1);
+            for (unsigned int i = 0; i < q.size(); ++i)
+              {
+                const double xi = 2. * q.point(i)[0] - 1.;
+                s.full_area += 2. * q.weight(i) * lines[f].tangent(xi).norm() *
+                               Mortar::shape_value(degree, k, xi);
+              }
+            s.size += lengths[f] / degree;
+          }
+    std::map<unsigned int, unsigned int> n_adjacent;
+    for (const auto &face : faces)
+      if (face.slave)
+        for (const unsigned int n : face.nodes)
+          ++n_adjacent[n];
+    for (auto &[n, s] : slave_data)
+      {
+        s.normal /= s.normal.norm();
+        s.size /= n_adjacent[n];
+      }
+    return slave_data;
+  }
+
+  template <int dim>
+  void
+  ContactInterface<dim>::store_slave_nodes(
+    std::map<unsigned int, SlaveNode>                      &slave_data,
+    std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
+    std::map<unsigned int, Tensor<1, 2>>                   &weighted_gap_of_node,
+    const std::vector<double>                              &u_at_dofs)
+  {
+    // A node counts as paired when the master covers a fair part of its
+    // support; tiny or negative dual weights at the rim of the master
+    // surface would make its gap ill-defined.
+    constexpr double least_covered_fraction = 1e-2;
+    slave_nodes.clear();
+    for (auto &[n, s] : slave_data)
+      {
+        s.paired = s.D > least_covered_fraction * s.full_area;
+        if (s.paired)
+          {
+            for (const auto &[m, value] : M_of_node[n])
+              s.M.emplace_back(m, value);
+            // gap() is still the nodal form here (curvature_gap = 0).
+            Tensor<1, 2> normal;
+            for (unsigned int d = 0; d < 2; ++d)
+              normal[d] = s.normal[d];
+            s.curvature_gap = normal * weighted_gap_of_node[n] - s.D * gap(s, u_at_dofs);
+          }
+        slave_nodes.push_back(s);
+      }
+  }
+
+  template <int dim>
   void
   ContactInterface<dim>::update(const std::vector<double> &u_at_dofs,
                                 const double               search_factor,
@@ -300,39 +372,7 @@ namespace contact_fem
             lengths[f] = face_length(lines[f]);
           }
 
-        // Nodal normals, areas and sizes of the slave nodes.
-        std::map<unsigned int, SlaveNode> slave_data;
-        for (unsigned int f = 0; f < faces.size(); ++f)
-          if (faces[f].slave)
-            for (unsigned int k = 0; k < faces[f].nodes.size(); ++k)
-              {
-                SlaveNode &s = slave_data[faces[f].nodes[k]];
-                s.node       = faces[f].nodes[k];
-                s.pair       = faces[f].pair;
-                const Tensor<1, 2> n =
-                  Mortar::face_normal(lines[f], Mortar::node_parameter(degree, k),
-                                      faces[f].orientation);
-                for (unsigned int d = 0; d < 2; ++d)
-                  s.normal[d] += lengths[f] * n[d];
-                const QGauss<1> q(degree + 1);
-                for (unsigned int i = 0; i < q.size(); ++i)
-                  {
-                    const double xi = 2. * q.point(i)[0] - 1.;
-                    s.full_area += 2. * q.weight(i) * lines[f].tangent(xi).norm() *
-                                   Mortar::shape_value(degree, k, xi);
-                  }
-                s.size += lengths[f] / degree;
-              }
-        std::map<unsigned int, unsigned int> n_adjacent;
-        for (const auto &face : faces)
-          if (face.slave)
-            for (const unsigned int n : face.nodes)
-              ++n_adjacent[n];
-        for (auto &[n, s] : slave_data)
-          {
-            s.normal /= s.normal.norm();
-            s.size /= n_adjacent[n];
-          }
+        std::map<unsigned int, SlaveNode> slave_data = slave_node_geometry(lines, lengths);
 
         // Broad phase: one R-tree of master face boxes per pair.
         statistics.assign(pairs.size(), PairStatistics());
@@ -450,25 +490,7 @@ namespace contact_fem
               }
           }
 
-        // A node counts as paired when the master covers a fair part of its
-        // support; tiny or negative dual weights at the rim of the master
-        // surface would make its gap ill-defined.
-        slave_nodes.clear();
-        for (auto &[n, s] : slave_data)
-          {
-            s.paired = s.D > 1e-2 * s.full_area;
-            if (s.paired)
-              {
-                for (const auto &[m, value] : M_of_node[n])
-                  s.M.emplace_back(m, value);
-                // gap() is still the nodal form here (curvature_gap = 0).
-                Tensor<1, 2> normal;
-                for (unsigned int d = 0; d < 2; ++d)
-                  normal[d] = s.normal[d];
-                s.curvature_gap = normal * weighted_gap_of_node[n] - s.D * gap(s, u_at_dofs);
-              }
-            slave_nodes.push_back(s);
-          }
+        store_slave_nodes(slave_data, M_of_node, weighted_gap_of_node, u_at_dofs);
       }
   }
 

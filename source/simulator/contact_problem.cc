@@ -69,22 +69,6 @@ namespace contact_fem
 
   namespace
   {
-    /// Residuals below this fraction of their first value in a load step
-    /// are round-off: their digits differ between machines and partitions
-    /// (at ~1e-14 of it), so they are not printed as numbers.
-    constexpr double round_off_ratio = 1e-10;
-
-    /// "= value", or "< tolerance" for a residual below its tolerance, or
-    /// "at round-off" for one below round_off_ratio of its first value
-    /// @p reference (which differ between runs and must not reach compared
-    /// output).
-    std::string
-    residual_text(const double value, const double tolerance, const double reference)
-    {
-      return value <= tolerance                  ? "< " + scientific(tolerance, 0) :
-             value < round_off_ratio * reference ? std::string("at round-off") :
-                                                   "= " + scientific(value);
-    }
   } // namespace
 
   template <int dim>
@@ -757,13 +741,10 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactProblem<dim>::solve_load_step(const unsigned int step,
-                                       const double       time,
-                                       const double       step_size,
-                                       const bool         first_step,
-                                       Json              &record)
+  ContactProblem<dim>::prepare_load_step(const double time,
+                                         const double step_size,
+                                         const bool   first_step)
   {
-    Timer step_timer;
     current_time = time;
     make_dirichlet_constraints(time);
     compute_cell_loads(time);
@@ -774,234 +755,185 @@ namespace contact_fem
     if (contact)
       search_for_step(prescribed, step_size, first_step);
     make_sparsity_pattern();
+    factorisation_current = false;
+  }
 
+  template <int dim>
+  std::string
+  ContactProblem<dim>::precision_hint() const
+  {
     // Stiffness ratios beyond ~1e10 (measured: 1e12 fails with either body
     // as the slave) and nearly incompressible bodies leave the direct solve
     // with too few digits: then that is the likely cause of any failure.
-    const auto precision_hint = [this]() {
-      const std::string cause = precision_limits();
-      return cause.empty() ? cause : " Likely cause: " + cause + ".";
-    };
+    const std::string cause = precision_limits();
+    return cause.empty() ? cause : " Likely cause: " + cause + ".";
+  }
 
-    factorisation_current = false;
+  template <int dim>
+  void
+  ContactProblem<dim>::newton_update(const std::string &where)
+  {
+    make_constraints();
+    assemble_system();
+    const TrilinosWrappers::MPI::Vector previous_solution = solution;
+    try
+      {
+        solve_linear_system();
+        factorisation_current = true;
+      }
+    catch (const LinearSolverFailure &e)
+      {
+        throw NewtonFailure(where + ": " + e.what() + "." +
+                              (e.singular ? " Hint: is every body held by supports "
+                                            "or by at least one active contact node?" :
+                                            "") +
+                              precision_hint(),
+                            false);
+      }
+    catch (const std::exception &e)
+      {
+        const std::string what = e.what();
+        const auto        pos  = what.find("the linear system is singular");
+        throw NewtonFailure(where + ": " +
+                              (pos != std::string::npos ?
+                                 what.substr(pos, what.find(')', pos) - pos + 1) :
+                                 std::string("the linear solver failed")) +
+                              ". Hint: is every body held by supports or by at "
+                              "least one active contact node?" +
+                              precision_hint(),
+                            false);
+      }
+    // Both iterates satisfy the hanging-node and Dirichlet constraints, and
+    // so does their combination.
+    if (newton_parameters.damping < 1.)
+      {
+        solution.sadd(newton_parameters.damping, 1. - newton_parameters.damping,
+                      previous_solution);
+        ghosted_solution = solution;
+      }
+  }
+
+  template <int dim>
+  typename ContactProblem<dim>::ContactUpdate
+  ContactProblem<dim>::update_contact(const unsigned int iteration)
+  {
+    ContactUpdate update;
+    if (!contact)
+      {
+        update.residuals.contact_force.assign(interface_residual.size(), 0.);
+        return update;
+      }
+    interface_displacement = interface->gather(solution);
+    if (iteration > 0)
+      update.searched_again = extend_search_if_outrun();
+    TimerOutput::Scope t(*timer, "Contact: active set");
+    interface_residual = interface->gather(residual);
+    if (iteration > 0)
+      {
+        contact->recover_multipliers(*interface, interface_residual);
+        update.changes = contact->update_active_set(*interface, interface_displacement);
+      }
+    update.residuals = contact->residuals(*interface, interface_displacement);
+    return update;
+  }
+
+  template <int dim>
+  bool
+  ContactProblem<dim>::accept_contact_state(const unsigned int step,
+                                            const double       time,
+                                            const double       step_size,
+                                            unsigned int      &searches_after_check)
+  {
+    // The promise behind "converged": no slave node inside the master
+    // beyond what its gap accounts for. A node no master face is paired
+    // with gets a few wider searches.
+    const PenetrationCheck check = check_penetration();
+    if (check.excess > contact_parameters.penetration_tolerance)
+      {
+        if (interface->slave_nodes[check.node].paired ||
+            searches_after_check == max_searches_after_check)
+          throw penetration_failure(check, step, time);
+        ++searches_after_check;
+        widen_search(interface->slave_nodes[check.node].pair, check.penetration);
+        return false;
+      }
+    last_penetration_excess = check.excess;
+    last_step_motion = interface->relative_motion(step_start_displacement, interface_displacement);
+    last_step_size   = step_size;
+    return true;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::solve_load_step(const unsigned int step,
+                                       const double       time,
+                                       const double       step_size,
+                                       const bool         first_step,
+                                       Json              &record)
+  {
+    Timer step_timer;
+    prepare_load_step(time, step_size, first_step);
     pcout << "  Load step " << step + 1 << ", t = " << time << std::endl
-          << "    | it | disp. ratio | disp. abs | mult. ratio | mult. abs | changes | active |"
-          << std::endl;
+          << NewtonMonitor::header() << std::endl;
+    const std::string where =
+      "load step " + std::to_string(step + 1) + " (t = " + std::to_string(time) + ")";
 
-    // Residuals of the current iterate: the equilibrium of the free DoFs
-    // with the multipliers of the current active set, and the
-    // complementarity residual (gap of active nodes, multiplier / k of the
-    // others). With it > 0 the multipliers are first recovered from the
-    // solution of iteration it and the active set is updated.
-    double       reference_u = 0., reference_lambda = 0.;
-    double       last_u = 0., last_lambda = 0., previous_r_u = 0.;
-    unsigned int previous_changes = 1;
-    unsigned int last_changes = 0;
-    bool         converged = false, stalled = false;
-    unsigned int iteration = 0, searches_after_check = 0;
+    // Per iteration: the equilibrium residual of the free DoFs with the
+    // multipliers of the current active set, and the complementarity
+    // residual (gap of active nodes, multiplier / k of the others). With
+    // it > 0 the multipliers are first recovered from the solution of
+    // iteration it and the active set is updated.
+    NewtonMonitor             monitor(newton_parameters);
+    NewtonMonitor::Assessment assessment;
+    unsigned int              iteration = 0, searches_after_check = 0;
     for (; iteration <= newton_parameters.max_iterations; ++iteration)
       {
+        const std::string at = where + ", iteration " + std::to_string(iteration);
         if (iteration > 0 && contact && contact->n_active() == 0 &&
             !contact_parameters.allow_loss_of_contact)
-          throw NewtonFailure(no_contact_message("load step " + std::to_string(step + 1) +
-                                                   " (t = " + std::to_string(time) +
-                                                   "), iteration " + std::to_string(iteration),
-                                                 true),
-                              false);
+          throw NewtonFailure(no_contact_message(at, true), false);
         if (iteration > 0)
-          {
-            make_constraints();
-            assemble_system();
-            const TrilinosWrappers::MPI::Vector previous_solution = solution;
-            try
-              {
-                solve_linear_system();
-                factorisation_current = true;
-              }
-            catch (const LinearSolverFailure &e)
-              {
-                throw NewtonFailure("load step " + std::to_string(step + 1) + " (t = " +
-                                      std::to_string(time) + "), iteration " +
-                                      std::to_string(iteration) + ": " + e.what() + "." +
-                                      (e.singular ? " Hint: is every body held by supports "
-                                                    "or by at least one active contact node?" :
-                                                    "") +
-                                      precision_hint(),
-                                    false);
-              }
-            catch (const std::exception &e)
-              {
-                const std::string what = e.what();
-                const auto        pos  = what.find("the linear system is singular");
-                throw NewtonFailure("load step " + std::to_string(step + 1) + " (t = " +
-                                      std::to_string(time) + "), iteration " +
-                                      std::to_string(iteration) + ": " +
-                                      (pos != std::string::npos ?
-                                         what.substr(pos, what.find(')', pos) - pos + 1) :
-                                         std::string("the linear solver failed")) +
-                                      ". Hint: is every body held by supports or by at "
-                                      "least one active contact node?" +
-                                      precision_hint(),
-                                    false);
-              }
-            // Both iterates satisfy the hanging-node and Dirichlet
-            // constraints, and so does their combination.
-            if (newton_parameters.damping < 1.)
-              {
-                solution.sadd(newton_parameters.damping, 1. - newton_parameters.damping,
-                              previous_solution);
-                ghosted_solution = solution;
-              }
-          }
+          newton_update(at);
         compute_residual();
-        unsigned int                    changes = 0;
-        typename ContactFormulation<dim>::Residuals contact_residuals;
-        bool searched_again = false;
-        if (contact)
-          {
-            interface_displacement = interface->gather(solution);
-            if (iteration > 0)
-              searched_again = extend_search_if_outrun();
-            TimerOutput::Scope t(*timer, "Contact: active set");
-            interface_residual = interface->gather(residual);
-            if (iteration > 0)
-              {
-                contact->recover_multipliers(*interface, interface_residual);
-                changes = contact->update_active_set(*interface, interface_displacement);
-              }
-            contact_residuals = contact->residuals(*interface, interface_displacement);
-          }
-        else
-          contact_residuals.contact_force.assign(interface_residual.size(), 0.);
-
-        const double r_u      = equilibrium_residual_norm(contact_residuals.contact_force);
-        const double r_lambda = contact_residuals.multiplier;
+        const ContactUpdate update   = update_contact(iteration);
+        const double        r_u      = equilibrium_residual_norm(update.residuals.contact_force);
+        const double        r_lambda = update.residuals.multiplier;
         if (!std::isfinite(r_u) || !std::isfinite(r_lambda))
-          throw NewtonFailure("load step " + std::to_string(step + 1) + " (t = " +
-                              std::to_string(time) + "), iteration " +
-                              std::to_string(iteration) +
-                              ": the residual is not a number (|r_u| = " + scientific(r_u) +
+          throw NewtonFailure(at + ": the residual is not a number (|r_u| = " + scientific(r_u) +
                               ", |r_lambda| = " + scientific(r_lambda) +
                               "). The linear system is singular or the input is "
                               "extreme: is every body held by supports or by at "
                               "least one active contact node?");
-        last_u           = r_u;
-        last_lambda      = r_lambda;
-        last_changes     = changes;
-        reference_u      = std::max(reference_u, r_u);
-        reference_lambda = std::max(reference_lambda, r_lambda);
-        const double ratio_u = reference_u > 0. ? r_u / reference_u : 0.;
-        const double ratio_lambda = reference_lambda > 0. ? r_lambda / reference_lambda : 0.;
-
-        const bool residuals_small =
-          (ratio_u <= newton_parameters.displacement_relative_tolerance ||
-           r_u <= newton_parameters.displacement_absolute_tolerance) &&
-          (ratio_lambda <= newton_parameters.multiplier_relative_tolerance ||
-           r_lambda <= newton_parameters.multiplier_absolute_tolerance);
-        // Nodes with lambda = 0 and g = 0 to round-off (a gap closing exactly
-        // at this load) may flip state forever without changing anything:
-        // with both residuals at round-off the active set counts as settled.
-        const bool at_round_off =
-          r_u <= newton_parameters.displacement_absolute_tolerance &&
-          r_lambda <= newton_parameters.multiplier_absolute_tolerance;
-        // With a settled active set each further solve returns the same
-        // displacement: a residual that stops decreasing is the accuracy of
-        // the linear solver (very large stiffness contrasts), not a failure.
-        // Bounded: a residual above 1e-2 of the step's is a failure whatever
-        // its trend.
-        // (Damped iterations shrink the residual by a fixed factor: not
-        // stagnation.)
-        // Flat: a settled active set, and the residual decreases by less
-        // than half what the (damped) update should remove.
-        const bool flat = iteration > 1 && changes == 0 && previous_changes == 0 &&
-                          r_u > (1. - 0.5 * newton_parameters.damping) * previous_r_u;
-        const bool stagnating = newton_parameters.damping == 1. && flat && ratio_u <= 1e-2 &&
-                                ratio_lambda <= newton_parameters.multiplier_relative_tolerance;
-        // Flat with both residuals eight orders below their start: round-off,
-        // which no tolerance below it can wait for.
-        stalled = flat && ratio_u <= 1e-8 && ratio_lambda <= 1e-8;
-        converged = iteration > 0 && !searched_again &&
-                    ((residuals_small && (changes == 0 || at_round_off)) || stagnating);
-        previous_changes = iteration > 0 ? changes : 1;
-        previous_r_u     = r_u;
-
-        // Residuals at or below their absolute tolerance are round-off:
-        // neither they nor their ratios are printed as numbers, so that
-        // reruns and MPI runs print the same table.
-        auto cells = [](const double ratio, const double value, const double tolerance) {
-          std::ostringstream s;
-          if (value <= tolerance)
-            s << std::setw(11) << "-" << " | " << std::setw(9)
-              << ("< " + scientific(tolerance, 0));
-          else if (ratio < round_off_ratio)
-            s << std::setw(11) << ("< " + scientific(round_off_ratio, 0)) << " | "
-              << std::setw(9) << "round-off";
-          else
-            s << std::setw(11) << scientific(ratio) << " | " << std::setw(9)
-              << scientific(value, 2);
-          return s.str();
-        };
-        pcout << "    | " << std::setw(2) << iteration << " | "
-              << cells(ratio_u, r_u, newton_parameters.displacement_absolute_tolerance)
-              << " | "
-              << cells(ratio_lambda, r_lambda, newton_parameters.multiplier_absolute_tolerance)
-              << " | " << std::setw(7)
-              << (iteration == 0 ? std::string("-") : std::to_string(changes)) << " | "
-              << std::setw(6) << (contact ? contact->n_active() : 0u) << " |"
-              << (converged ? (residuals_small ? " converged" :
-                                                 " converged to linear-solver accuracy") :
-                              "")
+        assessment =
+          monitor.assess(iteration, r_u, r_lambda, update.changes, update.searched_again);
+        pcout << monitor.row(iteration, update.changes, contact ? contact->n_active() : 0u,
+                             assessment)
               << std::endl;
-        if (converged && contact)
+        if (assessment.converged && contact &&
+            !accept_contact_state(step, time, step_size, searches_after_check))
           {
-            // The promise behind "converged": no slave node inside the
-            // master beyond what its gap accounts for. A node no master face
-            // is paired with gets a few wider searches.
-            const PenetrationCheck check = check_penetration();
-            if (check.excess > contact_parameters.penetration_tolerance)
-              {
-                if (interface->slave_nodes[check.node].paired ||
-                    searches_after_check == max_searches_after_check)
-                  throw penetration_failure(check, step, time);
-                ++searches_after_check;
-                converged            = false;
-                widen_search(interface->slave_nodes[check.node].pair, check.penetration);
-                continue;
-              }
-            last_penetration_excess = check.excess;
-            last_step_motion =
-              interface->relative_motion(step_start_displacement, interface_displacement);
-            last_step_size = step_size;
+            assessment.converged = false;
+            continue;
           }
-        if (converged)
+        if (assessment.converged)
           break;
       }
-    if (converged && contact && contact->n_active() == 0 &&
+    if (assessment.converged && contact && contact->n_active() == 0 &&
         !contact_parameters.allow_loss_of_contact)
-      throw NewtonFailure(no_contact_message("load step " + std::to_string(step + 1) +
-                                               " (t = " + std::to_string(time) + ")",
-                                             false),
-                          false);
-    if (!converged)
-      throw NewtonFailure("load step " + std::to_string(step + 1) + " (t = " +
-                          std::to_string(time) + ") did not converge in " +
-                          std::to_string(newton_parameters.max_iterations) +
-                          " iterations (last: |r_u| " +
-                          residual_text(last_u, newton_parameters.displacement_absolute_tolerance,
-                                        reference_u) +
-                          ", |r_lambda| " +
-                          residual_text(last_lambda,
-                                        newton_parameters.multiplier_absolute_tolerance,
-                                        reference_lambda) +
-                          ", " +
-                          std::to_string(last_changes) + " active-set changes)." +
-                          non_convergence_hint(stalled, last_u, last_lambda) + precision_hint(),
-                        !stalled);
+      throw NewtonFailure(no_contact_message(where, false), false);
+    if (!assessment.converged)
+      throw NewtonFailure(where + " did not converge in " +
+                            std::to_string(newton_parameters.max_iterations) + " iterations " +
+                            monitor.last_residuals() + "." +
+                            non_convergence_hint(assessment.stalled, monitor.last_r_u(),
+                                                 monitor.last_r_lambda()) +
+                            precision_hint(),
+                          !assessment.stalled);
 
     newton_iterations_of_cycle.push_back(iteration);
     record.set("time", time)
       .set("newton_iterations", iteration)
-      .set("converged", converged)
+      .set("converged", assessment.converged)
       .set("active_slave_nodes", contact ? contact->n_active() : 0u)
       .set("wall_time", step_timer.wall_time());
   }

@@ -216,6 +216,21 @@ namespace contact_fem
     std::vector<unsigned int> slave_faces_per_rank, master_faces_per_rank;
 
   private:
+    /// Normal, size and full_area of every slave node, from the face
+    /// geometry of the search configuration (2D).
+    std::map<unsigned int, SlaveNode>
+    slave_node_geometry(const std::vector<Mortar::LineFace> &lines,
+                        const std::vector<double>           &lengths) const;
+
+    /// Fills slave_nodes from the integrated operators: a node is paired
+    /// when the master covers a fair part of its support; its M entries
+    /// and curvature gap are set.
+    void
+    store_slave_nodes(std::map<unsigned int, SlaveNode>                      &slave_data,
+                      std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
+                      std::map<unsigned int, Tensor<1, 2>>                   &weighted_gap_of_node,
+                      const std::vector<double>                              &u_at_dofs);
+
     /// Displacement at dofs() of the last search, and its reach per pair.
     std::vector<double>                                 search_displacement;
     std::vector<double>                                 reach_of_search;

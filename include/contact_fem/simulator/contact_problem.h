@@ -17,6 +17,7 @@
 
 #include <contact_fem/solvers/linear_solver.h>
 #include <contact_fem/solvers/load_step_control.h>
+#include <contact_fem/solvers/newton_monitor.h>
 #include <contact_fem/contact/formulations/contact_formulation.h>
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/core/json.h>
@@ -206,6 +207,36 @@ namespace contact_fem
                     const double       step_size,
                     const bool         first_step,
                     Json              &step_record);
+    /// Dirichlet values and loads at @p time, the contact search and the
+    /// sparsity pattern of the step.
+    void
+    prepare_load_step(const double time, const double step_size, const bool first_step);
+    /// One Newton update: constraints, assembly, linear solve (failures
+    /// become NewtonFailures naming @p where), damping.
+    void
+    newton_update(const std::string &where);
+    /// What the contact part of one iteration gives.
+    struct ContactUpdate
+    {
+      unsigned int                                changes        = 0;
+      bool                                        searched_again = false;
+      typename ContactFormulation<dim>::Residuals residuals;
+    };
+    /// Gathers the interface values, widens the search if the iterate
+    /// outran it, recovers the multipliers and updates the active set.
+    ContactUpdate
+    update_contact(const unsigned int iteration);
+    /// The penetration check of a converged iterate: true if it holds
+    /// (and the step's motion is recorded), false after a wider search
+    /// (Newton goes on); throws if it fails for good.
+    bool
+    accept_contact_state(const unsigned int step,
+                         const double       time,
+                         const double       step_size,
+                         unsigned int      &searches_after_check);
+    /// " Likely cause: ..." when a precision limit applies, else empty.
+    std::string
+    precision_hint() const;
     void
     assemble_system();
     void

@@ -1,0 +1,84 @@
+// The convergence test and the table of the semi-smooth Newton iteration of
+// one load step.
+#ifndef contact_fem_newton_monitor_h
+#define contact_fem_newton_monitor_h
+
+#include <contact_fem/core/parameters.h>
+
+#include <string>
+
+namespace contact_fem
+{
+  /**
+   * Follows the residuals of one load step's Newton iteration: the
+   * equilibrium residual |r_u| of the free DoFs and the residual |r_lambda|
+   * of the contact conditions, each relative to its largest value in the
+   * step, and the number of active-set changes. Decides convergence (both
+   * residuals below their tolerance and a settled active set; or a
+   * stagnating residual at the accuracy of the linear solver; or both at
+   * round-off with a flickering active set) and formats the table rows, so
+   * that round-off never reaches the printed digits.
+   */
+  class NewtonMonitor
+  {
+  public:
+    explicit NewtonMonitor(const NewtonParameters &parameters);
+
+    /// What the residuals of one iteration say.
+    struct Assessment
+    {
+      double ratio_u = 0., ratio_lambda = 0.;
+      /// Both residuals below their (relative or absolute) tolerance.
+      bool residuals_small = false;
+      bool converged       = false;
+      /// Flat at round-off: no tolerance below it can be waited for.
+      bool stalled = false;
+    };
+
+    /// Takes the residuals of @p iteration (0: the start of the step) with
+    /// @p changes of the active set; @p searched_again: the contact search
+    /// was widened in this iteration (never converged then).
+    Assessment
+    assess(const unsigned int iteration,
+           const double       r_u,
+           const double       r_lambda,
+           const unsigned int changes,
+           const bool         searched_again);
+
+    /// The header of the table.
+    static std::string
+    header();
+
+    /// The row of @p iteration for the last assess().
+    std::string
+    row(const unsigned int  iteration,
+        const unsigned int  changes,
+        const unsigned int  n_active,
+        const Assessment   &assessment) const;
+
+    /// "(last: |r_u| ..., |r_lambda| ..., N active-set changes)" for a
+    /// failure message.
+    std::string
+    last_residuals() const;
+
+    double
+    last_r_u() const
+    {
+      return last_u;
+    }
+
+    double
+    last_r_lambda() const
+    {
+      return last_lambda;
+    }
+
+  private:
+    NewtonParameters parameters;
+    double           reference_u = 0., reference_lambda = 0.;
+    double           last_u = 0., last_lambda = 0., previous_r_u = 0.;
+    unsigned int     previous_changes = 1, last_changes = 0;
+  };
+} // namespace contact_fem
+
+#endif

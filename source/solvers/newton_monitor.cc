@@ -1,0 +1,131 @@
+#include <contact_fem/core/format.h>
+#include <contact_fem/solvers/newton_monitor.h>
+
+#include <algorithm>
+#include <iomanip>
+#include <sstream>
+
+namespace contact_fem
+{
+  namespace
+  {
+    /// Residuals below this fraction of their first value in a load step
+    /// are round-off: their digits differ between machines and partitions
+    /// (at ~1e-14 of it), so they are not printed as numbers.
+    constexpr double round_off_ratio = 1e-10;
+
+    /// "= value", or "< tolerance" for a residual below its tolerance, or
+    /// "at round-off" for one below round_off_ratio of its first value
+    /// @p reference (which differ between runs and must not reach compared
+    /// output).
+    std::string
+    residual_text(const double value, const double tolerance, const double reference)
+    {
+      return value <= tolerance                  ? "< " + scientific(tolerance, 0) :
+             value < round_off_ratio * reference ? std::string("at round-off") :
+                                                   "= " + scientific(value);
+    }
+
+    /// The two cells of a residual: at or below its absolute tolerance, or
+    /// at round-off of its first value, neither it nor its ratio is printed
+    /// as a number, so that reruns and MPI runs print the same table.
+    std::string
+    cells(const double ratio, const double value, const double tolerance)
+    {
+      std::ostringstream s;
+      if (value <= tolerance)
+        s << std::setw(11) << "-" << " | " << std::setw(9) << ("< " + scientific(tolerance, 0));
+      else if (ratio < round_off_ratio)
+        s << std::setw(11) << ("< " + scientific(round_off_ratio, 0)) << " | " << std::setw(9)
+          << "round-off";
+      else
+        s << std::setw(11) << scientific(ratio) << " | " << std::setw(9) << scientific(value, 2);
+      return s.str();
+    }
+  } // namespace
+
+  NewtonMonitor::NewtonMonitor(const NewtonParameters &parameters)
+    : parameters(parameters)
+  {}
+
+  NewtonMonitor::Assessment
+  NewtonMonitor::assess(const unsigned int iteration,
+                        const double       r_u,
+                        const double       r_lambda,
+                        const unsigned int changes,
+                        const bool         searched_again)
+  {
+    Assessment a;
+    last_u           = r_u;
+    last_lambda      = r_lambda;
+    last_changes     = changes;
+    reference_u      = std::max(reference_u, r_u);
+    reference_lambda = std::max(reference_lambda, r_lambda);
+    a.ratio_u        = reference_u > 0. ? r_u / reference_u : 0.;
+    a.ratio_lambda   = reference_lambda > 0. ? r_lambda / reference_lambda : 0.;
+
+    a.residuals_small = (a.ratio_u <= parameters.displacement_relative_tolerance ||
+                         r_u <= parameters.displacement_absolute_tolerance) &&
+                        (a.ratio_lambda <= parameters.multiplier_relative_tolerance ||
+                         r_lambda <= parameters.multiplier_absolute_tolerance);
+    // Nodes with lambda = 0 and g = 0 to round-off (a gap closing exactly
+    // at this load) may flip state forever without changing anything:
+    // with both residuals at round-off the active set counts as settled.
+    const bool at_round_off = r_u <= parameters.displacement_absolute_tolerance &&
+                              r_lambda <= parameters.multiplier_absolute_tolerance;
+    // With a settled active set each further solve returns the same
+    // displacement: a residual that stops decreasing is the accuracy of the
+    // linear solver (very large stiffness contrasts), not a failure.
+    // Bounded: a residual above 1e-2 of the step's is a failure whatever its
+    // trend. Flat: a settled active set, and the residual decreases by less
+    // than half what the (damped) update should remove (damped iterations
+    // shrink the residual by a fixed factor: not stagnation).
+    const bool flat = iteration > 1 && changes == 0 && previous_changes == 0 &&
+                      r_u > (1. - 0.5 * parameters.damping) * previous_r_u;
+    const bool stagnating = parameters.damping == 1. && flat && a.ratio_u <= 1e-2 &&
+                            a.ratio_lambda <= parameters.multiplier_relative_tolerance;
+    // Flat with both residuals eight orders below their start: round-off,
+    // which no tolerance below it can wait for.
+    a.stalled   = flat && a.ratio_u <= 1e-8 && a.ratio_lambda <= 1e-8;
+    a.converged = iteration > 0 && !searched_again &&
+                  ((a.residuals_small && (changes == 0 || at_round_off)) || stagnating);
+    previous_changes = iteration > 0 ? changes : 1;
+    previous_r_u     = r_u;
+    return a;
+  }
+
+  std::string
+  NewtonMonitor::header()
+  {
+    return "    | it | disp. ratio | disp. abs | mult. ratio | mult. abs | changes | active |";
+  }
+
+  std::string
+  NewtonMonitor::row(const unsigned int iteration,
+                     const unsigned int changes,
+                     const unsigned int n_active,
+                     const Assessment  &a) const
+  {
+    std::ostringstream s;
+    s << "    | " << std::setw(2) << iteration << " | "
+      << cells(a.ratio_u, last_u, parameters.displacement_absolute_tolerance) << " | "
+      << cells(a.ratio_lambda, last_lambda, parameters.multiplier_absolute_tolerance) << " | "
+      << std::setw(7) << (iteration == 0 ? std::string("-") : std::to_string(changes)) << " | "
+      << std::setw(6) << n_active << " |"
+      << (a.converged ?
+            (a.residuals_small ? " converged" : " converged to linear-solver accuracy") :
+            "");
+    return s.str();
+  }
+
+  std::string
+  NewtonMonitor::last_residuals() const
+  {
+    return "(last: |r_u| " +
+           residual_text(last_u, parameters.displacement_absolute_tolerance, reference_u) +
+           ", |r_lambda| " +
+           residual_text(last_lambda, parameters.multiplier_absolute_tolerance,
+                         reference_lambda) +
+           ", " + std::to_string(last_changes) + " active-set changes)";
+  }
+} // namespace contact_fem
