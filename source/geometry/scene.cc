@@ -338,152 +338,162 @@ namespace contact_fem
 
   template <>
   void
-  Scene<2>::create_mesh(parallel::distributed::Triangulation<2> &tria) const
+  Scene<2>::create_hertz_mesh(parallel::distributed::Triangulation<2> &tria) const
   {
     Triangulation<2> coarse;
+    const double R = hertz.radius, t = hertz.plate_thickness;
+    const Point<2> c(0., t + R);
+    // Coarse half-disc: a centre cell under the flat top and three cells
+    // along the arc; the lowest point of the arc lies inside the bottom
+    // cell, so the contact zone is free of coarse vertices.
+    const double             s = std::sqrt(0.5);
+    const std::vector<Point<2>> v = {c + Point<2>(-R, 0.),
+                                     c + Point<2>(R, 0.),
+                                     c + Point<2>(-R * s, -R * s),
+                                     c + Point<2>(R * s, -R * s),
+                                     c + Point<2>(-0.4375 * R, 0.),
+                                     c + Point<2>(0.4375 * R, 0.),
+                                     c + Point<2>(-0.4375 * R, -0.5 * R),
+                                     c + Point<2>(0.4375 * R, -0.5 * R)};
+    std::vector<CellData<2>>     cells(4, CellData<2>(4));
+    const unsigned int           cell_vertices[4][4] = {{6, 7, 4, 5},
+                                                        {2, 3, 6, 7},
+                                                        {2, 6, 0, 4},
+                                                        {7, 3, 5, 1}};
+    for (unsigned int i = 0; i < 4; ++i)
+      for (unsigned int j = 0; j < 4; ++j)
+        cells[i].vertices[j] = cell_vertices[i][j];
+    Triangulation<2> disc;
+    GridTools::consistently_order_cells(cells);
+    disc.create_triangulation(v, cells, SubCellData());
 
+    Triangulation<2>   plate;
+    const unsigned int nx =
+      std::max(1, static_cast<int>(std::round(2. * hertz.plate_half_width / t)));
+    GridGenerator::subdivided_hyper_rectangle(plate,
+                                              {nx, 1},
+                                              Point<2>(-hertz.plate_half_width, 0.),
+                                              Point<2>(hertz.plate_half_width, t));
+    join_bodies({&disc, &plate}, {1, 2}, coarse);
+
+    for (const auto &cell : coarse.active_cell_iterators())
+      {
+        // The transfinite interpolation of the disc interior is charted
+        // on the coarse cells: random vertex moves invalidate the chart
+        // (its pull-back fails for degree 2), so a distorted disc has
+        // straight interior lines and only the arc is curved.
+        if (cell->material_id() == 1)
+          cell->set_all_manifold_ids(distortion > 0. ? numbers::flat_manifold_id : 2);
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              const Point<2> fc = cell->face(f)->center();
+              if (cell->material_id() == 1)
+                {
+                  if (close(fc[1], t + R, R))
+                    cell->face(f)->set_boundary_id(1);
+                  else
+                    {
+                      cell->face(f)->set_boundary_id(3);
+                      cell->face(f)->set_manifold_id(1);
+                    }
+                }
+              else if (close(fc[1], 0., t))
+                cell->face(f)->set_boundary_id(2);
+              else if (close(fc[1], t, t))
+                cell->face(f)->set_boundary_id(4);
+              else
+                cell->face(f)->set_boundary_id(0);
+            }
+      }
+    tria.copy_triangulation(coarse);
+    tria.set_manifold(1, PolarManifold<2>(c));
+    TransfiniteInterpolationManifold<2> tfi;
+    if (distortion == 0.)
+      {
+        tfi.initialize(tria);
+        tria.set_manifold(2, tfi);
+      }
+
+    // Uniform rounds on the disc only: the plate is nearly rigid in the
+    // reference scene and needs no resolution away from the contact.
+    for (unsigned int round = 0; round < hertz.cylinder_refinements; ++round)
+      {
+        for (const auto &cell : tria.active_cell_iterators())
+          if (cell->is_locally_owned() && cell->material_id() == 1)
+            cell->set_refine_flag();
+        tria.execute_coarsening_and_refinement();
+      }
+    // Graded rounds toward the segment |x| < w_r of the plate top.
+    const unsigned int n_rounds =
+      std::max(hertz.contact_refinements, hertz.plate_refinements);
+    for (unsigned int round = 0; round < n_rounds; ++round)
+      {
+        for (const auto &cell : tria.active_cell_iterators())
+          {
+            if (!cell->is_locally_owned())
+              continue;
+            const unsigned int rounds_of_body = cell->material_id() == 1 ?
+                                                  hertz.contact_refinements :
+                                                  hertz.plate_refinements;
+            if (round >= rounds_of_body)
+              continue;
+            const Point<2> p = cell->center();
+            const double   dx =
+              std::max(0., std::abs(p[0]) - hertz.refinement_half_width);
+            const double distance = std::hypot(dx, p[1] - t);
+            if (distance < hertz.grading_factor * cell->diameter())
+              cell->set_refine_flag();
+          }
+        tria.execute_coarsening_and_refinement();
+      }
+  }
+
+  template <>
+  void
+  Scene<2>::create_contact_blocks(parallel::distributed::Triangulation<2> &tria) const
+  {
+    Triangulation<2> coarse;
+    const double W = blocks.width, H = blocks.height;
+    Triangulation<2> lower, upper;
+    GridGenerator::subdivided_hyper_rectangle(lower,
+                                              {blocks.lower_cells, blocks.lower_cells},
+                                              Point<2>(0., 0.),
+                                              Point<2>(W, H));
+    GridGenerator::subdivided_hyper_rectangle(upper,
+                                              {blocks.upper_cells, blocks.upper_cells},
+                                              Point<2>(0., H + blocks.gap),
+                                              Point<2>(W, 2. * H + blocks.gap));
+    join_bodies({&upper, &lower}, {1, 2}, coarse);
+    for (const auto &cell : coarse.active_cell_iterators())
+      for (const auto f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          {
+            const Point<2> fc    = cell->face(f)->center();
+            const bool     upper_body = cell->material_id() == 1;
+            const double   y0 = upper_body ? H + blocks.gap : 0.;
+            types::boundary_id id = 0;
+            if (close(fc[1], y0, H))
+              id = upper_body ? 3 : 2;
+            else if (close(fc[1], y0 + H, H))
+              id = upper_body ? 1 : 4;
+            else if (close(fc[0], 0., W))
+              id = upper_body ? 5 : 6;
+            cell->face(f)->set_boundary_id(id);
+          }
+    tria.copy_triangulation(coarse);
+  }
+
+  template <>
+  void
+  Scene<2>::create_mesh(parallel::distributed::Triangulation<2> &tria) const
+  {
     if (type == "mesh file")
       create_from_mesh_file(tria);
     else if (type == "hertz cylinder")
-      {
-        const double R = hertz.radius, t = hertz.plate_thickness;
-        const Point<2> c(0., t + R);
-        // Coarse half-disc: a centre cell under the flat top and three cells
-        // along the arc; the lowest point of the arc lies inside the bottom
-        // cell, so the contact zone is free of coarse vertices.
-        const double             s = std::sqrt(0.5);
-        const std::vector<Point<2>> v = {c + Point<2>(-R, 0.),
-                                         c + Point<2>(R, 0.),
-                                         c + Point<2>(-R * s, -R * s),
-                                         c + Point<2>(R * s, -R * s),
-                                         c + Point<2>(-0.4375 * R, 0.),
-                                         c + Point<2>(0.4375 * R, 0.),
-                                         c + Point<2>(-0.4375 * R, -0.5 * R),
-                                         c + Point<2>(0.4375 * R, -0.5 * R)};
-        std::vector<CellData<2>>     cells(4, CellData<2>(4));
-        const unsigned int           cell_vertices[4][4] = {{6, 7, 4, 5},
-                                                            {2, 3, 6, 7},
-                                                            {2, 6, 0, 4},
-                                                            {7, 3, 5, 1}};
-        for (unsigned int i = 0; i < 4; ++i)
-          for (unsigned int j = 0; j < 4; ++j)
-            cells[i].vertices[j] = cell_vertices[i][j];
-        Triangulation<2> disc;
-        GridTools::consistently_order_cells(cells);
-        disc.create_triangulation(v, cells, SubCellData());
-
-        Triangulation<2>   plate;
-        const unsigned int nx =
-          std::max(1, static_cast<int>(std::round(2. * hertz.plate_half_width / t)));
-        GridGenerator::subdivided_hyper_rectangle(plate,
-                                                  {nx, 1},
-                                                  Point<2>(-hertz.plate_half_width, 0.),
-                                                  Point<2>(hertz.plate_half_width, t));
-        join_bodies({&disc, &plate}, {1, 2}, coarse);
-
-        for (const auto &cell : coarse.active_cell_iterators())
-          {
-            // The transfinite interpolation of the disc interior is charted
-            // on the coarse cells: random vertex moves invalidate the chart
-            // (its pull-back fails for degree 2), so a distorted disc has
-            // straight interior lines and only the arc is curved.
-            if (cell->material_id() == 1)
-              cell->set_all_manifold_ids(distortion > 0. ? numbers::flat_manifold_id : 2);
-            for (const auto f : cell->face_indices())
-              if (cell->face(f)->at_boundary())
-                {
-                  const Point<2> fc = cell->face(f)->center();
-                  if (cell->material_id() == 1)
-                    {
-                      if (close(fc[1], t + R, R))
-                        cell->face(f)->set_boundary_id(1);
-                      else
-                        {
-                          cell->face(f)->set_boundary_id(3);
-                          cell->face(f)->set_manifold_id(1);
-                        }
-                    }
-                  else if (close(fc[1], 0., t))
-                    cell->face(f)->set_boundary_id(2);
-                  else if (close(fc[1], t, t))
-                    cell->face(f)->set_boundary_id(4);
-                  else
-                    cell->face(f)->set_boundary_id(0);
-                }
-          }
-        tria.copy_triangulation(coarse);
-        tria.set_manifold(1, PolarManifold<2>(c));
-        TransfiniteInterpolationManifold<2> tfi;
-        if (distortion == 0.)
-          {
-            tfi.initialize(tria);
-            tria.set_manifold(2, tfi);
-          }
-
-        // Uniform rounds on the disc only: the plate is nearly rigid in the
-        // reference scene and needs no resolution away from the contact.
-        for (unsigned int round = 0; round < hertz.cylinder_refinements; ++round)
-          {
-            for (const auto &cell : tria.active_cell_iterators())
-              if (cell->is_locally_owned() && cell->material_id() == 1)
-                cell->set_refine_flag();
-            tria.execute_coarsening_and_refinement();
-          }
-        // Graded rounds toward the segment |x| < w_r of the plate top.
-        const unsigned int n_rounds =
-          std::max(hertz.contact_refinements, hertz.plate_refinements);
-        for (unsigned int round = 0; round < n_rounds; ++round)
-          {
-            for (const auto &cell : tria.active_cell_iterators())
-              {
-                if (!cell->is_locally_owned())
-                  continue;
-                const unsigned int rounds_of_body = cell->material_id() == 1 ?
-                                                      hertz.contact_refinements :
-                                                      hertz.plate_refinements;
-                if (round >= rounds_of_body)
-                  continue;
-                const Point<2> p = cell->center();
-                const double   dx =
-                  std::max(0., std::abs(p[0]) - hertz.refinement_half_width);
-                const double distance = std::hypot(dx, p[1] - t);
-                if (distance < hertz.grading_factor * cell->diameter())
-                  cell->set_refine_flag();
-              }
-            tria.execute_coarsening_and_refinement();
-          }
-      }
+      create_hertz_mesh(tria);
     else if (type == "contact blocks")
-      {
-        const double W = blocks.width, H = blocks.height;
-        Triangulation<2> lower, upper;
-        GridGenerator::subdivided_hyper_rectangle(lower,
-                                                  {blocks.lower_cells, blocks.lower_cells},
-                                                  Point<2>(0., 0.),
-                                                  Point<2>(W, H));
-        GridGenerator::subdivided_hyper_rectangle(upper,
-                                                  {blocks.upper_cells, blocks.upper_cells},
-                                                  Point<2>(0., H + blocks.gap),
-                                                  Point<2>(W, 2. * H + blocks.gap));
-        join_bodies({&upper, &lower}, {1, 2}, coarse);
-        for (const auto &cell : coarse.active_cell_iterators())
-          for (const auto f : cell->face_indices())
-            if (cell->face(f)->at_boundary())
-              {
-                const Point<2> fc    = cell->face(f)->center();
-                const bool     upper_body = cell->material_id() == 1;
-                const double   y0 = upper_body ? H + blocks.gap : 0.;
-                types::boundary_id id = 0;
-                if (close(fc[1], y0, H))
-                  id = upper_body ? 3 : 2;
-                else if (close(fc[1], y0 + H, H))
-                  id = upper_body ? 1 : 4;
-                else if (close(fc[0], 0., W))
-                  id = upper_body ? 5 : 6;
-                cell->face(f)->set_boundary_id(id);
-              }
-        tria.copy_triangulation(coarse);
-      }
+      create_contact_blocks(tria);
 
     if (global_refinements > 0)
       tria.refine_global(global_refinements);

@@ -113,6 +113,13 @@ namespace contact_fem
     /// The mesh file's coarse mesh with its manifolds, into @p tria.
     void
     create_from_mesh_file(parallel::distributed::Triangulation<dim> &tria) const;
+    /// The built-in Hertz half-disc on its plate, graded toward the
+    /// contact zone (2D).
+    void
+    create_hertz_mesh(parallel::distributed::Triangulation<dim> &tria) const;
+    /// The built-in stacked blocks (2D).
+    void
+    create_contact_blocks(parallel::distributed::Triangulation<dim> &tria) const;
 
   public:
     /// Geometry/Manifolds: the surfaces of boundary ids of a mesh file.
