@@ -16,6 +16,69 @@ namespace contact_fem
 {
   template <int dim>
   void
+  ContactInterface<dim>::unpack_faces(const std::vector<std::vector<double>> &all,
+                                      const unsigned int                      nodes_per_face,
+                                      const unsigned int                      n_geometry_points)
+  {
+    // Nodes shared by faces (of one rank or of several) become one node:
+    // they are identified by their first DoF.
+    nodes.clear();
+    faces.clear();
+    slave_faces_per_rank.clear();
+    master_faces_per_rank.clear();
+    std::map<types::global_dof_index, unsigned int> node_of_dof;
+    const unsigned int record = 5 + nodes_per_face * 3 * dim + n_geometry_points * dim;
+    for (const auto &chunk : all)
+      {
+        slave_faces_per_rank.push_back(0);
+        master_faces_per_rank.push_back(0);
+        for (unsigned int r = 0; r + record <= chunk.size(); r += record)
+          {
+            Face face;
+            face.pair           = static_cast<unsigned int>(chunk[r]);
+            face.slave          = chunk[r + 1] > 0.5;
+            face.youngs_modulus = chunk[r + 2];
+            face.poisson_ratio  = chunk[r + 3];
+            face.orientation    = chunk[r + 4];
+            for (unsigned int k = 0; k < nodes_per_face; ++k)
+              {
+                const double *data = &chunk[r + 5 + k * 3 * dim];
+                Node          node;
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    node.reference[d] = data[d];
+                    node.dofs[d] = static_cast<types::global_dof_index>(data[dim + d]);
+                    node.fixed[d] = data[2 * dim + d] > 0.5;
+                  }
+                const auto it = node_of_dof.find(node.dofs[0]);
+                unsigned int index;
+                if (it == node_of_dof.end())
+                  {
+                    index                     = nodes.size();
+                    node_of_dof[node.dofs[0]] = index;
+                    nodes.push_back(node);
+                  }
+                else
+                  index = it->second;
+                (face.slave ? nodes[index].slave : nodes[index].master) = true;
+                face.nodes.push_back(index);
+              }
+            for (unsigned int k = 0; k < n_geometry_points; ++k)
+              {
+                const double *data = &chunk[r + 5 + nodes_per_face * 3 * dim + k * dim];
+                Point<dim>    x;
+                for (unsigned int d = 0; d < dim; ++d)
+                  x[d] = data[d];
+                face.geometry_points.push_back(x);
+              }
+            ++(face.slave ? slave_faces_per_rank.back() : master_faces_per_rank.back());
+            faces.push_back(face);
+          }
+      }
+  }
+
+  template <int dim>
+  void
   ContactInterface<dim>::initialize(const MappingQ<dim>             &mapping,
                                     const DoFHandler<dim>           &dof_handler,
                                     const std::vector<ContactPair>  &contact_pairs,
@@ -113,61 +176,7 @@ namespace contact_fem
                     }
                 }
 
-    const auto all = Utilities::MPI::all_gather(comm, packed);
-
-    nodes.clear();
-    faces.clear();
-    slave_faces_per_rank.clear();
-    master_faces_per_rank.clear();
-    std::map<types::global_dof_index, unsigned int> node_of_dof;
-    const unsigned int record = 5 + nodes_per_face * 3 * dim + n_geometry_points * dim;
-    for (const auto &chunk : all)
-      {
-      slave_faces_per_rank.push_back(0);
-      master_faces_per_rank.push_back(0);
-      for (unsigned int r = 0; r + record <= chunk.size(); r += record)
-        {
-          Face face;
-          face.pair           = static_cast<unsigned int>(chunk[r]);
-          face.slave          = chunk[r + 1] > 0.5;
-          face.youngs_modulus = chunk[r + 2];
-          face.poisson_ratio  = chunk[r + 3];
-          face.orientation    = chunk[r + 4];
-          for (unsigned int k = 0; k < nodes_per_face; ++k)
-            {
-              const double *data = &chunk[r + 5 + k * 3 * dim];
-              Node          node;
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  node.reference[d] = data[d];
-                  node.dofs[d] = static_cast<types::global_dof_index>(data[dim + d]);
-                  node.fixed[d] = data[2 * dim + d] > 0.5;
-                }
-              const auto it = node_of_dof.find(node.dofs[0]);
-              unsigned int index;
-              if (it == node_of_dof.end())
-                {
-                  index                     = nodes.size();
-                  node_of_dof[node.dofs[0]] = index;
-                  nodes.push_back(node);
-                }
-              else
-                index = it->second;
-              (face.slave ? nodes[index].slave : nodes[index].master) = true;
-              face.nodes.push_back(index);
-            }
-          for (unsigned int k = 0; k < n_geometry_points; ++k)
-            {
-              const double *data = &chunk[r + 5 + nodes_per_face * 3 * dim + k * dim];
-              Point<dim>    x;
-              for (unsigned int d = 0; d < dim; ++d)
-                x[d] = data[d];
-              face.geometry_points.push_back(x);
-            }
-          ++(face.slave ? slave_faces_per_rank.back() : master_faces_per_rank.back());
-          faces.push_back(face);
-        }
-      }
+    unpack_faces(Utilities::MPI::all_gather(comm, packed), nodes_per_face, n_geometry_points);
 
     interface_dofs.clear();
     for (const auto &node : nodes)

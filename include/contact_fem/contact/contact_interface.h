@@ -216,6 +216,13 @@ namespace contact_fem
     std::vector<unsigned int> slave_faces_per_rank, master_faces_per_rank;
 
   private:
+    /// Builds nodes and faces from the face records of every rank (@p all,
+    /// as packed by initialize()), counting the faces per rank.
+    void
+    unpack_faces(const std::vector<std::vector<double>> &all,
+                 const unsigned int                      nodes_per_face,
+                 const unsigned int                      n_geometry_points);
+
     /// Normal, size and full_area of every slave node, from the face
     /// geometry of the search configuration (2D).
     std::map<unsigned int, SlaveNode>
