@@ -1174,6 +1174,84 @@ namespace contact_fem
   }
 
   template <int dim>
+  double
+  ContactProblem<dim>::rotation_under_couple(const types::material_id body,
+                                             const Point<dim>        &centre,
+                                             const double             volume,
+                                             const double             polar,
+                                             const Tensor<1, dim>    &omega_axis,
+                                             const unsigned int       axis)
+  {
+    const QGauss<dim>                    quadrature(degree + 1);
+    FEValues<dim>                        fe_values(*mapping, fe, quadrature,
+                                update_values | update_gradients | update_quadrature_points |
+                                  update_JxW_values);
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    Vector<double>                       cell_load(fe.n_dofs_per_cell());
+    std::vector<Tensor<2, dim>>          gradients(quadrature.size());
+    // A body force f = omega x (x - c) / J: no net force, and with J = int
+    // |x - c|^2 minus the part along the axis, unit moment about the axis.
+    const auto couple = [&](const Point<dim> &x) {
+      const Tensor<1, dim> r = x - centre;
+      Tensor<1, dim>       f;
+      if constexpr (dim == 2)
+        {
+          f[0] = -r[1];
+          f[1] = r[0];
+        }
+      else
+        f = cross_product_3d(omega_axis, r);
+      return f / polar;
+    };
+    TrilinosWrappers::MPI::Vector probe_load(owned_dofs, comm);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->material_id() == body)
+        {
+          fe_values.reinit(cell);
+          cell_load = 0.;
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const Tensor<1, dim> f = couple(fe_values.quadrature_point(q));
+              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                cell_load(i) += fe_values[displacement].value(i, q) * f * fe_values.JxW(q);
+            }
+          cell->get_dof_indices(dofs);
+          // The vector form condenses without inhomogeneities.
+          constraints.distribute_local_to_global(cell_load, dofs, probe_load);
+        }
+    probe_load.compress(VectorOperation::add);
+
+    // Response: solution + K^-1 probe, distributed, minus solution
+    // (the inhomogeneities cancel).
+    TrilinosWrappers::MPI::Vector response(owned_dofs, comm);
+    linear_solver->solve_again(response, probe_load);
+    response += solution;
+    constraints.distribute(response);
+    response -= solution;
+    TrilinosWrappers::MPI::Vector ghosted_response(owned_dofs, relevant_dofs, comm);
+    ghosted_response = response;
+
+    // Mean rotation of the body about the axis.
+    double rotation = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->material_id() == body)
+        {
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_gradients(ghosted_response, gradients);
+          const unsigned int i = (axis + 1) % 3, j = (axis + 2) % 3;
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const Tensor<2, dim> &G = gradients[q];
+              rotation += (dim == 2 ? 0.5 * (G[1][0] - G[0][1]) :
+                                      0.5 * (G[j % dim][i % dim] - G[i % dim][j % dim])) *
+                          fe_values.JxW(q);
+            }
+        }
+    return std::abs(Utilities::MPI::sum(rotation, comm)) / volume;
+  }
+
+  template <int dim>
   void
   ContactProblem<dim>::warn_about_weakly_held_rotation(Json &cycle_record)
   {
@@ -1216,11 +1294,7 @@ namespace contact_fem
     FEValues<dim>                    fe_values(*mapping, fe, quadrature,
                                 update_values | update_gradients | update_quadrature_points |
                                   update_JxW_values);
-    const FEValuesExtractors::Vector displacement(0);
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    Vector<double>                       cell_load(fe.n_dofs_per_cell());
-    std::vector<Tensor<2, dim>>          gradients(quadrature.size());
-    constexpr unsigned int               n_axes = dim == 2 ? 1 : 3;
+    constexpr unsigned int           n_axes = dim == 2 ? 1 : 3;
 
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
@@ -1249,9 +1323,6 @@ namespace contact_fem
 
         for (unsigned int axis = 0; axis < n_axes; ++axis)
           {
-            // A body force f = omega x (x - c) / J: no net force, and with
-            // J = int |x - c|^2 minus the part along the axis, unit moment
-            // about the axis.
             Tensor<1, dim> omega_axis;
             if constexpr (dim == 3)
               omega_axis[axis] = 1.;
@@ -1259,63 +1330,8 @@ namespace contact_fem
             for (unsigned int i = 0; i < dim; ++i)
               if (dim == 2 || i != axis)
                 polar += second_moments[i] - volume * centre[i] * centre[i];
-            const auto couple = [&](const Point<dim> &x) {
-              const Tensor<1, dim> r = x - centre;
-              Tensor<1, dim>       f;
-              if constexpr (dim == 2)
-                {
-                  f[0] = -r[1];
-                  f[1] = r[0];
-                }
-              else
-                f = cross_product_3d(omega_axis, r);
-              return f / polar;
-            };
-            TrilinosWrappers::MPI::Vector probe_load(owned_dofs, comm);
-            for (const auto &cell : dof_handler.active_cell_iterators())
-              if (cell->is_locally_owned() && cell->material_id() == bodies[b])
-                {
-                  fe_values.reinit(cell);
-                  cell_load = 0.;
-                  for (unsigned int q = 0; q < quadrature.size(); ++q)
-                    {
-                      const Tensor<1, dim> f = couple(fe_values.quadrature_point(q));
-                      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                        cell_load(i) += fe_values[displacement].value(i, q) * f * fe_values.JxW(q);
-                    }
-                  cell->get_dof_indices(dofs);
-                  // The vector form condenses without inhomogeneities.
-                  constraints.distribute_local_to_global(cell_load, dofs, probe_load);
-                }
-            probe_load.compress(VectorOperation::add);
-
-            // Response: solution + K^-1 probe, distributed, minus solution
-            // (the inhomogeneities cancel).
-            TrilinosWrappers::MPI::Vector response(owned_dofs, comm);
-            linear_solver->solve_again(response, probe_load);
-            response += solution;
-            constraints.distribute(response);
-            response -= solution;
-            TrilinosWrappers::MPI::Vector ghosted_response(owned_dofs, relevant_dofs, comm);
-            ghosted_response = response;
-
-            // Mean rotation of the body about the axis.
-            double rotation = 0.;
-            for (const auto &cell : dof_handler.active_cell_iterators())
-              if (cell->is_locally_owned() && cell->material_id() == bodies[b])
-                {
-                  fe_values.reinit(cell);
-                  fe_values[displacement].get_function_gradients(ghosted_response, gradients);
-                  const unsigned int i = (axis + 1) % 3, j = (axis + 2) % 3;
-                  for (unsigned int q = 0; q < quadrature.size(); ++q)
-                    {
-                      const Tensor<2, dim> &G = gradients[q];
-                      rotation += (dim == 2 ? 0.5 * (G[1][0] - G[0][1]) :
-                                              0.5 * (G[j % dim][i % dim] - G[i % dim][j % dim])) *
-                                  fe_values.JxW(q);
-                    }
-                }
-            rotation = std::abs(Utilities::MPI::sum(rotation, comm)) / volume;
+            const double rotation =
+              rotation_under_couple(bodies[b], centre, volume, polar, omega_axis, axis);
             const double compliance = rotation * softest * volume;
             if (!(compliance > compliance_limit))
               continue;

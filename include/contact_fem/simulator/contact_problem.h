@@ -152,6 +152,16 @@ namespace contact_fem
     /// the factors of the converged system.
     void
     warn_about_weakly_held_rotation(Json &cycle_record);
+    /// The mean rotation about @p axis (3D; the plane's in 2D) of @p body
+    /// under a unit couple (body force omega x (x - centre) / polar), solved
+    /// with the kept factors of the converged system.
+    double
+    rotation_under_couple(const types::material_id body,
+                          const Point<dim>        &centre,
+                          const double             volume,
+                          const double             polar,
+                          const Tensor<1, dim>    &omega_axis,
+                          const unsigned int       axis);
     void
     warn_about_singular_stiffness(Json &cycle_record) const;
     /// The largest change of a prescribed displacement from the current
