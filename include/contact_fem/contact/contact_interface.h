@@ -13,7 +13,7 @@
 
 #include <contact_fem/material/material.h>
 #include <contact_fem/contact/mortar.h>
-#include <contact_fem/core/parameters.h>
+#include <contact_fem/contact/contact_parameters.h>
 
 #include <array>
 #include <map>

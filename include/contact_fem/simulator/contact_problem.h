@@ -23,7 +23,10 @@
 #include <contact_fem/core/json.h>
 #include <contact_fem/material/material.h>
 #include <contact_fem/simulator/output_files.h>
+#include <contact_fem/simulator/scene_parameters.h>
+#include <contact_fem/contact/contact_parameters.h>
 #include <contact_fem/core/parameters.h>
+#include <contact_fem/solvers/solver_parameters.h>
 #include <contact_fem/adaptivity/refinement.h>
 #include <contact_fem/geometry/scene.h>
 #include <contact_fem/adaptivity/stress_recovery.h>

@@ -3,7 +3,7 @@
 #ifndef contact_fem_load_step_control_h
 #define contact_fem_load_step_control_h
 
-#include <contact_fem/core/parameters.h>
+#include <contact_fem/solvers/solver_parameters.h>
 
 namespace contact_fem
 {

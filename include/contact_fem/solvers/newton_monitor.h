@@ -3,7 +3,7 @@
 #ifndef contact_fem_newton_monitor_h
 #define contact_fem_newton_monitor_h
 
-#include <contact_fem/core/parameters.h>
+#include <contact_fem/solvers/solver_parameters.h>
 
 #include <string>
 

@@ -1,0 +1,40 @@
+// The contact pairs and the search and check settings of a scene
+// (subsection Contact; the formulations declare their own keys).
+#ifndef contact_fem_contact_parameters_h
+#define contact_fem_contact_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
+
+#include <vector>
+
+namespace contact_fem
+{
+  using namespace dealii;
+
+  /// One contact pair: the slave and master surfaces by boundary id.
+  struct ContactPair
+  {
+    types::boundary_id slave;
+    types::boundary_id master;
+  };
+
+  struct ContactParameters
+  {
+    std::vector<ContactPair> pairs; ///< empty: no contact code runs
+    double search_factor       = 3.;
+    /// Mortar operators rebuilt at every load step (else once, on the
+    /// reference configuration).
+    bool   updated_kinematics    = false;
+    /// Unexplained penetration allowed after convergence, over the element size.
+    double penetration_tolerance = 0.05;
+    bool   allow_loss_of_contact = false;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+} // namespace contact_fem
+
+#endif

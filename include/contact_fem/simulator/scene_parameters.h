@@ -1,0 +1,94 @@
+// What a scene prescribes beyond geometry, materials and contact: boundary
+// conditions, the analytical solution to compare with, and the output.
+#ifndef contact_fem_scene_parameters_h
+#define contact_fem_scene_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
+
+#include <contact_fem/core/parameters.h>
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace contact_fem
+{
+  using namespace dealii;
+
+  /// A boundary id whose displacement components are prescribed.
+  struct DisplacementCondition
+  {
+    types::boundary_id boundary_id;
+    unsigned int       component;
+    std::string        expression; ///< function of x, y, (z,) t; "0" for fixed
+  };
+
+  /// A boundary id loaded by a normal pressure (positive pushes into the body).
+  struct PressureCondition
+  {
+    types::boundary_id boundary_id;
+    std::string        expression; ///< function of x, y, (z,) t
+  };
+
+  /// A displacement component held at zero at one vertex of one body, to
+  /// remove a rigid-body mode that the boundary conditions leave free.
+  struct PointCondition
+  {
+    BodyPoint    point;
+    unsigned int component;
+  };
+
+  struct BoundaryConditions
+  {
+    std::vector<DisplacementCondition> displacements;
+    std::vector<PointCondition>        points;
+    std::vector<PressureCondition>     pressures;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm, const unsigned int dim);
+  };
+
+  struct AnalyticalSolution
+  {
+    std::string type   = "none"; ///< "none" or "hertz cylinder"
+    double      radius = 8.;
+    double      center = 0.; ///< x of the first point of contact
+    /// Total potential energy of the exact solution, if known (NaN if not):
+    /// gives the energy-norm error and the effectivity of the estimate.
+    double reference_potential_energy = std::numeric_limits<double>::quiet_NaN();
+    /// (x, pressure) of a reference contact pressure, sorted by x; empty if
+    /// none was given.
+    std::vector<std::pair<double, double>> reference_pressure_profile;
+
+    /// The reference pressure at @p x: linear between the rows, zero
+    /// outside their range.
+    double
+    reference_pressure(const double x) const;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    /// Relative file names are taken relative to @p prm_directory.
+    void
+    parse_parameters(ParameterHandler &prm, const std::string &prm_directory);
+  };
+
+  struct OutputParameters
+  {
+    std::string directory = "results";
+    bool        write_vtu              = true;
+    bool        write_pressure_profile = true;
+    bool        print_timing           = true;
+    /// Vertices whose displacement every cycle reports.
+    std::vector<BodyPoint> displacement_probes;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm, const unsigned int dim);
+  };
+} // namespace contact_fem
+
+#endif

@@ -1,0 +1,362 @@
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/utilities.h>
+
+#include <contact_fem/simulator/scene_parameters.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace contact_fem
+{
+  namespace
+  {
+    /// Checks that @p expression is a valid muparser expression of x, y, (z,) t.
+    void
+    check_expression(const std::string &expression,
+                     const unsigned int dim,
+                     const std::string &key)
+    {
+      const std::string variables = dim == 2 ? "x,y,t" : "x,y,z,t";
+      try
+        {
+          if (dim == 2)
+            {
+              FunctionParser<2> f(1);
+              f.initialize(variables, expression, {}, true);
+              f.value(Point<2>());
+            }
+          else
+            {
+              FunctionParser<3> f(1);
+              f.initialize(variables, expression, {}, true);
+              f.value(Point<3>());
+            }
+        }
+      catch (...)
+        {
+          AssertThrow(false,
+                      ExcMessage(key + ": '" + expression +
+                                 "' is not a valid expression of " + variables + "."));
+        }
+    }
+
+    /// Component indices of letters like "xy" (spaces ignored); @p what
+    /// names the entry in the message.
+    std::vector<unsigned int>
+    parse_components(const std::string &letters,
+                     const std::string &axes,
+                     const std::string &key,
+                     const std::string &what)
+    {
+      std::vector<unsigned int> result;
+      for (const char c : letters)
+        {
+          if (c == ' ')
+            continue;
+          const auto d = axes.find(c);
+          AssertThrow(d != std::string::npos,
+                      ExcMessage(key + ": '" + std::string(1, c) +
+                                 "' is not a component; expected letters from '" + axes +
+                                 "'."));
+          result.push_back(static_cast<unsigned int>(d));
+        }
+      AssertThrow(!result.empty(), ExcMessage(key + ": " + what + " lists no components."));
+      return result;
+    }
+  } // namespace
+
+  void
+  BoundaryConditions::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Boundary conditions");
+    prm.declare_entry("Fixed",
+                      "2: xy; 1: x",
+                      Patterns::Anything(),
+                      "Boundaries whose displacement components are zero, as "
+                      "'id: components; ...' with components from x, y, z, e.g. "
+                      "'2: xy; 1: x'.");
+    prm.declare_entry("Fixed points",
+                      "",
+                      Patterns::Anything(),
+                      "Mesh vertices whose displacement components are zero, as "
+                      "'material id @ x, y: components; ...', e.g. '1 @ 0, 1: x' "
+                      "(the vertex of body 1 at (0, 1)). For rigid-body modes that "
+                      "the boundary conditions leave free; the vertex must exist.");
+    prm.declare_entry("Prescribed displacement",
+                      "",
+                      Patterns::Anything(),
+                      "Boundaries with a prescribed displacement component, as "
+                      "'id: component = expression; ...' with an expression of x, "
+                      "y, (z,) t, e.g. '1: y = -0.01*t'.");
+    prm.declare_entry("Pressure",
+                      "1: 0.2*t",
+                      Patterns::Anything(),
+                      "Boundaries loaded by a normal pressure (positive pushes "
+                      "into the body), as 'id: expression; ...' with an "
+                      "expression of x, y, (z,) t. Units: stress.");
+    prm.leave_subsection();
+  }
+
+  void
+  BoundaryConditions::parse_parameters(ParameterHandler &prm, const unsigned int dim)
+  {
+    const std::string axes = dim == 2 ? "xy" : "xyz";
+    prm.enter_subsection("Boundary conditions");
+    displacements.clear();
+    pressures.clear();
+    const std::string fixed_key = "Boundary conditions/Fixed";
+    for (const auto &[id, components] : split_key_value_list(prm.get("Fixed"), fixed_key))
+      {
+        const types::boundary_id b = parse_boundary_id(id, fixed_key);
+        for (const unsigned int d :
+             parse_components(components, axes, fixed_key, "boundary " + id))
+          displacements.push_back({b, d, "0"});
+      }
+    const std::string points_key = "Boundary conditions/Fixed points";
+    points.clear();
+    for (const auto &[location, components] :
+         split_key_value_list(prm.get("Fixed points"), points_key))
+      {
+        PointCondition condition;
+        condition.point = parse_body_point(location, dim, points_key);
+        for (const unsigned int d :
+             parse_components(components, axes, points_key, "point '" + location + "'"))
+          {
+            condition.component = d;
+            points.push_back(condition);
+          }
+      }
+    const std::string disp_key = "Boundary conditions/Prescribed displacement";
+    for (const auto &[id, rhs] : split_key_value_list(prm.get("Prescribed displacement"),
+                                                      disp_key))
+      {
+        const types::boundary_id b   = parse_boundary_id(id, disp_key);
+        const auto               eq  = rhs.find('=');
+        const std::string        cmp = Utilities::trim(rhs.substr(0, eq));
+        AssertThrow(eq != std::string::npos && cmp.size() == 1 &&
+                      axes.find(cmp[0]) != std::string::npos,
+                    ExcMessage(disp_key + ": entry '" + id + ": " + rhs +
+                               "' is not of the form 'id: component = expression' "
+                               "with a component from '" +
+                               axes + "'."));
+        const std::string expression = Utilities::trim(rhs.substr(eq + 1));
+        check_expression(expression, dim, disp_key);
+        displacements.push_back(
+          {b, static_cast<unsigned int>(axes.find(cmp[0])), expression});
+      }
+    const std::string pressure_key = "Boundary conditions/Pressure";
+    for (const auto &[id, expression] :
+         split_key_value_list(prm.get("Pressure"), pressure_key))
+      {
+        check_expression(expression, dim, pressure_key);
+        pressures.push_back({parse_boundary_id(id, pressure_key), expression});
+      }
+    prm.leave_subsection();
+
+    for (unsigned int i = 0; i < displacements.size(); ++i)
+      for (unsigned int j = 0; j < i; ++j)
+        AssertThrow(displacements[i].boundary_id != displacements[j].boundary_id ||
+                      displacements[i].component != displacements[j].component,
+                    ExcMessage("Boundary conditions: component " +
+                               std::string(1, axes[displacements[i].component]) +
+                               " of boundary " +
+                               std::to_string(displacements[i].boundary_id) +
+                               " is prescribed twice."));
+  }
+
+  void
+  AnalyticalSolution::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Analytical solution");
+    prm.declare_entry("Type", "none", Patterns::Selection("none|hertz cylinder"),
+                      "Reference solution to compare with: 'hertz cylinder' = 2D "
+                      "plane-strain Hertz contact of a cylinder of radius R on a "
+                      "plane, with the load per unit thickness taken from the "
+                      "transmitted contact force (so displacement-driven scenes "
+                      "compare too) and E* from the materials of the contact "
+                      "pair.");
+    prm.declare_entry("Radius", "8", Patterns::Double(0.), "Cylinder radius R.");
+    prm.declare_entry("Center", "0", Patterns::Double(),
+                      "x coordinate of the centre of the contact zone.");
+    prm.declare_entry("Reference potential energy", "",
+                      Patterns::Anything(),
+                      "Total potential energy 1/2 u.K u - f.u of the exact solution, "
+                      "if known (e.g. from an overkill or extrapolated run: "
+                      "summary.json, cycles[].potential_energy); empty if not. "
+                      "Then every cycle reports the energy-norm error "
+                      "sqrt(2 |Pi_h - Pi_ref|) and the effectivity index eta / "
+                      "error of the estimate. Without contact this is the "
+                      "energy-norm error; with contact it exceeds it by the work "
+                      "of the exact pressure on the discrete gap. With degree 1 "
+                      "and Type = hertz cylinder the chords of the polygonal arc "
+                      "lie inside the circle: the work W of the contact force on "
+                      "that chord gap (summary.json: analytical.chord_gap_work) "
+                      "is added to Pi_h, sqrt(2 |Pi_h + W - Pi_ref|), since it is "
+                      "a geometry error the estimate does not measure. Pi_h < "
+                      "Pi_ref (a discretisation softer than the exact problem, "
+                      "or an inaccurate reference) is warned about.");
+    prm.declare_entry("Reference pressure profile", "", Patterns::Anything(),
+                      "CSV file with the columns 'x' and 'pressure' (any others "
+                      "are ignored), e.g. the pressure_profile.csv of an overkill "
+                      "run; a relative name is taken relative to the .prm file; "
+                      "empty if none. Then every cycle also measures the contact "
+                      "pressure against it (interpolated linearly in x, zero "
+                      "outside its range): the mortar pressure, and the normal "
+                      "traction of the recovered stress of the SPR estimators "
+                      "(summary.json: *_reference_l2_relative_error). Unlike the "
+                      "Hertz half-space pressure, an overkill run of the same "
+                      "finite bodies has no modelling error.");
+    prm.leave_subsection();
+  }
+
+  namespace
+  {
+    /// The (x, pressure) rows of a CSV file with a header line naming the
+    /// columns, sorted by x.
+    std::vector<std::pair<double, double>>
+    read_pressure_profile(const std::string &file_name)
+    {
+      const std::string key = "Analytical solution/Reference pressure profile: ";
+      std::ifstream     in(file_name);
+      AssertThrow(in, ExcMessage(key + "cannot open '" + file_name + "'."));
+      std::string line;
+      AssertThrow(static_cast<bool>(std::getline(in, line)),
+                  ExcMessage(key + "'" + file_name + "' is empty (expected a header line "
+                             "naming the columns x and pressure)."));
+      const std::vector<std::string> header = Utilities::split_string_list(line, ',');
+      const auto column = [&](const std::string &name) {
+        const auto found = std::find(header.begin(), header.end(), name);
+        AssertThrow(found != header.end(),
+                    ExcMessage(key + "'" + file_name + "', line 1: no column '" + name +
+                               "' (expected a header line naming the columns x and "
+                               "pressure)."));
+        return static_cast<std::size_t>(found - header.begin());
+      };
+      const std::size_t x_column = column("x"), p_column = column("pressure");
+
+      std::vector<std::pair<double, double>> rows;
+      for (unsigned int line_number = 2; std::getline(in, line); ++line_number)
+        {
+          if (Utilities::trim(line).empty())
+            continue;
+          const std::vector<std::string> fields = Utilities::split_string_list(line, ',');
+          double                         values[2];
+          const std::size_t              columns[2] = {x_column, p_column};
+          for (unsigned int i = 0; i < 2; ++i)
+            {
+              const std::string field = columns[i] < fields.size() ? fields[columns[i]] : "";
+              char             *end   = nullptr;
+              values[i]               = std::strtod(field.c_str(), &end);
+              AssertThrow(!field.empty() && *end == '\0' && std::isfinite(values[i]),
+                          ExcMessage(key + "'" + file_name + "', line " +
+                                     std::to_string(line_number) + ": column '" +
+                                     header[columns[i]] + "' is '" + field +
+                                     "', expected a number."));
+            }
+          rows.emplace_back(values[0], values[1]);
+        }
+      AssertThrow(rows.size() >= 2,
+                  ExcMessage(key + "'" + file_name + "' has " + std::to_string(rows.size()) +
+                             " data rows, expected at least 2."));
+      std::sort(rows.begin(), rows.end());
+      return rows;
+    }
+  } // namespace
+
+  double
+  AnalyticalSolution::reference_pressure(const double x) const
+  {
+    const auto &rows = reference_pressure_profile;
+    if (rows.empty() || x < rows.front().first || x > rows.back().first)
+      return 0.;
+    const auto upper = std::lower_bound(rows.begin(), rows.end(), std::make_pair(x, -HUGE_VAL));
+    if (upper == rows.begin())
+      return upper->second;
+    const auto   lower = upper - 1;
+    const double width = upper->first - lower->first;
+    if (width <= 0.)
+      return upper->second;
+    const double t = (x - lower->first) / width;
+    return (1. - t) * lower->second + t * upper->second;
+  }
+
+  void
+  AnalyticalSolution::parse_parameters(ParameterHandler &prm, const std::string &prm_directory)
+  {
+    prm.enter_subsection("Analytical solution");
+    type   = prm.get("Type");
+    radius = prm.get_double("Radius");
+    center = prm.get_double("Center");
+    const std::string reference = Utilities::trim(prm.get("Reference potential energy"));
+    std::string       profile   = Utilities::trim(prm.get("Reference pressure profile"));
+    prm.leave_subsection();
+    reference_pressure_profile.clear();
+    if (!profile.empty())
+      {
+        if (profile[0] != '/' && !prm_directory.empty())
+          profile = prm_directory + "/" + profile;
+        reference_pressure_profile = read_pressure_profile(profile);
+      }
+    reference_potential_energy = std::numeric_limits<double>::quiet_NaN();
+    if (!reference.empty())
+      {
+        char *end                  = nullptr;
+        reference_potential_energy = std::strtod(reference.c_str(), &end);
+        AssertThrow(end != reference.c_str() && *end == '\0' &&
+                      std::isfinite(reference_potential_energy),
+                    ExcMessage("Analytical solution/Reference potential energy: '" +
+                               reference + "' is not a number (leave it empty if unknown)."));
+      }
+    AssertThrow(radius > 0., ExcMessage("Analytical solution/Radius: expected > 0."));
+  }
+
+  void
+  OutputParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Output directory",
+                      "results",
+                      Patterns::Anything(),
+                      "Directory of every output file of the run (created if "
+                      "needed): summary.json, log.txt, pressure profiles, VTU. "
+                      "Before any work the run removes the files of an earlier "
+                      "run from it (only the names contact_fem writes: "
+                      "summary.json, log.txt, convergence.csv, "
+                      "pressure_profile.csv, solution.pvd, solution_*.pvtu/vtu, "
+                      "error_indicators_*.pvtu/vtu) and checks that it can write "
+                      "there. Must not be named 'output' in tests.");
+    prm.enter_subsection("Output");
+    prm.declare_entry("Write VTU", "true", Patterns::Bool(),
+                      "Write the fields of every load step as VTU/PVTU.");
+    prm.declare_entry("Write pressure profile", "true", Patterns::Bool(),
+                      "Write the slave pressure profile of every cycle as CSV.");
+    prm.declare_entry("Print timing", "true", Patterns::Bool(),
+                      "Print wall times on the console (they are always in "
+                      "summary.json). Tests switch this off.");
+    prm.declare_entry("Displacement probes", "", Patterns::Anything(),
+                      "Mesh vertices whose displacement every cycle prints and "
+                      "writes to summary.json (displacement_probes), as "
+                      "'material id @ x, y; ...' (the vertex of that body at that "
+                      "point, as for Fixed points); the vertex must exist.");
+    prm.leave_subsection();
+  }
+
+  void
+  OutputParameters::parse_parameters(ParameterHandler &prm, const unsigned int dim)
+  {
+    directory = prm.get("Output directory");
+    AssertThrow(!Utilities::trim(directory).empty(),
+                ExcMessage("Output directory: must not be empty."));
+    prm.enter_subsection("Output");
+    write_vtu              = prm.get_bool("Write VTU");
+    write_pressure_profile = prm.get_bool("Write pressure profile");
+    print_timing           = prm.get_bool("Print timing");
+    displacement_probes.clear();
+    const std::string probes_key = "Output/Displacement probes";
+    for (const std::string &probe : Utilities::split_string_list(prm.get("Displacement probes"), ';'))
+      if (!Utilities::trim(probe).empty())
+        displacement_probes.push_back(parse_body_point(probe, dim, probes_key));
+    prm.leave_subsection();
+  }
+} // namespace contact_fem

@@ -1,0 +1,99 @@
+#include <contact_fem/solvers/solver_parameters.h>
+
+namespace contact_fem
+{
+  void
+  LoadStepping::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load stepping");
+    prm.declare_entry("End time", "1", Patterns::Double(),
+                      "Pseudo-time of the last load step; loads and prescribed "
+                      "displacements are functions of t. Must be > 0.");
+    prm.declare_entry("Number of load steps", "1", Patterns::Integer(),
+                      "Equal load steps from t = 0 to the end time; at least 1.");
+    prm.declare_entry("Maximum step splits", "4", Patterns::Integer(0, 30),
+                      "When Newton fails on a step (no convergence, NaN, singular "
+                      "system), the step is split and retried from the last "
+                      "converged state, at most this many times in a row.");
+    prm.declare_entry("Split factor", "2", Patterns::Integer(2, 100),
+                      "Number of sub-steps a failing step is split into.");
+    prm.leave_subsection();
+  }
+
+  void
+  LoadStepping::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load stepping");
+    end_time     = prm.get_double("End time");
+    const int n  = prm.get_integer("Number of load steps");
+    max_splits   = prm.get_integer("Maximum step splits");
+    split_factor = prm.get_integer("Split factor");
+    prm.leave_subsection();
+    AssertThrow(end_time > 0. && std::isfinite(end_time),
+                ExcMessage("Load stepping/End time: got " + std::to_string(end_time) +
+                           "; expected a value > 0."));
+    AssertThrow(n >= 1 && n <= 100000,
+                ExcMessage("Load stepping/Number of load steps: got " + std::to_string(n) +
+                           "; expected an integer from 1 to 100000."));
+    n_steps = n;
+  }
+
+  void
+  NewtonParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Newton");
+    prm.declare_entry("Maximum iterations", "20", Patterns::Integer(1, 1000),
+                      "Semi-smooth Newton iterations allowed per load step.");
+    prm.declare_entry("Displacement relative tolerance", "1e-4", Patterns::Double(0.),
+                      "Converged when |r_u| / |r_u at iteration 0| is below this "
+                      "(or the absolute test holds), for the equilibrium residual "
+                      "r_u of the free DoFs.");
+    prm.declare_entry("Displacement absolute tolerance", "1e-9", Patterns::Double(0.),
+                      "Absolute bound on |r_u|. Units: force. The relative and the "
+                      "absolute tolerance may not both be 0 (residuals stall at "
+                      "round-off).");
+    prm.declare_entry("Multiplier relative tolerance", "1e-4", Patterns::Double(0.),
+                      "Same for the complementarity residual of the multipliers.");
+    prm.declare_entry("Multiplier absolute tolerance", "1e-9", Patterns::Double(0.),
+                      "Absolute bound on the multiplier residual. Units: length. "
+                      "The relative and the absolute tolerance may not both be 0.");
+    prm.declare_entry("Damping", "1", Patterns::Double(0.),
+                      "Step length alpha in (0, 1] of every Newton update, u <- u + "
+                      "alpha du. Below 1 it damps an active set that cycles between "
+                      "states, at the price of linear convergence (each iteration "
+                      "removes the fraction alpha of the remaining error).");
+    prm.leave_subsection();
+  }
+
+  void
+  NewtonParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Newton");
+    max_iterations                  = prm.get_integer("Maximum iterations");
+    displacement_relative_tolerance = prm.get_double("Displacement relative tolerance");
+    displacement_absolute_tolerance = prm.get_double("Displacement absolute tolerance");
+    multiplier_relative_tolerance   = prm.get_double("Multiplier relative tolerance");
+    multiplier_absolute_tolerance   = prm.get_double("Multiplier absolute tolerance");
+    damping                         = prm.get_double("Damping");
+    prm.leave_subsection();
+    // The residuals are computed in double precision: they stall at
+    // round-off (measured on prm/hertz.prm: |r_u| ~ 1e-14, |r_lambda| ~
+    // 2e-16) and never reach 0, so a pair of zero tolerances makes every
+    // step fail after its iterations, and the step splits do not help.
+    const auto check_pair = [](const double relative, const double absolute,
+                               const std::string &name, const std::string &defaults) {
+      AssertThrow(relative > 0. || absolute > 0.,
+                  ExcMessage("Newton/" + name + " relative tolerance and Newton/" + name +
+                             " absolute tolerance are both 0: a residual computed in double "
+                             "precision stalls at round-off and never reaches 0, so no load "
+                             "step could converge; set at least one of them > 0 (defaults " +
+                             defaults + ")."));
+    };
+    check_pair(displacement_relative_tolerance, displacement_absolute_tolerance,
+               "Displacement", "1e-4 and 1e-9");
+    check_pair(multiplier_relative_tolerance, multiplier_absolute_tolerance, "Multiplier",
+               "1e-4 and 1e-9");
+    AssertThrow(damping > 0. && damping <= 1.,
+                ExcMessage("Newton/Damping: expected a value in (0, 1]."));
+  }
+} // namespace contact_fem
