@@ -395,8 +395,10 @@ namespace contact_fem
             for (unsigned int f = 0; f < faces.size(); ++f)
               if (!faces[f].slave && faces[f].pair == p)
                 {
-                  BoundingBox<dim> box = face_box<dim>(lines[f]);
-                  box.extend(1e-2 * lengths[f]);
+                  // A margin, so that touching boxes of flat faces meet.
+                  constexpr double master_box_margin = 1e-2;
+                  BoundingBox<dim> box               = face_box<dim>(lines[f]);
+                  box.extend(master_box_margin * lengths[f]);
                   master_boxes.emplace_back(box, f);
                 }
             const auto tree = pack_rtree(master_boxes);
@@ -560,7 +562,8 @@ namespace contact_fem
           const Tensor<1, 2> t    = face.tangent(xi);
           const double       step = ((x - face.point(xi)) * t) / t.norm_square();
           const double       next = std::clamp(xi + step, -1., 1.);
-          const bool         done = std::abs(next - xi) < 1e-12;
+          constexpr double   parameter_tolerance = 1e-12;
+          const bool         done = std::abs(next - xi) < parameter_tolerance;
           xi                      = next;
           if (done)
             break;

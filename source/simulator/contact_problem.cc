@@ -241,7 +241,7 @@ namespace contact_fem
         if (cell->is_artificial() || cell->material_id() != point.material_id)
           continue;
         for (const auto v : cell->vertex_indices())
-          if (cell->vertex(v).distance(location) < 1e-8 * cell->diameter())
+          if (cell->vertex(v).distance(location) < vertex_match_tolerance * cell->diameter())
             {
               for (unsigned int d = 0; d < dim; ++d)
                 dofs.push_back(cell->vertex_dof_index(v, d));
@@ -514,7 +514,7 @@ namespace contact_fem
     // direct solver fail: check that the solution solves it. Singular
     // systems leave O(1) residuals that refinement does not reduce.
     AssertThrow(std::isfinite(linear_residual) &&
-                  linear_residual <= 1e-3 * system_rhs.l2_norm() + 1e-300,
+                  linear_residual <= singular_residual_ratio * system_rhs.l2_norm() + 1e-300,
                 ExcMessage("the linear system is singular (relative residual " +
                            scientific(linear_residual / system_rhs.l2_norm()) +
                            " after the direct solve)"));

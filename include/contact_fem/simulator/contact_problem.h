@@ -463,6 +463,11 @@ namespace contact_fem
     std::vector<double>                    step_start_displacement;
     /// The search reaches this many times the motion it is sized for.
     static constexpr double                search_growth = 1.5;
+    /// A point names a vertex closer than this times the cell's diameter.
+    static constexpr double                vertex_match_tolerance = 1e-8;
+    /// A direct solve whose residual exceeds this fraction of the
+    /// right-hand side has met a singular matrix.
+    static constexpr double                singular_residual_ratio = 1e-3;
     /// Wider searches for an unpaired penetrating node before giving up.
     static constexpr unsigned int          max_searches_after_check = 3;
     /// Small sliding: the normal turns by less than this (radians) along

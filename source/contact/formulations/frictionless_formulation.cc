@@ -223,7 +223,9 @@ namespace contact_fem
         const auto add_term = [&](const typename ContactInterface<dim>::Node &node,
                                   const unsigned int                          d,
                                   const double                                coefficient) {
-          if (std::abs(coefficient) < 1e-14)
+          // Entries at round-off of the unit normal carry no coupling.
+          constexpr double negligible = 1e-14;
+          if (std::abs(coefficient) < negligible)
             return;
           if (node.fixed[d])
             inhomogeneity += coefficient * fixed_values[interface.position(node.dofs[d])];
