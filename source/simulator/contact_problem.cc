@@ -604,7 +604,9 @@ namespace contact_fem
     });
     interface_displacement  = interface->gather(solution);
     step_start_displacement = interface_displacement;
-    search_configuration =
+    // The configuration the operators are built on: zero with small
+    // kinematics, the step's start with updated.
+    const std::vector<double> search_configuration =
       contact_parameters.updated_kinematics ?
         interface_displacement :
         std::vector<double>(interface_displacement.size(), 0.);
@@ -667,8 +669,10 @@ namespace contact_fem
           << std::endl;
     {
       TimerOutput::Scope t(*timer, "Contact: search");
-      interface->update(search_configuration, contact_parameters.search_factor,
-                        motion_allowance);
+      // The same configuration as the step's search (a copy: update()
+      // replaces the interface's own).
+      const std::vector<double> configuration = interface->search_configuration();
+      interface->update(configuration, contact_parameters.search_factor, motion_allowance);
       contact->start_load_step(*interface, interface_displacement, false);
     }
     make_sparsity_pattern();

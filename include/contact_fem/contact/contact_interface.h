@@ -148,6 +148,13 @@ namespace contact_fem
     std::vector<double>
     relative_motion(const std::vector<double> &from, const std::vector<double> &to) const;
 
+    /// The interface displacement the last search was made on.
+    const std::vector<double> &
+    search_configuration() const
+    {
+      return search_displacement;
+    }
+
     /// relative_motion() since the configuration of the last search.
     std::vector<double>
     motion_since_search(const std::vector<double> &u) const

@@ -456,9 +456,6 @@ namespace contact_fem
     std::vector<double>                    interface_fixed_values;
     std::vector<double>                    interface_residual;
     std::vector<bool>                      interface_dof_fixed;
-    /// Interface displacement of the configuration the operators are built
-    /// on: zero with small kinematics, the step's start with updated.
-    std::vector<double>                    search_configuration;
     /// Interface displacement at the start of the current load step.
     std::vector<double>                    step_start_displacement;
     /// The search reaches this many times the motion it is sized for.
