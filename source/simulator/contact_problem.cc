@@ -470,6 +470,16 @@ namespace contact_fem
     constraints.merge(dirichlet_constraints,
                       AffineConstraints<double>::left_object_wins, true);
     constraints.close();
+    if (contact && !contact->symmetric())
+      {
+        test_constraints.clear();
+        test_constraints.reinit(writable_dofs);
+        DoFTools::make_hanging_node_constraints(dof_handler, test_constraints);
+        contact->add_test_constraints(*interface, interface_fixed_values, test_constraints);
+        test_constraints.merge(dirichlet_constraints,
+                               AffineConstraints<double>::left_object_wins, true);
+        test_constraints.close();
+      }
   }
 
   template <int dim>
@@ -481,6 +491,7 @@ namespace contact_fem
     system_rhs    = 0.;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     const Vector<double>                 no_load(fe.n_dofs_per_cell());
+    const bool symmetric = !contact || contact->symmetric();
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -488,13 +499,43 @@ namespace contact_fem
           const unsigned int index = cell->active_cell_index();
           const Vector<double> &load =
             cell_loads[index].size() > 0 ? cell_loads[index] : no_load;
-          constraints.distribute_local_to_global(cell_matrices[index], load, dofs,
-                                                 system_matrix, system_rhs);
+          if (symmetric)
+            constraints.distribute_local_to_global(cell_matrices[index], load, dofs,
+                                                   system_matrix, system_rhs);
+          else
+            distribute_unsymmetric(cell_matrices[index], load, dofs);
         }
     if (contact)
-      contact->assemble(*interface, constraints, owned_dofs, system_matrix, system_rhs);
+      contact->assemble(*interface, symmetric ? constraints : test_constraints, owned_dofs,
+                        system_matrix, system_rhs);
     system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::distribute_unsymmetric(const FullMatrix<double>                   &K,
+                                              const Vector<double>                       &load,
+                                              const std::vector<types::global_dof_index> &dofs)
+  {
+    // P (K (C u~ + b) - f) = 0 with the trial constraints u = C u~ + b and
+    // the test constraints P: the rows follow the test space, the columns
+    // the trial space, and the inhomogeneity b moves to the right-hand side.
+    const unsigned int n = dofs.size();
+    Vector<double>     b(n), rhs(load);
+    for (unsigned int i = 0; i < n; ++i)
+      if (constraints.is_constrained(dofs[i]))
+        b(i) = constraints.get_inhomogeneity(dofs[i]);
+    b *= -1.;
+    K.vmult_add(rhs, b);
+    test_constraints.distribute_local_to_global(K, dofs, constraints, dofs, system_matrix);
+    test_constraints.distribute_local_to_global(rhs, dofs, system_rhs);
+    // The two-space form leaves the eliminated rows empty: a diagonal entry
+    // of the bulk's scale keeps the matrix regular (the value is overwritten
+    // by distribute()). Both spaces eliminate the same DoFs.
+    for (unsigned int i = 0; i < n; ++i)
+      if (constraints.is_constrained(dofs[i]))
+        system_matrix.add(dofs[i], dofs[i], std::abs(K(i, i)));
   }
 
   template <int dim>
@@ -877,8 +918,9 @@ namespace contact_fem
   {
     Timer step_timer;
     prepare_load_step(time, step_size, first_step);
+    const bool frictional = contact && contact->frictional();
     pcout << "  Load step " << step + 1 << ", t = " << time << std::endl
-          << NewtonMonitor::header() << std::endl;
+          << NewtonMonitor::header(frictional) << std::endl;
     const std::string where =
       "load step " + std::to_string(step + 1) + " (t = " + std::to_string(time) + ")";
 
@@ -889,6 +931,9 @@ namespace contact_fem
     // iteration it and the active set is updated.
     NewtonMonitor             monitor(newton_parameters);
     NewtonMonitor::Assessment assessment;
+    // The contact sets after each iteration: a set that comes back after
+    // changes means the iteration cycles and would never settle.
+    std::vector<std::vector<int>> sets_of_iteration;
     unsigned int              iteration = 0, searches_after_check = 0;
     for (; iteration <= newton_parameters.max_iterations; ++iteration)
       {
@@ -910,9 +955,18 @@ namespace contact_fem
                               "least one active contact node?");
         assessment =
           monitor.assess(iteration, r_u, r_lambda, update.changes, update.searched_again);
+        NewtonMonitor::FrictionCounts friction;
+        if (frictional)
+          {
+            friction.n_stick = contact->n_stick();
+            friction.n_slip  = contact->n_active() - friction.n_stick;
+            friction.changes = contact->stick_slip_changes();
+          }
         pcout << monitor.row(iteration, update.changes, contact ? contact->n_active() : 0u,
-                             assessment)
+                             assessment, frictional ? &friction : nullptr)
               << std::endl;
+        if (frictional)
+          check_for_cycling(at, iteration, update.changes, sets_of_iteration);
         if (assessment.converged && contact &&
             !accept_contact_state(step, time, step_size, searches_after_check))
           {
@@ -940,6 +994,36 @@ namespace contact_fem
       .set("converged", assessment.converged)
       .set("active_slave_nodes", contact ? contact->n_active() : 0u)
       .set("wall_time", step_timer.wall_time());
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::check_for_cycling(const std::string             &at,
+                                         const unsigned int             iteration,
+                                         const unsigned int             changes,
+                                         std::vector<std::vector<int>> &sets_of_iteration) const
+  {
+    sets_of_iteration.push_back(contact->contact_sets());
+    if (changes == 0 || iteration < 2)
+      return;
+    for (unsigned int k = 0; k + 1 < iteration; ++k)
+      if (sets_of_iteration[k] == sets_of_iteration.back())
+        {
+          unsigned int differing = 0;
+          for (unsigned int n = 0; n < sets_of_iteration.back().size(); ++n)
+            differing += sets_of_iteration[iteration - 1][n] != sets_of_iteration.back()[n];
+          throw NewtonFailure(at + ": the stick/slip set cycles: iteration " +
+                                std::to_string(iteration) + " brings back the contact sets "
+                                "of iteration " + std::to_string(k) + " (period " +
+                                std::to_string(iteration - k) + ", " +
+                                std::to_string(differing) + " node(s) switching), so the "
+                                "semi-smooth Newton iteration cannot settle. Smaller load "
+                                "steps usually break the cycle (the step is split); if "
+                                "not, the friction law is at its limit on this mesh "
+                                "(try Contact/Pure slip = true where the scene slips "
+                                "everywhere).",
+                              true);
+        }
   }
 
   template <int dim>
@@ -1387,6 +1471,8 @@ namespace contact_fem
     singular_solves  = 0;
     most_null_pivots = 0;
     setup_dofs();
+    if (transferred_solution && resolves_load_path())
+      transferred_solution.reset();
     if (transferred_solution)
       {
         solution = *transferred_solution;
@@ -1426,11 +1512,15 @@ namespace contact_fem
   ContactProblem<dim>::step_the_load(const unsigned int cycle, Json &cycle_record)
   {
     // The first cycle steps the load; later cycles start from the
-    // transferred solution at the end time. A step whose Newton iteration
-    // fails is split and retried from the last converged state.
-    const unsigned int n_steps = cycle == 0 ? load_stepping.n_steps : 1;
+    // transferred solution at the end time, except with friction, whose
+    // answer depends on the load path: then every mesh re-solves the whole
+    // path from the unloaded state (start_cycle() did not transfer). A step
+    // whose Newton iteration fails is split and retried from the last
+    // converged state.
+    const bool         whole_path = cycle == 0 || resolves_load_path();
+    const unsigned int n_steps    = whole_path ? load_stepping.n_steps : 1;
     LoadStepControl    control(load_stepping,
-                            cycle == 0 ? 0. :
+                            whole_path ? 0. :
                                          load_stepping.end_time * (n_steps - 1) / n_steps,
                             n_steps);
     LoadPath           path;
@@ -1482,6 +1572,8 @@ namespace contact_fem
           }
         steps.push(step_record);
         ++path.n_solved;
+        if (contact)
+          contact->accept_load_step(*interface, interface_displacement);
         if (control.accept())
           pcout << "  Growing the step to " << control.step_size() << std::endl;
         saved_solution = solution;

@@ -95,24 +95,31 @@ namespace contact_fem
   }
 
   std::string
-  NewtonMonitor::header()
+  NewtonMonitor::header(const bool frictional)
   {
-    return "    | it | disp. ratio | disp. abs | mult. ratio | mult. abs | changes | active |";
+    return std::string(
+             "    | it | disp. ratio | disp. abs | mult. ratio | mult. abs | changes | active |") +
+           (frictional ? " stick |  slip | s/s ch. |" : "");
   }
 
   std::string
   NewtonMonitor::row(const unsigned int iteration,
                      const unsigned int changes,
                      const unsigned int n_active,
-                     const Assessment  &a) const
+                     const Assessment  &a,
+                     const FrictionCounts *friction) const
   {
     std::ostringstream s;
     s << "    | " << std::setw(2) << iteration << " | "
       << cells(a.ratio_u, last_u, parameters.displacement_absolute_tolerance) << " | "
       << cells(a.ratio_lambda, last_lambda, parameters.multiplier_absolute_tolerance) << " | "
       << std::setw(7) << (iteration == 0 ? std::string("-") : std::to_string(changes)) << " | "
-      << std::setw(6) << n_active << " |"
-      << (a.converged ?
+      << std::setw(6) << n_active << " |";
+    if (friction)
+      s << " " << std::setw(5) << friction->n_stick << " | " << std::setw(5) << friction->n_slip
+        << " | " << std::setw(7)
+        << (iteration == 0 ? std::string("-") : std::to_string(friction->changes)) << " |";
+    s << (a.converged ?
             (a.residuals_small ? " converged" : " converged to linear-solver accuracy") :
             "");
     return s.str();

@@ -252,6 +252,30 @@ namespace contact_fem
     precision_hint() const;
     void
     assemble_system();
+    /// Records the contact sets after @p iteration and throws a
+    /// NewtonFailure (splittable) when they repeat those of an earlier
+    /// iteration although they changed: the iteration cycles.
+    void
+    check_for_cycling(const std::string             &at,
+                      const unsigned int             iteration,
+                      const unsigned int             changes,
+                      std::vector<std::vector<int>> &sets_of_iteration) const;
+
+    /// Whether every cycle solves the whole load path from the unloaded
+    /// state: with friction, whose answer depends on the path.
+    bool
+    resolves_load_path() const
+    {
+      return contact && contact->frictional();
+    }
+
+    /// Adds a cell's matrix and load when the test space differs from the
+    /// trial space (rows by test_constraints, columns by constraints).
+    void
+    distribute_unsymmetric(const FullMatrix<double>                   &K,
+                           const Vector<double>                       &load,
+                           const std::vector<types::global_dof_index> &dofs);
+
     void
     solve_linear_system();
     void
@@ -436,6 +460,9 @@ namespace contact_fem
     /// vertex_dofs()).
     std::vector<std::vector<types::global_dof_index>> probe_dofs;
     AffineConstraints<double> constraints;
+    /// The constraints of the test space when the contact formulation's
+    /// is not the trial space (Coulomb slip); else unused.
+    AffineConstraints<double> test_constraints;
 
     TrilinosWrappers::SparseMatrix system_matrix;
     std::unique_ptr<LinearSolver>  linear_solver; ///< after the matrix it refers to

@@ -45,16 +45,25 @@ namespace contact_fem
            const unsigned int changes,
            const bool         searched_again);
 
-    /// The header of the table.
+    /// The header of the table; with @p frictional also the stick and
+    /// slip counts and the stick/slip changes (part of all changes).
     static std::string
-    header();
+    header(const bool frictional = false);
 
-    /// The row of @p iteration for the last assess().
+    /// The friction cells of a row.
+    struct FrictionCounts
+    {
+      unsigned int n_stick = 0, n_slip = 0, changes = 0;
+    };
+
+    /// The row of @p iteration for the last assess(); with @p friction
+    /// (frictional formulations) its cells too.
     std::string
-    row(const unsigned int  iteration,
-        const unsigned int  changes,
-        const unsigned int  n_active,
-        const Assessment   &assessment) const;
+    row(const unsigned int     iteration,
+        const unsigned int     changes,
+        const unsigned int     n_active,
+        const Assessment      &assessment,
+        const FrictionCounts *friction = nullptr) const;
 
     /// "(last: |r_u| ..., |r_lambda| ..., N active-set changes)" for a
     /// failure message.

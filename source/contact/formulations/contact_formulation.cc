@@ -1,6 +1,10 @@
+#include <contact_fem/contact/formulations/alm_frictional.h>
 #include <contact_fem/contact/formulations/alm_frictionless.h>
 #include <contact_fem/contact/formulations/contact_formulation.h>
 #include <contact_fem/contact/formulations/penalty_frictionless.h>
+#include <contact_fem/contact/friction/frictional_law.h>
+
+#include <deal.II/base/utilities.h>
 
 namespace contact_fem
 {
@@ -29,6 +33,11 @@ namespace contact_fem
                PenaltyFrictionless<dim>::declare_parameters,
                [](ParameterHandler &prm) {
                  return std::make_unique<PenaltyFrictionless<dim>>(prm);
+               }},
+              {"alm frictional",
+               [](ParameterHandler &) {},
+               [](ParameterHandler &prm) {
+                 return std::make_unique<AlmFrictional<dim>>(prm);
                }}};
     }
   } // namespace
@@ -76,6 +85,30 @@ namespace contact_fem
   }
 
   template <int dim>
+  std::vector<int>
+  ContactFormulation<dim>::contact_sets() const
+  {
+    return {};
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  ContactFormulation<dim>::tangent(const Tensor<1, dim> &normal)
+  {
+    Tensor<1, dim> t;
+    if constexpr (dim == 2)
+      {
+        t[0] = -normal[1];
+        t[1] = normal[0];
+        if (t[0] < 0. || (t[0] == 0. && t[1] < 0.))
+          t *= -1.;
+      }
+    else
+      AssertThrow(false, ExcMessage("the contact tangent is only defined in 2D"));
+    return t;
+  }
+
+  template <int dim>
   void
   ContactFormulation<dim>::declare_parameters(ParameterHandler &prm)
   {
@@ -88,9 +121,13 @@ namespace contact_fem
                       "semi-smooth Newton: the gap of an active node is an exact "
                       "constraint. 'penalty frictionless' = the same mortar gap, "
                       "regularised: pressure = eps * penetration, so the bodies "
-                      "overlap by pressure / eps (no multipliers, no constraints).");
+                      "overlap by pressure / eps (no multipliers, no constraints). "
+                      "'alm frictional' = 'alm frictionless' plus the tangential "
+                      "traction of the law of Contact/Friction (Coulomb or Tresca), "
+                      "stick/slip semi-smooth Newton, 2D, small sliding.");
     prm.leave_subsection();
     FrictionlessFormulation<dim>::Parameters::declare_parameters(prm);
+    FrictionParameters::declare_parameters(prm);
     for (const auto &entry : registry<dim>())
       entry.declare(prm);
   }
@@ -104,7 +141,18 @@ namespace contact_fem
     prm.leave_subsection();
     for (const auto &entry : registry<dim>())
       if (entry.name == name)
-        return entry.create(prm);
+        {
+          auto formulation = entry.create(prm);
+          // A law the formulation would ignore is a mistake worth a message.
+          prm.enter_subsection("Contact");
+          const bool friction_given = !Utilities::trim(prm.get("Friction")).empty();
+          prm.leave_subsection();
+          AssertThrow(formulation->frictional() || !friction_given,
+                      ExcMessage("Contact/Friction is set, but Contact/Formulation = " + name +
+                                 " has no friction: use a frictional formulation (" +
+                                 "alm frictional), or leave Contact/Friction empty."));
+          return formulation;
+        }
     AssertThrow(false, ExcMessage("Contact/Formulation: unknown formulation '" + name + "'."));
     return nullptr;
   }

@@ -199,11 +199,12 @@ namespace contact_fem
   FrictionlessFormulation<dim>::add_gap_constraints(const ContactInterface<dim> &interface,
                                                     const std::vector<double>   &fixed_values,
                                                     AffineConstraints<double>   &constraints,
-                                                    const bool only_active) const
+                                                    const bool only_active,
+    const std::function<bool(const typename ContactInterface<dim>::SlaveNode &)> &skip) const
   {
     for (const auto &s : interface.slave_nodes)
       {
-        if (!s.paired || (only_active && !active[s.node]))
+        if (!s.paired || (only_active && !active[s.node]) || (skip && skip(s)))
           continue;
         const unsigned int c = eliminated_component(interface, s);
         if (c == dim)

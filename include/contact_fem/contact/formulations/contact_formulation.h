@@ -138,6 +138,84 @@ namespace contact_fem
     std::vector<double>
     pressures(const ContactInterface<dim> &interface) const;
 
+    /// Whether the formulation has friction: tangential multipliers,
+    /// stick/slip sets and an answer that depends on the load path (the
+    /// driver then re-solves the whole path on every mesh).
+    virtual bool
+    frictional() const
+    {
+      return false;
+    }
+
+    /// Whether interface node @p n is active and sticks (frictional only).
+    virtual bool
+    sticks(const unsigned int) const
+    {
+      return false;
+    }
+
+    /// The weighted tangential slip of slave node @p s at @p u since the
+    /// last accepted load step, along tangent(s.normal) (frictional only).
+    virtual double
+    slip_increment(const ContactInterface<dim> &,
+                   const typename ContactInterface<dim>::SlaveNode &,
+                   const std::vector<double> &) const
+    {
+      return 0.;
+    }
+
+    /// Number of active nodes that stick, and the stick/slip changes of
+    /// the last update_active_set() (part of the changes it returned).
+    virtual unsigned int
+    n_stick() const
+    {
+      return 0;
+    }
+
+    virtual unsigned int
+    stick_slip_changes() const
+    {
+      return 0;
+    }
+
+    /// The contact sets of every interface node as one code each (for the
+    /// detection of a cycling iteration): by default the active set.
+    virtual std::vector<int>
+    contact_sets() const;
+
+    /// A load step converged at interface displacement @p u: the history
+    /// (slip reference) moves on. Default: nothing.
+    virtual void
+    accept_load_step(const ContactInterface<dim> &, const std::vector<double> &)
+    {}
+
+    /// Whether the constrained system is tested with the trial space
+    /// (C^T K C). A Coulomb slip node is not: its test functions follow the
+    /// friction cone (add_test_constraints()), and the system matrix is
+    /// unsymmetric.
+    virtual bool
+    symmetric() const
+    {
+      return true;
+    }
+
+    /// The constraints of the test space when !symmetric(): the same DoFs
+    /// as add_constraints() constrains, other coefficients. Default: those
+    /// of add_constraints().
+    virtual void
+    add_test_constraints(const ContactInterface<dim> &interface,
+                         const std::vector<double>   &fixed_values,
+                         AffineConstraints<double>   &constraints) const
+    {
+      add_constraints(interface, fixed_values, constraints, false);
+    }
+
+    /// The unit tangent of the 2D contact kinematics at a node with unit
+    /// normal @p normal: the normal turned by 90 degrees, oriented so that
+    /// its x component is positive (or its y component, if x vanishes).
+    static Tensor<1, dim>
+    tangent(const Tensor<1, dim> &normal);
+
     virtual std::unique_ptr<State>
     save_state() const = 0;
 

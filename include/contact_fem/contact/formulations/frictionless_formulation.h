@@ -115,12 +115,16 @@ namespace contact_fem
                          const typename ContactInterface<dim>::SlaveNode &s) const;
 
     /// Adds g_j(u) = 0, solved for the eliminated component of node j, for
-    /// every paired node (only the active ones with @p only_active).
+    /// every paired node (only the active ones with @p only_active), except
+    /// those @p skip selects.
     void
-    add_gap_constraints(const ContactInterface<dim> &interface,
-                        const std::vector<double>   &fixed_values,
-                        AffineConstraints<double>   &constraints,
-                        const bool                   only_active) const;
+    add_gap_constraints(
+      const ContactInterface<dim> &interface,
+      const std::vector<double>   &fixed_values,
+      AffineConstraints<double>   &constraints,
+      const bool                   only_active,
+      const std::function<bool(const typename ContactInterface<dim>::SlaveNode &)> &skip =
+        {}) const;
 
     /// The contact forces of the current pressures at the interface DoFs.
     std::vector<double>

@@ -1,0 +1,218 @@
+// Frictional contact by the augmented Lagrangian: exact normal and stick
+// constraints, Coulomb or Tresca slip through the test space (semi-smooth
+// Newton on the stick/slip complementarity, dual mortar, 2D).
+#ifndef contact_fem_alm_frictional_h
+#define contact_fem_alm_frictional_h
+
+#include <contact_fem/contact/formulations/frictionless_formulation.h>
+#include <contact_fem/contact/friction/frictional_law.h>
+
+namespace contact_fem
+{
+  /**
+   * "alm frictional": the contact traction of slave node j is the vector
+   * lambda_j = -p_j n_j + t_j tau_j (on the slave), whose force is D_j
+   * lambda_j on the slave node and -M_jl lambda_j on master node l. The
+   * normal part is that of "alm frictionless" (the base class). The
+   * tangential part follows the frictional law of the pair (slip bound
+   * T(p)) through the complementarity of Hueber and Wohlmuth:
+   *
+   *   trial traction t*_j = t_j - c xi_j, with xi_j the weighted slip of the
+   *   slave relative to the master since the last converged load step,
+   *   stick  if |t*_j| < T(p_j - eps g_j):  xi_j = 0,
+   *   slip   otherwise:                     t_j = sigma_j T(p_j),
+   *                                         sigma_j = sign(t*_j),
+   *
+   * c = eps, the pair's penalty (E/h). Like the gap, each condition is
+   * linear in the displacements once the sets and slip signs are fixed, so
+   * every iteration is one linear solve:
+   * - a stick node satisfies g_j = 0 and xi_j = 0: both components of its
+   *   displacement are constrained to the masters (u_j = sum_l M_jl/D_j u_l
+   *   + the slip and gap offsets);
+   * - a slip node satisfies g_j = 0 (one component constrained, as
+   *   frictionless) and the slip condition, linearised in p consistently:
+   *   (tau + sigma T'(p) n) . lambda_j = sigma (T(p) - T'(p) p). Its test
+   *   functions move along w = tau + sigma T' n instead of tau, and the
+   *   known part sigma (T - T' p) tau of its traction is a load. With
+   *   Coulomb (T' = mu > 0) the system is then unsymmetric (symmetric()).
+   * lambda_j is recovered from the residual of the slave node, r_j = D_j
+   * lambda_j. In 2D the slip direction is a sign, so its linearisation
+   * vanishes.
+   *
+   * Nodes with a Dirichlet component carry no tangential condition (the
+   * support holds them tangentially): they are treated as frictionless.
+   * The slip is measured from the last accepted load step with the current
+   * operators (small sliding): a load step is a physical increment.
+   */
+  template <int dim>
+  class AlmFrictional : public FrictionlessFormulation<dim>
+  {
+  public:
+    using typename FrictionlessFormulation<dim>::Residuals;
+    using typename FrictionlessFormulation<dim>::State;
+    using SlaveNode = typename ContactInterface<dim>::SlaveNode;
+
+    /// Reads the shared normal keys, Contact/Friction and Pure slip.
+    explicit AlmFrictional(ParameterHandler &prm);
+
+    void
+    initialize(const ContactInterface<dim> &interface) override;
+
+    void
+    start_load_step(const ContactInterface<dim> &interface,
+                    const std::vector<double>   &u,
+                    const bool                   first_step) override;
+
+    void
+    add_constraints(const ContactInterface<dim> &interface,
+                    const std::vector<double>   &fixed_values,
+                    AffineConstraints<double>   &constraints,
+                    const bool                   all_candidates) const override;
+
+    void
+    add_test_constraints(const ContactInterface<dim> &interface,
+                         const std::vector<double>   &fixed_values,
+                         AffineConstraints<double>   &constraints) const override;
+
+    /// The known traction sigma (T - T' p) tau of the slip nodes (Tresca's
+    /// bound) as a load.
+    void
+    assemble(const ContactInterface<dim>    &interface,
+             const AffineConstraints<double> &constraints,
+             const IndexSet                  &owned,
+             TrilinosWrappers::SparseMatrix  &matrix,
+             TrilinosWrappers::MPI::Vector   &rhs) const override;
+
+    void
+    recover_multipliers(const ContactInterface<dim> &interface,
+                        const std::vector<double>   &residual) override;
+
+    unsigned int
+    update_active_set(const ContactInterface<dim> &interface,
+                      const std::vector<double>   &u) override;
+
+    /// |(g_A, lambda_I / k, xi_stick, (t - sigma T) / k of the slip
+    /// nodes)|, a length.
+    Residuals
+    residuals(const ContactInterface<dim> &interface,
+              const std::vector<double>   &u) const override;
+
+    Tensor<1, dim>
+    traction(const SlaveNode &s) const override
+    {
+      return -this->pressure[s.node] * s.normal +
+             tangential[s.node] * ContactFormulation<dim>::tangent(s.normal);
+    }
+
+    bool
+    frictional() const override
+    {
+      return true;
+    }
+
+    bool
+    sticks(const unsigned int n) const override
+    {
+      return this->active[n] && slip_sign[n] == 0;
+    }
+
+    double
+    slip_increment(const ContactInterface<dim> &interface,
+                   const SlaveNode             &s,
+                   const std::vector<double>   &u) const override;
+
+    unsigned int
+    n_stick() const override;
+
+    unsigned int
+    stick_slip_changes() const override
+    {
+      return last_stick_slip_changes;
+    }
+
+    std::vector<int>
+    contact_sets() const override;
+
+    void
+    accept_load_step(const ContactInterface<dim> &interface,
+                     const std::vector<double>   &u) override;
+
+    bool
+    symmetric() const override;
+
+    std::unique_ptr<State>
+    save_state() const override;
+
+    void
+    restore_state(const State &state) override;
+
+    void
+    add_results(const ContactInterface<dim> &interface, Json &contact) const override;
+
+  private:
+    /// Whether slave node @p s carries a tangential condition: paired and
+    /// no Dirichlet component.
+    bool
+    has_friction(const ContactInterface<dim> &interface, const SlaveNode &s) const;
+
+    /// The direction w = tau + sigma T'(p) n of the slip condition
+    /// w . lambda = sigma (T - T' p) of slip node @p s.
+    Tensor<1, dim>
+    slip_direction(const SlaveNode &s) const;
+
+    /// The component a slip node eliminates: both the gap (normal part) and
+    /// the test line (w part of the other component) must be well posed.
+    unsigned int
+    slip_eliminated_component(const SlaveNode &s) const;
+
+    /// The stick/slip decision of an active frictional node: 0 = stick,
+    /// +1 / -1 = slip with that sign of the trial traction.
+    int
+    stick_or_slip(const SlaveNode &s, const double augmented_pressure, const double xi) const;
+
+    /// Whether the law of node @p s has no friction at all (mu = 0, bound 0):
+    /// its slip sign then changes nothing.
+    bool
+    frictionless_law(const SlaveNode &s) const
+    {
+      return laws[s.pair]->threshold(1.) == 0. && laws[s.pair]->threshold_derivative(1.) == 0.;
+    }
+
+    /// u_j = sum_l M_jl / D_j u_l + offsets: the gap and the stick condition
+    /// of node @p s, both components.
+    void
+    add_stick_constraint(const ContactInterface<dim> &interface,
+                         const SlaveNode             &s,
+                         const std::vector<double>   &fixed_values,
+                         AffineConstraints<double>   &constraints) const;
+
+    /// g_j = 0 solved for component @p c (trial), or the test line of a slip
+    /// node (@p test).
+    void
+    add_slip_constraint(const ContactInterface<dim> &interface,
+                        const SlaveNode             &s,
+                        const std::vector<double>   &fixed_values,
+                        AffineConstraints<double>   &constraints,
+                        const bool                   test) const;
+
+    std::vector<std::shared_ptr<const FrictionalLaw>> laws; ///< per pair
+    bool pure_slip = false;
+
+    std::vector<double> tangential; ///< t_j per interface node
+    std::vector<int>    slip_sign;  ///< 0 stick, +-1 slip (active nodes)
+    /// Interface displacement of the last accepted load step.
+    std::vector<double> converged_displacement;
+    /// Multipliers of the nodes released in the last update.
+    std::vector<double> released_pressure, released_tangential;
+    unsigned int        last_stick_slip_changes = 0;
+
+    struct FrictionState : public State
+    {
+      std::unique_ptr<State> normal;
+      std::vector<double>    tangential, converged_displacement;
+      std::vector<int>       slip_sign;
+    };
+  };
+} // namespace contact_fem
+
+#endif

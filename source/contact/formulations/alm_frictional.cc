@@ -1,0 +1,597 @@
+#include <deal.II/lac/vector.h>
+
+#include <contact_fem/contact/formulations/alm_frictional.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace contact_fem
+{
+  namespace
+  {
+    template <int dim>
+    typename FrictionlessFormulation<dim>::Parameters
+    read_normal_parameters(ParameterHandler &prm)
+    {
+      typename FrictionlessFormulation<dim>::Parameters parameters;
+      parameters.parse_parameters(prm);
+      prm.enter_subsection("Contact");
+      const bool adaptive = prm.get_bool("Adaptive penalty");
+      prm.leave_subsection();
+      AssertThrow(!adaptive,
+                  ExcMessage("Contact/Adaptive penalty = true needs a penalty formulation: "
+                             "in 'alm frictional' the gap of an active node is an exact "
+                             "constraint and the penalty only scales the set tests."));
+      return parameters;
+    }
+
+    /// One affine line u_dof = sum coefficient * u + inhomogeneity, built
+    /// term by term: a Dirichlet DoF moves its value into the inhomogeneity
+    /// (trial space) or drops out (test space, where it vanishes).
+    struct ConstraintLine
+    {
+      std::vector<std::pair<types::global_dof_index, double>> entries;
+      double                                                  inhomogeneity = 0.;
+
+      template <int dim>
+      void
+      add(const typename ContactInterface<dim>::Node &node,
+          const unsigned int                          d,
+          const double                                coefficient,
+          const ContactInterface<dim>                &interface,
+          const std::vector<double>                  &fixed_values,
+          const bool                                  test)
+      {
+        // Entries at round-off of the unit normal carry no coupling.
+        constexpr double negligible = 1e-14;
+        if (std::abs(coefficient) < negligible)
+          return;
+        if (!node.fixed[d])
+          entries.emplace_back(node.dofs[d], coefficient);
+        else if (!test)
+          inhomogeneity += coefficient * fixed_values[interface.position(node.dofs[d])];
+      }
+
+      void
+      store(const types::global_dof_index dof, AffineConstraints<double> &constraints)
+      {
+        // The same DoF may appear through two master faces: merge entries.
+        std::sort(entries.begin(), entries.end());
+        std::vector<std::pair<types::global_dof_index, double>> merged;
+        for (const auto &e : entries)
+          if (!merged.empty() && merged.back().first == e.first)
+            merged.back().second += e.second;
+          else
+            merged.push_back(e);
+        constraints.add_line(dof);
+        constraints.add_entries(dof, merged);
+        constraints.set_inhomogeneity(dof, inhomogeneity);
+      }
+    };
+  } // namespace
+
+  template <int dim>
+  AlmFrictional<dim>::AlmFrictional(ParameterHandler &prm)
+    : FrictionlessFormulation<dim>(read_normal_parameters<dim>(prm))
+    , laws(FrictionParameters::parse_laws(prm))
+  {
+    AssertThrow(dim == 2,
+                ExcMessage("Contact/Formulation = alm frictional: friction is implemented in "
+                           "2D only."));
+    AssertThrow(!laws.empty(),
+                ExcMessage("Contact/Friction: 'alm frictional' needs a frictional law, e.g. "
+                           "'coulomb 0.2' or 'tresca 0.01' (or per pair '3: coulomb 0.2'); "
+                           "for frictionless contact use Contact/Formulation = alm "
+                           "frictionless."));
+    prm.enter_subsection("Contact");
+    pure_slip = prm.get_bool("Pure slip");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  AlmFrictional<dim>::initialize(const ContactInterface<dim> &interface)
+  {
+    FrictionlessFormulation<dim>::initialize(interface);
+    const unsigned int n = interface.nodes.size();
+    tangential.assign(n, 0.);
+    slip_sign.assign(n, 0);
+    released_pressure.assign(n, 0.);
+    released_tangential.assign(n, 0.);
+    converged_displacement.assign(interface.dofs().size(), 0.);
+    last_stick_slip_changes = 0;
+  }
+
+  template <int dim>
+  bool
+  AlmFrictional<dim>::has_friction(const ContactInterface<dim> &interface,
+                                   const SlaveNode             &s) const
+  {
+    if (!s.paired)
+      return false;
+    for (unsigned int d = 0; d < dim; ++d)
+      if (interface.nodes[s.node].fixed[d])
+        return false;
+    return true;
+  }
+
+  template <int dim>
+  double
+  AlmFrictional<dim>::slip_increment(const ContactInterface<dim> &interface,
+                                     const SlaveNode             &s,
+                                     const std::vector<double>   &u) const
+  {
+    // Slave minus its mortar image on the master, since the last accepted
+    // step: xi_j = tau . (du_j - sum_l M_jl / D_j du_l).
+    Tensor<1, dim> relative =
+      interface.displacement(s.node, u) - interface.displacement(s.node, converged_displacement);
+    for (const auto &[m, value] : s.M)
+      relative -= (value / s.D) * (interface.displacement(m, u) -
+                                   interface.displacement(m, converged_displacement));
+    return relative * ContactFormulation<dim>::tangent(s.normal);
+  }
+
+  template <int dim>
+  int
+  AlmFrictional<dim>::stick_or_slip(const SlaveNode &s,
+                                    const double     augmented_pressure,
+                                    const double     xi) const
+  {
+    const double trial = tangential[s.node] - this->penalty[s.pair] * xi;
+    const int    sign  = trial >= 0. ? 1 : -1;
+    if (pure_slip)
+      return sign;
+    const double bound = laws[s.pair]->threshold(std::max(augmented_pressure, 0.));
+    // A node with neither traction nor slip (it just touched) sticks: its
+    // slip direction is undefined, and any guess would push it sideways.
+    if (trial == 0. && !frictionless_law(s))
+      return 0;
+    return std::abs(trial) < bound ? 0 : sign;
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  AlmFrictional<dim>::slip_direction(const SlaveNode &s) const
+  {
+    const double p = this->pressure[s.node];
+    return ContactFormulation<dim>::tangent(s.normal) +
+           slip_sign[s.node] * laws[s.pair]->threshold_derivative(p) * s.normal;
+  }
+
+  template <int dim>
+  unsigned int
+  AlmFrictional<dim>::slip_eliminated_component(const SlaveNode &s) const
+  {
+    // Component c carries the gap (needs n_c) and the test line divides by
+    // w_d of the other one. |w|^2 = 1 + T'^2, so one choice always has
+    // min(|n_c|, |w_d|) of order one. With w = tau this is the largest
+    // |n_c|, the frictionless choice.
+    const Tensor<1, dim> w          = slip_direction(s);
+    unsigned int         best       = dim;
+    double               best_value = 0.1;
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        const double value = std::min(std::abs(s.normal[c]), std::abs(w[1 - c]));
+        if (value > best_value)
+          {
+            best       = c;
+            best_value = value;
+          }
+      }
+    return best;
+  }
+
+  template <int dim>
+  void
+  AlmFrictional<dim>::start_load_step(const ContactInterface<dim> &interface,
+                                      const std::vector<double>   &u,
+                                      const bool                   first_step)
+  {
+    this->set_pair_scaling(interface, 1.);
+    std::fill(released_pressure.begin(), released_pressure.end(), 0.);
+    std::fill(released_tangential.begin(), released_tangential.end(), 0.);
+    auto &pressure = this->pressure;
+    auto &active   = this->active;
+    for (const auto &s : interface.slave_nodes)
+      {
+        const double g = s.paired ? interface.gap(s, u) : 0.;
+        active[s.node] = s.paired && this->starts_active(s, g, first_step) &&
+                         this->eliminated_component(interface, s) < dim;
+        if (!active[s.node])
+          {
+            released_pressure[s.node]   = pressure[s.node];
+            released_tangential[s.node] = tangential[s.node];
+            pressure[s.node]            = 0.;
+            tangential[s.node]          = 0.;
+            slip_sign[s.node]           = 0;
+            continue;
+          }
+        slip_sign[s.node] =
+          has_friction(interface, s) ?
+            stick_or_slip(s, pressure[s.node] - this->penalty[s.pair] * g,
+                          slip_increment(interface, s, u)) :
+            0;
+      }
+    this->deactivate_master_nodes(interface);
+    for (unsigned int n = 0; n < interface.nodes.size(); ++n)
+      if (!interface.nodes[n].slave)
+        slip_sign[n] = 0;
+  }
+
+  template <int dim>
+  void
+  AlmFrictional<dim>::add_stick_constraint(const ContactInterface<dim> &interface,
+                                           const SlaveNode             &s,
+                                           const std::vector<double>   &fixed_values,
+                                           AffineConstraints<double>   &constraints) const
+  {
+    const auto &slave = interface.nodes[s.node];
+    for (unsigned int d = 0; d < dim; ++d)
+      if (!constraints.can_store_line(slave.dofs[d]) || constraints.is_constrained(slave.dofs[d]))
+        return;
+    // u_j = sum_l M_jl / D_j u_l + n (gap offset) + tau (slip offset): the
+    // normal part closes the gap, the tangential part keeps the relative
+    // position of the last accepted step.
+    const Tensor<1, dim> tau = ContactFormulation<dim>::tangent(s.normal);
+    double               normal_offset = s.curvature_gap / s.D - s.normal * slave.reference;
+    for (const auto &[m, value] : s.M)
+      normal_offset += value * (s.normal * interface.nodes[m].reference) / s.D;
+    Tensor<1, dim> old_relative = interface.displacement(s.node, converged_displacement);
+    for (const auto &[m, value] : s.M)
+      old_relative -= (value / s.D) * interface.displacement(m, converged_displacement);
+    const Tensor<1, dim> offset = normal_offset * s.normal + (old_relative * tau) * tau;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        ConstraintLine line;
+        line.inhomogeneity = offset[d];
+        for (const auto &[m, value] : s.M)
+          line.add(interface.nodes[m], d, value / s.D, interface, fixed_values, false);
+        line.store(slave.dofs[d], constraints);
+      }
+  }
+
+  template <int dim>
+  void
+  AlmFrictional<dim>::add_slip_constraint(const ContactInterface<dim> &interface,
+                                          const SlaveNode             &s,
+                                          const std::vector<double>   &fixed_values,
+                                          AffineConstraints<double>   &constraints,
+                                          const bool                   test) const
+  {
+    const unsigned int c = slip_eliminated_component(s);
+    if (c == dim)
+      return;
+    const unsigned int d     = 1 - c;
+    const auto        &slave = interface.nodes[s.node];
+    if (!constraints.can_store_line(slave.dofs[c]) || constraints.is_constrained(slave.dofs[c]))
+      return;
+    ConstraintLine line;
+    if (!test)
+      {
+        // g_j(u) = 0 solved for u_j,c, as in the frictionless formulation.
+        const double denominator = s.D * s.normal[c];
+        line.inhomogeneity       = s.curvature_gap / denominator - s.normal * slave.reference /
+                                                                  s.normal[c];
+        for (const auto &[m, value] : s.M)
+          {
+            line.inhomogeneity += value * (s.normal * interface.nodes[m].reference) / denominator;
+            for (unsigned int e = 0; e < dim; ++e)
+              line.add(interface.nodes[m], e, value * s.normal[e] / denominator, interface,
+                       fixed_values, false);
+          }
+        line.add(slave, d, -s.normal[d] / s.normal[c], interface, fixed_values, false);
+      }
+    else
+      {
+        // v_j = sum_l M_jl / D_j v_l + alpha w: the slave's own equation is
+        // w . r_j = 0, and the masters take the whole traction.
+        const Tensor<1, dim> w     = slip_direction(s);
+        const double         ratio = w[c] / w[d];
+        line.add(slave, d, ratio, interface, fixed_values, true);
+        for (const auto &[m, value] : s.M)
+          {
+            line.add(interface.nodes[m], c, value / s.D, interface, fixed_values, true);
+            line.add(interface.nodes[m], d, -ratio * value / s.D, interface, fixed_values, true);
+          }
+      }
+    line.store(slave.dofs[c], constraints);
+  }
+
+  template <int dim>
+  void
+  AlmFrictional<dim>::add_constraints(const ContactInterface<dim> &interface,
+                                      const std::vector<double>   &fixed_values,
+                                      AffineConstraints<double>   &constraints,
+                                      const bool                   all_candidates) const
+  {
+    // For the sparsity: the stick lines couple a slave node with every
+    // component of its masters (the gap line drops the components normal
+    // to n), a superset of the slip lines' couplings.
+    if (all_candidates)
+      {
+        for (const auto &s : interface.slave_nodes)
+          if (has_friction(interface, s))
+            add_stick_constraint(interface, s, fixed_values, constraints);
+        this->add_gap_constraints(interface, fixed_values, constraints, false,
+                                  [&](const SlaveNode &s) {
+                                    return has_friction(interface, s);
+                                  });
+        return;
+      }
+    for (const auto &s : interface.slave_nodes)
+      if (s.paired && this->active[s.node])
+        {
+          if (!has_friction(interface, s))
+            continue;
+          if (slip_sign[s.node] == 0)
+            add_stick_constraint(interface, s, fixed_values, constraints);
+          else
+            add_slip_constraint(interface, s, fixed_values, constraints, false);
+        }
+    // The active nodes held by a support: frictionless gap lines.
+    this->add_gap_constraints(interface, fixed_values, constraints, true,
+                              [&](const SlaveNode &s) { return has_friction(interface, s); });
+  }
+
+  template <int dim>
+  void
+  AlmFrictional<dim>::add_test_constraints(const ContactInterface<dim> &interface,
+                                           const std::vector<double>   &fixed_values,
+                                           AffineConstraints<double>   &constraints) const
+  {
+    for (const auto &s : interface.slave_nodes)
+      if (s.paired && this->active[s.node] && has_friction(interface, s))
+        {
+          if (slip_sign[s.node] == 0)
+            add_stick_constraint(interface, s, fixed_values, constraints);
+          else
+            add_slip_constraint(interface, s, fixed_values, constraints, true);
+        }
+    this->add_gap_constraints(interface, fixed_values, constraints, true,
+                              [&](const SlaveNode &s) { return has_friction(interface, s); });
+  }
+
+  template <int dim>
+  bool
+  AlmFrictional<dim>::symmetric() const
+  {
+    for (unsigned int n = 0; n < slip_sign.size(); ++n)
+      if (this->active[n] && slip_sign[n] != 0)
+        return false;
+    return true;
+  }
+
+  template <int dim>
+  void
+  AlmFrictional<dim>::assemble(const ContactInterface<dim> &interface,
+                               const AffineConstraints<double> &constraints,
+                               const IndexSet                  &owned,
+                               TrilinosWrappers::SparseMatrix &,
+                               TrilinosWrappers::MPI::Vector &rhs) const
+  {
+    // K u = f + B^T lambda: the known part h tau of a slip node's traction,
+    // h = sigma (T(p) - T'(p) p), is a load (D_j on the slave, -M_jl on
+    // the masters); the rest is carried by the constraints.
+    std::vector<types::global_dof_index> dofs;
+    Vector<double>                       values;
+    for (const auto &s : interface.slave_nodes)
+      {
+        if (!s.paired || !this->active[s.node] || slip_sign[s.node] == 0 ||
+            !has_friction(interface, s) || !owned.is_element(interface.nodes[s.node].dofs[0]))
+          continue;
+        const double p = this->pressure[s.node];
+        const double h = slip_sign[s.node] * (laws[s.pair]->threshold(p) -
+                                              laws[s.pair]->threshold_derivative(p) * p);
+        if (h == 0.)
+          continue;
+        const Tensor<1, dim> tau = ContactFormulation<dim>::tangent(s.normal);
+        dofs.clear();
+        std::vector<double> force;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            dofs.push_back(interface.nodes[s.node].dofs[d]);
+            force.push_back(s.D * h * tau[d]);
+          }
+        for (const auto &[m, value] : s.M)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              dofs.push_back(interface.nodes[m].dofs[d]);
+              force.push_back(-value * h * tau[d]);
+            }
+        values.reinit(force.size());
+        for (unsigned int i = 0; i < force.size(); ++i)
+          values(i) = force[i];
+        constraints.distribute_local_to_global(values, dofs, rhs);
+      }
+  }
+
+  template <int dim>
+  void
+  AlmFrictional<dim>::recover_multipliers(const ContactInterface<dim> &interface,
+                                          const std::vector<double>   &residual)
+  {
+    for (const auto &s : interface.slave_nodes)
+      {
+        if (!s.paired || !this->active[s.node])
+          {
+            this->pressure[s.node] = 0.;
+            tangential[s.node]     = 0.;
+            continue;
+          }
+        const auto &slave = interface.nodes[s.node];
+        if (!has_friction(interface, s))
+          {
+            // A support carries the tangential force: the pressure from the
+            // eliminated component, as frictionless.
+            const unsigned int c   = this->eliminated_component(interface, s);
+            this->pressure[s.node] = -residual[interface.position(slave.dofs[c])] /
+                                     (s.D * s.normal[c]);
+            tangential[s.node] = 0.;
+            continue;
+          }
+        Tensor<1, dim> lambda;
+        for (unsigned int d = 0; d < dim; ++d)
+          lambda[d] = residual[interface.position(slave.dofs[d])] / s.D;
+        this->pressure[s.node] = -(lambda * s.normal);
+        tangential[s.node]     = lambda * ContactFormulation<dim>::tangent(s.normal);
+      }
+  }
+
+  template <int dim>
+  unsigned int
+  AlmFrictional<dim>::update_active_set(const ContactInterface<dim> &interface,
+                                        const std::vector<double>   &u)
+  {
+    unsigned int changes    = 0;
+    last_stick_slip_changes = 0;
+    std::fill(released_pressure.begin(), released_pressure.end(), 0.);
+    std::fill(released_tangential.begin(), released_tangential.end(), 0.);
+    auto &pressure = this->pressure;
+    auto &active   = this->active;
+    for (const auto &s : interface.slave_nodes)
+      {
+        if (!s.paired)
+          continue;
+        const double augmented  = pressure[s.node] - this->penalty[s.pair] * interface.gap(s, u);
+        const bool   now_active = augmented > 0. && this->eliminated_component(interface, s) < dim;
+        if (now_active != active[s.node])
+          ++changes;
+        if (!now_active)
+          {
+            released_pressure[s.node]   = pressure[s.node];
+            released_tangential[s.node] = tangential[s.node];
+            pressure[s.node]            = 0.;
+            tangential[s.node]          = 0.;
+            slip_sign[s.node]           = 0;
+            active[s.node]              = false;
+            continue;
+          }
+        const int sign = has_friction(interface, s) ?
+                           stick_or_slip(s, augmented, slip_increment(interface, s, u)) :
+                           0;
+        // Under a law without friction the sign changes nothing.
+        if (active[s.node] && sign != slip_sign[s.node] && !frictionless_law(s))
+          {
+            ++changes;
+            ++last_stick_slip_changes;
+          }
+        slip_sign[s.node] = sign;
+        active[s.node]    = true;
+      }
+    return changes;
+  }
+
+  template <int dim>
+  typename AlmFrictional<dim>::Residuals
+  AlmFrictional<dim>::residuals(const ContactInterface<dim> &interface,
+                                const std::vector<double>   &u) const
+  {
+    Residuals           result;
+    double              sum = 0.;
+    std::vector<double> force(interface.dofs().size(), 0.);
+    for (const auto &s : interface.slave_nodes)
+      {
+        if (!s.paired)
+          continue;
+        const double k = this->scale[s.pair];
+        if (!this->active[s.node])
+          {
+            const double rn = released_pressure[s.node] / k;
+            const double rt = released_tangential[s.node] / k;
+            sum += rn * rn + rt * rt;
+            continue;
+          }
+        const double g = interface.gap(s, u);
+        sum += g * g;
+        if (has_friction(interface, s))
+          {
+            const double p  = this->pressure[s.node];
+            const double rt = slip_sign[s.node] == 0 ?
+                                slip_increment(interface, s, u) :
+                                (tangential[s.node] -
+                                 slip_sign[s.node] * laws[s.pair]->threshold(p)) /
+                                  k;
+            sum += rt * rt;
+          }
+        // D_j lambda_j on the slave, -M_jl lambda_j on the masters.
+        const Tensor<1, dim> lambda = traction(s);
+        for (unsigned int d = 0; d < dim; ++d)
+          force[interface.position(interface.nodes[s.node].dofs[d])] += s.D * lambda[d];
+        for (const auto &[m, value] : s.M)
+          for (unsigned int d = 0; d < dim; ++d)
+            force[interface.position(interface.nodes[m].dofs[d])] -= value * lambda[d];
+      }
+    result.multiplier    = std::sqrt(sum);
+    result.contact_force = force;
+    return result;
+  }
+
+  template <int dim>
+  unsigned int
+  AlmFrictional<dim>::n_stick() const
+  {
+    unsigned int n = 0;
+    for (unsigned int i = 0; i < slip_sign.size(); ++i)
+      n += sticks(i);
+    return n;
+  }
+
+  template <int dim>
+  std::vector<int>
+  AlmFrictional<dim>::contact_sets() const
+  {
+    // 0 inactive, 1 stick, 2 / 3 slip with sign + / -.
+    std::vector<int> sets(slip_sign.size(), 0);
+    for (unsigned int n = 0; n < sets.size(); ++n)
+      if (this->active[n])
+        sets[n] = slip_sign[n] == 0 ? 1 : (slip_sign[n] > 0 ? 2 : 3);
+    return sets;
+  }
+
+  template <int dim>
+  void
+  AlmFrictional<dim>::accept_load_step(const ContactInterface<dim> &,
+                                       const std::vector<double> &u)
+  {
+    converged_displacement = u;
+  }
+
+  template <int dim>
+  std::unique_ptr<typename AlmFrictional<dim>::State>
+  AlmFrictional<dim>::save_state() const
+  {
+    auto state                    = std::make_unique<FrictionState>();
+    state->normal                 = FrictionlessFormulation<dim>::save_state();
+    state->tangential             = tangential;
+    state->converged_displacement = converged_displacement;
+    state->slip_sign              = slip_sign;
+    return state;
+  }
+
+  template <int dim>
+  void
+  AlmFrictional<dim>::restore_state(const State &state)
+  {
+    const auto &saved = dynamic_cast<const FrictionState &>(state);
+    FrictionlessFormulation<dim>::restore_state(*saved.normal);
+    tangential             = saved.tangential;
+    converged_displacement = saved.converged_displacement;
+    slip_sign              = saved.slip_sign;
+  }
+
+  template <int dim>
+  void
+  AlmFrictional<dim>::add_results(const ContactInterface<dim> &interface, Json &contact) const
+  {
+    FrictionlessFormulation<dim>::add_results(interface, contact);
+    Json law_names = Json::array();
+    for (const auto &law : laws)
+      law_names.push(law->description());
+    contact.set("friction", law_names)
+      .set("stick_nodes", n_stick())
+      .set("slip_nodes", this->n_active() - n_stick());
+  }
+
+  template class AlmFrictional<2>;
+  template class AlmFrictional<3>;
+} // namespace contact_fem
