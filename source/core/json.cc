@@ -79,6 +79,13 @@ namespace contact_fem
     return null_value;
   }
 
+  const Json &
+  Json::operator[](const std::size_t i) const
+  {
+    static const Json null_value;
+    return type == Type::array && i < items.size() ? items[i] : null_value;
+  }
+
   double
   Json::number_value() const
   {

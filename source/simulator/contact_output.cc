@@ -92,7 +92,12 @@ namespace contact_fem
       Tensor<1, dim> force;
       for (const auto &s : interface.slave_nodes)
         if (s.paired && contact.is_active(s.node))
-          force += contact.normal_pressure(s.node) * s.D * s.normal;
+          {
+            if (contact.frictional())
+              force -= s.D * contact.traction(s);
+            else
+              force += contact.normal_pressure(s.node) * s.D * s.normal;
+          }
       return force;
     }
   } // namespace
@@ -161,6 +166,8 @@ namespace contact_fem
       .set("total_contact_force", total_contact_force(*interface, *contact).norm())
       .set("slave_element_size", n_active > 0 ? size_sum / n_active : 0.);
     contact->add_results(*interface, result);
+    if (contact->frictional())
+      add_friction_results(result);
     result.set("largest_unexplained_penetration_over_h", last_penetration_excess);
     Json slave_split = Json::array(), master_split = Json::array();
     for (const unsigned int n : interface->slave_faces_per_rank)
@@ -169,6 +176,38 @@ namespace contact_fem
       master_split.push(n);
     result.set("slave_faces_per_rank", slave_split).set("master_faces_per_rank", master_split);
     return result;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::add_friction_results(Json &result) const
+  {
+    // Totals over the active slave nodes of the force the slave exerts on
+    // the master, split along each node's own normal and tangent.
+    double         normal = 0., tangential = 0., t_max = 0., slip_max = 0., length = 0.;
+    Tensor<1, dim> force;
+    for (const auto &s : interface->slave_nodes)
+      if (s.paired && contact->is_active(s.node))
+        {
+          const Tensor<1, dim> lambda = contact->traction(s);
+          const double         t      = lambda * ContactFormulation<dim>::tangent(s.normal);
+          normal += s.D * contact->normal_pressure(s.node);
+          tangential += s.D * t;
+          length += s.D;
+          force -= s.D * lambda;
+          t_max    = std::max(t_max, std::abs(t));
+          slip_max = std::max(slip_max, std::abs(contact->accepted_slip(s.node)));
+        }
+    Json components = Json::array();
+    for (unsigned int d = 0; d < dim; ++d)
+      components.push(force[d]);
+    result.set("total_normal_contact_force", normal)
+      .set("total_tangential_contact_force", tangential)
+      .set("tangential_over_normal_force", normal > 0. ? tangential / normal : 0.)
+      .set("contact_force_components", components)
+      .set("active_contact_length", length)
+      .set("max_tangential_traction", t_max)
+      .set("max_slip_increment", slip_max);
   }
 
   template <int dim>
@@ -221,7 +260,18 @@ namespace contact_fem
       1e-10 * youngs_min * solution.linfty_norm() * std::pow(h_max, dim - 2.);
     const double scale = std::max(load.norm(), 0.5 * absolute_sum);
     Json                 result = Json::object();
+    Json load_components = Json::array(), reaction_components = Json::array(),
+         imbalance_components = Json::array();
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        load_components.push(load[d]);
+        reaction_components.push(reaction[d]);
+        imbalance_components.push(scale > no_force ? (load[d] + reaction[d]) / scale : 0.);
+      }
     result.set("applied_load", load.norm())
+      .set("applied_load_components", load_components)
+      .set("support_reaction_components", reaction_components)
+      .set("relative_imbalance_components", imbalance_components)
       .set("support_reaction", reaction.norm())
       .set("force_scale", scale)
       .set("relative_imbalance", scale > no_force ? (load + reaction).norm() / scale : 0.);
@@ -428,6 +478,8 @@ namespace contact_fem
         std::ostringstream own_checks;
         contact->print_results(*interface, interface_displacement, own_checks);
         pcout << own_checks.str();
+        if (contact->frictional())
+          print_friction_results(contact_json, reaction);
       }
     pcout << "    applied load:                 " << reaction["applied_load"].number_value()
           << std::endl
@@ -455,6 +507,48 @@ namespace contact_fem
 
   template <int dim>
   void
+  ContactProblem<dim>::print_friction_results(const Json &contact_json,
+                                              const Json &reaction) const
+  {
+    const double normal     = contact_json["total_normal_contact_force"].number_value();
+    const double tangential = contact_json["total_tangential_contact_force"].number_value();
+    const double scale      = reaction["force_scale"].number_value();
+    // Forces below 1e-10 of the scene's are round-off: not printed as
+    // numbers (their sign and digits would differ between machines).
+    const auto force_text = [scale](const double f) {
+      std::ostringstream s;
+      if (std::abs(f) < 1e-10 * scale)
+        s << "0 (< 1e-10 of the forces)";
+      else
+        s << f;
+      return s.str();
+    };
+    pcout << "    stick / slip nodes:           "
+          << contact_json["stick_nodes"].number_value() << " / "
+          << contact_json["slip_nodes"].number_value() << std::endl
+          << "    normal contact force:         " << force_text(normal) << std::endl
+          << "    tangential contact force:     " << force_text(tangential) << std::endl
+          << "    active contact length:        "
+          << contact_json["active_contact_length"].number_value() << std::endl
+          << "    tangential / normal force:    "
+          << (std::abs(tangential) < 1e-10 * scale || normal <= 0. ?
+                std::string("0 (no tangential force)") :
+                significant(tangential / normal, 10))
+          << std::endl
+          << "    largest slip in the last step: "
+          << value_or_ok(contact_json["max_slip_increment"].number_value(), 1e-12) << std::endl;
+    const Json &load      = reaction["applied_load_components"];
+    const Json &support   = reaction["support_reaction_components"];
+    const Json &imbalance = reaction["relative_imbalance_components"];
+    for (unsigned int d = 0; d < dim; ++d)
+      pcout << "    balance in " << "xyz"[d] << ": load "
+            << force_text(load[d].number_value()) << ", support reaction "
+            << force_text(support[d].number_value()) << ", relative imbalance "
+            << value_or_ok(imbalance[d].number_value(), 1e-10) << std::endl;
+  }
+
+  template <int dim>
+  void
   ContactProblem<dim>::write_pressure_profile() const
   {
     const bool   hertz = analytical.type == "hertz cylinder";
@@ -469,22 +563,36 @@ namespace contact_fem
         check_written(path, true);
         return;
       }
-    std::vector<std::array<double, 5>> rows;
+    // With friction also the tangential traction (on the slave, along the
+    // tangent whose x component is positive), the slip increment of the
+    // last load step and the stick flag.
+    const bool                         frictional = contact->frictional();
+    std::vector<std::vector<double>> rows;
     for (const auto &s : interface->slave_nodes)
       if (s.paired)
         {
           const double x = interface->nodes[s.node].reference[0] +
                            interface->displacement(s.node, interface_displacement)[0];
-          rows.push_back({{x, contact->normal_pressure(s.node),
+          rows.push_back({x, contact->normal_pressure(s.node),
                           hertz ? h.pressure(x - analytical.center) : 0.,
                           interface->gap(s, interface_displacement),
-                          contact->is_active(s.node) ? 1. : 0.}});
+                          contact->is_active(s.node) ? 1. : 0.});
+          if (frictional)
+            {
+              rows.back().push_back(contact->traction(s) *
+                                    ContactFormulation<dim>::tangent(s.normal));
+              rows.back().push_back(contact->accepted_slip(s.node));
+              rows.back().push_back(contact->sticks(s.node) ? 1. : 0.);
+            }
         }
     std::sort(rows.begin(), rows.end());
     std::ostringstream out;
-    out << "x,pressure,hertz_pressure,gap,active\n" << std::setprecision(10);
+    out << "x,pressure,hertz_pressure,gap,active"
+        << (frictional ? ",tangential_traction,slip_increment,stick" : "") << "\n"
+        << std::setprecision(10);
     for (const auto &r : rows)
-      out << r[0] << ',' << r[1] << ',' << r[2] << ',' << r[3] << ',' << r[4] << '\n';
+      for (unsigned int k = 0; k < r.size(); ++k)
+        out << r[k] << (k + 1 < r.size() ? ',' : '\n');
     check_written(path, write_file_atomically(path, out.str()));
   }
 
@@ -515,8 +623,12 @@ namespace contact_fem
     IndexSet       scalar_relevant;
     DoFTools::extract_locally_relevant_dofs(scalar_dofs, scalar_relevant);
 
-    const std::vector<std::string> names = {"contact_pressure", "weighted_gap", "active",
-                                            "slave", "master"};
+    std::vector<std::string> names = {"contact_pressure", "weighted_gap", "active", "slave",
+                                      "master"};
+    const bool frictional = contact && contact->frictional();
+    if (frictional)
+      for (const std::string name : {"tangential_traction", "slip_increment", "stick"})
+        names.push_back(name);
     std::vector<TrilinosWrappers::MPI::Vector> fields(names.size());
     for (auto &f : fields)
       f.reinit(scalar_owned, comm);
@@ -527,9 +639,19 @@ namespace contact_fem
         for (unsigned int n = 0; n < interface->nodes.size(); ++n)
           node_of_dof[interface->nodes[n].dofs[0]] = n;
         std::vector<double> gap(interface->nodes.size(), 0.);
+        std::vector<double> tangential(interface->nodes.size(), 0.),
+          slip(interface->nodes.size(), 0.);
         for (const auto &s : interface->slave_nodes)
           if (s.paired)
-            gap[s.node] = interface->gap(s, interface_displacement);
+            {
+              gap[s.node] = interface->gap(s, interface_displacement);
+              if (frictional)
+                {
+                  tangential[s.node] =
+                    contact->traction(s) * ContactFormulation<dim>::tangent(s.normal);
+                  slip[s.node] = contact->accepted_slip(s.node);
+                }
+            }
 
         std::vector<types::global_dof_index> vector_dofs(fe.n_dofs_per_cell()),
           scalar_dofs_of_cell(scalar_fe.n_dofs_per_cell());
@@ -555,6 +677,12 @@ namespace contact_fem
                     fields[2](scalar_dof) = contact->is_active(n) ? 1. : 0.;
                     fields[3](scalar_dof) = interface->nodes[n].slave ? 1. : 0.;
                     fields[4](scalar_dof) = interface->nodes[n].master ? 1. : 0.;
+                    if (frictional)
+                      {
+                        fields[5](scalar_dof) = tangential[n];
+                        fields[6](scalar_dof) = slip[n];
+                        fields[7](scalar_dof) = contact->sticks(n) ? 1. : 0.;
+                      }
                   }
               }
             ++scalar_cell;
@@ -736,6 +864,8 @@ namespace contact_fem
   template Tensor<1, dim> ContactProblem<dim>::applied_load(const double) const; \
   template Json           ContactProblem<dim>::contact_results() const;          \
   template Json           ContactProblem<dim>::reaction_results() const;         \
+  template void ContactProblem<dim>::add_friction_results(Json &) const;         \
+  template void ContactProblem<dim>::print_friction_results(const Json &, const Json &) const; \
   template Json ContactProblem<dim>::analytical_results(const Json &,            \
                                                         const Json &) const;     \
   template void ContactProblem<dim>::write_pressure_profile() const;             \

@@ -959,7 +959,7 @@ namespace contact_fem
         if (frictional)
           {
             friction.n_stick = contact->n_stick();
-            friction.n_slip  = contact->n_active() - friction.n_stick;
+            friction.n_slip  = contact->n_slip();
             friction.changes = contact->stick_slip_changes();
           }
         pcout << monitor.row(iteration, update.changes, contact ? contact->n_active() : 0u,

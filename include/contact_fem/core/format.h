@@ -47,6 +47,14 @@ namespace contact_fem
       s << scientific(value, 4);
     return s.str();
   }
+  /// @p value with @p digits significant digits (default float format).
+  inline std::string
+  significant(const double value, const unsigned int digits)
+  {
+    std::ostringstream s;
+    s << std::setprecision(digits) << value;
+    return s.str();
+  }
 } // namespace contact_fem
 
 #endif

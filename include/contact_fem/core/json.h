@@ -36,6 +36,9 @@ namespace contact_fem
     /// Member @p key of an object (a null value if absent).
     const Json &
     operator[](const std::string &key) const;
+    /// Element @p i of an array (a null value if absent).
+    const Json &
+    operator[](const std::size_t i) const;
     /// The number held (NaN if the value is not a number).
     double
     number_value() const;

@@ -381,6 +381,14 @@ namespace contact_fem
     // --- results (contact_output.cc)
     Json
     contact_results() const;
+    /// Friction totals of the active slave nodes (normal and tangential
+    /// contact force, their ratio, the force vector, largest tangential
+    /// traction and slip increment) into the contact results.
+    void
+    add_friction_results(Json &result) const;
+    /// Prints the friction totals and the balance per direction.
+    void
+    print_friction_results(const Json &contact_json, const Json &reaction) const;
     Json
     reaction_results() const;
     Json

@@ -1,6 +1,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <contact_fem/contact/formulations/alm_frictional.h>
+#include <contact_fem/core/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -96,9 +97,14 @@ namespace contact_fem
     const unsigned int n = interface.nodes.size();
     tangential.assign(n, 0.);
     slip_sign.assign(n, 0);
+    held.assign(n, false);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        held[i] = held[i] || interface.nodes[i].fixed[d];
     released_pressure.assign(n, 0.);
     released_tangential.assign(n, 0.);
     converged_displacement.assign(interface.dofs().size(), 0.);
+    last_step_slip.assign(n, 0.);
     last_stick_slip_changes = 0;
   }
 
@@ -146,7 +152,11 @@ namespace contact_fem
     // slip direction is undefined, and any guess would push it sideways.
     if (trial == 0. && !frictionless_law(s))
       return 0;
-    return std::abs(trial) < bound ? 0 : sign;
+    // A node on the bound (every slip node at the start of a step) keeps
+    // slipping: without the margin round-off would decide, differently on
+    // another partition.
+    constexpr double on_bound = 1e-10;
+    return std::abs(trial) < bound * (1. - on_bound) ? 0 : sign;
   }
 
   template <int dim>
@@ -537,6 +547,16 @@ namespace contact_fem
   }
 
   template <int dim>
+  unsigned int
+  AlmFrictional<dim>::n_slip() const
+  {
+    unsigned int n = 0;
+    for (unsigned int i = 0; i < slip_sign.size(); ++i)
+      n += this->active[i] && !held[i] && slip_sign[i] != 0;
+    return n;
+  }
+
+  template <int dim>
   std::vector<int>
   AlmFrictional<dim>::contact_sets() const
   {
@@ -550,10 +570,44 @@ namespace contact_fem
 
   template <int dim>
   void
-  AlmFrictional<dim>::accept_load_step(const ContactInterface<dim> &,
-                                       const std::vector<double> &u)
+  AlmFrictional<dim>::accept_load_step(const ContactInterface<dim> &interface,
+                                       const std::vector<double>   &u)
   {
+    std::fill(last_step_slip.begin(), last_step_slip.end(), 0.);
+    for (const auto &s : interface.slave_nodes)
+      if (s.paired)
+        last_step_slip[s.node] = slip_increment(interface, s, u);
     converged_displacement = u;
+  }
+
+  template <int dim>
+  void
+  AlmFrictional<dim>::print_results(const ContactInterface<dim> &interface,
+                                    const std::vector<double> &,
+                                    std::ostream &out) const
+  {
+    double largest_bound = 0., off_bound = 0., outside = 0.;
+    for (const auto &s : interface.slave_nodes)
+      if (s.paired && this->active[s.node] && has_friction(interface, s))
+        {
+          const double bound = laws[s.pair]->threshold(this->pressure[s.node]);
+          const double t     = tangential[s.node];
+          largest_bound      = std::max(largest_bound, bound);
+          if (slip_sign[s.node] != 0)
+            off_bound = std::max(off_bound, std::abs(t - slip_sign[s.node] * bound));
+          else
+            outside = std::max(outside, std::abs(t) - bound);
+        }
+    if (largest_bound == 0.)
+      {
+        out << "    friction cone:                no friction at the active nodes" << std::endl;
+        return;
+      }
+    out << "    slip nodes off the slip bound: " << value_or_ok(off_bound / largest_bound, 1e-8)
+        << " (|t - sigma T(p)| / max T)" << std::endl
+        << "    stick nodes outside the cone:  "
+        << value_or_ok(std::max(outside, 0.) / largest_bound, 1e-8) << " ((|t| - T(p)) / max T)"
+        << std::endl;
   }
 
   template <int dim>
@@ -564,6 +618,7 @@ namespace contact_fem
     state->normal                 = FrictionlessFormulation<dim>::save_state();
     state->tangential             = tangential;
     state->converged_displacement = converged_displacement;
+    state->last_step_slip         = last_step_slip;
     state->slip_sign              = slip_sign;
     return state;
   }
@@ -576,6 +631,7 @@ namespace contact_fem
     FrictionlessFormulation<dim>::restore_state(*saved.normal);
     tangential             = saved.tangential;
     converged_displacement = saved.converged_displacement;
+    last_step_slip         = saved.last_step_slip;
     slip_sign              = saved.slip_sign;
   }
 
@@ -589,7 +645,7 @@ namespace contact_fem
       law_names.push(law->description());
     contact.set("friction", law_names)
       .set("stick_nodes", n_stick())
-      .set("slip_nodes", this->n_active() - n_stick());
+      .set("slip_nodes", n_slip());
   }
 
   template class AlmFrictional<2>;

@@ -113,7 +113,7 @@ namespace contact_fem
     bool
     sticks(const unsigned int n) const override
     {
-      return this->active[n] && slip_sign[n] == 0;
+      return this->active[n] && !held[n] && slip_sign[n] == 0;
     }
 
     double
@@ -121,8 +121,17 @@ namespace contact_fem
                    const SlaveNode             &s,
                    const std::vector<double>   &u) const override;
 
+    double
+    accepted_slip(const unsigned int n) const override
+    {
+      return last_step_slip[n];
+    }
+
     unsigned int
     n_stick() const override;
+
+    unsigned int
+    n_slip() const override;
 
     unsigned int
     stick_slip_changes() const override
@@ -148,6 +157,13 @@ namespace contact_fem
 
     void
     add_results(const ContactInterface<dim> &interface, Json &contact) const override;
+
+    /// The friction cone check: slip nodes on the bound (|t - sigma T(p)|),
+    /// stick nodes inside it (|t| - T(p)), relative to the largest bound.
+    void
+    print_results(const ContactInterface<dim> &interface,
+                  const std::vector<double>   &u,
+                  std::ostream                &out) const override;
 
   private:
     /// Whether slave node @p s carries a tangential condition: paired and
@@ -200,8 +216,12 @@ namespace contact_fem
 
     std::vector<double> tangential; ///< t_j per interface node
     std::vector<int>    slip_sign;  ///< 0 stick, +-1 slip (active nodes)
+    /// Slave nodes with a Dirichlet component: no tangential condition.
+    std::vector<bool>   held;
     /// Interface displacement of the last accepted load step.
     std::vector<double> converged_displacement;
+    /// Slip of every interface node in the last accepted load step.
+    std::vector<double> last_step_slip;
     /// Multipliers of the nodes released in the last update.
     std::vector<double> released_pressure, released_tangential;
     unsigned int        last_stick_slip_changes = 0;
@@ -209,7 +229,7 @@ namespace contact_fem
     struct FrictionState : public State
     {
       std::unique_ptr<State> normal;
-      std::vector<double>    tangential, converged_displacement;
+      std::vector<double>    tangential, converged_displacement, last_step_slip;
       std::vector<int>       slip_sign;
     };
   };

@@ -164,10 +164,26 @@ namespace contact_fem
       return 0.;
     }
 
+    /// The weighted tangential slip of interface node @p n in the last
+    /// accepted load step (frictional only; for output).
+    virtual double
+    accepted_slip(const unsigned int) const
+    {
+      return 0.;
+    }
+
     /// Number of active nodes that stick, and the stick/slip changes of
     /// the last update_active_set() (part of the changes it returned).
     virtual unsigned int
     n_stick() const
+    {
+      return 0;
+    }
+
+    /// Number of active nodes that slip (frictional only; active nodes
+    /// held tangentially by a support neither stick nor slip).
+    virtual unsigned int
+    n_slip() const
     {
       return 0;
     }
