@@ -39,8 +39,8 @@ namespace contact_fem
   std::map<types::material_id, Tensor<1, dim>>
   ContactProblem<dim>::body_loads(const double time) const
   {
-    // The resultant of the applied pressures on each body (their sum is
-    // applied_load()).
+    // The resultant of the applied pressures and tractions on each body
+    // (their sum is applied_load()).
     const QGauss<dim - 1> quadrature(degree + 1);
     FEFaceValues<dim>     fe_face(*mapping, fe, quadrature,
                               update_normal_vectors | update_quadrature_points |
@@ -63,6 +63,24 @@ namespace contact_fem
                   for (unsigned int q = 0; q < quadrature.size(); ++q)
                     loads[cell->material_id()] -= pressure.value(fe_face.quadrature_point(q)) *
                                                   fe_face.normal_vector(q) * fe_face.JxW(q);
+                }
+      }
+    for (const auto &condition : boundary_conditions.tractions)
+      {
+        FunctionParser<dim> traction(dim);
+        traction.initialize(dim == 2 ? "x,y,t" : "x,y,z,t", condition.expressions, {}, true);
+        traction.set_time(time);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const auto f : cell->face_indices())
+              if (cell->face(f)->at_boundary() &&
+                  cell->face(f)->boundary_id() == condition.boundary_id)
+                {
+                  fe_face.reinit(cell, f);
+                  for (unsigned int q = 0; q < quadrature.size(); ++q)
+                    for (unsigned int d = 0; d < dim; ++d)
+                      loads[cell->material_id()][d] +=
+                        traction.value(fe_face.quadrature_point(q), d) * fe_face.JxW(q);
                 }
       }
     for (auto &[id, load] : loads)

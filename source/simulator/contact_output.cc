@@ -6,6 +6,7 @@
 #include <deal.II/numerics/data_postprocessor.h>
 
 #include <contact_fem/simulator/contact_problem.h>
+#include <contact_fem/simulator/cattaneo.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/simulator/output_files.h>
 
@@ -360,6 +361,9 @@ namespace contact_fem
       .set("pressure_l2_relative_error", hertz_pressure_error(contact->pressures(*interface)));
     if (interface->geometry_degree == 1)
       result.set("chord_gap_work", chord_gap_work);
+    // Cattaneo-Mindlin: stick zone and tangential traction (cattaneo.cc).
+    if (analytical.type == "cattaneo")
+      result.set("cattaneo", cattaneo_results(*interface, *contact, analytical));
     return result;
   }
 
@@ -503,6 +507,8 @@ namespace contact_fem
             << (hertz["a_error_in_slave_elements"].number_value() <= 1. ? "yes" : "no")
             << std::endl
             << std::setprecision(6);
+    if (analytical.type == "cattaneo" && contact)
+      pcout << cattaneo_report(hertz["cattaneo"]);
   }
 
   template <int dim>

@@ -403,6 +403,35 @@ namespace contact_fem
                         }
                     }
                 }
+    // Traction vectors (Boundary conditions/Traction): one parser per
+    // component.
+    std::vector<std::unique_ptr<FunctionParser<dim>>> tractions;
+    for (const auto &condition : boundary_conditions.tractions)
+      {
+        tractions.push_back(std::make_unique<FunctionParser<dim>>(dim));
+        tractions.back()->initialize(dim == 2 ? "x,y,t" : "x,y,z,t", condition.expressions, {},
+                                     true);
+        tractions.back()->set_time(time);
+      }
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            for (unsigned int c = 0; c < tractions.size(); ++c)
+              if (cell->face(f)->boundary_id() == boundary_conditions.tractions[c].boundary_id)
+                {
+                  fe_face.reinit(cell, f);
+                  Vector<double> &load = cell_loads[cell->active_cell_index()];
+                  if (load.size() == 0)
+                    load.reinit(fe.n_dofs_per_cell());
+                  for (unsigned int q = 0; q < quadrature.size(); ++q)
+                    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                      {
+                        const unsigned int comp = fe.system_to_component_index(i).first;
+                        load(i) += tractions[c]->value(fe_face.quadrature_point(q), comp) *
+                                   fe_face.shape_value(i, q) * fe_face.JxW(q);
+                      }
+                }
   }
 
   template <int dim>

@@ -4,6 +4,7 @@
 #include <contact_fem/geometry/mesh_queries.h>
 #include <contact_fem/core/resources.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -55,6 +56,14 @@ namespace contact_fem
     coarse_scene.create_mesh(coarse);
     check_contact_pairs(coarse);
     check_memory_estimate(coarse);
+    // Boundary conditions/Traction: a boundary id the mesh lacks would load
+    // nothing, silently.
+    const std::vector<types::boundary_id> ids = coarse.get_boundary_ids();
+    for (const auto &condition : boundary_conditions.tractions)
+      AssertThrow(std::find(ids.begin(), ids.end(), condition.boundary_id) != ids.end(),
+                  ExcMessage("Boundary conditions/Traction: boundary id " +
+                             std::to_string(condition.boundary_id) +
+                             " does not exist in the mesh."));
   }
 
   template <int dim>

@@ -1,6 +1,7 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/utilities.h>
 
+#include <contact_fem/contact/friction/frictional_law.h>
 #include <contact_fem/simulator/scene_parameters.h>
 
 #include <algorithm>
@@ -65,6 +66,30 @@ namespace contact_fem
       AssertThrow(!result.empty(), ExcMessage(key + ": " + what + " lists no components."));
       return result;
     }
+
+    /// @p text split at the commas outside parentheses (muparser's
+    /// min(t, 1) stays one piece), trimmed; throws naming @p key on
+    /// unbalanced parentheses.
+    std::vector<std::string>
+    split_top_level_commas(const std::string &text, const std::string &key)
+    {
+      std::vector<std::string> pieces(1);
+      int                      depth = 0;
+      for (const char c : text)
+        {
+          depth += c == '(' ? 1 : c == ')' ? -1 : 0;
+          AssertThrow(depth >= 0,
+                      ExcMessage(key + ": '" + text + "' has a ')' without its '('."));
+          if (c == ',' && depth == 0)
+            pieces.emplace_back();
+          else
+            pieces.back() += c;
+        }
+      AssertThrow(depth == 0, ExcMessage(key + ": '" + text + "' has a '(' without its ')'."));
+      for (auto &piece : pieces)
+        piece = Utilities::trim(piece);
+      return pieces;
+    }
   } // namespace
 
   void
@@ -96,6 +121,14 @@ namespace contact_fem
                       "Boundaries loaded by a normal pressure (positive pushes "
                       "into the body), as 'id: expression; ...' with an "
                       "expression of x, y, (z,) t. Units: stress.");
+    prm.declare_entry("Traction",
+                      "",
+                      Patterns::Anything(),
+                      "Boundaries loaded by a traction vector (force per area, in "
+                      "global components, e.g. a tangential load), as 'id: fx, fy; "
+                      "...' ('id: fx, fy, fz' in 3D) with expressions of x, y, (z,) "
+                      "t, e.g. '1: 0.05*max(t-1, 0), 0'. Adds to a Pressure on the "
+                      "same boundary. Units: stress.");
     prm.leave_subsection();
   }
 
@@ -153,6 +186,30 @@ namespace contact_fem
         check_expression(expression, dim, pressure_key);
         pressures.push_back({parse_boundary_id(id, pressure_key), expression});
       }
+    const std::string traction_key = "Boundary conditions/Traction";
+    tractions.clear();
+    for (const auto &[id, components] :
+         split_key_value_list(prm.get("Traction"), traction_key))
+      {
+        const types::boundary_id       b           = parse_boundary_id(id, traction_key);
+        const std::vector<std::string> expressions = split_top_level_commas(components,
+                                                                            traction_key);
+        AssertThrow(expressions.size() == dim &&
+                      std::none_of(expressions.begin(), expressions.end(),
+                                   [](const std::string &e) { return e.empty(); }),
+                    ExcMessage(traction_key + ": entry '" + id + ": " + components +
+                               "' is not of the form 'id: " +
+                               (dim == 2 ? std::string("fx, fy") : std::string("fx, fy, fz")) +
+                               "' (" + std::to_string(dim) +
+                               " comma-separated expressions of " +
+                               (dim == 2 ? "x, y, t" : "x, y, z, t") + ")."));
+        for (const auto &expression : expressions)
+          check_expression(expression, dim, traction_key);
+        for (const auto &other : tractions)
+          AssertThrow(other.boundary_id != b,
+                      ExcMessage(traction_key + ": boundary " + id + " is given twice."));
+        tractions.push_back({b, expressions});
+      }
     prm.leave_subsection();
 
     for (unsigned int i = 0; i < displacements.size(); ++i)
@@ -170,13 +227,20 @@ namespace contact_fem
   AnalyticalSolution::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Analytical solution");
-    prm.declare_entry("Type", "none", Patterns::Selection("none|hertz cylinder"),
+    prm.declare_entry("Type", "none", Patterns::Selection("none|hertz cylinder|cattaneo"),
                       "Reference solution to compare with: 'hertz cylinder' = 2D "
                       "plane-strain Hertz contact of a cylinder of radius R on a "
                       "plane, with the load per unit thickness taken from the "
                       "transmitted contact force (so displacement-driven scenes "
                       "compare too) and E* from the materials of the contact "
-                      "pair.");
+                      "pair. 'cattaneo' = the same Hertz contact, then a "
+                      "tangential load Q < mu P at constant P (Cattaneo-Mindlin, "
+                      "plane strain, equal materials): stick zone |x| < c, c/a = "
+                      "sqrt(1 - Q/(mu P)), with P and Q the transmitted normal "
+                      "and tangential contact forces and mu the Coulomb "
+                      "coefficient of Contact/Friction (which must then be one "
+                      "'coulomb MU' law, or give the first pair such a law); "
+                      "compares the stick zone and the tangential traction.");
     prm.declare_entry("Radius", "8", Patterns::Double(0.), "Cylinder radius R.");
     prm.declare_entry("Center", "0", Patterns::Double(),
                       "x coordinate of the centre of the contact zone.");
@@ -310,6 +374,23 @@ namespace contact_fem
                                reference + "' is not a number (leave it empty if unknown)."));
       }
     AssertThrow(radius > 0., ExcMessage("Analytical solution/Radius: expected > 0."));
+    friction_coefficient = std::numeric_limits<double>::quiet_NaN();
+    if (type == "cattaneo")
+      {
+        // mu of the law the run uses: one source, no second key to keep
+        // consistent with it. The comparison is of the first pair.
+        const auto laws = FrictionParameters::parse_laws(prm);
+        const auto coulomb =
+          laws.empty() ? nullptr : dynamic_cast<const CoulombFriction *>(laws.front().get());
+        AssertThrow(coulomb != nullptr && coulomb->threshold_derivative(0.) > 0.,
+                    ExcMessage("Analytical solution/Type = cattaneo: needs a Coulomb law "
+                               "with mu > 0 in Contact/Friction (e.g. 'coulomb 0.2') for "
+                               "the first contact pair, " +
+                               (laws.empty() ? std::string("found none (the key is empty)") :
+                                               "found '" + laws.front()->description() + "'") +
+                               "."));
+        friction_coefficient = coulomb->threshold_derivative(0.);
+      }
   }
 
   void

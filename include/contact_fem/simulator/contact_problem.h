@@ -333,7 +333,7 @@ namespace contact_fem
     void
     check_memory_estimate(const parallel::distributed::Triangulation<dim> &coarse);
     // --- diagnoses (contact_diagnosis.cc)
-    /// The resultant of the applied pressures on each body. Collective.
+    /// The resultant of the applied pressures and tractions on each body. Collective.
     std::map<types::material_id, Tensor<1, dim>>
     body_loads(const double time) const;
     /// The integral of the outward normal over boundary @p id. Collective.

@@ -31,6 +31,14 @@ namespace contact_fem
     std::string        expression; ///< function of x, y, (z,) t
   };
 
+  /// A boundary id loaded by a traction vector (force per area, global
+  /// components), e.g. a tangential load.
+  struct TractionCondition
+  {
+    types::boundary_id       boundary_id;
+    std::vector<std::string> expressions; ///< one per component, of x, y, (z,) t
+  };
+
   /// A displacement component held at zero at one vertex of one body, to
   /// remove a rigid-body mode that the boundary conditions leave free.
   struct PointCondition
@@ -44,6 +52,7 @@ namespace contact_fem
     std::vector<DisplacementCondition> displacements;
     std::vector<PointCondition>        points;
     std::vector<PressureCondition>     pressures;
+    std::vector<TractionCondition>     tractions;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -53,9 +62,12 @@ namespace contact_fem
 
   struct AnalyticalSolution
   {
-    std::string type   = "none"; ///< "none" or "hertz cylinder"
+    std::string type   = "none"; ///< "none", "hertz cylinder" or "cattaneo"
     double      radius = 8.;
     double      center = 0.; ///< x of the first point of contact
+    /// Coulomb coefficient of the Cattaneo-Mindlin solution (type
+    /// "cattaneo"): that of Contact/Friction (NaN otherwise).
+    double friction_coefficient = std::numeric_limits<double>::quiet_NaN();
     /// Total potential energy of the exact solution, if known (NaN if not):
     /// gives the energy-norm error and the effectivity of the estimate.
     double reference_potential_energy = std::numeric_limits<double>::quiet_NaN();

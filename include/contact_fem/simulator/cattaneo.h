@@ -1,0 +1,111 @@
+// The Cattaneo-Mindlin solution of two elastic cylinders (plane strain)
+// pressed together by P and then sheared by Q < mu P at constant P, and its
+// comparison with the stick zone and tangential traction of a frictional run.
+#ifndef contact_fem_cattaneo_h
+#define contact_fem_cattaneo_h
+
+#include <contact_fem/contact/contact_interface.h>
+#include <contact_fem/contact/formulations/contact_formulation.h>
+#include <contact_fem/core/json.h>
+#include <contact_fem/simulator/scene_parameters.h>
+
+#include <string>
+#include <vector>
+
+namespace contact_fem
+{
+  /**
+   * Hertz contact (half-width a, peak p_max from the load P per unit
+   * thickness, R* and E*) plus the Cattaneo-Mindlin tangential traction of
+   * a monotonic tangential load Q at constant P, for equal materials (no
+   * normal-tangential coupling):
+   *   c/a  = sqrt(1 - Q / (mu P)),
+   *   q(x) = mu p_max [sqrt(1 - x^2/a^2) - (c/a) sqrt(1 - x^2/c^2)]  |x| < c (stick),
+   *   q(x) = mu p(x)                                                 c <= |x| < a (slip).
+   */
+  struct CattaneoSolution
+  {
+    double P = 0., Q = 0., mu = 0.;  ///< loads per unit thickness (Q >= 0), Coulomb mu
+    double a = 0., p_max = 0., c = 0.;
+
+    CattaneoSolution() = default;
+    /// Q >= mu P (full slip) gives c = 0.
+    CattaneoSolution(const double P,
+                     const double Q,
+                     const double mu,
+                     const double radius,
+                     const double E_star);
+
+    double
+    pressure(const double x) const;
+
+    /// The magnitude q(x) >= 0 of the tangential traction.
+    double
+    tangential(const double x) const;
+  };
+
+  /// One slave node of the run: its position along the contact (relative
+  /// to the contact centre), tangential traction t (on the slave, along the
+  /// node's tangent), its nodal weight D, and its contact state.
+  struct CattaneoNode
+  {
+    double x = 0., t = 0., weight = 0.;
+    bool   active = false, stick = false;
+  };
+
+  /**
+   * The run against @p exact.
+   *
+   * Measured stick half-width c_h: the stick nodes span [x_l, x_r]; each
+   * end of the stick zone is put halfway to the next node outward (a slip
+   * node, or the first node out of contact if none slips), so that
+   * c_h = (e_r - e_l) / 2 with e_l = (x_l + x_{l-1}) / 2, e_r = (x_r +
+   * x_{r+1}) / 2. When the discrete stick set is the set of nodes with
+   * |x| < c, each end is within half a node spacing of the exact +-c:
+   * |c_h - c| <= one slave element, measured in the spacing of the nodes at
+   * the two ends (c_error_in_slave_elements).
+   *
+   * Tangential error: relative L2 error of t over all given nodes with
+   * the nodal weights D (the mortar quadrature of the multiplier, as the
+   * Hertz pressure error), against the exact traction sign(Q) q(x), the
+   * sign being that of the resultant sum D t:
+   *   sqrt(sum D (t_h - t)^2 / sum D t^2).
+   */
+  struct CattaneoComparison
+  {
+    CattaneoSolution exact;
+    unsigned int     n_stick = 0, n_slip = 0;
+    bool             stick_contiguous = true; ///< no slip node between stick nodes
+    double           c_h = 0., stick_center = 0.;
+    double           end_spacing = 0.; ///< mean node spacing at the two ends
+    double           c_error_in_slave_elements = 0.;
+    double           tangential_l2_relative_error = 0.;
+  };
+
+  /// @p nodes in any order; @p exact has Q = |sum D t|.
+  CattaneoComparison
+  compare_with_cattaneo(std::vector<CattaneoNode> nodes, const CattaneoSolution &exact);
+
+  Json
+  to_json(const CattaneoComparison &comparison);
+
+  /// The lines print_results() shows for a Cattaneo scene, from to_json().
+  std::string
+  cattaneo_report(const Json &cattaneo);
+
+  /**
+   * The comparison of the converged state: P and Q are the transmitted
+   * normal and tangential contact forces (sum D_j p_j, |sum D_j t_j| over
+   * the paired slave nodes), E* from the materials of the first pair, R* =
+   * Analytical solution/Radius, x of each node in the configuration the
+   * mortar operators were built on (the reference one with Contact/
+   * Kinematics = small) less Analytical solution/Center.
+   */
+  template <int dim>
+  Json
+  cattaneo_results(const ContactInterface<dim>   &interface,
+                   const ContactFormulation<dim> &contact,
+                   const AnalyticalSolution      &analytical);
+} // namespace contact_fem
+
+#endif
