@@ -1,6 +1,7 @@
 #include <contact_fem/contact/formulations/alm_frictional.h>
 #include <contact_fem/contact/formulations/alm_frictionless.h>
 #include <contact_fem/contact/formulations/contact_formulation.h>
+#include <contact_fem/contact/formulations/penalty_frictional.h>
 #include <contact_fem/contact/formulations/penalty_frictionless.h>
 #include <contact_fem/contact/friction/frictional_law.h>
 
@@ -38,6 +39,11 @@ namespace contact_fem
                [](ParameterHandler &) {},
                [](ParameterHandler &prm) {
                  return std::make_unique<AlmFrictional<dim>>(prm);
+               }},
+              {"penalty frictional",
+               PenaltyFrictional<dim>::declare_parameters,
+               [](ParameterHandler &prm) {
+                 return std::make_unique<PenaltyFrictional<dim>>(prm);
                }}};
     }
   } // namespace
@@ -124,7 +130,13 @@ namespace contact_fem
                       "overlap by pressure / eps (no multipliers, no constraints). "
                       "'alm frictional' = 'alm frictionless' plus the tangential "
                       "traction of the law of Contact/Friction (Coulomb or Tresca), "
-                      "stick/slip semi-smooth Newton, 2D, small sliding.");
+                      "stick/slip semi-smooth Newton, 2D, small sliding. "
+                      "'penalty frictional' = 'penalty frictionless' plus a "
+                      "tangential penalty (Contact/Tangential penalty) on the slip "
+                      "increment of the load step, return mapping to the slip bound "
+                      "of the law of Contact/Friction: a sticking node slips "
+                      "elastically by t / eps_t; unsymmetric system under Coulomb "
+                      "slip; 2D, small sliding.");
     prm.leave_subsection();
     FrictionlessFormulation<dim>::Parameters::declare_parameters(prm);
     FrictionParameters::declare_parameters(prm);
@@ -150,7 +162,8 @@ namespace contact_fem
           AssertThrow(formulation->frictional() || !friction_given,
                       ExcMessage("Contact/Friction is set, but Contact/Formulation = " + name +
                                  " has no friction: use a frictional formulation (" +
-                                 "alm frictional), or leave Contact/Friction empty."));
+                                 "alm frictional, penalty frictional), or leave " +
+                                 "Contact/Friction empty."));
           return formulation;
         }
     AssertThrow(false, ExcMessage("Contact/Formulation: unknown formulation '" + name + "'."));

@@ -1,0 +1,221 @@
+// Frictional contact by penalties: the normal penalty of "penalty
+// frictionless" plus a tangential penalty on the slip increment, with the
+// return mapping of elastoplasticity for Coulomb or Tresca slip (2D).
+#ifndef contact_fem_penalty_frictional_h
+#define contact_fem_penalty_frictional_h
+
+#include <contact_fem/contact/formulations/penalty_frictionless.h>
+#include <contact_fem/contact/friction/frictional_law.h>
+
+namespace contact_fem
+{
+  /**
+   * "penalty frictional": the contact traction of slave node j on the slave
+   * is lambda_j = -p_j n_j + t_j tau_j (tau = ContactFormulation::tangent(n)),
+   * whose force is D_j lambda_j on the slave node and -M_jl lambda_j on
+   * master node l. The normal part is that of "penalty frictionless" (the
+   * base class): p_j = eps_n (-g_j) on active nodes (g_j < 0). The tangential
+   * part is a penalty on the weighted slip increment xi_j since the last
+   * accepted load step (slip_increment()), with the return mapping
+   *
+   *   trial  t*_j = t_n,j - eps_t xi_j     (t_n,j: of the last accepted step)
+   *   stick  if |t*_j| <= T(p_j):  t_j = t*_j
+   *   slip   otherwise:            t_j = sigma_j T(p_j), sigma_j = sign(t*_j)
+   *
+   * with T the slip bound of the pair's frictional law. eps_t is
+   * Contact/Tangential penalty, by default the pair's normal penalty (1e4 *
+   * stiffness factor * E/h). Once the active set, the stick set and the slip
+   * signs are fixed, every term is linear in u (Coulomb: T = mu p, p linear
+   * in u; Tresca: T constant), so each iteration is one linear solve of the
+   * total displacement; assemble() adds per active node
+   *   normal: eps_n D grad g grad g^T (symmetric),
+   *   stick:  eps_t D grad xi grad xi^T (symmetric),
+   *   slip:   sigma T'(p) eps_n D grad xi grad g^T (unsymmetric) and the load
+   *           D sigma (T - T' p - T' eps_n g(0)) grad xi,
+   * where grad xi = tau at the slave node, -M_jl / D_j tau at master l. The
+   * driver's direct solver takes the unsymmetric matrix; no test-space
+   * constraints are used (symmetric() stays true: it concerns constraints
+   * only).
+   *
+   * The stick/slip iteration: every frictional node starts a load step
+   * sticking (the elastic predictor of plasticity; a node that slipped has
+   * its trial traction on the bound, where round-off would decide), and a
+   * slipping node whose trial traction passes the opposite bound sticks
+   * first instead of reversing at once: with eps_t ~ 1e4 E/h the slip
+   * solve of a node that should stick overshoots, and direct reversals
+   * swing it between +T and -T forever (period 2).
+   *
+   * A node whose law has no friction (mu = 0, or bound 0) slips with
+   * T = 0: exactly the "penalty frictionless" system and results. Nodes
+   * with a Dirichlet component carry no tangential penalty (the support
+   * holds them tangentially), as in "alm frictional". Adaptive penalties
+   * are refused (Contact/Adaptive penalty).
+   */
+  template <int dim>
+  class PenaltyFrictional : public PenaltyFrictionless<dim>
+  {
+  public:
+    using typename PenaltyFrictionless<dim>::Residuals;
+    using State     = typename ContactFormulation<dim>::State;
+    using SlaveNode = typename ContactInterface<dim>::SlaveNode;
+
+    /// Tangential penalty (subsection Contact).
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Reads the penalty keys, Contact/Friction, Pure slip and Tangential
+    /// penalty.
+    explicit PenaltyFrictional(ParameterHandler &prm);
+
+    void
+    initialize(const ContactInterface<dim> &interface) override;
+
+    void
+    start_load_step(const ContactInterface<dim> &interface,
+                    const std::vector<double>   &u,
+                    const bool                   first_step) override;
+
+    /// The couplings of every component of the slave node and its masters
+    /// (the gap gradient drops the components normal to n, the slip
+    /// gradient needs them); those of "penalty frictionless" when no pair
+    /// has friction.
+    void
+    add_sparsity(const ContactInterface<dim>    &interface,
+                 const AffineConstraints<double> &constraints,
+                 const IndexSet                  &owned,
+                 DynamicSparsityPattern          &pattern) const override;
+
+    /// The normal penalty of the base class plus the stick or slip terms.
+    void
+    assemble(const ContactInterface<dim>    &interface,
+             const AffineConstraints<double> &constraints,
+             const IndexSet                  &owned,
+             TrilinosWrappers::SparseMatrix  &matrix,
+             TrilinosWrappers::MPI::Vector   &rhs) const override;
+
+    /// Active set and pressures of the base class, then the return mapping
+    /// at @p u; returns the active changes plus the stick/slip changes.
+    unsigned int
+    update_active_set(const ContactInterface<dim> &interface,
+                      const std::vector<double>   &u) override;
+
+    Residuals
+    residuals(const ContactInterface<dim> &interface,
+              const std::vector<double>   &u) const override;
+
+    Tensor<1, dim>
+    traction(const SlaveNode &s) const override
+    {
+      return -this->pressure[s.node] * s.normal +
+             tangential[s.node] * ContactFormulation<dim>::tangent(s.normal);
+    }
+
+    bool
+    frictional() const override
+    {
+      return true;
+    }
+
+    bool
+    sticks(const unsigned int n) const override
+    {
+      return this->active[n] && slip_sign[n] == 0;
+    }
+
+    double
+    slip_increment(const ContactInterface<dim> &interface,
+                   const SlaveNode             &s,
+                   const std::vector<double>   &u) const override;
+
+    unsigned int
+    n_stick() const override;
+
+    unsigned int
+    stick_slip_changes() const override
+    {
+      return last_stick_slip_changes;
+    }
+
+    /// 0 inactive, 1 stick, 2 / 3 slip with sign + / -.
+    std::vector<int>
+    contact_sets() const override;
+
+    /// The slip reference (interface displacement) and the tangential
+    /// tractions of the accepted step become the history.
+    void
+    accept_load_step(const ContactInterface<dim> &interface,
+                     const std::vector<double>   &u) override;
+
+    std::unique_ptr<State>
+    save_state() const override;
+
+    void
+    restore_state(const State &state) override;
+
+    void
+    add_results(const ContactInterface<dim> &interface, Json &contact) const override;
+
+    /// The total tangential and normal contact forces sum_j D_j t_j and
+    /// sum_j D_j p_j, their ratio, and with one Coulomb law and every
+    /// active node slipping one way the check ratio = mu.
+    void
+    print_results(const ContactInterface<dim> &interface,
+                  const std::vector<double>   &u,
+                  std::ostream                &out) const override;
+
+  private:
+    /// Whether slave node @p s carries a tangential penalty: paired and no
+    /// Dirichlet component.
+    bool
+    has_friction(const ContactInterface<dim> &interface, const SlaveNode &s) const;
+
+    /// Whether the law of node @p s has no friction at all (mu = 0, bound 0).
+    bool
+    frictionless_law(const SlaveNode &s) const
+    {
+      return laws[s.pair]->threshold(1.) == 0. && laws[s.pair]->threshold_derivative(1.) == 0.;
+    }
+
+    /// The return mapping of active node @p s at pressure @p p and slip
+    /// increment @p xi: 0 = stick, +1 / -1 = slip with that sign of the
+    /// trial traction (a frictionless law always "slips", with T = 0).
+    int
+    stick_or_slip(const SlaveNode &s, const double p, const double xi) const;
+
+    /// The tangential traction of the return mapping with sign @p sign.
+    double
+    tangential_traction(const SlaveNode &s,
+                        const int        sign,
+                        const double     p,
+                        const double     xi) const;
+
+    /// grad xi_j at the DoFs of gap_gradient() (same order): tau at the
+    /// slave node, -M_jl / D_j tau at master l.
+    void
+    slip_gradient(const ContactInterface<dim> &interface,
+                  const SlaveNode             &s,
+                  std::vector<double>         &gradient) const;
+
+    std::vector<std::shared_ptr<const FrictionalLaw>> laws; ///< per pair
+    bool   pure_slip          = false;
+    double tangential_penalty = 0.; ///< given; 0: the pair's normal penalty
+    std::vector<double> tangent_penalty; ///< eps_t per pair
+
+    std::vector<double> tangential; ///< t_j per interface node
+    std::vector<int>    slip_sign;  ///< 0 stick, +-1 slip (active nodes)
+    /// Interface displacement and tangential tractions of the last accepted
+    /// load step (the history).
+    std::vector<double> converged_displacement;
+    std::vector<double> accepted_tangential;
+    unsigned int        last_stick_slip_changes = 0;
+
+    struct FrictionState : public State
+    {
+      std::unique_ptr<State> normal;
+      std::vector<double>    tangential, converged_displacement, accepted_tangential;
+      std::vector<int>       slip_sign;
+    };
+  };
+} // namespace contact_fem
+
+#endif

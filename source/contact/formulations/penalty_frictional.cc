@@ -1,0 +1,483 @@
+#include <deal.II/base/utilities.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <contact_fem/contact/formulations/penalty_frictional.h>
+#include <contact_fem/core/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace contact_fem
+{
+  namespace
+  {
+    /// 'auto' (0) or a finite number > 0, else an error naming @p key.
+    double
+    parse_auto_or_positive(const std::string &text, const std::string &key)
+    {
+      const std::string trimmed = Utilities::trim(text);
+      if (trimmed == "auto")
+        return 0.;
+      double value = -1.;
+      try
+        {
+          std::size_t pos = 0;
+          value           = std::stod(trimmed, &pos);
+          if (pos != trimmed.size())
+            value = -1.;
+        }
+      catch (...)
+        {
+          value = -1.;
+        }
+      AssertThrow(value > 0. && std::isfinite(value),
+                  ExcMessage(key + ": got '" + text + "'; expected 'auto' or a number > 0."));
+      return value;
+    }
+
+    /// Contact/Adaptive penalty must be off: the adapted normal penalty
+    /// would enter the slip bound and the tangential penalty node by node.
+    ParameterHandler &
+    refuse_adaptive_penalty(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Contact");
+      const bool adaptive = prm.get_bool("Adaptive penalty");
+      prm.leave_subsection();
+      AssertThrow(!adaptive,
+                  ExcMessage("Contact/Adaptive penalty = true is not supported by "
+                             "Contact/Formulation = penalty frictional (the adapted normal "
+                             "penalty would change the slip bound and the tangential penalty "
+                             "node by node): set Contact/Adaptive penalty = false, or use "
+                             "penalty frictionless."));
+      return prm;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  PenaltyFrictional<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    prm.declare_entry("Tangential penalty",
+                      "auto",
+                      Patterns::Anything(),
+                      "'penalty frictional' only: the tangential penalty eps_t of the "
+                      "return mapping (trial traction t - eps_t * slip increment; a "
+                      "sticking node slips elastically by t / eps_t). 'auto' = the "
+                      "normal penalty of the pair (Contact/Penalty, or 1e4 * stiffness "
+                      "factor * min(E/h)). Units: stress / length.");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  PenaltyFrictional<dim>::PenaltyFrictional(ParameterHandler &prm)
+    : PenaltyFrictionless<dim>(refuse_adaptive_penalty(prm))
+    , laws(FrictionParameters::parse_laws(prm))
+  {
+    AssertThrow(dim == 2,
+                ExcMessage("Contact/Formulation = penalty frictional: friction is implemented "
+                           "in 2D only."));
+    AssertThrow(!laws.empty(),
+                ExcMessage("Contact/Friction: 'penalty frictional' needs a frictional law, "
+                           "e.g. 'coulomb 0.2' or 'tresca 0.01' (or per pair '3: coulomb "
+                           "0.2'); for frictionless contact use Contact/Formulation = "
+                           "penalty frictionless."));
+    prm.enter_subsection("Contact");
+    pure_slip          = prm.get_bool("Pure slip");
+    tangential_penalty = parse_auto_or_positive(prm.get("Tangential penalty"),
+                                                "Contact/Tangential penalty");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictional<dim>::initialize(const ContactInterface<dim> &interface)
+  {
+    PenaltyFrictionless<dim>::initialize(interface);
+    const unsigned int n = interface.nodes.size();
+    tangential.assign(n, 0.);
+    accepted_tangential.assign(n, 0.);
+    slip_sign.assign(n, 0);
+    converged_displacement.assign(interface.dofs().size(), 0.);
+    last_stick_slip_changes = 0;
+  }
+
+  template <int dim>
+  bool
+  PenaltyFrictional<dim>::has_friction(const ContactInterface<dim> &interface,
+                                       const SlaveNode             &s) const
+  {
+    if (!s.paired)
+      return false;
+    for (unsigned int d = 0; d < dim; ++d)
+      if (interface.nodes[s.node].fixed[d])
+        return false;
+    return true;
+  }
+
+  template <int dim>
+  double
+  PenaltyFrictional<dim>::slip_increment(const ContactInterface<dim> &interface,
+                                         const SlaveNode             &s,
+                                         const std::vector<double>   &u) const
+  {
+    // xi_j = tau . (du_j - sum_l M_jl / D_j du_l) since the last accepted
+    // step, as in AlmFrictional.
+    Tensor<1, dim> relative =
+      interface.displacement(s.node, u) - interface.displacement(s.node, converged_displacement);
+    for (const auto &[m, value] : s.M)
+      relative -= (value / s.D) * (interface.displacement(m, u) -
+                                   interface.displacement(m, converged_displacement));
+    return relative * ContactFormulation<dim>::tangent(s.normal);
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictional<dim>::slip_gradient(const ContactInterface<dim> &,
+                                        const SlaveNode     &s,
+                                        std::vector<double> &gradient) const
+  {
+    const Tensor<1, dim> tau = ContactFormulation<dim>::tangent(s.normal);
+    gradient.clear();
+    for (unsigned int d = 0; d < dim; ++d)
+      gradient.push_back(tau[d]);
+    for (const auto &[m, value] : s.M)
+      for (unsigned int d = 0; d < dim; ++d)
+        gradient.push_back(-value / s.D * tau[d]);
+  }
+
+  template <int dim>
+  int
+  PenaltyFrictional<dim>::stick_or_slip(const SlaveNode &s, const double p, const double xi) const
+  {
+    const double trial = accepted_tangential[s.node] - tangent_penalty[s.pair] * xi;
+    const int    sign  = trial >= 0. ? 1 : -1;
+    if (pure_slip || frictionless_law(s))
+      return sign;
+    // A node with neither traction nor slip (it just touched) sticks.
+    return std::abs(trial) <= laws[s.pair]->threshold(std::max(p, 0.)) ? 0 : sign;
+  }
+
+  template <int dim>
+  double
+  PenaltyFrictional<dim>::tangential_traction(const SlaveNode &s,
+                                              const int        sign,
+                                              const double     p,
+                                              const double     xi) const
+  {
+    if (sign == 0)
+      return accepted_tangential[s.node] - tangent_penalty[s.pair] * xi;
+    return sign * laws[s.pair]->threshold(std::max(p, 0.));
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictional<dim>::start_load_step(const ContactInterface<dim> &interface,
+                                          const std::vector<double>   &u,
+                                          const bool                   first_step)
+  {
+    PenaltyFrictionless<dim>::start_load_step(interface, u, first_step);
+    tangent_penalty.resize(this->penalty.size());
+    for (unsigned int p = 0; p < tangent_penalty.size(); ++p)
+      tangent_penalty[p] = tangential_penalty > 0. ? tangential_penalty : this->penalty[p];
+    for (unsigned int n = 0; n < interface.nodes.size(); ++n)
+      if (!this->active[n])
+        {
+          tangential[n] = 0.;
+          slip_sign[n]  = 0;
+        }
+    for (const auto &s : interface.slave_nodes)
+      {
+        if (!this->active[s.node])
+          continue;
+        if (!has_friction(interface, s))
+          {
+            tangential[s.node] = 0.;
+            slip_sign[s.node]  = 0;
+            continue;
+          }
+        // The elastic predictor: every node starts the step sticking (a node
+        // that slipped has its trial traction on the bound, where round-off
+        // would decide); the first solve tells which slip, and which way.
+        // A law without friction, or Pure slip, slips at once.
+        const double g = interface.gap(s, u);
+        slip_sign[s.node] =
+          pure_slip || frictionless_law(s) ?
+            stick_or_slip(s, this->penalty[s.pair] * (-g), slip_increment(interface, s, u)) :
+            0;
+      }
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictional<dim>::add_sparsity(const ContactInterface<dim>    &interface,
+                                       const AffineConstraints<double> &constraints,
+                                       const IndexSet                  &owned,
+                                       DynamicSparsityPattern          &pattern) const
+  {
+    const bool any_friction = std::any_of(laws.begin(), laws.end(), [](const auto &law) {
+      return law->threshold(1.) != 0. || law->threshold_derivative(1.) != 0.;
+    });
+    if (!any_friction)
+      {
+        PenaltyFrictionless<dim>::add_sparsity(interface, constraints, owned, pattern);
+        return;
+      }
+    std::vector<types::global_dof_index> dofs;
+    std::vector<double>                  gradient;
+    for (const auto &s : interface.slave_nodes)
+      if (s.paired && owned.is_element(interface.nodes[s.node].dofs[0]))
+        {
+          // The DoFs of gap_gradient() are every component of the slave
+          // node and its masters, whatever the normal.
+          this->gap_gradient(interface, s, dofs, gradient);
+          constraints.add_entries_local_to_global(dofs, pattern, true);
+        }
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictional<dim>::assemble(const ContactInterface<dim>    &interface,
+                                   const AffineConstraints<double> &constraints,
+                                   const IndexSet                  &owned,
+                                   TrilinosWrappers::SparseMatrix  &matrix,
+                                   TrilinosWrappers::MPI::Vector   &rhs) const
+  {
+    PenaltyFrictionless<dim>::assemble(interface, constraints, owned, matrix, rhs);
+    // The tangential force D_j t_j grad xi_j with t_j linear in u:
+    // stick: t = t_n - eps_t grad xi . (u - u_n);
+    // slip:  t = sigma (T(p_k) + T'(p_k) (p(u) - p_k)), p(u) = -eps_n (g(0) +
+    // grad g . u) (exact for Coulomb and Tresca).
+    const std::vector<double>            zero(interface.dofs().size(), 0.);
+    std::vector<types::global_dof_index> dofs;
+    std::vector<double>                  g_gradient, xi_gradient;
+    for (const auto &s : interface.slave_nodes)
+      {
+        if (!this->active[s.node] || !has_friction(interface, s) ||
+            !owned.is_element(interface.nodes[s.node].dofs[0]))
+          continue;
+        const int sign = slip_sign[s.node];
+        if (sign != 0 && frictionless_law(s))
+          continue; // T = 0: the frictionless system
+        this->gap_gradient(interface, s, dofs, g_gradient);
+        slip_gradient(interface, s, xi_gradient);
+        const unsigned int n = dofs.size();
+        FullMatrix<double> local_matrix(n, n);
+        Vector<double>     local_rhs(n);
+        if (sign == 0)
+          {
+            const double eps_t = tangent_penalty[s.pair];
+            // grad xi . u_n: the slip reference.
+            const double xi_reference = -slip_increment(interface, s, zero);
+            const double load         = s.D * (accepted_tangential[s.node] + eps_t * xi_reference);
+            for (unsigned int a = 0; a < n; ++a)
+              {
+                for (unsigned int b = 0; b < n; ++b)
+                  local_matrix(a, b) = eps_t * s.D * xi_gradient[a] * xi_gradient[b];
+                local_rhs(a) = load * xi_gradient[a];
+              }
+          }
+        else
+          {
+            const double eps_n  = this->penalty[s.pair];
+            const double p      = std::max(this->pressure[s.node], 0.);
+            const double T      = laws[s.pair]->threshold(p);
+            const double dT     = laws[s.pair]->threshold_derivative(p);
+            const double g0     = interface.gap(s, zero);
+            const double load   = s.D * sign * (T - dT * p - dT * eps_n * g0);
+            const double factor = s.D * sign * dT * eps_n;
+            for (unsigned int a = 0; a < n; ++a)
+              {
+                for (unsigned int b = 0; b < n; ++b)
+                  local_matrix(a, b) = factor * xi_gradient[a] * g_gradient[b];
+                local_rhs(a) = load * xi_gradient[a];
+              }
+          }
+        constraints.distribute_local_to_global(local_matrix, local_rhs, dofs, matrix, rhs);
+      }
+  }
+
+  template <int dim>
+  unsigned int
+  PenaltyFrictional<dim>::update_active_set(const ContactInterface<dim> &interface,
+                                            const std::vector<double>   &u)
+  {
+    const std::vector<bool> was_active = this->active;
+    // Active set and p_j = eps_n (-g_j) of the new iterate.
+    unsigned int changes    = PenaltyFrictionless<dim>::update_active_set(interface, u);
+    last_stick_slip_changes = 0;
+    for (const auto &s : interface.slave_nodes)
+      {
+        if (!s.paired)
+          continue;
+        if (!this->active[s.node] || !has_friction(interface, s))
+          {
+            tangential[s.node] = 0.;
+            slip_sign[s.node]  = 0;
+            continue;
+          }
+        const double p    = this->pressure[s.node];
+        const double xi   = slip_increment(interface, s, u);
+        int          sign = stick_or_slip(s, p, xi);
+        // A slipping node reverses through stick: its slip solve overshoots
+        // (with eps_t ~ 1e4 E/h a node that should stick swings from one
+        // bound to the other, period 2, if the sign may flip directly).
+        if (was_active[s.node] && slip_sign[s.node] != 0 && sign == -slip_sign[s.node] &&
+            !pure_slip && !frictionless_law(s))
+          sign = 0;
+        // Under a law without friction the sign changes nothing.
+        if (was_active[s.node] && sign != slip_sign[s.node] && !frictionless_law(s))
+          {
+            ++changes;
+            ++last_stick_slip_changes;
+          }
+        slip_sign[s.node]  = sign;
+        tangential[s.node] = tangential_traction(s, sign, p, xi);
+      }
+    return changes;
+  }
+
+  template <int dim>
+  typename PenaltyFrictional<dim>::Residuals
+  PenaltyFrictional<dim>::residuals(const ContactInterface<dim> &interface,
+                                    const std::vector<double>   &u) const
+  {
+    // The normal forces of the base class plus D_j t_j tau on the slave and
+    // -M_jl t_j tau on the masters.
+    Residuals result = PenaltyFrictionless<dim>::residuals(interface, u);
+    for (const auto &s : interface.slave_nodes)
+      {
+        const double t = tangential[s.node];
+        if (!s.paired || !this->active[s.node] || t == 0.)
+          continue;
+        const Tensor<1, dim> tau = ContactFormulation<dim>::tangent(s.normal);
+        for (unsigned int d = 0; d < dim; ++d)
+          result.contact_force[interface.position(interface.nodes[s.node].dofs[d])] +=
+            s.D * t * tau[d];
+        for (const auto &[m, value] : s.M)
+          for (unsigned int d = 0; d < dim; ++d)
+            result.contact_force[interface.position(interface.nodes[m].dofs[d])] -=
+              value * t * tau[d];
+      }
+    return result;
+  }
+
+  template <int dim>
+  unsigned int
+  PenaltyFrictional<dim>::n_stick() const
+  {
+    unsigned int n = 0;
+    for (unsigned int i = 0; i < slip_sign.size(); ++i)
+      n += sticks(i);
+    return n;
+  }
+
+  template <int dim>
+  std::vector<int>
+  PenaltyFrictional<dim>::contact_sets() const
+  {
+    std::vector<int> sets(slip_sign.size(), 0);
+    for (unsigned int n = 0; n < sets.size(); ++n)
+      if (this->active[n])
+        sets[n] = slip_sign[n] == 0 ? 1 : (slip_sign[n] > 0 ? 2 : 3);
+    return sets;
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictional<dim>::accept_load_step(const ContactInterface<dim> &,
+                                           const std::vector<double> &u)
+  {
+    converged_displacement = u;
+    accepted_tangential    = tangential;
+  }
+
+  template <int dim>
+  std::unique_ptr<typename PenaltyFrictional<dim>::State>
+  PenaltyFrictional<dim>::save_state() const
+  {
+    auto state                    = std::make_unique<FrictionState>();
+    state->normal                 = PenaltyFrictionless<dim>::save_state();
+    state->tangential             = tangential;
+    state->converged_displacement = converged_displacement;
+    state->accepted_tangential    = accepted_tangential;
+    state->slip_sign              = slip_sign;
+    return state;
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictional<dim>::restore_state(const State &state)
+  {
+    const auto &saved = dynamic_cast<const FrictionState &>(state);
+    PenaltyFrictionless<dim>::restore_state(*saved.normal);
+    tangential             = saved.tangential;
+    converged_displacement = saved.converged_displacement;
+    accepted_tangential    = saved.accepted_tangential;
+    slip_sign              = saved.slip_sign;
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictional<dim>::add_results(const ContactInterface<dim> &interface,
+                                      Json                        &contact) const
+  {
+    PenaltyFrictionless<dim>::add_results(interface, contact);
+    Json law_names = Json::array();
+    for (const auto &law : laws)
+      law_names.push(law->description());
+    contact.set("friction", law_names)
+      .set("tangential_penalty", tangent_penalty.empty() ? 0. : tangent_penalty[0])
+      .set("stick_nodes", n_stick())
+      .set("slip_nodes", this->n_active() - n_stick());
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictional<dim>::print_results(const ContactInterface<dim> &interface,
+                                        const std::vector<double>   &u,
+                                        std::ostream                &out) const
+  {
+    PenaltyFrictionless<dim>::print_results(interface, u, out);
+    // sum_j D_j t_j and sum_j D_j p_j over the active nodes; with a single
+    // Coulomb law (T(0) = 0) and every active node slipping one way their
+    // ratio is mu up to round-off.
+    double tangential_force = 0., normal_force = 0.;
+    int    common_sign = 0;
+    bool   all_slip = true, one_way = true;
+    for (const auto &s : interface.slave_nodes)
+      if (s.paired && this->active[s.node])
+        {
+          tangential_force += s.D * tangential[s.node];
+          normal_force += s.D * this->pressure[s.node];
+          if (slip_sign[s.node] == 0 || !has_friction(interface, s))
+            all_slip = false;
+          else if (common_sign == 0)
+            common_sign = slip_sign[s.node];
+          else if (slip_sign[s.node] != common_sign)
+            one_way = false;
+        }
+    out << "    tangential contact force:     " << tangential_force << std::endl
+        << "    normal contact force:         " << normal_force << std::endl;
+    if (normal_force == 0.)
+      return;
+    const double ratio = tangential_force / normal_force;
+    out << "    tangential / normal force:    " << ratio << std::endl;
+    const bool one_coulomb_law =
+      std::all_of(laws.begin(), laws.end(), [&](const auto &law) {
+        return law->threshold(0.) == 0. &&
+               law->threshold_derivative(1.) == laws[0]->threshold_derivative(1.);
+      });
+    if (one_coulomb_law && all_slip && one_way && common_sign != 0)
+      {
+        // Relative to mu (absolute for mu = 0).
+        const double mu = laws[0]->threshold_derivative(1.);
+        out << "    |ratio| - mu (all slip):      "
+            << value_or_ok((std::abs(ratio) - mu) / (mu > 0. ? mu : 1.), 1e-8) << std::endl;
+      }
+  }
+
+  template class PenaltyFrictional<2>;
+  template class PenaltyFrictional<3>;
+} // namespace contact_fem
