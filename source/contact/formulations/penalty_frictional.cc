@@ -99,6 +99,7 @@ namespace contact_fem
     tangential.assign(n, 0.);
     accepted_tangential.assign(n, 0.);
     slip_sign.assign(n, 0);
+    last_step_slip.assign(n, 0.);
     converged_displacement.assign(interface.dofs().size(), 0.);
     last_stick_slip_changes = 0;
   }
@@ -374,6 +375,16 @@ namespace contact_fem
   }
 
   template <int dim>
+  unsigned int
+  PenaltyFrictional<dim>::n_slip() const
+  {
+    unsigned int n = 0;
+    for (unsigned int i = 0; i < slip_sign.size(); ++i)
+      n += this->active[i] && slip_sign[i] != 0;
+    return n;
+  }
+
+  template <int dim>
   std::vector<int>
   PenaltyFrictional<dim>::contact_sets() const
   {
@@ -386,9 +397,13 @@ namespace contact_fem
 
   template <int dim>
   void
-  PenaltyFrictional<dim>::accept_load_step(const ContactInterface<dim> &,
-                                           const std::vector<double> &u)
+  PenaltyFrictional<dim>::accept_load_step(const ContactInterface<dim> &interface,
+                                           const std::vector<double>   &u)
   {
+    last_step_slip.assign(interface.nodes.size(), 0.);
+    for (const auto &s : interface.slave_nodes)
+      if (s.paired)
+        last_step_slip[s.node] = slip_increment(interface, s, u);
     converged_displacement = u;
     accepted_tangential    = tangential;
   }
@@ -403,6 +418,7 @@ namespace contact_fem
     state->converged_displacement = converged_displacement;
     state->accepted_tangential    = accepted_tangential;
     state->slip_sign              = slip_sign;
+    state->last_step_slip         = last_step_slip;
     return state;
   }
 
@@ -416,6 +432,7 @@ namespace contact_fem
     converged_displacement = saved.converged_displacement;
     accepted_tangential    = saved.accepted_tangential;
     slip_sign              = saved.slip_sign;
+    last_step_slip         = saved.last_step_slip;
   }
 
   template <int dim>
@@ -458,12 +475,11 @@ namespace contact_fem
           else if (slip_sign[s.node] != common_sign)
             one_way = false;
         }
-    out << "    tangential contact force:     " << tangential_force << std::endl
-        << "    normal contact force:         " << normal_force << std::endl;
+    // The forces themselves are printed by the driver with every
+    // frictional formulation's results; here only the slip check.
     if (normal_force == 0.)
       return;
     const double ratio = tangential_force / normal_force;
-    out << "    tangential / normal force:    " << ratio << std::endl;
     const bool one_coulomb_law =
       std::all_of(laws.begin(), laws.end(), [&](const auto &law) {
         return law->threshold(0.) == 0. &&

@@ -131,6 +131,15 @@ namespace contact_fem
     n_stick() const override;
 
     unsigned int
+    n_slip() const override;
+
+    double
+    accepted_slip(const unsigned int n) const override
+    {
+      return last_step_slip[n];
+    }
+
+    unsigned int
     stick_slip_changes() const override
     {
       return last_stick_slip_changes;
@@ -203,6 +212,8 @@ namespace contact_fem
 
     std::vector<double> tangential; ///< t_j per interface node
     std::vector<int>    slip_sign;  ///< 0 stick, +-1 slip (active nodes)
+    /// Slip of every interface node in the last accepted load step.
+    std::vector<double> last_step_slip;
     /// Interface displacement and tangential tractions of the last accepted
     /// load step (the history).
     std::vector<double> converged_displacement;
@@ -214,6 +225,7 @@ namespace contact_fem
       std::unique_ptr<State> normal;
       std::vector<double>    tangential, converged_displacement, accepted_tangential;
       std::vector<int>       slip_sign;
+      std::vector<double>    last_step_slip;
     };
   };
 } // namespace contact_fem
