@@ -323,13 +323,44 @@ namespace contact_fem
   }
 
   template <int dim>
+  std::map<unsigned int, std::pair<Tensor<1, 2>, double>>
+  ContactInterface<dim>::surface_node_normals(const std::vector<Mortar::LineFace> &lines,
+                                              const std::vector<double>           &lengths,
+                                              const bool                           slave) const
+  {
+    std::map<unsigned int, std::pair<Tensor<1, 2>, double>> result;
+    std::map<unsigned int, double>                           length_of_node;
+    for (unsigned int f = 0; f < faces.size(); ++f)
+      if (faces[f].slave == slave)
+        for (unsigned int k = 0; k < faces[f].nodes.size(); ++k)
+          {
+            auto &[normal, modulus] = result[faces[f].nodes[k]];
+            normal += lengths[f] * Mortar::face_normal(lines[f], Mortar::node_parameter(degree, k),
+                                                       faces[f].orientation);
+            modulus += lengths[f] * faces[f].youngs_modulus /
+                       (1. - faces[f].poisson_ratio * faces[f].poisson_ratio);
+            length_of_node[faces[f].nodes[k]] += lengths[f];
+          }
+    for (auto &[n, value] : result)
+      {
+        value.first /= value.first.norm();
+        value.second /= length_of_node[n];
+      }
+    return result;
+  }
+
+  template <int dim>
   void
   ContactInterface<dim>::store_slave_nodes(
     std::map<unsigned int, SlaveNode>                      &slave_data,
     std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
     std::map<unsigned int, Tensor<1, 2>>                   &weighted_gap_of_node,
-    const std::vector<double>                              &u_at_dofs)
+    const std::vector<double>                              &u_at_dofs,
+    const std::vector<Mortar::LineFace>                    &lines,
+    const std::vector<double>                              &lengths)
   {
+    const auto slave_normals  = surface_node_normals(lines, lengths, true);
+    const auto master_normals = surface_node_normals(lines, lengths, false);
     // A node counts as paired when the master covers a fair part of its
     // support; tiny or negative dual weights at the rim of the master
     // surface would make its gap ill-defined.
@@ -347,7 +378,31 @@ namespace contact_fem
             for (unsigned int d = 0; d < 2; ++d)
               normal[d] = s.normal[d];
             s.curvature_gap = normal * weighted_gap_of_node[n] - s.D * gap(s, u_at_dofs);
+
+            // The M-weighted master normal and modulus at the projection.
+            Tensor<1, 2> master_normal;
+            double       master_modulus = 0., weight = 0.;
+            for (const auto &[m, value] : s.M)
+              if (const auto it = master_normals.find(m); it != master_normals.end())
+                {
+                  master_normal += value * it->second.first;
+                  master_modulus += value * it->second.second;
+                  weight += value;
+                }
+            const double slave_modulus = slave_normals.at(n).second;
+            Tensor<1, 2> shared        = slave_modulus * normal;
+            if (weight > 0. && master_normal.norm() > 0.)
+              shared -= (master_modulus / weight) * master_normal / master_normal.norm();
+            // Surfaces that do not face each other (a master normal along
+            // the slave's) leave no shared plane: keep the slave normal.
+            if (shared * normal <= 0.)
+              shared = normal;
+            shared /= shared.norm();
+            for (unsigned int d = 0; d < 2; ++d)
+              s.interface_normal[d] = shared[d];
           }
+        else
+          s.interface_normal = s.normal;
         slave_nodes.push_back(s);
       }
   }
@@ -501,7 +556,7 @@ namespace contact_fem
               }
           }
 
-        store_slave_nodes(slave_data, M_of_node, weighted_gap_of_node, u_at_dofs);
+        store_slave_nodes(slave_data, M_of_node, weighted_gap_of_node, u_at_dofs, lines, lengths);
       }
   }
 

@@ -191,7 +191,7 @@ namespace contact_fem
       if (s.paired && contact->is_active(s.node))
         {
           const Tensor<1, dim> lambda = contact->traction(s);
-          const double         t      = lambda * ContactFormulation<dim>::tangent(s.normal);
+          const double         t      = lambda * ContactFormulation<dim>::tangent(contact->frame_normal(s));
           normal += s.D * contact->normal_pressure(s.node);
           tangential += s.D * t;
           length += s.D;
@@ -586,7 +586,7 @@ namespace contact_fem
           if (frictional)
             {
               rows.back().push_back(contact->traction(s) *
-                                    ContactFormulation<dim>::tangent(s.normal));
+                                    ContactFormulation<dim>::tangent(contact->frame_normal(s)));
               rows.back().push_back(contact->accepted_slip(s.node));
               rows.back().push_back(contact->sticks(s.node) ? 1. : 0.);
             }
@@ -654,7 +654,7 @@ namespace contact_fem
               if (frictional)
                 {
                   tangential[s.node] =
-                    contact->traction(s) * ContactFormulation<dim>::tangent(s.normal);
+                    contact->traction(s) * ContactFormulation<dim>::tangent(contact->frame_normal(s));
                   slip[s.node] = contact->accepted_slip(s.node);
                 }
             }

@@ -1387,6 +1387,12 @@ namespace contact_fem
     if (!contact || !factorisation_current || !linear_solver->can_solve_again() ||
         linear_solver->n_null_pivots() > 0)
       return;
+    // Stick nodes tie the bodies together: a rotation is then resisted by
+    // the elasticity of the contact zone (compliant for a small zone, but
+    // physical, not a discretisation artefact), and the factors of an
+    // unsymmetric slip system are not those of the probe's test space.
+    if (contact->frictional() && contact->n_stick() > 0)
+      return;
     TimerOutput::Scope t(*timer, "Check: held rotation");
     double                          softest = std::numeric_limits<double>::max();
     std::vector<types::material_id> bodies;

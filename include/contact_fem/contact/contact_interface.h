@@ -76,6 +76,13 @@ namespace contact_fem
       unsigned int  node;
       unsigned int  pair;
       Tensor<1, dim> normal;            ///< unit, out of the slave body
+      /// Unit normal of the interface the two surfaces share once pressed
+      /// together, out of the slave: the mean of the slave normal and the
+      /// reversed master normal at the projection, weighted by the
+      /// plane-strain moduli (each surface deflects in proportion to its
+      /// compliance, so a rigid master keeps its own normal and equal
+      /// bodies meet half-way). The frame of the frictional conditions.
+      Tensor<1, dim> interface_normal;
       double        D         = 0.;     ///< int over the overlap of Phi_j
       double        full_area = 0.;     ///< int of N_j over the adjacent slave faces
       double        size      = 0.;     ///< nodal element size h_j
@@ -236,6 +243,14 @@ namespace contact_fem
     slave_node_geometry(const std::vector<Mortar::LineFace> &lines,
                         const std::vector<double>           &lengths) const;
 
+    /// Per node of the slave (@p slave) or master surfaces: the
+    /// length-weighted mean unit normal of its faces and their mean
+    /// plane-strain modulus E / (1 - nu^2) (2D).
+    std::map<unsigned int, std::pair<Tensor<1, 2>, double>>
+    surface_node_normals(const std::vector<Mortar::LineFace> &lines,
+                         const std::vector<double>           &lengths,
+                         const bool                           slave) const;
+
     /// Fills slave_nodes from the integrated operators: a node is paired
     /// when the master covers a fair part of its support; its M entries
     /// and curvature gap are set.
@@ -243,7 +258,9 @@ namespace contact_fem
     store_slave_nodes(std::map<unsigned int, SlaveNode>                      &slave_data,
                       std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
                       std::map<unsigned int, Tensor<1, 2>>                   &weighted_gap_of_node,
-                      const std::vector<double>                              &u_at_dofs);
+                      const std::vector<double>                              &u_at_dofs,
+                      const std::vector<Mortar::LineFace>                    &lines,
+                      const std::vector<double>                              &lengths);
 
     /// Displacement at dofs() of the last search, and its reach per pair.
     std::vector<double>                                 search_displacement;

@@ -134,7 +134,7 @@ namespace contact_fem
     for (const auto &[m, value] : s.M)
       relative -= (value / s.D) * (interface.displacement(m, u) -
                                    interface.displacement(m, converged_displacement));
-    return relative * ContactFormulation<dim>::tangent(s.normal);
+    return relative * ContactFormulation<dim>::tangent(frame_normal(s));
   }
 
   template <int dim>
@@ -163,9 +163,10 @@ namespace contact_fem
   Tensor<1, dim>
   AlmFrictional<dim>::slip_direction(const SlaveNode &s) const
   {
-    const double p = this->pressure[s.node];
-    return ContactFormulation<dim>::tangent(s.normal) +
-           slip_sign[s.node] * laws[s.pair]->threshold_derivative(p) * s.normal;
+    const double         p = this->pressure[s.node];
+    const Tensor<1, dim> n = frame_normal(s);
+    return ContactFormulation<dim>::tangent(n) +
+           slip_sign[s.node] * laws[s.pair]->threshold_derivative(p) * n;
   }
 
   template <int dim>
@@ -242,14 +243,22 @@ namespace contact_fem
     // u_j = sum_l M_jl / D_j u_l + n (gap offset) + tau (slip offset): the
     // normal part closes the gap, the tangential part keeps the relative
     // position of the last accepted step.
-    const Tensor<1, dim> tau = ContactFormulation<dim>::tangent(s.normal);
+    // The offset z solves n . z = gap offset (slave normal, as the gap) and
+    // tau . z = tau . (old relative displacement) (frame tangent); the two
+    // directions differ by the small angle between the slave and the
+    // interface normal, so the 2x2 system is well conditioned.
+    const Tensor<1, dim> tau = ContactFormulation<dim>::tangent(frame_normal(s));
     double               normal_offset = s.curvature_gap / s.D - s.normal * slave.reference;
     for (const auto &[m, value] : s.M)
       normal_offset += value * (s.normal * interface.nodes[m].reference) / s.D;
     Tensor<1, dim> old_relative = interface.displacement(s.node, converged_displacement);
     for (const auto &[m, value] : s.M)
       old_relative -= (value / s.D) * interface.displacement(m, converged_displacement);
-    const Tensor<1, dim> offset = normal_offset * s.normal + (old_relative * tau) * tau;
+    const double   tangential_offset = old_relative * tau;
+    const double   det = s.normal[0] * tau[1] - s.normal[1] * tau[0];
+    Tensor<1, dim> offset;
+    offset[0] = (normal_offset * tau[1] - s.normal[1] * tangential_offset) / det;
+    offset[1] = (s.normal[0] * tangential_offset - tau[0] * normal_offset) / det;
     for (unsigned int d = 0; d < dim; ++d)
       {
         ConstraintLine line;
@@ -394,7 +403,7 @@ namespace contact_fem
                                               laws[s.pair]->threshold_derivative(p) * p);
         if (h == 0.)
           continue;
-        const Tensor<1, dim> tau = ContactFormulation<dim>::tangent(s.normal);
+        const Tensor<1, dim> tau = ContactFormulation<dim>::tangent(frame_normal(s));
         dofs.clear();
         std::vector<double> force;
         for (unsigned int d = 0; d < dim; ++d)
@@ -442,8 +451,9 @@ namespace contact_fem
         Tensor<1, dim> lambda;
         for (unsigned int d = 0; d < dim; ++d)
           lambda[d] = residual[interface.position(slave.dofs[d])] / s.D;
-        this->pressure[s.node] = -(lambda * s.normal);
-        tangential[s.node]     = lambda * ContactFormulation<dim>::tangent(s.normal);
+        const Tensor<1, dim> n = frame_normal(s);
+        this->pressure[s.node] = -(lambda * n);
+        tangential[s.node]     = lambda * ContactFormulation<dim>::tangent(n);
       }
   }
 

@@ -100,8 +100,17 @@ namespace contact_fem
     Tensor<1, dim>
     traction(const SlaveNode &s) const override
     {
-      return -this->pressure[s.node] * s.normal +
-             tangential[s.node] * ContactFormulation<dim>::tangent(s.normal);
+      const Tensor<1, dim> n = frame_normal(s);
+      return -this->pressure[s.node] * n + tangential[s.node] * ContactFormulation<dim>::tangent(n);
+    }
+
+    /// The shared interface normal where the law has friction; the slave
+    /// normal at nodes held by a support or under a law without friction
+    /// (mu = 0 then is exactly the frictionless formulation).
+    Tensor<1, dim>
+    frame_normal(const SlaveNode &s) const override
+    {
+      return held[s.node] || frictionless_law(s) ? s.normal : s.interface_normal;
     }
 
     bool

@@ -134,6 +134,16 @@ namespace contact_fem
     virtual Tensor<1, dim>
     traction(const typename ContactInterface<dim>::SlaveNode &s) const = 0;
 
+    /// The unit normal of the frame in which the formulation splits the
+    /// traction of slave node @p s into pressure and tangential traction:
+    /// the slave normal, or for a frictional law the shared interface
+    /// normal (ContactInterface::SlaveNode::interface_normal).
+    virtual Tensor<1, dim>
+    frame_normal(const typename ContactInterface<dim>::SlaveNode &s) const
+    {
+      return s.normal;
+    }
+
     /// normal_pressure() of every interface node.
     std::vector<double>
     pressures(const ContactInterface<dim> &interface) const;
