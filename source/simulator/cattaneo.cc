@@ -153,7 +153,8 @@ namespace contact_fem
   Json
   cattaneo_results(const ContactInterface<dim>   &interface,
                    const ContactFormulation<dim> &contact,
-                   const AnalyticalSolution      &analytical)
+                   const AnalyticalSolution      &analytical,
+                   const std::vector<double>     *tangential)
   {
     double E[2] = {0., 0.}, nu[2] = {0., 0.};
     for (const auto &face : interface.faces)
@@ -177,8 +178,11 @@ namespace contact_fem
           node.x = interface.nodes[s.node].reference[0] +
                    interface.displacement(s.node, interface.search_configuration())[0] -
                    analytical.center;
-          node.t =
-            active ? contact.traction(s) * ContactFormulation<dim>::tangent(contact.frame_normal(s)) : 0.;
+          node.t = !active ? 0. :
+                   tangential ?
+                              (*tangential)[s.node] :
+                              contact.traction(s) *
+                                ContactFormulation<dim>::tangent(contact.frame_normal(s));
           node.weight = s.D;
           node.active = active;
           node.stick  = contact.sticks(s.node);
@@ -200,8 +204,8 @@ namespace contact_fem
 
   template Json
   cattaneo_results(const ContactInterface<2> &, const ContactFormulation<2> &,
-                   const AnalyticalSolution &);
+                   const AnalyticalSolution &, const std::vector<double> *);
   template Json
   cattaneo_results(const ContactInterface<3> &, const ContactFormulation<3> &,
-                   const AnalyticalSolution &);
+                   const AnalyticalSolution &, const std::vector<double> *);
 } // namespace contact_fem

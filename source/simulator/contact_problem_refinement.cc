@@ -5,6 +5,7 @@
 #include <deal.II/numerics/error_estimator.h>
 
 #include <contact_fem/simulator/contact_problem.h>
+#include <contact_fem/simulator/cattaneo.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/adaptivity/marking.h>
 #include <contact_fem/contact/mortar.h>
@@ -68,7 +69,11 @@ namespace contact_fem
     // pressure by the same L2 measure as the mortar pressure; its shear
     // part, which a frictionless contact makes zero, is reported as the
     // largest over the active nodes.
+    // With friction the shear part is compared with the mortar tangential
+    // traction instead (it is no longer zero), and with Cattaneo.
+    const bool          frictional = contact->frictional();
     std::vector<double> pressure(interface->nodes.size(), 0.);
+    std::vector<double> tangential(interface->nodes.size(), 0.);
     double              largest_shear = 0., p_max = 0.;
     std::size_t         i = 0; // @p nodes are the paired slave nodes in order
     for (const auto &s : interface->slave_nodes)
@@ -88,7 +93,15 @@ namespace contact_fem
           pressure[s.node]              = s.D > 0. ? normal * reference_length / s.D : normal;
           if (contact->is_active(s.node))
             {
-              largest_shear = std::max(largest_shear, (traction + normal * n).norm());
+              Tensor<1, dim> shear = traction + normal * n;
+              if (frictional)
+                {
+                  const Tensor<1, dim> tau =
+                    ContactFormulation<dim>::tangent(contact->frame_normal(s));
+                  tangential[s.node] = (s.D > 0. ? reference_length / s.D : 1.) * (traction * tau);
+                  shear = (tangential[s.node] - contact->traction(s) * tau) * tau;
+                }
+              largest_shear = std::max(largest_shear, shear.norm());
               p_max         = std::max(p_max, contact->normal_pressure(s.node));
             }
           ++i;
@@ -96,8 +109,25 @@ namespace contact_fem
     AssertThrow(i == nodes.size() && i == node_stresses.size(), ExcInternalError());
     const double      shear = p_max > 0. ? largest_shear / p_max : 0.;
     const std::string label = prefix.empty() ? "    recovered" : "    plain SPR recovered";
-    cycle_record.set(prefix + "recovered_shear_traction_max_relative", shear);
-    pcout << label << " shear traction / p_max: " << value_or_ok(shear, 1e-6) << std::endl;
+    if (frictional)
+      {
+        cycle_record.set(prefix + "recovered_tangential_traction_deviation_max_relative", shear);
+        pcout << label << " tangential traction - mortar one, largest / p_max: "
+              << value_or_ok(shear, 1e-6) << std::endl;
+      }
+    else
+      {
+        cycle_record.set(prefix + "recovered_shear_traction_max_relative", shear);
+        pcout << label << " shear traction / p_max: " << value_or_ok(shear, 1e-6) << std::endl;
+      }
+    if (analytical.type == "cattaneo")
+      {
+        const Json   cattaneo = cattaneo_results(*interface, *contact, analytical, &tangential);
+        const double error    = cattaneo["tangential_l2_relative_error"].number_value();
+        cycle_record.set(prefix + "recovered_tangential_l2_relative_error_cattaneo", error);
+        pcout << label << " tangential traction, L2 error against Cattaneo: "
+              << value_or_ok(error, 1e-10) << std::endl;
+      }
     if (analytical.type == "hertz cylinder")
       {
         const double error = hertz_pressure_error(pressure);
@@ -138,6 +168,7 @@ namespace contact_fem
     // inactive ones not imposed, in the order report_recovered_tractions()
     // expects.
     const bool pressure_known = contact && (analytical.type == "hertz cylinder" ||
+                                            analytical.type == "cattaneo" ||
                                             !analytical.reference_pressure_profile.empty());
     std::vector<ContactNodeTraction<dim>> tractions;
     if (contact && (settings.contact_terms || pressure_known))
@@ -150,10 +181,16 @@ namespace contact_fem
               double      reference = 0.;
               for (const auto &q : samples)
                 reference += q.weight;
-              const bool   active = contact->is_active(s.node);
-              const double force  = active ? contact->normal_pressure(s.node) * s.D : 0.;
-              tractions.push_back({interface->nodes[s.node].reference, s.normal,
-                                   -force / reference * s.normal, samples, active});
+              const bool active = contact->is_active(s.node);
+              // With friction the whole traction vector (normal and
+              // tangential) is imposed, not the pressure alone.
+              Tensor<1, dim> traction;
+              if (active && contact->frictional())
+                traction = (s.D / reference) * contact->traction(s);
+              else if (active)
+                traction = -contact->normal_pressure(s.node) * s.D / reference * s.normal;
+              tractions.push_back(
+                {interface->nodes[s.node].reference, s.normal, traction, samples, active});
             }
       }
     const auto spr = StressRecovery<dim>::estimate(*mapping, dof_handler, ghosted_solution,

@@ -99,13 +99,16 @@ namespace contact_fem
    * the paired slave nodes), E* from the materials of the first pair, R* =
    * Analytical solution/Radius, x of each node in the configuration the
    * mortar operators were built on (the reference one with Contact/
-   * Kinematics = small) less Analytical solution/Center.
+   * Kinematics = small) less Analytical solution/Center. With
+   * @p tangential (per interface node) those tangential tractions are
+   * compared instead of the formulation's (e.g. the recovered stress's).
    */
   template <int dim>
   Json
   cattaneo_results(const ContactInterface<dim>   &interface,
                    const ContactFormulation<dim> &contact,
-                   const AnalyticalSolution      &analytical);
+                   const AnalyticalSolution      &analytical,
+                   const std::vector<double>     *tangential = nullptr);
 } // namespace contact_fem
 
 #endif

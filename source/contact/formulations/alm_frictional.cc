@@ -96,11 +96,7 @@ namespace contact_fem
     FrictionlessFormulation<dim>::initialize(interface);
     const unsigned int n = interface.nodes.size();
     tangential.assign(n, 0.);
-    slip_sign.assign(n, 0);
-    held.assign(n, false);
-    for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        held[i] = held[i] || interface.nodes[i].fixed[d];
+    sets.initialize(interface);
     released_pressure.assign(n, 0.);
     released_tangential.assign(n, 0.);
     converged_displacement.assign(interface.dofs().size(), 0.);
@@ -109,32 +105,13 @@ namespace contact_fem
   }
 
   template <int dim>
-  bool
-  AlmFrictional<dim>::has_friction(const ContactInterface<dim> &interface,
-                                   const SlaveNode             &s) const
-  {
-    if (!s.paired)
-      return false;
-    for (unsigned int d = 0; d < dim; ++d)
-      if (interface.nodes[s.node].fixed[d])
-        return false;
-    return true;
-  }
-
-  template <int dim>
   double
   AlmFrictional<dim>::slip_increment(const ContactInterface<dim> &interface,
                                      const SlaveNode             &s,
                                      const std::vector<double>   &u) const
   {
-    // Slave minus its mortar image on the master, since the last accepted
-    // step: xi_j = tau . (du_j - sum_l M_jl / D_j du_l).
-    Tensor<1, dim> relative =
-      interface.displacement(s.node, u) - interface.displacement(s.node, converged_displacement);
-    for (const auto &[m, value] : s.M)
-      relative -= (value / s.D) * (interface.displacement(m, u) -
-                                   interface.displacement(m, converged_displacement));
-    return relative * ContactFormulation<dim>::tangent(frame_normal(s));
+    return weighted_slip(interface, s, converged_displacement, u,
+                         ContactFormulation<dim>::tangent(frame_normal(s)));
   }
 
   template <int dim>
@@ -166,7 +143,7 @@ namespace contact_fem
     const double         p = this->pressure[s.node];
     const Tensor<1, dim> n = frame_normal(s);
     return ContactFormulation<dim>::tangent(n) +
-           slip_sign[s.node] * laws[s.pair]->threshold_derivative(p) * n;
+           sets.sign[s.node] * laws[s.pair]->threshold_derivative(p) * n;
   }
 
   template <int dim>
@@ -214,11 +191,11 @@ namespace contact_fem
             released_tangential[s.node] = tangential[s.node];
             pressure[s.node]            = 0.;
             tangential[s.node]          = 0.;
-            slip_sign[s.node]           = 0;
+            sets.sign[s.node]           = 0;
             continue;
           }
-        slip_sign[s.node] =
-          has_friction(interface, s) ?
+        sets.sign[s.node] =
+          carries_friction(interface, s) ?
             stick_or_slip(s, pressure[s.node] - this->penalty[s.pair] * g,
                           slip_increment(interface, s, u)) :
             0;
@@ -226,7 +203,7 @@ namespace contact_fem
     this->deactivate_master_nodes(interface);
     for (unsigned int n = 0; n < interface.nodes.size(); ++n)
       if (!interface.nodes[n].slave)
-        slip_sign[n] = 0;
+        sets.sign[n] = 0;
   }
 
   template <int dim>
@@ -329,27 +306,27 @@ namespace contact_fem
     if (all_candidates)
       {
         for (const auto &s : interface.slave_nodes)
-          if (has_friction(interface, s))
+          if (carries_friction(interface, s))
             add_stick_constraint(interface, s, fixed_values, constraints);
         this->add_gap_constraints(interface, fixed_values, constraints, false,
                                   [&](const SlaveNode &s) {
-                                    return has_friction(interface, s);
+                                    return carries_friction(interface, s);
                                   });
         return;
       }
     for (const auto &s : interface.slave_nodes)
       if (s.paired && this->active[s.node])
         {
-          if (!has_friction(interface, s))
+          if (!carries_friction(interface, s))
             continue;
-          if (slip_sign[s.node] == 0)
+          if (sets.sign[s.node] == 0)
             add_stick_constraint(interface, s, fixed_values, constraints);
           else
             add_slip_constraint(interface, s, fixed_values, constraints, false);
         }
     // The active nodes held by a support: frictionless gap lines.
     this->add_gap_constraints(interface, fixed_values, constraints, true,
-                              [&](const SlaveNode &s) { return has_friction(interface, s); });
+                              [&](const SlaveNode &s) { return carries_friction(interface, s); });
   }
 
   template <int dim>
@@ -359,23 +336,23 @@ namespace contact_fem
                                            AffineConstraints<double>   &constraints) const
   {
     for (const auto &s : interface.slave_nodes)
-      if (s.paired && this->active[s.node] && has_friction(interface, s))
+      if (s.paired && this->active[s.node] && carries_friction(interface, s))
         {
-          if (slip_sign[s.node] == 0)
+          if (sets.sign[s.node] == 0)
             add_stick_constraint(interface, s, fixed_values, constraints);
           else
             add_slip_constraint(interface, s, fixed_values, constraints, true);
         }
     this->add_gap_constraints(interface, fixed_values, constraints, true,
-                              [&](const SlaveNode &s) { return has_friction(interface, s); });
+                              [&](const SlaveNode &s) { return carries_friction(interface, s); });
   }
 
   template <int dim>
   bool
   AlmFrictional<dim>::symmetric() const
   {
-    for (unsigned int n = 0; n < slip_sign.size(); ++n)
-      if (this->active[n] && slip_sign[n] != 0)
+    for (unsigned int n = 0; n < sets.sign.size(); ++n)
+      if (this->active[n] && sets.sign[n] != 0)
         return false;
     return true;
   }
@@ -395,11 +372,11 @@ namespace contact_fem
     Vector<double>                       values;
     for (const auto &s : interface.slave_nodes)
       {
-        if (!s.paired || !this->active[s.node] || slip_sign[s.node] == 0 ||
-            !has_friction(interface, s) || !owned.is_element(interface.nodes[s.node].dofs[0]))
+        if (!s.paired || !this->active[s.node] || sets.sign[s.node] == 0 ||
+            !carries_friction(interface, s) || !owned.is_element(interface.nodes[s.node].dofs[0]))
           continue;
         const double p = this->pressure[s.node];
-        const double h = slip_sign[s.node] * (laws[s.pair]->threshold(p) -
+        const double h = sets.sign[s.node] * (laws[s.pair]->threshold(p) -
                                               laws[s.pair]->threshold_derivative(p) * p);
         if (h == 0.)
           continue;
@@ -438,7 +415,7 @@ namespace contact_fem
             continue;
           }
         const auto &slave = interface.nodes[s.node];
-        if (!has_friction(interface, s))
+        if (!carries_friction(interface, s))
           {
             // A support carries the tangential force: the pressure from the
             // eliminated component, as frictionless.
@@ -482,20 +459,20 @@ namespace contact_fem
             released_tangential[s.node] = tangential[s.node];
             pressure[s.node]            = 0.;
             tangential[s.node]          = 0.;
-            slip_sign[s.node]           = 0;
+            sets.sign[s.node]           = 0;
             active[s.node]              = false;
             continue;
           }
-        const int sign = has_friction(interface, s) ?
+        const int sign = carries_friction(interface, s) ?
                            stick_or_slip(s, augmented, slip_increment(interface, s, u)) :
                            0;
         // Under a law without friction the sign changes nothing.
-        if (active[s.node] && sign != slip_sign[s.node] && !frictionless_law(s))
+        if (active[s.node] && sign != sets.sign[s.node] && !frictionless_law(s))
           {
             ++changes;
             ++last_stick_slip_changes;
           }
-        slip_sign[s.node] = sign;
+        sets.sign[s.node] = sign;
         active[s.node]    = true;
       }
     return changes;
@@ -523,13 +500,13 @@ namespace contact_fem
           }
         const double g = interface.gap(s, u);
         sum += g * g;
-        if (has_friction(interface, s))
+        if (carries_friction(interface, s))
           {
             const double p  = this->pressure[s.node];
-            const double rt = slip_sign[s.node] == 0 ?
+            const double rt = sets.sign[s.node] == 0 ?
                                 slip_increment(interface, s, u) :
                                 (tangential[s.node] -
-                                 slip_sign[s.node] * laws[s.pair]->threshold(p)) /
+                                 sets.sign[s.node] * laws[s.pair]->threshold(p)) /
                                   k;
             sum += rt * rt;
           }
@@ -550,32 +527,21 @@ namespace contact_fem
   unsigned int
   AlmFrictional<dim>::n_stick() const
   {
-    unsigned int n = 0;
-    for (unsigned int i = 0; i < slip_sign.size(); ++i)
-      n += sticks(i);
-    return n;
+    return sets.n_stick(this->active);
   }
 
   template <int dim>
   unsigned int
   AlmFrictional<dim>::n_slip() const
   {
-    unsigned int n = 0;
-    for (unsigned int i = 0; i < slip_sign.size(); ++i)
-      n += this->active[i] && !held[i] && slip_sign[i] != 0;
-    return n;
+    return sets.n_slip(this->active);
   }
 
   template <int dim>
   std::vector<int>
   AlmFrictional<dim>::contact_sets() const
   {
-    // 0 inactive, 1 stick, 2 / 3 slip with sign + / -.
-    std::vector<int> sets(slip_sign.size(), 0);
-    for (unsigned int n = 0; n < sets.size(); ++n)
-      if (this->active[n])
-        sets[n] = slip_sign[n] == 0 ? 1 : (slip_sign[n] > 0 ? 2 : 3);
-    return sets;
+    return sets.codes(this->active);
   }
 
   template <int dim>
@@ -598,13 +564,13 @@ namespace contact_fem
   {
     double largest_bound = 0., off_bound = 0., outside = 0.;
     for (const auto &s : interface.slave_nodes)
-      if (s.paired && this->active[s.node] && has_friction(interface, s))
+      if (s.paired && this->active[s.node] && carries_friction(interface, s))
         {
           const double bound = laws[s.pair]->threshold(this->pressure[s.node]);
           const double t     = tangential[s.node];
           largest_bound      = std::max(largest_bound, bound);
-          if (slip_sign[s.node] != 0)
-            off_bound = std::max(off_bound, std::abs(t - slip_sign[s.node] * bound));
+          if (sets.sign[s.node] != 0)
+            off_bound = std::max(off_bound, std::abs(t - sets.sign[s.node] * bound));
           else
             outside = std::max(outside, std::abs(t) - bound);
         }
@@ -629,7 +595,7 @@ namespace contact_fem
     state->tangential             = tangential;
     state->converged_displacement = converged_displacement;
     state->last_step_slip         = last_step_slip;
-    state->slip_sign              = slip_sign;
+    state->sets                   = sets;
     return state;
   }
 
@@ -642,7 +608,7 @@ namespace contact_fem
     tangential             = saved.tangential;
     converged_displacement = saved.converged_displacement;
     last_step_slip         = saved.last_step_slip;
-    slip_sign              = saved.slip_sign;
+    sets                   = saved.sets;
   }
 
   template <int dim>

@@ -98,23 +98,10 @@ namespace contact_fem
     const unsigned int n = interface.nodes.size();
     tangential.assign(n, 0.);
     accepted_tangential.assign(n, 0.);
-    slip_sign.assign(n, 0);
+    sets.initialize(interface);
     last_step_slip.assign(n, 0.);
     converged_displacement.assign(interface.dofs().size(), 0.);
     last_stick_slip_changes = 0;
-  }
-
-  template <int dim>
-  bool
-  PenaltyFrictional<dim>::has_friction(const ContactInterface<dim> &interface,
-                                       const SlaveNode             &s) const
-  {
-    if (!s.paired)
-      return false;
-    for (unsigned int d = 0; d < dim; ++d)
-      if (interface.nodes[s.node].fixed[d])
-        return false;
-    return true;
   }
 
   template <int dim>
@@ -123,14 +110,8 @@ namespace contact_fem
                                          const SlaveNode             &s,
                                          const std::vector<double>   &u) const
   {
-    // xi_j = tau . (du_j - sum_l M_jl / D_j du_l) since the last accepted
-    // step, as in AlmFrictional.
-    Tensor<1, dim> relative =
-      interface.displacement(s.node, u) - interface.displacement(s.node, converged_displacement);
-    for (const auto &[m, value] : s.M)
-      relative -= (value / s.D) * (interface.displacement(m, u) -
-                                   interface.displacement(m, converged_displacement));
-    return relative * ContactFormulation<dim>::tangent(s.normal);
+    return weighted_slip(interface, s, converged_displacement, u,
+                         ContactFormulation<dim>::tangent(s.normal));
   }
 
   template <int dim>
@@ -186,16 +167,16 @@ namespace contact_fem
       if (!this->active[n])
         {
           tangential[n] = 0.;
-          slip_sign[n]  = 0;
+          sets.sign[n]  = 0;
         }
     for (const auto &s : interface.slave_nodes)
       {
         if (!this->active[s.node])
           continue;
-        if (!has_friction(interface, s))
+        if (!carries_friction(interface, s))
           {
             tangential[s.node] = 0.;
-            slip_sign[s.node]  = 0;
+            sets.sign[s.node]  = 0;
             continue;
           }
         // The elastic predictor: every node starts the step sticking (a node
@@ -203,7 +184,7 @@ namespace contact_fem
         // would decide); the first solve tells which slip, and which way.
         // A law without friction, or Pure slip, slips at once.
         const double g = interface.gap(s, u);
-        slip_sign[s.node] =
+        sets.sign[s.node] =
           pure_slip || frictionless_law(s) ?
             stick_or_slip(s, this->penalty[s.pair] * (-g), slip_increment(interface, s, u)) :
             0;
@@ -255,10 +236,10 @@ namespace contact_fem
     std::vector<double>                  g_gradient, xi_gradient;
     for (const auto &s : interface.slave_nodes)
       {
-        if (!this->active[s.node] || !has_friction(interface, s) ||
+        if (!this->active[s.node] || !carries_friction(interface, s) ||
             !owned.is_element(interface.nodes[s.node].dofs[0]))
           continue;
-        const int sign = slip_sign[s.node];
+        const int sign = sets.sign[s.node];
         if (sign != 0 && frictionless_law(s))
           continue; // T = 0: the frictionless system
         this->gap_gradient(interface, s, dofs, g_gradient);
@@ -312,10 +293,10 @@ namespace contact_fem
       {
         if (!s.paired)
           continue;
-        if (!this->active[s.node] || !has_friction(interface, s))
+        if (!this->active[s.node] || !carries_friction(interface, s))
           {
             tangential[s.node] = 0.;
-            slip_sign[s.node]  = 0;
+            sets.sign[s.node]  = 0;
             continue;
           }
         const double p    = this->pressure[s.node];
@@ -324,16 +305,16 @@ namespace contact_fem
         // A slipping node reverses through stick: its slip solve overshoots
         // (with eps_t ~ 1e4 E/h a node that should stick swings from one
         // bound to the other, period 2, if the sign may flip directly).
-        if (was_active[s.node] && slip_sign[s.node] != 0 && sign == -slip_sign[s.node] &&
+        if (was_active[s.node] && sets.sign[s.node] != 0 && sign == -sets.sign[s.node] &&
             !pure_slip && !frictionless_law(s))
           sign = 0;
         // Under a law without friction the sign changes nothing.
-        if (was_active[s.node] && sign != slip_sign[s.node] && !frictionless_law(s))
+        if (was_active[s.node] && sign != sets.sign[s.node] && !frictionless_law(s))
           {
             ++changes;
             ++last_stick_slip_changes;
           }
-        slip_sign[s.node]  = sign;
+        sets.sign[s.node]  = sign;
         tangential[s.node] = tangential_traction(s, sign, p, xi);
       }
     return changes;
@@ -368,31 +349,21 @@ namespace contact_fem
   unsigned int
   PenaltyFrictional<dim>::n_stick() const
   {
-    unsigned int n = 0;
-    for (unsigned int i = 0; i < slip_sign.size(); ++i)
-      n += sticks(i);
-    return n;
+    return sets.n_stick(this->active);
   }
 
   template <int dim>
   unsigned int
   PenaltyFrictional<dim>::n_slip() const
   {
-    unsigned int n = 0;
-    for (unsigned int i = 0; i < slip_sign.size(); ++i)
-      n += this->active[i] && slip_sign[i] != 0;
-    return n;
+    return sets.n_slip(this->active);
   }
 
   template <int dim>
   std::vector<int>
   PenaltyFrictional<dim>::contact_sets() const
   {
-    std::vector<int> sets(slip_sign.size(), 0);
-    for (unsigned int n = 0; n < sets.size(); ++n)
-      if (this->active[n])
-        sets[n] = slip_sign[n] == 0 ? 1 : (slip_sign[n] > 0 ? 2 : 3);
-    return sets;
+    return sets.codes(this->active);
   }
 
   template <int dim>
@@ -417,7 +388,7 @@ namespace contact_fem
     state->tangential             = tangential;
     state->converged_displacement = converged_displacement;
     state->accepted_tangential    = accepted_tangential;
-    state->slip_sign              = slip_sign;
+    state->sets                   = sets;
     state->last_step_slip         = last_step_slip;
     return state;
   }
@@ -431,7 +402,7 @@ namespace contact_fem
     tangential             = saved.tangential;
     converged_displacement = saved.converged_displacement;
     accepted_tangential    = saved.accepted_tangential;
-    slip_sign              = saved.slip_sign;
+    sets                   = saved.sets;
     last_step_slip         = saved.last_step_slip;
   }
 
@@ -468,11 +439,11 @@ namespace contact_fem
         {
           tangential_force += s.D * tangential[s.node];
           normal_force += s.D * this->pressure[s.node];
-          if (slip_sign[s.node] == 0 || !has_friction(interface, s))
+          if (sets.sign[s.node] == 0 || !carries_friction(interface, s))
             all_slip = false;
           else if (common_sign == 0)
-            common_sign = slip_sign[s.node];
-          else if (slip_sign[s.node] != common_sign)
+            common_sign = sets.sign[s.node];
+          else if (sets.sign[s.node] != common_sign)
             one_way = false;
         }
     // The forces themselves are printed by the driver with every

@@ -6,6 +6,7 @@
 
 #include <contact_fem/contact/formulations/frictionless_formulation.h>
 #include <contact_fem/contact/friction/frictional_law.h>
+#include <contact_fem/contact/friction/stick_slip_sets.h>
 
 namespace contact_fem
 {
@@ -110,7 +111,7 @@ namespace contact_fem
     Tensor<1, dim>
     frame_normal(const SlaveNode &s) const override
     {
-      return held[s.node] || frictionless_law(s) ? s.normal : s.interface_normal;
+      return sets.held[s.node] || frictionless_law(s) ? s.normal : s.interface_normal;
     }
 
     bool
@@ -122,7 +123,7 @@ namespace contact_fem
     bool
     sticks(const unsigned int n) const override
     {
-      return this->active[n] && !held[n] && slip_sign[n] == 0;
+      return sets.sticks(n, this->active);
     }
 
     double
@@ -175,10 +176,6 @@ namespace contact_fem
                   std::ostream                &out) const override;
 
   private:
-    /// Whether slave node @p s carries a tangential condition: paired and
-    /// no Dirichlet component.
-    bool
-    has_friction(const ContactInterface<dim> &interface, const SlaveNode &s) const;
 
     /// The direction w = tau + sigma T'(p) n of the slip condition
     /// w . lambda = sigma (T - T' p) of slip node @p s.
@@ -224,9 +221,7 @@ namespace contact_fem
     bool pure_slip = false;
 
     std::vector<double> tangential; ///< t_j per interface node
-    std::vector<int>    slip_sign;  ///< 0 stick, +-1 slip (active nodes)
-    /// Slave nodes with a Dirichlet component: no tangential condition.
-    std::vector<bool>   held;
+    StickSlipSets       sets;
     /// Interface displacement of the last accepted load step.
     std::vector<double> converged_displacement;
     /// Slip of every interface node in the last accepted load step.
@@ -239,7 +234,7 @@ namespace contact_fem
     {
       std::unique_ptr<State> normal;
       std::vector<double>    tangential, converged_displacement, last_step_slip;
-      std::vector<int>       slip_sign;
+      StickSlipSets          sets;
     };
   };
 } // namespace contact_fem

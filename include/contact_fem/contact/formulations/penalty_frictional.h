@@ -6,6 +6,7 @@
 
 #include <contact_fem/contact/formulations/penalty_frictionless.h>
 #include <contact_fem/contact/friction/frictional_law.h>
+#include <contact_fem/contact/friction/stick_slip_sets.h>
 
 namespace contact_fem
 {
@@ -119,7 +120,7 @@ namespace contact_fem
     bool
     sticks(const unsigned int n) const override
     {
-      return this->active[n] && slip_sign[n] == 0;
+      return sets.sticks(n, this->active);
     }
 
     double
@@ -173,10 +174,6 @@ namespace contact_fem
                   std::ostream                &out) const override;
 
   private:
-    /// Whether slave node @p s carries a tangential penalty: paired and no
-    /// Dirichlet component.
-    bool
-    has_friction(const ContactInterface<dim> &interface, const SlaveNode &s) const;
 
     /// Whether the law of node @p s has no friction at all (mu = 0, bound 0).
     bool
@@ -211,7 +208,7 @@ namespace contact_fem
     std::vector<double> tangent_penalty; ///< eps_t per pair
 
     std::vector<double> tangential; ///< t_j per interface node
-    std::vector<int>    slip_sign;  ///< 0 stick, +-1 slip (active nodes)
+    StickSlipSets       sets;
     /// Slip of every interface node in the last accepted load step.
     std::vector<double> last_step_slip;
     /// Interface displacement and tangential tractions of the last accepted
@@ -224,7 +221,7 @@ namespace contact_fem
     {
       std::unique_ptr<State> normal;
       std::vector<double>    tangential, converged_displacement, accepted_tangential;
-      std::vector<int>       slip_sign;
+      StickSlipSets          sets;
       std::vector<double>    last_step_slip;
     };
   };
