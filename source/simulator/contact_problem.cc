@@ -1047,10 +1047,10 @@ namespace contact_fem
                                 std::to_string(iteration - k) + ", " +
                                 std::to_string(differing) + " node(s) switching), so the "
                                 "semi-smooth Newton iteration cannot settle. Smaller load "
-                                "steps usually break the cycle (the step is split); if "
-                                "not, the friction law is at its limit on this mesh "
-                                "(try Contact/Pure slip = true where the scene slips "
-                                "everywhere).",
+                                "steps usually break the cycle (the step is split). "
+                                "With Contact/Pure slip = true a scene that sticks "
+                                "somewhere cannot settle: set it only where the whole "
+                                "contact slips.",
                               true);
         }
   }

@@ -446,6 +446,27 @@ namespace contact_fem
           else if (sets.sign[s.node] != common_sign)
             one_way = false;
         }
+    // A stick node moves |t| / eps_t elastically: the tangential analogue
+    // of the penetration, which a soft tangential penalty makes large
+    // enough to hold a block that should slide (measured: Tangential
+    // penalty = 10 on frictional_block_coulomb_01 gives Q / N = 0.105
+    // instead of mu = 0.2).
+    double elastic_slip = 0.;
+    for (const auto &s : interface.slave_nodes)
+      if (sets.sticks(s.node, this->active) && carries_friction(interface, s))
+        elastic_slip = std::max(elastic_slip, std::abs(tangential[s.node]) /
+                                                tangent_penalty[s.pair] / s.size);
+    constexpr double allowed_elastic_slip = 1e-2;
+    out << "    largest elastic slip / h:     " << value_or_ok(elastic_slip, 1e-6)
+        << " (stick nodes, |t| / eps_t)" << std::endl;
+    if (elastic_slip > allowed_elastic_slip)
+      out << "  Warning: stick nodes move up to " << scientific(elastic_slip, 2)
+          << " h elastically under the tangential penalty (more than "
+          << allowed_elastic_slip
+          << " h): the regularisation decides what sticks and what slips. Raise "
+             "Contact/Tangential penalty (auto: that of the normal penalty) or use "
+             "alm frictional."
+          << std::endl;
     // The forces themselves are printed by the driver with every
     // frictional formulation's results; here only the slip check.
     if (normal_force == 0.)
