@@ -40,13 +40,24 @@ GROUPS = [
     ("newton", "Newton damping (Newton/Damping)"),
     ("reach", "Search reach and kinematics (gaps closed in one step, fine meshes in one step, "
               "fast approach, load-step independence, beyond small sliding)"),
+    ("friction", "Friction: Coulomb mu = 0 ... 1e3 and Tresca, reversed tangential load, "
+                 "stiff/soft pairs, penalty frictional across penalty scales, updated "
+                 "kinematics, Hertz and Cattaneo"),
 ]
 
 # same=GROUP/CASE: the contact answer (p_max and the transmitted force) must
 # equal that case's to this relative tolerance (load-step independence).
 SAME_TOL = 1e-8
 
-FLAGS = ("hertz", "hertz-approx", "empty", "centred")
+FLAGS = ("hertz", "hertz-approx", "empty", "centred", "cone", "stick-all", "slip-all")
+
+# ratio=MU: |tangential / normal contact force| must equal MU to this
+# relative tolerance (absolute for MU = 0). Slip nodes sit on their bound to
+# 1e-8 of the largest bound (the program's own check), hence the same here.
+RATIO_TOL = 1e-8
+# differs=GROUP/CASE: the tangential traction profiles must differ by more
+# than this fraction of the other case's largest contact pressure.
+DIFFERS_TOL = 1e-3
 
 # Tolerances of the verdicts.
 HERTZ_P_TOL = 0.05        # |p_max / p_Hertz - 1|
@@ -83,10 +94,16 @@ def read_profile(path):
 
 def parse_stdout(path):
     out = {"splits": 0, "newton_failures": 0, "failure": "", "step_attempts": 0,
-           "last_t": None, "errors": [], "grows": 0, "warnings": []}
+           "last_t": None, "errors": [], "grows": 0, "warnings": [],
+           # friction: the two cone lines of alm frictional, and the stick /
+           # slip columns of the Newton tables (every iteration of every
+           # attempt): rows with a slip node, stick/slip set changes
+           "cone": {}, "newton_rows": 0, "rows_with_slip": 0, "max_slip_in_row": 0,
+           "ss_changes": 0}
     if not os.path.exists(path):
         return out
     continuing = False
+    header = []   # columns of the current Newton table
     with open(path, errors="replace") as f:
         for line in f:
             s = line.strip()
@@ -96,6 +113,31 @@ def parse_stdout(path):
                     out["failure"] += " " + s
                     continue
                 continuing = False
+            m = re.match(r"(slip nodes off the slip bound|stick nodes outside the cone):\s*(.*)", s)
+            if m:
+                out["cone"][m.group(1)] = m.group(2)
+                continue
+            if s.startswith("friction cone:"):
+                out["cone"]["friction cone"] = s.partition(":")[2].strip()
+                continue
+            if s.startswith("| it |"):
+                header = [c.strip() for c in s.strip("|").split("|")]
+                continue
+            if s.startswith("|") and "slip" in header:
+                cells = [c.strip() for c in s.strip("|").split("|")]
+                try:
+                    slip = int(cells[header.index("slip")])
+                except (ValueError, IndexError):
+                    slip = None
+                if slip is not None:
+                    out["newton_rows"] += 1
+                    out["max_slip_in_row"] = max(out["max_slip_in_row"], slip)
+                    out["rows_with_slip"] += slip > 0
+                    try:
+                        out["ss_changes"] += int(cells[header.index("s/s ch.")].split()[0])
+                    except (ValueError, IndexError):
+                        pass
+                continue
             if s.startswith("Warning:"):
                 out["warnings"].append(s[len("Warning:"):].strip())
             elif s.startswith("Growing the step"):
@@ -250,8 +292,9 @@ def analyse_case(d):
         labels = [("locking (body %s)" % locked[0]) if l == "locking" else l for l in labels]
     case["warning_labels"] = labels
 
-    prof = [r for r in read_profile(os.path.join(d, "pressure_profile.csv"))
-            if r.get("active", 0) > 0.5]
+    full = read_profile(os.path.join(d, "pressure_profile.csv"))
+    case["profile"] = full
+    prof = [r for r in full if r.get("active", 0) > 0.5]
     case["n_active_profile"] = len(prof)
     if prof:
         ps = [r["pressure"] for r in prof]
@@ -361,6 +404,7 @@ def judge(case):
         if e == "empty" and n_active:
             kind = "wrong"
             notes.append("%d active nodes, expected none" % n_active)
+    kind = judge_friction(case, kind, notes)
     a = case["analytical"]
     if a and ("hertz" in exp or "hertz-approx" in exp):
         perr = a.get("p_max_relative_error")
@@ -400,12 +444,90 @@ def judge(case):
     case["notes"] = notes
 
 
+def judge_friction(case, kind, notes):
+    """Friction tokens of a converged case: cone, ratio=MU, stick-all,
+    slip-all (same=, near= and differs= compare with other cases: see
+    judge_same)."""
+    exp, out, contact = case["flags"], case["out"], case["contact"]
+    kv = case["expect_kv"]
+    if "cone" in exp:
+        lines = out["cone"]
+        bad = [k for k in ("slip nodes off the slip bound", "stick nodes outside the cone")
+               if not lines.get(k, "").startswith("ok")]
+        if bad:
+            kind = "wrong"
+            notes.append("friction cone: " + "; ".join(
+                "%s %s" % (k, lines.get(k, "not printed")) for k in bad))
+    for key, value in kv:
+        if key != "ratio":
+            continue
+        mu, _, tol = value.partition(",")
+        mu, tol = float(mu), (float(tol) if tol else RATIO_TOL)
+        r = contact.get("tangential_over_normal_force")
+        if r is None:
+            kind = "wrong"
+            notes.append("no tangential / normal force in summary.json")
+            continue
+        case["ratio"] = r
+        dev = abs(abs(r) - mu) / mu if mu > 0 else abs(r)
+        if not dev <= tol:
+            kind = "wrong"
+            notes.append("|Q/N| = %.10g, expected %g (off by %.2g%s)"
+                         % (abs(r), mu, dev, " relative" if mu > 0 else ""))
+    for key, value in kv:
+        if key != "force":
+            continue
+        want = [float(v) for v in value.split(",")]
+        got = contact.get("contact_force_components")
+        norm = math.sqrt(sum(w * w for w in want)) or 1.
+        if not got or len(got) != len(want):
+            kind = "wrong"
+            notes.append("no contact force components in summary.json")
+        else:
+            dev = max(abs(g - w) for g, w in zip(got, want)) / norm
+            if not dev <= RATIO_TOL:
+                kind = "wrong"
+                notes.append("contact force (%s), expected (%s)" % (
+                    ", ".join("%.10g" % g for g in got), value))
+            else:
+                notes.append("contact force (%s) to %.1g" % (value, dev))
+    cat = case["analytical"].get("cattaneo") if case["analytical"] else None
+    if cat:
+        notes.append("Cattaneo: c/a %.3f (exact %.3f, error %.2f slave elements), stick zone "
+                     "centre %.3g, tangential L2 error %.3f" % (
+                         cat.get("c_h_over_a", float("nan")), cat.get("c_over_a", float("nan")),
+                         cat.get("c_error_in_slave_elements", float("nan")),
+                         cat.get("stick_zone_center", float("nan")),
+                         cat.get("tangential_l2_relative_error", float("nan"))))
+    n_stick, n_slip = contact.get("stick_nodes"), contact.get("slip_nodes")
+    if "stick-all" in exp:
+        if n_slip is None or n_slip > 0 or not n_stick:
+            kind = "wrong"
+            notes.append("stick / slip nodes at the end %s / %s, expected all stick" % (n_stick, n_slip))
+        if out["rows_with_slip"]:
+            kind = "wrong"
+            notes.append("slip chatter: %d of %d Newton iterations have slip nodes (up to %d)"
+                         % (out["rows_with_slip"], out["newton_rows"], out["max_slip_in_row"]))
+        elif out["newton_rows"]:
+            notes.append("no slip node in any of %d Newton iterations" % out["newton_rows"])
+    if "slip-all" in exp:
+        if n_stick is None or n_stick > 0 or not n_slip:
+            kind = "wrong"
+            notes.append("stick / slip nodes at the end %s / %s, expected all slip" % (n_stick, n_slip))
+    return kind
+
+
 def judge_same(cases):
     """Applies the same=GROUP/CASE tokens: a converged case whose p_max or
     contact force differs from the named case's by more than SAME_TOL is
     wrong (unless it warns)."""
     by_id = {c["group"] + "/" + c["name"]: c for c in cases}
     for c in cases:
+        for key, value in c["expect_kv"]:
+            if key == "near" and c["rc"] == 0:
+                judge_near(c, by_id, value)
+            elif key == "differs" and c["rc"] == 0:
+                judge_differs(c, by_id, value)
         for key, other_id in c["expect_kv"]:
             if key != "same" or c["rc"] != 0:
                 continue
@@ -430,12 +552,69 @@ def judge_same(cases):
                                   % (other_id, diff))
 
 
-def table(cases, hertz, pressure, warnings):
+def fail_comparison(c, note):
+    if c["kind"] in ("ok", "indicative", "warned", "wrong"):
+        c["kind"] = "warned" if c["warnings"] else "wrong"
+        c["verdict"] = ("CONVERGED, CHECK FAILS" if c["kind"] == "wrong" else
+                        "converged, check fails, the program warns")
+    c["notes"].append(note)
+
+
+def judge_near(c, by_id, value):
+    """near=GROUP/CASE,TOL: p_max and the contact force within TOL relative
+    of that case's (a penalty answer against the alm one)."""
+    other_id, _, tol = value.partition(",")
+    tol = float(tol) if tol else 1e-2
+    other = by_id.get(other_id)
+    if other is None or other["rc"] != 0:
+        c["notes"].append("no converged run of %s to compare with" % other_id)
+        return
+    diffs = []
+    for name in ("max_contact_pressure", "total_contact_force"):
+        a, b = c["contact"].get(name), other["contact"].get(name)
+        if a is not None and b:
+            diffs.append(abs(a / b - 1.))
+    diff = max(diffs) if diffs else float("nan")
+    if not diff <= tol:
+        fail_comparison(c, "p_max / contact force differ from %s by %.2g (> %g)" % (other_id, diff, tol))
+    else:
+        c["notes"].append("p_max and contact force within %.1g of %s" % (diff, other_id))
+
+
+def judge_differs(c, by_id, other_id):
+    """differs=GROUP/CASE: the tangential traction profile must differ from
+    that case's by more than DIFFERS_TOL of its largest pressure (hysteresis:
+    the same boundary data reached along another path)."""
+    other = by_id.get(other_id)
+    if other is None or other["rc"] != 0:
+        c["notes"].append("no converged run of %s to compare with" % other_id)
+        return
+    mine, theirs = c.get("profile") or [], other.get("profile") or []
+    if not mine or len(mine) != len(theirs) or "tangential_traction" not in mine[0]:
+        fail_comparison(c, "no tangential traction profile to compare with %s" % other_id)
+        return
+    scale = max(abs(r["pressure"]) for r in theirs) or 1.
+    diff = max(abs(a["tangential_traction"] - b["tangential_traction"])
+               for a, b in zip(mine, theirs)) / scale
+    qa = c["contact"].get("total_tangential_contact_force")
+    qb = other["contact"].get("total_tangential_contact_force")
+    forces = "" if qa is None or qb is None else ", tangential force %.4g against %.4g" % (qa, qb)
+    if not diff > DIFFERS_TOL:
+        fail_comparison(c, "no hysteresis: tangential tractions within %.2g of %s's%s"
+                        % (diff, other_id, forces))
+    else:
+        c["notes"].append("hysteresis: tangential tractions differ from %s's by %.2g of p_max%s"
+                          % (other_id, diff, forces))
+
+
+def table(cases, hertz, pressure, warnings, friction=False):
     head = ["case", "what", "Newton its per step", "splits", "result", "imbalance"]
     if hertz:
         head += ["p_max err", "a err [el]", "centre [el]"]
     if pressure:
         head += ["pressure (active nodes)"]
+    if friction:
+        head += ["stick / slip", "Q/N", "p_max", "slip its / s/s changes"]
     if warnings:
         head += ["warnings"]
     head += ["wall [s]"]
@@ -470,6 +649,17 @@ def table(cases, hertz, pressure, warnings):
                 row.append("no active node")
             else:
                 row.append("-")
+        if friction:
+            ct = c["contact"] if c["rc"] == 0 else {}
+            row.append("%d / %d" % (ct["stick_nodes"], ct["slip_nodes"])
+                       if ct.get("stick_nodes") is not None else "-")
+            row.append(fmt(ct.get("tangential_over_normal_force"), ".6g")
+                       if ct.get("tangential_over_normal_force") is not None else "-")
+            row.append(fmt(ct.get("max_contact_pressure"), ".6g")
+                       if ct.get("max_contact_pressure") is not None else "-")
+            o = c["out"]
+            row.append("%d of %d / %d" % (o["rows_with_slip"], o["newton_rows"], o["ss_changes"])
+                       if o["newton_rows"] else "-")
         if warnings:
             row.append("; ".join(c["warning_labels"]).replace("|", "\\|") or "-")
         wall = c["wall"] if c["wall"] is not None and c["rc"] in (0, 2) else None
@@ -566,6 +756,25 @@ def main():
             md.append("  - `%s`: %d cases, %s … %s" % (sha, len(names), names[0], names[-1]))
     md.append("- %d cases, %.0f s in total: %s" % (
         len(cases), total, ", ".join("%d %s" % (n, k) for k, n in sorted(kinds.items()))))
+    per_group = []
+    for g in [g for g, _ in GROUPS] + sorted({c["group"] for c in cases} - {g for g, _ in GROUPS}):
+        gk = {}
+        for c in cases:
+            if c["group"] == g:
+                gk[c["kind"]] = gk.get(c["kind"], 0) + 1
+        if gk:
+            per_group.append("%s %d (%s)" % (g, sum(gk.values()), ", ".join(
+                "%d %s" % (n, k) for k, n in sorted(gk.items()))))
+    md.append("- per group: " + "; ".join(per_group))
+    if any(c["group"] == "friction" for c in cases):
+        md.append("- friction (group 11): Coulomb mu = 0 ... 1e3 and Tresca on a pressed and pulled "
+                  "block (|Q/N| = mu to 1e-8 when it slides, slip nodes on their bound and stick "
+                  "nodes inside the cone to 1e-8, mu = 1e3 without a slip node in any Newton "
+                  "iteration), a reversed tangential load (hysteresis: the unloading branch and "
+                  "the final state differ from the loading branch and the pressed state), "
+                  "1e6 stiff/soft pairs, penalty frictional across penalty scales against alm, "
+                  "updated kinematics, Hertz and Cattaneo; the reading of that run is the first "
+                  "section of \"Reading of the run\" below.")
     md.append("- verdict kinds: *ok* = converged and matches the expected physics; "
               "*expected* = stops with the diagnosis the case is meant to provoke; "
               "*indicative* = converged, reference only indicative; *warned* = converged, a "
@@ -585,12 +794,18 @@ def main():
               "(elapsed time for killed runs); *warnings* = the program's \"Warning:\" lines "
               "and `cycles[*].warning` of summary.json, shortened. *splits* also counts how often "
               "the step grew back (\"Growing the step\"). Hertz errors are only given for "
-              "converged runs. Reproduce commands name `build/contact_fem`; use the binary above.")
+              "converged runs. Friction table: *stick / slip* = final stick and slip "
+              "nodes; *Q/N* = `contact.tangential_over_normal_force` (signed); *slip its / s/s "
+              "changes* = Newton iterations (of every step and attempt) with a slip node, out "
+              "of all, and the sum of the stick/slip set changes. "
+              "Reproduce commands name `build/contact_fem`; use the binary above.")
     md.append("- tolerances of the verdicts: |p_max err| ≤ %g, |a err| ≤ %g elements "
               "(or ≤ %g a on meshes so fine that the half-disc's finite-body effect, ~2 %% "
               "of a, spans more elements), "
               "|centre| ≤ %g elements, imbalance ≤ %g, patch pressures within %g relative "
-              "(a case's `tol=` overrides the last two)." %
+              "(a case's `tol=` overrides the last two); friction: |Q/N| within 1e-8 "
+              "of mu unless the case names another tolerance (`ratio=MU,TOL`), hysteresis "
+              "(`differs=`) when the tangential tractions differ by more than 1e-3 of p_max." %
               (HERTZ_P_TOL, HERTZ_A_TOL, HERTZ_A_REL_TOL, CENTRE_TOL, IMBALANCE_TOL,
                PRESSURE_TOL))
     md.append("")
@@ -608,7 +823,7 @@ def main():
         warnings = any(c["warning_labels"] for c in gc)
         md.append("## %s" % title)
         md.append("")
-        md.append(table(gc, hertz, pressure, warnings))
+        md.append(table(gc, hertz, pressure, warnings, friction=(g == "friction")))
         md.append("")
         if g == "incompressible":
             pivot = locking_table(gc)

@@ -3,8 +3,8 @@
 # run.sh - stability suite of contact_fem (issue "Stiff and extreme cases").
 #
 # Runs stiff, soft, near-incompressible, tiny/huge-load, gap/penetration,
-# pull-apart, distorted/non-matching-mesh, rigid-body-mode, penalty-scaling
-# and Newton-damping variations of
+# pull-apart, distorted/non-matching-mesh, rigid-body-mode, penalty-scaling,
+# Newton-damping and friction variations of
 # the Hertz scene (prm/hertz.prm) and of the contact-blocks scenes
 # (tests/scenes/*.prm), one after the other, each under a time limit, into
 # bench/stability/results/<group>/<case>/, then calls analyse.py, which
@@ -93,6 +93,19 @@ case_order() { echo "${order_of[$1]:-0}"; }
 #                    element)
 #     warn=TEXT      the program must print a warning containing TEXT (a case
 #                    may expect a check to fail and the program to say so)
+#     cone           (alm frictional) both friction-cone lines of the log are
+#                    "ok": slip nodes on their bound, stick nodes inside
+#     ratio=MU[,TOL] |tangential / normal contact force| = MU to TOL (default
+#                    1e-8) relative (absolute for MU = 0)
+#     force=FX,FY    contact force components (summary.json) to 1e-8 of |F|
+#     stick-all      every active node sticks at the end and no node slips in
+#                    any Newton iteration of any step (no slip chatter)
+#     slip-all       every active node slips at the end
+#     same=G/C       p_max and contact force equal those of case G/C (1e-8)
+#     near=G/C,TOL   the same within TOL relative (penalty against alm)
+#     differs=G/C    the tangential traction profile differs from that of
+#                    case G/C by more than 1e-3 of its largest pressure
+#                    (hysteresis of a reversed load)
 #     tol=X          imbalance and patch-pressure tolerance X instead of the
 #                    defaults of analyse.py (damped Newton: results are only
 #                    as accurate as the Newton tolerances)
@@ -478,6 +491,163 @@ run_case $G hertz-x1e3-updated "$HERTZ" 120 "p = 1000 x 0.2 t, Kinematics = upda
 run_case $G hertz-x50-updated-1step "$HERTZ" 60 "p = 50 x 0.2 t, Kinematics = updated, one step on a coarse mesh: the penetration check splits the step" "hertz-approx warn=small-strain range" \
   "Boundary conditions/Pressure=1: 10*t" "Load stepping/Number of load steps=1" "Contact/Kinematics=updated" \
   "Geometry/Hertz cylinder/Contact refinements=4"
+
+# --- 11. Friction: Coulomb and Tresca, alm and penalty frictional ----------
+# Block scene (tests/scenes/frictional_block_coulomb_01.prm): a block (E =
+# 100, slave) pressed on a base (E = 1000) by p = 1 (t <= 1), then pulled by
+# u_x of its top, 0.01 (t - 1) up to 0.02 (about 0.005 of shear reaches
+# mu N = 0.2). Every slip node must sit on its slip bound and every stick
+# node inside its cone ('cone'); a block that slides must transmit exactly
+# mu N ('ratio=MU', |tangential / normal force| to 1e-8 relative), with
+# every active node slipping ('slip-all'); mu = 1e3 must stick everywhere in
+# every Newton iteration of every step ('stick-all': no slip chatter).
+# A pressure-loaded block tips beyond Q/N ~ 0.5 (its top is held in x
+# only): the mu = 1 ... 1e3 slides use the "clamped" top (u_x and u_y
+# prescribed, the normal force is an outcome).
+G=friction
+BLK="$repo_root/tests/scenes/frictional_block_coulomb_01.prm"
+TRESCA="$repo_root/tests/scenes/frictional_block_tresca_01.prm"
+CATT="$repo_root/prm/cattaneo.prm"
+ALMF="Contact/Formulation=alm frictional"
+PENF="Contact/Formulation=penalty frictional"
+CLAMP=("Boundary conditions/Pressure=" "Boundary conditions/Prescribed displacement=1: x = 0.05*max(t-1, 0); 1: y = -0.01*min(t, 1)")
+run_case $G block-mu0      "$BLK" 30 "block, mu = 0 (alm frictional, frictionless through the frictional code)" "ratio=0 slip-all" \
+  "Contact/Friction=coulomb 0"
+run_case $G block-mu1e-3   "$BLK" 30 "block, mu = 1e-3: slides from the first pull step" "cone ratio=0.001 slip-all" \
+  "Contact/Friction=coulomb 1e-3"
+run_case $G block-mu0.2    "$BLK" 30 "block, mu = 0.2 (the test scene): slides at the last step" "cone ratio=0.2 slip-all" \
+  "Contact/Friction=coulomb 0.2"
+run_case $G block-mu0.2-pair "$BLK" 30 "block, mu = 0.2 given per pair ('3: coulomb 0.2'): same as block-mu0.2" "cone ratio=0.2 slip-all same=friction/block-mu0.2" \
+  "Contact/Friction=3: coulomb 0.2"
+run_case $G block-mu1      "$BLK" 30 "block, mu = 1: Q/N = 0.22 at the end, below the bound" "cone stick-all" \
+  "Contact/Friction=coulomb 1"
+run_case $G block-mu10     "$BLK" 30 "block, mu = 10" "cone stick-all same=friction/block-mu1" \
+  "Contact/Friction=coulomb 10"
+run_case $G block-mu1e3    "$BLK" 30 "block, mu = 1e3: sticks everywhere, no slip in any iteration" "cone stick-all same=friction/block-mu1" \
+  "Contact/Friction=coulomb 1e3"
+run_case $G block-mu1e3-1step "$BLK" 30 "block, mu = 1e3, the whole path (press and pull) in one step" "cone stick-all" \
+  "Contact/Friction=coulomb 1e3" "Load stepping/Number of load steps=1"
+run_case $G clamped-mu0.2  "$BLK" 30 "block, top clamped (u_y = -0.01, then u_x up to 0.1), mu = 0.2" "cone ratio=0.2 slip-all" \
+  "Contact/Friction=coulomb 0.2" "${CLAMP[@]}"
+run_case $G clamped-mu1    "$BLK" 30 "block, top clamped, mu = 1: slides (Q = N)" "cone ratio=1 slip-all" \
+  "Contact/Friction=coulomb 1" "${CLAMP[@]}"
+run_case $G clamped-mu10   "$BLK" 30 "block, top clamped, mu = 10: sticks (the leading half lifts off)" "cone stick-all" \
+  "Contact/Friction=coulomb 10" "${CLAMP[@]}"
+run_case $G clamped-mu1e3  "$BLK" 30 "block, top clamped, mu = 1e3: sticks, the answer of mu = 10" "cone stick-all same=friction/clamped-mu10" \
+  "Contact/Friction=coulomb 1e3" "${CLAMP[@]}"
+run_case $G block-pure-slip "$BLK" 30 "block, mu = 0.2, Contact/Pure slip = true: the pressing phase has a stick zone, so no pure-slip solution" "diag=stick/slip set cycles" \
+  "Contact/Friction=coulomb 0.2" "Contact/Pure slip=true"
+run_case $G block-pure-slip-mu1e-3 "$BLK" 30 "block, mu = 1e-3, Contact/Pure slip = true (slips everywhere at every step)" "cone ratio=0.001 slip-all" \
+  "Contact/Friction=coulomb 1e-3" "Contact/Pure slip=true"
+run_case $G tresca         "$TRESCA" 30 "tests/scenes/frictional_block_tresca_01.prm: Tresca bound 0.15 over a contact length of 1" "cone ratio=0.15 slip-all"
+run_case $G tresca-1e3     "$TRESCA" 30 "block, Tresca bound 1e3: sticks" "cone stick-all same=friction/block-mu1" \
+  "Contact/Friction=tresca 1e3"
+run_case $G tresca-0       "$TRESCA" 30 "block, Tresca bound 0: frictionless" "ratio=0 slip-all" \
+  "Contact/Friction=tresca 0"
+# Reversed tangential load: u_x of the top 0.05 min(t - 1, 3 - t) (up to
+# 0.05 at t = 2, back to 0 at t = 3), 8 steps per unit time. The block
+# slides forward (full slip from u_x ~ 0.02), then back (turning the shear
+# from +mu N to -mu N takes ~0.04 of travel): at u_x = 0.025 the unloading
+# path carries another traction than the loading path ('differs=': the
+# tangential traction profiles differ by more than 1e-3 of the pressure),
+# and back at u_x = 0 the block slides backwards (Q = +mu N) instead of
+# returning to the pressed state. With mu = 1e3 and a pull small enough
+# that no node lifts off, nothing slips and the reversed path must end
+# exactly in the pressed state (same=); a larger pull lifts the trailing
+# nodes off, and a node that touches again sticks where it lands: the path
+# is remembered without any slip.
+REV="Boundary conditions/Prescribed displacement=1: x = 0.05*min(max(t-1,0), max(3-t,0))"
+run_case $G reverse-pressed "$BLK" 30 "block pressed only (t = 1, 8 steps), mu = 0.2: the unloaded reference" "cone" \
+  "$REV" "Load stepping/End time=1" "Load stepping/Number of load steps=8"
+run_case $G reverse-up-half "$BLK" 30 "reversed pull, loading branch: u_x = 0.025 at t = 1.5, mu = 0.2" "cone ratio=0.2 slip-all" \
+  "$REV" "Load stepping/End time=1.5" "Load stepping/Number of load steps=12"
+run_case $G reverse-down-half "$BLK" 30 "reversed pull, unloading branch: u_x = 0.025 again at t = 2.5 (peak 0.05)" "cone differs=friction/reverse-up-half" \
+  "$REV" "Load stepping/End time=2.5" "Load stepping/Number of load steps=20"
+run_case $G reverse        "$BLK" 30 "reversed pull back to u_x = 0 (t = 3, 24 steps): the block slides back, Q = +mu N" "cone ratio=0.2 slip-all differs=friction/reverse-pressed" \
+  "$REV" "Load stepping/Number of load steps=24"
+run_case $G reverse-0.01   "$BLK" 30 "reversed pull of the issue, 0.01 min(t - 1, 3 - t), 12 steps: partial slip only, residual tractions at the end" "cone differs=friction/reverse-pressed" \
+  "Boundary conditions/Prescribed displacement=1: x = 0.01*min(max(t-1,0), max(3-t,0))" "Load stepping/Number of load steps=12"
+run_case $G reverse-pressed-mu1e3 "$BLK" 30 "block pressed only, mu = 1e3" "cone stick-all" \
+  "Contact/Friction=coulomb 1e3" "$REV" "Load stepping/End time=1" "Load stepping/Number of load steps=8"
+run_case $G reverse-0.01-mu1e3 "$BLK" 30 "reversed pull 0.01 min(t - 1, 3 - t), 24 steps, mu = 1e3: no slip, no lift-off, so no hysteresis: the pressed state again" "cone stick-all same=friction/reverse-pressed-mu1e3" \
+  "Contact/Friction=coulomb 1e3" "Boundary conditions/Prescribed displacement=1: x = 0.01*min(max(t-1,0), max(3-t,0))" \
+  "Load stepping/Number of load steps=24"
+run_case $G reverse-mu1e3  "$BLK" 30 "reversed pull 0.05, mu = 1e3: no slip, but the trailing nodes lift off and touch again elsewhere (path remembered)" "cone stick-all differs=friction/reverse-pressed-mu1e3" \
+  "Contact/Friction=coulomb 1e3" "$REV" "Load stepping/Number of load steps=24"
+# Stiff / soft pairs (E ratio 1e6 both ways) with friction.
+run_case $G block-base-1e6 "$BLK" 30 "block, mu = 0.2, base 1e6 x stiffer than the block (E = 100, 1e8)" "cone ratio=0.2 slip-all" \
+  "Materials/Young's moduli=100, 1e8"
+# A block 1e6 x stiffer than its base is a rigid block on a soft base: held
+# in x at its top only, it turns, and the pull goes into that rotation: Q/N
+# tends to 0.077 as E_block grows (0.0752, 0.0767, 0.0768 for 1e3, 1e4, 1e5
+# x the base), slip in both directions, one stick node: no full-slide check.
+run_case $G block-slave-1e6 "$BLK" 30 "block, mu = 0.2, block (slave) 1e6 x stiffer than the base (E = 1e8, 100): a rigid block turning on a soft base" "cone warn=stiffer" \
+  "Materials/Young's moduli=1e8, 100" "Contact/Friction=coulomb 0.2"
+run_case $G block-slave-1e6-swapped "$BLK" 30 "same, soft base made the slave (Pairs = 4: 3)" "cone" \
+  "Materials/Young's moduli=1e8, 100" "Contact/Pairs=4: 3"
+# Penalty frictional against alm frictional (near=CASE,TOL: p_max and the
+# contact force within TOL relative of that case's).
+run_case $G penalty-mu0    "$BLK" 30 "penalty frictional, mu = 0" "ratio=0 slip-all" \
+  "$PENF" "Contact/Friction=coulomb 0"
+run_case $G penalty-mu1e-3 "$BLK" 30 "penalty frictional, mu = 1e-3" "ratio=0.001 slip-all" \
+  "$PENF" "Contact/Friction=coulomb 1e-3"
+for f in 1e-2 1 1e2 1e4; do
+  run_case $G "penalty-mu0.2-k$f" "$BLK" 30 "penalty frictional, mu = 0.2, Stiffness factor = $f" "ratio=0.2 slip-all near=friction/block-mu0.2,1e-2" \
+    "$PENF" "Contact/Stiffness factor=$f"
+done
+for et in 1e1 1e3 1e7; do
+  run_case $G "penalty-mu0.2-et$et" "$BLK" 30 "penalty frictional, mu = 0.2, Tangential penalty = $et (normal penalty auto, 5e6)" "ratio=0.2 slip-all near=friction/block-mu0.2,1e-2" \
+    "$PENF" "Contact/Tangential penalty=$et"
+done
+run_case $G penalty-mu1e3  "$BLK" 30 "penalty frictional, mu = 1e3: sticks (elastically, by t / eps_t)" "stick-all near=friction/block-mu1e3,1e-3" \
+  "$PENF" "Contact/Friction=coulomb 1e3"
+run_case $G penalty-clamped-mu1 "$BLK" 30 "penalty frictional, top clamped, mu = 1" "ratio=1 slip-all near=friction/clamped-mu1,1e-2" \
+  "$PENF" "Contact/Friction=coulomb 1" "${CLAMP[@]}"
+run_case $G penalty-reverse "$BLK" 30 "penalty frictional, reversed pull back to u_x = 0 (24 steps)" "ratio=0.2 slip-all near=friction/reverse,1e-2" \
+  "$PENF" "$REV" "Load stepping/Number of load steps=24"
+run_case $G penalty-tresca "$TRESCA" 30 "penalty frictional, Tresca 0.15" "ratio=0.15 slip-all" "$PENF"
+# Kinematics = updated with friction.
+run_case $G block-mu0.2-updated "$BLK" 30 "block, mu = 0.2, Kinematics = updated" "cone ratio=0.2 slip-all" \
+  "Contact/Kinematics=updated"
+run_case $G reverse-updated "$BLK" 30 "reversed pull, Kinematics = updated" "cone ratio=0.2 slip-all differs=friction/reverse-pressed" \
+  "$REV" "Load stepping/Number of load steps=24" "Contact/Kinematics=updated"
+# Hertz (prm/hertz.prm, plate 1e10 x stiffer) with friction: symmetric load,
+# so no tangential force ('ratio=0') and a centred pressure; mu = 0.2 raises
+# p_max by ~7.8 % over frictionless (doc/design.md): Hertz only indicative.
+run_case $G hertz-mu0      "$HERTZ" 120 "Hertz, alm frictional, mu = 0: the frictionless answer (load/x1) to 1e-8" "hertz ratio=0 same=load/x1" \
+  "$ALMF" "Contact/Friction=coulomb 0"
+run_case $G hertz-mu1e-3   "$HERTZ" 120 "Hertz, mu = 1e-3" "hertz centred cone ratio=0" \
+  "$ALMF" "Contact/Friction=coulomb 1e-3"
+run_case $G hertz-mu0.2    "$HERTZ" 120 "Hertz, mu = 0.2 (2 steps)" "hertz-approx centred cone ratio=0" \
+  "$ALMF" "Contact/Friction=coulomb 0.2"
+run_case $G hertz-mu0.2-32steps "$HERTZ" 180 "Hertz, mu = 0.2, 32 load steps" "hertz-approx centred cone ratio=0 near=friction/hertz-mu0.2,1e-2" \
+  "$ALMF" "Contact/Friction=coulomb 0.2" "Load stepping/Number of load steps=32"
+run_case $G hertz-mu0.2-128steps "$HERTZ" 300 "Hertz, mu = 0.2, 128 load steps" "hertz-approx centred cone ratio=0 near=friction/hertz-mu0.2-32steps,2e-3" \
+  "$ALMF" "Contact/Friction=coulomb 0.2" "Load stepping/Number of load steps=128"
+run_case $G hertz-mu1      "$HERTZ" 120 "Hertz, mu = 1" "hertz-approx centred cone ratio=0" \
+  "$ALMF" "Contact/Friction=coulomb 1"
+run_case $G hertz-mu1e3    "$HERTZ" 120 "Hertz, mu = 1e3: full stick (no slip in any iteration)" "hertz-approx centred cone ratio=0 stick-all" \
+  "$ALMF" "Contact/Friction=coulomb 1e3"
+run_case $G hertz-mu0.2-updated "$HERTZ" 180 "Hertz, mu = 0.2, Kinematics = updated, 8 steps" "hertz-approx centred cone ratio=0" \
+  "$ALMF" "Contact/Friction=coulomb 0.2" "Contact/Kinematics=updated" "Load stepping/Number of load steps=8"
+run_case $G hertz-cyl-1e6  "$HERTZ" 120 "Hertz, mu = 0.2, E_cyl / E_plate = 1e6 (stiff slave), plate refined (6 rounds)" "hertz-approx centred cone ratio=0 warn=stiffer" \
+  "$ALMF" "Contact/Friction=coulomb 0.2" "Materials/Young's moduli=2e8, 200" "Geometry/Hertz cylinder/Plate contact refinements=6"
+run_case $G hertz-plate-1e6 "$HERTZ" 120 "Hertz, mu = 0.2, E_plate / E_cyl = 1e6" "hertz-approx centred cone ratio=0" \
+  "$ALMF" "Contact/Friction=coulomb 0.2" "Materials/Young's moduli=200, 2e8"
+run_case $G hertz-penalty-mu0.2 "$HERTZ" 120 "Hertz, penalty frictional, mu = 0.2, against alm (hertz-mu0.2)" "hertz-approx centred ratio=0 near=friction/hertz-mu0.2,1e-2" \
+  "$PENF" "Contact/Friction=coulomb 0.2"
+for f in 1e-2 1e4; do
+  run_case $G "hertz-penalty-mu0.2-k$f" "$HERTZ" 120 "Hertz, penalty frictional, mu = 0.2, Stiffness factor = $f (tangential force of a symmetric load: round-off of a penalty up to 1e8 E/h, to 1e-6)" "hertz-approx centred ratio=0,1e-6" \
+    "$PENF" "Contact/Friction=coulomb 0.2" "Contact/Stiffness factor=$f"
+done
+# Cattaneo-Mindlin (prm/cattaneo.prm): P = 10 then Q = 0.93616 at constant
+# P: the contact force vector is exactly (Q, -P) ('force=FX,FY', 1e-8 of
+# its length); the sum of the tangential tractions, each in its node's
+# frame, tilted along the curved interface, is Q to ~3e-6 only.
+run_case $G cattaneo-r2    "$CATT" 180 "prm/cattaneo.prm, Global refinements = 2 (Q = 0.468 mu P)" "hertz-approx cone force=0.93616,-10 ratio=0.093616,1e-5" \
+  "Geometry/Global refinements=2"
+run_case $G cattaneo-r2-8steps "$CATT" 180 "prm/cattaneo.prm, Global refinements = 2, 8 load steps" "hertz-approx cone force=0.93616,-10 ratio=0.093616,1e-5" \
+  "Geometry/Global refinements=2" "Load stepping/Number of load steps=8"
 }
 
 define_cases
