@@ -171,6 +171,18 @@ namespace contact_fem
 
   template <int dim>
   void
+  AlmFrictional<dim>::note_pressure_dependent_slip(const ContactInterface<dim> &interface)
+  {
+    // With T' = 0 (Tresca, mu = 0) w = tau: the symmetric assembly serves.
+    pressure_dependent_slip = false;
+    for (const auto &s : interface.slave_nodes)
+      if (sets.slips(s.node, this->active) && carries_friction(interface, s) &&
+          laws[s.pair]->threshold_derivative(this->pressure[s.node]) != 0.)
+        pressure_dependent_slip = true;
+  }
+
+  template <int dim>
+  void
   AlmFrictional<dim>::start_load_step(const ContactInterface<dim> &interface,
                                       const std::vector<double>   &u,
                                       const bool                   first_step)
@@ -204,6 +216,7 @@ namespace contact_fem
     for (unsigned int n = 0; n < interface.nodes.size(); ++n)
       if (!interface.nodes[n].slave)
         sets.sign[n] = 0;
+    note_pressure_dependent_slip(interface);
   }
 
   template <int dim>
@@ -351,10 +364,7 @@ namespace contact_fem
   bool
   AlmFrictional<dim>::symmetric() const
   {
-    for (unsigned int n = 0; n < sets.sign.size(); ++n)
-      if (this->active[n] && sets.sign[n] != 0)
-        return false;
-    return true;
+    return !pressure_dependent_slip;
   }
 
   template <int dim>
@@ -475,6 +485,7 @@ namespace contact_fem
         sets.sign[s.node] = sign;
         active[s.node]    = true;
       }
+    note_pressure_dependent_slip(interface);
     return changes;
   }
 

@@ -182,6 +182,10 @@ namespace contact_fem
     Tensor<1, dim>
     slip_direction(const SlaveNode &s) const;
 
+    /// Sets pressure_dependent_slip from the current sets.
+    void
+    note_pressure_dependent_slip(const ContactInterface<dim> &interface);
+
     /// The component a slip node eliminates: both the gap (normal part) and
     /// the test line (w part of the other component) must be well posed.
     unsigned int
@@ -222,6 +226,9 @@ namespace contact_fem
 
     std::vector<double> tangential; ///< t_j per interface node
     StickSlipSets       sets;
+    /// Whether a slip node's bound depends on its pressure (Coulomb): only
+    /// then do its test functions leave the trial space (symmetric()).
+    bool                pressure_dependent_slip = false;
     /// Interface displacement of the last accepted load step.
     std::vector<double> converged_displacement;
     /// Slip of every interface node in the last accepted load step.
