@@ -48,40 +48,39 @@ namespace contact_fem
     std::map<types::material_id, Tensor<1, dim>> loads;
     for (const auto &[id, constants] : materials.bodies)
       loads[id] = Tensor<1, dim>();
+    // Adds int force ds over the faces of boundary @p id to each body's load.
+    const auto integrate = [&](const types::boundary_id id, const auto &force_at) {
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
+              {
+                fe_face.reinit(cell, f);
+                for (unsigned int q = 0; q < quadrature.size(); ++q)
+                  loads[cell->material_id()] += force_at(q) * fe_face.JxW(q);
+              }
+    };
+    const std::string variables = dim == 2 ? "x,y,t" : "x,y,z,t";
     for (const auto &condition : boundary_conditions.pressures)
       {
         FunctionParser<dim> pressure(1);
-        pressure.initialize(dim == 2 ? "x,y,t" : "x,y,z,t", condition.expression, {}, true);
+        pressure.initialize(variables, condition.expression, {}, true);
         pressure.set_time(time);
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
-            for (const auto f : cell->face_indices())
-              if (cell->face(f)->at_boundary() &&
-                  cell->face(f)->boundary_id() == condition.boundary_id)
-                {
-                  fe_face.reinit(cell, f);
-                  for (unsigned int q = 0; q < quadrature.size(); ++q)
-                    loads[cell->material_id()] -= pressure.value(fe_face.quadrature_point(q)) *
-                                                  fe_face.normal_vector(q) * fe_face.JxW(q);
-                }
+        integrate(condition.boundary_id, [&](const unsigned int q) {
+          return -pressure.value(fe_face.quadrature_point(q)) * fe_face.normal_vector(q);
+        });
       }
     for (const auto &condition : boundary_conditions.tractions)
       {
         FunctionParser<dim> traction(dim);
-        traction.initialize(dim == 2 ? "x,y,t" : "x,y,z,t", condition.expressions, {}, true);
+        traction.initialize(variables, condition.expressions, {}, true);
         traction.set_time(time);
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
-            for (const auto f : cell->face_indices())
-              if (cell->face(f)->at_boundary() &&
-                  cell->face(f)->boundary_id() == condition.boundary_id)
-                {
-                  fe_face.reinit(cell, f);
-                  for (unsigned int q = 0; q < quadrature.size(); ++q)
-                    for (unsigned int d = 0; d < dim; ++d)
-                      loads[cell->material_id()][d] +=
-                        traction.value(fe_face.quadrature_point(q), d) * fe_face.JxW(q);
-                }
+        integrate(condition.boundary_id, [&](const unsigned int q) {
+          Tensor<1, dim> t;
+          for (unsigned int d = 0; d < dim; ++d)
+            t[d] = traction.value(fe_face.quadrature_point(q), d);
+          return t;
+        });
       }
     for (auto &[id, load] : loads)
       load = Utilities::MPI::sum(load, comm);

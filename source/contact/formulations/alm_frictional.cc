@@ -10,22 +10,6 @@ namespace contact_fem
 {
   namespace
   {
-    template <int dim>
-    typename FrictionlessFormulation<dim>::Parameters
-    read_normal_parameters(ParameterHandler &prm)
-    {
-      typename FrictionlessFormulation<dim>::Parameters parameters;
-      parameters.parse_parameters(prm);
-      prm.enter_subsection("Contact");
-      const bool adaptive = prm.get_bool("Adaptive penalty");
-      prm.leave_subsection();
-      AssertThrow(!adaptive,
-                  ExcMessage("Contact/Adaptive penalty = true needs a penalty formulation: "
-                             "in 'alm frictional' the gap of an active node is an exact "
-                             "constraint and the penalty only scales the set tests."));
-      return parameters;
-    }
-
     /// One affine line u_dof = sum coefficient * u + inhomogeneity, built
     /// term by term: a Dirichlet DoF moves its value into the inhomogeneity
     /// (trial space) or drops out (test space, where it vanishes).
@@ -73,7 +57,8 @@ namespace contact_fem
 
   template <int dim>
   AlmFrictional<dim>::AlmFrictional(ParameterHandler &prm)
-    : FrictionlessFormulation<dim>(read_normal_parameters<dim>(prm))
+    : FrictionlessFormulation<dim>(
+        FrictionlessFormulation<dim>::Parameters::parse_for_exact_gap(prm, "alm frictional"))
     , laws(FrictionParameters::parse_laws(prm))
   {
     AssertThrow(dim == 2,

@@ -5,31 +5,11 @@
 
 namespace contact_fem
 {
-  namespace
-  {
-    template <int dim>
-    typename FrictionlessFormulation<dim>::Parameters
-    read_parameters(ParameterHandler &prm)
-    {
-      typename FrictionlessFormulation<dim>::Parameters parameters;
-      parameters.parse_parameters(prm);
-      // A key of the penalty formulation set with this one is a mistake
-      // worth a message, not a silent no-op.
-      prm.enter_subsection("Contact");
-      const bool adaptive = prm.get_bool("Adaptive penalty");
-      prm.leave_subsection();
-      AssertThrow(!adaptive,
-                  ExcMessage("Contact/Adaptive penalty = true needs Contact/Formulation = "
-                             "penalty frictionless: in 'alm frictionless' the gap of an "
-                             "active node is an exact constraint and the penalty only "
-                             "scales the active-set test, so adapting it changes nothing."));
-      return parameters;
-    }
-  } // namespace
 
   template <int dim>
   AlmFrictionless<dim>::AlmFrictionless(ParameterHandler &prm)
-    : FrictionlessFormulation<dim>(read_parameters<dim>(prm))
+    : FrictionlessFormulation<dim>(
+        FrictionlessFormulation<dim>::Parameters::parse_for_exact_gap(prm, "alm frictionless"))
   {}
 
   template <int dim>

@@ -84,6 +84,28 @@ namespace contact_fem
   }
 
   template <int dim>
+  typename FrictionlessFormulation<dim>::Parameters
+  FrictionlessFormulation<dim>::Parameters::parse_for_exact_gap(ParameterHandler  &prm,
+                                                                const std::string &formulation)
+  {
+    Parameters parameters;
+    parameters.parse_parameters(prm);
+    // A key of the penalty formulations set with this one is a mistake
+    // worth a message, not a silent no-op.
+    prm.enter_subsection("Contact");
+    const bool adaptive = prm.get_bool("Adaptive penalty");
+    prm.leave_subsection();
+    AssertThrow(!adaptive,
+                ExcMessage("Contact/Adaptive penalty = true needs a penalty formulation "
+                           "(penalty frictionless or penalty frictional): in '" +
+                           formulation +
+                           "' the gap of an active node is an exact constraint and the "
+                           "penalty only scales the active-set test, so adapting it "
+                           "changes nothing."));
+    return parameters;
+  }
+
+  template <int dim>
   FrictionlessFormulation<dim>::FrictionlessFormulation(const Parameters &parameters)
     : parameters(parameters)
   {}

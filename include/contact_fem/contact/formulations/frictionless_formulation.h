@@ -36,6 +36,12 @@ namespace contact_fem
       declare_parameters(ParameterHandler &prm);
       void
       parse_parameters(ParameterHandler &prm);
+
+      /// The keys of a formulation whose gap is an exact constraint
+      /// (@p formulation, for the message): Adaptive penalty is refused,
+      /// since the penalty only scales the active-set test there.
+      static Parameters
+      parse_for_exact_gap(ParameterHandler &prm, const std::string &formulation);
     };
 
     explicit FrictionlessFormulation(const Parameters &parameters);
