@@ -124,9 +124,14 @@ namespace contact_fem
   {
     // A force F per unit thickness (2D) moves a body of modulus E by about
     // F / E: the softest body is the one that moves.
+    // The largest load on one body, not the net load: loads that balance
+    // each other (two bodies pressed together by opposite forces, held by
+    // points that carry nothing) still move the bodies.
     const double youngs_min = materials.youngs_modulus_range().first;
-    const double by_force =
-      applied_load(time).norm() / (youngs_min * std::pow(model_size(), dim - 2.));
+    double       largest    = 0.;
+    for (const auto &[id, load] : body_loads(time))
+      largest = std::max(largest, load.norm());
+    const double by_force = largest / (youngs_min * std::pow(model_size(), dim - 2.));
     double prescribed = 0.;
     for (const auto &condition : boundary_conditions.displacements)
       {
