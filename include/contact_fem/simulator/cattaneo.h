@@ -69,7 +69,9 @@ namespace contact_fem
    * the nodal weights D (the mortar quadrature of the multiplier, as the
    * Hertz pressure error), against the exact traction sign(Q) q(x), the
    * sign being that of the resultant sum D t:
-   *   sqrt(sum D (t_h - t)^2 / sum D t^2).
+   *   sqrt(sum D (t_h - t)^2 / sum D t^2),
+   * or relative to the slip bound mu p_max (sum D (mu p_max)^2 below) when
+   * there is no tangential load (Q = 0, where t = 0).
    */
   struct CattaneoComparison
   {
