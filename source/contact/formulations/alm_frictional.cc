@@ -144,7 +144,7 @@ namespace contact_fem
     double               best_value = 0.1;
     for (unsigned int c = 0; c < dim; ++c)
       {
-        const double value = std::min(std::abs(s.normal[c]), std::abs(w[1 - c]));
+        const double value = std::min(std::abs(s.normal[c]), std::abs(w[(c + 1) % dim]));
         if (value > best_value)
           {
             best       = c;
@@ -255,7 +255,7 @@ namespace contact_fem
     const unsigned int c = slip_eliminated_component(s);
     if (c == dim)
       return;
-    const unsigned int d     = 1 - c;
+    const unsigned int d     = (c + 1) % dim; // the other component (2D)
     const auto        &slave = interface.nodes[s.node];
     if (!constraints.can_store_line(slave.dofs[c]) || constraints.is_constrained(slave.dofs[c]))
       return;
