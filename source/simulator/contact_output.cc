@@ -259,7 +259,13 @@ namespace contact_fem
     h_max = Utilities::MPI::max(h_max, comm);
     const double no_force =
       1e-10 * youngs_min * solution.linfty_norm() * std::pow(h_max, dim - 2.);
-    const double scale = std::max(load.norm(), 0.5 * absolute_sum);
+    // Loads that balance each other (two bodies pressed together by
+    // opposite forces) have a net of round-off: their scale is the largest
+    // load on one body.
+    double largest_body_load = 0.;
+    for (const auto &[id, body_load] : body_loads(current_time))
+      largest_body_load = std::max(largest_body_load, body_load.norm());
+    const double scale = std::max({load.norm(), largest_body_load, 0.5 * absolute_sum});
     Json                 result = Json::object();
     Json load_components = Json::array(), reaction_components = Json::array(),
          imbalance_components = Json::array();
@@ -485,7 +491,11 @@ namespace contact_fem
         if (contact->frictional())
           print_friction_results(contact_json, reaction);
       }
-    pcout << "    applied load:                 " << reaction["applied_load"].number_value()
+    const double applied = reaction["applied_load"].number_value();
+    pcout << "    applied load:                 "
+          << (applied != 0. && applied < 1e-10 * reaction["force_scale"].number_value() ?
+                std::string("0 (< 1e-10 of the forces)") :
+                significant(applied, 6))
           << std::endl
           << "    support reaction:             "
           << support_reaction_text(reaction["support_reaction"].number_value(),

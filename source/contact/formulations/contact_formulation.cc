@@ -158,7 +158,18 @@ namespace contact_fem
           // A law the formulation would ignore is a mistake worth a message.
           prm.enter_subsection("Contact");
           const bool friction_given = !Utilities::trim(prm.get("Friction")).empty();
+          const bool pure_slip      = prm.get_bool("Pure slip");
+          const bool tangential_penalty_given =
+            Utilities::trim(prm.get("Tangential penalty")) != "auto";
           prm.leave_subsection();
+          AssertThrow(formulation->frictional() || !pure_slip,
+                      ExcMessage("Contact/Pure slip = true, but Contact/Formulation = " + name +
+                                 " has no friction: the key concerns the frictional "
+                                 "formulations only."));
+          AssertThrow(name == "penalty frictional" || !tangential_penalty_given,
+                      ExcMessage("Contact/Tangential penalty is set, but only Contact/"
+                                 "Formulation = penalty frictional has a tangential penalty (" +
+                                 name + " would ignore it)."));
           AssertThrow(formulation->frictional() || !friction_given,
                       ExcMessage("Contact/Friction is set, but Contact/Formulation = " + name +
                                  " has no friction: use a frictional formulation (" +
