@@ -323,6 +323,20 @@ namespace contact_fem
   }
 
   template <int dim>
+  double
+  ContactInterface<dim>::contact_modulus(const unsigned int pair) const
+  {
+    double E[2] = {0., 0.}, nu[2] = {0., 0.};
+    for (const auto &face : faces)
+      if (face.pair == pair)
+        {
+          E[face.slave]  = face.youngs_modulus;
+          nu[face.slave] = face.poisson_ratio;
+        }
+    return 1. / ((1. - nu[0] * nu[0]) / E[0] + (1. - nu[1] * nu[1]) / E[1]);
+  }
+
+  template <int dim>
   std::map<unsigned int, std::pair<Tensor<1, 2>, double>>
   ContactInterface<dim>::surface_node_normals(const std::vector<Mortar::LineFace> &lines,
                                               const std::vector<double>           &lengths,

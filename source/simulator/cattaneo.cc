@@ -165,14 +165,7 @@ namespace contact_fem
                    const AnalyticalSolution      &analytical,
                    const std::vector<double>     *tangential)
   {
-    double E[2] = {0., 0.}, nu[2] = {0., 0.};
-    for (const auto &face : interface.faces)
-      if (face.pair == 0)
-        {
-          E[face.slave]  = face.youngs_modulus;
-          nu[face.slave] = face.poisson_ratio;
-        }
-    const double E_star = 1. / ((1. - nu[0] * nu[0]) / E[0] + (1. - nu[1] * nu[1]) / E[1]);
+    const double E_star = interface.contact_modulus(0);
 
     // P and Q: the resultant of the contact tractions on the slave along
     // the mean slave normal and its tangent (the nodal normals tilt by

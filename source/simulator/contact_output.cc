@@ -105,18 +105,19 @@ namespace contact_fem
 
   namespace
   {
-    /// The net support reaction, or "0 (...)" when it is below 1e-10 of the
-    /// forces of the scene: displacement-driven scenes have no net
-    /// reaction, and the round-off left (1e-15 serial, 9e-16 on two ranks
-    /// in kratos_patch_01) must not be printed as a number.
+    /// A force (a net reaction, a load, a contact force), or "0 (...)" when
+    /// it is below 1e-10 of the forces of the scene: displacement-driven
+    /// scenes have no net reaction, and the round-off left (1e-15 serial,
+    /// 9e-16 on two ranks in kratos_patch_01; any sign) must not be printed
+    /// as a number.
     std::string
-    support_reaction_text(const double reaction, const double force_scale)
+    force_text(const double force, const double force_scale)
     {
       std::ostringstream s;
-      if (reaction < 1e-10 * force_scale)
+      if (std::abs(force) < 1e-10 * force_scale)
         s << "0 (< 1e-10 of the forces)";
       else
-        s << reaction;
+        s << force;
       return s.str();
     }
   } // namespace
@@ -304,15 +305,7 @@ namespace contact_fem
                    const double                 load,
                    const double                 radius)
     {
-      double E[2] = {0., 0.}, nu[2] = {0., 0.};
-      for (const auto &face : interface.faces)
-        if (face.pair == 0)
-          {
-            E[face.slave]  = face.youngs_modulus;
-            nu[face.slave] = face.poisson_ratio;
-          }
-      const double E_star =
-        1. / ((1. - nu[0] * nu[0]) / E[0] + (1. - nu[1] * nu[1]) / E[1]);
+      const double E_star = interface.contact_modulus(0);
       Hertz h;
       h.a     = std::sqrt(4. * load * radius / (numbers::PI * E_star));
       h.p_max = 2. * load / (numbers::PI * h.a);
@@ -493,12 +486,11 @@ namespace contact_fem
       }
     const double applied = reaction["applied_load"].number_value();
     pcout << "    applied load:                 "
-          << (applied != 0. && applied < 1e-10 * reaction["force_scale"].number_value() ?
-                std::string("0 (< 1e-10 of the forces)") :
-                significant(applied, 6))
+          << (applied == 0. ? std::string("0") :
+                              force_text(applied, reaction["force_scale"].number_value()))
           << std::endl
           << "    support reaction:             "
-          << support_reaction_text(reaction["support_reaction"].number_value(),
+          << force_text(reaction["support_reaction"].number_value(),
                                    reaction["force_scale"].number_value())
           << std::endl
           << "    relative imbalance:           "
@@ -529,21 +521,11 @@ namespace contact_fem
     const double normal     = contact_json["total_normal_contact_force"].number_value();
     const double tangential = contact_json["total_tangential_contact_force"].number_value();
     const double scale      = reaction["force_scale"].number_value();
-    // Forces below 1e-10 of the scene's are round-off: not printed as
-    // numbers (their sign and digits would differ between machines).
-    const auto force_text = [scale](const double f) {
-      std::ostringstream s;
-      if (std::abs(f) < 1e-10 * scale)
-        s << "0 (< 1e-10 of the forces)";
-      else
-        s << f;
-      return s.str();
-    };
     pcout << "    stick / slip nodes:           "
           << contact_json["stick_nodes"].number_value() << " / "
           << contact_json["slip_nodes"].number_value() << std::endl
-          << "    normal contact force:         " << force_text(normal) << std::endl
-          << "    tangential contact force:     " << force_text(tangential) << std::endl
+          << "    normal contact force:         " << force_text(normal, scale) << std::endl
+          << "    tangential contact force:     " << force_text(tangential, scale) << std::endl
           << "    active contact length:        "
           << contact_json["active_contact_length"].number_value() << std::endl
           << "    tangential / normal force:    "
@@ -558,8 +540,8 @@ namespace contact_fem
     const Json &imbalance = reaction["relative_imbalance_components"];
     for (unsigned int d = 0; d < dim; ++d)
       pcout << "    balance in " << "xyz"[d] << ": load "
-            << force_text(load[d].number_value()) << ", support reaction "
-            << force_text(support[d].number_value()) << ", relative imbalance "
+            << force_text(load[d].number_value(), scale) << ", support reaction "
+            << force_text(support[d].number_value(), scale) << ", relative imbalance "
             << value_or_ok(imbalance[d].number_value(), 1e-10) << std::endl;
   }
 

@@ -206,6 +206,12 @@ namespace contact_fem
     Tensor<1, dim>
     displacement(const unsigned int n, const std::vector<double> &u) const;
 
+    /// E* = 1 / ((1 - nu_s^2) / E_s + (1 - nu_m^2) / E_m) of the two sides of
+    /// pair @p pair (the materials of the pair's faces; each side one body):
+    /// the modulus of Hertz' theory.
+    double
+    contact_modulus(const unsigned int pair = 0) const;
+
     /// The geometry of @p face at X + u (@p u per interface node; empty:
     /// the reference configuration). Only 2D.
     Mortar::LineFace

@@ -1,6 +1,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <contact_fem/contact/formulations/alm_frictional.h>
+#include <contact_fem/contact/formulations/constraint_line.h>
 #include <contact_fem/core/format.h>
 
 #include <algorithm>
@@ -8,53 +9,6 @@
 
 namespace contact_fem
 {
-  namespace
-  {
-    /// One affine line u_dof = sum coefficient * u + inhomogeneity, built
-    /// term by term: a Dirichlet DoF moves its value into the inhomogeneity
-    /// (trial space) or drops out (test space, where it vanishes).
-    struct ConstraintLine
-    {
-      std::vector<std::pair<types::global_dof_index, double>> entries;
-      double                                                  inhomogeneity = 0.;
-
-      template <int dim>
-      void
-      add(const typename ContactInterface<dim>::Node &node,
-          const unsigned int                          d,
-          const double                                coefficient,
-          const ContactInterface<dim>                &interface,
-          const std::vector<double>                  &fixed_values,
-          const bool                                  test)
-      {
-        // Entries at round-off of the unit normal carry no coupling.
-        constexpr double negligible = 1e-14;
-        if (std::abs(coefficient) < negligible)
-          return;
-        if (!node.fixed[d])
-          entries.emplace_back(node.dofs[d], coefficient);
-        else if (!test)
-          inhomogeneity += coefficient * fixed_values[interface.position(node.dofs[d])];
-      }
-
-      void
-      store(const types::global_dof_index dof, AffineConstraints<double> &constraints)
-      {
-        // The same DoF may appear through two master faces: merge entries.
-        std::sort(entries.begin(), entries.end());
-        std::vector<std::pair<types::global_dof_index, double>> merged;
-        for (const auto &e : entries)
-          if (!merged.empty() && merged.back().first == e.first)
-            merged.back().second += e.second;
-          else
-            merged.push_back(e);
-        constraints.add_line(dof);
-        constraints.add_entries(dof, merged);
-        constraints.set_inhomogeneity(dof, inhomogeneity);
-      }
-    };
-  } // namespace
-
   template <int dim>
   AlmFrictional<dim>::AlmFrictional(ParameterHandler &prm)
     : FrictionlessFormulation<dim>(
@@ -239,7 +193,7 @@ namespace contact_fem
         ConstraintLine line;
         line.inhomogeneity = offset[d];
         for (const auto &[m, value] : s.M)
-          line.add(interface.nodes[m], d, value / s.D, interface, fixed_values, false);
+          line.add(interface.nodes[m], d, value / s.D, interface, fixed_values);
         line.store(slave.dofs[d], constraints);
       }
   }
@@ -255,38 +209,27 @@ namespace contact_fem
     const unsigned int c = slip_eliminated_component(s);
     if (c == dim)
       return;
+    // Trial space: g_j(u) = 0 solved for u_j,c, as in the frictionless
+    // formulation, only with the component chosen for the slip line.
+    if (!test)
+      {
+        this->add_gap_line(interface, s, c, fixed_values, constraints);
+        return;
+      }
     const unsigned int d     = (c + 1) % dim; // the other component (2D)
     const auto        &slave = interface.nodes[s.node];
     if (!constraints.can_store_line(slave.dofs[c]) || constraints.is_constrained(slave.dofs[c]))
       return;
-    ConstraintLine line;
-    if (!test)
+    // Test space: v_j = sum_l M_jl / D_j v_l + alpha w: the slave's own
+    // equation is w . r_j = 0, and the masters take the whole traction.
+    const Tensor<1, dim> w     = slip_direction(s);
+    const double         ratio = w[c] / w[d];
+    ConstraintLine       line;
+    line.add(slave, d, ratio, interface, fixed_values, true);
+    for (const auto &[m, value] : s.M)
       {
-        // g_j(u) = 0 solved for u_j,c, as in the frictionless formulation.
-        const double denominator = s.D * s.normal[c];
-        line.inhomogeneity       = s.curvature_gap / denominator - s.normal * slave.reference /
-                                                                  s.normal[c];
-        for (const auto &[m, value] : s.M)
-          {
-            line.inhomogeneity += value * (s.normal * interface.nodes[m].reference) / denominator;
-            for (unsigned int e = 0; e < dim; ++e)
-              line.add(interface.nodes[m], e, value * s.normal[e] / denominator, interface,
-                       fixed_values, false);
-          }
-        line.add(slave, d, -s.normal[d] / s.normal[c], interface, fixed_values, false);
-      }
-    else
-      {
-        // v_j = sum_l M_jl / D_j v_l + alpha w: the slave's own equation is
-        // w . r_j = 0, and the masters take the whole traction.
-        const Tensor<1, dim> w     = slip_direction(s);
-        const double         ratio = w[c] / w[d];
-        line.add(slave, d, ratio, interface, fixed_values, true);
-        for (const auto &[m, value] : s.M)
-          {
-            line.add(interface.nodes[m], c, value / s.D, interface, fixed_values, true);
-            line.add(interface.nodes[m], d, -ratio * value / s.D, interface, fixed_values, true);
-          }
+        line.add(interface.nodes[m], c, value / s.D, interface, fixed_values, true);
+        line.add(interface.nodes[m], d, -ratio * value / s.D, interface, fixed_values, true);
       }
     line.store(slave.dofs[c], constraints);
   }

@@ -1,5 +1,6 @@
 #include <deal.II/lac/full_matrix.h>
 
+#include <contact_fem/contact/formulations/constraint_line.h>
 #include <contact_fem/contact/formulations/frictionless_formulation.h>
 #include <deal.II/base/utilities.h>
 
@@ -231,53 +232,39 @@ namespace contact_fem
         const unsigned int c = eliminated_component(interface, s);
         if (c == dim)
           continue;
-        const auto &slave = interface.nodes[s.node];
-        if (!constraints.can_store_line(slave.dofs[c]) ||
-            constraints.is_constrained(slave.dofs[c]))
-          continue;
-
-        // g_j(u) = (n . (sum_l M_jl (X_l + u_l) - D (X_j + u_j)) + c_j) / D = 0
-        // (c_j the curvature gap), solved for u_j,c.
-        const double denominator   = s.D * s.normal[c];
-        double       inhomogeneity = s.curvature_gap / denominator;
-        std::vector<std::pair<types::global_dof_index, double>> entries;
-        // A term coefficient * u of component d of interface node `node`: a
-        // fixed DoF moves its known value into the inhomogeneity.
-        const auto add_term = [&](const typename ContactInterface<dim>::Node &node,
-                                  const unsigned int                          d,
-                                  const double                                coefficient) {
-          // Entries at round-off of the unit normal carry no coupling.
-          constexpr double negligible = 1e-14;
-          if (std::abs(coefficient) < negligible)
-            return;
-          if (node.fixed[d])
-            inhomogeneity += coefficient * fixed_values[interface.position(node.dofs[d])];
-          else
-            entries.emplace_back(node.dofs[d], coefficient);
-        };
-        for (const auto &[m, value] : s.M)
-          {
-            const auto &master = interface.nodes[m];
-            inhomogeneity += value * (s.normal * master.reference) / denominator;
-            for (unsigned int d = 0; d < dim; ++d)
-              add_term(master, d, value * s.normal[d] / denominator);
-          }
-        inhomogeneity -= s.normal * slave.reference / s.normal[c];
-        for (unsigned int d = 0; d < dim; ++d)
-          if (d != c)
-            add_term(slave, d, -s.normal[d] / s.normal[c]);
-        // The same DoF may appear through two master faces: merge entries.
-        std::sort(entries.begin(), entries.end());
-        std::vector<std::pair<types::global_dof_index, double>> merged;
-        for (const auto &e : entries)
-          if (!merged.empty() && merged.back().first == e.first)
-            merged.back().second += e.second;
-          else
-            merged.push_back(e);
-        constraints.add_line(slave.dofs[c]);
-        constraints.add_entries(slave.dofs[c], merged);
-        constraints.set_inhomogeneity(slave.dofs[c], inhomogeneity);
+        add_gap_line(interface, s, c, fixed_values, constraints);
       }
+  }
+
+  template <int dim>
+  void
+  FrictionlessFormulation<dim>::add_gap_line(
+    const ContactInterface<dim>                     &interface,
+    const typename ContactInterface<dim>::SlaveNode &s,
+    const unsigned int                               c,
+    const std::vector<double>                       &fixed_values,
+    AffineConstraints<double>                       &constraints) const
+  {
+    const auto &slave = interface.nodes[s.node];
+    if (!constraints.can_store_line(slave.dofs[c]) || constraints.is_constrained(slave.dofs[c]))
+      return;
+    // g_j(u) = (n . (sum_l M_jl (X_l + u_l) - D (X_j + u_j)) + c_j) / D = 0
+    // (c_j the curvature gap), solved for u_j,c.
+    const double   denominator = s.D * s.normal[c];
+    ConstraintLine line;
+    line.inhomogeneity = s.curvature_gap / denominator;
+    for (const auto &[m, value] : s.M)
+      {
+        const auto &master = interface.nodes[m];
+        line.inhomogeneity += value * (s.normal * master.reference) / denominator;
+        for (unsigned int d = 0; d < dim; ++d)
+          line.add(master, d, value * s.normal[d] / denominator, interface, fixed_values);
+      }
+    line.inhomogeneity -= s.normal * slave.reference / s.normal[c];
+    for (unsigned int d = 0; d < dim; ++d)
+      if (d != c)
+        line.add(slave, d, -s.normal[d] / s.normal[c], interface, fixed_values);
+    line.store(slave.dofs[c], constraints);
   }
 
   template <int dim>

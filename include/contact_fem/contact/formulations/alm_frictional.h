@@ -212,8 +212,8 @@ namespace contact_fem
                          const std::vector<double>   &fixed_values,
                          AffineConstraints<double>   &constraints) const;
 
-    /// g_j = 0 solved for component @p c (trial), or the test line of a slip
-    /// node (@p test).
+    /// g_j = 0 solved for the component slip_eliminated_component() picks
+    /// (trial space), or the test line of the slip node (@p test).
     void
     add_slip_constraint(const ContactInterface<dim> &interface,
                         const SlaveNode             &s,

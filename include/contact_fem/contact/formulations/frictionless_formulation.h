@@ -132,6 +132,15 @@ namespace contact_fem
       const std::function<bool(const typename ContactInterface<dim>::SlaveNode &)> &skip =
         {}) const;
 
+    /// Adds g_j(u) = 0 for slave node @p s, solved for its component @p c,
+    /// unless that DoF is constrained already.
+    void
+    add_gap_line(const ContactInterface<dim>                     &interface,
+                 const typename ContactInterface<dim>::SlaveNode &s,
+                 const unsigned int                               c,
+                 const std::vector<double>                       &fixed_values,
+                 AffineConstraints<double>                       &constraints) const;
+
     /// The contact forces of the current pressures at the interface DoFs.
     std::vector<double>
     contact_forces(const ContactInterface<dim> &interface) const;
