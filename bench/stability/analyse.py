@@ -43,6 +43,9 @@ GROUPS = [
     ("friction", "Friction: Coulomb mu = 0 ... 1e3 and Tresca, reversed tangential load, "
                  "stiff/soft pairs, penalty frictional across penalty scales, updated "
                  "kinematics, Hertz and Cattaneo"),
+    ("iterative", "Iterative linear solver (Linear solver/Type = iterative: CG or GMRES with "
+                  "ML multigrid) on the stiff, nearly incompressible, Q2, adaptive and "
+                  "frictional cases; its limits are those of Type = auto"),
 ]
 
 # same=GROUP/CASE: the contact answer (p_max and the transmitted force) must

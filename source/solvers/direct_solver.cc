@@ -248,10 +248,17 @@ namespace contact_fem
     AssertThrow(solver->Solve() == 0, ExcMessage("the direct solve failed"));
   }
 
+  std::string
+  DirectSolver::description() const
+  {
+    return amesos_name == "Amesos_Mumps" ? "direct (MUMPS)" : "direct (KLU)";
+  }
+
   double
   DirectSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
                       TrilinosWrappers::MPI::Vector       &x,
-                      const TrilinosWrappers::MPI::Vector &rhs)
+                      const TrilinosWrappers::MPI::Vector &rhs,
+                      const LinearSystemRequest & /*request*/)
   {
     factorise(matrix);
     solve_with_last_factors(x, rhs);

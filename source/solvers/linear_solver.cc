@@ -1,12 +1,193 @@
+#include <contact_fem/core/format.h>
 #include <contact_fem/solvers/direct_solver.h>
+#include <contact_fem/solvers/iterative_solver.h>
 #include <contact_fem/solvers/linear_solver.h>
 
 namespace contact_fem
 {
+  namespace
+  {
+    /**
+     * Picks the direct or the iterative solver for each mesh: the
+     * iterative one from the measured crossover size on, and only for
+     * scenes inside the limits where the multigrid was measured to
+     * converge (doc/performance.md, doc/stability.md).
+     */
+    class AutomaticSolver : public LinearSolver
+    {
+    public:
+      AutomaticSolver(std::unique_ptr<DirectSolver>    direct,
+                      std::unique_ptr<IterativeSolver> krylov)
+        : direct(std::move(direct))
+        , krylov(std::move(krylov))
+        , current(this->direct.get())
+      {}
+
+      void
+      set_problem(const ProblemTraits &problem) override
+      {
+        traits = problem;
+      }
+
+      bool
+      select(const types::global_dof_index n_dofs) override
+      {
+        LinearSolver *const before = current;
+        reason = iterative_reason(n_dofs);
+        current = reason.empty() ? static_cast<LinearSolver *>(direct.get()) :
+                                   static_cast<LinearSolver *>(krylov.get());
+        if (current != before)
+          before->clear();
+        return current->select(n_dofs);
+      }
+
+      void
+      set_near_null_space(std::vector<std::vector<double>> &&modes) override
+      {
+        current->set_near_null_space(std::move(modes));
+      }
+
+      std::string
+      description() const override
+      {
+        return current->description() + " (auto: " + (reason.empty() ? why_direct : reason) + ")";
+      }
+
+      bool
+      iterative() const override
+      {
+        return current->iterative();
+      }
+
+      void
+      clear() override
+      {
+        current->clear();
+      }
+
+      double
+      solve(const TrilinosWrappers::SparseMatrix &matrix,
+            TrilinosWrappers::MPI::Vector       &x,
+            const TrilinosWrappers::MPI::Vector &rhs,
+            const LinearSystemRequest           &request) override
+      {
+        return current->solve(matrix, x, rhs, request);
+      }
+
+      unsigned int
+      last_iterations() const override
+      {
+        return current->last_iterations();
+      }
+
+      double
+      take_setup_seconds() override
+      {
+        return current->take_setup_seconds();
+      }
+
+      bool
+      can_solve_again() const override
+      {
+        return current->can_solve_again();
+      }
+
+      void
+      solve_again(TrilinosWrappers::MPI::Vector       &x,
+                  const TrilinosWrappers::MPI::Vector &rhs) override
+      {
+        current->solve_again(x, rhs);
+      }
+
+      bool
+      detects_null_pivots() const override
+      {
+        return current->detects_null_pivots();
+      }
+
+      unsigned int
+      n_null_pivots() const override
+      {
+        return current->n_null_pivots();
+      }
+
+      std::string
+      take_note() override
+      {
+        return current->take_note();
+      }
+
+    private:
+      std::unique_ptr<DirectSolver>    direct;
+      std::unique_ptr<IterativeSolver> krylov;
+      LinearSolver                    *current;
+      ProblemTraits                    traits;
+      /// Why the iterative solver serves this mesh; empty: the direct one.
+      std::string reason;
+      std::string why_direct;
+
+      /// Empty if the direct solver should serve @p n_dofs unknowns (and
+      /// why_direct says why), else why the iterative one.
+      std::string
+      iterative_reason(const types::global_dof_index n_dofs)
+      {
+        const types::global_dof_index crossover =
+          traits.dim == 2 ? crossover_2d : crossover_3d;
+        if (n_dofs < crossover)
+          {
+            why_direct = std::to_string(n_dofs) + " DoFs, below the " +
+                         std::to_string(traits.dim) + "D crossover " +
+                         std::to_string(crossover);
+            return "";
+          }
+        if (traits.slave_stiffness_ratio > slave_stiffness_limit)
+          {
+            why_direct = "a slave side " + significant(traits.slave_stiffness_ratio, 3) +
+                         " times stiffer than its master, above the multigrid's measured "
+                         "limit " +
+                         significant(slave_stiffness_limit, 3);
+            return "";
+          }
+        if (traits.largest_lambda_over_mu > lambda_over_mu_limit)
+          {
+            why_direct = "lambda/mu " + significant(traits.largest_lambda_over_mu, 3) +
+                         " above the multigrid's measured limit " +
+                         significant(lambda_over_mu_limit, 3);
+            return "";
+          }
+        return std::to_string(n_dofs) + " DoFs, at or above the " +
+               std::to_string(traits.dim) + "D crossover " + std::to_string(crossover);
+      }
+
+      // Measured on this machine (bench/solver_crossover.py,
+      // doc/performance.md "Direct or iterative").
+      static constexpr types::global_dof_index crossover_2d = 400000;
+      // Not measured yet (3D does not run): the usual 3D crossover of
+      // nested-dissection factorisation against multigrid.
+      static constexpr types::global_dof_index crossover_3d = 50000;
+      // Measured on prm/hertz.prm with CG (doc/stability.md, group
+      // "iterative"): a slave 1e2 / 1e3 / 1e4 times stiffer than its
+      // master takes 55 / 153 / 316 iterations, 1e8 does not converge (a
+      // stiff master up to 1e12 costs nothing); lambda / mu = 49 / 99 /
+      // 499 takes 72 / 96 / 164, B-bar at 4999 does not converge.
+      static constexpr double slave_stiffness_limit = 100.;
+      static constexpr double lambda_over_mu_limit  = 100.;
+    };
+  } // namespace
+
   void
   LinearSolver::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
+    prm.declare_entry("Type", "auto", Patterns::Selection("auto|direct|iterative"),
+                      "direct: a sparse factorisation (Direct solver). iterative: "
+                      "CG (GMRES while a Coulomb node slips) preconditioned by "
+                      "Trilinos ML algebraic multigrid with the rigid-body modes. "
+                      "auto: the iterative solver from the measured crossover size "
+                      "on (doc/performance.md), unless a contact pair's slave side is "
+                      "more than 100 times stiffer than its master or a body has "
+                      "lambda/mu above 100 (nu > 0.495), where the multigrid was "
+                      "measured to converge slowly or not at all (doc/stability.md).");
     prm.declare_entry("Direct solver", "Amesos_Mumps",
                       Patterns::Selection("Amesos_Klu|Amesos_Mumps"),
                       "Trilinos Amesos direct solver of the condensed system: "
@@ -15,6 +196,20 @@ namespace contact_fem
                       "from 5k DoFs on, 7x at 74k DoFs (doc/performance.md), and "
                       "the only one that detects zero pivots (free rigid-body "
                       "modes).");
+    prm.declare_entry("Maximum iterations", "1000", Patterns::Integer(1),
+                      "Krylov iterations allowed per solve of the iterative "
+                      "solver; a solve that needs more stops the run with a "
+                      "diagnosis.");
+    prm.declare_entry("Tolerance factor", "1e-2", Patterns::Double(0.),
+                      "The iterative solver stops when the linear residual is "
+                      "below this fraction of the residual at which Newton "
+                      "accepts an iterate (Newton/Displacement tolerances), so "
+                      "that no Newton iteration is added. In (0, 1).");
+    prm.declare_entry("Aggregation threshold", "1e-4", Patterns::Double(0.),
+                      "ML smoothed aggregation: couplings weaker than this "
+                      "fraction of the diagonal do not join aggregates.");
+    prm.declare_entry("Smoother sweeps", "2", Patterns::Integer(1, 20),
+                      "Degree of the Chebyshev smoother on each multigrid level.");
     prm.leave_subsection();
   }
 
@@ -22,10 +217,27 @@ namespace contact_fem
   LinearSolver::create(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
+    const std::string type = prm.get("Type");
     const std::string name = prm.get("Direct solver");
+    IterativeSolver::Parameters parameters;
+    parameters.max_iterations        = prm.get_integer("Maximum iterations");
+    parameters.tolerance_factor      = prm.get_double("Tolerance factor");
+    parameters.aggregation_threshold = prm.get_double("Aggregation threshold");
+    parameters.smoother_sweeps       = prm.get_integer("Smoother sweeps");
     prm.leave_subsection();
-    // A direct solver: the stiffness contrast between bodies (up to 1e12)
-    // defeats iterative solvers without a contact-aware preconditioner.
-    return std::make_unique<DirectSolver>(name);
+    AssertThrow(parameters.tolerance_factor > 0. && parameters.tolerance_factor < 1.,
+                ExcMessage("Linear solver/Tolerance factor: got " +
+                           significant(parameters.tolerance_factor, 6) +
+                           "; expected a value in (0, 1) (default 1e-2)."));
+    AssertThrow(parameters.aggregation_threshold < 1.,
+                ExcMessage("Linear solver/Aggregation threshold: got " +
+                           significant(parameters.aggregation_threshold, 6) +
+                           "; expected a value in [0, 1) (default 1e-4)."));
+    if (type == "direct")
+      return std::make_unique<DirectSolver>(name);
+    if (type == "iterative")
+      return std::make_unique<IterativeSolver>(parameters);
+    return std::make_unique<AutomaticSolver>(std::make_unique<DirectSolver>(name),
+                                             std::make_unique<IterativeSolver>(parameters));
   }
 } // namespace contact_fem

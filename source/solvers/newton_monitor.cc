@@ -95,19 +95,27 @@ namespace contact_fem
   }
 
   std::string
-  NewtonMonitor::header(const bool frictional)
+  NewtonMonitor::header(const bool frictional, const bool iterative)
   {
     return std::string(
              "    | it | disp. ratio | disp. abs | mult. ratio | mult. abs | changes | active |") +
-           (frictional ? " stick |  slip | s/s ch. |" : "");
+           (frictional ? " stick |  slip | s/s ch. |" : "") + (iterative ? " lin. it |" : "");
+  }
+
+  double
+  NewtonMonitor::displacement_target() const
+  {
+    return std::max(parameters.displacement_relative_tolerance * reference_u,
+                    parameters.displacement_absolute_tolerance);
   }
 
   std::string
-  NewtonMonitor::row(const unsigned int iteration,
-                     const unsigned int changes,
-                     const unsigned int n_active,
-                     const Assessment  &a,
-                     const FrictionCounts *friction) const
+  NewtonMonitor::row(const unsigned int                 iteration,
+                     const unsigned int                 changes,
+                     const unsigned int                 n_active,
+                     const Assessment                  &a,
+                     const FrictionCounts              *friction,
+                     const std::optional<unsigned int> &linear_iterations) const
   {
     std::ostringstream s;
     s << "    | " << std::setw(2) << iteration << " | "
@@ -119,6 +127,9 @@ namespace contact_fem
       s << " " << std::setw(5) << friction->n_stick << " | " << std::setw(5) << friction->n_slip
         << " | " << std::setw(7)
         << (iteration == 0 ? std::string("-") : std::to_string(friction->changes)) << " |";
+    if (linear_iterations)
+      s << " " << std::setw(7)
+        << (iteration == 0 ? std::string("-") : std::to_string(*linear_iterations)) << " |";
     s << (a.converged ?
             (a.residuals_small ? " converged" : " converged to linear-solver accuracy") :
             "");

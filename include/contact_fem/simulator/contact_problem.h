@@ -224,10 +224,11 @@ namespace contact_fem
     /// sparsity pattern of the step.
     void
     prepare_load_step(const double time, const double step_size, const bool first_step);
-    /// One Newton update: constraints, assembly, linear solve (failures
-    /// become NewtonFailures naming @p where), damping.
+    /// One Newton update: constraints, assembly, linear solve to a
+    /// residual below Newton's @p newton_residual_target (failures become
+    /// NewtonFailures naming @p where), damping.
     void
-    newton_update(const std::string &where);
+    newton_update(const std::string &where, const double newton_residual_target);
     /// What the contact part of one iteration gives.
     struct ContactUpdate
     {
@@ -277,7 +278,16 @@ namespace contact_fem
                            const std::vector<types::global_dof_index> &dofs);
 
     void
-    solve_linear_system();
+    solve_linear_system(const double newton_residual_target);
+    /// Tells the linear solver the scene and the size of the new mesh (it
+    /// may pick its method by them) and gives it the near-null space if it
+    /// asks.
+    void
+    select_linear_solver();
+    /// Young's modulus of the slave side of contact pair @p pair over that
+    /// of its master side (the largest of each); 0 without master faces.
+    double
+    slave_stiffness_ratio(const unsigned int pair) const;
     void
     compute_residual();
     double
@@ -476,6 +486,13 @@ namespace contact_fem
     std::unique_ptr<LinearSolver>  linear_solver; ///< after the matrix it refers to
     /// Newton solves of this cycle whose matrix had zero pivots, and the most.
     unsigned int singular_solves = 0, most_null_pivots = 0;
+    /// Krylov iterations of each Newton solve of the current load step
+    /// (iterative linear solver).
+    std::vector<unsigned int> linear_iterations_of_step;
+    /// Wall time of the multigrid set-ups of this cycle, part of "Solve:
+    /// linear".
+    double multigrid_setup_seconds = 0.;
+    static constexpr const char *multigrid_setup_section = "Solve: multigrid setup";
     TrilinosWrappers::MPI::Vector  system_rhs;
     TrilinosWrappers::MPI::Vector  solution;         ///< owned
     TrilinosWrappers::MPI::Vector  ghosted_solution; ///< locally relevant

@@ -51,11 +51,17 @@ namespace contact_fem
     void
     clear() override;
 
-    /// Solves matrix x = rhs; returns the l2 norm of the final residual.
+    std::string
+    description() const override;
+
+    /// Solves matrix x = rhs to the accuracy of the factorisation (the
+    /// request's target is not needed); returns the l2 norm of the final
+    /// residual.
     double
     solve(const TrilinosWrappers::SparseMatrix &matrix,
           TrilinosWrappers::MPI::Vector       &x,
-          const TrilinosWrappers::MPI::Vector &rhs) override;
+          const TrilinosWrappers::MPI::Vector &rhs,
+          const LinearSystemRequest           &request) override;
 
     bool
     can_solve_again() const override
@@ -81,6 +87,12 @@ namespace contact_fem
     has_factorisation() const
     {
       return solver != nullptr && factorised_matrix != nullptr;
+    }
+
+    bool
+    detects_null_pivots() const override
+    {
+      return amesos_name == "Amesos_Mumps";
     }
 
     /// Zero pivots of the last factorisation (MUMPS; always 0 for KLU): the

@@ -3,12 +3,14 @@
 #define contact_fem_linear_solver_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace contact_fem
 {
@@ -17,8 +19,8 @@ namespace contact_fem
   /// Thrown when the linear solver cannot solve the system. The message
   /// names the solver's error and its meaning; singular tells a singular
   /// matrix (a body that nothing holds) from the solver's own limits
-  /// (workspace, memory), so that the caller does not blame the supports
-  /// for a workspace shortage.
+  /// (workspace, memory, iterations), so that the caller does not blame the
+  /// supports for a workspace shortage.
   struct LinearSolverFailure : public std::runtime_error
   {
     LinearSolverFailure(const std::string &what, const bool singular)
@@ -28,12 +30,36 @@ namespace contact_fem
     bool singular;
   };
 
+  /// What the caller knows about one system: whether it is symmetric, and
+  /// the residual at which the Newton iteration accepts its result.
+  struct LinearSystemRequest
+  {
+    bool symmetric = true;
+    /// Newton's acceptance threshold for the equilibrium residual (force
+    /// units); an iterative solver stops a fixed factor below it. 0: as
+    /// accurate as the solver can.
+    double newton_residual_target = 0.;
+  };
+
+  /// The properties of a scene that decide which solver can serve it.
+  struct ProblemTraits
+  {
+    unsigned int dim = 2;
+    /// Largest Young's modulus of a contact pair's slave side over that of
+    /// its master side: the slave rows are condensed onto the master DoFs,
+    /// and a stiff slave on a soft master puts stiffnesses of both sizes
+    /// into the same aggregates.
+    double slave_stiffness_ratio = 0.;
+    /// Largest lambda / mu of the bodies (nu -> 0.5: lambda / mu -> inf).
+    double largest_lambda_over_mu = 1.;
+  };
+
   /**
    * Solves the condensed Newton systems of one sparsity pattern. The driver
    * and the checks that probe the converged system (a weakly held rotation)
-   * see the solver only through this class; today's implementation is the
-   * sparse direct DirectSolver, and an iterative one is one more class here
-   * and one more name in create().
+   * see the solver only through this class. Implementations: DirectSolver
+   * (MUMPS or KLU), IterativeSolver (CG or GMRES with algebraic multigrid)
+   * and AutomaticSolver, which picks one of the two per mesh.
    */
   class LinearSolver
   {
@@ -48,16 +74,67 @@ namespace contact_fem
     static std::unique_ptr<LinearSolver>
     create(ParameterHandler &prm);
 
+    /// The scene, once its materials are known (AutomaticSolver decides
+    /// with it).
+    virtual void
+    set_problem(const ProblemTraits &)
+    {}
+
+    /// A new mesh with @p n_dofs unknowns, before its first solve. Returns
+    /// whether the solver wants the near-null space (the rigid-body modes)
+    /// of this mesh through set_near_null_space().
+    virtual bool
+    select(const types::global_dof_index n_dofs)
+    {
+      (void)n_dofs;
+      return false;
+    }
+
+    /// The rigid-body modes, each with one entry per locally owned DoF.
+    virtual void
+    set_near_null_space(std::vector<std::vector<double>> &&modes)
+    {
+      (void)modes;
+    }
+
+    /// One line for the log: which solver serves the current mesh.
+    virtual std::string
+    description() const = 0;
+
+    /// Whether solve() iterates (then its iteration counts are reported).
+    virtual bool
+    iterative() const
+    {
+      return false;
+    }
+
     /// Forgets everything tied to the matrix. Must be called before the
     /// matrix is re-created (new sparsity pattern).
     virtual void
     clear() = 0;
 
-    /// Solves matrix x = rhs; returns the l2 norm of the final residual.
+    /// Solves matrix x = rhs, starting from @p x if the solver iterates;
+    /// returns the l2 norm of the final residual.
     virtual double
     solve(const TrilinosWrappers::SparseMatrix &matrix,
           TrilinosWrappers::MPI::Vector       &x,
-          const TrilinosWrappers::MPI::Vector &rhs) = 0;
+          const TrilinosWrappers::MPI::Vector &rhs,
+          const LinearSystemRequest           &request) = 0;
+
+    /// Krylov iterations of the last solve(); 0 for a direct solver.
+    virtual unsigned int
+    last_iterations() const
+    {
+      return 0;
+    }
+
+    /// Wall seconds spent building preconditioners since the last call;
+    /// clears them.
+    virtual double
+    take_setup_seconds()
+    {
+      return 0.;
+    }
 
     /// Whether solve_again() can answer for the matrix of the last solve()
     /// at a small cost (kept factors or preconditioner).
@@ -67,6 +144,14 @@ namespace contact_fem
     /// The response of the matrix of the last solve() to another @p rhs.
     virtual void
     solve_again(TrilinosWrappers::MPI::Vector &x, const TrilinosWrappers::MPI::Vector &rhs) = 0;
+
+    /// Whether n_null_pivots() means anything: only a factorisation sees
+    /// zero pivots.
+    virtual bool
+    detects_null_pivots() const
+    {
+      return false;
+    }
 
     /// Zero pivots of the last solve (free rigid-body modes the matrix
     /// leaves), for a solver that detects them; 0 otherwise.

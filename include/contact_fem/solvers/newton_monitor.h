@@ -5,6 +5,7 @@
 
 #include <contact_fem/solvers/solver_parameters.h>
 
+#include <optional>
 #include <string>
 
 namespace contact_fem
@@ -46,9 +47,10 @@ namespace contact_fem
            const bool         searched_again);
 
     /// The header of the table; with @p frictional also the stick and
-    /// slip counts and the stick/slip changes (part of all changes).
+    /// slip counts and the stick/slip changes (part of all changes); with
+    /// @p iterative the Krylov iterations of the linear solve.
     static std::string
-    header(const bool frictional = false);
+    header(const bool frictional, const bool iterative);
 
     /// The friction cells of a row.
     struct FrictionCounts
@@ -57,13 +59,21 @@ namespace contact_fem
     };
 
     /// The row of @p iteration for the last assess(); with @p friction
-    /// (frictional formulations) its cells too.
+    /// (frictional formulations) its cells too, and with
+    /// @p linear_iterations (an iterative linear solver) those.
     std::string
-    row(const unsigned int     iteration,
-        const unsigned int     changes,
-        const unsigned int     n_active,
-        const Assessment      &assessment,
-        const FrictionCounts *friction = nullptr) const;
+    row(const unsigned int                 iteration,
+        const unsigned int                 changes,
+        const unsigned int                 n_active,
+        const Assessment                  &assessment,
+        const FrictionCounts              *friction          = nullptr,
+        const std::optional<unsigned int> &linear_iterations = std::nullopt) const;
+
+    /// The equilibrium residual at which an iterate is accepted: the
+    /// larger of the absolute tolerance and the relative tolerance times
+    /// the largest residual of the step so far.
+    double
+    displacement_target() const;
 
     /// "(last: |r_u| ..., |r_lambda| ..., N active-set changes)" for a
     /// failure message.
