@@ -3,6 +3,9 @@
 
 #include <contact_fem/adaptivity/marking.h>
 
+#include <algorithm>
+#include <cmath>
+#include <map>
 #include <vector>
 
 namespace contact_fem::Marking
@@ -98,6 +101,69 @@ namespace contact_fem::Marking
       }
   }
 
+  template <int dim>
+  void
+  flag_master_faces_opposite_flagged_slave_faces(DoFHandler<dim>             &dof_handler,
+                                                 const ContactInterface<dim> &interface)
+  {
+    // An interface face is known by the DoFs of the first component of its
+    // nodes, which the cell faces of every rank can name.
+    const FiniteElement<dim> &fe = dof_handler.get_fe();
+    std::map<std::vector<types::global_dof_index>, unsigned int> face_of_dofs;
+    for (unsigned int i = 0; i < interface.faces.size(); ++i)
+      {
+        std::vector<types::global_dof_index> key;
+        for (const unsigned int n : interface.faces[i].nodes)
+          key.push_back(interface.nodes[n].dofs[0]);
+        std::sort(key.begin(), key.end());
+        face_of_dofs[key] = i;
+      }
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+    const auto interface_face = [&](const auto &cell, const unsigned int f) {
+      cell->face(f)->get_dof_indices(face_dofs);
+      std::vector<types::global_dof_index> key;
+      for (unsigned int i = 0; i < face_dofs.size(); ++i)
+        if (fe.face_system_to_component_index(i, f).first == 0)
+          key.push_back(face_dofs[i]);
+      std::sort(key.begin(), key.end());
+      const auto it = face_of_dofs.find(key);
+      return it == face_of_dofs.end() ? numbers::invalid_unsigned_int : it->second;
+    };
+
+    // The flagged slave faces of all ranks, so that every rank takes the
+    // same decision for the master faces it owns, whoever owns the slave.
+    std::vector<unsigned int> slave_flagged(interface.faces.size(), 0);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->refine_flag_set())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            if (const unsigned int i = interface_face(cell, f);
+                i != numbers::invalid_unsigned_int && interface.faces[i].slave)
+              slave_flagged[i] = 1;
+    Utilities::MPI::max(slave_flagged, dof_handler.get_communicator(), slave_flagged);
+
+    // Refinement halves a face, so a master face is "comparable" to the
+    // children of its slave face unless it is nearer (on the log scale)
+    // to twice their length than to their length.
+    const double largest_ratio = std::sqrt(2.);
+    std::vector<bool> refine_master(interface.faces.size(), false);
+    for (const auto &[slave, master] : interface.coupled_faces)
+      if (slave_flagged[slave] &&
+          interface.face_lengths[master] > largest_ratio * 0.5 * interface.face_lengths[slave])
+        refine_master[master] = true;
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && !cell->refine_flag_set())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            if (const unsigned int i = interface_face(cell, f);
+                i != numbers::invalid_unsigned_int && refine_master[i])
+              {
+                cell->clear_coarsen_flag();
+                cell->set_refine_flag();
+              }
+  }
+
   template void
   flag_cells(parallel::distributed::Triangulation<2> &, const Vector<float> &,
              const RefinementParameters &);
@@ -110,4 +176,10 @@ namespace contact_fem::Marking
   template void
   flag_layers_behind_faces(parallel::distributed::Triangulation<3> &,
                            const std::set<types::boundary_id> &, const unsigned int);
+  template void
+  flag_master_faces_opposite_flagged_slave_faces(DoFHandler<2> &,
+                                                 const ContactInterface<2> &);
+  template void
+  flag_master_faces_opposite_flagged_slave_faces(DoFHandler<3> &,
+                                                 const ContactInterface<3> &);
 } // namespace contact_fem::Marking

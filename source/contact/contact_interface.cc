@@ -187,6 +187,8 @@ namespace contact_fem
     for (unsigned int i = 0; i < interface_dofs.size(); ++i)
       dof_position[interface_dofs[i]] = i;
     slave_nodes.clear();
+    coupled_faces.clear();
+    face_lengths.clear();
     statistics.assign(pairs.size(), PairStatistics());
   }
 
@@ -451,6 +453,8 @@ namespace contact_fem
           }
 
         std::map<unsigned int, SlaveNode> slave_data = slave_node_geometry(lines, lengths);
+        face_lengths = lengths;
+        coupled_faces.clear();
 
         // Broad phase: one R-tree of master face boxes per pair.
         statistics.assign(pairs.size(), PairStatistics());
@@ -532,6 +536,7 @@ namespace contact_fem
                       continue;
                     overlapping            = true;
                     master_is_candidate[m] = true;
+                    coupled_faces.emplace_back(f, m);
                     for (unsigned int j = 0; j < faces[f].nodes.size(); ++j)
                       {
                         SlaveNode &s = slave_data[faces[f].nodes[j]];

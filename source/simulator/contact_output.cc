@@ -282,6 +282,7 @@ namespace contact_fem
       .set("relative_imbalance_components", imbalance_components)
       .set("support_reaction", reaction.norm())
       .set("force_scale", scale)
+      .set("largest_body_load", largest_body_load)
       .set("relative_imbalance", scale > no_force ? (load + reaction).norm() / scale : 0.);
     return result;
   }
@@ -484,10 +485,14 @@ namespace contact_fem
         if (contact->frictional())
           print_friction_results(contact_json, reaction);
       }
+    // A plain "0" when nothing is loaded. The net of loads that balance
+    // is round-off, or exactly 0 depending on the summation order (on the
+    // partition): printed alike either way.
     const double applied = reaction["applied_load"].number_value();
     pcout << "    applied load:                 "
-          << (applied == 0. ? std::string("0") :
-                              force_text(applied, reaction["force_scale"].number_value()))
+          << (reaction["largest_body_load"].number_value() == 0. ?
+                std::string("0") :
+                force_text(applied, reaction["force_scale"].number_value()))
           << std::endl
           << "    support reaction:             "
           << force_text(reaction["support_reaction"].number_value(),

@@ -256,6 +256,10 @@ namespace contact_fem
     Marking::flag_cells(triangulation, indicators, refinement);
     if (refinement.estimator != "global")
       {
+        // Stick ties the slave to the master's mesh; frictionless contact
+        // is left as it was (its meshes and outputs unchanged).
+        if (contact && contact->frictional())
+          Marking::flag_master_faces_opposite_flagged_slave_faces(dof_handler, *interface);
         std::set<types::boundary_id> contact_ids;
         for (const auto &pair : contact_parameters.pairs)
           contact_ids.insert({pair.slave, pair.master});

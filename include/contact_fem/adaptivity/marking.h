@@ -1,12 +1,15 @@
-// Marking cells for refinement: by their indicators, and the cell layers
-// behind flagged contact-surface cells.
+// Marking cells for refinement: by their indicators, the master faces
+// opposite flagged slave faces, and the cell layers behind flagged
+// contact-surface cells.
 #ifndef contact_fem_marking_h
 #define contact_fem_marking_h
 
 #include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/vector.h>
 
 #include <contact_fem/adaptivity/refinement.h>
+#include <contact_fem/contact/contact_interface.h>
 
 #include <set>
 
@@ -34,6 +37,21 @@ namespace contact_fem
     flag_layers_behind_faces(parallel::distributed::Triangulation<dim> &triangulation,
                              const std::set<types::boundary_id>        &contact_ids,
                              const unsigned int                         layers);
+
+    /**
+     * Used with friction: stick ties a slave node to the master face it
+     * projects on, and where the slave faces are finer than the master's,
+     * the tangential multiplier oscillates from node to node around the
+     * right mean (the adaptive Cattaneo spike, doc/validation.md). So a
+     * flagged slave face takes along the master faces the last search
+     * coupled it with, where these would be more than sqrt(2) times as
+     * long as its children. The flagged slave faces are gathered from all
+     * ranks, so the result does not depend on the partition. Collective.
+     */
+    template <int dim>
+    void
+    flag_master_faces_opposite_flagged_slave_faces(DoFHandler<dim>             &dof_handler,
+                                                   const ContactInterface<dim> &interface);
   } // namespace Marking
 } // namespace contact_fem
 

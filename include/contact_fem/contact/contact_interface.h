@@ -230,6 +230,11 @@ namespace contact_fem
     std::vector<Face>           faces;
     std::vector<SlaveNode>      slave_nodes;
     std::vector<PairStatistics> statistics;
+    /// The slave and master faces (indices in faces) the last search found
+    /// a mortar segment between, as (slave face, master face).
+    std::vector<std::pair<unsigned int, unsigned int>> coupled_faces;
+    /// Length of every face at the configuration of the last search.
+    std::vector<double> face_lengths;
     unsigned int                degree = 1;          ///< of the elements
     unsigned int                geometry_degree = 1; ///< of the face geometry
     /// How the surfaces are split over the ranks (locally owned faces).
