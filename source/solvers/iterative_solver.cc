@@ -146,6 +146,6 @@ namespace contact_fem
   {
     AssertThrow(can_solve_again(), ExcMessage("the iterative solver has no preconditioner"));
     x = 0.;
-    iterate(*last_matrix, x, rhs, last_symmetric, 1e-10 * rhs.l2_norm());
+    iterate(*last_matrix, x, rhs, last_symmetric, again_tolerance * rhs.l2_norm());
   }
 } // namespace contact_fem
