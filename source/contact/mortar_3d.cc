@@ -52,59 +52,6 @@ namespace contact_fem
         return a[0] * b[1] - a[1] * b[0];
       }
 
-      /// Collapsed (Duffy) Gauss rule with n x n points on the triangle
-      /// (0,0), (1,0), (0,1): x = u, y = v (1 - u). Exact for polynomials of
-      /// total degree 2 n - 2 (the factor 1 - u of the Jacobian costs one),
-      /// and of any order, which QGaussSimplex<2> of deal.II 9.4 is not.
-      void
-      triangle_rule(const unsigned int     n,
-                    std::vector<Point<2>> &points,
-                    std::vector<double>   &weights)
-      {
-        const QGauss<1> q(n);
-        points.clear();
-        weights.clear();
-        for (unsigned int i = 0; i < n; ++i)
-          for (unsigned int j = 0; j < n; ++j)
-            {
-              const double u = q.point(i)[0], v = q.point(j)[0];
-              points.emplace_back(u, v * (1. - u));
-              weights.push_back(q.weight(i) * q.weight(j) * (1. - u));
-            }
-      }
-
-      /// Calls f(xi, w) for the quadrature points of the given parameter
-      /// polygons: each is cut into triangles fanning out from its vertex
-      /// centroid, with the rule above on each. The weights carry the signed
-      /// triangle areas, so a polygon that is not convex but star-shaped
-      /// from its centroid is integrated exactly too.
-      template <typename Function>
-      void
-      for_each_point(const std::vector<ParameterPolygon> &polygons,
-                     const unsigned int                   n,
-                     const Function                      &f)
-      {
-        std::vector<Point<2>> ref_points;
-        std::vector<double>   ref_weights;
-        triangle_rule(n, ref_points, ref_weights);
-        for (const ParameterPolygon &polygon : polygons)
-          {
-            Point<2> c;
-            for (const Point<2> &v : polygon)
-              c += v / static_cast<double>(polygon.size());
-            for (unsigned int k = 0; k < polygon.size(); ++k)
-              {
-                const Tensor<1, 2> a   = polygon[k] - c;
-                const Tensor<1, 2> b   = polygon[(k + 1) % polygon.size()] - c;
-                const double       det = cross_2d(a, b);
-                if (det == 0.)
-                  continue;
-                for (unsigned int q = 0; q < ref_points.size(); ++q)
-                  f(c + ref_points[q][0] * a + ref_points[q][1] * b, ref_weights[q] * det);
-              }
-          }
-      }
-
       double
       clamp(const double x)
       {
@@ -122,6 +69,139 @@ namespace contact_fem
         for (unsigned int k = 0; k < normals.size(); ++k)
           n += quad_shape_value(face.shape_degree(), k, xi) * normals[k];
         return n;
+      }
+
+      /// The auxiliary plane of a slave face: through its centre, normal n0
+      /// (the nodal normals interpolated there), spanned by e1 (the xi
+      /// tangent made orthogonal to n0) and e2 = n0 x e1.
+      struct AuxiliaryPlane
+      {
+        Point<3>     origin;
+        Tensor<1, 3> normal, e1, e2;
+
+        /// (e1, e2) coordinates of the projection of @p x along the normal.
+        Point<2>
+        coordinates(const Point<3> &x) const
+        {
+          return Point<2>((x - origin) * e1, (x - origin) * e2);
+        }
+        Point<3>
+        point(const Point<2> &u) const
+        {
+          return origin + u[0] * e1 + u[1] * e2;
+        }
+      };
+
+      AuxiliaryPlane
+      auxiliary_plane(const QuadFace &slave, const std::vector<Tensor<1, 3>> &normals)
+      {
+        AssertDimension(normals.size(), slave.n_shape_nodes());
+        const Point<2> centre;
+        AuxiliaryPlane plane;
+        for (unsigned int k = 0; k < normals.size(); ++k)
+          plane.normal += quad_shape_value(slave.shape_degree(), k, centre) * normals[k];
+        AssertThrow(plane.normal.norm() > 0.,
+                    ExcMessage("The slave normals cancel at the face centre."));
+        plane.normal /= plane.normal.norm();
+        plane.origin        = slave.point(centre);
+        const auto tangents = slave.tangents(centre);
+        plane.e1            = tangents[0] - (tangents[0] * plane.normal) * plane.normal;
+        plane.e1 /= plane.e1.norm();
+        plane.e2 = cross_product_3d(plane.normal, plane.e1);
+        return plane;
+      }
+
+      /// Calls f(xi, jxw) for the quadrature points of the given polygons of
+      /// slave parameters; jxw is the weight times the slave area element.
+      ///
+      /// The polygons come from clipping in the auxiliary plane, so their
+      /// edges are straight there, and they are integrated there: cut into
+      /// triangles fanning out from the vertex centroid, every point mapped
+      /// back along n0 to the slave. That makes the region exact for every
+      /// flat face (straight edges in the slave parameters instead were off
+      /// by 4 % of the area on quadrilaterals with corners moved by 10 % of
+      /// their size). Edges on the slave boundary, though, follow the face:
+      /// straight in the parameters, so the whole of a curved face (whose
+      /// projected edges bend) is covered exactly too.
+      ///
+      /// Each triangle (c, E(v)), E the edge, is integrated by the collapsed
+      /// Gauss rule x = c + u (E(v) - c), dA = u |(E - c) x E'| du dv, n x n
+      /// points: exact for polynomials of total degree 2 n - 2 on straight
+      /// triangles, and of any order, which QGaussSimplex<2> of deal.II 9.4
+      /// is not. Signed weights: polygons star-shaped from their centroid,
+      /// convex or not, are exact too.
+      template <typename Function>
+      void
+      for_each_point(const QuadFace                      &slave,
+                     const AuxiliaryPlane                &plane,
+                     const std::vector<ParameterPolygon> &polygons,
+                     const unsigned int                   n,
+                     const Function                      &f)
+      {
+        const QGauss<1>       gauss(n);
+        std::vector<Point<2>> vertices;
+        for (const ParameterPolygon &polygon : polygons)
+          {
+            const unsigned int m = polygon.size();
+            vertices.clear();
+            Point<2> c;
+            double   area = 0.;
+            for (const Point<2> &xi : polygon)
+              {
+                vertices.push_back(plane.coordinates(slave.point(xi)));
+                c += vertices.back() / static_cast<double>(m);
+              }
+            for (unsigned int k = 0; k < m; ++k)
+              area += cross_2d(vertices[k], vertices[(k + 1) % m]);
+            // Counterclockwise in the slave parameters, but clockwise in the
+            // plane if the slave parameters run clockwise seen from n0.
+            const double orientation = area < 0. ? -1. : 1.;
+            for (unsigned int k = 0; k < m; ++k)
+              {
+                const Point<2> xa = polygon[k], xb = polygon[(k + 1) % m];
+                // On the slave boundary: both ends on the same line xi = +-1
+                // or eta = +-1 (overlap() clamps them there).
+                bool on_boundary = false;
+                for (unsigned int d = 0; d < 2; ++d)
+                  on_boundary |= (std::abs(xa[d]) == 1. && xb[d] == xa[d]);
+                for (unsigned int j = 0; j < n; ++j)
+                  {
+                    const double v = gauss.point(j)[0];
+                    Point<2>     E;
+                    Tensor<1, 2> dE;
+                    if (on_boundary)
+                      {
+                        const Point<2>     xi = xa + v * (xb - xa);
+                        const auto         t  = slave.tangents(xi);
+                        const Tensor<1, 3> T  = (xb - xa)[0] * t[0] + (xb - xa)[1] * t[1];
+                        E                     = plane.coordinates(slave.point(xi));
+                        dE                    = Tensor<1, 2>({T * plane.e1, T * plane.e2});
+                      }
+                    else
+                      {
+                        E  = vertices[k] + v * (vertices[(k + 1) % m] - vertices[k]);
+                        dE = vertices[(k + 1) % m] - vertices[k];
+                      }
+                    const double det = orientation * cross_2d(E - c, dE);
+                    if (det == 0.)
+                      continue;
+                    for (unsigned int i = 0; i < n; ++i)
+                      {
+                        const double u = gauss.point(i)[0];
+                        Point<2>     xi;
+                        if (!project_along(slave, plane.point(c + u * (E - c)), plane.normal, xi))
+                          continue;
+                        xi = Point<2>(clamp(xi[0]), clamp(xi[1]));
+                        // Plane area to slave area: |t_xi x t_eta| / |n0 . (t_xi x t_eta)|.
+                        const auto         t  = slave.tangents(xi);
+                        const Tensor<1, 3> nt = cross_product_3d(t[0], t[1]);
+                        f(xi,
+                          gauss.weight(i) * gauss.weight(j) * u * det * nt.norm() /
+                            std::abs(nt * plane.normal));
+                      }
+                  }
+              }
+          }
       }
     } // namespace
 
@@ -181,29 +261,58 @@ namespace contact_fem
       return orientation * n / n.norm();
     }
 
-    FullMatrix<double>
-    dual_basis_coefficients(const QuadFace &slave, const std::vector<ParameterPolygon> &polygons)
+    namespace
     {
-      Assert(!polygons.empty(), ExcMessage("The dual basis needs a non-empty overlap."));
-      const unsigned int p = slave.shape_degree(), n = slave.n_shape_nodes();
-      FullMatrix<double> Me(n, n), De(n, n);
-      // Exact for flat parallelogram faces; the Jacobian of other faces is
-      // not polynomial, hence the generous rule (as in 2D).
-      for_each_point(polygons, 2 * p + 6, [&](const Point<2> &xi, const double w) {
-        const auto   t   = slave.tangents(xi);
-        const double jxw = cross_product_3d(t[0], t[1]).norm() * w;
-        for (unsigned int j = 0; j < n; ++j)
+      /// A = D_e M_e^{-1} from the sums over the points f(xi, jxw) visits.
+      template <typename Rule>
+      FullMatrix<double>
+      dual_basis_from_rule(const QuadFace &slave, const Rule &for_each_point)
+      {
+        const unsigned int p = slave.shape_degree(), n = slave.n_shape_nodes();
+        FullMatrix<double> Me(n, n), De(n, n);
+        for_each_point([&](const Point<2> &xi, const double jxw) {
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              const double Nj = quad_shape_value(p, j, xi);
+              De(j, j) += Nj * jxw;
+              for (unsigned int k = 0; k < n; ++k)
+                Me(j, k) += Nj * quad_shape_value(p, k, xi) * jxw;
+            }
+        });
+        FullMatrix<double> Me_inverse(n, n), A(n, n);
+        Me_inverse.invert(Me);
+        De.mmult(A, Me_inverse);
+        return A;
+      }
+    } // namespace
+
+    FullMatrix<double>
+    dual_basis_coefficients(const QuadFace &slave)
+    {
+      // Tensor Gauss on the parameter square: exact for flat parallelograms;
+      // the Jacobian of other faces is not polynomial, hence the generous
+      // rule (as in 2D).
+      const QGauss<2> rule(2 * slave.shape_degree() + 8);
+      return dual_basis_from_rule(slave, [&](const auto &f) {
+        for (unsigned int q = 0; q < rule.size(); ++q)
           {
-            const double Nj = quad_shape_value(p, j, xi);
-            De(j, j) += Nj * jxw;
-            for (unsigned int k = 0; k < n; ++k)
-              Me(j, k) += Nj * quad_shape_value(p, k, xi) * jxw;
+            const Point<2> xi(2. * rule.point(q)[0] - 1., 2. * rule.point(q)[1] - 1.);
+            const auto     t = slave.tangents(xi);
+            f(xi, 4. * rule.weight(q) * cross_product_3d(t[0], t[1]).norm());
           }
       });
-      FullMatrix<double> Me_inverse(n, n), A(n, n);
-      Me_inverse.invert(Me);
-      De.mmult(A, Me_inverse);
-      return A;
+    }
+
+    FullMatrix<double>
+    dual_basis_coefficients(const QuadFace                      &slave,
+                            const std::vector<Tensor<1, 3>>     &slave_normals,
+                            const std::vector<ParameterPolygon> &polygons)
+    {
+      Assert(!polygons.empty(), ExcMessage("The dual basis needs a non-empty overlap."));
+      const AuxiliaryPlane plane = auxiliary_plane(slave, slave_normals);
+      return dual_basis_from_rule(slave, [&](const auto &f) {
+        for_each_point(slave, plane, polygons, slave.shape_degree() + 5, f);
+      });
     }
 
     bool
@@ -253,25 +362,15 @@ namespace contact_fem
       using BoostPolygon = bg::model::polygon<BoostPoint, /*clockwise=*/false>;
       polygons.clear();
 
-      // The auxiliary plane: through the slave centre, normal n0, spanned by
-      // e1 (the slave xi tangent made orthogonal to n0) and e2 = n0 x e1.
-      const Point<2> centre;
-      Tensor<1, 3>   n0 = interpolated_normal(slave, slave_normals, centre);
-      AssertThrow(n0.norm() > 0., ExcMessage("The slave normals cancel at the face centre."));
-      n0 /= n0.norm();
-      const Point<3> x0       = slave.point(centre);
-      const auto     tangents = slave.tangents(centre);
-      Tensor<1, 3>   e1       = tangents[0] - (tangents[0] * n0) * n0;
-      e1 /= e1.norm();
-      const Tensor<1, 3> e2 = cross_product_3d(n0, e1);
+      const AuxiliaryPlane plane = auxiliary_plane(slave, slave_normals);
 
       // Projection along n0 into the plane, in (e1, e2) coordinates.
       const auto project = [&](const QuadFace &face) {
         BoostPolygon polygon;
         for (const unsigned int i : boundary_ring(face.degree()))
           {
-            const Tensor<1, 3> r = face.nodes[i] - x0;
-            bg::append(polygon.outer(), BoostPoint(r * e1, r * e2));
+            const Point<2> u = plane.coordinates(face.nodes[i]);
+            bg::append(polygon.outer(), BoostPoint(u[0], u[1]));
           }
         // Closes the ring and orients it counterclockwise: the master, whose
         // normal opposes n0, comes clockwise.
@@ -310,15 +409,21 @@ namespace contact_fem
           ParameterPolygon polygon;
           for (std::size_t v = 0; v < n_vertices; ++v)
             {
-              const Point<3> x = x0 + ring[v].x() * e1 + ring[v].y() * e2;
-              Point<2>       xi;
-              if (!project_along(slave, x, n0, xi))
+              Point<2> xi;
+              if (!project_along(slave,
+                                 plane.point(Point<2>(ring[v].x(), ring[v].y())),
+                                 plane.normal,
+                                 xi))
                 {
                   polygons.clear();
                   return false;
                 }
-              // Vertices on the slave boundary come back up to round-off.
-              polygon.emplace_back(clamp(xi[0]), clamp(xi[1]));
+              // Vertices on the slave boundary come back up to round-off:
+              // put them on it (for_each_point() recognises its edges).
+              for (unsigned int d = 0; d < 2; ++d)
+                if (std::abs(xi[d]) > 1. - 1e-10)
+                  xi[d] = xi[d] > 0. ? 1. : -1.;
+              polygon.push_back(xi);
             }
           double area = 0.;
           for (std::size_t v = 0; v < polygon.size(); ++v)
@@ -352,9 +457,8 @@ namespace contact_fem
       result.overlap_area = 0.;
 
       std::vector<double> phi(ns);
-      for_each_point(result.polygons, n_quadrature_points, [&](const Point<2> &xi, const double w) {
-        const auto     t       = slave.tangents(xi);
-        const double   jxw     = cross_product_3d(t[0], t[1]).norm() * w;
+      const AuxiliaryPlane plane = auxiliary_plane(slave, slave_normals);
+      for_each_point(slave, plane, result.polygons, n_quadrature_points, [&](const Point<2> &xi, const double jxw) {
         const Point<3> x_slave = slave.point(xi);
         Point<2>       eta;
         if (!project_along(master, x_slave, interpolated_normal(slave, slave_normals, xi), eta))

@@ -19,8 +19,13 @@ namespace contact_fem
 
   namespace Mortar
   {
-    /// A polygon in the parameter plane of a face, counterclockwise, not
-    /// closed (the last vertex is not repeated).
+    /// An overlap polygon of a slave face: its vertices as slave parameters
+    /// (xi, eta), counterclockwise, not closed. Its edges are straight in the
+    /// auxiliary plane of the slave face (see overlap()), where it was cut
+    /// out, so it is integrated there and covers the overlap of flat faces
+    /// of any shape exactly; edges on the slave boundary (both ends on the
+    /// same line xi = +-1 or eta = +-1) follow the face instead, so a fully
+    /// covered curved face is integrated whole.
     using ParameterPolygon = std::vector<Point<2>>;
 
     /**
@@ -93,18 +98,26 @@ namespace contact_fem
     /**
      * Coefficients A of the dual basis Phi_j = sum_k A_jk N_k of a slave
      * face: A = D_e M_e^{-1} with D_e = diag(int N_j) and M_e = (int N_j N_k),
-     * both integrated over the union of the given slave parameter @p polygons
-     * (the overlaps with all masters, as integrate_pair() or overlap() return
-     * them; default: the whole face), so that int Phi_j N_k = delta_jk int N_k
-     * there. The polygons must not overlap each other. Near-singular when the
-     * polygons cover almost none of a node's support (the caller leaves such
-     * nodes out of contact, as in 2D).
+     * integrated over the whole face, so that int Phi_j N_k = delta_jk int N_k
+     * there (biorthogonality, Wohlmuth 2000).
+     */
+    FullMatrix<double>
+    dual_basis_coefficients(const QuadFace &slave);
+
+    /**
+     * The same, with D_e and M_e integrated over the overlapped part of the
+     * slave face only: the union of the @p polygons of all its masters (as
+     * integrate_pair() or overlap() return them, with the same
+     * @p slave_normals, which define the auxiliary plane). Biorthogonal there,
+     * which keeps the gap and the pressure consistent at the rim of the
+     * master surface (as in 2D and Kratos). The polygons must not overlap
+     * each other. Near-singular when they cover almost none of a node's
+     * support (the caller leaves such nodes out of contact, as in 2D).
      */
     FullMatrix<double>
     dual_basis_coefficients(const QuadFace                      &slave,
-                            const std::vector<ParameterPolygon> &polygons = {
-                              {Point<2>(-1., -1.), Point<2>(1., -1.), Point<2>(1., 1.),
-                               Point<2>(-1., 1.)}});
+                            const std::vector<Tensor<1, 3>>     &slave_normals,
+                            const std::vector<ParameterPolygon> &polygons);
 
     /**
      * Projects a point @p x along @p direction onto the surface of @p face:
@@ -121,15 +134,16 @@ namespace contact_fem
                   Point<2>           &eta);
 
     /**
-     * The overlap of a slave face with a master face, as polygons in the
-     * slave parameter plane (counterclockwise). Segmentation as in Popp et
+     * The overlap of a slave face with a master face, as polygons of slave
+     * parameters (see ParameterPolygon). Segmentation as in Popp et
      * al. (2010) and Kratos' exact mortar segmentation: the auxiliary plane
      * passes through the slave centre with the normal n0 interpolated from
      * @p slave_normals there; the boundary nodes of both faces (4, or 8 with
      * the edge midpoints of a 9-node face, so curved edges are replaced by
      * two chords each) are projected along n0 into it; the two polygons are
      * intersected; the vertices of the intersection are mapped back along n0
-     * onto the slave face. Usually one convex polygon; a curved face can
+     * onto the slave face (those within 1e-10 of its boundary put on it).
+     * Usually one convex polygon; a curved face can
      * give a non-convex one or several. Returns false, with no polygons, if
      * the intersection has no area (faces apart, or touching along an edge
      * or at a corner).
@@ -162,13 +176,15 @@ namespace contact_fem
      *
      * @p slave_normals: nodal normals of the slave DoF nodes (averaged, unit,
      * pointing out of the slave body). The overlap is that of overlap(). Its
-     * polygons are cut into triangles (fan from the vertex centroid) and
-     * integrated in the slave parameter plane by a collapsed Gauss rule with
+     * polygons are cut into triangles in the auxiliary plane (fan from the
+     * vertex centroid) and integrated by a collapsed Gauss rule with
      * @p n_quadrature_points per direction (exact for polynomials of total
-     * degree 2 n - 2): n = 3 is exact for bilinear parallelogram faces, n = 5
-     * for flat biquadratic ones. At each quadrature point the master
-     * parameter is the projection along the interpolated slave normal field
-     * (as in 2D and in Kratos' conditions), clamped to the master face.
+     * degree 2 n - 2), each point mapped back along n0 to the slave face.
+     * For flat parallelogram faces the integrands are polynomials: n = 3 is
+     * exact for bilinear faces, n = 5 for biquadratic ones; the areas (sum D,
+     * sum M) are exact for every flat face. At each quadrature point the
+     * master parameter is the projection along the interpolated slave normal
+     * field (as in 2D and in Kratos' conditions), clamped to the master face.
      *
      * Returns false if the faces do not overlap.
      */
