@@ -458,7 +458,7 @@ namespace contact_fem
 
       std::vector<double> phi(ns);
       const AuxiliaryPlane plane = auxiliary_plane(slave, slave_normals);
-      for_each_point(slave, plane, result.polygons, n_quadrature_points, [&](const Point<2> &xi, const double jxw) {
+      const auto add_point = [&](const Point<2> &xi, const double jxw) {
         const Point<3> x_slave = slave.point(xi);
         Point<2>       eta;
         if (!project_along(master, x_slave, interpolated_normal(slave, slave_normals, xi), eta))
@@ -483,7 +483,8 @@ namespace contact_fem
             for (unsigned int j = 0; j < ns; ++j)
               result.M(j, l) += phi[j] * Nl * jxw;
           }
-      });
+      };
+      for_each_point(slave, plane, result.polygons, n_quadrature_points, add_point);
       return result.overlap_area > 0.;
     }
   } // namespace Mortar
