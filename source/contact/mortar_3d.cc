@@ -1,0 +1,491 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <contact_fem/contact/mortar.h>
+#include <contact_fem/contact/mortar_3d.h>
+
+// Boost 1.74 rescales overlay input to an integer grid by default, which put
+// the intersection vertices ~1e-8 of the box off (sum M missed the overlap
+// area by that much); later versions drop the rescaling. Turned off here
+// only: the polygon types below appear in no other translation unit, and the
+// R-trees elsewhere (boxes and points) do not use the overlay code.
+#define BOOST_GEOMETRY_NO_ROBUSTNESS
+#include <boost/geometry.hpp>
+#include <boost/geometry/geometries/point_xy.hpp>
+#include <boost/geometry/geometries/polygon.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace contact_fem
+{
+  namespace Mortar
+  {
+    namespace
+    {
+      /// 1D node indices (in LineFace order: -1, 1, 0) of the tensor-product
+      /// node @p i of a quadrilateral face of degree @p p.
+      std::array<unsigned int, 2>
+      line_indices(const unsigned int p, const unsigned int i)
+      {
+        Assert(p == 1 || p == 2, ExcNotImplemented());
+        if (p == 1)
+          return {{i % 2, i / 2}};
+        // Vertices, the lines x = -1, x = 1, y = -1, y = 1, the centre.
+        static const unsigned int q2[9][2] = {
+          {0, 0}, {1, 0}, {0, 1}, {1, 1}, {0, 2}, {1, 2}, {2, 0}, {2, 1}, {2, 2}};
+        return {{q2[i][0], q2[i][1]}};
+      }
+
+      /// Boundary nodes of a face of geometry degree @p p, counterclockwise
+      /// in the parameter plane.
+      std::vector<unsigned int>
+      boundary_ring(const unsigned int p)
+      {
+        if (p == 1)
+          return {0, 1, 3, 2};
+        return {0, 6, 1, 5, 3, 7, 2, 4};
+      }
+
+      double
+      cross_2d(const Tensor<1, 2> &a, const Tensor<1, 2> &b)
+      {
+        return a[0] * b[1] - a[1] * b[0];
+      }
+
+      double
+      clamp(const double x)
+      {
+        return std::max(-1., std::min(1., x));
+      }
+
+      /// Interpolated (not normalised) nodal normal field at @p xi.
+      Tensor<1, 3>
+      interpolated_normal(const QuadFace                  &face,
+                          const std::vector<Tensor<1, 3>> &normals,
+                          const Point<2>                  &xi)
+      {
+        AssertDimension(normals.size(), face.n_shape_nodes());
+        Tensor<1, 3> n;
+        for (unsigned int k = 0; k < normals.size(); ++k)
+          n += quad_shape_value(face.shape_degree(), k, xi) * normals[k];
+        return n;
+      }
+
+      /// The auxiliary plane of a slave face: through its centre, normal n0
+      /// (the nodal normals interpolated there), spanned by e1 (the xi
+      /// tangent made orthogonal to n0) and e2 = n0 x e1.
+      struct AuxiliaryPlane
+      {
+        Point<3>     origin;
+        Tensor<1, 3> normal, e1, e2;
+
+        /// (e1, e2) coordinates of the projection of @p x along the normal.
+        Point<2>
+        coordinates(const Point<3> &x) const
+        {
+          return Point<2>((x - origin) * e1, (x - origin) * e2);
+        }
+        Point<3>
+        point(const Point<2> &u) const
+        {
+          return origin + u[0] * e1 + u[1] * e2;
+        }
+      };
+
+      AuxiliaryPlane
+      auxiliary_plane(const QuadFace &slave, const std::vector<Tensor<1, 3>> &normals)
+      {
+        AssertDimension(normals.size(), slave.n_shape_nodes());
+        const Point<2> centre;
+        AuxiliaryPlane plane;
+        for (unsigned int k = 0; k < normals.size(); ++k)
+          plane.normal += quad_shape_value(slave.shape_degree(), k, centre) * normals[k];
+        AssertThrow(plane.normal.norm() > 0.,
+                    ExcMessage("The slave normals cancel at the face centre."));
+        plane.normal /= plane.normal.norm();
+        plane.origin        = slave.point(centre);
+        const auto tangents = slave.tangents(centre);
+        plane.e1            = tangents[0] - (tangents[0] * plane.normal) * plane.normal;
+        plane.e1 /= plane.e1.norm();
+        plane.e2 = cross_product_3d(plane.normal, plane.e1);
+        return plane;
+      }
+
+      /// Calls f(xi, jxw) for the quadrature points of the given polygons of
+      /// slave parameters; jxw is the weight times the slave area element.
+      ///
+      /// The polygons come from clipping in the auxiliary plane, so their
+      /// edges are straight there, and they are integrated there: cut into
+      /// triangles fanning out from the vertex centroid, every point mapped
+      /// back along n0 to the slave. That makes the region exact for every
+      /// flat face (straight edges in the slave parameters instead were off
+      /// by 4 % of the area on quadrilaterals with corners moved by 10 % of
+      /// their size). Edges on the slave boundary, though, follow the face:
+      /// straight in the parameters, so the whole of a curved face (whose
+      /// projected edges bend) is covered exactly too.
+      ///
+      /// Each triangle (c, E(v)), E the edge, is integrated by the collapsed
+      /// Gauss rule x = c + u (E(v) - c), dA = u |(E - c) x E'| du dv, n x n
+      /// points: exact for polynomials of total degree 2 n - 2 on straight
+      /// triangles, and of any order, which QGaussSimplex<2> of deal.II 9.4
+      /// is not. Signed weights: polygons star-shaped from their centroid,
+      /// convex or not, are exact too.
+      template <typename Function>
+      void
+      for_each_point(const QuadFace                      &slave,
+                     const AuxiliaryPlane                &plane,
+                     const std::vector<ParameterPolygon> &polygons,
+                     const unsigned int                   n,
+                     const Function                      &f)
+      {
+        const QGauss<1>       gauss(n);
+        std::vector<Point<2>> vertices;
+        for (const ParameterPolygon &polygon : polygons)
+          {
+            const unsigned int m = polygon.size();
+            vertices.clear();
+            Point<2> c;
+            double   area = 0.;
+            for (const Point<2> &xi : polygon)
+              {
+                vertices.push_back(plane.coordinates(slave.point(xi)));
+                c += vertices.back() / static_cast<double>(m);
+              }
+            for (unsigned int k = 0; k < m; ++k)
+              area += cross_2d(vertices[k], vertices[(k + 1) % m]);
+            // Counterclockwise in the slave parameters, but clockwise in the
+            // plane if the slave parameters run clockwise seen from n0.
+            const double orientation = area < 0. ? -1. : 1.;
+            for (unsigned int k = 0; k < m; ++k)
+              {
+                const Point<2> xa = polygon[k], xb = polygon[(k + 1) % m];
+                // On the slave boundary: both ends on the same line xi = +-1
+                // or eta = +-1 (overlap() clamps them there).
+                bool on_boundary = false;
+                for (unsigned int d = 0; d < 2; ++d)
+                  on_boundary |= (std::abs(xa[d]) == 1. && xb[d] == xa[d]);
+                for (unsigned int j = 0; j < n; ++j)
+                  {
+                    const double v = gauss.point(j)[0];
+                    Point<2>     E;
+                    Tensor<1, 2> dE;
+                    if (on_boundary)
+                      {
+                        const Point<2>     xi = xa + v * (xb - xa);
+                        const auto         t  = slave.tangents(xi);
+                        const Tensor<1, 3> T  = (xb - xa)[0] * t[0] + (xb - xa)[1] * t[1];
+                        E                     = plane.coordinates(slave.point(xi));
+                        dE                    = Tensor<1, 2>({T * plane.e1, T * plane.e2});
+                      }
+                    else
+                      {
+                        E  = vertices[k] + v * (vertices[(k + 1) % m] - vertices[k]);
+                        dE = vertices[(k + 1) % m] - vertices[k];
+                      }
+                    const double det = orientation * cross_2d(E - c, dE);
+                    if (det == 0.)
+                      continue;
+                    for (unsigned int i = 0; i < n; ++i)
+                      {
+                        const double u = gauss.point(i)[0];
+                        Point<2>     xi;
+                        if (!project_along(slave, plane.point(c + u * (E - c)), plane.normal, xi))
+                          continue;
+                        xi = Point<2>(clamp(xi[0]), clamp(xi[1]));
+                        // Plane area to slave area: |t_xi x t_eta| / |n0 . (t_xi x t_eta)|.
+                        const auto         t  = slave.tangents(xi);
+                        const Tensor<1, 3> nt = cross_product_3d(t[0], t[1]);
+                        f(xi,
+                          gauss.weight(i) * gauss.weight(j) * u * det * nt.norm() /
+                            std::abs(nt * plane.normal));
+                      }
+                  }
+              }
+          }
+      }
+    } // namespace
+
+    double
+    quad_shape_value(const unsigned int p, const unsigned int i, const Point<2> &xi)
+    {
+      const auto [a, b] = line_indices(p, i);
+      return shape_value(p, a, xi[0]) * shape_value(p, b, xi[1]);
+    }
+
+    Tensor<1, 2>
+    quad_shape_gradient(const unsigned int p, const unsigned int i, const Point<2> &xi)
+    {
+      const auto [a, b] = line_indices(p, i);
+      Tensor<1, 2> g;
+      g[0] = shape_derivative(p, a, xi[0]) * shape_value(p, b, xi[1]);
+      g[1] = shape_value(p, a, xi[0]) * shape_derivative(p, b, xi[1]);
+      return g;
+    }
+
+    Point<2>
+    quad_node_parameter(const unsigned int p, const unsigned int i)
+    {
+      const auto [a, b] = line_indices(p, i);
+      return Point<2>(node_parameter(p, a), node_parameter(p, b));
+    }
+
+    Point<3>
+    QuadFace::point(const Point<2> &xi) const
+    {
+      Assert(nodes.size() == 4 || nodes.size() == 9, ExcNotImplemented());
+      Point<3> x;
+      for (unsigned int i = 0; i < nodes.size(); ++i)
+        x += quad_shape_value(degree(), i, xi) * nodes[i];
+      return x;
+    }
+
+    std::array<Tensor<1, 3>, 2>
+    QuadFace::tangents(const Point<2> &xi) const
+    {
+      Assert(nodes.size() == 4 || nodes.size() == 9, ExcNotImplemented());
+      std::array<Tensor<1, 3>, 2> t;
+      for (unsigned int i = 0; i < nodes.size(); ++i)
+        {
+          const Tensor<1, 2> g = quad_shape_gradient(degree(), i, xi);
+          t[0] += g[0] * nodes[i];
+          t[1] += g[1] * nodes[i];
+        }
+      return t;
+    }
+
+    Tensor<1, 3>
+    face_normal(const QuadFace &face, const Point<2> &xi, const double orientation)
+    {
+      const auto         t = face.tangents(xi);
+      const Tensor<1, 3> n = cross_product_3d(t[0], t[1]);
+      return orientation * n / n.norm();
+    }
+
+    namespace
+    {
+      /// A = D_e M_e^{-1} from the sums over the points f(xi, jxw) visits.
+      template <typename Rule>
+      FullMatrix<double>
+      dual_basis_from_rule(const QuadFace &slave, const Rule &for_each_point)
+      {
+        const unsigned int p = slave.shape_degree(), n = slave.n_shape_nodes();
+        FullMatrix<double> Me(n, n), De(n, n);
+        for_each_point([&](const Point<2> &xi, const double jxw) {
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              const double Nj = quad_shape_value(p, j, xi);
+              De(j, j) += Nj * jxw;
+              for (unsigned int k = 0; k < n; ++k)
+                Me(j, k) += Nj * quad_shape_value(p, k, xi) * jxw;
+            }
+        });
+        FullMatrix<double> Me_inverse(n, n), A(n, n);
+        Me_inverse.invert(Me);
+        De.mmult(A, Me_inverse);
+        return A;
+      }
+    } // namespace
+
+    FullMatrix<double>
+    dual_basis_coefficients(const QuadFace &slave)
+    {
+      // Tensor Gauss on the parameter square: exact for flat parallelograms;
+      // the Jacobian of other faces is not polynomial, hence the generous
+      // rule (as in 2D).
+      const QGauss<2> rule(2 * slave.shape_degree() + 8);
+      return dual_basis_from_rule(slave, [&](const auto &f) {
+        for (unsigned int q = 0; q < rule.size(); ++q)
+          {
+            const Point<2> xi(2. * rule.point(q)[0] - 1., 2. * rule.point(q)[1] - 1.);
+            const auto     t = slave.tangents(xi);
+            f(xi, 4. * rule.weight(q) * cross_product_3d(t[0], t[1]).norm());
+          }
+      });
+    }
+
+    FullMatrix<double>
+    dual_basis_coefficients(const QuadFace                      &slave,
+                            const std::vector<Tensor<1, 3>>     &slave_normals,
+                            const std::vector<ParameterPolygon> &polygons)
+    {
+      Assert(!polygons.empty(), ExcMessage("The dual basis needs a non-empty overlap."));
+      const AuxiliaryPlane plane = auxiliary_plane(slave, slave_normals);
+      return dual_basis_from_rule(slave, [&](const auto &f) {
+        for_each_point(slave, plane, polygons, slave.shape_degree() + 5, f);
+      });
+    }
+
+    bool
+    project_along(const QuadFace     &face,
+                  const Point<3>     &x,
+                  const Tensor<1, 3> &direction,
+                  Point<2>           &eta)
+    {
+      // Residual r(eta, t) = face(eta) - x - t d; linear in eta and t for
+      // flat parallelograms, bilinear (or biquadratic) otherwise.
+      eta      = Point<2>();
+      double t = 0.;
+      for (unsigned int it = 0; it < 30; ++it)
+        {
+          const auto         tangents = face.tangents(eta);
+          const Tensor<1, 3> r        = face.point(eta) - x - t * direction;
+          Tensor<2, 3>       J;
+          for (unsigned int i = 0; i < 3; ++i)
+            {
+              J[i][0] = tangents[0][i];
+              J[i][1] = tangents[1][i];
+              J[i][2] = -direction[i];
+            }
+          const double scale = tangents[0].norm() * tangents[1].norm() * direction.norm();
+          if (!(std::abs(determinant(J)) > 1e-12 * scale))
+            return false;
+          const Tensor<1, 3> step = invert(J) * r;
+          eta[0] -= step[0];
+          eta[1] -= step[1];
+          t -= step[2];
+          if (!(std::abs(eta[0]) < 1e3 && std::abs(eta[1]) < 1e3))
+            return false;
+          if (std::abs(step[0]) + std::abs(step[1]) < 1e-13)
+            return true;
+        }
+      return false;
+    }
+
+    bool
+    overlap(const QuadFace                  &slave,
+            const std::vector<Tensor<1, 3>> &slave_normals,
+            const QuadFace                  &master,
+            std::vector<ParameterPolygon>   &polygons)
+    {
+      namespace bg       = boost::geometry;
+      using BoostPoint   = bg::model::d2::point_xy<double>;
+      using BoostPolygon = bg::model::polygon<BoostPoint, /*clockwise=*/false>;
+      polygons.clear();
+
+      const AuxiliaryPlane plane = auxiliary_plane(slave, slave_normals);
+
+      // Projection along n0 into the plane, in (e1, e2) coordinates.
+      const auto project = [&](const QuadFace &face) {
+        BoostPolygon polygon;
+        for (const unsigned int i : boundary_ring(face.degree()))
+          {
+            const Point<2> u = plane.coordinates(face.nodes[i]);
+            bg::append(polygon.outer(), BoostPoint(u[0], u[1]));
+          }
+        // Closes the ring and orients it counterclockwise: the master, whose
+        // normal opposes n0, comes clockwise.
+        bg::correct(polygon);
+        return polygon;
+      };
+      const BoostPolygon slave_polygon = project(slave), master_polygon = project(master);
+      const double       slave_area = bg::area(slave_polygon);
+      // A master seen edge-on (or warped into a bow tie) from the plane
+      // projects to no valid polygon: no overlap to integrate.
+      if (!(bg::area(master_polygon) > 1e-10 * slave_area))
+        return false;
+
+      std::vector<BoostPolygon> intersection;
+      try
+        {
+          bg::intersection(slave_polygon, master_polygon, intersection);
+        }
+      catch (const bg::exception &)
+        {
+          // Invalid input (a self-intersecting projected polygon): as above.
+          return false;
+        }
+
+      for (const BoostPolygon &piece : intersection)
+        {
+          // Touching edges or corners give no piece or a zero-area one;
+          // slivers of this relative size are round-off of shared edges.
+          if (!(bg::area(piece) > 1e-10 * slave_area))
+            continue;
+          const auto &ring = piece.outer();
+          // Boost closes the ring by repeating the first vertex.
+          const std::size_t n_vertices =
+            (ring.size() > 1 && bg::equals(ring.front(), ring.back())) ? ring.size() - 1 :
+                                                                          ring.size();
+          ParameterPolygon polygon;
+          for (std::size_t v = 0; v < n_vertices; ++v)
+            {
+              Point<2> xi;
+              if (!project_along(slave,
+                                 plane.point(Point<2>(ring[v].x(), ring[v].y())),
+                                 plane.normal,
+                                 xi))
+                {
+                  polygons.clear();
+                  return false;
+                }
+              // Vertices on the slave boundary come back up to round-off:
+              // put them on it (for_each_point() recognises its edges).
+              for (unsigned int d = 0; d < 2; ++d)
+                if (std::abs(xi[d]) > 1. - 1e-10)
+                  xi[d] = xi[d] > 0. ? 1. : -1.;
+              polygon.push_back(xi);
+            }
+          double area = 0.;
+          for (std::size_t v = 0; v < polygon.size(); ++v)
+            area += cross_2d(polygon[v], polygon[(v + 1) % polygon.size()]);
+          // The slave's parameter orientation relative to n0 depends on its
+          // vertex order (deal.II face orientation): make it counterclockwise.
+          if (area < 0.)
+            std::reverse(polygon.begin(), polygon.end());
+          polygons.push_back(polygon);
+        }
+      return !polygons.empty();
+    }
+
+    bool
+    integrate_pair(const QuadFace                  &slave,
+                   const std::vector<Tensor<1, 3>> &slave_normals,
+                   const FullMatrix<double>        &dual_coefficients,
+                   const QuadFace                  &master,
+                   const unsigned int               n_quadrature_points,
+                   QuadSegmentOperators            &result)
+    {
+      if (!overlap(slave, slave_normals, master, result.polygons))
+        return false;
+      const unsigned int ps = slave.shape_degree(), pm = master.shape_degree();
+      const unsigned int ns = slave.n_shape_nodes(), nm = master.n_shape_nodes();
+      AssertDimension(dual_coefficients.m(), ns);
+
+      result.D.assign(ns, 0.);
+      result.weighted_gap.assign(ns, Tensor<1, 3>());
+      result.M.reinit(ns, nm);
+      result.overlap_area = 0.;
+
+      std::vector<double> phi(ns);
+      const AuxiliaryPlane plane = auxiliary_plane(slave, slave_normals);
+      const auto add_point = [&](const Point<2> &xi, const double jxw) {
+        const Point<3> x_slave = slave.point(xi);
+        Point<2>       eta;
+        if (!project_along(master, x_slave, interpolated_normal(slave, slave_normals, xi), eta))
+          return;
+        // The segmentation projected along n0, the normal field may differ
+        // slightly: stay on the master face (partition of unity kept).
+        eta                           = Point<2>(clamp(eta[0]), clamp(eta[1]));
+        const Tensor<1, 3> separation = master.point(eta) - x_slave;
+
+        result.overlap_area += jxw;
+        for (unsigned int j = 0; j < ns; ++j)
+          {
+            phi[j] = 0.;
+            for (unsigned int k = 0; k < ns; ++k)
+              phi[j] += dual_coefficients(j, k) * quad_shape_value(ps, k, xi);
+            result.D[j] += phi[j] * jxw;
+            result.weighted_gap[j] += phi[j] * jxw * separation;
+          }
+        for (unsigned int l = 0; l < nm; ++l)
+          {
+            const double Nl = quad_shape_value(pm, l, eta);
+            for (unsigned int j = 0; j < ns; ++j)
+              result.M(j, l) += phi[j] * Nl * jxw;
+          }
+      };
+      for_each_point(slave, plane, result.polygons, n_quadrature_points, add_point);
+      return result.overlap_area > 0.;
+    }
+  } // namespace Mortar
+} // namespace contact_fem
