@@ -298,12 +298,18 @@ def contact_fem_rows(summary, label, ranks, level):
     for c in summary.get("cycles", []):
         t = c.get("timing", {})
 
+        # Sections that are parts of another one ("Solve: multigrid setup"
+        # is inside "Solve: linear"): counted once.
+        parts = {"Solve: multigrid setup"}
+
         def group(prefix):
             if prefix in t:  # a parent section: do not add its children too
                 return t[prefix]
-            return sum(v for k, v in t.items() if k.startswith(prefix + ":"))
+            return sum(v for k, v in t.items()
+                       if k.startswith(prefix + ":") and k not in parts)
 
         its = sum(ls.get("newton_iterations", 0) for ls in c.get("load_steps", []))
+        krylov = [n for ls in c.get("load_steps", []) for n in ls.get("linear_iterations", [])]
         rows.append({
             "program": "contact_fem", "label": label, "ranks": ranks,
             "case": f"GR {level}", "level": level,
@@ -312,7 +318,8 @@ def contact_fem_rows(summary, label, ranks, level):
             "wall": c.get("wall_time", summary.get("wall_time")),
             "solve": group("Solve"), "assembly": group("Assembly"),
             "contact": group("Contact"), "setup": group("Setup"),
-            "output": group("Output"), "lin_its": None,
+            "output": group("Output"),
+            "lin_its": sum(krylov) / len(krylov) if krylov else None,
             "active": c.get("contact", {}).get("active_slave_nodes"),
             "status": summary.get("status"), "timing": t,
         })

@@ -161,9 +161,9 @@ namespace contact_fem
 
       // Measured on this machine (bench/solver_crossover.py,
       // doc/performance.md "Direct or iterative"), prm/hertz.prm serial:
-      // per Newton iteration the direct solve is 6 % faster at 74k DoFs,
-      // the iterative one 7 % faster at 292k and 18 % at 1.16M (with 36 %
-      // less memory).
+      // per Newton iteration the direct solve is 8 % faster at 74k DoFs,
+      // the iterative one 3 % faster at 292k and 29 % at 1.16M (with 36 %
+      // less memory), and only the iterative one speeds up on 2 ranks.
       static constexpr types::global_dof_index crossover_2d = 200000;
       // Not measured yet (3D does not run): the usual 3D crossover of
       // nested-dissection factorisation against multigrid.
