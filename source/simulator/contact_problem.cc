@@ -1613,6 +1613,11 @@ namespace contact_fem
       .set("n_cells", static_cast<double>(triangulation.n_global_active_cells()))
       .set("n_dofs", static_cast<double>(dof_handler.n_dofs()))
       .set("linear_solver", linear_solver->description());
+    // The partition, for reading the parallel speed-up.
+    Json dofs_per_rank = Json::array();
+    for (const auto n : Utilities::MPI::all_gather(comm, owned_dofs.n_elements()))
+      dofs_per_rank.push(static_cast<double>(n));
+    cycle_record.set("dofs_per_rank", dofs_per_rank);
   }
 
   template <int dim>
