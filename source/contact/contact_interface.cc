@@ -465,13 +465,7 @@ namespace contact_fem
                                 const std::vector<double> &motion_allowance)
   {
     if constexpr (dim == 3)
-      {
-        search_displacement = u_at_dofs;
-        std::vector<Tensor<1, dim>> u(nodes.size());
-        for (unsigned int n = 0; n < nodes.size(); ++n)
-          u[n] = displacement(n, u_at_dofs);
-        update_3d(u, u_at_dofs, search_factor, motion_allowance);
-      }
+      update_3d(u_at_dofs, search_factor, motion_allowance);
     else
       {
         search_displacement = u_at_dofs;

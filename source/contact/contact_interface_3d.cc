@@ -357,12 +357,15 @@ namespace contact_fem
 
   template <>
   void
-  ContactInterface<3>::update_3d(const std::vector<Tensor<1, 3>> &u,
-                                 const std::vector<double>       &u_at_dofs,
-                                 const double                     search_factor,
-                                 const std::vector<double>       &motion_allowance)
+  ContactInterface<3>::update_3d(const std::vector<double> &u_at_dofs,
+                                 const double               search_factor,
+                                 const std::vector<double> &motion_allowance)
   {
+    search_displacement = u_at_dofs;
     reach_of_search.assign(pairs.size(), std::numeric_limits<double>::max());
+    std::vector<Tensor<1, 3>> u(nodes.size());
+    for (unsigned int n = 0; n < nodes.size(); ++n)
+      u[n] = displacement(n, u_at_dofs);
     std::vector<Mortar::QuadFace> quads(faces.size());
     std::vector<double>           areas(faces.size());
     for (unsigned int f = 0; f < faces.size(); ++f)

@@ -283,12 +283,11 @@ namespace contact_fem
                       const std::vector<Mortar::LineFace>                    &lines,
                       const std::vector<double>                              &lengths);
 
-    /// update() in 3D, on the displacement @p u of every node.
+    /// update() in 3D.
     void
-    update_3d(const std::vector<Tensor<1, dim>> &u,
-              const std::vector<double>         &u_at_dofs,
-              const double                       search_factor,
-              const std::vector<double>         &motion_allowance);
+    update_3d(const std::vector<double> &u_at_dofs,
+              const double               search_factor,
+              const std::vector<double> &motion_allowance);
 
     /// Search and integration of pair @p p in 3D: adds D, M and the weighted
     /// gap of the slave nodes of the pair, and sets its statistics.
@@ -338,8 +337,7 @@ namespace contact_fem
   ContactInterface<3>::quad(const Face &, const std::vector<Tensor<1, 3>> &) const;
   template <>
   void
-  ContactInterface<3>::update_3d(const std::vector<Tensor<1, 3>> &,
-                                 const std::vector<double> &,
+  ContactInterface<3>::update_3d(const std::vector<double> &,
                                  const double,
                                  const std::vector<double> &);
   template <>
