@@ -305,10 +305,11 @@ main(int argc, char **argv)
         slash == std::string::npos ? std::string(".") : cl.prm_file.substr(0, slash);
 
       const int dim = prm.get_integer("Dimension");
-      if (dim != 2)
+      if (dim != 2 && dim != 3)
         throw std::runtime_error("Dimension = " + std::to_string(dim) +
-                                 ": only 2D scenes are implemented so far.");
-      return run<2>(prm, name, directory, cl.validate);
+                                 ": only 2D and 3D scenes exist.");
+      return dim == 2 ? run<2>(prm, name, directory, cl.validate) :
+                        run<3>(prm, name, directory, cl.validate);
     }
   catch (const std::exception &e)
     {

@@ -77,6 +77,52 @@ namespace contact_fem
       }
   }
 
+  namespace
+  {
+    /**
+     * Positive if the node polygon of the face of @p fe_face (its support
+     * points, in face DoF order) turns its normal (rotated tangent in 2D,
+     * t_xi x t_eta in 3D) out of the cell, negative otherwise. The support
+     * points are in the face's own orientation (FEFaceValues permutes them
+     * like the face DoFs); in 3D their vertices are checked against those
+     * of @p face, in case that ever changes.
+     */
+    template <int dim, typename FaceIterator>
+    double
+    outward_orientation(const FEFaceValues<dim> &fe_face,
+                        const FaceIterator      &face,
+                        const unsigned int       nodes_per_face)
+    {
+      if constexpr (dim == 2)
+        {
+          Mortar::LineFace line;
+          for (unsigned int k = 0; k < nodes_per_face; ++k)
+            {
+              Point<2> x;
+              for (unsigned int d = 0; d < 2; ++d)
+                x[d] = fe_face.quadrature_point(k)[d];
+              line.nodes.push_back(x);
+            }
+          const Tensor<1, 2> n_rot = Mortar::face_normal(line, -1., 1.);
+          double             dot   = 0.;
+          for (unsigned int d = 0; d < 2; ++d)
+            dot += n_rot[d] * fe_face.normal_vector(0)[d];
+          return dot;
+        }
+      else
+        {
+          Mortar::QuadFace quad;
+          for (unsigned int k = 0; k < nodes_per_face; ++k)
+            quad.nodes.push_back(fe_face.quadrature_point(k));
+          for (unsigned int v = 0; v < 4; ++v)
+            AssertThrow(quad.nodes[v].distance(face->vertex(v)) <= 1e-10 * face->diameter(),
+                        ExcMessage("Contact: the support points of a 3D contact face "
+                                   "are not in the order of its vertices."));
+          return Mortar::face_normal(quad, Point<2>(-1., -1.), 1.) * fe_face.normal_vector(0);
+        }
+    }
+  } // namespace
+
   template <int dim>
   void
   ContactInterface<dim>::initialize(const MappingQ<dim>             &mapping,
@@ -86,8 +132,6 @@ namespace contact_fem
                                     const Materials<dim>            &materials,
                                     const MPI_Comm                   comm)
   {
-    AssertThrow(dim == 2,
-                ExcMessage("Contact: mortar contact is implemented in 2D only so far."));
     pairs        = contact_pairs;
     communicator = comm;
     owned_dofs   = dof_handler.locally_owned_dofs();
@@ -97,6 +141,10 @@ namespace contact_fem
     AssertThrow(geometry_degree == degree || (degree == 1 && geometry_degree == 2),
                 ExcMessage("Contact: the face geometry may exceed the element degree "
                            "only for degree-1 elements on a quadratic mapping."));
+    AssertThrow(dim == 2 || geometry_degree == degree,
+                ExcMessage("Contact: in 3D, the mapping degree of the contact faces must "
+                           "equal the element degree so far (Finite element/Mapping "
+                           "degree)."));
     const unsigned int nodes_per_face = fe.n_dofs_per_face() / dim;
     // Geometry nodes without DoFs: the face midpoint of Q1 on a quadratic
     // mapping, whose faces follow the curved boundary.
@@ -133,20 +181,7 @@ namespace contact_fem
                       const auto ci = fe.face_system_to_component_index(i, f);
                       node_dofs[ci.second][ci.first] = face_dofs[i];
                     }
-                  // Orientation: compare the rotated tangent of the node
-                  // polygon with the outward normal.
-                  Mortar::LineFace line;
-                  for (unsigned int k = 0; k < nodes_per_face; ++k)
-                    {
-                      Point<2> x;
-                      for (unsigned int d = 0; d < 2; ++d)
-                        x[d] = fe_face.quadrature_point(k)[d];
-                      line.nodes.push_back(x);
-                    }
-                  const Tensor<1, 2> n_rot = Mortar::face_normal(line, -1., 1.);
-                  double             dot   = 0.;
-                  for (unsigned int d = 0; d < 2; ++d)
-                    dot += n_rot[d] * fe_face.normal_vector(0)[d];
+                  const double dot = outward_orientation(fe_face, cell->face(f), nodes_per_face);
 
                   packed.push_back(p);
                   packed.push_back(slave ? 1. : 0.);
@@ -429,13 +464,8 @@ namespace contact_fem
                                 const double               search_factor,
                                 const std::vector<double> &motion_allowance)
   {
-    if constexpr (dim != 2)
-      {
-        (void)u_at_dofs;
-        (void)search_factor;
-        (void)motion_allowance;
-        AssertThrow(false, ExcNotImplemented());
-      }
+    if constexpr (dim == 3)
+      update_3d(u_at_dofs, search_factor, motion_allowance);
     else
       {
         search_displacement = u_at_dofs;
@@ -652,11 +682,8 @@ namespace contact_fem
   {
     std::vector<double> distances(slave_nodes.size(),
                                   std::numeric_limits<double>::infinity());
-    if constexpr (dim != 2)
-      {
-        (void)u_at_dofs;
-        AssertThrow(false, ExcNotImplemented());
-      }
+    if constexpr (dim == 3)
+      return surface_distances_3d(u_at_dofs);
     else
       {
         std::vector<Tensor<1, dim>> u(nodes.size());

@@ -574,12 +574,18 @@ namespace contact_fem
     for (const auto &s : interface->slave_nodes)
       if (s.paired)
         {
-          const double x = interface->nodes[s.node].reference[0] +
-                           interface->displacement(s.node, interface_displacement)[0];
-          rows.push_back({x, contact->normal_pressure(s.node),
-                          hertz ? h.pressure(x - analytical.center) : 0.,
-                          interface->gap(s, interface_displacement),
-                          contact->is_active(s.node) ? 1. : 0.});
+          // 2D: x only; 3D: the whole position (the profile is a surface).
+          const Point<dim> position = interface->nodes[s.node].reference +
+                                      interface->displacement(s.node, interface_displacement);
+          const double     x        = position[0];
+          rows.emplace_back();
+          for (unsigned int d = 0; d < (dim == 2 ? 1 : dim); ++d)
+            rows.back().push_back(position[d]);
+          rows.back().insert(rows.back().end(),
+                             {contact->normal_pressure(s.node),
+                              hertz ? h.pressure(x - analytical.center) : 0.,
+                              interface->gap(s, interface_displacement),
+                              contact->is_active(s.node) ? 1. : 0.});
           if (frictional)
             {
               rows.back().push_back(contact->traction(s) *
@@ -590,7 +596,7 @@ namespace contact_fem
         }
     std::sort(rows.begin(), rows.end());
     std::ostringstream out;
-    out << "x,pressure,hertz_pressure,gap,active"
+    out << (dim == 2 ? "x" : "x,y,z") << ",pressure,hertz_pressure,gap,active"
         << (frictional ? ",tangential_traction,slip_increment,stick" : "") << "\n"
         << std::setprecision(10);
     for (const auto &r : rows)

@@ -174,8 +174,24 @@ namespace contact_fem
       contact = std::move(formulation);
     newton_parameters.parse_parameters(prm);
     refinement.parse_parameters(prm);
+    // Local refinement in 3D leaves hanging vertices on the slave surface,
+    // whose multiplier space (the constrained trace space) the 3D mortar
+    // does not build yet.
+    AssertThrow(dim == 2 || !contact || refinement.n_cycles == 1 ||
+                  refinement.estimator == "global",
+                ExcMessage("Refinement/Number of cycles = " +
+                           std::to_string(refinement.n_cycles) +
+                           ": adaptive refinement of 3D contact scenes is not implemented "
+                           "yet (hanging vertices on the slave surface); use 1 cycle or "
+                           "Refinement/Estimator = global."));
     spr_settings.parse_parameters(prm);
     analytical.parse_parameters(prm, prm_directory);
+    // The reference solutions are those of a 2D cylinder, functions of x.
+    AssertThrow(dim == 2 || (analytical.type == "none" &&
+                             analytical.reference_pressure_profile.empty()),
+                ExcMessage("Analytical solution: the Hertz cylinder, Cattaneo and the "
+                           "reference pressure profile are 2D solutions (of x); in 3D, "
+                           "set Type = none and leave Reference pressure profile empty."));
     output.parse_parameters(prm, dim);
     check_scene_before_meshing();
 

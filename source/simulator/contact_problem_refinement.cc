@@ -46,7 +46,27 @@ namespace contact_fem
               }
         }
       else
-        AssertThrow(false, ExcNotImplemented());
+        {
+          const unsigned int p = interface.degree;
+          const QGauss<2>    quadrature(p + 2);
+          for (const auto &face : interface.faces)
+            if (face.slave)
+              {
+                const Mortar::QuadFace quad = interface.quad(face);
+                for (unsigned int q = 0; q < quadrature.size(); ++q)
+                  {
+                    const Point<2> xi(2. * quadrature.point(q)[0] - 1.,
+                                      2. * quadrature.point(q)[1] - 1.);
+                    const auto     t  = quad.tangents(xi);
+                    const double   dA = 4. * quadrature.weight(q) *
+                                      cross_product_3d(t[0], t[1]).norm();
+                    const Tensor<1, 3> n = Mortar::face_normal(quad, xi, face.orientation);
+                    for (unsigned int k = 0; k < face.nodes.size(); ++k)
+                      samples[face.nodes[k]].push_back(
+                        {quad.point(xi), n, dA * Mortar::quad_shape_value(p, k, xi)});
+                  }
+              }
+        }
       return samples;
     }
   } // namespace

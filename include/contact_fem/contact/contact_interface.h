@@ -13,6 +13,7 @@
 
 #include <contact_fem/material/material.h>
 #include <contact_fem/contact/mortar.h>
+#include <contact_fem/contact/mortar_3d.h>
 #include <contact_fem/contact/contact_parameters.h>
 
 #include <array>
@@ -38,9 +39,13 @@ namespace contact_fem
    * linear in the displacement. surface_distances() checks a converged
    * state against the whole master surface, independently of the operators.
    *
-   * Only 2D (line faces of degree 1 or 2) is implemented; 3D throws.
+   * 2D: line faces of degree 1 or 2. 3D: quadrilateral faces of degree 1
+   * or 2 whose geometry is that of the element (no Q1 on a curved mapping),
+   * through the kernel of mortar_3d.h, without hanging vertices on the
+   * slave surface.
    *
-   * Implemented in source/contact_interface.cc.
+   * Implemented in source/contact/contact_interface.cc, the 3D search and
+   * distances in source/contact/contact_interface_3d.cc.
    */
   template <int dim>
   class ContactInterface
@@ -59,7 +64,8 @@ namespace contact_fem
     /// A face of a contact surface.
     struct Face
     {
-      std::vector<unsigned int> nodes;       ///< Mortar::LineFace node order
+      /// Mortar::LineFace (2D) or Mortar::QuadFace (3D) node order.
+      std::vector<unsigned int> nodes;
       /// Reference positions of geometry nodes without DoFs: the midpoint of
       /// a degree-1 face on a quadratic mapping; empty if isoparametric.
       std::vector<Point<dim>>   geometry_points;
@@ -217,6 +223,10 @@ namespace contact_fem
     Mortar::LineFace
     line(const Face &face, const std::vector<Tensor<1, dim>> &u = {}) const;
 
+    /// The geometry of @p face at X + u, as line(). Only 3D.
+    Mortar::QuadFace
+    quad(const Face &face, const std::vector<Tensor<1, dim>> &u = {}) const;
+
     /**
      * Normalised weighted gap g_j = (n_j . (sum_l M_jl x_l - D_j x_j) +
      * curvature_gap_j) / D_j of a slave node at x = X + u (u at dofs()),
@@ -273,6 +283,46 @@ namespace contact_fem
                       const std::vector<Mortar::LineFace>                    &lines,
                       const std::vector<double>                              &lengths);
 
+    /// update() in 3D.
+    void
+    update_3d(const std::vector<double> &u_at_dofs,
+              const double               search_factor,
+              const std::vector<double> &motion_allowance);
+
+    /// Search and integration of pair @p p in 3D: adds D, M and the weighted
+    /// gap of the slave nodes of the pair, and sets its statistics.
+    void
+    search_pair_3d(const unsigned int                                      p,
+                   const std::vector<Mortar::QuadFace>                    &quads,
+                   const std::vector<double>                              &areas,
+                   const double                                            search_factor,
+                   const double                                            allowance,
+                   std::map<unsigned int, SlaveNode>                      &slave_data,
+                   std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
+                   std::map<unsigned int, Tensor<1, dim>> &weighted_gap_of_node);
+
+    /// Per node of the slave or master surface in 3D: the area-weighted
+    /// mean unit normal of its faces and their mean E / (1 - nu^2); with
+    /// @p slave_data, also the full_area and size of every slave node.
+    std::map<unsigned int, std::pair<Tensor<1, dim>, double>>
+    surface_node_normals_3d(const std::vector<Mortar::QuadFace> &quads,
+                            const std::vector<double>           &areas,
+                            const bool                           slave,
+                            std::map<unsigned int, SlaveNode>   *slave_data = nullptr) const;
+
+    /// store_slave_nodes() in 3D.
+    void
+    store_slave_nodes_3d(std::map<unsigned int, SlaveNode>                      &slave_data,
+                         std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
+                         std::map<unsigned int, Tensor<1, dim>> &weighted_gap_of_node,
+                         const std::vector<double>              &u_at_dofs,
+                         const std::vector<Mortar::QuadFace>    &quads,
+                         const std::vector<double>              &areas);
+
+    /// surface_distances() in 3D.
+    std::vector<double>
+    surface_distances_3d(const std::vector<double> &u_at_dofs) const;
+
     /// Displacement at dofs() of the last search, and its reach per pair.
     std::vector<double>                                 search_displacement;
     std::vector<double>                                 reach_of_search;
@@ -281,6 +331,18 @@ namespace contact_fem
     IndexSet                                            owned_dofs;
     MPI_Comm                                            communicator;
   };
+  // The 3D members exist for dim = 3 only (contact_interface_3d.cc).
+  template <>
+  Mortar::QuadFace
+  ContactInterface<3>::quad(const Face &, const std::vector<Tensor<1, 3>> &) const;
+  template <>
+  void
+  ContactInterface<3>::update_3d(const std::vector<double> &,
+                                 const double,
+                                 const std::vector<double> &);
+  template <>
+  std::vector<double>
+  ContactInterface<3>::surface_distances_3d(const std::vector<double> &) const;
 } // namespace contact_fem
 
 #endif

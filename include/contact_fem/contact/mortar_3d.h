@@ -1,5 +1,5 @@
-// Mortar operators of 3D surface interfaces (the kernel, not yet wired into
-// ContactInterface): quadrilateral faces, segmentation of a slave face
+// Mortar operators of 3D surface interfaces (the kernel that
+// ContactInterface<3> uses): quadrilateral faces, segmentation of a slave face
 // against a master face by polygon clipping in an auxiliary plane, the dual
 // multiplier basis over the overlapped part of a slave face, and the D / M
 // blocks. The 3D counterpart of mortar.h, with the same conventions.
