@@ -30,24 +30,16 @@ def run(binary, scene, level, solver, np, results):
     name = f"level{level}-{solver}-np{np}"
     out = results / name
     out.mkdir(parents=True, exist_ok=True)
-    prm = out / "scene.prm"
-    prm.write_text(
-        f"include {scene}\n"
-        f"set Output directory = {out}\n"
-        "subsection Geometry\n"
-        f"  set Global refinements = {level}\n"
-        "end\n"
-        "subsection Linear solver\n"
-        f"  set Type = {solver}\n"
-        "end\n"
-        "subsection Output\n"
-        "  set Write VTU = false\n"
-        "  set Write pressure profile = false\n"
-        "end\n")
+    # The scene is run as it is (relative mesh paths resolve from its own
+    # directory), with the bench's settings as command-line overrides.
+    sets = [f"Geometry/Global refinements={level}", f"Linear solver/Type={solver}",
+            "Output/Write VTU=false", "Output/Write pressure profile=false"]
     command = ["/usr/bin/time", "-f", "peak_kb %M"]
     if np > 1:
         command += ["mpirun", "-np", str(np)]
-    command += [str(binary), str(prm)]
+    command += [str(binary), str(scene), "--output-directory", str(out)]
+    for s in sets:
+        command += ["--set", s]
     env = dict(os.environ, OMP_NUM_THREADS="1", DEAL_II_NUM_THREADS="1",
                OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     done = subprocess.run(command, cwd=out, env=env, capture_output=True, text=True)
@@ -109,6 +101,7 @@ def main():
     parser.add_argument("--results", default=str(repo / "bench" / "results-solver"))
     args = parser.parse_args()
     results = pathlib.Path(args.results)
+    args.scene = str(pathlib.Path(args.scene).resolve())
 
     print("| level | ranks | DoFs | Newton it. (direct / iterative) | direct solve s / Newton it. "
           "| iterative solve s / Newton it. | of which multigrid set-up | Krylov it. per solve "
