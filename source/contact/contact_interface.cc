@@ -401,17 +401,37 @@ namespace contact_fem
   }
 
   template <int dim>
+  template <class SegmentOperators>
+  void
+  ContactInterface<dim>::add_segment(
+    const unsigned int                                      f,
+    const unsigned int                                      m,
+    const SegmentOperators                                 &ops,
+    std::map<unsigned int, SlaveNode>                      &slave_data,
+    std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
+    std::map<unsigned int, Tensor<1, dim>>                 &weighted_gap_of_node)
+  {
+    coupled_faces.emplace_back(f, m);
+    for (unsigned int j = 0; j < faces[f].nodes.size(); ++j)
+      {
+        SlaveNode &s = slave_data[faces[f].nodes[j]];
+        s.D += ops.D[j];
+        weighted_gap_of_node[s.node] += ops.weighted_gap[j];
+        for (unsigned int l = 0; l < faces[m].nodes.size(); ++l)
+          M_of_node[s.node][faces[m].nodes[l]] += ops.M(j, l);
+      }
+  }
+
+  template <int dim>
   void
   ContactInterface<dim>::store_slave_nodes(
     std::map<unsigned int, SlaveNode>                      &slave_data,
     std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
-    std::map<unsigned int, Tensor<1, 2>>                   &weighted_gap_of_node,
+    std::map<unsigned int, Tensor<1, dim>>                 &weighted_gap_of_node,
     const std::vector<double>                              &u_at_dofs,
-    const std::vector<Mortar::LineFace>                    &lines,
-    const std::vector<double>                              &lengths)
+    const SurfaceNormals                                   &slave_normals,
+    const SurfaceNormals                                   &master_normals)
   {
-    const auto slave_normals  = surface_node_normals(lines, lengths, true);
-    const auto master_normals = surface_node_normals(lines, lengths, false);
     // A node counts as paired when the master covers a fair part of its
     // support; tiny or negative dual weights at the rim of the master
     // surface would make its gap ill-defined.
@@ -425,14 +445,11 @@ namespace contact_fem
             for (const auto &[m, value] : M_of_node[n])
               s.M.emplace_back(m, value);
             // gap() is still the nodal form here (curvature_gap = 0).
-            Tensor<1, 2> normal;
-            for (unsigned int d = 0; d < 2; ++d)
-              normal[d] = s.normal[d];
-            s.curvature_gap = normal * weighted_gap_of_node[n] - s.D * gap(s, u_at_dofs);
+            s.curvature_gap = s.normal * weighted_gap_of_node[n] - s.D * gap(s, u_at_dofs);
 
             // The M-weighted master normal and modulus at the projection.
-            Tensor<1, 2> master_normal;
-            double       master_modulus = 0., weight = 0.;
+            Tensor<1, dim> master_normal;
+            double         master_modulus = 0., weight = 0.;
             for (const auto &[m, value] : s.M)
               if (const auto it = master_normals.find(m); it != master_normals.end())
                 {
@@ -440,17 +457,16 @@ namespace contact_fem
                   master_modulus += value * it->second.second;
                   weight += value;
                 }
-            const double slave_modulus = slave_normals.at(n).second;
-            Tensor<1, 2> shared        = slave_modulus * normal;
+            const double   slave_modulus = slave_normals.at(n).second;
+            Tensor<1, dim> shared        = slave_modulus * s.normal;
             if (weight > 0. && master_normal.norm() > 0.)
               shared -= (master_modulus / weight) * master_normal / master_normal.norm();
             // Surfaces that do not face each other (a master normal along
             // the slave's) leave no shared plane: keep the slave normal.
-            if (shared * normal <= 0.)
-              shared = normal;
+            if (shared * s.normal <= 0.)
+              shared = s.normal;
             shared /= shared.norm();
-            for (unsigned int d = 0; d < 2; ++d)
-              s.interface_normal[d] = shared[d];
+            s.interface_normal = shared;
           }
         else
           s.interface_normal = s.normal;
@@ -566,15 +582,7 @@ namespace contact_fem
                       continue;
                     overlapping            = true;
                     master_is_candidate[m] = true;
-                    coupled_faces.emplace_back(f, m);
-                    for (unsigned int j = 0; j < faces[f].nodes.size(); ++j)
-                      {
-                        SlaveNode &s = slave_data[faces[f].nodes[j]];
-                        s.D += ops.D[j];
-                        weighted_gap_of_node[s.node] += ops.weighted_gap[j];
-                        for (unsigned int l = 0; l < faces[m].nodes.size(); ++l)
-                          M_of_node[s.node][faces[m].nodes[l]] += ops.M(j, l);
-                      }
+                    add_segment(f, m, ops, slave_data, M_of_node, weighted_gap_of_node);
                   }
                 if (overlapping)
                   {
@@ -605,7 +613,9 @@ namespace contact_fem
               }
           }
 
-        store_slave_nodes(slave_data, M_of_node, weighted_gap_of_node, u_at_dofs, lines, lengths);
+        store_slave_nodes(slave_data, M_of_node, weighted_gap_of_node, u_at_dofs,
+                          surface_node_normals(lines, lengths, true),
+                          surface_node_normals(lines, lengths, false));
       }
   }
 
@@ -771,4 +781,18 @@ namespace contact_fem
 
   template class ContactInterface<2>;
   template class ContactInterface<3>;
+  template void
+  ContactInterface<2>::add_segment(const unsigned int,
+                                   const unsigned int,
+                                   const Mortar::SegmentOperators &,
+                                   std::map<unsigned int, SlaveNode> &,
+                                   std::map<unsigned int, std::map<unsigned int, double>> &,
+                                   std::map<unsigned int, Tensor<1, 2>> &);
+  template void
+  ContactInterface<3>::add_segment(const unsigned int,
+                                   const unsigned int,
+                                   const Mortar::QuadSegmentOperators &,
+                                   std::map<unsigned int, SlaveNode> &,
+                                   std::map<unsigned int, std::map<unsigned int, double>> &,
+                                   std::map<unsigned int, Tensor<1, 3>> &);
 } // namespace contact_fem

@@ -268,15 +268,7 @@ namespace contact_fem
               continue;
             overlapping            = true;
             master_is_candidate[m] = true;
-            coupled_faces.emplace_back(f, m);
-            for (unsigned int j = 0; j < faces[f].nodes.size(); ++j)
-              {
-                SlaveNode &s = slave_data[faces[f].nodes[j]];
-                s.D += ops.D[j];
-                weighted_gap_of_node[s.node] += ops.weighted_gap[j];
-                for (unsigned int l = 0; l < faces[m].nodes.size(); ++l)
-                  M_of_node[s.node][faces[m].nodes[l]] += ops.M(j, l);
-              }
+            add_segment(f, m, ops, slave_data, M_of_node, weighted_gap_of_node);
           }
         if (overlapping)
           {
@@ -303,55 +295,6 @@ namespace contact_fem
         stat.mean_slave_size  = std::sqrt(slave_area / n_overlapping_faces);
         stat.master_modulus   = master_modulus / master_area;
         stat.mean_master_size = std::sqrt(master_area / n_master);
-      }
-  }
-
-  template <>
-  void
-  ContactInterface<3>::store_slave_nodes_3d(
-    std::map<unsigned int, SlaveNode>                      &slave_data,
-    std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
-    std::map<unsigned int, Tensor<1, 3>>                   &weighted_gap_of_node,
-    const std::vector<double>                              &u_at_dofs,
-    const std::vector<Mortar::QuadFace>                    &quads,
-    const std::vector<double>                              &areas)
-  {
-    const auto slave_normals  = surface_node_normals_3d(quads, areas, true);
-    const auto master_normals = surface_node_normals_3d(quads, areas, false);
-    // Paired when the master covers a fair part of the node's support, as
-    // in 2D (the rim dual basis is ill-conditioned below that).
-    constexpr double least_covered_fraction = 1e-2;
-    slave_nodes.clear();
-    for (auto &[n, s] : slave_data)
-      {
-        s.paired           = s.D > least_covered_fraction * s.full_area;
-        s.interface_normal = s.normal;
-        if (s.paired)
-          {
-            for (const auto &[m, value] : M_of_node[n])
-              s.M.emplace_back(m, value);
-            // gap() is still the nodal form here (curvature_gap = 0).
-            s.curvature_gap = s.normal * weighted_gap_of_node[n] - s.D * gap(s, u_at_dofs);
-
-            // The M-weighted master normal and modulus at the projection,
-            // weighted against the slave's as in 2D.
-            Tensor<1, 3> master_normal;
-            double       master_modulus = 0., weight = 0.;
-            for (const auto &[m, value] : s.M)
-              if (const auto it = master_normals.find(m); it != master_normals.end())
-                {
-                  master_normal += value * it->second.first;
-                  master_modulus += value * it->second.second;
-                  weight += value;
-                }
-            Tensor<1, 3> shared = slave_normals.at(n).second * s.normal;
-            if (weight > 0. && master_normal.norm() > 0.)
-              shared -= (master_modulus / weight) * master_normal / master_normal.norm();
-            if (shared * s.normal <= 0.)
-              shared = s.normal;
-            s.interface_normal = shared / shared.norm();
-          }
-        slave_nodes.push_back(s);
       }
   }
 
@@ -388,7 +331,9 @@ namespace contact_fem
       search_pair_3d(p, quads, areas, search_factor,
                      motion_allowance.empty() ? 0. : motion_allowance[p], slave_data,
                      M_of_node, weighted_gap_of_node);
-    store_slave_nodes_3d(slave_data, M_of_node, weighted_gap_of_node, u_at_dofs, quads, areas);
+    store_slave_nodes(slave_data, M_of_node, weighted_gap_of_node, u_at_dofs,
+                      surface_node_normals_3d(quads, areas, true),
+                      surface_node_normals_3d(quads, areas, false));
   }
 
   template <>

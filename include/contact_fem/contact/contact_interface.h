@@ -272,16 +272,34 @@ namespace contact_fem
                          const std::vector<double>           &lengths,
                          const bool                           slave) const;
 
+    /// Adds the operators @p ops of slave face @p f against master face
+    /// @p m to the sums of the slave nodes of @p f (D, M, weighted gap) and
+    /// records the pair as coupled. 2D (Mortar::SegmentOperators) and 3D
+    /// (Mortar::QuadSegmentOperators).
+    template <class SegmentOperators>
+    void
+    add_segment(const unsigned int                                      f,
+                const unsigned int                                      m,
+                const SegmentOperators                                 &ops,
+                std::map<unsigned int, SlaveNode>                      &slave_data,
+                std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
+                std::map<unsigned int, Tensor<1, dim>>                 &weighted_gap_of_node);
+
+    /// Per surface node: its mean unit normal and mean plane-strain
+    /// modulus (surface_node_normals(), surface_node_normals_3d()).
+    using SurfaceNormals = std::map<unsigned int, std::pair<Tensor<1, dim>, double>>;
+
     /// Fills slave_nodes from the integrated operators: a node is paired
-    /// when the master covers a fair part of its support; its M entries
-    /// and curvature gap are set.
+    /// when the master covers a fair part of its support; its M entries,
+    /// curvature gap and interface normal (the slave normal against the
+    /// M-weighted master normal, weighted by the moduli) are set. 2D and 3D.
     void
     store_slave_nodes(std::map<unsigned int, SlaveNode>                      &slave_data,
                       std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
-                      std::map<unsigned int, Tensor<1, 2>>                   &weighted_gap_of_node,
-                      const std::vector<double>                              &u_at_dofs,
-                      const std::vector<Mortar::LineFace>                    &lines,
-                      const std::vector<double>                              &lengths);
+                      std::map<unsigned int, Tensor<1, dim>> &weighted_gap_of_node,
+                      const std::vector<double>              &u_at_dofs,
+                      const SurfaceNormals                   &slave_normals,
+                      const SurfaceNormals                   &master_normals);
 
     /// update() in 3D.
     void
@@ -309,15 +327,6 @@ namespace contact_fem
                             const std::vector<double>           &areas,
                             const bool                           slave,
                             std::map<unsigned int, SlaveNode>   *slave_data = nullptr) const;
-
-    /// store_slave_nodes() in 3D.
-    void
-    store_slave_nodes_3d(std::map<unsigned int, SlaveNode>                      &slave_data,
-                         std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
-                         std::map<unsigned int, Tensor<1, dim>> &weighted_gap_of_node,
-                         const std::vector<double>              &u_at_dofs,
-                         const std::vector<Mortar::QuadFace>    &quads,
-                         const std::vector<double>              &areas);
 
     /// surface_distances() in 3D.
     std::vector<double>
