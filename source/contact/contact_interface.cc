@@ -129,6 +129,7 @@ namespace contact_fem
                                     const DoFHandler<dim>           &dof_handler,
                                     const std::vector<ContactPair>  &contact_pairs,
                                     const AffineConstraints<double> &dirichlet,
+                                    const AffineConstraints<double> &hanging,
                                     const Materials<dim>            &materials,
                                     const MPI_Comm                   comm)
   {
@@ -221,10 +222,103 @@ namespace contact_fem
     dof_position.clear();
     for (unsigned int i = 0; i < interface_dofs.size(); ++i)
       dof_position[interface_dofs[i]] = i;
+    find_hanging_vertices(hanging);
     slave_nodes.clear();
     coupled_faces.clear();
     face_lengths.clear();
     statistics.assign(pairs.size(), PairStatistics());
+  }
+
+  template <int dim>
+  void
+  ContactInterface<dim>::find_hanging_vertices(const AffineConstraints<double> &hanging)
+  {
+    // (hanging x DoF, parent x DoF, weight) of the surface nodes this rank
+    // sees; a line known on several ranks is the same on each.
+    std::vector<double> triples;
+    for (const auto &node : nodes)
+      if (hanging.can_store_line(node.dofs[0]) && hanging.is_constrained(node.dofs[0]))
+        for (const auto &[parent, weight] : *hanging.get_constraint_entries(node.dofs[0]))
+          {
+            triples.push_back(static_cast<double>(node.dofs[0]));
+            triples.push_back(static_cast<double>(parent));
+            triples.push_back(weight);
+          }
+    std::map<types::global_dof_index, unsigned int> node_of_dof;
+    for (unsigned int n = 0; n < nodes.size(); ++n)
+      node_of_dof[nodes[n].dofs[0]] = n;
+    std::map<unsigned int, std::map<unsigned int, double>> parents_of_node;
+    for (const auto &chunk : Utilities::MPI::all_gather(communicator, triples))
+      for (unsigned int i = 0; i + 3 <= chunk.size(); i += 3)
+        {
+          const unsigned int n = node_of_dof.at(static_cast<types::global_dof_index>(chunk[i]));
+          const auto parent = node_of_dof.find(static_cast<types::global_dof_index>(chunk[i + 1]));
+          // With Q2, the hanging vertex at the middle of a coarse edge is
+          // tied to that edge's own midpoint DoF, a node of the coarse face
+          // only: that face must be part of the same contact surface.
+          AssertThrow(parent != node_of_dof.end(),
+                      ExcMessage("Contact: a hanging vertex of a contact surface at (" +
+                                 Utilities::to_string(nodes[n].reference[0]) + ", " +
+                                 Utilities::to_string(nodes[n].reference[1]) +
+                                 (dim == 3 ? ", " + Utilities::to_string(nodes[n].reference[dim - 1]) : std::string()) +
+                                 ") depends on a node that is not on a contact surface: the "
+                                 "coarser neighbour face lies outside the contact boundary. "
+                                 "Refine so that the rim of the contact boundary has no hanging "
+                                 "vertices, or extend the contact boundary."));
+          parents_of_node[n][parent->second] = chunk[i + 2];
+        }
+    for (auto &node : nodes)
+      node.parents.clear();
+    for (const auto &[n, parents] : parents_of_node)
+      nodes[n].parents.assign(parents.begin(), parents.end());
+  }
+
+  template <int dim>
+  void
+  ContactInterface<dim>::condense_hanging_vertices(
+    std::map<unsigned int, SlaveNode>                      &slave_data,
+    std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
+    std::map<unsigned int, Tensor<1, dim>>                 &weighted_gap_of_node) const
+  {
+    // Master columns first, so the rows moved below are condensed already.
+    for (auto &[j, row] : M_of_node)
+      {
+        std::map<unsigned int, double> condensed;
+        for (const auto &[l, value] : row)
+          if (nodes[l].parents.empty())
+            condensed[l] += value;
+          else
+            for (const auto &[parent, weight] : nodes[l].parents)
+              condensed[parent] += weight * value;
+        row = std::move(condensed);
+      }
+    for (auto it = slave_data.begin(); it != slave_data.end();)
+      {
+        const unsigned int h = it->first;
+        if (nodes[h].parents.empty())
+          {
+            ++it;
+            continue;
+          }
+        const SlaveNode &hanging = it->second;
+        for (const auto &[parent, weight] : nodes[h].parents)
+          {
+            const auto p = slave_data.find(parent);
+            AssertThrow(p != slave_data.end(),
+                        ExcMessage("Contact: a hanging vertex of a slave surface depends on "
+                                   "a node that is not on that slave surface."));
+            p->second.D += weight * hanging.D;
+            p->second.full_area += weight * hanging.full_area;
+            if (const auto g = weighted_gap_of_node.find(h); g != weighted_gap_of_node.end())
+              weighted_gap_of_node[parent] += weight * g->second;
+            if (const auto row = M_of_node.find(h); row != M_of_node.end())
+              for (const auto &[l, value] : row->second)
+                M_of_node[parent][l] += weight * value;
+          }
+        weighted_gap_of_node.erase(h);
+        M_of_node.erase(h);
+        it = slave_data.erase(it);
+      }
   }
 
   template <int dim>
@@ -436,6 +530,7 @@ namespace contact_fem
     // support; tiny or negative dual weights at the rim of the master
     // surface would make its gap ill-defined.
     constexpr double least_covered_fraction = 1e-2;
+    condense_hanging_vertices(slave_data, M_of_node, weighted_gap_of_node);
     slave_nodes.clear();
     for (auto &[n, s] : slave_data)
       {

@@ -195,6 +195,95 @@ namespace contact_fem
   }
 
   template <>
+  bool
+  ContactInterface<3>::add_constrained_face(
+    const unsigned int                                                        f,
+    const std::vector<std::pair<unsigned int, Mortar::QuadSegmentOperators>> &segments,
+    std::map<unsigned int, SlaveNode>                                        &slave_data,
+    std::map<unsigned int, std::map<unsigned int, double>>                   &M_of_node,
+    std::map<unsigned int, Tensor<1, 3>> &weighted_gap_of_node)
+  {
+    const std::vector<unsigned int> &local = faces[f].nodes;
+    const bool has_hanging_vertex          = std::any_of(local.begin(), local.end(), [&](auto n) {
+      return !nodes[n].parents.empty();
+    });
+    if (segments.empty() || !has_hanging_vertex)
+      return false;
+
+    // The owners of the face's trace: its regular nodes and the parents of
+    // its hanging vertices; T(q, a) is the weight of owner q in node a.
+    std::vector<unsigned int>            owners;
+    std::map<unsigned int, unsigned int> owner_index;
+    const auto                           owner = [&](const unsigned int n) {
+      const auto [it, inserted] = owner_index.emplace(n, owners.size());
+      if (inserted)
+        owners.push_back(n);
+      return it->second;
+    };
+    std::vector<std::vector<std::pair<unsigned int, double>>> weights(local.size());
+    for (unsigned int a = 0; a < local.size(); ++a)
+      if (nodes[local[a]].parents.empty())
+        weights[a].emplace_back(owner(local[a]), 1.);
+      else
+        for (const auto &[parent, weight] : nodes[local[a]].parents)
+          weights[a].emplace_back(owner(parent), weight);
+    const unsigned int n = local.size();
+    // A face whose owners outnumber its nodes has a dependent trace basis
+    // and no dual basis of its own: its hanging rows are lumped instead.
+    if (owners.size() != n)
+      return false;
+    FullMatrix<double> T(n, n);
+    for (unsigned int a = 0; a < n; ++a)
+      for (const auto &[q, weight] : weights[a])
+        T(q, a) += weight;
+
+    std::vector<double> D(n, 0.);
+    double              D_sum = 0.;
+    for (const auto &segment : segments)
+      for (unsigned int a = 0; a < n; ++a)
+        D[a] += segment.second.D[a];
+    for (const double d : D)
+      D_sum += std::abs(d);
+    constexpr double least_nodal_weight = 1e-12;
+    if (std::any_of(D.begin(), D.end(),
+                    [&](const double d) { return std::abs(d) <= least_nodal_weight * D_sum; }))
+      return false;
+
+    // The dual functions of the owners, Psi~_q = sum_a S(q, a) Psi_a, are
+    // biorthogonal to the owners' trace functions N~_q = sum_a T(q, a) N_a
+    // on this face: S D T^T = D~ with D~ = T D, so S = D~ T^-T D^-1. They sum
+    // to one, as the Psi_a do, since the columns of T sum to one.
+    FullMatrix<double> T_inverse_transpose(n, n);
+    T_inverse_transpose.copy_transposed(T);
+    T_inverse_transpose.gauss_jordan();
+    Vector<double> D_owner(n);
+    for (unsigned int q = 0; q < n; ++q)
+      for (unsigned int a = 0; a < n; ++a)
+        D_owner[q] += T(q, a) * D[a];
+    FullMatrix<double> S(n, n);
+    for (unsigned int q = 0; q < n; ++q)
+      for (unsigned int a = 0; a < n; ++a)
+        S(q, a) = D_owner[q] * T_inverse_transpose(q, a) / D[a];
+
+    for (const auto &[m, ops] : segments)
+      {
+        coupled_faces.emplace_back(f, m);
+        for (unsigned int q = 0; q < n; ++q)
+          {
+            SlaveNode &s = slave_data[owners[q]];
+            for (unsigned int a = 0; a < n; ++a)
+              {
+                s.D += T(q, a) * ops.D[a];
+                weighted_gap_of_node[owners[q]] += S(q, a) * ops.weighted_gap[a];
+                for (unsigned int l = 0; l < faces[m].nodes.size(); ++l)
+                  M_of_node[owners[q]][faces[m].nodes[l]] += S(q, a) * ops.M(a, l);
+              }
+          }
+      }
+    return true;
+  }
+
+  template <>
   void
   ContactInterface<3>::search_pair_3d(
     const unsigned int                                      p,
@@ -259,18 +348,20 @@ namespace contact_fem
           continue;
         const FullMatrix<double> A =
           Mortar::dual_basis_coefficients(quads[f], normals, all_polygons);
-        bool overlapping = false;
+        std::vector<std::pair<unsigned int, Mortar::QuadSegmentOperators>> segments;
         for (const unsigned int m : masters)
           {
             Mortar::QuadSegmentOperators ops;
             if (!Mortar::integrate_pair(quads[f], normals, A, quads[m],
                                         n_quadrature_points(quads[f], quads[m]), ops))
               continue;
-            overlapping            = true;
             master_is_candidate[m] = true;
-            add_segment(f, m, ops, slave_data, M_of_node, weighted_gap_of_node);
+            segments.emplace_back(m, std::move(ops));
           }
-        if (overlapping)
+        if (!add_constrained_face(f, segments, slave_data, M_of_node, weighted_gap_of_node))
+          for (const auto &[m, ops] : segments)
+            add_segment(f, m, ops, slave_data, M_of_node, weighted_gap_of_node);
+        if (!segments.empty())
           {
             ++n_overlapping_faces;
             slave_area += areas[f];

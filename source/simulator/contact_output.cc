@@ -139,12 +139,11 @@ namespace contact_fem
     Json result = Json::object();
     if (!contact)
       return result;
-    unsigned int   n_slave = 0, n_active = 0;
+    const auto [n_slave, n_hanging] = interface->count_slave_nodes();
+    unsigned int n_active = 0;
     double         p_max = 0., p_min = std::numeric_limits<double>::max(), size_sum = 0.;
     double         gap_max = 0.;
     double         x_min = std::numeric_limits<double>::max(), x_max = -x_min;
-    for (const auto &node : interface->nodes)
-      n_slave += node.slave;
     for (const auto &s : interface->slave_nodes)
       if (s.paired && contact->is_active(s.node))
         {
@@ -160,6 +159,7 @@ namespace contact_fem
           x_max = std::max(x_max, x);
         }
     result.set("slave_nodes", n_slave)
+      .set("hanging_slave_vertices", n_hanging)
       .set("active_slave_nodes", n_active)
       .set("contact_half_width", n_active > 0 ? 0.5 * (x_max - x_min) : 0.)
       .set("max_contact_pressure", p_max)
@@ -681,9 +681,26 @@ namespace contact_fem
                     if (!scalar_owned.is_element(scalar_dof))
                       continue;
                     const unsigned int n = it->second;
-                    fields[0](scalar_dof) = contact->normal_pressure(n);
-                    fields[1](scalar_dof) = gap[n];
-                    fields[2](scalar_dof) = contact->is_active(n) ? 1. : 0.;
+                    // A hanging vertex has no multiplier of its own: it shows
+                    // the interpolation of its parents, as its displacement.
+                    const auto &parents = interface->nodes[n].parents;
+                    double      pressure = 0., interpolated_gap = 0.;
+                    bool        active   = !parents.empty();
+                    for (const auto &[parent, weight] : parents)
+                      {
+                        pressure += weight * contact->normal_pressure(parent);
+                        interpolated_gap += weight * gap[parent];
+                        active = active && contact->is_active(parent);
+                      }
+                    if (parents.empty())
+                      {
+                        pressure         = contact->normal_pressure(n);
+                        interpolated_gap = gap[n];
+                        active           = contact->is_active(n);
+                      }
+                    fields[0](scalar_dof) = pressure;
+                    fields[1](scalar_dof) = interpolated_gap;
+                    fields[2](scalar_dof) = active ? 1. : 0.;
                     fields[3](scalar_dof) = interface->nodes[n].slave ? 1. : 0.;
                     fields[4](scalar_dof) = interface->nodes[n].master ? 1. : 0.;
                     if (frictional)

@@ -174,16 +174,6 @@ namespace contact_fem
       contact = std::move(formulation);
     newton_parameters.parse_parameters(prm);
     refinement.parse_parameters(prm);
-    // Local refinement in 3D leaves hanging vertices on the slave surface,
-    // whose multiplier space (the constrained trace space) the 3D mortar
-    // does not build yet.
-    AssertThrow(dim == 2 || !contact || refinement.n_cycles == 1 ||
-                  refinement.estimator == "global",
-                ExcMessage("Refinement/Number of cycles = " +
-                           std::to_string(refinement.n_cycles) +
-                           ": adaptive refinement of 3D contact scenes is not implemented "
-                           "yet (hanging vertices on the slave surface); use 1 cycle or "
-                           "Refinement/Estimator = global."));
     spr_settings.parse_parameters(prm);
     analytical.parse_parameters(prm, prm_directory);
     // The reference solutions are those of a 2D cylinder, functions of x.
@@ -230,7 +220,7 @@ namespace contact_fem
       {
         interface = std::make_unique<ContactInterface<dim>>();
         interface->initialize(*mapping, dof_handler, contact_parameters.pairs,
-                              dirichlet_constraints, materials, comm);
+                              dirichlet_constraints, hanging_constraints, materials, comm);
         contact->initialize(*interface);
       }
     // Contact constraints couple slave DoFs to master DoFs anywhere: every
@@ -1610,10 +1600,10 @@ namespace contact_fem
           << " cells, " << dof_handler.n_dofs() << " DoFs";
     if (interface)
       {
-        unsigned int n_slave = 0;
-        for (const auto &node : interface->nodes)
-          n_slave += node.slave;
+        const auto [n_slave, n_hanging] = interface->count_slave_nodes();
         pcout << ", " << n_slave << " slave nodes";
+        if (n_hanging > 0)
+          pcout << " and " << n_hanging << " hanging slave vertices";
       }
     pcout << std::endl;
     // The direct solver is the quiet default; an iterative one says so, and

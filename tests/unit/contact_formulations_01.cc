@@ -122,7 +122,7 @@ main(int argc, char **argv)
   AffineConstraints<double> no_dirichlet;
   no_dirichlet.close();
   ContactInterface<2> interface;
-  interface.initialize(mapping, dof_handler, {ContactPair{3, 4}}, no_dirichlet, materials,
+  interface.initialize(mapping, dof_handler, {ContactPair{3, 4}}, no_dirichlet, no_dirichlet, materials,
                        MPI_COMM_WORLD);
   interface.update(std::vector<double>(interface.dofs().size(), 0.), 3.);
   std::cout << "mortar: " << interface.slave_nodes.size() << " slave nodes" << std::endl;

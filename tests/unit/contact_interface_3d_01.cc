@@ -126,7 +126,7 @@ main(int argc, char **argv)
   AffineConstraints<double> no_dirichlet;
   no_dirichlet.close();
   ContactInterface<3> interface;
-  interface.initialize(mapping, dof_handler, {ContactPair{3, 4}}, no_dirichlet, materials,
+  interface.initialize(mapping, dof_handler, {ContactPair{3, 4}}, no_dirichlet, no_dirichlet, materials,
                        MPI_COMM_WORLD);
   std::cout << "faces: " << interface.faces.size() << ", nodes: " << interface.nodes.size()
             << std::endl;

@@ -41,8 +41,18 @@ namespace contact_fem
    *
    * 2D: line faces of degree 1 or 2. 3D: quadrilateral faces of degree 1
    * or 2 whose geometry is that of the element (no Q1 on a curved mapping),
-   * through the kernel of mortar_3d.h, without hanging vertices on the
-   * slave surface.
+   * through the kernel of mortar_3d.h.
+   *
+   * Hanging vertices (3D adaptive meshes: a node on the edge of a coarser
+   * neighbour face) carry no multiplier: the multiplier space is that of
+   * the constrained trace, whose nodes (owners) are the regular slave
+   * nodes. On a face with hanging vertices the dual functions of its
+   * owners are built biorthogonal to the owners' trace functions there
+   * (add_constrained_face()), so D stays diagonal and exact for every
+   * displacement of the constrained space, and the functions still sum to
+   * one (a uniform pressure stays exact). Master columns of hanging
+   * vertices go to their parents with the hanging-node weights, so no
+   * constraint refers to a hanging DoF.
    *
    * Implemented in source/contact/contact_interface.cc, the 3D search and
    * distances in source/contact/contact_interface_3d.cc.
@@ -59,6 +69,10 @@ namespace contact_fem
       std::array<bool, dim>                     fixed; ///< Dirichlet component
       bool                                      slave = false;
       bool                                      master = false;
+      /// A hanging vertex of the surface (a node on the edge of a coarser
+      /// neighbour face, 3D adaptive meshes): the nodes and weights its
+      /// displacement is interpolated from. Empty for a regular node.
+      std::vector<std::pair<unsigned int, double>> parents;
     };
 
     /// A face of a contact surface.
@@ -111,13 +125,15 @@ namespace contact_fem
 
     /**
      * Collects the faces of @p pairs from all ranks. @p dirichlet holds the
-     * Dirichlet constraints only (to flag fixed components).
+     * Dirichlet constraints only (to flag fixed components), @p hanging the
+     * closed hanging-node constraints of the locally relevant DoFs.
      */
     void
     initialize(const MappingQ<dim>                &mapping,
                const DoFHandler<dim>              &dof_handler,
                const std::vector<ContactPair>     &pairs,
                const AffineConstraints<double>    &dirichlet,
+               const AffineConstraints<double>    &hanging,
                const Materials<dim>               &materials,
                const MPI_Comm                      comm);
 
@@ -133,6 +149,18 @@ namespace contact_fem
     position(const types::global_dof_index dof) const
     {
       return dof_position.at(dof);
+    }
+
+    /// The number of slave nodes that carry a multiplier (first) and of
+    /// hanging slave vertices (second).
+    std::pair<unsigned int, unsigned int>
+    count_slave_nodes() const
+    {
+      std::pair<unsigned int, unsigned int> counts(0, 0);
+      for (const auto &node : nodes)
+        if (node.slave)
+          ++(node.parents.empty() ? counts.first : counts.second);
+      return counts;
     }
 
     /// The values of @p v at dofs(), from their owners, on every rank.
@@ -284,6 +312,41 @@ namespace contact_fem
                 std::map<unsigned int, SlaveNode>                      &slave_data,
                 std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
                 std::map<unsigned int, Tensor<1, dim>>                 &weighted_gap_of_node);
+
+    /// Reads the parents of the hanging vertices of the surfaces from
+    /// @p hanging (their x components; the hanging-node weights are the same
+    /// for every component), gathered from all ranks.
+    void
+    find_hanging_vertices(const AffineConstraints<double> &hanging);
+
+    /// Moves the M columns of hanging master vertices to their parents with
+    /// the hanging-node weights, and what is left on a hanging slave vertex
+    /// (its full area; D, M and weighted gap of faces that
+    /// add_constrained_face() could not take, lumped) to its parents.
+    void
+    condense_hanging_vertices(
+      std::map<unsigned int, SlaveNode>                      &slave_data,
+      std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
+      std::map<unsigned int, Tensor<1, dim>>                 &weighted_gap_of_node) const;
+
+    /**
+     * Adds the @p segments (master face, operators) of slave face @p f in
+     * the dual basis of the constrained trace, if @p f has hanging
+     * vertices: D, M and the weighted gap go to the owners of the face (its
+     * regular nodes and the parents of its hanging vertices) with dual
+     * functions biorthogonal to the owners' trace functions on @p f, so the
+     * mortar D stays diagonal and exact for every displacement of the
+     * constrained space. Returns false (nothing added) for a face without
+     * hanging vertices, or one whose owners do not form a basis of its
+     * trace (then its hanging rows are lumped onto the parents).
+     */
+    bool
+    add_constrained_face(
+      const unsigned int                                                        f,
+      const std::vector<std::pair<unsigned int, Mortar::QuadSegmentOperators>> &segments,
+      std::map<unsigned int, SlaveNode>                                        &slave_data,
+      std::map<unsigned int, std::map<unsigned int, double>>                   &M_of_node,
+      std::map<unsigned int, Tensor<1, dim>> &weighted_gap_of_node);
 
     /// Per surface node: its mean unit normal and mean plane-strain
     /// modulus (surface_node_normals(), surface_node_normals_3d()).
