@@ -3,6 +3,7 @@
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/numerics/rtree.h>
 
+#include <contact_fem/geometry/hexahedron_shape.h>
 #include <contact_fem/geometry/mesh_file.h>
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 #include <map>
 #include <numeric>
 #include <sstream>
+#include <unordered_map>
 
 namespace contact_fem
 {
@@ -64,6 +66,16 @@ namespace contact_fem
       return nullptr;
     }
 
+    constexpr int gmsh_hexahedron = 5;
+
+    /// A hexahedron of the file, for the check of its shape.
+    struct GmshHexahedron
+    {
+      long                tag;
+      unsigned int        line;
+      std::array<long, 8> nodes;
+    };
+
     /// What the scan found in the file.
     struct Contents
     {
@@ -72,6 +84,12 @@ namespace contact_fem
       bool                       have_nodes = false, have_elements = false;
       double z_min = std::numeric_limits<double>::max(), z_max = -z_min;
       double extent = 0.; ///< largest |x|, |y| or |z| of a node
+      /// Kept only when asked for (3D): deal.II's reader reorders inverted
+      /// cells and forgets element numbers and lines, so the hexahedra are
+      /// checked here, where a message can name them.
+      bool                               keep_hexahedra = false;
+      std::unordered_map<long, Point<3>> node_coordinates;
+      std::vector<GmshHexahedron>        hexahedra;
     };
 
     /// Reads a text file line by line and knows the line number, so that
@@ -172,8 +190,10 @@ namespace contact_fem
     }
 
     void
-    record_node(const std::vector<double> &xyz, Contents &contents)
+    record_node(const long tag, const std::vector<double> &xyz, Contents &contents)
     {
+      if (contents.keep_hexahedra)
+        contents.node_coordinates[tag] = Point<3>(xyz[0], xyz[1], xyz[2]);
       contents.z_min = std::min(contents.z_min, xyz[2]);
       contents.z_max = std::max(contents.z_max, xyz[2]);
       for (unsigned int d = 0; d < 3; ++d)
@@ -190,7 +210,7 @@ namespace contact_fem
       for (std::size_t i = 0; i < n; ++i)
         {
           const auto v = reader.numbers(section, count_of(i, n, "nodes"), "'tag x y z'", 4);
-          record_node({v[1], v[2], v[3]}, contents);
+          record_node(static_cast<long>(v[0]), {v[1], v[2], v[3]}, contents);
         }
       reader.expect(section == "$NOD" ? "$ENDNOD" : "$EndNodes", section);
     }
@@ -210,16 +230,19 @@ namespace contact_fem
           const auto block = reader.numbers(section, count_of(seen, n_nodes, "nodes"),
                                             "an entity block header", 4);
           const auto n = static_cast<std::size_t>(block[3]);
+          std::vector<long> tags;
           if (version >= 4.1)
             for (std::size_t i = 0; i < n; ++i)
-              reader.numbers(section, count_of(seen, n_nodes, "nodes"), "a node tag", 1);
+              tags.push_back(static_cast<long>(
+                reader.numbers(section, count_of(seen, n_nodes, "nodes"), "a node tag", 1)[0]));
           for (std::size_t i = 0; i < n; ++i, ++seen)
             {
               const auto v = reader.numbers(section, count_of(seen, n_nodes, "nodes"),
                                             version >= 4.1 ? "'x y z'" : "'tag x y z'",
                                             version >= 4.1 ? 3 : 4);
               const std::size_t o = version >= 4.1 ? 0 : 1;
-              record_node({v[o], v[o + 1], v[o + 2]}, contents);
+              record_node(version >= 4.1 ? tags[i] : static_cast<long>(v[0]),
+                          {v[o], v[o + 1], v[o + 2]}, contents);
             }
         }
       if (seen != n_nodes)
@@ -235,6 +258,20 @@ namespace contact_fem
     {
       const ElementType *t = find_element_type(type);
       return t ? before + t->n_nodes : 0;
+    }
+
+    /// Keeps the hexahedron of the element line @p v whose eight nodes
+    /// start at @p first_node.
+    void
+    record_hexahedron(const std::vector<double> &v, const std::size_t first_node,
+                      const unsigned int line, Contents &contents)
+    {
+      if (!contents.keep_hexahedra)
+        return;
+      GmshHexahedron hexahedron{static_cast<long>(v[0]), line, {}};
+      for (unsigned int i = 0; i < 8; ++i)
+        hexahedron.nodes[i] = static_cast<long>(v[first_node + i]);
+      contents.hexahedra.push_back(hexahedron);
     }
 
     /// $Elements (2.x: 'tag type n_tags tags... nodes...') or $ELM (1:
@@ -255,6 +292,8 @@ namespace contact_fem
             reader.fail("element " + std::to_string(static_cast<long>(v[0])) + " has " +
                         std::to_string(v.size()) + " numbers, expected " +
                         std::to_string(length) + " (a line cut short: truncated file?).");
+          if (type == gmsh_hexahedron)
+            record_hexahedron(v, length - 8, reader.line_number, contents);
           ++contents.elements[type];
         }
       reader.expect(section == "$ELM" ? "$ENDELM" : "$EndElements", section);
@@ -283,6 +322,8 @@ namespace contact_fem
               if (v.size() < element_line_length(type, 1))
                 reader.fail("element " + std::to_string(static_cast<long>(v[0])) +
                             " is cut short (truncated file?).");
+              if (type == gmsh_hexahedron)
+                record_hexahedron(v, 1, reader.line_number, contents);
             }
           contents.elements[type] += n;
         }
@@ -335,12 +376,13 @@ namespace contact_fem
     }
 
     Contents
-    scan_gmsh(const std::string &file)
+    scan_gmsh(const std::string &file, const bool keep_hexahedra)
     {
       LineReader   reader(file);
       std::string  section;
       const double version = read_format(reader, section);
       Contents     contents;
+      contents.keep_hexahedra = keep_hexahedra;
       std::string  line;
       while (!section.empty() || reader.next(line))
         {
@@ -418,16 +460,29 @@ namespace contact_fem
                   ExcMessage(prefix + "holds no " + Dd + " cells, only " +
                              describe(contents, [](const ElementType &) { return true; }) +
                              " (Dimension = " + std::to_string(dim) + "; mesh the " +
-                             (dim == 2 ? "surfaces: gmsh -2)." : "volumes: gmsh -3).")));
+                             (dim == 2 ? "surfaces: gmsh -2)." :
+                              top == 2 ? "volumes: gmsh -3; or, if this is a 2D (plane strain) "
+                                         "mesh, run it with Dimension = 2)." :
+                                         "volumes: gmsh -3).")));
       const std::string simplices =
         describe(contents, [&](const ElementType &t) { return t.simplex && t.dim == dim; });
-      AssertThrow(simplices.empty(),
+      AssertThrow(simplices.empty() || dim == 3,
                   ExcMessage(prefix + "holds " + simplices +
                              ": simplex cells are not supported; contact_fem needs "
                              "quadrilaterals in 2D and hexahedra in 3D. In Gmsh: "
                              "Mesh.RecombineAll = 1 (with Mesh.Algorithm = 8, or "
                              "transfinite surfaces), or Mesh.SubdivisionAlgorithm = 1, "
                              "which splits every triangle into quadrilaterals."));
+      AssertThrow(simplices.empty(),
+                  ExcMessage(prefix + "holds " + simplices +
+                             ": tetrahedra, prisms and pyramids are not supported; "
+                             "contact_fem needs hexahedra in 3D. In Gmsh: transfinite "
+                             "volumes with recombined surfaces (Transfinite Volume, "
+                             "Recombine Surface, or Mesh.RecombineAll = 1 with "
+                             "Mesh.Recombine3DAll = 1), the extrusion of a quadrilateral "
+                             "mesh (Extrude with Layers and Recombine), or "
+                             "Mesh.SubdivisionAlgorithm = 2, which splits every "
+                             "tetrahedron into hexahedra."));
       const std::string high_order =
         describe(contents, [](const ElementType &t) { return !t.first_order; });
       AssertThrow(high_order.empty(),
@@ -442,13 +497,83 @@ namespace contact_fem
                              ": a 2D mesh must lie in a plane z = const (a surface mesh "
                              "of a 3D body cannot be read in 2D)."));
     }
+
+    /// "(x, y, z)" with 8 significant digits.
+    std::string
+    coordinates_3d(const Point<3> &p)
+    {
+      std::ostringstream text;
+      text << std::setprecision(8) << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
+      return text.str();
+    }
+
+    /// Refuses hexahedra that are no valid cells: deal.II's reader would
+    /// take a collapsed or flat one (and fail later, or solve with a
+    /// singular cell) and reorder a twisted one by its signed volume.
+    /// Mirrored cells (every corner inverted: the opposite turn) pass, as
+    /// deal.II reorders them.
+    void
+    check_hexahedra(const Contents &contents, const std::string &file)
+    {
+      std::size_t n_bad = 0;
+      std::string first;
+      for (const auto &hexahedron : contents.hexahedra)
+        {
+          std::array<Point<3>, 8> x;
+          for (unsigned int i = 0; i < 8; ++i)
+            {
+              const auto node = contents.node_coordinates.find(hexahedron.nodes[i]);
+              AssertThrow(node != contents.node_coordinates.end(),
+                          ExcMessage(mesh_key + ": '" + file + "', line " +
+                                     std::to_string(hexahedron.line) + ": hexahedron " +
+                                     std::to_string(hexahedron.tag) + " uses node " +
+                                     std::to_string(hexahedron.nodes[i]) +
+                                     ", which $Nodes does not list."));
+              x[i] = node->second;
+            }
+          const HexahedronCheck check = check_hexahedron(x);
+          if (check.shape == HexahedronShape::valid || check.shape == HexahedronShape::mirrored)
+            continue;
+          if (n_bad++ > 0)
+            continue;
+          const auto node = [&](const unsigned int i) {
+            return "node " + std::to_string(hexahedron.nodes[i]) + " " + coordinates_3d(x[i]);
+          };
+          std::ostringstream what;
+          what << "line " << hexahedron.line << ": hexahedron " << hexahedron.tag;
+          if (check.shape == HexahedronShape::collapsed_edge)
+            what << " is degenerate: its edge from " << node(check.first) << " to "
+                 << node(check.second) << " has zero length (a collapsed edge; a "
+                 << "hexahedron needs eight distinct corners)";
+          else if (check.shape == HexahedronShape::flat)
+            what << " is degenerate: it has no volume at its corner " << node(check.first)
+                 << " (the three edges there lie in one plane)";
+          else
+            what << " is inverted: its Jacobian is negative at " << check.n_negative
+                 << " of its 8 corners (the first at " << node(check.first)
+                 << ") and positive at the others: a twisted, self-intersecting cell, "
+                 << "its nodes not in Gmsh's hexahedron order (nodes 1-4 one face, 5-8 "
+                 << "the opposite face in the same turn)";
+          first = what.str();
+        }
+      AssertThrow(n_bad == 0,
+                  ExcMessage(mesh_key + ": '" + file + "', " + first +
+                             (n_bad > 1 ? "; " + std::to_string(n_bad - 1) +
+                                            " more hexahedra are degenerate or inverted" :
+                                          "") +
+                             ". contact_fem needs hexahedra with a positive Jacobian at "
+                             "every corner: remesh, or fix the node order."));
+    }
   } // namespace
 
   template <int dim>
   void
   read_gmsh(const std::string &file, Triangulation<dim> &coarse)
   {
-    check_contents(scan_gmsh(file), file, dim);
+    const Contents contents = scan_gmsh(file, dim == 3);
+    check_contents(contents, file, dim);
+    if (dim == 3)
+      check_hexahedra(contents, file);
     GridIn<dim> grid_in;
     grid_in.attach_triangulation(coarse);
     std::ifstream in(file);

@@ -548,8 +548,7 @@ namespace contact_fem
   template <int dim>
   void
   Scene<dim>::check_mesh(const parallel::distributed::Triangulation<dim> &tria,
-                         const std::set<types::material_id>              &material_ids,
-                         const std::set<types::boundary_id>              &boundary_ids)
+                         const std::set<types::material_id>              &material_ids)
   {
     AssertThrow(tria.n_global_active_cells() > 0,
                 ExcMessage("Geometry: the mesh has no cells."));
@@ -558,7 +557,6 @@ namespace contact_fem
     std::set<types::material_id> mesh_materials;
     for (const auto &cell : tria.cell_iterators_on_level(0))
       mesh_materials.insert(cell->material_id());
-    const std::vector<types::boundary_id> mesh_boundaries = tria.get_boundary_ids();
 
     for (const auto id : material_ids)
       AssertThrow(mesh_materials.count(id) == 1,
@@ -569,11 +567,6 @@ namespace contact_fem
       AssertThrow(material_ids.count(id) == 1,
                   ExcMessage("Materials/Material ids: the mesh has cells with material id " +
                              std::to_string(id) + ", which has no material constants."));
-    for (const auto id : boundary_ids)
-      AssertThrow(std::find(mesh_boundaries.begin(), mesh_boundaries.end(), id) !=
-                    mesh_boundaries.end(),
-                  ExcMessage("Boundary conditions / Contact: boundary id " +
-                             std::to_string(id) + " does not exist in the mesh."));
 
     // Inverted or degenerate cells: the corner Jacobians of a valid cell are
     // all positive.

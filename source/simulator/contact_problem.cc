@@ -1134,14 +1134,7 @@ namespace contact_fem
       std::set<types::material_id> material_ids;
       for (const auto &[id, constants] : materials.bodies)
         material_ids.insert(id);
-      std::set<types::boundary_id> boundary_ids;
-      for (const auto &c : boundary_conditions.displacements)
-        boundary_ids.insert(c.boundary_id);
-      for (const auto &c : boundary_conditions.pressures)
-        boundary_ids.insert(c.boundary_id);
-      for (const auto &pair : contact_parameters.pairs)
-        boundary_ids.insert({pair.slave, pair.master});
-      Scene<dim>::check_mesh(triangulation, material_ids, boundary_ids);
+      Scene<dim>::check_mesh(triangulation, material_ids);
     }
     // Refining a polygon of a curve without its manifold moves p_max away
     // from the converged value with every level: say so once, up front.

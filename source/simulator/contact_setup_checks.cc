@@ -54,16 +54,62 @@ namespace contact_fem
     coarse_scene.distortion = 0.;
     parallel::distributed::Triangulation<dim> coarse(comm);
     coarse_scene.create_mesh(coarse);
+    check_boundary_ids(coarse);
     check_contact_pairs(coarse);
     check_memory_estimate(coarse);
-    // Boundary conditions/Traction: a boundary id the mesh lacks would load
-    // nothing, silently.
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::check_boundary_ids(const Triangulation<dim> &coarse) const
+  {
+    // A boundary id that no face carries would hold, load or couple nothing,
+    // silently: the whole body free, a load lost, a contact pair without
+    // faces. Typical of a Gmsh mesh saved without physical surfaces, or whose
+    // tagged surfaces are not those of the volumes.
+    std::vector<std::pair<std::string, types::boundary_id>> named;
+    for (const auto &c : boundary_conditions.displacements)
+      named.emplace_back(c.key, c.boundary_id);
+    for (const auto &c : boundary_conditions.pressures)
+      named.emplace_back("Boundary conditions/Pressure", c.boundary_id);
+    for (const auto &c : boundary_conditions.tractions)
+      named.emplace_back("Boundary conditions/Traction", c.boundary_id);
+    for (const auto &pair : contact_parameters.pairs)
+      {
+        const std::string text = std::to_string(static_cast<unsigned int>(pair.slave)) + ": " +
+                                 std::to_string(static_cast<unsigned int>(pair.master));
+        named.emplace_back("Contact/Pairs: the slave of pair '" + text + "'", pair.slave);
+        named.emplace_back("Contact/Pairs: the master of pair '" + text + "'", pair.master);
+      }
+
     const std::vector<types::boundary_id> ids = coarse.get_boundary_ids();
-    for (const auto &condition : boundary_conditions.tractions)
-      AssertThrow(std::find(ids.begin(), ids.end(), condition.boundary_id) != ids.end(),
-                  ExcMessage("Boundary conditions/Traction: boundary id " +
-                             std::to_string(condition.boundary_id) +
-                             " does not exist in the mesh."));
+    for (const auto &[key, id] : named)
+      {
+        if (std::find(ids.begin(), ids.end(), id) != ids.end())
+          continue;
+        std::string carried;
+        for (const auto other : ids)
+          carried += (carried.empty() ? "" : ", ") +
+                     std::to_string(static_cast<unsigned int>(other));
+        std::string message =
+          key + ": boundary id " + std::to_string(static_cast<unsigned int>(id)) +
+          " is on no face of the mesh; its boundary faces carry " +
+          (ids.size() == 1 ? "the id " : "the ids ") + carried +
+          (scene.type == "mesh file" && ids.front() == 0 ?
+             " (0: the faces without a physical tag)." :
+             ".");
+        if (scene.type == "mesh file")
+          {
+            const std::string surface = dim == 3 ? "surface" : "curve";
+            message += " In a Gmsh mesh a face gets a boundary id from the physical tag "
+                       "of its " + surface + " (Physical " +
+                       (dim == 3 ? "Surface" : "Curve") + "); a mesh saved without one, or "
+                       "whose tagged " + surface + "s are not those the cells were meshed "
+                       "on (a duplicate of a " + surface + ", e.g. with the built-in kernel "
+                       "and Geometry.AutoCoherence = 0: run Coherence;), has none.";
+          }
+        AssertThrow(false, ExcMessage(message));
+      }
   }
 
   template <int dim>
@@ -165,6 +211,7 @@ namespace contact_fem
 #define INSTANTIATE(dim) \
   template void ContactProblem<dim>::check_scene_before_meshing(); \
   template void ContactProblem<dim>::print_input_warnings() const; \
+  template void ContactProblem<dim>::check_boundary_ids(const Triangulation<dim> &) const; \
   template void ContactProblem<dim>::check_contact_pairs(const Triangulation<dim> &) const; \
   template std::string ContactProblem<dim>::refinement_keys() const; \
   template void        ContactProblem<dim>::check_memory_estimate( const parallel::distributed::Triangulation<dim> &);

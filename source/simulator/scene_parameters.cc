@@ -145,7 +145,7 @@ namespace contact_fem
         const types::boundary_id b = parse_boundary_id(id, fixed_key);
         for (const unsigned int d :
              parse_components(components, axes, fixed_key, "boundary " + id))
-          displacements.push_back({b, d, "0"});
+          displacements.push_back({b, d, "0", fixed_key});
       }
     const std::string points_key = "Boundary conditions/Fixed points";
     points.clear();
@@ -177,7 +177,7 @@ namespace contact_fem
         const std::string expression = Utilities::trim(rhs.substr(eq + 1));
         check_expression(expression, dim, disp_key);
         displacements.push_back(
-          {b, static_cast<unsigned int>(axes.find(cmp[0])), expression});
+          {b, static_cast<unsigned int>(axes.find(cmp[0])), expression, disp_key});
       }
     const std::string pressure_key = "Boundary conditions/Pressure";
     for (const auto &[id, expression] :

@@ -74,12 +74,13 @@ namespace contact_fem
     std::string
     chord_warning() const;
 
-    /// Checks that the mesh has these material and boundary ids and no
-    /// inverted or degenerate cells; throws with the parameter name otherwise.
+    /// Checks that the mesh has these material ids and no inverted or
+    /// degenerate cells; throws with the parameter name otherwise. (Boundary
+    /// ids are checked before meshing, with the key that names them:
+    /// ContactProblem::check_boundary_ids().)
     static void
     check_mesh(const parallel::distributed::Triangulation<dim> &tria,
-               const std::set<types::material_id>              &material_ids,
-               const std::set<types::boundary_id>              &boundary_ids);
+               const std::set<types::material_id>              &material_ids);
 
     /// Whether the mesh has curved boundaries (manifolds other than flat).
     bool

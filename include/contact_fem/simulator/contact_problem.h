@@ -331,6 +331,10 @@ namespace contact_fem
     /// need: input errors found before any work.
     void
     check_scene_before_meshing();
+    /// Refuses a boundary id named by a boundary condition or a contact pair
+    /// that no face of @p coarse carries, naming the key and the id.
+    void
+    check_boundary_ids(const Triangulation<dim> &coarse) const;
     /// Refuses a contact pair whose two surfaces belong to the same body.
     void
     check_contact_pairs(const Triangulation<dim> &tria) const;

@@ -22,6 +22,7 @@ namespace contact_fem
     types::boundary_id boundary_id;
     unsigned int       component;
     std::string        expression; ///< function of x, y, (z,) t; "0" for fixed
+    std::string        key;        ///< the parameter that set it, for messages
   };
 
   /// A boundary id loaded by a normal pressure (positive pushes into the body).
