@@ -3,16 +3,6 @@
 #include <contact_fem/contact/mortar.h>
 #include <contact_fem/contact/mortar_3d.h>
 
-// Boost 1.74 rescales overlay input to an integer grid by default, which put
-// the intersection vertices ~1e-8 of the box off (sum M missed the overlap
-// area by that much); later versions drop the rescaling. Turned off here
-// only: the polygon types below appear in no other translation unit, and the
-// R-trees elsewhere (boxes and points) do not use the overlay code.
-#define BOOST_GEOMETRY_NO_ROBUSTNESS
-#include <boost/geometry.hpp>
-#include <boost/geometry/geometries/point_xy.hpp>
-#include <boost/geometry/geometries/polygon.hpp>
-
 #include <algorithm>
 #include <cmath>
 
@@ -56,6 +46,117 @@ namespace contact_fem
       clamp(const double x)
       {
         return std::max(-1., std::min(1., x));
+      }
+
+      /// A polygon in the auxiliary plane: (e1, e2) coordinates, not closed.
+      using PlanePolygon = std::vector<Point<2>>;
+
+      /// Twice the signed area (positive: counterclockwise).
+      double
+      twice_signed_area(const PlanePolygon &polygon)
+      {
+        double area = 0.;
+        for (unsigned int k = 0; k < polygon.size(); ++k)
+          area += cross_2d(polygon[k], polygon[(k + 1) % polygon.size()]);
+        return area;
+      }
+
+      /// Whether the counterclockwise @p polygon turns left or goes straight
+      /// on at every vertex, up to a turn of 1e-10 rad (collinear edge
+      /// midpoints stay convex).
+      bool
+      is_convex(const PlanePolygon &polygon)
+      {
+        const unsigned int m = polygon.size();
+        for (unsigned int k = 0; k < m; ++k)
+          {
+            const Tensor<1, 2> a = polygon[(k + 1) % m] - polygon[k];
+            const Tensor<1, 2> b = polygon[(k + 2) % m] - polygon[(k + 1) % m];
+            if (cross_2d(a, b) < -1e-10 * a.norm() * b.norm())
+              return false;
+          }
+        return true;
+      }
+
+      /**
+       * The counterclockwise @p ring as convex pieces: itself if convex,
+       * otherwise the fan from @p centre (a point from which the ring is
+       * star-shaped: the projected face centre) with consecutive triangles
+       * merged while they stay convex - e.g. two pieces for a face whose
+       * projected edge bends inward at its midpoint (a face bounded by a
+       * parallel of a sphere, seen from above). Empty if the ring is not
+       * star-shaped from @p centre (a face folded over in the projection).
+       */
+      std::vector<PlanePolygon>
+      convex_pieces(const PlanePolygon &ring, const Point<2> &centre)
+      {
+        if (is_convex(ring))
+          return {ring};
+        const unsigned int m = ring.size();
+        for (unsigned int k = 0; k < m; ++k)
+          if (!(cross_2d(ring[k] - centre, ring[(k + 1) % m] - centre) > 0.))
+            return {};
+        // Start at a reflex vertex: no convex piece passes through one.
+        unsigned int start = 0;
+        for (unsigned int k = 0; k < m; ++k)
+          {
+            const Tensor<1, 2> a = ring[(k + 1) % m] - ring[k];
+            const Tensor<1, 2> b = ring[(k + 2) % m] - ring[(k + 1) % m];
+            if (cross_2d(a, b) < -1e-10 * a.norm() * b.norm())
+              start = (k + 1) % m;
+          }
+        std::vector<PlanePolygon> pieces;
+        PlanePolygon              piece = {centre, ring[start]};
+        for (unsigned int i = 1; i <= m; ++i)
+          {
+            const Point<2> next = ring[(start + i) % m];
+            piece.push_back(next);
+            if (piece.size() > 3 && !is_convex(piece))
+              {
+                piece.pop_back();
+                pieces.push_back(piece);
+                piece = {centre, piece.back(), next};
+              }
+          }
+        pieces.push_back(piece);
+        return pieces;
+      }
+
+      /**
+       * Sutherland-Hodgman: @p subject (any simple polygon) clipped by the
+       * half-planes of the edges of the convex, counterclockwise @p clip.
+       * Where the intersection falls apart into several parts, they come as
+       * one polygon joined by edges of zero width along the clip edges, run
+       * through once each way: the same area, and the fan integration of
+       * for_each_point() cancels them exactly. Each step is a continuous
+       * function of the input, so edges that coincide up to round-off
+       * (faces that touch along an edge, or share one) give a sliver of
+       * round-off width or nothing, never a wrong region. (boost.geometry's
+       * overlay, used before, returned the whole slave for some such pairs:
+       * on the two cylinders extruded and refined, whose faces meet edge on
+       * edge at 1e-14 after the transfinite interpolation of the interior.)
+       */
+      PlanePolygon
+      clip_convex(const PlanePolygon &subject, const PlanePolygon &clip)
+      {
+        PlanePolygon result = subject, input;
+        for (unsigned int e = 0; e < clip.size() && !result.empty(); ++e)
+          {
+            const Point<2>     a    = clip[e];
+            const Tensor<1, 2> edge = clip[(e + 1) % clip.size()] - a;
+            input.swap(result);
+            result.clear();
+            for (unsigned int k = 0; k < input.size(); ++k)
+              {
+                const Point<2> &p = input[k], &q = input[(k + 1) % input.size()];
+                const double    sp = cross_2d(edge, p - a), sq = cross_2d(edge, q - a);
+                if (sp >= 0.)
+                  result.push_back(p);
+                if ((sp >= 0.) != (sq >= 0.))
+                  result.push_back(p + (sp / (sp - sq)) * (q - p));
+              }
+          }
+        return result;
       }
 
       /// Interpolated (not normalised) nodal normal field at @p xi.
@@ -357,63 +458,45 @@ namespace contact_fem
             const QuadFace                  &master,
             std::vector<ParameterPolygon>   &polygons)
     {
-      namespace bg       = boost::geometry;
-      using BoostPoint   = bg::model::d2::point_xy<double>;
-      using BoostPolygon = bg::model::polygon<BoostPoint, /*clockwise=*/false>;
       polygons.clear();
-
       const AuxiliaryPlane plane = auxiliary_plane(slave, slave_normals);
 
-      // Projection along n0 into the plane, in (e1, e2) coordinates.
+      // Projection along n0 into the plane, in (e1, e2) coordinates,
+      // counterclockwise (the master, whose normal opposes n0, comes
+      // clockwise).
       const auto project = [&](const QuadFace &face) {
-        BoostPolygon polygon;
+        PlanePolygon ring;
         for (const unsigned int i : boundary_ring(face.degree()))
-          {
-            const Point<2> u = plane.coordinates(face.nodes[i]);
-            bg::append(polygon.outer(), BoostPoint(u[0], u[1]));
-          }
-        // Closes the ring and orients it counterclockwise: the master, whose
-        // normal opposes n0, comes clockwise.
-        bg::correct(polygon);
-        return polygon;
+          ring.push_back(plane.coordinates(face.nodes[i]));
+        if (twice_signed_area(ring) < 0.)
+          std::reverse(ring.begin(), ring.end());
+        return ring;
       };
-      const BoostPolygon slave_polygon = project(slave), master_polygon = project(master);
-      const double       slave_area = bg::area(slave_polygon);
-      // A master seen edge-on (or warped into a bow tie) from the plane
-      // projects to no valid polygon: no overlap to integrate.
-      if (!(bg::area(master_polygon) > 1e-10 * slave_area))
+      const PlanePolygon slave_ring = project(slave), master_ring = project(master);
+      const double       slave_area = 0.5 * twice_signed_area(slave_ring);
+      // The master is clipped by the convex pieces of the slave: the slave
+      // itself, or its fan from the centre where a curved edge bends inward
+      // at its midpoint; their cuts run from node to node, so the slave edges
+      // stay whole (for_each_point() integrates them along the face).
+      const std::vector<PlanePolygon> slave_pieces =
+        convex_pieces(slave_ring, plane.coordinates(slave.point(Point<2>())));
+      // A master seen edge-on (or folded over) from the plane projects to no
+      // valid polygon: no overlap to integrate.
+      if (!(0.5 * twice_signed_area(master_ring) > 1e-10 * slave_area) || slave_pieces.empty())
         return false;
 
-      std::vector<BoostPolygon> intersection;
-      try
+      for (const PlanePolygon &slave_piece : slave_pieces)
         {
-          bg::intersection(slave_polygon, master_polygon, intersection);
-        }
-      catch (const bg::exception &)
-        {
-          // Invalid input (a self-intersecting projected polygon): as above.
-          return false;
-        }
-
-      for (const BoostPolygon &piece : intersection)
-        {
+          const PlanePolygon piece = clip_convex(master_ring, slave_piece);
           // Touching edges or corners give no piece or a zero-area one;
           // slivers of this relative size are round-off of shared edges.
-          if (!(bg::area(piece) > 1e-10 * slave_area))
+          if (piece.size() < 3 || !(0.5 * twice_signed_area(piece) > 1e-10 * slave_area))
             continue;
-          const auto &ring = piece.outer();
-          // Boost closes the ring by repeating the first vertex.
-          const std::size_t n_vertices =
-            (ring.size() > 1 && bg::equals(ring.front(), ring.back())) ? ring.size() - 1 :
-                                                                          ring.size();
           ParameterPolygon polygon;
-          for (std::size_t v = 0; v < n_vertices; ++v)
+          for (const Point<2> &u : piece)
             {
               Point<2> xi;
-              if (!project_along(slave,
-                                 plane.point(Point<2>(ring[v].x(), ring[v].y())),
-                                 plane.normal,
-                                 xi))
+              if (!project_along(slave, plane.point(u), plane.normal, xi))
                 {
                   polygons.clear();
                   return false;
@@ -423,8 +506,14 @@ namespace contact_fem
               for (unsigned int d = 0; d < 2; ++d)
                 if (std::abs(xi[d]) > 1. - 1e-10)
                   xi[d] = xi[d] > 0. ? 1. : -1.;
-              polygon.push_back(xi);
+              // Clipping repeats a vertex that lies on a clip edge.
+              if (polygon.empty() || xi.distance(polygon.back()) > 1e-12)
+                polygon.push_back(xi);
             }
+          while (polygon.size() > 1 && polygon.front().distance(polygon.back()) <= 1e-12)
+            polygon.pop_back();
+          if (polygon.size() < 3)
+            continue;
           double area = 0.;
           for (std::size_t v = 0; v < polygon.size(); ++v)
             area += cross_2d(polygon[v], polygon[(v + 1) % polygon.size()]);

@@ -1,4 +1,5 @@
 #include <deal.II/base/bounding_box.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/numerics/rtree.h>
@@ -858,6 +859,49 @@ namespace contact_fem
     }
   } // namespace
 
+  namespace
+  {
+    /**
+     * Sets b.fits_cylinder (and its axis and radius) if the faces, whose
+     * normals have the moments @p moments (sum of n n^T), are those of an
+     * extruded curve - every normal within about 1e-4 rad of perpendicular
+     * to the eigenvector of the smallest eigenvalue - and the @p points,
+     * projected along it, lie on a circle (within 1e-4 R).
+     */
+    void
+    fit_extruded_cylinder(const SymmetricTensor<2, 3>  &moments,
+                          const std::vector<Point<3>> &points,
+                          PolygonalBoundary<3>        &b)
+    {
+      const auto eigen = eigenvectors(moments); // descending eigenvalues
+      if (!(eigen[2].first <= 1e-8 * trace(moments)))
+        return;
+      Tensor<1, 3> d = eigen[2].second / eigen[2].second.norm();
+      unsigned int largest = 0;
+      for (unsigned int i = 1; i < 3; ++i)
+        if (std::abs(d[i]) > std::abs(d[largest]))
+          largest = i;
+      if (d[largest] < 0.)
+        d = -d;
+      // An orthonormal basis (e1, e2) of the plane normal to d.
+      Tensor<1, 3> e1 =
+        cross_product_3d(d, largest == 0 ? Tensor<1, 3>({0., 1., 0.}) : Tensor<1, 3>({1., 0., 0.}));
+      e1 /= e1.norm();
+      const Tensor<1, 3>    e2 = cross_product_3d(d, e1);
+      std::vector<Point<2>> projected;
+      for (const Point<3> &p : points)
+        projected.emplace_back(p * e1, p * e2);
+      Point<2> c;
+      double   radius = 0., deviation = 0.;
+      if (!fit_sphere(projected, c, radius, deviation) || deviation > 1e-4 * radius)
+        return;
+      b.fits_cylinder   = true;
+      b.axis            = d;
+      b.axis_point      = Point<3>(c[0] * e1 + c[1] * e2);
+      b.cylinder_radius = radius;
+    }
+  } // namespace
+
   template <int dim>
   std::vector<PolygonalBoundary<dim>>
   find_polygonal_boundaries(const Triangulation<dim>            &coarse,
@@ -875,6 +919,9 @@ namespace contact_fem
     };
     std::vector<Side>                                         sides;
     std::map<types::boundary_id, std::vector<unsigned int>> vertices;
+    // Per id: the sum of n n^T over its faces, whose smallest eigenvalue
+    // vanishes iff every normal is perpendicular to one direction.
+    std::map<types::boundary_id, SymmetricTensor<2, dim>> normal_moments;
     for (const auto &cell : coarse.active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
         if (cell->face(f)->at_boundary())
@@ -883,6 +930,7 @@ namespace contact_fem
             if (std::find(skip.begin(), skip.end(), id) != skip.end())
               continue;
             const Tensor<1, dim> n = outward_normal<dim>(cell, f);
+            normal_moments[id] += symmetrize(outer_product(n, n));
             for (const unsigned int joint : joints_of<dim>(cell->face(f)))
               sides.push_back({joint, id, n});
             for (unsigned int v = 0; v < cell->face(f)->n_vertices(); ++v)
@@ -930,6 +978,8 @@ namespace contact_fem
           double deviation = 0.;
           b.fits_sphere    = fit_sphere(points, b.centre, b.radius, deviation) &&
                           deviation <= 1e-4 * b.radius;
+          if constexpr (dim == 3)
+            fit_extruded_cylinder(normal_moments[id], points, b);
           result.push_back(b);
         }
     return result;

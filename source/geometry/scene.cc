@@ -275,18 +275,35 @@ namespace contact_fem
                 << b.min_angle * 180. / numbers::PI << " to "
                 << b.max_angle * 180. / numbers::PI << " degrees at " << b.n_kinks << " of "
                 << b.n_joints << (dim == 2 ? " vertices" : " edges");
-        if (b.fits_sphere)
+        // A cylinder first: the vertices of an extrusion by one layer lie
+        // on a sphere too (through its two end circles).
+        const auto clean = [](const double x, const double scale) {
+          return std::abs(x) < 1e-12 * scale ? 0. : x;
+        };
+        if (b.fits_cylinder)
+          {
+            fitted << (fitted.tellp() > 0 ? "; " : "") << static_cast<unsigned int>(b.id)
+                   << ": cylinder ";
+            for (unsigned int d = 0; d < dim; ++d)
+              fitted << clean(b.axis_point[d], b.cylinder_radius) << ", ";
+            for (unsigned int d = 0; d < dim; ++d)
+              fitted << clean(b.axis[d], 1.) << ", ";
+            fitted << b.cylinder_radius;
+          }
+        else if (b.fits_sphere)
           {
             fitted << (fitted.tellp() > 0 ? "; " : "") << static_cast<unsigned int>(b.id)
                    << (dim == 2 ? ": circle " : ": sphere ");
             for (unsigned int d = 0; d < dim; ++d)
-              fitted << (std::abs(b.centre[d]) < 1e-12 * b.radius ? 0. : b.centre[d]) << ", ";
+              fitted << clean(b.centre[d], b.radius) << ", ";
             fitted << b.radius;
           }
       }
     const std::string example =
       fitted.tellp() > 0 ? "'" + fitted.str() + "' (fitted to the vertices)" :
-                           (dim == 2 ? "'id: circle cx, cy, R'" : "'id: sphere cx, cy, cz, R'");
+                           (dim == 2 ? "'id: circle cx, cy, R'" :
+                                        "'id: sphere cx, cy, cz, R' or 'id: cylinder px, py, pz, "
+                                        "dx, dy, dz, R'");
     return ids.str() + " of the mesh file " +
            (one ? "looks like a polygon standing for a curve (" :
                   "look like polygons standing for curves (") +

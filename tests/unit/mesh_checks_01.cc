@@ -5,6 +5,9 @@
 //    flattened annulus, with their centres and radii), flat boundaries with
 //    true corners are not (a subdivided rectangle, an L-shape), nor is an
 //    octagon (45 degrees per vertex is a corner, not a polygonal circle);
+//  - 3D: the hull of the 16-gon extruded along z is found on its cylinder
+//    (with one layer its vertices lie on a sphere too), a flattened
+//    polygonal ball on its sphere and not on a cylinder;
 //  - coincident vertices: two blocks of different bodies touching along a
 //    line, or two touching blocks of one body whose faces there carry
 //    boundary ids (a deliberate internal surface), or one body pinched at a
@@ -88,6 +91,66 @@ namespace
       Triangulation<2> flat;
       GridGenerator::flatten_triangulation(l_shape, flat);
       report_polygons("L-shape", flat);
+    }
+  }
+
+  void
+  report_polygons_3d(const std::string &name, const Triangulation<3> &tria)
+  {
+    std::cout << name << ":";
+    const auto found = find_polygonal_boundaries(tria, {});
+    if (found.empty())
+      std::cout << " no polygonal boundary";
+    const auto clean = [](const double x) { return std::abs(x) < 1e-9 ? 0. : x; };
+    std::cout << std::fixed << std::setprecision(6);
+    for (const auto &b : found)
+      {
+        std::cout << " boundary " << b.id << " (" << b.n_kinks << " of " << b.n_joints
+                  << " joints)";
+        if (b.fits_cylinder)
+          std::cout << " on cylinder through (" << clean(b.axis_point[0]) << ", "
+                    << clean(b.axis_point[1]) << ", " << clean(b.axis_point[2]) << "), axis ("
+                    << clean(b.axis[0]) << ", " << clean(b.axis[1]) << ", " << clean(b.axis[2])
+                    << "), R = " << b.cylinder_radius;
+        if (b.fits_sphere)
+          std::cout << " on sphere (" << clean(b.centre[0]) << ", " << clean(b.centre[1]) << ", "
+                    << clean(b.centre[2]) << "), R = " << b.radius;
+      }
+    std::cout << std::defaultfloat << std::endl;
+  }
+
+  /// Extrusions of the 16-gon of a circle (centre (1, 2), R = 3) along z:
+  /// the hull is a polygonal cylinder. With one layer its vertices lie on
+  /// two circles, hence on a sphere too; the cylinder is the surface (its
+  /// faces are all parallel to z). A flattened polygonal ball is a sphere,
+  /// not a cylinder.
+  void
+  polygons_3d()
+  {
+    Triangulation<2> disc, flat;
+    GridGenerator::hyper_ball(disc, Point<2>(1., 2.), 3.);
+    disc.refine_global(2);
+    GridGenerator::flatten_triangulation(disc, flat);
+    for (const unsigned int layers : {1u, 2u})
+      {
+        Triangulation<3> extruded;
+        GridGenerator::extrude_triangulation(flat, layers + 1, 1., extruded);
+        // Only the hull: the ends z = 0 and z = 1 are flat.
+        for (const auto &cell : extruded.active_cell_iterators())
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              {
+                const double z = cell->face(f)->center()[2];
+                cell->face(f)->set_boundary_id(std::abs(z) < 1e-12 || std::abs(z - 1.) < 1e-12 ? 5 : 0);
+              }
+        report_polygons_3d("16-gon extruded in " + std::to_string(layers) + " layer(s)", extruded);
+      }
+    {
+      Triangulation<3> ball, flat_ball;
+      GridGenerator::hyper_ball(ball, Point<3>(1., 2., 3.), 2.);
+      ball.refine_global(2);
+      GridGenerator::flatten_triangulation(ball, flat_ball);
+      report_polygons_3d("polygonal ball", flat_ball);
     }
   }
 
@@ -215,6 +278,7 @@ int
 main()
 {
   polygons();
+  polygons_3d();
   two_blocks("two bodies touching along a line", 1, 2, 0);
   two_blocks("one body, untagged faces on top of each other", 1, 1, 0);
   two_blocks("one body, tagged internal surface", 1, 1, 5);

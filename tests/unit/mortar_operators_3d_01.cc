@@ -1,11 +1,12 @@
 // Mortar operators of quadrilateral faces in 3D (source/contact/mortar_3d.cc).
 // Every expected value comes from code in this file that does not call the
 // kernel: its own node table and Lagrange shapes (checked against deal.II's
-// FE_Q support points), its own clipping (Sutherland-Hodgman against the
-// half-planes of a convex master, the kernel uses boost.geometry), its own
-// quadrature (deal.II's Witherden-Vincent triangle rules fanned from the first
-// vertex, tensor Gauss on rectangles; the kernel uses a collapsed Gauss rule
-// fanned from the centroid) and analytic face geometries.
+// FE_Q support points), its own clipping (Sutherland-Hodgman of the slave
+// against the half-planes of a convex master; the kernel clips the master by
+// the convex pieces of the slave), its own quadrature (deal.II's
+// Witherden-Vincent triangle rules fanned from the first vertex, tensor Gauss
+// on rectangles; the kernel uses a collapsed Gauss rule fanned from the
+// centroid) and analytic face geometries.
 //  - node order and shapes: Kronecker property, FE_Q<2>(p) support points;
 //  - matching flat faces (degree 1 and 2): M = diag(D) in matching node
 //    pairs, D_j = int N_j analytically, gap d of a parallel master;
@@ -24,7 +25,10 @@
 //  - curved 9-node slave and master, degree 2 and degree 1 elements (the
 //    latter with tilted nodal normals): the weighted gap vector against a
 //    20 x 20 Gauss integration of the analytic surfaces;
-//  - pairs that do not overlap or touch along an edge or at a corner: false.
+//  - pairs that do not overlap or touch along an edge or at a corner: false;
+//  - cylinder faces meeting edge on edge with 1e-14 noise on every
+//    coordinate (a refined, extruded two-cylinder contact): the overlap of
+//    the same layer stays that without noise, the next layer never overlaps.
 // Run with --errors to see the measured errors.
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_q.h>
@@ -35,6 +39,7 @@
 #include <cstring>
 #include <functional>
 #include <iostream>
+#include <random>
 #include <tuple>
 
 using namespace dealii;
@@ -680,6 +685,75 @@ namespace
       area += jxw(q);
     check("overlap area = curved face area", ops.overlap_area, area, 1e-10);
   }
+
+  // ---- Faces meeting edge on edge at round-off distance ----------------------
+  // The contact of two cylinders (R = 8, axis z, touching along the z axis)
+  // extruded in two layers: a 9-node slave on the upper cylinder, z in
+  // [0, 0.5], against the lower cylinder's faces of the same layer (shifted
+  // along the arc) and of the next one, z in [0.5, 1], which touches the
+  // slave edge on edge only. Every coordinate carries round-off noise of
+  // 1e-14 (as the transfinite interpolation of a refined mesh leaves it): the
+  // overlap must not change by more than that, and the next layer's face
+  // must not overlap. (boost.geometry's overlay returned the whole slave for
+  // many such pairs.)
+  void
+  round_off_edges()
+  {
+    std::cout << "Cylinder faces meeting edge on edge, coordinates with 1e-14 noise" << std::endl;
+    const double R = 8.;
+    std::mt19937 random(20261122);
+    const auto noise = [&]() { return 1e-14 * (2. * (random() / 4294967295.) - 1.); };
+    const auto face = [&](const double sign, const double t0, const double t1, const double z0,
+                          const double z1, const bool perturb) {
+      Mortar::QuadFace f;
+      for (unsigned int i = 0; i < n_nodes(2); ++i)
+        {
+          const Point<2> xi = node_parameter(2, i);
+          const double   t  = t0 + 0.5 * (xi[0] + 1.) * (t1 - t0);
+          const double   z  = z0 + 0.5 * (xi[1] + 1.) * (z1 - z0);
+          Point<3>       x(R * std::sin(t), sign * (R - R * std::cos(t)), z);
+          if (perturb)
+            for (unsigned int d = 0; d < 3; ++d)
+              x[d] += noise();
+          f.nodes.push_back(x);
+        }
+      return f;
+    };
+    const double a = 0.0117, b0 = -0.01137, b1 = 0.0118;
+    std::vector<Tensor<1, 3>> normals;
+    for (unsigned int i = 0; i < n_nodes(2); ++i)
+      {
+        const double t = a * node_parameter(2, i)[0];
+        normals.push_back(Tensor<1, 3>({std::sin(t), -std::cos(t), 0.}));
+      }
+    // Unperturbed: the reference overlap of the same layer.
+    const Mortar::QuadFace   exact_slave = face(1., -a, a, 0., 0.5, false);
+    const FullMatrix<double> A0          = Mortar::dual_basis_coefficients(exact_slave);
+    Mortar::QuadSegmentOperators reference;
+    Mortar::integrate_pair(exact_slave, normals, A0, face(-1., b0, b1, 0., 0.5, false), 5,
+                           reference);
+    double       worst = 0.;
+    unsigned int n_next_layer = 0, n_missed = 0;
+    for (unsigned int trial = 0; trial < 200; ++trial)
+      {
+        const Mortar::QuadFace   slave = face(1., -a, a, 0., 0.5, true);
+        const FullMatrix<double> A     = Mortar::dual_basis_coefficients(slave);
+        Mortar::QuadSegmentOperators same, next;
+        if (Mortar::integrate_pair(slave, normals, A, face(-1., b0, b1, 0., 0.5, true), 5, same))
+          worst = std::max(worst, std::abs(same.overlap_area - reference.overlap_area));
+        else
+          ++n_missed;
+        if (Mortar::integrate_pair(slave, normals, A, face(-1., b0, b1, 0.5, 1., true), 5, next) &&
+            next.overlap_area > 1e-12)
+          ++n_next_layer;
+      }
+    // The faces overlap on the arc from b0 to a (x from R sin b0 to R sin a).
+    check("overlap without noise / 0.5 R (a - b0)", reference.overlap_area / (0.5 * R * (a - b0)),
+          1., 1e-8);
+    std::cout << "  same layer missed in " << n_missed << " of 200, next layer overlapping in "
+              << n_next_layer << " of 200" << std::endl;
+    check("max |overlap area - without noise| / 1e-13", worst / 1e-13, 0., 1.);
+  }
 } // namespace
 
 int
@@ -724,4 +798,5 @@ main(int argc, char **argv)
   curved_faces(2, false);
   curved_faces(2, true);
   curved_faces(1, true);
+  round_off_edges();
 }

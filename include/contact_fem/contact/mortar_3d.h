@@ -141,12 +141,15 @@ namespace contact_fem
      * @p slave_normals there; the boundary nodes of both faces (4, or 8 with
      * the edge midpoints of a 9-node face, so curved edges are replaced by
      * two chords each) are projected along n0 into it; the two polygons are
-     * intersected; the vertices of the intersection are mapped back along n0
-     * onto the slave face (those within 1e-10 of its boundary put on it).
-     * Usually one convex polygon; a curved face can
-     * give a non-convex one or several. Returns false, with no polygons, if
-     * the intersection has no area (faces apart, or touching along an edge
-     * or at a corner).
+     * intersected (Sutherland-Hodgman: the master clipped by the slave, or
+     * by the convex pieces of its fan from the centre if a curved edge bends
+     * inward; robust for edges that coincide up to round-off); the vertices
+     * of the intersection are mapped back along n0 onto the slave face
+     * (those within 1e-10 of its boundary put on it). Usually one convex
+     * polygon; a curved face can give a non-convex one or several. Returns
+     * false, with no polygons, if the intersection has no area (faces apart,
+     * or touching along an edge or at a corner: pieces below 1e-10 of the
+     * slave's projected area are dropped).
      */
     bool
     overlap(const QuadFace                  &slave,

@@ -60,6 +60,15 @@ namespace contact_fem
     bool       fits_sphere = false;
     Point<dim> centre;
     double     radius = 0.;
+    /// 3D: whether every face normal is perpendicular to one direction (an
+    /// extruded curve) and the vertices lie on a cylinder about it, with
+    /// this unit axis through the point of the axis nearest the origin,
+    /// and this radius. Vertices on two parallel circles also fit a sphere
+    /// (an extrusion by one layer): the cylinder is the surface then.
+    bool           fits_cylinder = false;
+    Point<dim>     axis_point;
+    Tensor<1, dim> axis;
+    double         cylinder_radius = 0.;
   };
 
   /**
@@ -68,7 +77,8 @@ namespace contact_fem
    * degrees) at more than half of their joints, and at least at three: a
    * polygon standing for a curve. Flat boundaries (no turn) and true
    * corners (large turns) do not count. Each comes with the circle (2D) or
-   * sphere (3D) fitted to its vertices, if they lie on one.
+   * sphere (3D) fitted to its vertices, if they lie on one, and in 3D with
+   * the cylinder, if its faces are those of an extruded curve.
    */
   template <int dim>
   std::vector<PolygonalBoundary<dim>>
