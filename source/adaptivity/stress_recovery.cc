@@ -81,6 +81,15 @@ namespace contact_fem
     /// fraction of the largest one (i.e. cond(S) < ~1e5).
     constexpr double rank_tolerance = 1e-10;
 
+    /// ... and only if its Lebesgue constant on the patch (see fit_patch())
+    /// is at most this. Measured: 2.5 (Q1) to 4.4 (Q2) on the 2D test scenes,
+    /// 3.0-3.6 (Q1) and 4.4-6.5 (Q2, curved cells) on 3D patches that sample
+    /// the volume around the vertex; 9 (exact interpolation of 4 samples,
+    /// three cells of one level and a child of a refined one on a boundary
+    /// face) up to 8e3 (centres near a plane) on the 3D Q1 patches at the
+    /// coarse-fine boundaries of a locally refined mesh.
+    constexpr double stability_limit = 8.;
+
     /// A contact node is located at a point if it lies within this fraction of
     /// the cell diameter of it.
     constexpr double location_tolerance = 1e-10;
@@ -571,7 +580,8 @@ namespace contact_fem
       const unsigned int  ns = n_stress<dim>;
       FullMatrix<double>  A(m, m), B(m, ns);
       std::vector<double> phi;
-      unsigned int        n_samples = 0;
+      // The monomials at the sampling points (for the stability check).
+      std::vector<std::vector<double>> sample_phi;
       for (const auto &cell : cells)
         {
           const unsigned int index = cell->active_cell_index();
@@ -586,13 +596,49 @@ namespace contact_fem
                     B(k, c) += phi[k] * sample_stress[index][q][SymmetricTensor<2, dim>::
                                                                   unrolled_to_component_indices(c)];
                 }
-              ++n_samples;
+              sample_phi.push_back(phi);
             }
         }
+      const unsigned int n_samples = sample_phi.size();
+
+      // Where the fit is evaluated: at the vertex itself, at the other
+      // support points of its cells (Q2), at the contact nodes' traction
+      // samples on its cells, and, as a neighbour's fallback, at the other
+      // vertices of its cells: all in the patch, which the vertices of its
+      // cells span.
+      std::vector<Point<dim>> patch_vertices;
+      {
+        std::vector<unsigned int> seen;
+        for (const auto &cell : cells)
+          for (const unsigned int v : cell->vertex_indices())
+            if (std::find(seen.begin(), seen.end(), cell->vertex_index(v)) == seen.end())
+              {
+                seen.push_back(cell->vertex_index(v));
+                patch_vertices.push_back(
+                  Point<dim>((vertex_point[cell->vertex_index(v)] - fit.centre) / fit.h));
+              }
+      }
 
       // Highest degree (<= p) for which the sampling points determine the
-      // polynomial. Degree 0 always works (there is at least one sample).
-      unsigned int d = degree;
+      // polynomial stably. Degree 0 always works (there is at least one
+      // sample; its fit is the mean, with Lebesgue constant 1).
+      //
+      // Full rank is not enough. In 3D a Q1 patch has one sampling point
+      // per cell and 4 unknowns, and on a boundary of a locally refined mesh
+      // the 4 cell centres of a face vertex (2 coarse cells and 2 children
+      // of a refined neighbour, the centres of each pair on a line along the
+      // edge between them) lie close to a plane: the normal matrix has full
+      // rank (cond(S) ~ 1e4 on the curved two-cylinder mesh), but the slope
+      // across that plane comes from the small offsets of the points, and
+      // the fit's value at the vertex, off the plane, was hundreds of times
+      // the sampled stresses (eta / |u|_E = 50 instead of 0.15). Hence the
+      // degree is accepted only if the fit is stable on the patch: its
+      // Lebesgue constant max_x sum_i |w_i(x)|, where sigma*(x) = sum_i w_i(x)
+      // sigma_h(x_i) is the least-squares fit, taken over the vertices of the
+      // patch cells, bounds the recovered stress anywhere it is used by that
+      // multiple of the largest sampled one.
+      unsigned int             d = degree;
+      LAPACKFullMatrix<double> M;
       for (; d > 0; --d)
         {
           const unsigned int md = basis.size(d);
@@ -603,19 +649,48 @@ namespace contact_fem
             for (unsigned int l = 0; l < md; ++l)
               Ad(k, l) = A(k, l);
           Ad.compute_svd();
-          if (Ad.singular_value(md - 1) > rank_tolerance * Ad.singular_value(0))
+          if (!(Ad.singular_value(md - 1) > rank_tolerance * Ad.singular_value(0)))
+            continue;
+
+          M.reinit(md, md);
+          for (unsigned int k = 0; k < md; ++k)
+            for (unsigned int l = 0; l < md; ++l)
+              M(k, l) = A(k, l);
+          M.compute_lu_factorization();
+          double         lebesgue = 0;
+          Vector<double> y(md);
+          for (const Point<dim> &xi : patch_vertices)
+            {
+              // w_i(x) = phi(x_i) . A^-1 phi(x).
+              basis.values(xi, md, phi);
+              for (unsigned int k = 0; k < md; ++k)
+                y(k) = phi[k];
+              M.solve(y);
+              double sum = 0;
+              for (const std::vector<double> &phi_i : sample_phi)
+                {
+                  double w = 0;
+                  for (unsigned int k = 0; k < md; ++k)
+                    w += phi_i[k] * y(k);
+                  sum += std::abs(w);
+                }
+              lebesgue = std::max(lebesgue, sum);
+            }
+          if (lebesgue <= stability_limit)
             break;
         }
       fit.kind             = (d == degree ? full_fit : reduced_fit);
       const unsigned int md = basis.size(d);
+      if (d == 0)
+        {
+          // The mean (no stability check was made on this matrix).
+          M.reinit(md, md);
+          M(0, 0) = A(0, 0);
+          M.compute_lu_factorization();
+        }
 
       // The least-squares system, one right-hand side per stress component
       // (all components share the sampling matrix).
-      LAPACKFullMatrix<double> M(md, md);
-      for (unsigned int k = 0; k < md; ++k)
-        for (unsigned int l = 0; l < md; ++l)
-          M(k, l) = A(k, l);
-      M.compute_lu_factorization();
       Vector<double> column(md);
       fit.coefficients.assign(ns * m, 0.);
       for (unsigned int c = 0; c < ns; ++c)

@@ -20,7 +20,9 @@ namespace contact_fem
   {
     /// Per slave node of @p interface: the Gauss points of its slave faces
     /// in the reference configuration, weighted by the node's shape function
-    /// (weights sum to int N_j ds).
+    /// (weights sum to int N_j ds; in 3D with hanging vertices, N_j of the
+    /// constrained trace, which includes the parent's share of the hanging
+    /// vertices' functions).
     template <int dim>
     std::map<unsigned int, std::vector<TractionSample<dim>>>
     slave_support_samples(const ContactInterface<dim> &interface)
@@ -61,9 +63,22 @@ namespace contact_fem
                     const double   dA = 4. * quadrature.weight(q) *
                                       cross_product_3d(t[0], t[1]).norm();
                     const Tensor<1, 3> n = Mortar::face_normal(quad, xi, face.orientation);
+                    // A hanging vertex carries no multiplier: its shape
+                    // function goes to its parents with the hanging-node
+                    // weights, so that a node's weights are those of its
+                    // function in the constrained trace, N~_j = N_j + sum
+                    // w_hj N_h, to which its multiplier (D_j = int N~_j) is
+                    // dual.
                     for (unsigned int k = 0; k < face.nodes.size(); ++k)
-                      samples[face.nodes[k]].push_back(
-                        {quad.point(xi), n, dA * Mortar::quad_shape_value(p, k, xi)});
+                      {
+                        const double weight = dA * Mortar::quad_shape_value(p, k, xi);
+                        const auto  &parents = interface.nodes[face.nodes[k]].parents;
+                        if (parents.empty())
+                          samples[face.nodes[k]].push_back({quad.point(xi), n, weight});
+                        else
+                          for (const auto &[parent, w] : parents)
+                            samples[parent].push_back({quad.point(xi), n, w * weight});
+                      }
                   }
               }
         }

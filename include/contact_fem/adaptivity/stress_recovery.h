@@ -90,6 +90,11 @@ namespace contact_fem
    *   vertices) use the average of the full fits of the neighbouring vertices
    *   (the vertices of the patch cells), evaluated at the point in question,
    *   which is the classical Zienkiewicz-Zhu treatment of boundary nodes.
+   *   Degenerate includes unstable: a fit of full rank whose Lebesgue
+   *   constant on the patch (max over the patch's cell vertices x of
+   *   sum_i |w_i(x)|, sigma*(x) = sum_i w_i(x) sigma_h(x_i)) exceeds 8 (3D Q1
+   *   boundary patches at coarse-fine boundaries, whose cell centres lie
+   *   near a plane; regular patches have 2.5-6.5).
    * - Contact terms: the recovered value at a contact node (a support point
    *   of the recovered field on a boundary face whose outward normal points
    *   along the node's normal, i.e. on the slave side) is its fitted value
