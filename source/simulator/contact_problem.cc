@@ -78,14 +78,16 @@ namespace contact_fem
   ContactProblem<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3),
-                      "Space dimension of the scene (only 2 is implemented so far).");
+                      "Space dimension of the scene: 2 (plane strain) or 3.");
     prm.enter_subsection("Finite element");
     prm.declare_entry("Degree", "1", Patterns::Integer(1, 2),
                       "Polynomial degree of the displacement (Q1 or Q2).");
     prm.declare_entry("Mapping degree", "auto", Patterns::Selection("auto|1|2"),
                       "Polynomial degree of the geometry. auto: the element "
                       "degree, but 2 for Q1 on scenes with curved boundaries "
-                      "(Geometry/Type = hertz cylinder, or Geometry/Manifolds): Q1 "
+                      "(Geometry/Type = hertz cylinder or hertz sphere, or "
+                      "Geometry/Manifolds), except for 3D contact scenes (whose "
+                      "contact faces need the element degree so far): Q1 "
                       "faces then follow the arc instead of its chords, whose "
                       "sag, where the "
                       "element size changes along a contact surface, shifts "
@@ -147,11 +149,16 @@ namespace contact_fem
     // Every parameter is read and checked before any work is done.
     scene.parse_parameters(prm, prm_directory);
     // "auto" depends on the scene.
+    // In 3D the contact faces need the element degree as mapping degree so
+    // far (no Q1 on a quadratic mapping there): auto keeps Q1 on chords.
     const std::string mapping_degree = read_entry(prm, "Finite element", "Mapping degree");
+    const bool        quadratic_q1 =
+      scene.has_curved_boundary() &&
+      (dim == 2 || Utilities::trim(read_entry(prm, "Contact", "Pairs")).empty());
     const unsigned int geometry_degree =
       mapping_degree != "auto" ? std::stoul(mapping_degree) :
-      scene.has_curved_boundary() ? std::max(degree, 2u) :
-                                    degree;
+      quadratic_q1             ? std::max(degree, 2u) :
+                                 degree;
     // A curved mapping takes its support points from the manifolds (the
     // transfinite interpolation of the Hertz disc is costly): cached once
     // per mesh, in setup_dofs().
@@ -175,13 +182,7 @@ namespace contact_fem
     newton_parameters.parse_parameters(prm);
     refinement.parse_parameters(prm);
     spr_settings.parse_parameters(prm);
-    analytical.parse_parameters(prm, prm_directory);
-    // The reference solutions are those of a 2D cylinder, functions of x.
-    AssertThrow(dim == 2 || (analytical.type == "none" &&
-                             analytical.reference_pressure_profile.empty()),
-                ExcMessage("Analytical solution: the Hertz cylinder, Cattaneo and the "
-                           "reference pressure profile are 2D solutions (of x); in 3D, "
-                           "set Type = none and leave Reference pressure profile empty."));
+    analytical.parse_parameters(prm, prm_directory, dim);
     output.parse_parameters(prm, dim);
     check_scene_before_meshing();
 

@@ -163,7 +163,7 @@ namespace contact_fem
         pcout << label << " tangential traction, L2 error against Cattaneo: "
               << value_or_ok(error, 1e-10) << std::endl;
       }
-    if (analytical.type == "hertz cylinder")
+    if (analytical.type == "hertz cylinder" || analytical.type == "hertz sphere")
       {
         const double error = hertz_pressure_error(pressure);
         cycle_record.set(prefix + "recovered_pressure_l2_relative_error", error);
@@ -203,6 +203,7 @@ namespace contact_fem
     // inactive ones not imposed, in the order report_recovered_tractions()
     // expects.
     const bool pressure_known = contact && (analytical.type == "hertz cylinder" ||
+                                            analytical.type == "hertz sphere" ||
                                             analytical.type == "cattaneo" ||
                                             !analytical.reference_pressure_profile.empty());
     std::vector<ContactNodeTraction<dim>> tractions;

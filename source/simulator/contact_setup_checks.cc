@@ -153,6 +153,8 @@ namespace contact_fem
     if (keys.empty())
       keys.push_back(scene.type == "hertz cylinder" ?
                        "Geometry/Hertz cylinder/Cylinder refinements and Contact refinements" :
+                     scene.type == "hertz sphere" ?
+                       "Geometry/Hertz sphere/Sphere refinements and Plate refinements" :
                      scene.type == "contact blocks" ?
                        "Geometry/Contact blocks/Lower cells and Upper cells" :
                        "Geometry/Mesh file");

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 namespace contact_fem
@@ -227,7 +228,8 @@ namespace contact_fem
   AnalyticalSolution::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Analytical solution");
-    prm.declare_entry("Type", "none", Patterns::Selection("none|hertz cylinder|cattaneo"),
+    prm.declare_entry("Type", "none",
+                      Patterns::Selection("none|hertz cylinder|hertz sphere|cattaneo"),
                       "Reference solution to compare with: 'hertz cylinder' = 2D "
                       "plane-strain Hertz contact of a cylinder of radius R on a "
                       "plane, with the load per unit thickness taken from the "
@@ -240,10 +242,28 @@ namespace contact_fem
                       "and tangential contact forces and mu the Coulomb "
                       "coefficient of Contact/Friction (which must then be one "
                       "'coulomb MU' law, or give the first pair such a law); "
-                      "compares the stick zone and the tangential traction.");
-    prm.declare_entry("Radius", "8", Patterns::Double(0.), "Cylinder radius R.");
+                      "compares the stick zone and the tangential traction. "
+                      "'hertz sphere' = 3D Hertz contact of a sphere of radius R "
+                      "on a half-space, axis parallel to z through (Center, "
+                      "Center y): a = (3 F R / (4 E*))^(1/3), p0 = 3 F / (2 pi "
+                      "a^2), p(r) = p0 sqrt(1 - r^2 / a^2), with F the z "
+                      "component of the transmitted contact force over "
+                      "Symmetry fraction and E* from the materials of the "
+                      "contact pair; compares p_max, the contact radius (the "
+                      "farthest active slave node from the axis) and the "
+                      "pressure profile.");
+    prm.declare_entry("Radius", "8", Patterns::Double(0.), "Cylinder (sphere) radius R.");
     prm.declare_entry("Center", "0", Patterns::Double(),
                       "x coordinate of the centre of the contact zone.");
+    prm.declare_entry("Center y", "0", Patterns::Double(),
+                      "Type = hertz sphere: y coordinate of the centre of the "
+                      "contact zone (the axis is parallel to z).");
+    prm.declare_entry("Symmetry fraction", "1", Patterns::Double(0., 1.),
+                      "Type = hertz sphere: the part of the whole sphere and "
+                      "plate that the model holds, e.g. 0.25 for a quarter cut "
+                      "by two symmetry planes through the axis. The Hertz load F "
+                      "of the whole sphere is the model's contact force over "
+                      "this fraction. Other types: 1.");
     prm.declare_entry("Reference potential energy", "",
                       Patterns::Anything(),
                       "Total potential energy 1/2 u.K u - f.u of the exact solution, "
@@ -263,7 +283,10 @@ namespace contact_fem
                       "or an inaccurate reference) is warned about.");
     prm.declare_entry("Reference pressure profile", "", Patterns::Anything(),
                       "CSV file with the columns 'x' and 'pressure' (any others "
-                      "are ignored), e.g. the pressure_profile.csv of an overkill "
+                      "are ignored; in 3D, with Type = hertz sphere, 'x', 'y' and "
+                      "'pressure', and the profile is taken as axisymmetric, a "
+                      "function of the distance from the axis), e.g. the "
+                      "pressure_profile.csv of an overkill "
                       "run; a relative name is taken relative to the .prm file; "
                       "empty if none. Then every cycle also measures the contact "
                       "pressure against it (interpolated linearly in x, zero "
@@ -279,8 +302,11 @@ namespace contact_fem
   {
     /// The (x, pressure) rows of a CSV file with a header line naming the
     /// columns, sorted by x.
+    /// In 3D (@p axis_distance given) the rows also need a column y, and x
+    /// is replaced by the distance from the axis.
     std::vector<std::pair<double, double>>
-    read_pressure_profile(const std::string &file_name)
+    read_pressure_profile(const std::string                                &file_name,
+                          const std::function<double(double, double)> &axis_distance)
     {
       const std::string key = "Analytical solution/Reference pressure profile: ";
       std::ifstream     in(file_name);
@@ -294,11 +320,13 @@ namespace contact_fem
         const auto found = std::find(header.begin(), header.end(), name);
         AssertThrow(found != header.end(),
                     ExcMessage(key + "'" + file_name + "', line 1: no column '" + name +
-                               "' (expected a header line naming the columns x and "
-                               "pressure)."));
+                               "' (expected a header line naming the columns " +
+                               (axis_distance ? "x, y and pressure" : "x and pressure") +
+                               ")."));
         return static_cast<std::size_t>(found - header.begin());
       };
       const std::size_t x_column = column("x"), p_column = column("pressure");
+      const std::size_t y_column = axis_distance ? column("y") : x_column;
 
       std::vector<std::pair<double, double>> rows;
       for (unsigned int line_number = 2; std::getline(in, line); ++line_number)
@@ -306,9 +334,9 @@ namespace contact_fem
           if (Utilities::trim(line).empty())
             continue;
           const std::vector<std::string> fields = Utilities::split_string_list(line, ',');
-          double                         values[2];
-          const std::size_t              columns[2] = {x_column, p_column};
-          for (unsigned int i = 0; i < 2; ++i)
+          double                         values[3];
+          const std::size_t              columns[3] = {x_column, p_column, y_column};
+          for (unsigned int i = 0; i < 3; ++i)
             {
               const std::string field = columns[i] < fields.size() ? fields[columns[i]] : "";
               char             *end   = nullptr;
@@ -319,7 +347,8 @@ namespace contact_fem
                                      header[columns[i]] + "' is '" + field +
                                      "', expected a number."));
             }
-          rows.emplace_back(values[0], values[1]);
+          rows.emplace_back(axis_distance ? axis_distance(values[0], values[2]) : values[0],
+                            values[1]);
         }
       AssertThrow(rows.size() >= 2,
                   ExcMessage(key + "'" + file_name + "' has " + std::to_string(rows.size()) +
@@ -347,21 +376,47 @@ namespace contact_fem
   }
 
   void
-  AnalyticalSolution::parse_parameters(ParameterHandler &prm, const std::string &prm_directory)
+  AnalyticalSolution::parse_parameters(ParameterHandler  &prm,
+                                       const std::string &prm_directory,
+                                       const unsigned int dim)
   {
     prm.enter_subsection("Analytical solution");
-    type   = prm.get("Type");
-    radius = prm.get_double("Radius");
-    center = prm.get_double("Center");
+    type              = prm.get("Type");
+    radius            = prm.get_double("Radius");
+    center            = prm.get_double("Center");
+    center_y          = prm.get_double("Center y");
+    symmetry_fraction = prm.get_double("Symmetry fraction");
     const std::string reference = Utilities::trim(prm.get("Reference potential energy"));
     std::string       profile   = Utilities::trim(prm.get("Reference pressure profile"));
     prm.leave_subsection();
+    // The cylinder solutions are functions of x (2D), the sphere's of the
+    // distance from its axis (3D).
+    AssertThrow(dim == 3 || type != "hertz sphere",
+                ExcMessage("Analytical solution/Type = hertz sphere: a 3D solution (set "
+                           "Dimension = 3; in 2D, 'hertz cylinder')."));
+    AssertThrow(dim == 2 || type == "none" || type == "hertz sphere",
+                ExcMessage("Analytical solution/Type = " + type +
+                           ": a 2D solution (of x); in 3D, use 'hertz sphere' or 'none'."));
+    AssertThrow(dim == 2 || profile.empty() || type == "hertz sphere",
+                ExcMessage("Analytical solution/Reference pressure profile: in 3D only "
+                           "with Type = hertz sphere (the profile is then taken as "
+                           "axisymmetric about its axis); set Type = hertz sphere or "
+                           "leave the profile empty."));
+    std::ostringstream fraction_text;
+    fraction_text << symmetry_fraction;
+    AssertThrow(symmetry_fraction > 0. && (symmetry_fraction == 1. || type == "hertz sphere"),
+                ExcMessage("Analytical solution/Symmetry fraction: expected a value in "
+                           "(0, 1], and 1 unless Type = hertz sphere (got " +
+                           fraction_text.str() + ")."));
     reference_pressure_profile.clear();
     if (!profile.empty())
       {
         if (profile[0] != '/' && !prm_directory.empty())
           profile = prm_directory + "/" + profile;
-        reference_pressure_profile = read_pressure_profile(profile);
+        std::function<double(double, double)> distance;
+        if (dim == 3)
+          distance = [this](const double x, const double y) { return axis_distance(x, y); };
+        reference_pressure_profile = read_pressure_profile(profile, distance);
       }
     reference_potential_energy = std::numeric_limits<double>::quiet_NaN();
     if (!reference.empty())

@@ -38,6 +38,29 @@ namespace contact_fem
    * factor" times their diameter are refined, "Contact refinements" times in the disc and "Plate
    * contact refinements" times in the plate.
    *
+   * "hertz sphere" (3D): a quarter of a hemisphere of radius R (material 1),
+   * curved side down, whose lowest point touches the top of a quarter plate
+   * (material 2) at the origin of x and y; the planes x = 0 and y = 0 are
+   * planes of symmetry of the full hemisphere on its plate.
+   * @code
+   *   z  ________________ 1 (flat top z = t + R, loaded)
+   *   ^ |              /
+   *   | |5, 6        /   3 (curved surface, slave; sphere centre (0, 0, t + R))
+   *   | |_______ _ /
+   *   | o________________ 4 (plate top z = t, master), contact at (0, 0, t)
+   *   | |       2        |   plate [0, w] x [0, w] x [0, t], base 2
+   *   +-----------------> x
+   * @endcode
+   * 5: the symmetry plane x = 0, 6: the symmetry plane y = 0 (both bodies);
+   * 0: the outer sides of the plate. The hemisphere's coarse mesh is one
+   * inner block and three cells under the three patches of its curved
+   * surface; the patch around the lowest point reaches "Pole patch angle"
+   * from it (45 degrees: three patches alike; less: finer cells at the
+   * contact for the same number of cells). "Sphere refinements" and "Plate
+   * refinements" refine each body uniformly; then "Contact refinements"
+   * graded rounds refine the hemisphere toward the disc of radius
+   * "Refinement radius" on the plate top, as for the Hertz cylinder.
+   *
    * "contact blocks": a lower block [0, W] x [0, H] (material 2, top = 4,
    * bottom = 2, left side = 6) and an upper block [0, W] x [H + gap, 2H + gap]
    * (material 1, bottom = 3, top = 1, left side = 5), meshed with different
@@ -86,7 +109,7 @@ namespace contact_fem
     bool
     has_curved_boundary() const
     {
-      return type == "hertz cylinder" || !manifolds.empty();
+      return type == "hertz cylinder" || type == "hertz sphere" || !manifolds.empty();
     }
 
     std::string  type;
@@ -118,6 +141,9 @@ namespace contact_fem
     /// contact zone (2D).
     void
     create_hertz_mesh(parallel::distributed::Triangulation<dim> &tria) const;
+    /// The built-in quarter hemisphere on its quarter plate (3D).
+    void
+    create_hertz_sphere_mesh(parallel::distributed::Triangulation<dim> &tria) const;
     /// The built-in stacked blocks (2D).
     void
     create_contact_blocks(parallel::distributed::Triangulation<dim> &tria) const;
@@ -144,6 +170,19 @@ namespace contact_fem
       double       grading_factor         = 4.;
       unsigned int plate_refinements      = 3;
     } hertz;
+
+    struct HertzSphere
+    {
+      double       radius                = 6.1237;
+      double       plate_width           = 4.;
+      double       plate_thickness       = 1.;
+      double       pole_patch_angle      = 45.; ///< degrees
+      unsigned int sphere_refinements    = 3;
+      unsigned int plate_refinements     = 0;
+      unsigned int contact_refinements   = 0;
+      double       refinement_radius     = 2.;
+      double       grading_factor        = 4.;
+    } hertz_sphere;
 
     struct Blocks
     {

@@ -403,6 +403,9 @@ namespace contact_fem
     /// Prints the friction totals and the balance per direction.
     void
     print_friction_results(const Json &contact_json, const Json &reaction) const;
+    /// Prints the comparison with the Hertz sphere (analytical_results()).
+    void
+    print_hertz_sphere_results(const Json &hertz) const;
     Json
     reaction_results() const;
     Json

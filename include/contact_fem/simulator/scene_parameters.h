@@ -8,6 +8,7 @@
 
 #include <contact_fem/core/parameters.h>
 
+#include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
@@ -63,9 +64,17 @@ namespace contact_fem
 
   struct AnalyticalSolution
   {
-    std::string type   = "none"; ///< "none", "hertz cylinder" or "cattaneo"
+    /// "none", "hertz cylinder", "hertz sphere" (3D) or "cattaneo"
+    std::string type   = "none";
     double      radius = 8.;
     double      center = 0.; ///< x of the first point of contact
+    /// 3D: y of the first point of contact; the Hertz sphere's axis is
+    /// parallel to z through (center, center_y).
+    double center_y = 0.;
+    /// The part of the whole sphere the model holds (0.25 for a quarter
+    /// with two symmetry planes): the Hertz load is the model's contact
+    /// force over it.
+    double symmetry_fraction = 1.;
     /// Coulomb coefficient of the Cattaneo-Mindlin solution (type
     /// "cattaneo"): that of Contact/Friction (NaN otherwise).
     double friction_coefficient = std::numeric_limits<double>::quiet_NaN();
@@ -73,8 +82,17 @@ namespace contact_fem
     /// gives the energy-norm error and the effectivity of the estimate.
     double reference_potential_energy = std::numeric_limits<double>::quiet_NaN();
     /// (x, pressure) of a reference contact pressure, sorted by x; empty if
-    /// none was given.
+    /// none was given. In 3D (hertz sphere) x is the distance from the
+    /// axis: the reference is taken as axisymmetric.
     std::vector<std::pair<double, double>> reference_pressure_profile;
+
+    /// 3D: the distance of (x, y) from the axis of the Hertz sphere, which
+    /// its pressure and the (axisymmetric) reference profile are functions of.
+    double
+    axis_distance(const double x, const double y) const
+    {
+      return std::hypot(x - center, y - center_y);
+    }
 
     /// The reference pressure at @p x: linear between the rows, zero
     /// outside their range.
@@ -83,9 +101,11 @@ namespace contact_fem
 
     static void
     declare_parameters(ParameterHandler &prm);
-    /// Relative file names are taken relative to @p prm_directory.
+    /// Relative file names are taken relative to @p prm_directory; the
+    /// solutions that do not exist in @p dim dimensions are refused.
     void
-    parse_parameters(ParameterHandler &prm, const std::string &prm_directory);
+    parse_parameters(ParameterHandler &prm, const std::string &prm_directory,
+                     const unsigned int dim);
   };
 
   struct OutputParameters
