@@ -135,8 +135,8 @@ namespace contact_fem
                       "Graded refinement rounds of the hemisphere toward the disc "
                       "of radius 'Refinement radius' around the contact point on "
                       "the plate top (as the Hertz cylinder's). They leave "
-                      "hanging vertices on the contact surface, which 3D contact "
-                      "does not support yet: only 0 is accepted so far.");
+                      "hanging vertices on the contact surface (the multipliers "
+                      "live on the constrained trace).");
     prm.declare_entry("Refinement radius", "2", Patterns::Double(0.),
                       "Radius of the disc on the plate top, around the contact "
                       "point, toward which the graded rounds refine; should "
@@ -272,17 +272,6 @@ namespace contact_fem
         AssertThrow(dim == 3,
                     ExcMessage("Geometry/Type: 'hertz sphere' is a 3D geometry (set "
                                "Dimension = 3; in 2D, 'hertz cylinder')."));
-        // Hanging vertices on the slave surface need the constrained trace
-        // space of the multipliers, which 3D contact does not build yet:
-        // refused here rather than solved wrongly.
-        AssertThrow(hertz_sphere.contact_refinements == 0,
-                    ExcMessage("Geometry/Hertz sphere/Contact refinements = " +
-                               std::to_string(hertz_sphere.contact_refinements) +
-                               ": graded refinement leaves hanging vertices on the "
-                               "contact surface, which 3D contact does not support "
-                               "yet; use 0 and refine uniformly (Sphere refinements, "
-                               "Global refinements) or make the contact patch smaller "
-                               "(Pole patch angle)."));
       }
     else
       AssertThrow(dim == 2,
