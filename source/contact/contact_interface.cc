@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace contact_fem
 {
@@ -256,15 +257,17 @@ namespace contact_fem
           // With Q2, the hanging vertex at the middle of a coarse edge is
           // tied to that edge's own midpoint DoF, a node of the coarse face
           // only: that face must be part of the same contact surface.
-          AssertThrow(parent != node_of_dof.end(),
-                      ExcMessage("Contact: a hanging vertex of a contact surface at (" +
-                                 Utilities::to_string(nodes[n].reference[0]) + ", " +
-                                 Utilities::to_string(nodes[n].reference[1]) +
-                                 (dim == 3 ? ", " + Utilities::to_string(nodes[n].reference[dim - 1]) : std::string()) +
-                                 ") depends on a node that is not on a contact surface: the "
-                                 "coarser neighbour face lies outside the contact boundary. "
-                                 "Refine so that the rim of the contact boundary has no hanging "
-                                 "vertices, or extend the contact boundary."));
+          if (parent == node_of_dof.end())
+            {
+              std::ostringstream message;
+              message << "Contact: a hanging vertex of a contact surface at ("
+                      << nodes[n].reference
+                      << ") depends on a node that is not on a contact surface: the coarser "
+                         "neighbour face lies outside the contact boundary. Refine so that the "
+                         "rim of the contact boundary has no hanging vertices, or extend the "
+                         "contact boundary.";
+              AssertThrow(false, ExcMessage(message.str()));
+            }
           parents_of_node[n][parent->second] = chunk[i + 2];
         }
     for (auto &node : nodes)

@@ -799,20 +799,15 @@ namespace contact_fem
                     const unsigned int n = it->second;
                     // A hanging vertex has no multiplier of its own: it shows
                     // the interpolation of its parents, as its displacement.
+                    const std::vector<std::pair<unsigned int, double>> itself = {{n, 1.}};
                     const auto &parents = interface->nodes[n].parents;
                     double      pressure = 0., interpolated_gap = 0.;
-                    bool        active   = !parents.empty();
-                    for (const auto &[parent, weight] : parents)
+                    bool        active   = true;
+                    for (const auto &[source, weight] : parents.empty() ? itself : parents)
                       {
-                        pressure += weight * contact->normal_pressure(parent);
-                        interpolated_gap += weight * gap[parent];
-                        active = active && contact->is_active(parent);
-                      }
-                    if (parents.empty())
-                      {
-                        pressure         = contact->normal_pressure(n);
-                        interpolated_gap = gap[n];
-                        active           = contact->is_active(n);
+                        pressure += weight * contact->normal_pressure(source);
+                        interpolated_gap += weight * gap[source];
+                        active = active && contact->is_active(source);
                       }
                     fields[0](scalar_dof) = pressure;
                     fields[1](scalar_dof) = interpolated_gap;
