@@ -225,6 +225,7 @@ namespace contact_fem
       dof_position[interface_dofs[i]] = i;
     find_hanging_vertices(hanging);
     slave_nodes.clear();
+    hanging_slave_vertices.clear();
     coupled_faces.clear();
     face_lengths.clear();
     statistics.assign(pairs.size(), PairStatistics());
@@ -533,6 +534,10 @@ namespace contact_fem
     // support; tiny or negative dual weights at the rim of the master
     // surface would make its gap ill-defined.
     constexpr double least_covered_fraction = 1e-2;
+    hanging_slave_vertices.clear();
+    for (const auto &[n, s] : slave_data)
+      if (!nodes[n].parents.empty())
+        hanging_slave_vertices.push_back(s);
     condense_hanging_vertices(slave_data, M_of_node, weighted_gap_of_node);
     slave_nodes.clear();
     for (auto &[n, s] : slave_data)
@@ -570,6 +575,9 @@ namespace contact_fem
           s.interface_normal = s.normal;
         slave_nodes.push_back(s);
       }
+    for (auto &h : hanging_slave_vertices)
+      for (const auto &[parent, weight] : nodes[h.node].parents)
+        h.paired = h.paired || slave_data.at(parent).paired;
   }
 
   template <int dim>
@@ -786,12 +794,12 @@ namespace contact_fem
 
   template <int dim>
   std::vector<double>
-  ContactInterface<dim>::surface_distances(const std::vector<double> &u_at_dofs) const
+  ContactInterface<dim>::surface_distances(const std::vector<SlaveNode> &points,
+                                           const std::vector<double>    &u_at_dofs) const
   {
-    std::vector<double> distances(slave_nodes.size(),
-                                  std::numeric_limits<double>::infinity());
+    std::vector<double> distances(points.size(), std::numeric_limits<double>::infinity());
     if constexpr (dim == 3)
-      return surface_distances_3d(u_at_dofs);
+      return surface_distances_3d(points, u_at_dofs);
     else
       {
         std::vector<Tensor<1, dim>> u(nodes.size());
@@ -822,9 +830,9 @@ namespace contact_fem
               continue;
             const auto tree = pack_rtree(boxes);
 
-            for (unsigned int i = 0; i < slave_nodes.size(); ++i)
+            for (unsigned int i = 0; i < points.size(); ++i)
               {
-                const SlaveNode &s = slave_nodes[i];
+                const SlaveNode &s = points[i];
                 if (s.pair != p)
                   continue;
                 const Point<dim> xd = nodes[s.node].reference + u[s.node];

@@ -429,9 +429,10 @@ namespace contact_fem
 
   template <>
   std::vector<double>
-  ContactInterface<3>::surface_distances_3d(const std::vector<double> &u_at_dofs) const
+  ContactInterface<3>::surface_distances_3d(const std::vector<SlaveNode> &points,
+                                            const std::vector<double>    &u_at_dofs) const
   {
-    std::vector<double> distances(slave_nodes.size(), std::numeric_limits<double>::infinity());
+    std::vector<double> distances(points.size(), std::numeric_limits<double>::infinity());
     std::vector<Tensor<1, 3>> u(nodes.size());
     for (unsigned int n = 0; n < nodes.size(); ++n)
       u[n] = displacement(n, u_at_dofs);
@@ -469,9 +470,9 @@ namespace contact_fem
         if (boxes.empty())
           continue;
         const auto tree = pack_rtree(boxes);
-        for (unsigned int i = 0; i < slave_nodes.size(); ++i)
+        for (unsigned int i = 0; i < points.size(); ++i)
           {
-            const SlaveNode &s = slave_nodes[i];
+            const SlaveNode &s = points[i];
             if (s.pair != p)
               continue;
             const Point<3> x = nodes[s.node].reference + u[s.node];

@@ -558,8 +558,9 @@ namespace contact_fem
         // number (an exactly resolved contact gives noise there).
         const double excess =
           contact_json["largest_unexplained_penetration_over_h"].number_value();
-        pcout << "    penetration check:            every slave node against the whole "
-                 "master surface, unexplained penetration "
+        pcout << "    penetration check:            every slave node "
+              << (interface->hanging_slave_vertices.empty() ? "" : "and hanging slave vertex ")
+              << "against the whole master surface, unexplained penetration "
               << (excess < 1e-6 ? std::string("< 1e-6") : scientific(excess, 1))
               << " h (tolerance " << contact_parameters.penetration_tolerance << " h)"
               << std::endl;

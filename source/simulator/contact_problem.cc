@@ -798,31 +798,55 @@ namespace contact_fem
   typename ContactProblem<dim>::PenetrationCheck
   ContactProblem<dim>::check_penetration() const
   {
-    TimerOutput::Scope        t(*timer, "Contact: check");
-    const std::vector<double> distance = interface->surface_distances(interface_displacement);
-    PenetrationCheck          check;
-    for (unsigned int i = 0; i < interface->slave_nodes.size(); ++i)
+    TimerOutput::Scope t(*timer, "Contact: check");
+    // What a node's own mortar gap says (with a penalty, or at the nodal
+    // value of a curved face's weighted gap, a node may lie inside), and
+    // the error of a gap linearised in the motion: a slip s along a surface
+    // whose normal turns by theta on the way moves the node off the
+    // linearised surface by about s theta, which small sliding bounds by
+    // theta < max_sliding_angle.
+    const auto allowed_at = [&](const typename ContactInterface<dim>::SlaveNode &s) {
+      return s.paired ? std::max(0., -interface->nodal_gap(s, interface_displacement)) +
+                          max_sliding_angle *
+                            interface->slip_since_search(s, interface_displacement) :
+                        0.;
+    };
+    PenetrationCheck check;
+    const auto       consider = [&](const typename ContactInterface<dim>::SlaveNode &s,
+                              const double distance,
+                              const double allowed,
+                              const bool   hanging) {
+      const double penetration = std::max(0., -distance);
+      if ((penetration - allowed) / s.size > check.excess)
+        {
+          check.excess      = (penetration - allowed) / s.size;
+          check.node        = s;
+          check.hanging     = hanging;
+          check.penetration = penetration;
+          check.allowed     = allowed;
+        }
+    };
+    const auto &slave_nodes = interface->slave_nodes;
+    std::map<unsigned int, double> allowed_of_node;
+    const std::vector<double> distance =
+      interface->surface_distances(slave_nodes, interface_displacement);
+    for (unsigned int i = 0; i < slave_nodes.size(); ++i)
       {
-        const auto  &s           = interface->slave_nodes[i];
-        const double penetration = std::max(0., -distance[i]);
-        // What the node's own mortar gap says (with a penalty, or at the
-        // nodal value of a curved face's weighted gap, a node may lie
-        // inside), and the error of a gap linearised in the motion: a slip s
-        // along a surface whose normal turns by theta on the way moves the
-        // node off the linearised surface by about s theta, which small
-        // sliding bounds by theta < max_sliding_angle.
-        const double allowed =
-          s.paired ? std::max(0., -interface->nodal_gap(s, interface_displacement)) +
-                       max_sliding_angle *
-                         interface->slip_since_search(s, interface_displacement) :
-                     0.;
-        if ((penetration - allowed) / s.size > check.excess)
-          {
-            check.excess      = (penetration - allowed) / s.size;
-            check.node        = i;
-            check.penetration = penetration;
-            check.allowed     = allowed;
-          }
+        const double allowed = allowed_at(slave_nodes[i]);
+        allowed_of_node[slave_nodes[i].node] = allowed;
+        consider(slave_nodes[i], distance[i], allowed, false);
+      }
+    // A hanging vertex moves with its parents: it may lie inside by what
+    // their gaps allow, in proportion to its weights.
+    const auto &hanging = interface->hanging_slave_vertices;
+    const std::vector<double> hanging_distance =
+      interface->surface_distances(hanging, interface_displacement);
+    for (unsigned int i = 0; i < hanging.size(); ++i)
+      {
+        double allowed = 0.;
+        for (const auto &[parent, weight] : interface->nodes[hanging[i].node].parents)
+          allowed += std::abs(weight) * allowed_of_node.at(parent);
+        consider(hanging[i], hanging_distance[i], allowed, true);
       }
     return check;
   }
@@ -833,17 +857,19 @@ namespace contact_fem
                                            const unsigned int      step,
                                            const double            time) const
   {
-    const auto        &s = interface->slave_nodes[check.node];
+    const auto        &s = check.node;
     const std::string configuration = contact_parameters.updated_kinematics ?
                                         "configuration of the step's start" :
                                         "reference configuration";
     std::ostringstream message;
     message << "load step " << step + 1 << " (t = " << time
-            << "): the converged solution is not a contact solution. The slave node at ("
+            << "): the converged solution is not a contact solution. The "
+            << (check.hanging ? "hanging slave vertex" : "slave node") << " at ("
             << interface->nodes[s.node].reference << ") penetrates the master surface by "
             << scientific(check.penetration, 3) << " (h = " << scientific(s.size, 3) << "), ";
     if (s.paired)
-      message << "of which its mortar gap and its linearisation allow "
+      message << (check.hanging ? "of which its parents' mortar gaps and their linearisation allow " :
+                                  "of which its mortar gap and its linearisation allow ")
               << scientific(check.allowed, 3)
               << ": the surfaces slid or turned farther than the operators built on the "
               << configuration << " can follow";
@@ -970,11 +996,10 @@ namespace contact_fem
     const PenetrationCheck check = check_penetration();
     if (check.excess > contact_parameters.penetration_tolerance)
       {
-        if (interface->slave_nodes[check.node].paired ||
-            searches_after_check == max_searches_after_check)
+        if (check.node.paired || searches_after_check == max_searches_after_check)
           throw penetration_failure(check, step, time);
         ++searches_after_check;
-        widen_search(interface->slave_nodes[check.node].pair, check.penetration);
+        widen_search(check.node.pair, check.penetration);
         return false;
       }
     last_penetration_excess = check.excess;

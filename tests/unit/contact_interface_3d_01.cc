@@ -74,7 +74,7 @@ namespace
   void
   print(const ContactInterface<3> &interface, const std::vector<double> &u)
   {
-    const std::vector<double> distances = interface.surface_distances(u);
+    const std::vector<double> distances = interface.surface_distances(interface.slave_nodes, u);
     double                    D_sum = 0., M_sum = 0.;
     for (unsigned int i = 0; i < interface.slave_nodes.size(); ++i)
       {

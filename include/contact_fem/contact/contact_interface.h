@@ -212,15 +212,16 @@ namespace contact_fem
     }
 
     /**
-     * Independent check of the contact: the signed distance of every slave
-     * node (in slave_nodes order) at X + u to the whole master surface of its
-     * pair, on the true face geometry, by an R-tree of the master faces and
-     * the closest point; negative when the node is inside the master body.
-     * +infinity where the closest point lies beyond the rim of the master
-     * surface. Does not use the mortar operators.
+     * Independent check of the contact: the signed distance of every node
+     * of @p points (slave_nodes or hanging_slave_vertices, in that order) at
+     * X + u to the whole master surface of its pair, on the true face
+     * geometry, by an R-tree of the master faces and the closest point;
+     * negative when the node is inside the master body. +infinity where the
+     * closest point lies beyond the rim of the master surface. Does not use
+     * the mortar operators.
      */
     std::vector<double>
-    surface_distances(const std::vector<double> &u) const;
+    surface_distances(const std::vector<SlaveNode> &points, const std::vector<double> &u) const;
 
     /**
      * The gap the mortar operators predict at the node itself: the nodal
@@ -267,6 +268,11 @@ namespace contact_fem
     std::vector<Node>           nodes;
     std::vector<Face>           faces;
     std::vector<SlaveNode>      slave_nodes;
+    /// The hanging vertices of the slave surfaces at the last search (3D
+    /// adaptive meshes): no multiplier, but checked against penetration like
+    /// the slave nodes. Only node, pair, normal and size are set; paired
+    /// when one of their parents is.
+    std::vector<SlaveNode>      hanging_slave_vertices;
     std::vector<PairStatistics> statistics;
     /// The slave and master faces (indices in faces) the last search found
     /// a mortar segment between, as (slave face, master face).
@@ -393,7 +399,8 @@ namespace contact_fem
 
     /// surface_distances() in 3D.
     std::vector<double>
-    surface_distances_3d(const std::vector<double> &u_at_dofs) const;
+    surface_distances_3d(const std::vector<SlaveNode> &points,
+                         const std::vector<double>    &u_at_dofs) const;
 
     /// Displacement at dofs() of the last search, and its reach per pair.
     std::vector<double>                                 search_displacement;
@@ -414,7 +421,8 @@ namespace contact_fem
                                  const std::vector<double> &);
   template <>
   std::vector<double>
-  ContactInterface<3>::surface_distances_3d(const std::vector<double> &) const;
+  ContactInterface<3>::surface_distances_3d(const std::vector<SlaveNode> &,
+                                            const std::vector<double> &) const;
 } // namespace contact_fem
 
 #endif

@@ -195,12 +195,14 @@ namespace contact_fem
     /// mortar gap (and a small-sliding linearisation) accounts for.
     struct PenetrationCheck
     {
-      double       excess = 0.; ///< over the node's element size
-      unsigned int node   = 0;  ///< in interface->slave_nodes
-      double       penetration = 0., allowed = 0.;
+      double excess = 0.; ///< over the node's element size
+      /// The worst slave node or hanging slave vertex.
+      typename ContactInterface<dim>::SlaveNode node;
+      bool   hanging     = false;
+      double penetration = 0., allowed = 0.;
     };
-    /// After convergence: every slave node against the whole master surface
-    /// (ContactInterface::surface_distances()).
+    /// After convergence: every slave node and hanging slave vertex against
+    /// the whole master surface (ContactInterface::surface_distances()).
     PenetrationCheck
     check_penetration() const;
     /// The diagnosis of a failed check_penetration(); splittable with
