@@ -27,12 +27,14 @@ check, results, untimed).
             the upper body; with the tangential load it would slide away).
   overhead  "a frictionless scene pays nothing": prm/hertz.prm (as shipped
             and at Global refinements 2) and prm/two_cylinders.prm with the
-            binary before friction (--old-binary, a Release build of 2c19b61)
+            binary before friction (--old-binary, a Release build of 2c19b61;
+            --old-label names it, e.g. "before 3D (755e6be)" for what a 2D
+            scene pays for 3D)
             and the current one: iterations and results must be identical,
             times within noise, peak memory alike.
 
 Usage:
-  python3 bench/friction_cost.py [--binary B] [--old-binary OLD]
+  python3 bench/friction_cost.py [--binary B] [--old-binary OLD] [--old-label L]
           [--reps N] [--groups hertz,cattaneo,overhead] [--results DIR]
 
 Prints Markdown tables (also written to DIR/report.md) and every run to
@@ -59,7 +61,7 @@ CATTANEO_FRICTIONLESS = CATTANEO_NORMAL + [
     "Boundary conditions/Fixed points=1 @ 0, 0: x; 1 @ 0, 8: x"]
 
 
-def variants(groups, new, old):
+def variants(groups, new, old, old_label="before friction (2c19b61)"):
     """(group, scene label, variant label, binary, prm, --set list)."""
     out = []
     if "hertz" in groups:
@@ -91,8 +93,8 @@ def variants(groups, new, old):
                 ("hertz.prm", "prm/hertz.prm", []),
                 ("hertz.prm, GR 2", "prm/hertz.prm", ["Geometry/Global refinements=2"]),
                 ("two_cylinders.prm", "prm/two_cylinders.prm", [])):
-            out += [("overhead", scene, "before friction (2c19b61)", old, prm, sets),
-                    ("overhead", scene, "with friction (current)", new, prm, sets)]
+            out += [("overhead", scene, old_label, old, prm, sets),
+                    ("overhead", scene, "current", new, prm, sets)]
     return out
 
 
@@ -156,6 +158,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--binary", default=str(REPO / "build/contact_fem"))
     ap.add_argument("--old-binary", default="")
+    ap.add_argument("--old-label", default="before friction (2c19b61)")
     ap.add_argument("--reps", type=int, default=5)
     ap.add_argument("--groups", default="hertz,cattaneo,overhead")
     ap.add_argument("--results", default="")
@@ -171,7 +174,7 @@ def main():
         a.old_binary = os.path.abspath(a.old_binary)
     os.chdir(REPO)
 
-    vs = variants(groups, a.binary, a.old_binary)
+    vs = variants(groups, a.binary, a.old_binary, a.old_label)
     runs = {i: [] for i in range(len(vs))}
     loads = [open("/proc/loadavg").read().strip()]
     for rep in range(a.reps):

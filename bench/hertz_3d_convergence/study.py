@@ -4,14 +4,21 @@
 an overkill reference of the same scene.
 
 What runs (one job at a time, serial, one thread):
-  reference        Q2, 'spr contact', fixed number 0.3, --ref-cycles cycles:
-                   its last potential energy is Pi_ref, its p_max the
-                   reference p_max (the discretisation error of the others).
+  reference        Q2, 'spr contact', fixed number 0.3, stopped after the
+                   first cycle with at least --ref-dof-cap DoFs: Pi_ref is
+                   the Aitken extrapolation of its last three potential
+                   energies (its uncertainty the change from the Aitken
+                   value of the three before), its p_max the reference
+                   p_max (the discretisation error of the others). Its
+                   last cycle is the largest run of the study: DoFs, wall
+                   time, time split and peak memory are reported.
   q1-global, q2-global
                    uniform refinement, --global-cycles-q1 / -q2 cycles;
   q1-spr-contact, q2-spr-contact
                    fixed fraction 0.3, no coarsening, stopped after the
                    first cycle with at least --dof-cap-q1 / -q2 DoFs.
+Every run starts from the uniform mesh Sphere refinements = 1 (1,836 DoFs
+with Q2; the prm's own graded default is switched off).
 Per cycle: the energy error err_E = sqrt(2 |Pi_h - Pi_ref|) / |u_ref|_E,
 the p_max error against the reference, DoFs, the cycle's wall time and the
 cumulative wall time (what a user pays to get there). Then the targets of
@@ -21,7 +28,7 @@ doc/convergence.md between the markers below; gnuplot draws
 doc/figures/convergence_3d_{dofs,time}.png.
 
 Usage: bench/hertz_3d_convergence/study.py [--binary B] [--results DIR]
-       [--analyse-only] [--set KEY=VALUE ...]
+       [--analyse-only] [--cases NAME ...] [--set KEY=VALUE ...]
 Python 3 standard library only (gnuplot for the figures, if installed).
 """
 
@@ -50,7 +57,8 @@ def run_case(args, name, settings, dof_cap=0):
            "--set", "Output/Write VTU=false", "--set", "Output/Print timing=false"]
     # Uniform rounds only in the start mesh (the prm's default grades it
     # toward the contact); a --set may still change that.
-    base = ["Geometry/Hertz sphere/Contact refinements=0"]
+    base = ["Geometry/Hertz sphere/Sphere refinements=1",
+            "Geometry/Hertz sphere/Contact refinements=0"]
     for s in base + args.set + settings:
         cmd += ["--set", s]
     print("==", name, " ".join(cmd[1:]), file=sys.stderr, flush=True)
@@ -60,7 +68,9 @@ def run_case(args, name, settings, dof_cap=0):
     with open(os.path.join(out, "stdout.txt"), "w") as log:
         proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, env=env)
         stopped = False
+        peak_kb = 0
         while proc.poll() is None:
+            peak_kb = max(peak_kb, peak_resident_kb(proc.pid))
             time.sleep(0.5)
             if dof_cap > 0 and max_dofs(out) >= dof_cap:
                 time.sleep(1.0)  # summary.json follows the csv row
@@ -68,12 +78,38 @@ def run_case(args, name, settings, dof_cap=0):
                 stopped = True
         proc.wait()
     with open(os.path.join(out, "run.txt"), "w") as f:
-        f.write("exit_code=%d\nstopped_at_dof_cap=%d\nelapsed=%.1f\nloadavg_before=%s\n"
-                "loadavg_after=%s\n" % (proc.returncode, stopped, time.time() - start,
+        f.write("exit_code=%d\nstopped_at_dof_cap=%d\nelapsed=%.1f\npeak_rss_kb=%d\n"
+                "loadavg_before=%s\nloadavg_after=%s\n" % (proc.returncode, stopped,
+                                                          time.time() - start, peak_kb,
                                         " ".join(load),
                                         " ".join(open("/proc/loadavg").read().split()[:3])))
     if proc.returncode != 0 and not stopped:
         print("   exit code %d, see %s/stdout.txt" % (proc.returncode, out), file=sys.stderr)
+
+
+def peak_resident_kb(pid):
+    """The process's peak resident set so far (VmHWM), 0 once it is gone;
+    sampled every 0.5 s, so a peak in the last half second is missed."""
+    try:
+        for line in open("/proc/%d/status" % pid):
+            if line.startswith("VmHWM:"):
+                return int(line.split()[1])
+    except OSError:
+        pass
+    return 0
+
+
+def run_info(results, name):
+    path = os.path.join(results, name, "run.txt")
+    if not os.path.exists(path):
+        return {}
+    return dict(line.split("=", 1) for line in open(path).read().split("\n") if "=" in line)
+
+
+def aitken(x0, x1, x2):
+    """The limit of a geometrically converging sequence from three terms."""
+    d1, d2 = x1 - x0, x2 - x1
+    return x2 if d2 == d1 else x2 - d2 * d2 / (d2 - d1)
 
 
 def max_dofs(out):
@@ -100,13 +136,22 @@ def analyse(results, given=None):
         ref = cycles(results, "reference")
         if not ref:
             sys.exit("study.py: no reference run in " + results)
-        pi_ref = ref[-1]["potential_energy"]
-        # How far the reference itself may be off: its last energy change.
-        pi_change = (abs(ref[-1]["potential_energy"] - ref[-2]["potential_energy"])
-                     if len(ref) > 1 else float("nan"))
+        energies = [c["potential_energy"] for c in ref]
+        if len(energies) >= 4:
+            # Aitken on the last three energies; how far it may be off: the
+            # change from the Aitken value of the three before.
+            pi_ref = aitken(*energies[-3:])
+            pi_change = abs(pi_ref - aitken(*energies[-4:-1]))
+            how = "Aitken extrapolation of the energies of its last three cycles"
+        else:
+            pi_ref = energies[-1]
+            # How far the reference itself may be off: its last energy change.
+            pi_change = abs(energies[-1] - energies[-2]) if len(energies) > 1 else float("nan")
+            how = "its last energy"
         norm_ref = math.sqrt(2.0 * ref[-1]["strain_energy"])
         p_ref = ref[-1]["contact"]["max_contact_pressure"]
-        ref_label = "overkill run: Q2 'spr contact', %d DoFs" % int(ref[-1]["n_dofs"])
+        ref_label = ("overkill run: Q2 'spr contact', cycles of %s DoFs; Pi_ref = %s" % (
+            ", ".join(str(int(c["n_dofs"])) for c in ref), how))
     runs = {}
     for name in ["q1-global", "q1-spr-contact", "q2-global", "q2-spr-contact"]:
         rows = []
@@ -119,8 +164,12 @@ def analyse(results, given=None):
                 "wall": c["wall_time"], "cumulative": c["cumulative_wall_time"],
                 "hanging": c["contact"].get("hanging_slave_vertices", 0)})
         runs[name] = rows
+    largest = None
+    ref = cycles(results, "reference")
+    if ref:
+        largest = dict(ref[-1], peak_rss_kb=int(run_info(results, "reference").get("peak_rss_kb", 0)))
     return {"pi_ref": pi_ref, "pi_change": pi_change, "norm_ref": norm_ref, "p_ref": p_ref,
-            "ref_label": ref_label, "runs": runs}
+            "ref_label": ref_label, "runs": runs, "largest": largest}
 
 
 def targets(runs, degree):
@@ -130,11 +179,22 @@ def targets(runs, degree):
     if not uniform or not adaptive:
         return None
     finest = uniform[-1]
-    for row in adaptive:
+    for i, row in enumerate(adaptive):
         if row["err_E"] <= finest["err_E"]:
+            # Where the adaptive curve crosses the finest uniform error,
+            # interpolated log-log from the cycle before.
+            crossing_dofs, crossing_time = row["dofs"], row["cumulative"]
+            if i > 0 and adaptive[i - 1]["err_E"] > row["err_E"]:
+                prev = adaptive[i - 1]
+                t = (math.log(prev["err_E"] / finest["err_E"]) /
+                     math.log(prev["err_E"] / row["err_E"]))
+                crossing_dofs = prev["dofs"] * (row["dofs"] / prev["dofs"]) ** t
+                crossing_time = prev["cumulative"] + t * (row["cumulative"] - prev["cumulative"])
             return {"finest": finest, "adaptive": row,
                     "dof_ratio": finest["dofs"] / row["dofs"],
-                    "time_ratio": row["cumulative"] / finest["cumulative"]}
+                    "time_ratio": row["cumulative"] / finest["cumulative"],
+                    "interpolated_dof_ratio": finest["dofs"] / crossing_dofs,
+                    "interpolated_time_ratio": crossing_time / finest["cumulative"]}
     return {"finest": finest, "adaptive": None}
 
 
@@ -179,6 +239,24 @@ def report(data, study_info):
                   degree, f["dofs"], f["cumulative"], f["err_E"], a["err_E"], a["dofs"],
                   a["cumulative"], t["dof_ratio"], "met" if t["dof_ratio"] >= 4 else "missed",
                   t["time_ratio"], "met" if t["time_ratio"] <= 0.5 else "missed"))
+            w("(Interpolated log-log between the adaptive cycles around the crossing: %.1fx "
+              "fewer DoFs, %.2f of the time.)" % (t["interpolated_dof_ratio"],
+                                                 t["interpolated_time_ratio"]))
+        w("")
+    big = data.get("largest")
+    if big:
+        timing = big.get("timing", {})
+        wall = big["wall_time"]
+        # The multigrid set-up is part of the linear solve.
+        split = ", ".join("%s%s %.1f s (%.0f %%)" % ("of which " if k == "Solve: multigrid setup"
+                                                     else "", k, v, 100 * v / wall)
+                          for k, v in sorted(timing.items(), key=lambda kv: -kv[1])
+                          if v >= 0.005 * wall)
+        w("Largest run of the study: the reference's last cycle, %d DoFs (Q2, %d hanging slave "
+          "vertices), cycle wall time %.1f s (solver: %s), peak resident memory of the whole "
+          "run %.2f GB. Time split of that cycle: %s." % (
+              int(big["n_dofs"]), big["contact"].get("hanging_slave_vertices", 0), wall,
+              big.get("linear_solver", "?"), big["peak_rss_kb"] / 1024.0 ** 2, split))
         w("")
     return "\n".join(lines)
 
@@ -225,9 +303,13 @@ def main():
     ap.add_argument("--results", default=os.path.join(HERE, "results"))
     ap.add_argument("--doc", default=os.path.join(ROOT, "doc", "convergence.md"))
     ap.add_argument("--analyse-only", action="store_true")
-    ap.add_argument("--ref-cycles", type=int, default=4)
+    ap.add_argument("--cases", nargs="+", metavar="NAME",
+                    default=["reference", "q1-global", "q1-spr-contact", "q2-global",
+                             "q2-spr-contact"],
+                    help="run only these (the others are read from --results as they are)")
+    ap.add_argument("--ref-dof-cap", type=int, default=250000)
     ap.add_argument("--global-cycles-q1", type=int, default=3)
-    ap.add_argument("--global-cycles-q2", type=int, default=2)
+    ap.add_argument("--global-cycles-q2", type=int, default=4)
     ap.add_argument("--dof-cap-q1", type=int, default=150000)
     ap.add_argument("--dof-cap-q2", type=int, default=150000)
     ap.add_argument("--reference", nargs=5, metavar=("PI", "DELTA", "NORM", "PMAX", "LABEL"),
@@ -244,38 +326,43 @@ def main():
         shutil.copy2(args.binary, copy)
         args.binary = copy
         start = time.time()
-        if not args.reference:
+        if not args.reference and "reference" in args.cases:
             run_case(args, "reference", ["Finite element/Degree=2", "Refinement/Estimator=spr contact",
                                          "Refinement/Strategy=fixed number",
                                          "Refinement/Refine fraction=0.3",
-                                         "Refinement/Number of cycles=%d" % args.ref_cycles])
+                                         "Refinement/Number of cycles=30"], args.ref_dof_cap)
         adaptive = ["Refinement/Estimator=spr contact", "Refinement/Strategy=fixed fraction",
                     "Refinement/Refine fraction=0.3", "Refinement/Coarsen fraction=0",
                     "Refinement/Number of cycles=30"]
         for degree, n_global, cap in [(1, args.global_cycles_q1, args.dof_cap_q1),
                                       (2, args.global_cycles_q2, args.dof_cap_q2)]:
             fe = ["Finite element/Degree=%d" % degree]
-            run_case(args, "q%d-global" % degree,
-                     fe + ["Refinement/Estimator=global", "Refinement/Number of cycles=%d" % n_global])
-            run_case(args, "q%d-spr-contact" % degree, fe + adaptive, cap)
+            if "q%d-global" % degree in args.cases:
+                run_case(args, "q%d-global" % degree,
+                         fe + ["Refinement/Estimator=global",
+                               "Refinement/Number of cycles=%d" % n_global])
+            if "q%d-spr-contact" % degree in args.cases:
+                run_case(args, "q%d-spr-contact" % degree, fe + adaptive, cap)
         git = subprocess.run(["git", "-C", ROOT, "describe", "--always", "--dirty"],
                              capture_output=True, text=True).stdout.strip()
-        with open(info_path, "w") as f:
-            f.write("%s, git %s, %s, %d cores, study %.0f s, extra settings: %s" % (
+        with open(info_path, "a" if len(args.cases) < 5 else "w") as f:
+            f.write("%s, git %s, %s, %d cores, %s %.0f s, extra settings: %s.\n" % (
                 time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()), git,
                 open("/proc/cpuinfo").read().split("model name")[1].split("\n")[0].strip(": "),
-                os.cpu_count(), time.time() - start, "; ".join(args.set) or "none"))
+                os.cpu_count(), "study" if len(args.cases) == 5 else ", ".join(args.cases),
+                time.time() - start, "; ".join(args.set) or "none"))
     given = None
     if args.reference:
         r = args.reference
         given = (float(r[0]), float(r[1]), float(r[2]), float(r[3]), r[4])
     data = analyse(args.results, given)
-    info = open(info_path).read().strip() if os.path.exists(info_path) else "no study.txt"
+    info = (" ".join(open(info_path).read().split("\n")).strip().rstrip(".")
+            if os.path.exists(info_path) else "no study.txt")
     text = report(data, info)
     print(text)
     if args.doc != "-":
         write_doc(args.doc, text)
-    plot(data, args.results)
+        plot(data, args.results)
 
 
 if __name__ == "__main__":

@@ -737,7 +737,10 @@ def main():
     # contact_fem in 3D: the iterative solver (AMG, as step-42), the level
     # knob of the Hertz sphere, Q1 (step-42's element) and optionally Q2
     if not args.skip_contact_fem and (levels_3d or levels_3d_q2):
-        sets_3d = ["Linear solver/Type=iterative"]
+        # Uniform levels: the prm's default grades the sphere toward the
+        # contact; --set-3d comes later and may change that.
+        sets_3d = ["Linear solver/Type=iterative",
+                   "Geometry/Hertz sphere/Contact refinements=0"]
         key_3d = "Geometry/Hertz sphere/Sphere refinements"
         runs_3d = ([(1, level, 0) for level in levels_3d] +
                    [(2, level, 0) for level in levels_3d_q2])
