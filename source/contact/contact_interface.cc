@@ -11,7 +11,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <sstream>
+#include <string>
 
 namespace contact_fem
 {
@@ -140,25 +142,46 @@ namespace contact_fem
     const FiniteElement<dim> &fe = dof_handler.get_fe();
     degree                       = fe.degree;
     geometry_degree              = std::max(degree, mapping.get_degree());
+    // The mortar kernels (mortar.h, mortar_3d.h) take faces of degree 1 or
+    // 2, and a geometry above the element degree only as Q1 on a quadratic
+    // mapping.
     AssertThrow(geometry_degree == degree || (degree == 1 && geometry_degree == 2),
-                ExcMessage("Contact: the face geometry may exceed the element degree "
-                           "only for degree-1 elements on a quadratic mapping."));
-    AssertThrow(dim == 2 || geometry_degree == degree,
-                ExcMessage("Contact: in 3D, the mapping degree of the contact faces must "
-                           "equal the element degree so far (Finite element/Mapping "
-                           "degree)."));
+                ExcMessage("Contact: the geometry of the contact faces (degree " +
+                           std::to_string(geometry_degree) + ") may exceed the element "
+                           "degree (" + std::to_string(degree) + ") only for degree-1 "
+                           "elements on a quadratic mapping (Finite element/Mapping "
+                           "degree = 2 or auto)."));
     const unsigned int nodes_per_face = fe.n_dofs_per_face() / dim;
-    // Geometry nodes without DoFs: the face midpoint of Q1 on a quadratic
-    // mapping, whose faces follow the curved boundary.
-    const unsigned int n_geometry_points = geometry_degree - degree;
+    // Geometry nodes without DoFs of Q1 on a quadratic mapping, whose faces
+    // follow the curved boundary: the face midpoint in 2D; the four edge
+    // midpoints and the centre in 3D (nodes 4-8 of Mortar::QuadFace).
+    const unsigned int n_geometry_points =
+      Utilities::fixed_power<dim - 1>(geometry_degree + 1) - nodes_per_face;
 
     // Support points of the base element on a face, in face DoF order.
     const Quadrature<dim - 1> support(fe.base_element(0).get_unit_face_support_points());
     FEFaceValues<dim>         fe_face(mapping, fe, support,
                               update_quadrature_points | update_normal_vectors);
-    FEFaceValues<dim>         fe_face_midpoint(mapping, fe,
-                                       Quadrature<dim - 1>(Point<dim - 1>::unit_vector(0) * 0.5),
-                                       update_quadrature_points);
+    // The geometry points in the kernels' node order, in 3D after the
+    // vertices, to check that they follow the orientation of the face as
+    // its support points do (a midpoint of a line has no orientation).
+    const unsigned int          first_geometry_node = dim == 2 ? nodes_per_face : 0;
+    std::vector<Point<dim - 1>> geometry_nodes;
+    if (n_geometry_points > 0)
+      for (unsigned int k = first_geometry_node; k < nodes_per_face + n_geometry_points; ++k)
+        {
+          Point<dim - 1> x;
+          if constexpr (dim == 2)
+            x[0] = 0.5 * (Mortar::node_parameter(2, k) + 1.);
+          else
+            for (unsigned int d = 0; d < 2; ++d)
+              x[d] = 0.5 * (Mortar::quad_node_parameter(2, k)[d] + 1.);
+          geometry_nodes.push_back(x);
+        }
+    std::unique_ptr<FEFaceValues<dim>> fe_face_geometry;
+    if (n_geometry_points > 0)
+      fe_face_geometry = std::make_unique<FEFaceValues<dim>>(
+        mapping, fe, Quadrature<dim - 1>(geometry_nodes), update_quadrature_points);
 
     // Pack the local faces: [pair, slave, E, nu, orientation, then per node:
     // coordinates, dofs, fixed flags].
@@ -207,9 +230,19 @@ namespace contact_fem
                     }
                   if (n_geometry_points > 0)
                     {
-                      fe_face_midpoint.reinit(cell, f);
-                      for (unsigned int d = 0; d < dim; ++d)
-                        packed.push_back(fe_face_midpoint.quadrature_point(0)[d]);
+                      fe_face_geometry->reinit(cell, f);
+                      for (unsigned int k = first_geometry_node; k < nodes_per_face; ++k)
+                        AssertThrow(fe_face_geometry->quadrature_point(k).distance(
+                                      fe_face.quadrature_point(k)) <=
+                                      1e-10 * cell->face(f)->diameter(),
+                                    ExcMessage("Contact: the geometry points of a contact "
+                                               "face are not in the order of its nodes."));
+                      for (unsigned int k = nodes_per_face;
+                           k < nodes_per_face + n_geometry_points;
+                           ++k)
+                        for (unsigned int d = 0; d < dim; ++d)
+                          packed.push_back(
+                            fe_face_geometry->quadrature_point(k - first_geometry_node)[d]);
                     }
                 }
 

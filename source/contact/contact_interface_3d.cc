@@ -138,6 +138,19 @@ namespace contact_fem
     result.element_degree = degree;
     for (const unsigned int n : face.nodes)
       result.nodes.push_back(nodes[n].reference + (u.empty() ? Tensor<1, 3>() : u[n]));
+    // The edge midpoints and the centre of Q1 on a quadratic mapping move
+    // with the bilinear displacement of the face, as the midpoint in 2D.
+    for (unsigned int k = 0; k < face.geometry_points.size(); ++k)
+      {
+        Tensor<1, 3> displacement;
+        if (!u.empty())
+          {
+            const Point<2> xi = Mortar::quad_node_parameter(2, face.nodes.size() + k);
+            for (unsigned int v = 0; v < face.nodes.size(); ++v)
+              displacement += Mortar::quad_shape_value(1, v, xi) * u[face.nodes[v]];
+          }
+        result.nodes.push_back(face.geometry_points[k] + displacement);
+      }
     return result;
   }
 
@@ -151,7 +164,9 @@ namespace contact_fem
     std::map<unsigned int, std::pair<Tensor<1, 3>, double>> result;
     std::map<unsigned int, double>                           area_of_node;
     std::map<unsigned int, unsigned int>                     n_adjacent;
-    const QGauss<2>                                          q(degree + 1);
+    // Exact for the full area of flat faces; the curved geometry of Q1 on
+    // a quadratic mapping needs the points of its degree.
+    const QGauss<2>                                          q(geometry_degree + 1);
     for (unsigned int f = 0; f < faces.size(); ++f)
       if (faces[f].slave == slave)
         for (unsigned int k = 0; k < faces[f].nodes.size(); ++k)

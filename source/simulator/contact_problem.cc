@@ -86,9 +86,9 @@ namespace contact_fem
                       "Polynomial degree of the geometry. auto: the element "
                       "degree, but 2 for Q1 on scenes with curved boundaries "
                       "(Geometry/Type = hertz cylinder or hertz sphere, or "
-                      "Geometry/Manifolds), except for 3D contact scenes (whose "
-                      "contact faces need the element degree so far): Q1 "
-                      "faces then follow the arc instead of its chords, whose "
+                      "Geometry/Manifolds), in 2D and 3D: Q1 faces then "
+                      "follow the arc (the sphere, the cylinder) instead of "
+                      "its chords (facets), whose "
                       "sag, where the "
                       "element size changes along a contact surface, shifts "
                       "the gap and disturbs the contact pressure by up to "
@@ -148,17 +148,13 @@ namespace contact_fem
   {
     // Every parameter is read and checked before any work is done.
     scene.parse_parameters(prm, prm_directory);
-    // "auto" depends on the scene.
-    // In 3D the contact faces need the element degree as mapping degree so
-    // far (no Q1 on a quadratic mapping there): auto keeps Q1 on chords.
-    const std::string mapping_degree = read_entry(prm, "Finite element", "Mapping degree");
-    const bool        quadratic_q1 =
-      scene.has_curved_boundary() &&
-      (dim == 2 || Utilities::trim(read_entry(prm, "Contact", "Pairs")).empty());
+    // "auto" depends on the scene: Q1 follows curved boundaries on a
+    // quadratic mapping, in 2D and 3D.
+    const std::string  mapping_degree = read_entry(prm, "Finite element", "Mapping degree");
     const unsigned int geometry_degree =
-      mapping_degree != "auto" ? std::stoul(mapping_degree) :
-      quadratic_q1             ? std::max(degree, 2u) :
-                                 degree;
+      mapping_degree != "auto"    ? std::stoul(mapping_degree) :
+      scene.has_curved_boundary() ? std::max(degree, 2u) :
+                                    degree;
     // A curved mapping takes its support points from the manifolds (the
     // transfinite interpolation of the Hertz disc is costly): cached once
     // per mesh, in setup_dofs().

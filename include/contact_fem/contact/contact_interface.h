@@ -40,8 +40,9 @@ namespace contact_fem
    * state against the whole master surface, independently of the operators.
    *
    * 2D: line faces of degree 1 or 2. 3D: quadrilateral faces of degree 1
-   * or 2 whose geometry is that of the element (no Q1 on a curved mapping),
-   * through the kernel of mortar_3d.h.
+   * or 2, through the kernel of mortar_3d.h. In both, Q1 on a quadratic
+   * mapping has faces of geometry degree 2 (Face::geometry_points) with
+   * the linear or bilinear shapes of the element.
    *
    * Hanging vertices (3D adaptive meshes: a node on the edge of a coarser
    * neighbour face) carry no multiplier: the multiplier space is that of
@@ -80,8 +81,11 @@ namespace contact_fem
     {
       /// Mortar::LineFace (2D) or Mortar::QuadFace (3D) node order.
       std::vector<unsigned int> nodes;
-      /// Reference positions of geometry nodes without DoFs: the midpoint of
-      /// a degree-1 face on a quadratic mapping; empty if isoparametric.
+      /// Reference positions of geometry nodes without DoFs of a degree-1
+      /// face on a quadratic mapping, from the mapping: in 2D the midpoint,
+      /// in 3D the four edge midpoints and the centre (nodes 4-8 of
+      /// Mortar::QuadFace). They move with the (bi)linear interpolation of
+      /// the vertex displacements (line(), quad()). Empty if isoparametric.
       std::vector<Point<dim>>   geometry_points;
       double                    orientation; ///< makes the rotated tangent point outward
       unsigned int              pair;
