@@ -368,7 +368,7 @@ def main():
         # contact (a --set may still ask for that).
         sets = ["Geometry/Hertz sphere/Contact refinements=0"] + sets
     if args.results:
-        results = pathlib.Path(args.results)
+        results = pathlib.Path(args.results).resolve()
     elif scene == (repo / "prm" / "hertz.prm").resolve() and degree == scene_degree \
             and not args.set:
         results = repo / "bench" / "results-solver"

@@ -170,7 +170,10 @@ namespace contact_fem
       // faster at 47k and 13x at 346k (4x less memory); on a Q2 slab of
       // one to two element layers (prm/two_cylinders_3d.prm, a factorisation
       // with 2D-like fill) the direct one is still 1.8x faster at 81k.
-      // Bulky bodies are the 3D case that needs the choice.
+      // On the 3D Hertz sphere (bulky, Q1 and Q2) the two are equal at
+      // 5k-8k DoFs and the iterative one is 3-7x faster at 55k
+      // (doc/performance.md, "Direct or iterative in 3D"): the switch
+      // sits between the bulky and the slab crossovers.
       static constexpr types::global_dof_index crossover_3d = 30000;
       // Measured on prm/hertz.prm with CG (doc/stability.md, group
       // "iterative"): a slave 1e2 / 1e3 / 1e4 times stiffer than its
