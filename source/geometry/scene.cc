@@ -109,14 +109,21 @@ namespace contact_fem
     prm.enter_subsection("Hertz sphere");
     prm.declare_entry("Radius", "6.1237", Patterns::Double(0.),
                       "Radius R of the hemisphere (Kratos' 3D Hertz example: "
-                      "diameter 12.2474). Its centre is (0, 0, t + R), its flat "
-                      "face (boundary 1) the plane z = t + R.");
+                      "diameter 12.2474). Its centre is (0, 0, t + g + R), its "
+                      "flat face (boundary 1) the plane z = t + g + R (g the "
+                      "Initial gap).");
+    prm.declare_entry("Initial gap", "0", Patterns::Double(),
+                      "Distance g of the hemisphere's lowest point above the "
+                      "plate top; negative values make the bodies overlap "
+                      "(initial penetration). A gap leaves the hemisphere free "
+                      "along z until it touches: load it by a prescribed "
+                      "displacement then.");
     prm.declare_entry("Plate width", "4", Patterns::Double(0.),
                       "The quarter plate spans [0, w] x [0, w] in x and y; it "
                       "should exceed the expected contact radius.");
     prm.declare_entry("Plate thickness", "1", Patterns::Double(0.),
                       "The plate spans [0, t] in z; the hemisphere touches it at "
-                      "(0, 0, t). The plate has about w / t coarse cells per "
+                      "(0, 0, t) (unless Initial gap is set). The plate has about w / t coarse cells per "
                       "direction in x and y, one in z.");
     prm.declare_entry("Pole patch angle", "45", Patterns::Double(5., 60.),
                       "Angle in degrees from the lowest point at which the coarse "
@@ -232,6 +239,7 @@ namespace contact_fem
     hertz_sphere.contact_refinements = prm.get_integer("Contact refinements");
     hertz_sphere.refinement_radius   = prm.get_double("Refinement radius");
     hertz_sphere.grading_factor      = prm.get_double("Grading factor");
+    hertz_sphere.gap                 = prm.get_double("Initial gap");
     prm.leave_subsection();
     prm.enter_subsection("Contact blocks");
     blocks.width       = prm.get_double("Width");
@@ -636,8 +644,8 @@ namespace contact_fem
   Scene<3>::create_hertz_sphere_mesh(parallel::distributed::Triangulation<3> &tria) const
   {
     const double   R = hertz_sphere.radius, t = hertz_sphere.plate_thickness,
-                 w = hertz_sphere.plate_width;
-    const Point<3> centre(0., 0., t + R);
+                 w = hertz_sphere.plate_width, g = hertz_sphere.gap;
+    const Point<3> centre(0., 0., t + g + R);
     Triangulation<3> sphere;
     unit_ball_octant(hertz_sphere.pole_patch_angle * numbers::PI / 180., sphere);
     GridTools::transform([&](const Point<3> &p) { return Point<3>(centre + R * p); }, sphere);
@@ -645,7 +653,8 @@ namespace contact_fem
     Triangulation<3>   plate;
     const unsigned int n = std::max(1, static_cast<int>(std::round(w / t)));
     GridGenerator::subdivided_hyper_rectangle(plate, {n, n, 1}, Point<3>(), Point<3>(w, w, t));
-    // The pole touches the plate at (0, 0, t): joined without merging it.
+    // The pole touches the plate at (0, 0, t) unless lifted by g: joined
+    // without merging.
     Triangulation<3> coarse;
     join_bodies({&sphere, &plate}, {1, 2}, coarse);
 
@@ -667,7 +676,7 @@ namespace contact_fem
               id = 5;
             else if (in_plane(1, 0.))
               id = 6;
-            else if (on_sphere && in_plane(2, t + R))
+            else if (on_sphere && in_plane(2, t + g + R))
               id = 1;
             else if (!on_sphere && in_plane(2, 0.))
               id = 2;
@@ -683,9 +692,11 @@ namespace contact_fem
     surface.centre      = centre;
     surface.radius      = R;
     surface.entry       = "Geometry/Type = hertz sphere";
-    set_manifold_ids<3>({surface}, true, coarse);
+    // Random vertex moves would invalidate the transfinite chart (as for
+    // the Hertz disc): a distorted hemisphere has straight interior lines.
+    set_manifold_ids<3>({surface}, distortion == 0., coarse);
     tria.copy_triangulation(coarse);
-    attach_manifolds<3>({surface}, true, tria);
+    attach_manifolds<3>({surface}, distortion == 0., tria);
 
     // Uniform rounds per body, then graded rounds of the hemisphere
     // toward the disc r < "Refinement radius" of the plate top.
@@ -721,6 +732,8 @@ namespace contact_fem
       create_from_mesh_file(tria);
     if (global_refinements > 0)
       tria.refine_global(global_refinements);
+    if (distortion > 0.)
+      GridTools::distort_random(distortion, tria, true, 20261121);
     refine_boxes(tria);
   }
 

@@ -182,6 +182,7 @@ namespace contact_fem
       unsigned int contact_refinements   = 0;
       double       refinement_radius     = 2.;
       double       grading_factor        = 4.;
+      double       gap                   = 0.; ///< of the lowest point above the plate
     } hertz_sphere;
 
     struct Blocks
