@@ -231,7 +231,7 @@ def main():
     # The overhead group: same iterations and results, old against new.
     if "overhead" in groups:
         lines.append("")
-        lines.append("Before/after friction, frictionless scenes:")
+        lines.append(f"{a.old_label} against the current binary, frictionless scenes:")
         lines.append("")
         lines.append("| Scene | Iterations equal | Results equal (active nodes, p_max, energy; pressure_profile.csv bytes) | "
                      "Wall median before / after [s] | Wall min before / after [s] | "

@@ -348,7 +348,7 @@ def main():
         with open(info_path, "a" if len(args.cases) < 5 else "w") as f:
             f.write("%s, git %s, %s, %d cores, %s %.0f s, extra settings: %s.\n" % (
                 time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()), git,
-                open("/proc/cpuinfo").read().split("model name")[1].split("\n")[0].strip(": "),
+                open("/proc/cpuinfo").read().split("model name")[1].split("\n")[0].strip(": \t"),
                 os.cpu_count(), "study" if len(args.cases) == 5 else ", ".join(args.cases),
                 time.time() - start, "; ".join(args.set) or "none"))
     given = None
@@ -356,7 +356,7 @@ def main():
         r = args.reference
         given = (float(r[0]), float(r[1]), float(r[2]), float(r[3]), r[4])
     data = analyse(args.results, given)
-    info = (" ".join(open(info_path).read().split("\n")).strip().rstrip(".")
+    info = ("; ".join(line.strip().rstrip(".") for line in open(info_path) if line.strip())
             if os.path.exists(info_path) else "no study.txt")
     text = report(data, info)
     print(text)

@@ -23,6 +23,8 @@
 #include <contact_fem/contact/formulations/contact_formulation.h>
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/material/material.h>
+
+#include "unit_test_materials.h"
 #include <contact_fem/core/parameters.h>
 
 #include <iomanip>
@@ -109,15 +111,7 @@ main(int argc, char **argv)
   dof_handler.distribute_dofs(fe);
   const MappingQ<2> mapping(1);
 
-  ParameterHandler material_prm;
-  Materials<2>::declare_parameters(material_prm);
-  material_prm.enter_subsection("Materials");
-  material_prm.set("Material ids", "1, 2");
-  material_prm.set("Young's moduli", "100, 200");
-  material_prm.set("Poisson's ratios", "0, 0");
-  material_prm.leave_subsection();
-  Materials<2> materials;
-  materials.parse_parameters(material_prm);
+  const Materials<2> materials = make_materials<2>("1, 2", "100, 200", "0, 0");
 
   AffineConstraints<double> no_dirichlet;
   no_dirichlet.close();

@@ -26,6 +26,8 @@
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/material/material.h>
 
+#include "unit_test_materials.h"
+
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -113,15 +115,7 @@ main(int argc, char **argv)
   dof_handler.distribute_dofs(fe);
   const MappingQ<3> mapping(1);
 
-  ParameterHandler material_prm;
-  Materials<3>::declare_parameters(material_prm);
-  material_prm.enter_subsection("Materials");
-  material_prm.set("Material ids", "1, 2");
-  material_prm.set("Young's moduli", "100, 200");
-  material_prm.set("Poisson's ratios", "0, 0");
-  material_prm.leave_subsection();
-  Materials<3> materials;
-  materials.parse_parameters(material_prm);
+  const Materials<3> materials = make_materials<3>("1, 2", "100, 200", "0, 0");
 
   AffineConstraints<double> no_dirichlet;
   no_dirichlet.close();

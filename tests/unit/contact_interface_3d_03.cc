@@ -26,6 +26,8 @@
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/material/material.h>
 
+#include "unit_test_materials.h"
+
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -36,21 +38,6 @@ using namespace contact_fem;
 
 namespace
 {
-  Materials<3>
-  make_materials()
-  {
-    ParameterHandler prm;
-    Materials<3>::declare_parameters(prm);
-    prm.enter_subsection("Materials");
-    prm.set("Material ids", "1");
-    prm.set("Young's moduli", "100");
-    prm.set("Poisson's ratios", "0.3");
-    prm.leave_subsection();
-    Materials<3> materials;
-    materials.parse_parameters(prm);
-    return materials;
-  }
-
   double
   area(const Mortar::QuadFace &quad)
   {
@@ -98,7 +85,7 @@ main(int argc, char **argv)
   const FESystem<3> fe(FE_Q<3>(1), 3);
   DoFHandler<3>     dof_handler(tria);
   dof_handler.distribute_dofs(fe);
-  const Materials<3> materials = make_materials();
+  const Materials<3> materials = make_materials<3>("1", "100", "0.3");
   AffineConstraints<double> none;
   none.close();
   const std::vector<ContactPair> pairs = {ContactPair{3, 4}};

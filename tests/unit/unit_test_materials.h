@@ -1,0 +1,29 @@
+// The materials of a unit test, set through the "Materials" subsection as a
+// scene file would set them (comma-separated lists, one entry per body).
+#ifndef contact_fem_unit_test_materials_h
+#define contact_fem_unit_test_materials_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <contact_fem/material/material.h>
+
+#include <string>
+
+template <int dim>
+contact_fem::Materials<dim>
+make_materials(const std::string &ids, const std::string &youngs_moduli,
+               const std::string &poissons_ratios)
+{
+  dealii::ParameterHandler prm;
+  contact_fem::Materials<dim>::declare_parameters(prm);
+  prm.enter_subsection("Materials");
+  prm.set("Material ids", ids);
+  prm.set("Young's moduli", youngs_moduli);
+  prm.set("Poisson's ratios", poissons_ratios);
+  prm.leave_subsection();
+  contact_fem::Materials<dim> materials;
+  materials.parse_parameters(prm);
+  return materials;
+}
+
+#endif
