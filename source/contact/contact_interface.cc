@@ -426,7 +426,8 @@ namespace contact_fem
 
   namespace
   {
-    /// The box of the nodes of @p line (a 2D face; dim is the space's).
+    /// A box that holds all of @p line, not only its nodes (a curved
+    /// quadratic line bulges beyond them); a 2D face, dim is the space's.
     template <int dim>
     BoundingBox<dim>
     face_box(const Mortar::LineFace &line)
@@ -434,7 +435,7 @@ namespace contact_fem
       std::vector<Point<dim>> points;
       for (const auto &x : line.nodes)
         points.push_back(Point<dim>(x[0], x[1]));
-      return BoundingBox<dim>(points);
+      return Mortar::interpolant_box(points, Mortar::lebesgue_constant(line.degree()));
     }
 
     double
@@ -883,8 +884,11 @@ namespace contact_fem
                 tree.query(boost::geometry::index::intersects(around),
                            std::back_inserter(hits));
 
-                double       best = std::numeric_limits<double>::infinity(), best_xi = 0.;
-                unsigned int best_face = 0;
+                // Seeded with the nearest box's face, so that a closest face
+                // is found even if round-off keeps it out of the hits.
+                double       best      = bound;
+                double       best_xi   = closest_parameter(first, x);
+                unsigned int best_face = nearest[0].second;
                 for (const auto &hit : hits)
                   {
                     const unsigned int f  = hit.second;

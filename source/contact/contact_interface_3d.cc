@@ -18,10 +18,13 @@ namespace contact_fem
 {
   namespace
   {
+    /// A box that holds all of @p quad, not only its nodes (a biquadratic
+    /// face bulges beyond them).
     BoundingBox<3>
     face_box(const Mortar::QuadFace &quad)
     {
-      return BoundingBox<3>(quad.nodes);
+      const double lebesgue_1d = Mortar::lebesgue_constant(quad.degree());
+      return Mortar::interpolant_box(quad.nodes, lebesgue_1d * lebesgue_1d);
     }
 
     double
@@ -502,9 +505,11 @@ namespace contact_fem
             std::vector<std::pair<BoundingBox<3>, unsigned int>> hits;
             tree.query(boost::geometry::index::intersects(around), std::back_inserter(hits));
 
-            double       best = std::numeric_limits<double>::infinity();
-            Point<2>     best_xi;
-            unsigned int best_face = 0;
+            // Seeded with the nearest box's face, so that a closest face is
+            // found even if round-off keeps it out of the hits.
+            double       best      = bound;
+            Point<2>     best_xi   = closest_parameter(first, x);
+            unsigned int best_face = nearest[0].second;
             for (const auto &hit : hits)
               {
                 const unsigned int f  = hit.second;

@@ -35,6 +35,36 @@ namespace contact_fem
     }
 
     double
+    lebesgue_constant(const unsigned int p)
+    {
+      Assert(p == 1 || p == 2, ExcNotImplemented());
+      // Degree 2: |N_0| + |N_1| + |N_2| = 1 + |xi| - xi^2, largest at |xi| = 1/2.
+      return p == 1 ? 1. : 1.25;
+    }
+
+    template <int spacedim>
+    BoundingBox<spacedim>
+    interpolant_box(const std::vector<Point<spacedim>> &nodes, const double lebesgue)
+    {
+      const auto [low, high] = BoundingBox<spacedim>(nodes).get_boundary_points();
+      Point<spacedim> lower, upper;
+      for (unsigned int d = 0; d < spacedim; ++d)
+        {
+          const double centre = 0.5 * (low[d] + high[d]);
+          const double radius = 0.5 * (high[d] - low[d]) * lebesgue +
+                                1e-12 * (std::abs(centre) + 0.5 * (high[d] - low[d]));
+          lower[d] = centre - radius;
+          upper[d] = centre + radius;
+        }
+      return BoundingBox<spacedim>(std::make_pair(lower, upper));
+    }
+
+    template BoundingBox<2>
+    interpolant_box(const std::vector<Point<2>> &, const double);
+    template BoundingBox<3>
+    interpolant_box(const std::vector<Point<3>> &, const double);
+
+    double
     shape_derivative(const unsigned int p, const unsigned int i, const double xi)
     {
       if (p == 1)

@@ -3,6 +3,7 @@
 #ifndef contact_fem_mortar_h
 #define contact_fem_mortar_h
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/full_matrix.h>
@@ -54,6 +55,19 @@ namespace contact_fem
     /// Lagrange shape function @p i of degree @p p (node order of LineFace) at xi.
     double
     shape_value(const unsigned int p, const unsigned int i, const double xi);
+    /// A box that holds the whole face interpolated from @p nodes, not
+    /// only the nodes: x(xi) - c = sum_k N_k(xi) (x_k - c) for the nodes'
+    /// box centre c (the N_k sum to 1), so each coordinate stays within
+    /// @p lebesgue (max over xi of sum_k |N_k(xi)|) times the nodes'
+    /// half-extent of c; padded by round-off of the coordinates.
+    template <int spacedim>
+    BoundingBox<spacedim>
+    interpolant_box(const std::vector<Point<spacedim>> &nodes, const double lebesgue);
+
+    /// max_xi sum_i |shape_value(p, i, xi)|: 1 for p = 1, 1.25 for p = 2.
+    double
+    lebesgue_constant(const unsigned int p);
+
     /// d/dxi of shape_value().
     double
     shape_derivative(const unsigned int p, const unsigned int i, const double xi);
