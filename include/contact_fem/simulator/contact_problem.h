@@ -18,6 +18,7 @@
 #include <contact_fem/solvers/linear_solver.h>
 #include <contact_fem/solvers/load_step_control.h>
 #include <contact_fem/solvers/newton_monitor.h>
+#include <contact_fem/solvers/rigid_body_modes.h>
 #include <contact_fem/contact/formulations/contact_formulation.h>
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/core/json.h>
@@ -32,6 +33,7 @@
 #include <contact_fem/adaptivity/stress_recovery.h>
 #include <contact_fem/material/volumetric_projection.h>
 
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -152,9 +154,40 @@ namespace contact_fem
     warn_about_large_strains(Json &cycle_record);
     /// Prints and records a warning when a unit couple on a body in contact
     /// turns it by theta with theta G V > 50 (a weakly held rotation); uses
-    /// the factors of the converged system.
+    /// the factors of the converged system. Rotations that the body's
+    /// supports hold are not probed; the record says which were.
     void
     warn_about_weakly_held_rotation(Json &cycle_record);
+    /// Volume, centroid and central second moments of a body.
+    struct BodyMoments
+    {
+      double         volume = 0.;
+      Point<dim>     centre;
+      Tensor<1, dim> central; ///< int (x_i - c_i)^2
+      /// The root mean square distance of the body from its centroid.
+      double
+      radius_of_gyration() const
+      {
+        double sum = 0.;
+        for (unsigned int i = 0; i < dim; ++i)
+          sum += central[i];
+        return std::sqrt(sum / volume);
+      }
+    };
+    /// The moments of body @p body (material id). Collective.
+    BodyMoments
+    body_moments(const types::material_id body) const;
+    /// Which DoFs @p dofs of @p cell hold the body as supports: fixed ones
+    /// (lines of dirichlet_constraints without entries: Fixed, Fixed
+    /// points, prescribed displacements); in 3D only those on a boundary
+    /// face whose DoFs of that component are all fixed.
+    std::vector<bool>
+    supporting_dofs(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                    const std::vector<types::global_dof_index>           &dofs) const;
+    /// This rank's supporting DoFs (supporting_dofs()) of each body, each
+    /// once, at their support points.
+    std::map<types::material_id, std::vector<FixedDof<dim>>>
+    fixed_dofs_by_body() const;
     /// The mean rotation about @p axis (3D; the plane's in 2D) of @p body
     /// under a unit couple (body force omega x (x - centre) / polar), solved
     /// with the kept factors of the converged system.
