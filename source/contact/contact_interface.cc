@@ -426,15 +426,19 @@ namespace contact_fem
 
   namespace
   {
-    /// A box that holds all of @p line, not only its nodes (a curved
-    /// quadratic line bulges beyond them); a 2D face, dim is the space's.
+    /// The box of the nodes of @p line (a 2D face; dim is the space's),
+    /// or with @p whole_face one that holds all of it (a curved quadratic
+    /// line bulges beyond its nodes): the penetration check needs the
+    /// exact nearest face; the search's reach covers that bulge.
     template <int dim>
     BoundingBox<dim>
-    face_box(const Mortar::LineFace &line)
+    face_box(const Mortar::LineFace &line, const bool whole_face = false)
     {
       std::vector<Point<dim>> points;
       for (const auto &x : line.nodes)
         points.push_back(Point<dim>(x[0], x[1]));
+      if (!whole_face)
+        return BoundingBox<dim>(points);
       return Mortar::interpolant_box(points, Mortar::lebesgue_constant(line.degree()));
     }
 
@@ -859,7 +863,7 @@ namespace contact_fem
             std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
             for (unsigned int f = 0; f < faces.size(); ++f)
               if (!faces[f].slave && faces[f].pair == p)
-                boxes.emplace_back(face_box<dim>(lines[f]), f);
+                boxes.emplace_back(face_box<dim>(lines[f], true), f);
             if (boxes.empty())
               continue;
             const auto tree = pack_rtree(boxes);

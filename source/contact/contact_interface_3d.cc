@@ -19,9 +19,11 @@ namespace contact_fem
   namespace
   {
     /// A box that holds all of @p quad, not only its nodes (a biquadratic
-    /// face bulges beyond them).
+    /// face bulges beyond them): the penetration check needs the exact
+    /// nearest face. The search works on the nodes' boxes, whose reach
+    /// (a fraction of the face size) covers that bulge.
     BoundingBox<3>
-    face_box(const Mortar::QuadFace &quad)
+    whole_face_box(const Mortar::QuadFace &quad)
     {
       const double lebesgue_1d = Mortar::lebesgue_constant(quad.degree());
       return Mortar::interpolant_box(quad.nodes, lebesgue_1d * lebesgue_1d);
@@ -320,7 +322,7 @@ namespace contact_fem
     for (unsigned int f = 0; f < faces.size(); ++f)
       if (!faces[f].slave && faces[f].pair == p)
         {
-          BoundingBox<3> box = face_box(quads[f]);
+          BoundingBox<3> box(quads[f].nodes);
           box.extend(master_box_margin * std::sqrt(areas[f]));
           master_boxes.emplace_back(box, f);
         }
@@ -335,7 +337,7 @@ namespace contact_fem
         if (!faces[f].slave || faces[f].pair != p)
           continue;
         const double reach = search_factor * std::sqrt(areas[f]) + allowance;
-        BoundingBox<3> box = face_box(quads[f]);
+        BoundingBox<3> box(quads[f].nodes);
         box.extend(reach);
         reach_of_search[p] = std::min(reach_of_search[p], reach);
         std::vector<std::pair<BoundingBox<3>, unsigned int>> hits;
@@ -484,7 +486,7 @@ namespace contact_fem
         std::vector<std::pair<BoundingBox<3>, unsigned int>> boxes;
         for (unsigned int f = 0; f < faces.size(); ++f)
           if (!faces[f].slave && faces[f].pair == p)
-            boxes.emplace_back(face_box(quads[f]), f);
+            boxes.emplace_back(whole_face_box(quads[f]), f);
         if (boxes.empty())
           continue;
         const auto tree = pack_rtree(boxes);
