@@ -250,8 +250,9 @@ def section(rows, results, repo_root):
         "Assembly = bulk + system + residual; contact = search (incl. mortar "
         "integration) + active set (multiplier recovery, active set update); "
         "setup = mesh + DoFs + sparsity (DoFs includes filling the mapping cache "
-        "of Q1 on the curved arc); output = VTU; checks = the held-rotation probe "
-        "(a couple per body in contact, one back substitution); other = total "
+        "of Q1 on the curved arc); output = VTU; checks = the held-rotation check "
+        "(the supports' lever arms, then one back substitution per rotation "
+        "the supports do not hold); other = total "
         "minus all timed sections. Contact share = contact / total.",
         "",
     ]
