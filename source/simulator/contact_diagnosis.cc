@@ -233,7 +233,9 @@ namespace contact_fem
 
   template <int dim>
   std::string
-  ContactProblem<dim>::no_contact_message(const std::string &where, const bool in_iteration) const
+  ContactProblem<dim>::no_contact_message(const std::string &where,
+                                          const bool         in_iteration,
+                                          const bool         none_started) const
   {
     const std::string separation =
       where + ": no contact. No slave node is active" +
@@ -253,12 +255,26 @@ namespace contact_fem
       total += load.norm();
     const double push = load_toward_contact(current_time);
     if (total > 0. && push > 1e-3 * total)
-      return where + ": no contact. No slave node is active, although the applied load "
-                     "pushes the bodies together (its resultant along the outward normals "
-                     "of the contact surfaces is " +
-             format(push, 3) +
-             "): the contact was lost numerically, not by the load. Hint: more load steps, "
-             "or a different Contact/Penalty.";
+      {
+        const std::string pushing =
+          where + ": no contact. No slave node is active, although the applied load "
+                  "pushes the bodies together (its resultant along the outward normals "
+                  "of the contact surfaces is " +
+          format(push, 3) + ")";
+        // Nothing was solved yet: the start rule, not the iteration, left
+        // the loaded body without support.
+        if (none_started)
+          return pushing +
+                 ": no slave node started the step in contact, so nothing held the "
+                 "loaded body. A node starts in contact when it carried pressure at "
+                 "the end of the previous step, or, on the first step of a mesh, when "
+                 "its gap is below Contact/Active check factor times its size (at 0, "
+                 "round-off decides whether a touching node does). Hint: raise "
+                 "Contact/Active check factor, or close the gap by a prescribed "
+                 "displacement.";
+        return pushing + ": the contact was lost numerically, not by the load. Hint: more "
+                         "load steps, or a different Contact/Penalty.";
+      }
     return separation;
   }
 
@@ -363,7 +379,7 @@ namespace contact_fem
   template std::string ContactProblem<dim>::stiffness_contrast_limit() const; \
   template std::string ContactProblem<dim>::incompressibility_limit() const; \
   template double      ContactProblem<dim>::load_toward_contact(const double) const; \
-  template std::string ContactProblem<dim>::no_contact_message(const std::string &, const bool) const; \
+  template std::string ContactProblem<dim>::no_contact_message(const std::string &, const bool, const bool) const; \
   template std::string ContactProblem<dim>::non_convergence_hint(const bool, const double, const double) const; \
   template void ContactProblem<dim>::check_reaction_balance(const Json &, Json &); \
   template void ContactProblem<dim>::warn_about_precision_limits() const;

@@ -1037,7 +1037,7 @@ namespace contact_fem
         const std::string at = where + ", iteration " + std::to_string(iteration);
         if (iteration > 0 && contact && contact->n_active() == 0 &&
             !contact_parameters.allow_loss_of_contact)
-          throw NewtonFailure(no_contact_message(at, true), false);
+          throw NewtonFailure(no_contact_message(at, true, iteration == 1), false);
         if (iteration > 0)
           newton_update(at, monitor.displacement_target());
         compute_residual();
@@ -1079,7 +1079,7 @@ namespace contact_fem
       }
     if (assessment.converged && contact && contact->n_active() == 0 &&
         !contact_parameters.allow_loss_of_contact)
-      throw NewtonFailure(no_contact_message(where, false), false);
+      throw NewtonFailure(no_contact_message(where, false, false), false);
     if (!assessment.converged)
       throw NewtonFailure(where + " did not converge in " +
                             std::to_string(newton_parameters.max_iterations) + " iterations " +

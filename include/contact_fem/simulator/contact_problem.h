@@ -414,9 +414,12 @@ namespace contact_fem
     load_toward_contact(const double time) const;
     /// The diagnosis of a step without active slave nodes at @p where:
     /// the separating load, or the real cause if the load does not
-    /// separate the bodies. Collective.
+    /// separate the bodies. @p none_started: no node started the step in
+    /// contact (before any solve of the step). Collective.
     std::string
-    no_contact_message(const std::string &where, const bool in_iteration) const;
+    no_contact_message(const std::string &where,
+                       const bool         in_iteration,
+                       const bool         none_started) const;
     /// The hint of a Newton failure; @p stalled: the residuals stopped
     /// decreasing without active-set changes.
     std::string
