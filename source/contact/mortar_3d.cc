@@ -212,6 +212,88 @@ namespace contact_fem
         return plane;
       }
 
+      /// A chord of the slave's projected boundary ring: the straight line
+      /// between two consecutive ring nodes a and b in the plane, standing in
+      /// for the part of a face edge between their parameters xi_a and xi_b.
+      struct BoundaryChord
+      {
+        Point<2> a, b, xi_a, xi_b;
+      };
+
+      std::vector<BoundaryChord>
+      boundary_chords(const QuadFace &slave, const AuxiliaryPlane &plane)
+      {
+        const std::vector<unsigned int> ring = boundary_ring(slave.degree());
+        std::vector<BoundaryChord>      chords;
+        for (unsigned int k = 0; k < ring.size(); ++k)
+          {
+            const unsigned int i = ring[k], j = ring[(k + 1) % ring.size()];
+            chords.push_back({plane.coordinates(slave.nodes[i]),
+                              plane.coordinates(slave.nodes[j]),
+                              quad_node_parameter(slave.degree(), i),
+                              quad_node_parameter(slave.degree(), j)});
+          }
+        return chords;
+      }
+
+      /**
+       * The slave parameter of a vertex @p u of an overlap piece that the
+       * clipping put inside a @p chord, where the piece leaves the chord
+       * along a master edge (the straight line from @p u to @p other) and
+       * runs along the chord to @p along: the point where the face edge,
+       * followed from @p along, first crosses that master edge. Mapped back
+       * along n0 instead, @p u would land inside the face by the chord's sag,
+       * the piece's edge along the chord would no longer be a face edge for
+       * for_each_point(), and the lens between chord and edge would be lost
+       * (on a sphere: 1e-4 of a face that a master edge crosses, and 0.1 %
+       * of D at a slave corner cut off by a master edge under the slightest
+       * initial penetration, a jump at zero gap). The chord's end beyond
+       * @p u lies across the master edge, so the crossing is bracketed:
+       * found by a scan and bisection. False if @p along is not on the
+       * inner side of that edge either.
+       */
+      bool
+      edge_crossing(const QuadFace       &slave,
+                    const AuxiliaryPlane &plane,
+                    const BoundaryChord  &chord,
+                    const Point<2>       &u,
+                    const Point<2>       &along,
+                    const Point<2>       &other,
+                    Point<2>             &xi)
+      {
+        const Tensor<1, 2> c = chord.b - chord.a, d = other - u, dxi = chord.xi_b - chord.xi_a;
+        const auto fraction = [&](const Point<2> &x) {
+          return ((x - chord.a) * c) / c.norm_square();
+        };
+        const auto side = [&](const double s) {
+          return cross_2d(d, plane.coordinates(slave.point(chord.xi_a + s * dxi)) - u) > 0.;
+        };
+        const double start = fraction(along), end = fraction(u) > start ? 1. : 0.;
+        const bool   inner = side(start);
+        if (side(end) == inner)
+          return false;
+        constexpr unsigned int n_scan = 32;
+        double                 lower  = start, upper = end;
+        for (unsigned int i = 1; i <= n_scan; ++i)
+          {
+            const double s = start + (end - start) * i / n_scan;
+            if (side(s) != inner)
+              {
+                upper = s;
+                break;
+              }
+            lower = s;
+          }
+        while (std::abs(upper - lower) > 1e-15)
+          {
+            const double middle = 0.5 * (lower + upper);
+            (side(middle) == inner ? lower : upper) = middle;
+          }
+        // dxi is zero in the edge's fixed parameter, which stays exactly +-1.
+        xi = chord.xi_a + 0.5 * (lower + upper) * dxi;
+        return true;
+      }
+
       /// Calls f(xi, jxw) for the quadrature points of the given polygons of
       /// slave parameters; jxw is the weight times the slave area element.
       ///
@@ -485,18 +567,49 @@ namespace contact_fem
       if (!(0.5 * twice_signed_area(master_ring) > 1e-10 * slave_area) || slave_pieces.empty())
         return false;
 
+      const std::vector<BoundaryChord> chords = boundary_chords(slave, plane);
+      const double                     length = std::sqrt(slave_area);
       for (const PlanePolygon &slave_piece : slave_pieces)
         {
-          const PlanePolygon piece = clip_convex(master_ring, slave_piece);
+          const PlanePolygon clipped = clip_convex(master_ring, slave_piece);
           // Touching edges or corners give no piece or a zero-area one;
           // slivers of this relative size are round-off of shared edges.
-          if (piece.size() < 3 || !(0.5 * twice_signed_area(piece) > 1e-10 * slave_area))
+          if (clipped.size() < 3 || !(0.5 * twice_signed_area(clipped) > 1e-10 * slave_area))
             continue;
+          // Clipping repeats a vertex that lies on a clip edge.
+          PlanePolygon piece;
+          for (const Point<2> &u : clipped)
+            if (piece.empty() || u.distance(piece.back()) > 1e-12 * length)
+              piece.push_back(u);
+          while (piece.size() > 1 && piece.front().distance(piece.back()) <= 1e-12 * length)
+            piece.pop_back();
           ParameterPolygon polygon;
-          for (const Point<2> &u : piece)
+          for (unsigned int k = 0; k < piece.size(); ++k)
             {
+              const Point<2> &u    = piece[k];
+              const Point<2> &prev = piece[(k + piece.size() - 1) % piece.size()];
+              const Point<2> &next = piece[(k + 1) % piece.size()];
+              // A vertex inside a boundary chord, between a neighbour on the
+              // chord and one off it: where a master edge crosses the slave
+              // edge.
+              bool     on_edge = false;
               Point<2> xi;
-              if (!project_along(slave, plane.point(u), plane.normal, xi))
+              for (const BoundaryChord &chord : chords)
+                {
+                  const Tensor<1, 2> c       = chord.b - chord.a;
+                  const auto         on_line = [&](const Point<2> &x) {
+                    return std::abs(cross_2d(c, x - chord.a)) <= 1e-10 * c.norm_square();
+                  };
+                  const double fraction = ((u - chord.a) * c) / c.norm_square();
+                  if (!on_line(u) || !(fraction > 1e-10 && fraction < 1. - 1e-10) ||
+                      on_line(prev) == on_line(next))
+                    continue;
+                  on_edge = on_line(prev) ?
+                              edge_crossing(slave, plane, chord, u, prev, next, xi) :
+                              edge_crossing(slave, plane, chord, u, next, prev, xi);
+                  break;
+                }
+              if (!on_edge && !project_along(slave, plane.point(u), plane.normal, xi))
                 {
                   polygons.clear();
                   return false;
@@ -506,7 +619,7 @@ namespace contact_fem
               for (unsigned int d = 0; d < 2; ++d)
                 if (std::abs(xi[d]) > 1. - 1e-10)
                   xi[d] = xi[d] > 0. ? 1. : -1.;
-              // Clipping repeats a vertex that lies on a clip edge.
+              // An edge crossing at a chord's end repeats its node.
               if (polygon.empty() || xi.distance(polygon.back()) > 1e-12)
                 polygon.push_back(xi);
             }

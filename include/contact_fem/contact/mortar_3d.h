@@ -145,7 +145,12 @@ namespace contact_fem
      * by the convex pieces of its fan from the centre if a curved edge bends
      * inward; robust for edges that coincide up to round-off); the vertices
      * of the intersection are mapped back along n0 onto the slave face
-     * (those within 1e-10 of its boundary put on it). Usually one convex
+     * (those within 1e-10 of its boundary put on it), except where a master
+     * edge crosses a chord of the slave boundary: that vertex goes where the
+     * master edge crosses the curved slave edge itself, so the overlap keeps
+     * the slave edge up to there (mapped back, it would land inside the face
+     * by the chord's sag and cut off the lens between chord and edge: 1e-4
+     * of a curved face that a master edge crosses). Usually one convex
      * polygon; a curved face can give a non-convex one or several. Returns
      * false, with no polygons, if the intersection has no area (faces apart,
      * or touching along an edge or at a corner: pieces below 1e-10 of the
