@@ -26,6 +26,7 @@
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/material/material.h>
 
+#include "unit_test_blocks.h"
 #include "unit_test_materials.h"
 
 #include <cmath>
@@ -48,22 +49,7 @@ namespace
     GridGenerator::hyper_rectangle(upper, Point<3>(0., 0., 1. + gap0),
                                    Point<3>(1., 1., 2. + gap0));
     GridGenerator::merge_triangulations(lower, upper, tria);
-    for (const auto &cell : tria.active_cell_iterators())
-      {
-        const bool is_upper = cell->center()[2] > 1.;
-        cell->set_material_id(is_upper ? 2 : 1);
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary())
-            {
-              const double z = cell->face(f)->center()[2];
-              if (is_upper && std::abs(z - (1. + gap0)) < 1e-12)
-                cell->face(f)->set_boundary_id(4);
-              else if (!is_upper && std::abs(z - 1.) < 1e-12)
-                cell->face(f)->set_boundary_id(3);
-              else
-                cell->face(f)->set_boundary_id(0);
-            }
-      }
+    label_stacked_blocks(tria, gap0);
   }
 
   /// Zero where |x| < 1e-13 (the printed values are hand values).

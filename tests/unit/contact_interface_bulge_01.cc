@@ -25,6 +25,7 @@
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/material/material.h>
 
+#include "unit_test_blocks.h"
 #include "unit_test_materials.h"
 
 #include <cmath>
@@ -61,22 +62,7 @@ namespace
     GridGenerator::subdivided_hyper_rectangle(lower, lower_cells, Point<dim>(), lower_high);
     GridGenerator::subdivided_hyper_rectangle(upper, upper_cells, upper_low, upper_high);
     GridGenerator::merge_triangulations(lower, upper, tria);
-    for (const auto &cell : tria.active_cell_iterators())
-      {
-        const bool is_upper = cell->center()[dim - 1] > 1.;
-        cell->set_material_id(is_upper ? 2 : 1);
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary())
-            {
-              const double z = cell->face(f)->center()[dim - 1];
-              if (is_upper && std::abs(z - (1. + gap0)) < 1e-12)
-                cell->face(f)->set_boundary_id(4);
-              else if (!is_upper && std::abs(z - 1.) < 1e-12)
-                cell->face(f)->set_boundary_id(3);
-              else
-                cell->face(f)->set_boundary_id(0);
-            }
-      }
+    label_stacked_blocks(tria, gap0);
   }
 
   template <int dim>
