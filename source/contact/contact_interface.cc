@@ -426,20 +426,34 @@ namespace contact_fem
 
   namespace
   {
-    /// The box of the nodes of @p line (a 2D face; dim is the space's),
-    /// or with @p whole_face one that holds all of it (a curved quadratic
-    /// line bulges beyond its nodes): the penetration check needs the
-    /// exact nearest face; the search's reach covers that bulge.
+    /// The nodes of @p line (a 2D face) as points of the space.
     template <int dim>
-    BoundingBox<dim>
-    face_box(const Mortar::LineFace &line, const bool whole_face = false)
+    std::vector<Point<dim>>
+    node_points(const Mortar::LineFace &line)
     {
       std::vector<Point<dim>> points;
       for (const auto &x : line.nodes)
         points.push_back(Point<dim>(x[0], x[1]));
-      if (!whole_face)
-        return BoundingBox<dim>(points);
-      return Mortar::interpolant_box(points, Mortar::lebesgue_constant(line.degree()));
+      return points;
+    }
+
+    /// The box of the nodes of @p line: the search's, whose reach covers
+    /// the bulge of a curved quadratic line beyond its nodes.
+    template <int dim>
+    BoundingBox<dim>
+    face_box(const Mortar::LineFace &line)
+    {
+      return BoundingBox<dim>(node_points<dim>(line));
+    }
+
+    /// A box that holds all of @p line, not only its nodes: the
+    /// penetration check needs the exact nearest face.
+    template <int dim>
+    BoundingBox<dim>
+    whole_face_box(const Mortar::LineFace &line)
+    {
+      return Mortar::interpolant_box(node_points<dim>(line),
+                                     Mortar::lebesgue_constant(line.degree()));
     }
 
     double
@@ -863,7 +877,7 @@ namespace contact_fem
             std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
             for (unsigned int f = 0; f < faces.size(); ++f)
               if (!faces[f].slave && faces[f].pair == p)
-                boxes.emplace_back(face_box<dim>(lines[f], true), f);
+                boxes.emplace_back(whole_face_box<dim>(lines[f]), f);
             if (boxes.empty())
               continue;
             const auto tree = pack_rtree(boxes);
@@ -881,7 +895,8 @@ namespace contact_fem
                 tree.query(boost::geometry::index::nearest(xd, 1),
                            std::back_inserter(nearest));
                 const auto  &first = lines[nearest[0].second];
-                const double bound = x.distance(first.point(closest_parameter(first, x)));
+                const double first_xi = closest_parameter(first, x);
+                const double bound    = x.distance(first.point(first_xi));
                 BoundingBox<dim> around(std::make_pair(xd, xd));
                 around.extend(bound * (1. + 1e-12) + 1e-300);
                 std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
@@ -891,7 +906,7 @@ namespace contact_fem
                 // Seeded with the nearest box's face, so that a closest face
                 // is found even if round-off keeps it out of the hits.
                 double       best      = bound;
-                double       best_xi   = closest_parameter(first, x);
+                double       best_xi   = first_xi;
                 unsigned int best_face = nearest[0].second;
                 for (const auto &hit : hits)
                   {

@@ -501,7 +501,8 @@ namespace contact_fem
             std::vector<std::pair<BoundingBox<3>, unsigned int>> nearest;
             tree.query(boost::geometry::index::nearest(x, 1), std::back_inserter(nearest));
             const auto  &first = quads[nearest[0].second];
-            const double bound = x.distance(first.point(closest_parameter(first, x)));
+            const Point<2> first_xi = closest_parameter(first, x);
+            const double   bound    = x.distance(first.point(first_xi));
             BoundingBox<3> around(std::make_pair(x, x));
             around.extend(bound * (1. + 1e-12) + 1e-300);
             std::vector<std::pair<BoundingBox<3>, unsigned int>> hits;
@@ -510,7 +511,7 @@ namespace contact_fem
             // Seeded with the nearest box's face, so that a closest face is
             // found even if round-off keeps it out of the hits.
             double       best      = bound;
-            Point<2>     best_xi   = closest_parameter(first, x);
+            Point<2>     best_xi   = first_xi;
             unsigned int best_face = nearest[0].second;
             for (const auto &hit : hits)
               {
