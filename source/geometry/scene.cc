@@ -5,6 +5,7 @@
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria.h>
 
+#include <contact_fem/core/format.h>
 #include <contact_fem/core/parameters.h>
 #include <contact_fem/geometry/scene.h>
 
@@ -115,9 +116,11 @@ namespace contact_fem
     prm.declare_entry("Initial gap", "0", Patterns::Double(),
                       "Distance g of the hemisphere's lowest point above the "
                       "plate top; negative values make the bodies overlap "
-                      "(initial penetration). A gap leaves the hemisphere free "
-                      "along z until it touches: load it by a prescribed "
-                      "displacement then.");
+                      "(initial penetration), by less than the Plate thickness. "
+                      "A gap leaves the hemisphere free along z until it touches: "
+                      "under a pressure the first solve needs nodes that start in "
+                      "contact (Contact/Active check factor), so a prescribed "
+                      "displacement is the safer load.");
     prm.declare_entry("Plate width", "4", Patterns::Double(0.),
                       "The quarter plate spans [0, w] x [0, w] in x and y; it "
                       "should exceed the expected contact radius.");
@@ -259,6 +262,11 @@ namespace contact_fem
     AssertThrow(std::abs(blocks.gap) < blocks.height,
                 ExcMessage("Geometry/Contact blocks/Initial gap: |gap| must be "
                            "smaller than the block height."));
+    AssertThrow(hertz_sphere.gap > -hertz_sphere.plate_thickness,
+                ExcMessage("Geometry/Hertz sphere/Initial gap = " + significant(hertz_sphere.gap, 6) +
+                           ": an overlap must be smaller than the Plate thickness (" +
+                           significant(hertz_sphere.plate_thickness, 6) +
+                           "); deeper, the hemisphere would pass through the plate."));
 
     if (type == "mesh file")
       {
