@@ -712,23 +712,29 @@ namespace contact_fem
                   Mortar::face_normal(lines[f], 0., faces[f].orientation);
                 // Segmentation first: the dual basis is built on the part of
                 // the slave face that the masters cover.
-                std::vector<unsigned int>               masters;
+                std::vector<unsigned int>               masters, facing;
                 std::vector<std::pair<double, double>> intervals;
+                std::vector<std::array<int, 2>>         bounding_ends;
                 for (const auto &hit : hits)
                   {
                     const unsigned int m = hit.second;
                     const Tensor<1, 2> n_master =
                       Mortar::face_normal(lines[m], 0., faces[m].orientation);
-                    double lower, upper;
-                    if (n_slave * n_master < 0. &&
-                        Mortar::overlap(lines[f], normals, lines[m], lower, upper))
+                    if (!(n_slave * n_master < 0.))
+                      continue;
+                    facing.push_back(m);
+                    double             lower, upper;
+                    std::array<int, 2> ends;
+                    if (Mortar::overlap(lines[f], normals, lines[m], lower, upper, &ends))
                       {
                         masters.push_back(m);
                         intervals.emplace_back(lower, upper);
+                        bounding_ends.push_back(ends);
                       }
                   }
                 if (masters.empty())
                   continue;
+                check_tiling(f, lines, masters, intervals, bounding_ends, facing);
                 const FullMatrix<double> A =
                   Mortar::dual_basis_coefficients(lines[f], intervals);
                 bool overlapping = false;
@@ -775,6 +781,77 @@ namespace contact_fem
                           surface_node_normals(lines, lengths, true),
                           surface_node_normals(lines, lengths, false));
       }
+  }
+
+  template <int dim>
+  void
+  ContactInterface<dim>::check_tiling(const unsigned int                            f,
+                                      const std::vector<Mortar::LineFace>          &lines,
+                                      const std::vector<unsigned int>              &masters,
+                                      const std::vector<std::pair<double, double>> &intervals,
+                                      const std::vector<std::array<int, 2>> &bounding_ends,
+                                      const std::vector<unsigned int>       &facing) const
+  {
+    // Walk the covered intervals of the slave face in order. Every part
+    // left uncovered must end at the rim of the master surface: at a slave
+    // end, or at a master node that no other facing master face shares.
+    // A shared node there means that a master face which covers the gap was
+    // lost by the segmentation, and the dual weights D_j of the slave nodes
+    // would shrink (nodal pressures = force / D_j spike): stop instead.
+    std::vector<unsigned int> order(masters.size());
+    for (unsigned int k = 0; k < order.size(); ++k)
+      order[k] = k;
+    std::sort(order.begin(), order.end(), [&](const unsigned int a, const unsigned int b) {
+      return intervals[a].first < intervals[b].first;
+    });
+    // Near contact (a master node closer to its slave image than a slave
+    // face length) the facing master faces are a graph over the slave face,
+    // so their overlaps must join; farther away the normal lines may cross
+    // before they reach the master, and a gap is no sign of a lost face.
+    // side: 0 for the lower end of interval k, 1 for its upper end.
+    const double slave_length = lines[f].nodes[0].distance(lines[f].nodes[1]);
+    const auto   check_end    = [&](const unsigned int k, const unsigned int side) {
+      const int end = bounding_ends[k][side];
+      if (end < 0)
+        return;
+      const double   xi = side == 0 ? intervals[k].first : intervals[k].second;
+      const Point<2> x  = lines[masters[k]].nodes[end];
+      if (x.distance(lines[f].point(xi)) > slave_length)
+        return;
+      const unsigned int node = faces[masters[k]].nodes[end];
+      for (const unsigned int m : facing)
+        AssertThrow(m == masters[k] ||
+                      std::find(faces[m].nodes.begin(), faces[m].nodes.begin() + 2, node) ==
+                        faces[m].nodes.begin() + 2,
+                    ExcMessage("Contact pair " + std::to_string(faces[f].pair) +
+                               ": the master faces leave a hole under the slave face from " +
+                               Mortar::coordinates_text(lines[f].nodes[0]) + " to " +
+                               Mortar::coordinates_text(lines[f].nodes[1]) +
+                               " at the master node " + Mortar::coordinates_text(x) +
+                               ", inside the master surface. The mortar segmentation "
+                               "lost a face; the contact pressures would be wrong."));
+    };
+    // Overlaps meet at the slave image of their shared master node up to
+    // the precision of that image.
+    constexpr double meeting_tolerance = 1e-10;
+    double           reach             = -1.;
+    int              reach_face        = -1;
+    for (const unsigned int k : order)
+      {
+        if (intervals[k].first > reach + meeting_tolerance)
+          {
+            if (reach_face >= 0)
+              check_end(reach_face, 1);
+            check_end(k, 0);
+          }
+        if (intervals[k].second > reach)
+          {
+            reach      = intervals[k].second;
+            reach_face = k;
+          }
+      }
+    if (reach < 1. - meeting_tolerance)
+      check_end(reach_face, 1);
   }
 
   template <int dim>

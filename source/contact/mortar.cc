@@ -4,6 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <limits>
+#include <string>
+#include <utility>
 
 namespace contact_fem
 {
@@ -58,6 +63,23 @@ namespace contact_fem
         }
       return BoundingBox<spacedim>(std::make_pair(lower, upper));
     }
+
+    template <int spacedim>
+    std::string
+    coordinates_text(const Point<spacedim> &x)
+    {
+      std::ostringstream text;
+      text << std::setprecision(6) << '(';
+      for (unsigned int d = 0; d < spacedim; ++d)
+        text << (d > 0 ? ", " : "") << x[d];
+      text << ')';
+      return text.str();
+    }
+
+    template std::string
+    coordinates_text(const Point<2> &);
+    template std::string
+    coordinates_text(const Point<3> &);
 
     template BoundingBox<2>
     interpolant_box(const std::vector<Point<2>> &, const double);
@@ -169,61 +191,138 @@ namespace contact_fem
       return A;
     }
 
+    namespace
+    {
+      /// (face(eta) - x) x d for each face node's parameter: the offsets of
+      /// the face from the line through @p x along @p d. The differences
+      /// x_i - x are formed first, so that the round-off is that of the
+      /// face's size, not of the coordinates' distance from the origin.
+      double
+      line_offset(const LineFace &face, const Point<2> &x, const Tensor<1, 2> &d, const double eta)
+      {
+        Tensor<1, 2> r;
+        for (unsigned int i = 0; i < face.nodes.size(); ++i)
+          r += shape_value(face.degree(), i, eta) * (face.nodes[i] - x);
+        return cross(r, d);
+      }
+
+      /**
+       * A root of @p f (returning the value and the derivative) between
+       * @p a and @p b, where f(a) and f(b) differ in sign: Newton steps
+       * that stay in the bracket, bisection otherwise. The bracket shrinks
+       * at every step, so it ends at the precision that double arithmetic
+       * reaches, whatever the round-off of f.
+       */
+      template <typename Function>
+      double
+      bracketed_root(const Function &f, double a, double b)
+      {
+        double fa = f(a).first;
+        if (fa == 0.)
+          return a;
+        constexpr double epsilon = std::numeric_limits<double>::epsilon();
+        double x = 0.5 * (a + b), step = std::abs(b - a), step_before = step;
+        for (unsigned int it = 0; it < 200; ++it)
+          {
+            const auto [fx, dfx] = f(x);
+            if (fx == 0.)
+              return x;
+            if ((fx < 0.) == (fa < 0.))
+              {
+                a  = x;
+                fa = fx;
+              }
+            else
+              b = x;
+            const double newton = x - fx / dfx;
+            step_before         = step;
+            // Bisect where Newton leaves the bracket or does not halve the
+            // step of two iterations ago.
+            if (!(std::isfinite(newton) && (newton - a) * (newton - b) < 0.) ||
+                std::abs(newton - x) > 0.5 * step_before)
+              {
+                step = 0.5 * std::abs(b - a);
+                x    = 0.5 * (a + b);
+              }
+            else
+              {
+                step = std::abs(newton - x);
+                x    = newton;
+              }
+            if (step <= 4. * epsilon * std::max(1., std::abs(x)))
+              return x;
+          }
+        return x;
+      }
+    } // namespace
+
     bool
     project_along(const LineFace     &face,
                   const Point<2>     &x,
                   const Tensor<1, 2> &direction,
                   double             &eta)
     {
-      // f(eta) = (face(eta) - x) x d; linear in eta for straight faces.
-      eta = 0.;
-      const double scale = face.tangent(0.).norm() * direction.norm();
-      for (unsigned int it = 0; it < 20; ++it)
+      // f(eta) = (face(eta) - x) x d: linear in eta on straight faces,
+      // quadratic on curved ones. Where f changes sign between the face's
+      // ends the line crosses the face: the root is bracketed. Otherwise the
+      // line passes beside the face, and the continuation of the chord says
+      // on which side.
+      const double f_begin = line_offset(face, x, direction, -1.);
+      const double f_end   = line_offset(face, x, direction, 1.);
+      if ((f_begin <= 0.) != (f_end <= 0.) || f_begin == 0. || f_end == 0.)
         {
-          const double f  = cross(face.point(eta) - x, direction);
-          const double df = cross(face.tangent(eta), direction);
-          if (std::abs(df) < 1e-12 * scale)
-            return false;
-          const double step = f / df;
-          eta -= step;
-          if (std::abs(step) < 1e-13)
-            return std::isfinite(eta);
+          eta = bracketed_root(
+            [&](const double e) {
+              return std::make_pair(line_offset(face, x, direction, e),
+                                    cross(face.tangent(e), direction));
+            },
+            -1.,
+            1.);
+          return true;
         }
-      return false;
+      // No crossing (a curved face may also be crossed twice, which the
+      // interpolated normals of neighbouring faces never ask for).
+      if (f_end == f_begin)
+        return false;
+      eta = -1. - 2. * f_begin / (f_end - f_begin);
+      return std::isfinite(eta);
     }
 
     namespace
     {
-      /// Slave parameter xi whose point, moved along the interpolated nodal
-      /// normal n(xi), passes through @p x: (x - s(xi)) x n(xi) = 0. Newton
-      /// from the given xi (a quadratic equation for straight slave faces:
-      /// the start must be near the wanted root).
-      bool
-      slave_image(const LineFace                   &slave,
-                  const std::vector<Tensor<1, 2>> &normals,
-                  const Point<2>                  &x,
-                  double                          &xi)
+      /// (x - s(xi)) x n(xi), s the slave face, n its interpolated nodal
+      /// normal, and its derivative; differences formed as in line_offset().
+      std::pair<double, double>
+      normal_line_offset(const LineFace                   &slave,
+                         const std::vector<Tensor<1, 2>> &normals,
+                         const Point<2>                  &x,
+                         const double                     xi)
       {
         const unsigned int p = slave.shape_degree();
-        for (unsigned int it = 0; it < 30; ++it)
+        Tensor<1, 2>       n, dn, r;
+        for (unsigned int i = 0; i <= p; ++i)
           {
-            Tensor<1, 2> n, dn;
-            for (unsigned int i = 0; i <= p; ++i)
-              {
-                n += shape_value(p, i, xi) * normals[i];
-                dn += shape_derivative(p, i, xi) * normals[i];
-              }
-            const Tensor<1, 2> r  = x - slave.point(xi);
-            const double       f  = cross(r, n);
-            const double       df = cross(-slave.tangent(xi), n) + cross(r, dn);
-            if (std::abs(df) < 1e-14 * slave.tangent(xi).norm())
-              return false;
-            const double step = f / df;
-            xi -= step;
-            if (std::abs(step) < 1e-13)
-              return std::isfinite(xi);
+            n += shape_value(p, i, xi) * normals[i];
+            dn += shape_derivative(p, i, xi) * normals[i];
           }
-        return false;
+        for (unsigned int i = 0; i < slave.nodes.size(); ++i)
+          r += shape_value(slave.degree(), i, xi) * (x - slave.nodes[i]);
+        return {cross(r, n), cross(-slave.tangent(xi), n) + cross(r, dn)};
+      }
+
+      /// Slave parameter xi in [-1, 1] whose point, moved along the
+      /// interpolated nodal normal n(xi), passes through @p x, for a point
+      /// @p x that lies between the normal lines of the slave's end nodes
+      /// (a master end inside the slave's shadow). At round-off distance of
+      /// an end line the nearer end is the answer.
+      double
+      slave_image(const LineFace &slave, const std::vector<Tensor<1, 2>> &normals, const Point<2> &x)
+      {
+        const auto f = [&](const double xi) { return normal_line_offset(slave, normals, x, xi); };
+        const double g_begin = f(-1.).first, g_end = f(1.).first;
+        if ((g_begin < 0.) == (g_end < 0.) && g_begin != 0. && g_end != 0.)
+          return std::abs(g_begin) < std::abs(g_end) ? -1. : 1.;
+        return bracketed_root(f, -1., 1.);
       }
     } // namespace
 
@@ -232,13 +331,14 @@ namespace contact_fem
             const std::vector<Tensor<1, 2>> &slave_normals,
             const LineFace                   &master,
             double                           &lower,
-            double                           &upper)
+            double                           &upper,
+            std::array<int, 2>              *bounding_master_ends)
     {
       // Where do the slave ends land on the master? The map xi -> eta is
       // monotone on the face, so the overlap follows from eta(-1), eta(1)
-      // and, for master ends in between, the slave images of those ends
-      // (found by Newton from the linear guess, which picks the root inside
-      // the face; the other root of the quadratic lies far outside).
+      // and, for master ends in between, the slave images of those ends.
+      // Every decision is geometric: a slave end either lands on the master
+      // face or beside it on a known side; projections do not fail.
       double eta_a = 0., eta_b = 0.;
       if (!project_along(master, slave.nodes[0], slave_normals[0], eta_a) ||
           !project_along(master, slave.nodes[1], slave_normals[1], eta_b))
@@ -248,23 +348,31 @@ namespace contact_fem
         return false;
       lower = -1.;
       upper = 1.;
-      for (const double end : {-1., 1.})
-        if (end > std::min(eta_a, eta_b) && end < std::max(eta_a, eta_b))
-          {
-            double xi = -1. + 2. * (end - eta_a) / (eta_b - eta_a);
-            if (!slave_image(slave, slave_normals, master.point(end), xi))
-              return false;
-            xi = std::max(-1., std::min(1., xi));
-            // The part of the slave face beyond this master end is outside.
-            const bool beyond_is_upper = (eta_b - eta_a) * end > 0.;
-            if (beyond_is_upper)
-              upper = std::min(upper, xi);
-            else
-              lower = std::max(lower, xi);
-          }
+      std::array<int, 2> ends = {{-1, -1}};
+      for (const int end : {0, 1})
+        {
+          const double eta = end == 0 ? -1. : 1.;
+          if (eta > std::min(eta_a, eta_b) && eta < std::max(eta_a, eta_b))
+            {
+              const double xi = slave_image(slave, slave_normals, master.point(eta));
+              // The part of the slave face beyond this master end is outside.
+              const bool beyond_is_upper = (eta_b - eta_a) * eta > 0.;
+              if (beyond_is_upper && xi < upper)
+                {
+                  upper   = xi;
+                  ends[1] = end;
+                }
+              else if (!beyond_is_upper && xi > lower)
+                {
+                  lower   = xi;
+                  ends[0] = end;
+                }
+            }
+        }
+      if (bounding_master_ends)
+        *bounding_master_ends = ends;
       // Overlaps shorter than this are round-off of a shared end point.
       return upper - lower >= 1e-10;
-
     }
 
     bool
@@ -300,9 +408,18 @@ namespace contact_fem
             n += shape_value(ps, i, xi) * slave_normals[i];
           const Point<2> x_slave = slave.point(xi);
           double         eta     = 0.;
-          if (!project_along(master, x_slave, n, eta))
-            continue;
-          // Guard against round-off just outside the master face.
+          // Inside the overlap the normal line crosses the master face, up
+          // to round-off at the overlap's ends.
+          constexpr double round_off_beyond_end = 1e-8;
+          AssertThrow(project_along(master, x_slave, n, eta) &&
+                        std::abs(eta) <= 1. + round_off_beyond_end,
+                      ExcMessage("Mortar integration: the slave face from " +
+                                 coordinates_text(slave.nodes[0]) + " to " +
+                                 coordinates_text(slave.nodes[1]) +
+                                 " has a quadrature point of its overlap that does not "
+                                 "project onto the master face from " +
+                                 coordinates_text(master.nodes[0]) + " to " +
+                                 coordinates_text(master.nodes[1]) + "."));
           eta = std::max(-1., std::min(1., eta));
           const Tensor<1, 2> separation = master.point(eta) - x_slave;
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace contact_fem
 {
@@ -505,14 +506,23 @@ namespace contact_fem
                   Point<2>           &eta)
     {
       // Residual r(eta, t) = face(eta) - x - t d; linear in eta and t for
-      // flat parallelograms, bilinear (or biquadratic) otherwise.
-      eta      = Point<2>();
-      double t = 0.;
+      // flat parallelograms, bilinear (or biquadratic) otherwise. It is
+      // formed from the differences x_i - x, so that its round-off is that
+      // of the face's size, not of the coordinates' distance from the
+      // origin; Newton then reaches a parameter step of round-off size.
+      std::vector<Tensor<1, 3>> offsets(face.nodes.size());
+      for (unsigned int i = 0; i < face.nodes.size(); ++i)
+        offsets[i] = face.nodes[i] - x;
+      eta               = Point<2>();
+      double t          = 0.;
+      double last_step  = std::numeric_limits<double>::max();
       for (unsigned int it = 0; it < 30; ++it)
         {
-          const auto         tangents = face.tangents(eta);
-          const Tensor<1, 3> r        = face.point(eta) - x - t * direction;
-          Tensor<2, 3>       J;
+          const auto   tangents = face.tangents(eta);
+          Tensor<1, 3> r        = -t * direction;
+          for (unsigned int i = 0; i < offsets.size(); ++i)
+            r += quad_shape_value(face.degree(), i, eta) * offsets[i];
+          Tensor<2, 3> J;
           for (unsigned int i = 0; i < 3; ++i)
             {
               J[i][0] = tangents[0][i];
@@ -528,8 +538,15 @@ namespace contact_fem
           t -= step[2];
           if (!(std::abs(eta[0]) < 1e3 && std::abs(eta[1]) < 1e3))
             return false;
-          if (std::abs(step[0]) + std::abs(step[1]) < 1e-13)
+          // Converged at a step of round-off size, or where the step stops
+          // shrinking at a size that only round-off explains.
+          const double size = std::abs(step[0]) + std::abs(step[1]);
+          constexpr double round_off = 64. * std::numeric_limits<double>::epsilon();
+          if (size < 1e-13 ||
+              (size < round_off * (1. + std::abs(eta[0]) + std::abs(eta[1])) * 1e3 &&
+               size >= 0.5 * last_step))
             return true;
+          last_step = size;
         }
       return false;
     }
@@ -663,8 +680,13 @@ namespace contact_fem
       const auto add_point = [&](const Point<2> &xi, const double jxw) {
         const Point<3> x_slave = slave.point(xi);
         Point<2>       eta;
-        if (!project_along(master, x_slave, interpolated_normal(slave, slave_normals, xi), eta))
-          return;
+        // The overlap's points project onto the master: a failure here is
+        // not a geometric fact, and skipping the point would shrink D.
+        AssertThrow(project_along(master, x_slave, interpolated_normal(slave, slave_normals, xi), eta),
+                    ExcMessage("Mortar integration: a quadrature point of the slave face "
+                               "centred at " + coordinates_text(slave.point(Point<2>())) +
+                               " does not project onto the master face centred at " +
+                               coordinates_text(master.point(Point<2>())) + "."));
         // The segmentation projected along n0, the normal field may differ
         // slightly: stay on the master face (partition of unity kept).
         eta                           = Point<2>(clamp(eta[0]), clamp(eta[1]));

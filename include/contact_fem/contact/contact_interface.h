@@ -310,6 +310,21 @@ namespace contact_fem
                          const std::vector<double>           &lengths,
                          const bool                           slave) const;
 
+    /// Stops the run if the overlaps @p intervals (slave parameters) of
+    /// slave face @p f with the master faces @p masters leave a part of the
+    /// face uncovered that does not end at the rim of the master surface
+    /// (a slave end, or a master end node that none of the other @p facing
+    /// master faces shares): a hole in the tiling would shrink the dual
+    /// weights D_j silently (2D). @p bounding_ends: what Mortar::overlap()
+    /// says bounds each interval.
+    void
+    check_tiling(const unsigned int                            f,
+                 const std::vector<Mortar::LineFace>          &lines,
+                 const std::vector<unsigned int>              &masters,
+                 const std::vector<std::pair<double, double>> &intervals,
+                 const std::vector<std::array<int, 2>>        &bounding_ends,
+                 const std::vector<unsigned int>              &facing) const;
+
     /// Adds the operators @p ops of slave face @p f against master face
     /// @p m to the sums of the slave nodes of @p f (D, M, weighted gap) and
     /// records the pair as coupled. 2D (Mortar::SegmentOperators) and 3D

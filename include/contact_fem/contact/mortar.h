@@ -8,6 +8,8 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include <array>
+#include <string>
 #include <vector>
 
 namespace contact_fem
@@ -98,14 +100,22 @@ namespace contact_fem
     /**
      * The slave parameter interval [lower, upper] whose points, moved along
      * the interpolated nodal normals, land on @p master. Returns false if
-     * there is none.
+     * there is none. If @p bounding_master_ends is given, it receives for
+     * lower and upper the master node (0 or 1) whose slave image bounds
+     * them, or -1 where a slave end does.
      */
     bool
     overlap(const LineFace                   &slave,
             const std::vector<Tensor<1, 2>> &slave_normals,
             const LineFace                   &master,
             double                           &lower,
-            double                           &upper);
+            double                           &upper,
+            std::array<int, 2>              *bounding_master_ends = nullptr);
+
+    /// "(x, y)" or "(x, y, z)" with 6 significant digits, for messages.
+    template <int spacedim>
+    std::string
+    coordinates_text(const Point<spacedim> &x);
 
     /// The mortar blocks of one slave face against one master face.
     struct SegmentOperators

@@ -104,10 +104,11 @@ namespace contact_fem
     Tensor<1, dim> t;
     if constexpr (dim == 2)
       {
+        // Turned counterclockwise, whatever the direction: an orientation
+        // taken from the global axes would flip between neighbouring nodes
+        // (and between load steps) on an interface along the y axis.
         t[0] = -normal[1];
         t[1] = normal[0];
-        if (t[0] < 0. || (t[0] == 0. && t[1] < 0.))
-          t *= -1.;
       }
     else
       AssertThrow(false, ExcMessage("the contact tangent is only defined in 2D"));

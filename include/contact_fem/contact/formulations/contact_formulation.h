@@ -237,8 +237,9 @@ namespace contact_fem
     }
 
     /// The unit tangent of the 2D contact kinematics at a node with unit
-    /// normal @p normal: the normal turned by 90 degrees, oriented so that
-    /// its x component is positive (or its y component, if x vanishes).
+    /// normal @p normal (out of the slave): the normal turned by 90 degrees
+    /// counterclockwise, so that the frame turns with the model (for a
+    /// slave above its master, normal -y, the tangent is +x).
     static Tensor<1, dim>
     tangent(const Tensor<1, dim> &normal);
 

@@ -1,0 +1,261 @@
+#!/usr/bin/env python3
+"""Metamorphic tests: one scene, transformed, must give the same physics.
+
+A scene template (name.prm.in) describes the scene in its own frame; the
+placeholders below put it into the frame of a variant. Each variant is run,
+and the invariant results of its summary.json are compared with those of the
+untransformed scene, scaled by the known factors (pressure with the moduli,
+forces with moduli x length^(dim-1), energies with moduli x length^dim).
+
+Placeholders (p denotes a point of the scene's own frame):
+  @MESH(file)@      the mesh file, transformed and written beside the run
+  @P(x, y[, z])@    a point p, transformed
+  @L(v)@            a length v, scaled
+  @E(v)@            a modulus or stress v, scaled
+  @STRESS(expr)@    a stress expression, scaled
+  @x@ @y@ @z@       the scene-frame coordinates as expressions of x, y, z
+  @VEC(a, b[, c])@  a traction vector (expressions), rotated and scaled
+  @AXES(xyz)@       support components, mapped by the rotation (quarter turns)
+  @MAT(id)@         a material id, after the swap of the ids 1 and 2
+
+Variants: name=kind:value, kinds translate (a vector in units of the model
+size), rotate (quarter turns about z), scale_length, scale_moduli, swap.
+"""
+import argparse
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+
+
+class Variant:
+    def __init__(self, spec, dim, size):
+        self.name, _, rule = spec.partition("=")
+        kind, _, value = rule.partition(":")
+        self.dim = dim
+        self.shift = [0.0] * 3
+        self.turns = 0
+        self.length = 1.0
+        self.moduli = 1.0
+        self.swap = False
+        if kind == "translate":
+            parts = [float(v) * size for v in value.split(",")]
+            self.shift[: len(parts)] = parts
+        elif kind == "rotate":
+            self.turns = int(value) % 4
+        elif kind == "scale_length":
+            self.length = float(value)
+        elif kind == "scale_moduli":
+            self.moduli = float(value)
+        elif kind == "swap":
+            self.swap = True
+        elif kind != "identity":
+            sys.exit(f"metamorphic.py: unknown variant kind '{kind}' in '{spec}'")
+
+    def cos_sin(self):
+        return [(1, 0), (0, 1), (-1, 0), (0, -1)][self.turns]
+
+    def point(self, p):
+        c, s = self.cos_sin()
+        p = list(p) + [0.0] * (3 - len(p))
+        q = [c * p[0] - s * p[1], s * p[0] + c * p[1], p[2]]
+        return [self.length * q[i] + self.shift[i] for i in range(self.dim)]
+
+    def local(self, axis):
+        # Scene-frame coordinate as an expression of the variant's x, y, z.
+        c, s = self.cos_sin()
+        X = f"(x - ({self.shift[0]!r}))"
+        Y = f"(y - ({self.shift[1]!r}))"
+        Z = f"(z - ({self.shift[2]!r}))"
+        expr = {"x": f"({c}*{X} + {s}*{Y})", "y": f"({-s}*{X} + {c}*{Y})", "z": Z}[axis]
+        return f"({expr}/{self.length!r})"
+
+    def material(self, m):
+        return {1: 2, 2: 1}.get(m, m) if self.swap else m
+
+
+def fmt(v):
+    return repr(float(v))
+
+
+def split_top_level(text):
+    """Splits at the commas that are not inside parentheses."""
+    parts, depth, current = [], 0, ""
+    for ch in text:
+        if ch == "," and depth == 0:
+            parts.append(current.strip())
+            current = ""
+            continue
+        depth += {"(": 1, ")": -1}.get(ch, 0)
+        current += ch
+    return parts + [current.strip()]
+
+
+def transform_mesh(source, target, v):
+    with open(source) as f:
+        lines = f.read().splitlines()
+    out, section, count = [], None, 0
+    for line in lines:
+        if line.startswith("$"):
+            section = line if not line.startswith("$End") else None
+            count = -1
+            out.append(line)
+            continue
+        if section == "$MeshFormat":
+            if not line.startswith("2.2 0"):
+                sys.exit(f"metamorphic.py: {source}: only ASCII MSH 2.2 is transformed")
+        elif section == "$Nodes" and count >= 0:
+            fields = line.split()
+            x = [float(t) for t in fields[1:4]]
+            y = v.point(x[: v.dim]) + x[v.dim:]
+            line = " ".join([fields[0]] + [fmt(t) for t in y])
+        elif section == "$Elements" and count >= 0:
+            fields = line.split()
+            top = {2: {3}, 3: {5}}[v.dim]  # quadrilaterals, hexahedra
+            if int(fields[1]) in top:
+                fields[3] = str(v.material(int(fields[3])))
+            line = " ".join(fields)
+        count += 1
+        out.append(line)
+    with open(target, "w") as f:
+        f.write("\n".join(out) + "\n")
+
+
+def expand(text, v, template_dir, work_dir):
+    c, s = v.cos_sin()
+
+    def numbers(args):
+        return [float(a) for a in args.split(",")]
+
+    def mesh(m):
+        source = os.path.join(template_dir, m.group(1).strip())
+        target = os.path.join(work_dir, v.name + "_" + os.path.basename(source))
+        transform_mesh(source, target, v)
+        return target
+
+    def vec(m):
+        parts = split_top_level(m.group(1))
+        a, b = parts[0], parts[1]
+        rotated = [f"{v.moduli!r}*({c}*({a}) - ({s})*({b}))", f"{v.moduli!r}*({s}*({a}) + {c}*({b}))"]
+        rotated += [f"{v.moduli!r}*({p})" for p in parts[2:]]
+        return ", ".join(rotated)
+
+    def axes(m):
+        mapping = {"x": "x", "y": "y", "z": "z"}
+        if v.turns % 2 == 1:
+            mapping = {"x": "y", "y": "x", "z": "z"}
+        return "".join(sorted(mapping[a] for a in m.group(1).strip()))
+
+    rules = [
+        (r"@MESH\(([^)]*)\)@", mesh),
+        (r"@P\(([^)]*)\)@", lambda m: ", ".join(fmt(t) for t in v.point(numbers(m.group(1))))),
+        (r"@L\(([^)]*)\)@", lambda m: fmt(v.length * float(m.group(1)))),
+        (r"@E\(([^)]*)\)@", lambda m: fmt(v.moduli * float(m.group(1)))),
+        (r"@STRESS\((.*?)\)@", lambda m: f"{v.moduli!r}*({m.group(1)})"),
+        (r"@VEC\((.*?)\)@", vec),
+        (r"@AXES\(([^)]*)\)@", axes),
+        (r"@MAT\(([^)]*)\)@", lambda m: str(v.material(int(m.group(1))))),
+        (r"@([xyz])@", lambda m: v.local(m.group(1))),
+    ]
+    for pattern, replace in rules:
+        text = re.sub(pattern, replace, text)
+    return text
+
+
+def run(exe, prm_text, name, work_dir, mpi):
+    prm = os.path.join(work_dir, name + ".prm")
+    out_dir = os.path.join(work_dir, "results-" + name)
+    with open(prm, "w") as f:
+        f.write(prm_text + f"\nset Output directory = {out_dir}\n")
+    command = ([mpi, "-np", "2"] if mpi else []) + [exe, prm]
+    result = subprocess.run(command, capture_output=True, text=True)
+    if result.returncode != 0:
+        print(result.stdout[-3000:], result.stderr[-3000:])
+        sys.exit(f"metamorphic.py: variant '{name}' failed with exit code {result.returncode}")
+    with open(os.path.join(out_dir, "summary.json")) as f:
+        return json.load(f)
+
+
+def invariants(summary, v, dim):
+    """(name, value, unit factor) of the results that the transformation
+    must leave unchanged once divided by their unit factor."""
+    stress, force, energy = v.moduli, v.moduli * v.length ** (dim - 1), v.moduli * v.length ** dim
+    cycle = summary["cycles"][-1]
+    contact = cycle.get("contact", {})
+    result = [("status", summary["status"], None), ("n_dofs", cycle["n_dofs"], None)]
+    result += [(f"newton_iterations[{k}]", step["newton_iterations"], None)
+               for k, step in enumerate(cycle["load_steps"])]
+    for key, unit in [("slave_nodes", None), ("active_slave_nodes", None),
+                      ("max_contact_pressure", stress), ("min_active_contact_pressure", stress),
+                      ("total_contact_force", force), ("stick_nodes", None), ("slip_nodes", None),
+                      ("total_tangential_contact_force", force)]:
+        if key in contact:
+            result.append(("contact/" + key, contact[key], unit))
+    for key in ["applied_load", "support_reaction"]:
+        if key in cycle.get("reaction", {}):
+            result.append(("reaction/" + key, cycle["reaction"][key], force))
+    result.append(("strain_energy", cycle["strain_energy"], energy))
+    return result
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--executable", required=True)
+    parser.add_argument("--template", required=True)
+    parser.add_argument("--size", type=float, default=1.0, help="model size (for translations)")
+    parser.add_argument("--tolerance", type=float, default=1e-7, help="relative tolerance")
+    parser.add_argument("--mpirun", default="", help="run the variants on 2 ranks with this mpirun")
+    parser.add_argument("variants", nargs="+")
+    args = parser.parse_args()
+
+    with open(args.template) as f:
+        template = f.read()
+    dim = int(re.search(r"set\s+Dimension\s*=\s*(\d)", template).group(1)) \
+        if re.search(r"set\s+Dimension\s*=\s*(\d)", template) else 2
+    template_dir = os.path.dirname(os.path.abspath(args.template))
+    work_dir = os.getcwd()
+    base = Variant("identity=identity:", dim, args.size)
+    reference = invariants(run(args.executable, expand(template, base, template_dir, work_dir),
+                               "identity", work_dir, args.mpirun), base, dim)
+    print(f"{os.path.basename(args.template)}: reference")
+    for name, value, _ in reference:
+        print(f"  {name} = {value}")
+    failures = 0
+    for spec in args.variants:
+        v = Variant(spec, dim, args.size)
+        results = invariants(run(args.executable, expand(template, v, template_dir, work_dir),
+                                 v.name, work_dir, args.mpirun), v, dim)
+        different, worst = 0, 0.0
+        for (name, ref, _), (_, value, unit) in zip(reference, results):
+            if unit is None:
+                ok = value == ref
+            else:
+                change = abs(value / unit - ref)
+                worst = max(worst, change / max(abs(ref), 1e-300))
+                ok = change <= args.tolerance * max(abs(ref), abs_scale(reference, name))
+            if not ok:
+                different += 1
+                shown = value if unit is None else value / unit
+                print(f"  {v.name}: {name} = {shown} (in the scene's units), reference {ref}")
+        failures += different
+        print(f"{v.name}: {'same' if different == 0 else 'DIFFERENT'} "
+              f"(largest relative change {worst:.1e})")
+    print(f"{len(args.variants)} variants, {failures} differences")
+    sys.exit(1 if failures else 0)
+
+
+def abs_scale(reference, name):
+    # Forces near zero are compared with the largest force of the scene.
+    forces = [abs(v) for n, v, _ in reference if n.startswith("reaction/") or n.endswith("_force")]
+    pressures = [abs(v) for n, v, _ in reference if n.endswith("pressure")]
+    if name.endswith("pressure"):
+        return max(pressures, default=0.0)
+    if name.startswith("reaction/") or name.endswith("_force"):
+        return max(forces, default=0.0)
+    return 0.0
+
+
+if __name__ == "__main__":
+    main()
