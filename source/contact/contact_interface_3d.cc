@@ -85,6 +85,43 @@ namespace contact_fem
       return xi;
     }
 
+    /// Distance in the plane from the segment [a, b] to the convex polygon
+    /// @p ring (counterclockwise or clockwise): 0 where they meet.
+    double
+    planar_distance(const Point<2> &a, const Point<2> &b, const std::vector<Point<2>> &ring)
+    {
+      const auto cross = [](const Tensor<1, 2> &u, const Tensor<1, 2> &v) {
+        return u[0] * v[1] - u[1] * v[0];
+      };
+      const auto point_to_segment = [](const Point<2> &x, const Point<2> &p, const Point<2> &q) {
+        const Tensor<1, 2> d = q - p;
+        const double t = d.norm_square() > 0. ? std::clamp((x - p) * d / d.norm_square(), 0., 1.) : 0.;
+        return x.distance(p + t * d);
+      };
+      // Inside: on the same side of every edge.
+      bool positive = true, negative = true;
+      for (std::size_t k = 0; k < ring.size(); ++k)
+        {
+          const double side = cross(ring[(k + 1) % ring.size()] - ring[k], a - ring[k]);
+          positive          = positive && side >= 0.;
+          negative          = negative && side <= 0.;
+        }
+      if (positive || negative)
+        return 0.;
+      double distance = std::numeric_limits<double>::max();
+      for (std::size_t k = 0; k < ring.size(); ++k)
+        {
+          const Point<2> &p = ring[k], &q = ring[(k + 1) % ring.size()];
+          const double    s1 = cross(q - p, a - p), s2 = cross(q - p, b - p);
+          const double    s3 = cross(b - a, p - a), s4 = cross(b - a, q - a);
+          if (((s1 < 0.) != (s2 < 0.)) && ((s3 < 0.) != (s4 < 0.)))
+            return 0.;
+          distance = std::min({distance, point_to_segment(a, p, q), point_to_segment(b, p, q),
+                               point_to_segment(p, a, b), point_to_segment(q, a, b)});
+        }
+      return distance;
+    }
+
     /// Whether @p quad is a flat parallelogram with its nodes where the
     /// bilinear map of its vertices puts them.
     bool
@@ -92,15 +129,17 @@ namespace contact_fem
     {
       const auto  &x         = quad.nodes;
       const double tolerance = 1e-12 * x[0].distance(x[3]);
-      if ((x[0] + x[3] - x[1] - x[2]).norm() > tolerance)
+      // Differences first: the round-off is then that of the face's size,
+      // not of its distance from the origin.
+      if (((x[3] - x[1]) - (x[2] - x[0])).norm() > tolerance)
         return false;
       for (unsigned int k = 4; k < x.size(); ++k)
         {
           const Point<2> xi = Mortar::quad_node_parameter(2, k);
-          Point<3>       bilinear;
-          for (unsigned int v = 0; v < 4; ++v)
-            bilinear += Mortar::quad_shape_value(1, v, xi) * x[v];
-          if (x[k].distance(bilinear) > tolerance)
+          Tensor<1, 3>   bilinear;
+          for (unsigned int v = 1; v < 4; ++v)
+            bilinear += Mortar::quad_shape_value(1, v, xi) * (x[v] - x[0]);
+          if (((x[k] - x[0]) - bilinear).norm() > tolerance)
             return false;
         }
       return true;
@@ -305,6 +344,85 @@ namespace contact_fem
 
   template <>
   void
+  ContactInterface<3>::check_tiling(const unsigned int                           f,
+                                    const std::vector<Mortar::QuadFace>         &quads,
+                                    const std::vector<unsigned int>             &masters,
+                                    const std::vector<unsigned int>             &facing,
+                                    const std::vector<Mortar::ParameterPolygon> &polygons) const
+  {
+    // Neighbouring overlap polygons share their vertices (the slave images
+    // of the same clipped points), so where the facing master faces cover
+    // the slave face they tile its parameter square [-1, 1]^2: area 4.
+    // That is expected where the slave face is near the master (closer
+    // than its diameter: the master is a graph over it) and no rim edge of
+    // the facing master faces (an edge only one of them has; also where
+    // they meet a hanging vertex) comes within its diameter.
+    const Mortar::QuadFace &slave    = quads[f];
+    const Point<2>          centre;
+    const Point<3>          middle   = slave.point(centre);
+    const double            diameter = std::max(slave.nodes[0].distance(slave.nodes[3]),
+                                     slave.nodes[1].distance(slave.nodes[2]));
+    bool near = false;
+    for (const unsigned int m : masters)
+      {
+        Point<2> eta;
+        near = near || (Mortar::project_along(quads[m], middle,
+                                              Mortar::face_normal(slave, centre, faces[f].orientation),
+                                              eta) &&
+                        std::abs(eta[0]) <= 1. && std::abs(eta[1]) <= 1. &&
+                        quads[m].point(eta).distance(middle) < diameter);
+      }
+    if (!near)
+      return;
+    // The slave face and the rim edges seen along its normal, in the
+    // tangent plane at its centre.
+    const Tensor<1, 3> n  = Mortar::face_normal(slave, centre, 1.);
+    Tensor<1, 3>       e1 = slave.tangents(centre)[0];
+    e1 -= (e1 * n) * n;
+    e1 /= e1.norm();
+    const Tensor<1, 3> e2 = cross_product_3d(n, e1);
+    const auto in_plane = [&](const Point<3> &x) {
+      return Point<2>((x - middle) * e1, (x - middle) * e2);
+    };
+    std::vector<Point<2>> ring;
+    for (const unsigned int v : {0, 1, 3, 2})
+      ring.push_back(in_plane(slave.nodes[v]));
+    // Per vertex edge of the facing faces: how many of them have it.
+    std::map<std::pair<unsigned int, unsigned int>, std::pair<unsigned int, std::array<Point<3>, 2>>>
+      edges;
+    for (const unsigned int m : facing)
+      for (const auto &[a, b] : {std::pair(0, 1), std::pair(2, 3), std::pair(0, 2), std::pair(1, 3)})
+        {
+          auto &edge = edges[std::minmax(faces[m].nodes[a], faces[m].nodes[b])];
+          ++edge.first;
+          edge.second = {{quads[m].nodes[a], quads[m].nodes[b]}};
+        }
+    // A rim edge that comes within a tenth of the diameter of the slave
+    // face (curved faces bulge beyond their vertices) may bound a part that
+    // is rightly uncovered.
+    for (const auto &[key, edge] : edges)
+      if (edge.first == 1 &&
+          planar_distance(in_plane(edge.second[0]), in_plane(edge.second[1]), ring) <
+            0.1 * diameter)
+        return;
+
+    double area = 0.;
+    for (const auto &polygon : polygons)
+      for (std::size_t v = 0; v < polygon.size(); ++v)
+        area += 0.5 * (polygon[v][0] * polygon[(v + 1) % polygon.size()][1] -
+                       polygon[v][1] * polygon[(v + 1) % polygon.size()][0]);
+    constexpr double tiling_tolerance = 1e-8;
+    AssertThrow(std::abs(area - 4.) <= 4. * tiling_tolerance,
+                ExcMessage("Contact pair " + std::to_string(faces[f].pair) +
+                           ": the master faces cover " + std::to_string(area / 4.) +
+                           " of the slave face centred at " + Mortar::coordinates_text(middle) +
+                           ", which lies inside the master surface. The mortar "
+                           "segmentation lost or doubled a part; the contact pressures "
+                           "would be wrong."));
+  }
+
+  template <>
+  void
   ContactInterface<3>::search_pair_3d(
     const unsigned int                                      p,
     const std::vector<Mortar::QuadFace>                    &quads,
@@ -351,14 +469,16 @@ namespace contact_fem
         for (const unsigned int n : faces[f].nodes)
           normals.push_back(slave_data.at(n).normal);
         const Tensor<1, 3> n_slave = Mortar::face_normal(quads[f], centre, faces[f].orientation);
-        std::vector<unsigned int>               masters;
+        std::vector<unsigned int>               masters, facing;
         std::vector<Mortar::ParameterPolygon>   all_polygons;
         for (const auto &hit : hits)
           {
             const unsigned int m = hit.second;
+            if (!(n_slave * Mortar::face_normal(quads[m], centre, faces[m].orientation) < 0.))
+              continue;
+            facing.push_back(m);
             std::vector<Mortar::ParameterPolygon> polygons;
-            if (n_slave * Mortar::face_normal(quads[m], centre, faces[m].orientation) < 0. &&
-                Mortar::overlap(quads[f], normals, quads[m], polygons))
+            if (Mortar::overlap(quads[f], normals, quads[m], polygons))
               {
                 masters.push_back(m);
                 all_polygons.insert(all_polygons.end(), polygons.begin(), polygons.end());
@@ -366,6 +486,7 @@ namespace contact_fem
           }
         if (masters.empty())
           continue;
+        check_tiling(f, quads, masters, facing, all_polygons);
         const FullMatrix<double> A =
           Mortar::dual_basis_coefficients(quads[f], normals, all_polygons);
         std::vector<std::pair<unsigned int, Mortar::QuadSegmentOperators>> segments;

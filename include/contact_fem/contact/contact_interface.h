@@ -325,6 +325,16 @@ namespace contact_fem
                  const std::vector<std::array<int, 2>>        &bounding_ends,
                  const std::vector<unsigned int>              &facing) const;
 
+    /// 3D: stops the run if the overlap @p polygons of slave face @p f
+    /// (near the master and away from the rim of the @p facing master
+    /// faces) do not tile its parameter square.
+    void
+    check_tiling(const unsigned int                           f,
+                 const std::vector<Mortar::QuadFace>         &quads,
+                 const std::vector<unsigned int>             &masters,
+                 const std::vector<unsigned int>             &facing,
+                 const std::vector<Mortar::ParameterPolygon> &polygons) const;
+
     /// Adds the operators @p ops of slave face @p f against master face
     /// @p m to the sums of the slave nodes of @p f (D, M, weighted gap) and
     /// records the pair as coupled. 2D (Mortar::SegmentOperators) and 3D
