@@ -28,7 +28,19 @@ if [ $status -ne 0 ]; then
   cat output
   exit 1
 fi
-if ! "$numdiff" -a 1e-6 -r 1e-8 -s ' \t\r\n=,:;<>[](){}^' "$comparison" output > diff; then
+# An iterative solve's multigrid aggregates follow the DoF numbering, so its
+# Krylov counts (the table's last column, 'lin. it') change with the
+# numbering by design, not by round-off: that column is left out.
+strip() {
+  if grep -q "lin. it |" "$comparison"; then
+    sed -E '/^    \| +[0-9]+ \|/ s/ +[-0-9]+ \|( converged.*)?$/ |\1/' "$1"
+  else
+    cat "$1"
+  fi
+}
+strip "$comparison" > expected
+strip output > compared
+if ! "$numdiff" -a 1e-6 -r 1e-8 -s ' \t\r\n=,:;<>[](){}^' expected compared > diff; then
   echo "Output with DoF renumbering seed $seed differs from $comparison"
   echo "(run: $(pwd)/output); first 30 lines of numdiff:"
   head -n 30 diff

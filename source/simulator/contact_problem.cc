@@ -1041,8 +1041,9 @@ namespace contact_fem
     Timer step_timer;
     prepare_load_step(time, step_size, first_step);
     const bool frictional = contact && contact->frictional();
-    pcout << "  Load step " << step + 1 << ", t = " << time << std::endl
-          << NewtonMonitor::header(frictional, linear_solver->iterative()) << std::endl;
+    pcout << "  Load step " << step + 1 << ", t = " << time << std::endl;
+    if (output.print_newton_iterations)
+      pcout << NewtonMonitor::header(frictional, linear_solver->iterative()) << std::endl;
     linear_iterations_of_step.clear();
     const std::string where =
       "load step " + std::to_string(step + 1) + " (t = " + std::to_string(time) + ")";
@@ -1089,9 +1090,10 @@ namespace contact_fem
         if (linear_solver->iterative())
           linear_iterations =
             iteration > 0 ? linear_iterations_of_step.back() : 0u;
-        pcout << monitor.row(iteration, update.changes, contact ? contact->n_active() : 0u,
-                             assessment, frictional ? &friction : nullptr, linear_iterations)
-              << std::endl;
+        if (output.print_newton_iterations)
+          pcout << monitor.row(iteration, update.changes, contact ? contact->n_active() : 0u,
+                               assessment, frictional ? &friction : nullptr, linear_iterations)
+                << std::endl;
         if (frictional)
           check_for_cycling(at, iteration, update.changes, sets_of_iteration);
         if (assessment.converged && contact &&
