@@ -250,9 +250,11 @@ namespace contact_fem
     dof_handler.distribute_dofs(fe);
     if (dof_renumbering_seed == 0)
       return;
-    // Each rank shuffles its own range (deal.II 9.4's DoFRenumbering::random
-    // takes no seed and permutes across ranks); refine_mesh() and
-    // setup_dofs() both call this on one mesh and get the same order.
+    // Each rank shuffles its own range: deal.II 9.4's DoFRenumbering::random
+    // has a fixed seed and shuffles all n_dofs numbers, which a distributed
+    // DoFHandler on several ranks does not accept (it takes the new numbers
+    // of the owned DoFs only). refine_mesh() and setup_dofs() both call this
+    // on one mesh and get the same order.
     const IndexSet &owned = dof_handler.locally_owned_dofs();
     std::vector<types::global_dof_index> new_numbers(owned.begin(), owned.end());
     std::mt19937 generator(dof_renumbering_seed + 7919 * Utilities::MPI::this_mpi_process(comm));
