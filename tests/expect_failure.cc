@@ -22,6 +22,9 @@
 //                                    contain a match (for runs whose other
 //                                    lines are round-off, e.g. after a
 //                                    singular solve)
+//   # driver: mask REGEX             replace each match in the printed text
+//                                    by '...' (a part decided by round-off,
+//                                    e.g. the step at which a run fails)
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -49,7 +52,7 @@ namespace
     std::vector<std::pair<std::string, std::string>> environment;
     bool                                             parameter_directory = false;
     std::vector<std::string>                         read_only, listed;
-    std::string                                      keep;
+    std::string                                      keep, mask;
   };
 
   /// Lets the test directory be removed again by a non-root user.
@@ -109,6 +112,8 @@ namespace
           c.listed.push_back(argument);
         else if (directive == "keep")
           c.keep = argument + (rest.empty() ? "" : " " + rest);
+        else if (directive == "mask")
+          c.mask = argument + (rest.empty() ? "" : " " + rest);
         else
           {
             std::cerr << "expect_failure: unknown directive in '" << line << "'" << std::endl;
@@ -193,6 +198,8 @@ main(int argc, char **argv)
   for (std::size_t pos = text.find(directory); pos != std::string::npos;
        pos             = text.find(directory))
     text.replace(pos, directory.size(), "<dir>");
+  if (!c.mask.empty())
+    text = std::regex_replace(text, std::regex(c.mask), "...");
   if (c.keep.empty())
     std::cout << text;
   else

@@ -312,7 +312,7 @@ namespace contact_fem
     triangulation.prepare_coarsening_and_refinement();
     transfer.prepare_for_coarsening_and_refinement(ghosted_solution);
     triangulation.execute_coarsening_and_refinement();
-    dof_handler.distribute_dofs(fe);
+    distribute_dofs();
     TrilinosWrappers::MPI::Vector transferred(dof_handler.locally_owned_dofs(), comm);
     transfer.interpolate(transferred);
     transferred_solution = std::make_unique<TrilinosWrappers::MPI::Vector>(transferred);

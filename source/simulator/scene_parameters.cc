@@ -470,6 +470,13 @@ namespace contact_fem
     prm.declare_entry("Print timing", "true", Patterns::Bool(),
                       "Print wall times on the console (they are always in "
                       "summary.json). Tests switch this off.");
+    prm.declare_entry("Print Newton iterations", "true", Patterns::Bool(),
+                      "Print the table of the Newton iterations of every load "
+                      "step (residuals, active-set changes). false: only the "
+                      "events of a step (searches, splits, failures) and the "
+                      "results, for tests whose iteration path is decided by "
+                      "round-off (e.g. the first solve of a body held only by "
+                      "contact, or a thousand nodes entering contact at once).");
     prm.declare_entry("Displacement probes", "", Patterns::Anything(),
                       "Mesh vertices whose displacement every cycle prints and "
                       "writes to summary.json (displacement_probes), as "
@@ -488,6 +495,7 @@ namespace contact_fem
     write_vtu              = prm.get_bool("Write VTU");
     write_pressure_profile = prm.get_bool("Write pressure profile");
     print_timing           = prm.get_bool("Print timing");
+    print_newton_iterations = prm.get_bool("Print Newton iterations");
     displacement_probes.clear();
     const std::string probes_key = "Output/Displacement probes";
     for (const std::string &probe : Utilities::split_string_list(prm.get("Displacement probes"), ';'))

@@ -37,12 +37,13 @@ using namespace contact_fem;
 
 namespace
 {
-  /// The prm/ folder of the sources, found from this file's path.
+  /// The prm/ folder of the sources. From SOURCE_DIR (absolute, set by
+  /// deal_ii_pickup_tests), not __FILE__: ccache's base_dir makes __FILE__
+  /// relative to the build directory, and the test then found no prm/.
   std::string
   prm_directory()
   {
-    const std::string file = __FILE__;
-    return file.substr(0, file.rfind("/tests/unit/")) + "/prm";
+    return std::string(SOURCE_DIR) + "/../../prm";
   }
 
   /// The words of an array of summary.json, or "-" if it is empty.

@@ -122,6 +122,10 @@ namespace contact_fem
     // --- set-up (contact_problem.cc)
     void
     setup_dofs();
+    /// Distributes the DoFs on the current mesh, in a random order of each
+    /// rank's own DoFs if Finite element/DoF renumbering seed is not 0.
+    void
+    distribute_dofs();
     void
     compute_cell_matrices();
     void
@@ -511,6 +515,7 @@ namespace contact_fem
     /// MappingQCache, filled per mesh.
     std::unique_ptr<MappingQ<dim>>            mapping;
     DoFHandler<dim>                           dof_handler;
+    unsigned int                              dof_renumbering_seed = 0;
     /// Present with Finite element/Volumetric strain = B-bar (after fe and
     /// mapping, which it refers to).
     std::unique_ptr<VolumetricProjection<dim>> volumetric_projection;

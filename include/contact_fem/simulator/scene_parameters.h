@@ -114,6 +114,7 @@ namespace contact_fem
     bool        write_vtu              = true;
     bool        write_pressure_profile = true;
     bool        print_timing           = true;
+    bool        print_newton_iterations = true;
     /// Vertices whose displacement every cycle reports.
     std::vector<BodyPoint> displacement_probes;
 
