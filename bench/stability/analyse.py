@@ -360,6 +360,13 @@ def judge(case):
         case["verdict"] = "bad input (exit 1): " + (out["errors"][0] if out["errors"] else "?")
         case["notes"] = notes
         return
+    if rc == 3:
+        # Converged, but beyond small-strain linear elasticity (README: exit codes).
+        expected = bool(diag) and "range" in diag.lower()
+        case["kind"] = "expected" if expected else "unclear"
+        case["verdict"] = "converged outside the model's range (exit 3)"
+        case["notes"] = notes
+        return
     if rc not in (0, 2):
         case["kind"] = "failure"
         case["verdict"] = "CRASH (exit %d): %s" % (rc, out["errors"][0] if out["errors"] else "")

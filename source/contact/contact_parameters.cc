@@ -8,12 +8,13 @@ namespace contact_fem
   {
     prm.enter_subsection("Contact");
     prm.declare_entry("Pairs",
-                      "3: 4",
+                      "",
                       Patterns::Anything(),
                       "Contact pairs as 'slave boundary id: master boundary id; "
                       "...'. Empty: no contact (plain elasticity, no contact code "
                       "runs). The slave side carries the multipliers: make it the "
-                      "finer and softer surface.");
+                      "finer and softer surface." + not_set_help(true),
+                      true);
     prm.declare_entry("Allow loss of contact",
                       "false",
                       Patterns::Bool(),

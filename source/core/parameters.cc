@@ -5,6 +5,7 @@
 #include <contact_fem/core/parameters.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -152,4 +153,32 @@ namespace contact_fem
     return text.str();
   }
 
+  std::string
+  not_set_help(const bool required)
+  {
+    return std::string(" Not set in the input: the built-in scene's own value (listed "
+                       "under Geometry/Type); ") +
+           (required ? "a mesh-file scene must set it." :
+                       "none for a mesh file. Set it empty for none.");
+  }
+
+  bool
+  is_set(const ParameterHandler &prm, const std::string &path)
+  {
+    // ParameterHandler's names: '.' between subsections, every character
+    // but letters and digits as '_' and two hex digits.
+    std::string mangled;
+    for (const char c : path)
+      if (c == '/')
+        mangled += '.';
+      else if (std::isalnum(static_cast<unsigned char>(c)))
+        mangled += c;
+      else
+        {
+          const char *hex = "0123456789abcdef";
+          const auto  u   = static_cast<unsigned char>(c);
+          mangled += {'_', hex[u / 16], hex[u % 16]};
+        }
+    return prm.get_entries_wrongly_not_set().count(mangled) == 0;
+  }
 } // namespace contact_fem

@@ -17,6 +17,64 @@
 
 namespace contact_fem
 {
+  namespace
+  {
+    /// Per built-in geometry, the values of builtin_scene_keys() in that
+    /// order: the Hertz demo (prm/hertz.prm), Kratos' 3D Hertz example
+    /// (prm/hertz_3d.prm) and the patch test of the blocks (exact pressure 2).
+    const std::vector<std::pair<std::string, std::vector<std::string>>> &
+    builtin_table()
+    {
+      static const std::vector<std::pair<std::string, std::vector<std::string>>> table = {
+        {"hertz cylinder", {"2: xy; 1: x", "1: 0.2*t", "3: 4", "1, 2", "200, 2e12", "0.3, 0.3"}},
+        {"hertz sphere",
+         {"2: xyz; 5: x; 6: y", "1: 5e5 * t", "3: 4", "1, 2", "1e8, 1e12", "0.29, 0.29"}},
+        {"contact blocks",
+         {"2: y; 5: x; 6: x", "1: 2", "3: 4", "1, 2", "100, 200", "0.3, 0.3"}}};
+      return table;
+    }
+  } // namespace
+
+  std::vector<std::pair<std::string, bool>>
+  builtin_scene_keys()
+  {
+    return {{"Boundary conditions/Fixed", false},
+            {"Boundary conditions/Pressure", false},
+            {"Contact/Pairs", true},
+            {"Materials/Material ids", true},
+            {"Materials/Young's moduli", true},
+            {"Materials/Poisson's ratios", true}};
+  }
+
+  std::vector<BuiltinSetting>
+  builtin_scene_settings(const std::string &type)
+  {
+    std::vector<BuiltinSetting> settings;
+    const auto                  keys = builtin_scene_keys();
+    for (const auto &[name, values] : builtin_table())
+      if (name == type)
+        for (unsigned int k = 0; k < keys.size(); ++k)
+          settings.push_back({keys[k].first, values[k]});
+    return settings;
+  }
+
+  std::string
+  builtin_scene_help()
+  {
+    const auto  keys = builtin_scene_keys();
+    std::string text = " The built-in scenes give the keys that the input does not set "
+                       "their own values:";
+    for (const auto &[name, values] : builtin_table())
+      {
+        text += " " + name + ":";
+        for (unsigned int k = 0; k < keys.size(); ++k)
+          text += std::string(k == 0 ? " " : ", ") + keys[k].first + " = '" + values[k] + "'";
+        text += ";";
+      }
+    return text + " a mesh file gets none of them (Contact/Pairs and the Materials are "
+                  "then required).";
+  }
+
   template <int dim>
   void
   Scene<dim>::declare_parameters(ParameterHandler &prm)
@@ -30,7 +88,8 @@ namespace contact_fem
                       "sphere' (a quarter of a hemisphere on a quarter plate, "
                       "with the symmetry planes x = 0 and y = 0; 3D), 'contact blocks' "
                       "(two stacked blocks with non-matching meshes), or 'mesh "
-                      "file' (a Gmsh .msh file named by 'Mesh file').");
+                      "file' (a Gmsh .msh file named by 'Mesh file')." +
+                        builtin_scene_help());
     prm.declare_entry("Mesh file",
                       "",
                       Patterns::Anything(),

@@ -66,26 +66,29 @@ namespace contact_fem
   {
     prm.enter_subsection("Materials");
     prm.declare_entry("Material ids",
-                      "1, 2",
-                      Patterns::List(Patterns::Integer(0, 255), 1),
+                      "",
+                      Patterns::List(Patterns::Integer(0, 255)),
                       "Material ids of the bodies (cell material ids of the mesh), "
                       "one entry per body. The lists below give the constants in "
-                      "the same order.");
+                      "the same order." + not_set_help(true),
+                      true);
     prm.declare_entry("Young's moduli",
-                      "200, 2e12",
-                      Patterns::List(Patterns::Double(), 1),
+                      "",
+                      Patterns::List(Patterns::Double()),
                       "Young's modulus of each body, a positive normal double "
-                      "(2.2e-308 to 1.8e308). Units: stress.");
+                      "(2.2e-308 to 1.8e308). Units: stress." + not_set_help(true),
+                      true);
     prm.declare_entry("Poisson's ratios",
-                      "0.3, 0.3",
-                      Patterns::List(Patterns::Double(), 1),
+                      "",
+                      Patterns::List(Patterns::Double()),
                       "Poisson's ratio of each body, in (-1, 0.5). 2D bodies are "
                       "in plane strain. Ratios whose lambda/mu = 2 nu / (1 - 2 "
                       "nu) exceeds 4.5e14 (nu > 0.499999999999999) are refused: "
                       "double precision then keeps no digit of the shear "
                       "stiffness; beyond 1e8 (nu > 0.499999995) the set-up "
                       "warns, since the reactions balance the load only to "
-                      "about 1e-14 lambda/mu.");
+                      "about 1e-14 lambda/mu." + not_set_help(true),
+                      true);
     prm.leave_subsection();
   }
 
@@ -98,6 +101,10 @@ namespace contact_fem
       Utilities::split_string_list(prm.get("Material ids")));
     const std::string E_text = prm.get("Young's moduli"), nu_text = prm.get("Poisson's ratios");
     prm.leave_subsection();
+    AssertThrow(!ids.empty(),
+                ExcMessage("Materials/Material ids: empty; expected the material id of "
+                           "every body (and its constants in Young's moduli and "
+                           "Poisson's ratios)."));
     const auto E  = parse_number_list(E_text, "Materials/Young's moduli",
                                      "a positive normal double (2.2e-308 to 1.8e308)");
     const auto nu = parse_number_list(nu_text, "Materials/Poisson's ratios",

@@ -24,6 +24,23 @@ namespace contact_fem
     c     = Q < mu * P ? a * std::sqrt(1. - Q / (mu * P)) : 0.;
   }
 
+  CattaneoSolution::CattaneoSolution(const double P,
+                                     const double Q,
+                                     const double Q_star,
+                                     const double mu,
+                                     const double radius,
+                                     const double E_star)
+    : CattaneoSolution(P, Q_star, mu, radius, E_star)
+  {
+    this->Q      = Q;
+    unloading    = true;
+    this->Q_star = Q_star;
+    c_star       = c;
+    // The second term is a monotone solution for (Q_star - Q) / 2.
+    const double half_change = 0.5 * (Q_star - Q);
+    c = half_change < mu * P ? a * std::sqrt(1. - half_change / (mu * P)) : 0.;
+  }
+
   double
   CattaneoSolution::pressure(const double x) const
   {
@@ -31,18 +48,58 @@ namespace contact_fem
   }
 
   double
-  CattaneoSolution::tangential(const double x) const
+  CattaneoSolution::monotone_traction(const double x, const double stick) const
   {
     if (std::abs(x) >= a)
       return 0.;
     double q = mu * pressure(x);
-    if (std::abs(x) < c)
-      q -= mu * p_max * (c / a) * std::sqrt(1. - x * x / (c * c));
+    if (std::abs(x) < stick)
+      q -= mu * p_max * (stick / a) * std::sqrt(1. - x * x / (stick * stick));
     return q;
   }
 
+  double
+  CattaneoSolution::tangential(const double x) const
+  {
+    return unloading ? monotone_traction(x, c_star) - 2. * monotone_traction(x, c) :
+                       monotone_traction(x, c);
+  }
+
+  TangentialPath
+  classify_tangential_path(const std::vector<double> &loads, const double tolerance)
+  {
+    using Kind = TangentialPath::Kind;
+    TangentialPath path;
+    double         previous = 0.;
+    for (const double q : loads)
+      {
+        if (path.direction == 0. && std::abs(q) > tolerance)
+          path.direction = q > 0. ? 1. : -1.;
+        const double along = path.direction * q, before = path.direction * previous;
+        if (path.kind == Kind::monotone && along < before - tolerance)
+          {
+            path.kind   = Kind::unloading;
+            path.Q_star = before;
+          }
+        else if (path.kind == Kind::unloading && along < -path.Q_star - tolerance)
+          {
+            // Past the reversed peak every point slips again: the memory
+            // of the peak is gone, a monotone load the other way.
+            path.kind      = Kind::monotone;
+            path.direction = -path.direction;
+          }
+        else if (path.kind == Kind::unloading && along > before + tolerance)
+          path.kind = Kind::none;
+        previous = q;
+      }
+    path.Q = path.direction * previous;
+    return path;
+  }
+
   CattaneoComparison
-  compare_with_cattaneo(std::vector<CattaneoNode> nodes, const CattaneoSolution &exact)
+  compare_with_cattaneo(std::vector<CattaneoNode> nodes,
+                        const CattaneoSolution   &exact,
+                        const double              direction)
   {
     CattaneoComparison result;
     result.exact = exact;
@@ -84,7 +141,7 @@ namespace contact_fem
     double resultant = 0.;
     for (const auto &node : nodes)
       resultant += node.weight * node.t;
-    const double sign = resultant < 0. ? -1. : 1.;
+    const double sign = direction != 0. ? direction : resultant < 0. ? -1. : 1.;
     double       error = 0., norm = 0., weights = 0.;
     for (const auto &node : nodes)
       {
@@ -98,7 +155,7 @@ namespace contact_fem
     // relative to the slip bound mu p_max instead.
     constexpr double no_tangential_load = 1e-6;
     const double bound = exact.mu * exact.p_max;
-    if (exact.Q <= no_tangential_load * exact.mu * exact.P)
+    if (!exact.unloading && exact.Q <= no_tangential_load * exact.mu * exact.P)
       norm = bound * bound * weights;
     result.tangential_l2_relative_error = norm > 0. ? std::sqrt(error / norm) : 0.;
     return result;
@@ -113,6 +170,10 @@ namespace contact_fem
     result.set("mu", exact.mu)
       .set("P", exact.P)
       .set("Q", exact.Q)
+      .set("load_path", exact.unloading ? "unloading" : "monotone");
+    if (exact.unloading)
+      result.set("Q_star", exact.Q_star).set("c_star", exact.c_star);
+    result
       .set("Q_over_mu_P", exact.mu * exact.P > 0. ? exact.Q / (exact.mu * exact.P) : 0.)
       .set("a", a)
       .set("p_max", exact.p_max)
@@ -135,9 +196,20 @@ namespace contact_fem
   {
     const auto value = [&](const char *key) { return cattaneo[key].number_value(); };
     std::ostringstream out;
-    out << std::setprecision(6)
-        << "    Cattaneo mu, P, Q:            " << value("mu") << ", " << value("P") << ", "
-        << value("Q") << std::endl
+    out << std::setprecision(6) << "    Cattaneo mu, P, Q:            " << value("mu") << ", "
+        << value("P") << ", " << value("Q") << std::endl;
+    // cattaneo_results() gives no c for a path without a solution.
+    if (std::isnan(value("c")))
+      {
+        out << "    Cattaneo: the tangential load turned back twice, no analytical "
+               "solution; no comparison."
+            << std::endl;
+        return out.str();
+      }
+    if (!std::isnan(value("Q_star")))
+      out << "    unloaded from the peak Q*:    " << value("Q_star")
+          << " (Mindlin-Deresiewicz; c is the stick half-width b)" << std::endl;
+    out
         << "    Cattaneo Q/(mu P):            " << value_or_ok(value("Q_over_mu_P"), 1e-6)
         << std::endl
         << std::setprecision(4)
@@ -159,19 +231,35 @@ namespace contact_fem
   }
 
   template <int dim>
+  std::pair<double, double>
+  cattaneo_loads(const ContactInterface<dim> &interface, const ContactFormulation<dim> &contact)
+  {
+    Tensor<1, dim> force, mean_normal;
+    for (const auto &s : interface.slave_nodes)
+      if (s.paired && contact.is_active(s.node))
+        {
+          force += s.D * contact.traction(s);
+          mean_normal += s.D * s.normal;
+        }
+    // The frame of the solution, not the mean normal: an active set one
+    // node off the symmetric one tilts that by ~1e-3 rad, which takes 1 %
+    // off Q, and a sliding body tilts it to the resultant itself.
+    Tensor<1, dim> n0;
+    n0[1] = mean_normal[1] < 0. ? -1. : 1.;
+    return {-(force * n0), force * ContactFormulation<dim>::tangent(n0)};
+  }
+
+  template <int dim>
   Json
   cattaneo_results(const ContactInterface<dim>   &interface,
                    const ContactFormulation<dim> &contact,
                    const AnalyticalSolution      &analytical,
+                   const std::vector<double>     &load_path,
                    const std::vector<double>     *tangential)
   {
     const double E_star = interface.contact_modulus(0);
-
-    // P and Q: the resultant of the contact tractions on the slave along
-    // the mean slave normal and its tangent (the nodal normals tilt by
-    // x / R_slave across the zone; the resultant does not).
+    const double mu     = analytical.friction_coefficient;
     std::vector<CattaneoNode> nodes;
-    Tensor<1, dim>            force, mean_normal;
     for (const auto &s : interface.slave_nodes)
       if (s.paired)
         {
@@ -188,26 +276,40 @@ namespace contact_fem
           node.weight = s.D;
           node.active = active;
           node.stick  = contact.sticks(s.node);
-          if (active)
-            {
-              force += s.D * contact.traction(s);
-              mean_normal += s.D * s.normal;
-            }
           nodes.push_back(node);
         }
-    if (mean_normal.norm() > 0.)
-      mean_normal /= mean_normal.norm();
-    const double P = -(force * mean_normal);
-    const double Q = std::abs(force * ContactFormulation<dim>::tangent(mean_normal));
-    const CattaneoSolution exact(P, Q, analytical.friction_coefficient, analytical.radius,
-                                 E_star);
-    return to_json(compare_with_cattaneo(nodes, exact));
+    const auto [P, Q] = cattaneo_loads(interface, contact);
+    // The same tolerance as for "no tangential load" in the comparison.
+    std::vector<double> path = load_path;
+    path.push_back(Q);
+    const TangentialPath history = classify_tangential_path(path, 1e-6 * mu * P);
+    if (history.kind == TangentialPath::Kind::none)
+      return Json::object()
+        .set("mu", mu)
+        .set("P", P)
+        .set("Q", std::abs(Q))
+        .set("no_solution", "the tangential load turned back twice: no analytical "
+                            "solution (Cattaneo for monotone loading, "
+                            "Mindlin-Deresiewicz for one unloading)");
+    if (history.kind == TangentialPath::Kind::unloading)
+      return to_json(compare_with_cattaneo(nodes,
+                                           CattaneoSolution(P, history.Q, history.Q_star, mu,
+                                                            analytical.radius, E_star),
+                                           history.direction));
+    return to_json(compare_with_cattaneo(
+      nodes, CattaneoSolution(P, std::abs(Q), mu, analytical.radius, E_star)));
   }
 
+  template std::pair<double, double>
+  cattaneo_loads(const ContactInterface<2> &, const ContactFormulation<2> &);
+  template std::pair<double, double>
+  cattaneo_loads(const ContactInterface<3> &, const ContactFormulation<3> &);
   template Json
   cattaneo_results(const ContactInterface<2> &, const ContactFormulation<2> &,
-                   const AnalyticalSolution &, const std::vector<double> *);
+                   const AnalyticalSolution &, const std::vector<double> &,
+                   const std::vector<double> *);
   template Json
   cattaneo_results(const ContactInterface<3> &, const ContactFormulation<3> &,
-                   const AnalyticalSolution &, const std::vector<double> *);
+                   const AnalyticalSolution &, const std::vector<double> &,
+                   const std::vector<double> *);
 } // namespace contact_fem

@@ -130,7 +130,14 @@ namespace contact_fem
     const double youngs_min = materials.youngs_modulus_range().first;
     double       largest    = 0.;
     for (const auto &[id, load] : body_loads(time))
-      largest = std::max(largest, load.norm());
+      {
+        // norm() squares: a load of 1e-200 would vanish in underflow.
+        double component = 0.;
+        for (unsigned int d = 0; d < dim; ++d)
+          component = std::max(component, std::abs(load[d]));
+        if (component > 0.)
+          largest = std::max(largest, component * (load / component).norm());
+      }
     const double by_force = largest / (youngs_min * std::pow(model_size(), dim - 2.));
     double prescribed = 0.;
     for (const auto &condition : boundary_conditions.displacements)

@@ -302,6 +302,9 @@ namespace contact_fem
                const ContactFormulation<dim> &contact,
                const AnalyticalSolution      &analytical)
     {
+      // Cattaneo: the normal load P, not the resultant with Q.
+      if (analytical.type == "cattaneo")
+        return cattaneo_loads(interface, contact).first;
       const Tensor<1, dim> force = total_contact_force(interface, contact);
       return analytical.type == "hertz sphere" ?
                std::abs(force[dim - 1]) / analytical.symmetry_fraction :
@@ -443,7 +446,8 @@ namespace contact_fem
       }
     // Cattaneo-Mindlin: stick zone and tangential traction (cattaneo.cc).
     if (analytical.type == "cattaneo")
-      result.set("cattaneo", cattaneo_results(*interface, *contact, analytical));
+      result.set("cattaneo",
+                 cattaneo_results(*interface, *contact, analytical, cattaneo_load_path));
     return result;
   }
 

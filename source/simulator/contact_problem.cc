@@ -7,6 +7,7 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <contact_fem/simulator/cattaneo.h>
 #include <contact_fem/simulator/contact_problem.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/solvers/rigid_body_modes.h>
@@ -122,6 +123,7 @@ namespace contact_fem
     StressRecoverySettings::declare_parameters(prm);
     AnalyticalSolution::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
+    ModelRange::declare_parameters(prm);
   }
 
   namespace
@@ -156,6 +158,7 @@ namespace contact_fem
   {
     // Every parameter is read and checked before any work is done.
     scene.parse_parameters(prm, prm_directory);
+    effective_input = apply_scene_settings(prm, scene.type);
     // "auto" depends on the scene: Q1 follows curved boundaries on a
     // quadratic mapping, in 2D and 3D.
     const std::string  mapping_degree = read_entry(prm, "Finite element", "Mapping degree");
@@ -189,6 +192,7 @@ namespace contact_fem
     spr_settings.parse_parameters(prm);
     analytical.parse_parameters(prm, prm_directory, dim);
     output.parse_parameters(prm, dim);
+    model_range.parse_parameters(prm);
     check_scene_before_meshing();
 
     timer = std::make_unique<TimerOutput>(comm, pcout, TimerOutput::never,
@@ -1176,7 +1180,8 @@ namespace contact_fem
     const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
     const OutputDirectoryReport earlier_outputs = open_output_directory();
     pcout << "contact_fem: scene '" << scene_name << "', " << dim << "D, "
-          << Utilities::MPI::n_mpi_processes(comm) << " MPI process(es)" << std::endl;
+          << Utilities::MPI::n_mpi_processes(comm) << " MPI process(es)" << std::endl
+          << effective_input;
     report_earlier_outputs(earlier_outputs);
     print_input_warnings();
 
@@ -1237,7 +1242,9 @@ namespace contact_fem
         write_convergence_row(record, cumulative);
         // Written after every cycle, so an interrupted study keeps its data;
         // the status says whether the run is complete.
-        const bool last = !converged || cycle + 1 == refinement.n_cycles;
+        // Refining does not bring a state beyond the model back into it.
+        const bool beyond_model = converged && outside_model_range && !model_range.accept_outside;
+        const bool last = !converged || beyond_model || cycle + 1 == refinement.n_cycles;
         write_summary(cycles, total_timer.wall_time(),
                       !converged ? "failed: results of the last converged load step" :
                       !last      ? "running" :
@@ -1261,6 +1268,20 @@ namespace contact_fem
             exit_code = 2;
             break;
           }
+        if (beyond_model)
+          {
+            pcout << std::endl
+                  << "Stopped: the converged state is outside the model's range (see the "
+                     "warnings above): small-strain linear elasticity does not describe "
+                     "these bodies under this load, so the results are no answer of them "
+                     "(summary.json status '"
+                  << converged_status()
+                  << "', exit code 3). Model range/Accept results outside the "
+                     "small-strain range = true accepts them."
+                  << std::endl;
+            exit_code = 3;
+            break;
+          }
       }
     if (console.file_failed())
       pcout << "Warning: writing '" << output.directory
@@ -1274,6 +1295,9 @@ namespace contact_fem
   std::string
   ContactProblem<dim>::converged_status() const
   {
+    if (outside_model_range && !model_range.accept_outside)
+      return "converged outside the model's range (cycles[].small_strain_warning, "
+             "cycles[].warning)";
     return balance_failed ? "converged, but the reactions do not balance the load "
                             "(cycles[].balance_warning)" :
                             "converged";
@@ -1339,8 +1363,9 @@ namespace contact_fem
     for (unsigned int d = 0; d < dim; ++d)
       size = std::max(size, Utilities::MPI::max(high[d], comm) + Utilities::MPI::max(-low[d], comm));
     const double u_max = solution.linfty_norm();
-    if (u_max > 0.5 * size)
+    if (u_max > ModelRange::displacement_limit * size)
       {
+        outside_model_range = true;
         std::ostringstream text;
         text << "the largest displacement, " << u_max << ", exceeds half the model size ("
              << size << "): a rigid-body mode that the supports leave free (e.g. a rotation; "
@@ -1358,7 +1383,8 @@ namespace contact_fem
     // and rotations: beyond a few percent the answer is that of a model the
     // bodies no longer follow (and the step count would matter to any
     // geometry update).
-    constexpr double   strain_limit = 0.05, rotation_limit = 0.1;
+    constexpr double   strain_limit = ModelRange::strain_limit;
+    constexpr double   rotation_limit = ModelRange::rotation_limit;
     const QGauss<dim>  quadrature(fe.degree + 1);
     FEValues<dim>      fe_values(*mapping, fe, quadrature, update_gradients);
     const FEValuesExtractors::Vector                 displacement(0);
@@ -1385,6 +1411,7 @@ namespace contact_fem
     cycle_record.set("largest_strain", strain).set("largest_rotation", rotation);
     if (strain <= strain_limit && rotation <= rotation_limit)
       return;
+    outside_model_range = true;
     std::ostringstream text;
     text << "the solution leaves the small-strain range (largest principal strain "
          << scientific(strain, 2) << ", largest rotation " << scientific(rotation, 2)
@@ -1810,6 +1837,7 @@ namespace contact_fem
                             n_steps);
     LoadPath           path;
     Json               steps = Json::array();
+    cattaneo_load_path.clear();
     TrilinosWrappers::MPI::Vector saved_solution = solution;
     std::unique_ptr<typename ContactFormulation<dim>::State> saved_state;
     // The mortar operators of the last converged state: a failed step has
@@ -1857,6 +1885,9 @@ namespace contact_fem
           }
         steps.push(step_record);
         ++path.n_solved;
+        // The history the Cattaneo comparison needs (unloading).
+        if (analytical.type == "cattaneo" && contact)
+          cattaneo_load_path.push_back(cattaneo_loads(*interface, *contact).second);
         if (contact)
           contact->accept_load_step(*interface, interface_displacement);
         if (control.accept())
@@ -1880,6 +1911,15 @@ namespace contact_fem
   ContactProblem<dim>::run_cycle(const unsigned int cycle, Json &cycle_record)
   {
     start_cycle(cycle, cycle_record);
+    // A load at the round-off of the geometry leaves the gaps, the active
+    // set and the pressures rounding noise: nothing to report as a result.
+    if (const std::string cause = contact ? load_at_round_off(load_stepping.end_time) : "";
+        !cause.empty())
+      {
+        pcout << std::endl << "Error: nothing is solved: " << cause << "." << std::endl;
+        cycle_record.set("failure", cause);
+        return false;
+      }
     const LoadPath path      = step_the_load(cycle, cycle_record);
     const unsigned int n_solved  = path.n_solved;
     const bool         converged = path.converged;
@@ -1902,6 +1942,21 @@ namespace contact_fem
     const Json contact_json  = contact_results();
     const Json reaction_json = reaction_results();
     cycle_record.set("contact", contact_json).set("reaction", reaction_json);
+    if (const double p_min = contact_json["min_active_contact_pressure"].number_value();
+        converged && p_min < 0.)
+      {
+        // An active node in tension: the active set was decided by rounding.
+        const std::string cause = precision_limits();
+        const std::string text =
+          "the converged state has an active slave node in tension (contact pressure " +
+          scientific(p_min, 2) + ", largest " +
+          scientific(contact_json["max_contact_pressure"].number_value(), 2) +
+          "): its active set is rounding noise, no result" +
+          (cause.empty() ? std::string() : ": " + cause);
+        pcout << std::endl << "Error: " << text << "." << std::endl;
+        cycle_record.set("failure", text);
+        return false;
+      }
     if (converged)
       check_reaction_balance(reaction_json, cycle_record);
     Json hertz_json = Json::object();

@@ -157,7 +157,8 @@ namespace contact_fem
       }
     if (analytical.type == "cattaneo")
       {
-        const Json   cattaneo = cattaneo_results(*interface, *contact, analytical, &tangential);
+        const Json   cattaneo =
+          cattaneo_results(*interface, *contact, analytical, cattaneo_load_path, &tangential);
         const double error    = cattaneo["tangential_l2_relative_error"].number_value();
         cycle_record.set(prefix + "recovered_tangential_l2_relative_error_cattaneo", error);
         pcout << label << " tangential traction, L2 error against Cattaneo: "

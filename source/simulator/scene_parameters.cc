@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <contact_fem/contact/friction/frictional_law.h>
+#include <contact_fem/geometry/scene.h>
 #include <contact_fem/simulator/scene_parameters.h>
 
 #include <algorithm>
@@ -98,11 +99,12 @@ namespace contact_fem
   {
     prm.enter_subsection("Boundary conditions");
     prm.declare_entry("Fixed",
-                      "2: xy; 1: x",
+                      "",
                       Patterns::Anything(),
                       "Boundaries whose displacement components are zero, as "
                       "'id: components; ...' with components from x, y, z, e.g. "
-                      "'2: xy; 1: x'.");
+                      "'2: xy; 1: x'." + not_set_help(false),
+                      true);
     prm.declare_entry("Fixed points",
                       "",
                       Patterns::Anything(),
@@ -117,11 +119,13 @@ namespace contact_fem
                       "'id: component = expression; ...' with an expression of x, "
                       "y, (z,) t, e.g. '1: y = -0.01*t'.");
     prm.declare_entry("Pressure",
-                      "1: 0.2*t",
+                      "",
                       Patterns::Anything(),
                       "Boundaries loaded by a normal pressure (positive pushes "
                       "into the body), as 'id: expression; ...' with an "
-                      "expression of x, y, (z,) t. Units: stress.");
+                      "expression of x, y, (z,) t. Units: stress." +
+                        not_set_help(false),
+                      true);
     prm.declare_entry("Traction",
                       "",
                       Patterns::Anything(),
@@ -222,6 +226,64 @@ namespace contact_fem
                                " of boundary " +
                                std::to_string(displacements[i].boundary_id) +
                                " is prescribed twice."));
+  }
+
+  namespace
+  {
+    /// The lines of apply_scene_settings() that tell the bodies, the
+    /// boundary conditions and the pairs as the run takes them.
+    std::string
+    effective_input(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Materials");
+      std::string text = "Bodies (Materials): ids " + prm.get("Material ids") +
+                         "; Young's moduli " + prm.get("Young's moduli") +
+                         "; Poisson's ratios " + prm.get("Poisson's ratios") + "\n";
+      prm.leave_subsection();
+      std::string conditions;
+      prm.enter_subsection("Boundary conditions");
+      for (const char *key :
+           {"Fixed", "Fixed points", "Prescribed displacement", "Pressure", "Traction"})
+        if (const std::string value = Utilities::trim(prm.get(key)); !value.empty())
+          conditions += (conditions.empty() ? "" : " | ") + std::string(key) + " = " + value;
+      prm.leave_subsection();
+      text += "Supports and loads (Boundary conditions): " +
+              (conditions.empty() ? std::string("none") : conditions) + "\n";
+      prm.enter_subsection("Contact");
+      const std::string pairs = Utilities::trim(prm.get("Pairs"));
+      prm.leave_subsection();
+      return text + "Contact pairs (slave: master): " +
+             (pairs.empty() ? std::string("none (no contact)") : pairs) + "\n";
+    }
+  } // namespace
+
+  std::string
+  apply_scene_settings(ParameterHandler &prm, const std::string &type)
+  {
+    std::string from_scene;
+    for (const auto &[path, required] : builtin_scene_keys())
+      AssertThrow(is_set(prm, path) || !required || type != "mesh file",
+                  ExcMessage(path + ": not set. A scene read from a mesh file (Geometry/"
+                             "Type = mesh file) gets no contact pair or material it does "
+                             "not ask for: give " +
+                             (path == "Contact/Pairs" ?
+                                std::string("the pairs as 'slave id: master id; ...' (set "
+                                            "it empty for a scene without contact).") :
+                                std::string("Material ids, Young's moduli and Poisson's "
+                                            "ratios of every body."))));
+    for (const auto &setting : builtin_scene_settings(type))
+      if (!is_set(prm, setting.path))
+        {
+          const auto slash = setting.path.find('/');
+          prm.enter_subsection(setting.path.substr(0, slash));
+          prm.set(setting.path.substr(slash + 1), setting.value);
+          prm.leave_subsection();
+          from_scene += (from_scene.empty() ? "" : ", ") + setting.path;
+        }
+    return effective_input(prm) +
+           (from_scene.empty() ? std::string() :
+                                 "  (not set in the input, the built-in scene's values: " +
+                                   from_scene + ")\n");
   }
 
   void
@@ -501,6 +563,32 @@ namespace contact_fem
     for (const std::string &probe : Utilities::split_string_list(prm.get("Displacement probes"), ';'))
       if (!Utilities::trim(probe).empty())
         displacement_probes.push_back(parse_body_point(probe, dim, probes_key));
+    prm.leave_subsection();
+  }
+  void
+  ModelRange::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Model range");
+    prm.declare_entry("Accept results outside the small-strain range", "false",
+                      Patterns::Bool(),
+                      "The bodies are linear elastic with small strains and a "
+                      "contact gap linear in the displacement. A converged state "
+                      "whose largest principal strain exceeds 0.05, whose largest "
+                      "rotation exceeds 0.1 rad or whose largest displacement "
+                      "exceeds half the model size is not an answer of the real "
+                      "bodies: with false the run ends after that cycle with the "
+                      "status 'converged outside the model's range' in "
+                      "summary.json and exit code 3 (the results are written); "
+                      "true accepts such results (status 'converged', exit 0, "
+                      "the warnings stay).");
+    prm.leave_subsection();
+  }
+
+  void
+  ModelRange::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Model range");
+    accept_outside = prm.get_bool("Accept results outside the small-strain range");
     prm.leave_subsection();
   }
 } // namespace contact_fem

@@ -51,6 +51,19 @@ namespace contact_fem
   /// Parses a boundary id; throws naming @p key if it is not in 0..254.
   types::boundary_id
   parse_boundary_id(const std::string &text, const std::string &key);
+
+  /// The sentence ending the documentation of a key that the built-in
+  /// scenes fill in when the input does not set it (declared with
+  /// has_to_be_set, so that "not set" differs from "set empty"); @p required
+  /// for a key that a mesh-file scene must set.
+  std::string
+  not_set_help(const bool required);
+
+  /// Whether the input set @p path ("Subsection/Key", declared with
+  /// has_to_be_set): from the file, an included file or --set, even to an
+  /// empty value.
+  bool
+  is_set(const ParameterHandler &prm, const std::string &path);
 } // namespace contact_fem
 
 #endif

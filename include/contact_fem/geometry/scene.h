@@ -12,6 +12,8 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace contact_fem
 {
@@ -76,6 +78,30 @@ namespace contact_fem
    *
    * Implemented in source/scene.cc.
    */
+  /// One key that a built-in scene fills in when the input does not set it.
+  struct BuiltinSetting
+  {
+    std::string path;  ///< "Subsection/Key"
+    std::string value;
+  };
+
+  /// The values a built-in scene (Geometry/Type) gives its loads, supports,
+  /// pairs and materials when the input does not set those keys; empty for
+  /// "mesh file", which gets no load, support, pair or material it does not
+  /// ask for.
+  std::vector<BuiltinSetting>
+  builtin_scene_settings(const std::string &type);
+
+  /// The paths ("Subsection/Key") of builtin_scene_settings(), and whether a
+  /// mesh-file scene must set them (Contact/Pairs and the Materials).
+  std::vector<std::pair<std::string, bool>>
+  builtin_scene_keys();
+
+  /// The sentences of the documentation of Geometry/Type that list the
+  /// values of builtin_scene_settings().
+  std::string
+  builtin_scene_help();
+
   template <int dim>
   class Scene
   {

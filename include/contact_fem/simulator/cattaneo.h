@@ -10,6 +10,7 @@
 #include <contact_fem/simulator/scene_parameters.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace contact_fem
@@ -27,11 +28,26 @@ namespace contact_fem
   {
     double P = 0., Q = 0., mu = 0.;  ///< loads per unit thickness (Q >= 0), Coulomb mu
     double a = 0., p_max = 0., c = 0.;
+    /// Mindlin-Deresiewicz unloading from the peak Q_star (> 0) to Q (in
+    /// [-Q_star, Q_star], along the peak's direction): the traction is
+    ///   q = q_C(Q_star) - 2 q_C((Q_star - Q) / 2),
+    /// q_C the monotone traction above; c is then the stick half-width of
+    /// the second term, b = a sqrt(1 - (Q_star - Q) / (2 mu P)), and
+    /// c_star that of the first.
+    bool   unloading = false;
+    double Q_star = 0., c_star = 0.;
 
     CattaneoSolution() = default;
-    /// Q >= mu P (full slip) gives c = 0.
+    /// Monotone loading; Q >= mu P (full slip) gives c = 0.
     CattaneoSolution(const double P,
                      const double Q,
+                     const double mu,
+                     const double radius,
+                     const double E_star);
+    /// Unloading from @p Q_star to @p Q (Mindlin-Deresiewicz).
+    CattaneoSolution(const double P,
+                     const double Q,
+                     const double Q_star,
                      const double mu,
                      const double radius,
                      const double E_star);
@@ -39,10 +55,42 @@ namespace contact_fem
     double
     pressure(const double x) const;
 
-    /// The magnitude q(x) >= 0 of the tangential traction.
+    /// The tangential traction q(x), along the direction of the load (of
+    /// its peak when unloading): >= 0 for monotone loading.
     double
     tangential(const double x) const;
+
+  private:
+    /// q_C(x) of a monotone load whose stick zone is |x| < @p stick.
+    double
+    monotone_traction(const double x, const double stick) const;
   };
+
+  /**
+   * The tangential load path of a run: the signed tangential loads Q_k of
+   * its converged load steps, in order. 'monotone': |Q| never decreases
+   * (Cattaneo); 'unloading': it rose to the peak Q_star and then fell
+   * monotonically, not beyond -Q_star (Mindlin-Deresiewicz; beyond -Q_star
+   * the memory of the peak is gone and the path is monotone again, the
+   * other way); 'none': the load turned back a second time, for which the
+   * report has no analytical solution. Changes below @p tolerance do not
+   * count.
+   */
+  struct TangentialPath
+  {
+    enum class Kind
+    {
+      monotone,
+      unloading,
+      none
+    } kind = Kind::monotone;
+    double direction = 0.; ///< +-1: of the (peak) load; 0 while Q = 0
+    double Q         = 0.; ///< the last load along direction
+    double Q_star    = 0.; ///< unloading: the peak, along direction
+  };
+
+  TangentialPath
+  classify_tangential_path(const std::vector<double> &loads, const double tolerance);
 
   /// One slave node of the run: its position along the contact (relative
   /// to the contact centre), tangential traction t (on the slave, along the
@@ -84,9 +132,12 @@ namespace contact_fem
     double           tangential_l2_relative_error = 0.;
   };
 
-  /// @p nodes in any order; @p exact has Q = |sum D t|.
+  /// @p nodes in any order. The exact traction is @p direction (+-1) times
+  /// exact.tangential(x); 0 takes the sign of the resultant sum D t.
   CattaneoComparison
-  compare_with_cattaneo(std::vector<CattaneoNode> nodes, const CattaneoSolution &exact);
+  compare_with_cattaneo(std::vector<CattaneoNode> nodes,
+                        const CattaneoSolution   &exact,
+                        const double              direction = 0.);
 
   Json
   to_json(const CattaneoComparison &comparison);
@@ -96,20 +147,36 @@ namespace contact_fem
   cattaneo_report(const Json &cattaneo);
 
   /**
-   * The comparison of the converged state: P and Q are the transmitted
-   * normal and tangential contact forces (sum D_j p_j, |sum D_j t_j| over
-   * the paired slave nodes), E* from the materials of the first pair, R* =
-   * Analytical solution/Radius, x of each node in the configuration the
-   * mortar operators were built on (the reference one with Contact/
-   * Kinematics = small) less Analytical solution/Center. With
-   * @p tangential (per interface node) those tangential tractions are
-   * compared instead of the formulation's (e.g. the recovered stress's).
+   * The transmitted normal load P >= 0 and signed tangential load Q of the
+   * converged state: the resultant of the contact tractions on the slave
+   * (equal to the load applied to a slave body without supports) in the
+   * frame of the analytical solution, whose contact plane is normal to y:
+   * n0 = (0, +-1) on the side of the mean slave normal, Q along
+   * ContactFormulation::tangent(n0) (the nodes' tangential tractions are
+   * measured along the same orientation).
+   */
+  template <int dim>
+  std::pair<double, double>
+  cattaneo_loads(const ContactInterface<dim> &interface, const ContactFormulation<dim> &contact);
+
+  /**
+   * The comparison of the converged state: P and Q from cattaneo_loads(),
+   * the history of Q along the load path from @p load_path (the Q of every
+   * converged load step of the cycle: classify_tangential_path()), E* from
+   * the materials of the first pair, R* = Analytical solution/Radius, x of
+   * each node in the configuration the mortar operators were built on (the
+   * reference one with Contact/Kinematics = small) less Analytical
+   * solution/Center. With @p tangential (per interface node) those
+   * tangential tractions are compared instead of the formulation's (e.g.
+   * the recovered stress's). A path without an analytical solution gives
+   * no comparison (the key "no_solution" says why).
    */
   template <int dim>
   Json
   cattaneo_results(const ContactInterface<dim>   &interface,
                    const ContactFormulation<dim> &contact,
                    const AnalyticalSolution      &analytical,
+                   const std::vector<double>     &load_path,
                    const std::vector<double>     *tangential = nullptr);
 } // namespace contact_fem
 

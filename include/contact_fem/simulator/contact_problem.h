@@ -504,6 +504,7 @@ namespace contact_fem
     NewtonParameters   newton_parameters;
     AnalyticalSolution analytical;
     OutputParameters     output;
+    ModelRange           model_range;
     RefinementParameters refinement;
     StressRecoverySettings spr_settings; ///< the contact-traction penalties of SPR
     unsigned int       degree;
@@ -601,6 +602,15 @@ namespace contact_fem
     std::string memory_warning;
     /// A cycle's reactions did not balance its load (check_reaction_balance()).
     bool balance_failed = false;
+    /// A cycle converged beyond ModelRange (warn_about_large_strains(),
+    /// warn_about_large_displacements()).
+    bool outside_model_range = false;
+    /// The signed tangential load of every converged load step of the
+    /// cycle, with Analytical solution/Type = cattaneo (cattaneo_loads()).
+    std::vector<double> cattaneo_load_path;
+    /// The materials, boundary conditions and pairs as the run takes them
+    /// (apply_scene_settings()), printed at its start.
+    std::string effective_input;
   };
 } // namespace contact_fem
 

@@ -62,6 +62,18 @@ namespace contact_fem
     parse_parameters(ParameterHandler &prm, const unsigned int dim);
   };
 
+  /**
+   * Gives the keys of builtin_scene_settings() that the input does not set
+   * the values of the built-in scene of Geometry/Type @p type; for a mesh
+   * file, which gets no load, support, pair or material it does not ask
+   * for, refuses a missing Contact/Pairs or Materials key, naming it.
+   * Returns the lines that the run prints at its start: the effective
+   * materials, boundary conditions and contact pairs, and which of them
+   * came from the built-in scene.
+   */
+  std::string
+  apply_scene_settings(ParameterHandler &prm, const std::string &type);
+
   struct AnalyticalSolution
   {
     /// "none", "hertz cylinder", "hertz sphere" (3D) or "cattaneo"
@@ -122,6 +134,25 @@ namespace contact_fem
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm, const unsigned int dim);
+  };
+
+  /// The range of small-strain linear elasticity with a contact gap linear
+  /// in the displacement. A converged state beyond it (the largest
+  /// principal strain, infinitesimal rotation or displacement over the
+  /// model size above these limits) is no answer of the bodies: the run
+  /// ends with the status "converged outside the model's range" and exit
+  /// code 3, unless the input accepts it.
+  struct ModelRange
+  {
+    static constexpr double strain_limit       = 0.05;
+    static constexpr double rotation_limit     = 0.1; ///< rad
+    static constexpr double displacement_limit = 0.5; ///< of the model size
+    bool                    accept_outside     = false;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
   };
 } // namespace contact_fem
 
