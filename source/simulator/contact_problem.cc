@@ -238,15 +238,7 @@ namespace contact_fem
   void
   ContactProblem<dim>::select_linear_solver()
   {
-    ProblemTraits traits;
-    traits.dim = dim;
-    if (interface)
-      for (unsigned int p = 0; p < contact_parameters.pairs.size(); ++p)
-        traits.slave_stiffness_ratio =
-          std::max(traits.slave_stiffness_ratio, slave_stiffness_ratio(p));
-    for (const auto &[id, constants] : materials.bodies)
-      traits.largest_lambda_over_mu =
-        std::max(traits.largest_lambda_over_mu, lambda_over_mu(constants.poisson_ratio));
+    const ProblemTraits traits = problem_traits();
     linear_solver->set_problem(traits);
     if (linear_solver->select(dof_handler.n_dofs()))
       linear_solver->set_near_null_space(rigid_body_modes(*mapping, dof_handler));
@@ -926,8 +918,7 @@ namespace contact_fem
     catch (const LinearSolverFailure &e)
       {
         throw NewtonFailure(where + ": " + e.what() + "." +
-                              (e.singular ? " Hint: is every body held by supports "
-                                            "or by at least one active contact node?" :
+                              (e.singular ? " Likely cause: " + singular_system_cause() + "." :
                                             "") +
                               precision_hint(),
                             false);
@@ -940,8 +931,7 @@ namespace contact_fem
                               (pos != std::string::npos ?
                                  what.substr(pos, what.find(')', pos) - pos + 1) :
                                  std::string("the linear solver failed")) +
-                              ". Hint: is every body held by supports or by at "
-                              "least one active contact node?" +
+                              ". Likely cause: " + singular_system_cause() + "." +
                               precision_hint(),
                             false);
       }
@@ -1048,8 +1038,7 @@ namespace contact_fem
           throw NewtonFailure(at + ": the residual is not a number (|r_u| = " + scientific(r_u) +
                               ", |r_lambda| = " + scientific(r_lambda) +
                               "). The linear system is singular or the input is "
-                              "extreme: is every body held by supports or by at "
-                              "least one active contact node?");
+                              "extreme. Likely cause: " + singular_system_cause() + ".");
         assessment =
           monitor.assess(iteration, r_u, r_lambda, update.changes, update.searched_again);
         NewtonMonitor::FrictionCounts friction;

@@ -54,6 +54,7 @@ namespace contact_fem
     coarse_scene.distortion = 0.;
     parallel::distributed::Triangulation<dim> coarse(comm);
     coarse_scene.create_mesh(coarse);
+    check_value_ranges(coarse);
     check_boundary_ids(coarse);
     check_contact_pairs(coarse);
     check_memory_estimate(coarse);
