@@ -96,8 +96,11 @@ namespace contact_fem
                     const double value = function.value(face->vertex(v), c);
                     std::ostringstream where;
                     where << key << ": '" << expressions[c] << "' on boundary "
-                          << static_cast<unsigned int>(id) << " is " << value << " at t = "
-                          << time << ", (" << face->vertex(v) << ")";
+                          << static_cast<unsigned int>(id) << " is "
+                          << (std::isnan(value) ? std::string("not a number") :
+                                                  format(value))
+                          << " at t = " << time << " at the point (" << face->vertex(v)
+                          << ")";
                     AssertThrow(std::isfinite(value),
                                 ExcMessage(where.str() +
                                            "; expected a finite number at every point and "

@@ -108,7 +108,7 @@ namespace contact_fem
             " with algebraic multigrid did not reach its target residual " +
             scientific(target) + " in " + std::to_string(e.last_step) +
             " iterations (Linear solver/Maximum iterations; reached " +
-            scientific(e.last_residual) + "). " +
+            scientific(e.last_residual) + ").\n    " +
             (limit.empty() ? "None of the multigrid's measured limits (doc/stability.md) "
                              "applies to this scene" :
                              "The scene is beyond a measured limit of the multigrid: " +
