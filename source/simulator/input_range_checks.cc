@@ -30,17 +30,53 @@ namespace contact_fem
   } // namespace
 
   template <int dim>
+  std::string
+  ContactProblem<dim>::geometry_key() const
+  {
+    if (scene.type == "mesh file")
+      return "Geometry/Mesh file '" + scene.mesh_file + "'";
+    // The lengths of "hertz cylinder" are in "Geometry/Hertz cylinder".
+    std::string key = "Geometry/" + scene.type;
+    key[9]          = static_cast<char>(std::toupper(key[9]));
+    return key;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::create_coarse_mesh(const Scene<dim>                          &coarse_scene,
+                                          parallel::distributed::Triangulation<dim> &coarse) const
+  {
+    try
+      {
+        coarse_scene.create_mesh(coarse);
+      }
+    catch (const ExceptionBase &e)
+      {
+        // A library's own check (e.g. deal.II's "Matrix of normal equations
+        // not positive definite" for lengths of 1e308): say what we were
+        // doing and where the numbers came from. Our own messages name
+        // their Geometry key and pass unchanged.
+        std::string what = e.what();
+        if (what.find("Geometry/") != std::string::npos)
+          throw;
+        const auto  info = what.find("Additional information:");
+        if (info != std::string::npos)
+          what = Utilities::trim(what.substr(info + 23));
+        what = what.substr(0, what.find("\n\nStacktrace"));
+        AssertThrow(false,
+                    ExcMessage(geometry_key() + ": building the mesh failed in deal.II ('" +
+                               Utilities::trim(what) +
+                               "'); check the lengths and coordinates (finite, of magnitude "
+                               "at most " + format(largest_input_magnitude) +
+                               ", the parts of the scene of positive size)."));
+      }
+  }
+
+  template <int dim>
   void
   ContactProblem<dim>::check_value_ranges(const Triangulation<dim> &coarse) const
   {
-    // The subsection of a built-in scene's lengths: "hertz cylinder" is in
-    // "Geometry/Hertz cylinder".
-    std::string geometry_key = "Geometry/Mesh file '" + scene.mesh_file + "'";
-    if (scene.type != "mesh file")
-      {
-        geometry_key = "Geometry/" + scene.type;
-        geometry_key[9] = static_cast<char>(std::toupper(geometry_key[9]));
-      }
+    const std::string key = geometry_key();
     double extent = 0.;
     {
       const auto box = GridTools::compute_bounding_box(coarse).get_boundary_points();
@@ -48,7 +84,7 @@ namespace contact_fem
         {
           for (const double x : {box.first[d], box.second[d]})
             AssertThrow(std::abs(x) <= largest_input_magnitude,
-                        ExcMessage(geometry_key + ": a vertex coordinate is " + format(x) +
+                        ExcMessage(key + ": a vertex coordinate is " + format(x) +
                                    "; expected coordinates of magnitude at most " +
                                    format(largest_input_magnitude) +
                                    ": lengths multiply into areas, volumes and forces that "
@@ -127,6 +163,8 @@ namespace contact_fem
   // defined in this file.
 #define INSTANTIATE(dim) \
   template void ContactProblem<dim>::check_value_ranges(const Triangulation<dim> &) const; \
+  template std::string ContactProblem<dim>::geometry_key() const; \
+  template void ContactProblem<dim>::create_coarse_mesh(const Scene<dim> &, parallel::distributed::Triangulation<dim> &) const; \
   template void ContactProblem<dim>::check_load_path(const Triangulation<dim> &, const double) const;
   INSTANTIATE(2)
   INSTANTIATE(3)

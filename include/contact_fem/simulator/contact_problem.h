@@ -382,6 +382,14 @@ namespace contact_fem
     void
     check_memory_estimate(const parallel::distributed::Triangulation<dim> &coarse);
     // --- value ranges (input_range_checks.cc)
+    /// "Geometry/Mesh file 'name'" or the subsection of a built-in scene.
+    std::string
+    geometry_key() const;
+    /// Builds the mesh of @p coarse_scene; a library exception becomes a
+    /// message naming geometry_key().
+    void
+    create_coarse_mesh(const Scene<dim>                          &coarse_scene,
+                       parallel::distributed::Triangulation<dim> &coarse) const;
     /// Refuses coordinates, moduli and loads whose products overflow
     /// double precision, naming the key or mesh file.
     void
