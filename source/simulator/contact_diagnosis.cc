@@ -436,30 +436,32 @@ namespace contact_fem
 
   template <int dim>
   std::string
-  ContactProblem<dim>::singular_system_cause() const
+  ContactProblem<dim>::singular_system_hint() const
   {
     // Most specific first: what the input says, before the question.
     constexpr double penalty_digits = 1e6;
     if (contact && contact->penalty_over_automatic() > penalty_digits)
-      return "Contact/Penalty is " + format(contact->penalty_over_automatic()) +
+      return " Likely cause: Contact/Penalty is " + format(contact->penalty_over_automatic()) +
              " times its automatic value (Contact/Penalty = auto): the contact stiffness "
              "swamps the bodies' stiffness, and each factor of 10 above the automatic "
              "value costs the factorisation about one of the 16 digits of double "
-             "precision; use a penalty near the automatic value";
-    if (const std::string cause = auxetic_limit(); !cause.empty())
-      return cause;
+             "precision; use a penalty near the automatic value.";
+    if (const std::string limit = precision_limits(); !limit.empty())
+      return " Likely cause: " + limit + ".";
     const std::vector<unsigned int> free_bodies = problem_traits().unsupported_bodies;
     if (!free_bodies.empty())
       {
         std::string ids;
         for (const unsigned int id : free_bodies)
           ids += (ids.empty() ? "" : ", ") + std::to_string(id);
-        return (free_bodies.size() == 1 ? "body " : "bodies ") + ids +
+        return " Likely cause: " + std::string(free_bodies.size() == 1 ? "body " : "bodies ") +
+               ids +
                " held by no support (no fixed or prescribed boundary, no fixed point): "
-               "contact alone leaves a rigid-body mode free where no node is active, or "
-               "tangentially (frictionless); add Boundary conditions/Fixed points";
+               "contact alone leaves a rigid-body mode free where no node is active, and "
+               "tangentially without friction; add supports or Boundary conditions/Fixed "
+               "points.";
       }
-    return "is every body held by supports or by at least one active contact node?";
+    return " Hint: is every body held by supports or by at least one active contact node?";
   }
 
   // The class is instantiated in contact_problem.cc; here only the members
@@ -479,7 +481,7 @@ namespace contact_fem
   template void ContactProblem<dim>::check_reaction_balance(const Json &, Json &); \
   template void ContactProblem<dim>::warn_about_precision_limits() const; \
   template ProblemTraits ContactProblem<dim>::problem_traits() const; \
-  template std::string   ContactProblem<dim>::singular_system_cause() const; \
+  template std::string   ContactProblem<dim>::singular_system_hint() const; \
   template std::string   ContactProblem<dim>::auxetic_limit() const;
   INSTANTIATE(2)
   INSTANTIATE(3)

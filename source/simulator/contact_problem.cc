@@ -918,9 +918,7 @@ namespace contact_fem
     catch (const LinearSolverFailure &e)
       {
         throw NewtonFailure(where + ": " + e.what() + "." +
-                              (e.singular ? " Likely cause: " + singular_system_cause() + "." :
-                                            "") +
-                              precision_hint(),
+                              (e.singular ? singular_system_hint() : precision_hint()),
                             false);
       }
     catch (const std::exception &e)
@@ -931,8 +929,7 @@ namespace contact_fem
                               (pos != std::string::npos ?
                                  what.substr(pos, what.find(')', pos) - pos + 1) :
                                  std::string("the linear solver failed")) +
-                              ". Likely cause: " + singular_system_cause() + "." +
-                              precision_hint(),
+                              "." + singular_system_hint(),
                             false);
       }
     // Both iterates satisfy the hanging-node and Dirichlet constraints, and
@@ -1038,7 +1035,7 @@ namespace contact_fem
           throw NewtonFailure(at + ": the residual is not a number (|r_u| = " + scientific(r_u) +
                               ", |r_lambda| = " + scientific(r_lambda) +
                               "). The linear system is singular or the input is "
-                              "extreme. Likely cause: " + singular_system_cause() + ".");
+                              "extreme." + singular_system_hint());
         assessment =
           monitor.assess(iteration, r_u, r_lambda, update.changes, update.searched_again);
         NewtonMonitor::FrictionCounts friction;

@@ -456,9 +456,11 @@ namespace contact_fem
     ProblemTraits
     problem_traits() const;
     /// The likely cause of a singular linear system (a penalty far above
-    /// its automatic value, a body without supports, ...). Collective.
+    /// its automatic value, the precision limits, a body without supports)
+    /// as a sentence for a failure message, or the question whether every
+    /// body is held. Collective.
     std::string
-    singular_system_cause() const;
+    singular_system_hint() const;
     // --- results (contact_output.cc)
     Json
     contact_results() const;
