@@ -91,7 +91,9 @@ namespace contact_fem
                       "double precision then keeps no digit of the shear "
                       "stiffness; beyond 1e8 (nu > 0.499999995) the set-up "
                       "warns, since the reactions balance the load only to "
-                      "about 1e-14 lambda/mu.");
+                      "about 1e-14 lambda/mu. Near -1 the bulk modulus vanishes "
+                      "next to the shear modulus: 1 + nu below 1e-14 is refused, "
+                      "below 1.5e-8 (mu/K > 1e8) the set-up warns.");
     prm.leave_subsection();
   }
 
