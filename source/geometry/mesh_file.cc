@@ -5,6 +5,7 @@
 #include <deal.II/numerics/rtree.h>
 
 #include <contact_fem/geometry/hexahedron_shape.h>
+#include <contact_fem/core/value_range.h>
 #include <contact_fem/geometry/mesh_file.h>
 
 #include <algorithm>
@@ -191,8 +192,17 @@ namespace contact_fem
     }
 
     void
-    record_node(const long tag, const std::vector<double> &xyz, Contents &contents)
+    record_node(LineReader &reader, const long tag, const std::vector<double> &xyz,
+                Contents &contents)
     {
+      for (const double x : xyz)
+        if (!(std::abs(x) <= largest_input_magnitude))
+          reader.fail("node " + std::to_string(tag) + " has the coordinate " + short_number(x) +
+                      "; expected coordinates of magnitude at most " +
+                      short_number(largest_input_magnitude) +
+                      ": lengths multiply into areas, volumes and forces that overflow "
+                      "double precision (1.8e308) beyond it. Scale the mesh (Gmsh: "
+                      "Mesh.ScalingFactor).");
       if (contents.keep_hexahedra)
         contents.node_coordinates[tag] = Point<3>(xyz[0], xyz[1], xyz[2]);
       contents.z_min = std::min(contents.z_min, xyz[2]);
@@ -211,7 +221,7 @@ namespace contact_fem
       for (std::size_t i = 0; i < n; ++i)
         {
           const auto v = reader.numbers(section, count_of(i, n, "nodes"), "'tag x y z'", 4);
-          record_node(static_cast<long>(v[0]), {v[1], v[2], v[3]}, contents);
+          record_node(reader, static_cast<long>(v[0]), {v[1], v[2], v[3]}, contents);
         }
       reader.expect(section == "$NOD" ? "$ENDNOD" : "$EndNodes", section);
     }
@@ -242,7 +252,7 @@ namespace contact_fem
                                             version >= 4.1 ? "'x y z'" : "'tag x y z'",
                                             version >= 4.1 ? 3 : 4);
               const std::size_t o = version >= 4.1 ? 0 : 1;
-              record_node(version >= 4.1 ? tags[i] : static_cast<long>(v[0]),
+              record_node(reader, version >= 4.1 ? tags[i] : static_cast<long>(v[0]),
                           {v[o], v[o + 1], v[o + 2]}, contents);
             }
         }

@@ -48,6 +48,12 @@ namespace contact_fem
   }
 
   double
+  shear_over_bulk(const double nu)
+  {
+    return 3. * (1. - 2. * nu) / (2. * (1. + nu));
+  }
+
+  double
   ElasticConstants::lambda() const
   {
     return youngs_modulus * poisson_ratio /
@@ -87,7 +93,10 @@ namespace contact_fem
                       "double precision then keeps no digit of the shear "
                       "stiffness; beyond 1e8 (nu > 0.499999995) the set-up "
                       "warns, since the reactions balance the load only to "
-                      "about 1e-14 lambda/mu." + not_set_help(true),
+                      "about 1e-14 lambda/mu. Near -1 the bulk modulus vanishes "
+                      "next to the shear modulus: 1 + nu below 1e-14 is refused, "
+                      "below 1.5e-8 (mu/K > 1e8) the set-up warns." +
+                        not_set_help(true),
                       true);
     prm.leave_subsection();
   }
@@ -132,6 +141,15 @@ namespace contact_fem
                                format(nu[i]) +
                                "; expected a value in (-1, 0.5)."));
         check_bulk_to_shear_ratio(nu[i], i, nu_entries[i]);
+        AssertThrow(!(shear_over_bulk(nu[i]) > max_shear_over_bulk()),
+                    ExcMessage("Materials/Poisson's ratios: entry " + std::to_string(i + 1) +
+                               " is " + nu_entries[i] +
+                               ": 1 + nu is within ten units of round-off of 0, so the "
+                               "ratio of the shear to the bulk modulus, mu/K = 3 (1 - 2 "
+                               "nu) / (2 (1 + nu)) = " + format(shear_over_bulk(nu[i])) +
+                               ", keeps at most one correct digit (as nu -> -1 the bulk "
+                               "modulus vanishes next to the shear modulus); expected 1 + "
+                               "nu of at least about 1e-14 (nu >= -0.99999999999999)."));
         AssertThrow(bodies.count(ids[i]) == 0,
                     ExcMessage("Materials/Material ids: id " +
                                std::to_string(ids[i]) + " is listed twice."));

@@ -14,6 +14,7 @@
 #include <iomanip>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace contact_fem
@@ -178,8 +179,11 @@ namespace contact_fem
   std::string
   ContactProblem<dim>::precision_limits() const
   {
-    const std::string contrast = stiffness_contrast_limit();
-    return contrast.empty() ? incompressibility_limit() : contrast;
+    if (const std::string contrast = stiffness_contrast_limit(); !contrast.empty())
+      return contrast;
+    if (const std::string auxetic = auxetic_limit(); !auxetic.empty())
+      return auxetic;
+    return incompressibility_limit();
   }
 
   template <int dim>
@@ -214,6 +218,25 @@ namespace contact_fem
                                          std::to_string(most_null_pivots) + " zero pivot(s))" :
                                        std::string()) +
                "; use a Poisson's ratio of at most 0.49999999 (lambda/mu = 5e7)";
+    return "";
+  }
+
+  template <int dim>
+  std::string
+  ContactProblem<dim>::auxetic_limit() const
+  {
+    for (const auto &[id, constants] : materials.bodies)
+      if (shear_over_bulk(constants.poisson_ratio) > warn_shear_over_bulk())
+        return "body " + std::to_string(static_cast<unsigned int>(id)) +
+               " has Poisson's ratio " + format(constants.poisson_ratio, 17) +
+               " near -1: its bulk modulus K = E / (3 (1 - 2 nu)) vanishes next to its "
+               "shear modulus mu = E / (2 (1 + nu)) (mu/K = " +
+               format(shear_over_bulk(constants.poisson_ratio)) +
+               "), and 1 + nu, hence the body's stiffness, keeps only about " +
+               std::to_string(std::max(0, 16 - static_cast<int>(std::log10(
+                                                 shear_over_bulk(constants.poisson_ratio))))) +
+               " of the 16 digits of double precision; use a Poisson's ratio of at least "
+               "-0.99999999 (mu/K = 1.5e8)";
     return "";
   }
 
@@ -369,9 +392,83 @@ namespace contact_fem
               << std::endl;
     if (const std::string contrast = stiffness_contrast_limit(); !contrast.empty())
       pcout << "  Warning: " << contrast << "." << std::endl;
+    if (const std::string auxetic = auxetic_limit(); !auxetic.empty())
+      pcout << "  Warning: " << auxetic << "." << std::endl;
     const std::string round_off = load_at_round_off(load_stepping.end_time);
     if (!round_off.empty())
       pcout << "  Warning: " << round_off << "." << std::endl;
+  }
+
+  template <int dim>
+  ProblemTraits
+  ContactProblem<dim>::problem_traits() const
+  {
+    ProblemTraits traits;
+    traits.dim = dim;
+    if (interface)
+      for (unsigned int p = 0; p < contact_parameters.pairs.size(); ++p)
+        traits.slave_stiffness_ratio =
+          std::max(traits.slave_stiffness_ratio, slave_stiffness_ratio(p));
+    for (const auto &[id, constants] : materials.bodies)
+      traits.largest_lambda_over_mu =
+        std::max(traits.largest_lambda_over_mu, lambda_over_mu(constants.poisson_ratio));
+    const auto [youngs_min, youngs_max] = materials.youngs_modulus_range();
+    traits.youngs_modulus_contrast      = youngs_max / youngs_min;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          double shortest = std::numeric_limits<double>::max(), longest = 0.;
+          for (unsigned int l = 0; l < cell->n_lines(); ++l)
+            {
+              const double length = cell->line(l)->diameter();
+              shortest            = std::min(shortest, length);
+              longest             = std::max(longest, length);
+            }
+          traits.largest_aspect_ratio = std::max(traits.largest_aspect_ratio, longest / shortest);
+        }
+    traits.largest_aspect_ratio = Utilities::MPI::max(traits.largest_aspect_ratio, comm);
+    // A body is supported if a Dirichlet condition holds a face or a
+    // vertex of it (the coarse mesh knows every body on every rank).
+    std::set<types::material_id> supported;
+    for (const auto &condition : boundary_conditions.displacements)
+      for (const auto body : bodies_of_surface(triangulation, condition.boundary_id))
+        supported.insert(body);
+    for (const auto &condition : boundary_conditions.points)
+      supported.insert(condition.point.material_id);
+    for (const auto &[id, constants] : materials.bodies)
+      if (supported.count(id) == 0)
+        traits.unsupported_bodies.push_back(id);
+    return traits;
+  }
+
+  template <int dim>
+  std::string
+  ContactProblem<dim>::singular_system_hint() const
+  {
+    // Most specific first: what the input says, before the question.
+    constexpr double penalty_digits = 1e6;
+    if (contact && contact->penalty_over_automatic() > penalty_digits)
+      return " Likely cause: Contact/Penalty is " + format(contact->penalty_over_automatic()) +
+             " times its automatic value (Contact/Penalty = auto): the contact stiffness "
+             "swamps the bodies' stiffness, and each factor of 10 above the automatic "
+             "value costs the factorisation about one of the 16 digits of double "
+             "precision; use a penalty near the automatic value.";
+    if (const std::string limit = precision_limits(); !limit.empty())
+      return " Likely cause: " + limit + ".";
+    const std::vector<unsigned int> free_bodies = problem_traits().unsupported_bodies;
+    if (!free_bodies.empty())
+      {
+        std::string ids;
+        for (const unsigned int id : free_bodies)
+          ids += (ids.empty() ? "" : ", ") + std::to_string(id);
+        return " Likely cause: " + std::string(free_bodies.size() == 1 ? "body " : "bodies ") +
+               ids +
+               " held by no support (no fixed or prescribed boundary, no fixed point): "
+               "contact alone leaves a rigid-body mode free where no node is active, and "
+               "tangentially without friction; add supports or Boundary conditions/Fixed "
+               "points.";
+      }
+    return " Hint: is every body held by supports or by at least one active contact node?";
   }
 
   // The class is instantiated in contact_problem.cc; here only the members
@@ -389,7 +486,10 @@ namespace contact_fem
   template std::string ContactProblem<dim>::no_contact_message(const std::string &, const bool, const bool) const; \
   template std::string ContactProblem<dim>::non_convergence_hint(const bool, const double, const double) const; \
   template void ContactProblem<dim>::check_reaction_balance(const Json &, Json &); \
-  template void ContactProblem<dim>::warn_about_precision_limits() const;
+  template void ContactProblem<dim>::warn_about_precision_limits() const; \
+  template ProblemTraits ContactProblem<dim>::problem_traits() const; \
+  template std::string   ContactProblem<dim>::singular_system_hint() const; \
+  template std::string   ContactProblem<dim>::auxetic_limit() const;
   INSTANTIATE(2)
   INSTANTIATE(3)
 #undef INSTANTIATE

@@ -270,15 +270,7 @@ namespace contact_fem
   void
   ContactProblem<dim>::select_linear_solver()
   {
-    ProblemTraits traits;
-    traits.dim = dim;
-    if (interface)
-      for (unsigned int p = 0; p < contact_parameters.pairs.size(); ++p)
-        traits.slave_stiffness_ratio =
-          std::max(traits.slave_stiffness_ratio, slave_stiffness_ratio(p));
-    for (const auto &[id, constants] : materials.bodies)
-      traits.largest_lambda_over_mu =
-        std::max(traits.largest_lambda_over_mu, lambda_over_mu(constants.poisson_ratio));
+    const ProblemTraits traits = problem_traits();
     linear_solver->set_problem(traits);
     if (linear_solver->select(dof_handler.n_dofs()))
       linear_solver->set_near_null_space(rigid_body_modes(*mapping, dof_handler));
@@ -958,10 +950,7 @@ namespace contact_fem
     catch (const LinearSolverFailure &e)
       {
         throw NewtonFailure(where + ": " + e.what() + "." +
-                              (e.singular ? " Hint: is every body held by supports "
-                                            "or by at least one active contact node?" :
-                                            "") +
-                              precision_hint(),
+                              (e.singular ? singular_system_hint() : precision_hint()),
                             false);
       }
     catch (const std::exception &e)
@@ -972,9 +961,7 @@ namespace contact_fem
                               (pos != std::string::npos ?
                                  what.substr(pos, what.find(')', pos) - pos + 1) :
                                  std::string("the linear solver failed")) +
-                              ". Hint: is every body held by supports or by at "
-                              "least one active contact node?" +
-                              precision_hint(),
+                              "." + singular_system_hint(),
                             false);
       }
     // Both iterates satisfy the hanging-node and Dirichlet constraints, and
@@ -1081,8 +1068,7 @@ namespace contact_fem
           throw NewtonFailure(at + ": the residual is not a number (|r_u| = " + scientific(r_u) +
                               ", |r_lambda| = " + scientific(r_lambda) +
                               "). The linear system is singular or the input is "
-                              "extreme: is every body held by supports or by at "
-                              "least one active contact node?");
+                              "extreme." + singular_system_hint());
         assessment =
           monitor.assess(iteration, r_u, r_lambda, update.changes, update.searched_again);
         NewtonMonitor::FrictionCounts friction;

@@ -102,15 +102,18 @@ namespace contact_fem
       }
     catch (const SolverControl::NoConvergence &e)
       {
+        const std::string limit = multigrid_limit_exceeded(traits);
         throw LinearSolverFailure(
           std::string(symmetric ? "CG" : "GMRES") +
             " with algebraic multigrid did not reach its target residual " +
             scientific(target) + " in " + std::to_string(e.last_step) +
             " iterations (Linear solver/Maximum iterations; reached " +
-            scientific(e.last_residual) +
-            "). The multigrid converges slowly for a slave side much stiffer than its "
-            "master and for nearly incompressible bodies (doc/stability.md); raise the "
-            "iteration limit or set Linear solver/Type = direct",
+            scientific(e.last_residual) + ").\n    " +
+            (limit.empty() ? "None of the multigrid's measured limits (doc/stability.md) "
+                             "applies to this scene" :
+                             "The scene is beyond a measured limit of the multigrid: " +
+                               limit) +
+            "; set Linear solver/Type = direct, or raise the iteration limit",
           false);
       }
     return control.last_step();

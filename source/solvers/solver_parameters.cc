@@ -49,14 +49,13 @@ namespace contact_fem
                       "(or the absolute test holds), for the equilibrium residual "
                       "r_u of the free DoFs.");
     prm.declare_entry("Displacement absolute tolerance", "1e-9", Patterns::Double(0.),
-                      "Absolute bound on |r_u|. Units: force. The relative and the "
-                      "absolute tolerance may not both be 0 (residuals stall at "
-                      "round-off).");
+                      "Absolute bound on |r_u|. Units: force. Must be > 0 "
+                      "(residuals stall at round-off).");
     prm.declare_entry("Multiplier relative tolerance", "1e-4", Patterns::Double(0.),
                       "Same for the complementarity residual of the multipliers.");
     prm.declare_entry("Multiplier absolute tolerance", "1e-9", Patterns::Double(0.),
                       "Absolute bound on the multiplier residual. Units: length. "
-                      "The relative and the absolute tolerance may not both be 0.");
+                      "Must be > 0 (residuals stall at round-off).");
     prm.declare_entry("Damping", "1", Patterns::Double(0.),
                       "Step length alpha in (0, 1] of every Newton update, u <- u + "
                       "alpha du. Below 1 it damps an active set that cycles between "
@@ -78,21 +77,21 @@ namespace contact_fem
     prm.leave_subsection();
     // The residuals are computed in double precision: they stall at
     // round-off (measured on prm/hertz.prm: |r_u| ~ 1e-14, |r_lambda| ~
-    // 2e-16) and never reach 0, so a pair of zero tolerances makes every
-    // step fail after its iterations, and the step splits do not help.
-    const auto check_pair = [](const double relative, const double absolute,
-                               const std::string &name, const std::string &defaults) {
-      AssertThrow(relative > 0. || absolute > 0.,
-                  ExcMessage("Newton/" + name + " relative tolerance and Newton/" + name +
-                             " absolute tolerance are both 0: a residual computed in double "
-                             "precision stalls at round-off and never reaches 0, so no load "
-                             "step could converge; set at least one of them > 0 (defaults " +
-                             defaults + ")."));
+    // 2e-16) and never reach 0. Where a residual starts at round-off (a
+    // step that changes nothing, a multiplier residual of nodes that stay
+    // as they are) the relative test cannot pass either, so an absolute
+    // tolerance of 0 makes such steps fail after their iterations, and
+    // step splits do not help.
+    const auto check_absolute = [](const double tolerance, const std::string &name) {
+      AssertThrow(tolerance > 0.,
+                  ExcMessage("Newton/" + name + " absolute tolerance is 0; expected a value > 0 (default 1e-9): a residual computed in "
+                             "double precision stalls at round-off and never reaches 0, and "
+                             "where it starts at round-off the relative test cannot pass "
+                             "either, so such a load step could not converge. To rely on "
+                             "the relative test, set it far below the residuals (e.g. 1e-30)."));
     };
-    check_pair(displacement_relative_tolerance, displacement_absolute_tolerance,
-               "Displacement", "1e-4 and 1e-9");
-    check_pair(multiplier_relative_tolerance, multiplier_absolute_tolerance, "Multiplier",
-               "1e-4 and 1e-9");
+    check_absolute(displacement_absolute_tolerance, "Displacement");
+    check_absolute(multiplier_absolute_tolerance, "Multiplier");
     AssertThrow(damping > 0. && damping <= 1.,
                 ExcMessage("Newton/Damping: expected a value in (0, 1]."));
   }

@@ -54,6 +54,29 @@ namespace contact_fem
     return 1e8;
   }
 
+  /// mu / K = 3 (1 - 2 nu) / (2 (1 + nu)) of a Poisson's ratio: as nu ->
+  /// -1 the bulk modulus K vanishes next to the shear modulus mu (at a
+  /// given E, mu = E / (2 (1 + nu)) grows without bound), and 1 + nu itself
+  /// keeps only log10((1 + nu) / eps) digits.
+  double
+  shear_over_bulk(const double nu);
+
+  /// Above this mu / K (1 / (10 eps), 1 + nu < 1e-14), 1 + nu is within
+  /// ten units of round-off: Materials::parse_parameters() refuses it.
+  constexpr double
+  max_shear_over_bulk()
+  {
+    return 0.1 / 2.220446049250313e-16;
+  }
+
+  /// Above this mu / K (1 + nu < 1.5e-8) set-up warns: the body's
+  /// stiffness keeps about 16 - log10(mu / K) digits.
+  constexpr double
+  warn_shear_over_bulk()
+  {
+    return 1e8;
+  }
+
   /**
    * The isotropic linear elastic law of every body, keyed by the cells'
    * material id. In 2D the bodies are in plane strain: the out-of-plane

@@ -385,6 +385,24 @@ namespace contact_fem
     /// than half.
     void
     check_memory_estimate(const parallel::distributed::Triangulation<dim> &coarse);
+    // --- value ranges (input_range_checks.cc)
+    /// "Geometry/Mesh file 'name'" or the subsection of a built-in scene.
+    std::string
+    geometry_key() const;
+    /// Builds the mesh of @p coarse_scene; a library exception becomes a
+    /// message naming geometry_key().
+    void
+    create_coarse_mesh(const Scene<dim>                          &coarse_scene,
+                       parallel::distributed::Triangulation<dim> &coarse) const;
+    /// Refuses coordinates, moduli and loads whose products overflow
+    /// double precision, naming the key or mesh file.
+    void
+    check_value_ranges(const Triangulation<dim> &coarse) const;
+    /// Refuses a load or prescribed displacement that is not a finite number
+    /// (or a load whose force over @p area overflows) at a vertex of its
+    /// boundary at a time of the load path, naming the key.
+    void
+    check_load_path(const Triangulation<dim> &coarse, const double area) const;
     // --- diagnoses (contact_diagnosis.cc)
     /// The resultant of the applied pressures and tractions on each body. Collective.
     std::map<types::material_id, Tensor<1, dim>>
@@ -412,6 +430,9 @@ namespace contact_fem
     /// The nearly incompressible part of precision_limits().
     std::string
     incompressibility_limit() const;
+    /// The part of precision_limits() of a Poisson's ratio near -1.
+    std::string
+    auxetic_limit() const;
     /// The applied loads along the outward normals of the contact surfaces
     /// of their bodies: > 0 pushes the bodies together. Collective.
     double
@@ -434,6 +455,16 @@ namespace contact_fem
     /// Warns about Poisson's ratios and loads beyond double precision.
     void
     warn_about_precision_limits() const;
+    /// What decides the linear solver: materials, cell shapes, supports.
+    /// Collective.
+    ProblemTraits
+    problem_traits() const;
+    /// The likely cause of a singular linear system (a penalty far above
+    /// its automatic value, the precision limits, a body without supports)
+    /// as a sentence for a failure message, or the question whether every
+    /// body is held. Collective.
+    std::string
+    singular_system_hint() const;
     // --- results (contact_output.cc)
     Json
     contact_results() const;

@@ -68,6 +68,14 @@ namespace contact_fem
     void
     set_near_null_space(std::vector<std::vector<double>> &&modes) override;
 
+    /// The scene's traits: a solve that fails names the measured limit of
+    /// the multigrid they exceed, if any.
+    void
+    set_problem(const ProblemTraits &problem) override
+    {
+      traits = problem;
+    }
+
     std::string
     description() const override;
 
@@ -125,7 +133,8 @@ namespace contact_fem
     static constexpr double again_tolerance = 1e-4;
 
   private:
-    Parameters parameters;
+    Parameters    parameters;
+    ProblemTraits traits;
     /// The modes, concatenated (ML's layout): mode k, owned DoF i at
     /// k * n_owned + i.
     std::vector<double>                                 null_space;

@@ -52,7 +52,23 @@ namespace contact_fem
     double slave_stiffness_ratio = 0.;
     /// Largest lambda / mu of the bodies (nu -> 0.5: lambda / mu -> inf).
     double largest_lambda_over_mu = 1.;
+    /// Largest Young's modulus of the bodies over the smallest, whichever
+    /// side of a pair the stiff one is.
+    double youngs_modulus_contrast = 1.;
+    /// Largest ratio of the longest to the shortest edge of a cell.
+    double largest_aspect_ratio = 1.;
+    /// Material ids of the bodies that no Dirichlet condition holds (no
+    /// fixed or prescribed boundary, no fixed point): held only through
+    /// contact, or not at all.
+    std::vector<unsigned int> unsupported_bodies;
   };
+
+  /// Why the multigrid of the iterative solver is known (measured,
+  /// doc/stability.md) to converge slowly or not at all on a scene with
+  /// @p traits; empty if no measured limit applies. Type = auto takes the
+  /// direct solver where this is not empty, and a Krylov failure names it.
+  std::string
+  multigrid_limit_exceeded(const ProblemTraits &traits);
 
   /**
    * Solves the condensed Newton systems of one sparsity pattern. The driver

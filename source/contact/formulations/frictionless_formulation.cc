@@ -160,6 +160,7 @@ namespace contact_fem
   {
     const unsigned int n_pairs = interface.pairs.size();
     penalty.assign(n_pairs, 0.);
+    penalty_ratio = 1.;
     scale.assign(n_pairs, 0.);
     for (unsigned int p = 0; p < n_pairs; ++p)
       {
@@ -171,6 +172,8 @@ namespace contact_fem
                               stat.master_modulus / stat.mean_master_size);
         const double automatic = penalty_factor * E_over_h;
         penalty[p] = parameters.penalty > 0. ? parameters.penalty : automatic;
+        if (parameters.penalty > 0. && automatic > 0.)
+          penalty_ratio = std::max(penalty_ratio, parameters.penalty / automatic);
         scale[p]   = parameters.scale_factor > 0. ? parameters.scale_factor : E_over_h;
         if (scale[p] <= 0.)
           scale[p] = 1.;

@@ -129,6 +129,15 @@ namespace contact_fem
     virtual double
     normal_pressure(const unsigned int n) const = 0;
 
+    /// The largest ratio of a given Contact/Penalty to the automatic value
+    /// it replaces, over the pairs (1 when automatic): a penalty far above
+    /// it leaves the system too few digits. For the diagnosis of failures.
+    virtual double
+    penalty_over_automatic() const
+    {
+      return 1.;
+    }
+
     /// The contact traction on the slave at slave node @p s: -p_n n plus the
     /// tangential traction of a frictional law (zero when frictionless).
     virtual Tensor<1, dim>

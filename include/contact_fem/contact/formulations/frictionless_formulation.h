@@ -70,6 +70,12 @@ namespace contact_fem
       return -pressure[s.node] * s.normal;
     }
 
+    double
+    penalty_over_automatic() const override
+    {
+      return penalty_ratio;
+    }
+
     std::unique_ptr<State>
     save_state() const override;
 
@@ -150,6 +156,7 @@ namespace contact_fem
     std::vector<bool>   active;   ///< per interface node
     std::vector<double> penalty;  ///< eps per pair
     std::vector<double> scale;    ///< k per pair
+    double penalty_ratio = 1.;    ///< see penalty_over_automatic()
 
   private:
     struct PressureState : public State
