@@ -48,6 +48,19 @@ namespace contact_fem
   std::vector<std::pair<std::string, std::string>>
   split_key_value_list(const std::string &text, const std::string &key);
 
+  /// @p value itself if short, else its start and its length: messages
+  /// quote a bounded excerpt of what the user wrote, never a whole long
+  /// value (a 10,000-character expression would flood the log).
+  std::string
+  excerpt(const std::string &value);
+
+  /// Checks that @p expression is a valid, deterministic muparser expression
+  /// of x, y, (z,) t (@p dim 2 or 3); throws naming @p key otherwise.
+  /// rand() and rand_seed() are refused: two runs of one scene would
+  /// differ.
+  void
+  check_expression(const std::string &expression, const unsigned int dim, const std::string &key);
+
   /// Parses a boundary id; throws naming @p key if it is not in 0..254.
   types::boundary_id
   parse_boundary_id(const std::string &text, const std::string &key);

@@ -118,8 +118,22 @@ namespace contact_fem
     void
     print_input_warnings() const;
 
+    /// --validate: every check a run makes before its first solve (the
+    /// mesh, its materials, the boundary conditions, fixed points and
+    /// probes, the contact interface and the first contact search),
+    /// without writing any output. Throws what the run would throw.
+    void
+    validate();
+
   private:
     // --- set-up (contact_problem.cc)
+    /// Builds the scene's mesh and checks it (materials, cell shapes).
+    void
+    create_checked_mesh();
+    /// The adaptive cycles of run(), recorded in @p cycles; returns the
+    /// exit code.
+    int
+    run_cycles(Json &cycles, const Timer &total_timer);
     void
     setup_dofs();
     void
@@ -381,6 +395,11 @@ namespace contact_fem
     /// than half.
     void
     check_memory_estimate(const parallel::distributed::Triangulation<dim> &coarse);
+    /// Why the next adaptive cycle, with @p new_dofs DoFs after a cycle
+    /// with @p old_dofs, would exhaust the memory the run may use (RAM,
+    /// cgroup, ulimit -v), or an empty string if it fits.
+    std::string
+    memory_shortage(const double old_dofs, const double new_dofs) const;
     // --- diagnoses (contact_diagnosis.cc)
     /// The resultant of the applied pressures and tractions on each body. Collective.
     std::map<types::material_id, Tensor<1, dim>>
