@@ -1213,8 +1213,7 @@ namespace contact_fem
               << "Error: " << e.what() << ": stopped; summary.json keeps the finished "
               << "cycles and says \"interrupted\"." << std::endl;
         write_summary(cycles, total_timer.wall_time(),
-                      std::string("interrupted (") + e.what() +
-                        "): results of the finished cycles only");
+                      std::string(e.what()) + ": results of the finished cycles only");
         exit_code = 128 + e.signal;
       }
     catch (const std::bad_alloc &)

@@ -158,11 +158,11 @@ namespace contact_fem
       require(!error && fs::is_directory(directory),
               "Output directory: cannot create '" + directory + "': " +
                 (error ? error.message() : "it exists and is not a directory") + ".");
+      check_writable(directory);
       lock_directory(directory);
       OutputDirectoryReport report;
       report.earlier_scene = earlier_scene(directory);
       report.removed       = remove_earlier_outputs(directory);
-      check_writable(directory);
       return report;
     }
   } // namespace
