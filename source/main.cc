@@ -324,44 +324,6 @@ namespace
     return tree;
   }
 
-  /// The message of an exception without deal.II's source location and
-  /// stack trace: users need the "Additional information" only.
-  std::string
-  clean_message(const std::exception &e)
-  {
-    std::string       text = e.what();
-    const std::string key  = "Additional information:";
-    const auto        pos  = text.find(key);
-    if (pos != std::string::npos)
-      {
-        text = text.substr(pos + key.size());
-        const auto end = text.find("Stacktrace:");
-        if (end != std::string::npos)
-          text = text.substr(0, end);
-      }
-    // Collapse the line breaks and indentation of deal.II's formatting.
-    std::string result;
-    bool        space = false;
-    for (const char c : text)
-      if (c == '\n' || c == ' ' || c == '\t')
-        space = !result.empty();
-      else
-        {
-          if (space)
-            result += ' ';
-          result += c;
-          space = false;
-        }
-    while (!result.empty() && result.back() == '-')
-      result.pop_back();
-    // A message quotes what the user wrote: bounded, whatever its length.
-    constexpr std::size_t longest = 2000;
-    if (result.size() > longest)
-      result = result.substr(0, longest) + "... (the message continues for " +
-               std::to_string(result.size() - longest) + " characters)";
-    return result;
-  }
-
   /// Every parameter with its default, its allowed values and its
   /// documentation, in .prm syntax (so the listing is a valid input file).
   void
@@ -396,7 +358,8 @@ namespace
     // The problem is destroyed before an error is reported, so that its
     // MPI-aware members shut down normally.
     std::exception_ptr error;
-    int                code = 0;
+    int                code    = 0;
+    bool               solving = false;
     {
       contact_fem::ContactProblem<dim> problem(prm, name, directory);
       try
@@ -408,9 +371,22 @@ namespace
         }
       catch (...)
         {
-          error = std::current_exception();
+          error   = std::current_exception();
+          solving = problem.started_solving();
         }
     }
+    if (error && solving)
+      try
+        {
+          std::rethrow_exception(error);
+        }
+      catch (const std::exception &e)
+        {
+          // After the first solve: a failure of the run, not bad input.
+          if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+            std::cerr << "contact_fem: error: " << contact_fem::user_message(e) << std::endl;
+          return 2;
+        }
     if (error)
       std::rethrow_exception(error);
     return code;
@@ -487,7 +463,7 @@ main(int argc, char **argv)
   catch (const std::exception &e)
     {
       if (root)
-        std::cerr << "contact_fem: error: " << clean_message(e) << std::endl;
+        std::cerr << "contact_fem: error: " << contact_fem::user_message(e) << std::endl;
       return 1;
     }
 }

@@ -49,6 +49,44 @@ namespace contact_fem
     return "";
   }
 
+
+
+  std::string
+  user_message(const std::exception &e)
+  {
+    std::string       text = e.what();
+    const std::string key  = "Additional information:";
+    const auto        pos  = text.find(key);
+    if (pos != std::string::npos)
+      {
+        text = text.substr(pos + key.size());
+        const auto end = text.find("Stacktrace:");
+        if (end != std::string::npos)
+          text = text.substr(0, end);
+      }
+    // Collapse the line breaks and indentation of deal.II's formatting.
+    std::string result;
+    bool        space = false;
+    for (const char c : text)
+      if (c == '\n' || c == ' ' || c == '\t')
+        space = !result.empty();
+      else
+        {
+          if (space)
+            result += ' ';
+          result += c;
+          space = false;
+        }
+    while (!result.empty() && result.back() == '-')
+      result.pop_back();
+    // A message quotes what the user wrote: bounded, whatever its length.
+    constexpr std::size_t longest = 2000;
+    if (result.size() > longest)
+      result = result.substr(0, longest) + "... (the message continues for " +
+               std::to_string(result.size() - longest) + " characters)";
+    return result;
+  }
+
   std::string
   excerpt(const std::string &value)
   {

@@ -10,6 +10,7 @@
 #include <contact_fem/simulator/contact_problem.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/core/interruption.h>
+#include <contact_fem/core/parameters.h>
 #include <contact_fem/solvers/rigid_body_modes.h>
 
 #include <algorithm>
@@ -1013,6 +1014,7 @@ namespace contact_fem
                                        const bool         first_step,
                                        Json              &record)
   {
+    solving = true;
     Timer step_timer;
     prepare_load_step(time, step_size, first_step);
     const bool frictional = contact && contact->frictional();
@@ -1201,8 +1203,8 @@ namespace contact_fem
                            "newton_iterations,wall_time,cumulative_wall_time\n";
       }
     check_written(output.directory + "/convergence.csv", !root || convergence_csv.good());
-    Json cycles     = Json::array();
-    int  exit_code  = 0;
+    Json cycles    = Json::array();
+    int  exit_code = 0;
     try
       {
         exit_code = run_cycles(cycles, total_timer);
@@ -1216,17 +1218,37 @@ namespace contact_fem
                       std::string(e.what()) + ": results of the finished cycles only");
         exit_code = 128 + e.signal;
       }
+    catch (const OutputFailure &e)
+      {
+        // A full disk: say so, and try to mark the summary (it may fail too).
+        pcout << std::endl << "Error: " << e.what() << std::endl;
+        try
+          {
+            write_summary(cycles, total_timer.wall_time(), std::string("failed: ") + e.what());
+          }
+        catch (const OutputFailure &)
+          {}
+        exit_code = 2;
+      }
     catch (const std::bad_alloc &)
       {
         pcout << std::endl
               << "Error: out of memory in cycle " << cycle << " (std::bad_alloc): the "
               << "mesh needs more memory than the run may use (RAM, cgroup or ulimit -v). "
               << "summary.json keeps the finished cycles; refine "
-              << "less (" << refinement_keys() << ", Adaptive refinement/Maximum cells)."
+              << "less (" << refinement_keys() << ", Refinement/Maximum cells)."
               << std::endl;
         write_summary(cycles, total_timer.wall_time(),
                       "failed: out of memory; results of the finished cycles only");
         exit_code = 2;
+      }
+    catch (const std::exception &e)
+      {
+        // Anything else thrown after the first solve started is a failure of
+        // the run (main() gives exit 2): the summary says so.
+        if (solving)
+          write_summary(cycles, total_timer.wall_time(), "failed: " + user_message(e));
+        throw;
       }
     if (console.file_failed())
       pcout << "Warning: writing '" << output.directory

@@ -237,7 +237,8 @@ namespace contact_fem
     for (const std::string &p : Utilities::MPI::all_gather(comm, problem))
       if (first.empty())
         first = p;
-    AssertThrow(first.empty(), ExcMessage("Output: cannot write '" + path + "' (" + first + ")."));
+    if (!first.empty())
+      throw OutputFailure("Output: cannot write '" + path + "' (" + first + ").");
   }
 
   template <int dim>

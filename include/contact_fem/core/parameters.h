@@ -6,6 +6,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
 
+#include <exception>
+
 #include <limits>
 #include <string>
 #include <utility>
@@ -47,6 +49,12 @@ namespace contact_fem
   /// Parses "a: b; c: d" style lists; throws naming @p key on malformed input.
   std::vector<std::pair<std::string, std::string>>
   split_key_value_list(const std::string &text, const std::string &key);
+
+  /// The message of @p e without deal.II's source location and stack trace
+  /// (users need its "Additional information" only), on one line and
+  /// bounded in length.
+  std::string
+  user_message(const std::exception &e);
 
   /// @p value itself if short, else its start and its length: messages
   /// quote a bounded excerpt of what the user wrote, never a whole long

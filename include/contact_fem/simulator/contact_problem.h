@@ -118,6 +118,14 @@ namespace contact_fem
     void
     print_input_warnings() const;
 
+    /// Whether run() got as far as its first solve: an error thrown after
+    /// that is a failure of the run (exit 2), not bad input (exit 1).
+    bool
+    started_solving() const
+    {
+      return solving;
+    }
+
     /// --validate: every check a run makes before its first solve (the
     /// mesh, its materials, the boundary conditions, fixed points and
     /// probes, the contact interface and the first contact search),
@@ -613,6 +621,8 @@ namespace contact_fem
     std::ofstream                                  convergence_csv;
     /// Set by check_memory_estimate(), printed by run().
     std::string memory_warning;
+    /// Set by the first solve_load_step() (started_solving()).
+    bool solving = false;
     /// A cycle's reactions did not balance its load (check_reaction_balance()).
     bool balance_failed = false;
   };

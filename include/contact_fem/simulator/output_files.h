@@ -7,6 +7,7 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>
 
+#include <stdexcept>
 #include <string>
 
 namespace contact_fem
@@ -52,8 +53,14 @@ namespace contact_fem
   std::string
   write_file_atomically(const std::string &path, const std::string &text);
 
-  /// Throws "Output: cannot write '@p path' (reason)" on every rank if
-  /// @p problem is not empty on some rank. Collective.
+  /// A result file that could not be written during a run (a full disk).
+  struct OutputFailure : public std::runtime_error
+  {
+    using std::runtime_error::runtime_error;
+  };
+
+  /// Throws OutputFailure "Output: cannot write '@p path' (reason)" on every
+  /// rank if @p problem is not empty on some rank. Collective.
   void
   throw_if_unwritten(const std::string &path, const std::string &problem, const MPI_Comm comm);
 
