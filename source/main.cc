@@ -2,12 +2,17 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <contact_fem/core/interruption.h>
+#include <contact_fem/core/parameters.h>
 #include <contact_fem/simulator/contact_problem.h>
 
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
+#include <boost/property_tree/xml_parser.hpp>
 
+#include <algorithm>
 #include <cctype>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -32,10 +37,14 @@ namespace
     "  --set \"Sub/Key=value\"      override one parameter of the file (repeatable;\n"
     "                             subsections separated by '/')\n"
     "  --output-directory DIR     put every output file of the run under DIR\n"
-    "  --validate                 read and check the file, then exit\n"
+    "  --validate                 read and check the file and the scene it\n"
+    "                             builds (mesh, supports, contact set-up: every\n"
+    "                             check up to the first solve), then exit\n"
     "\n"
-    "Exit codes: 0 success, 1 bad input, 2 the solver failed (the results of\n"
-    "the last converged load step are written and marked as such).\n";
+    "Exit codes: 0 success, 1 bad input, 2 the solver failed or the memory ran\n"
+    "short (the results of the last converged load step or cycle are written\n"
+    "and marked as such), 128+N stopped by signal N (SIGINT 130, SIGTERM 143;\n"
+    "summary.json says \"interrupted\").\n";
 
   struct CommandLine
   {
@@ -67,9 +76,9 @@ namespace
           {
             const std::string assignment = next(arg);
             const auto        eq         = assignment.find('=');
-            if (eq == std::string::npos || eq == 0)
-              throw std::runtime_error("--set '" + assignment +
-                                       "': expected \"Subsection/Key=value\".");
+            if (eq == std::string::npos)
+              throw std::runtime_error("--set \"" + contact_fem::excerpt(assignment) +
+                                       "\": expected \"Subsection/Key=value\" (no '=').");
             cl.overrides.emplace_back(assignment.substr(0, eq), assignment.substr(eq + 1));
           }
         else if (arg == "--output-directory")
@@ -97,91 +106,134 @@ namespace
     return !first.empty() && first != "subsection" && first != "end";
   }
 
-  /// Refuses a parameter file that is a directory or holds no settings:
-  /// ParameterHandler reads both as an empty file and the run would solve
-  /// the default scene as if asked to.
+  /// Throws naming @p file unless it is a regular file (or a link to one):
+  /// a directory reads as an empty file, a FIFO or a device blocks for ever.
+  void
+  require_regular_file(const std::string &file, const std::string &what)
+  {
+    namespace fs = std::filesystem;
+    std::error_code error;
+    const auto      status = fs::status(file, error);
+    if (!fs::exists(status))
+      throw std::runtime_error("cannot open " + what + " '" + file + "': it does not exist.");
+    if (fs::is_directory(status))
+      throw std::runtime_error(what + " '" + file + "' is a directory; expected a .prm file.");
+    if (!fs::is_regular_file(status))
+      throw std::runtime_error(what + " '" + file +
+                               "' is not a regular file (a FIFO, socket or device); expected "
+                               "a .prm file.");
+  }
+
+  /// The file named by a ParameterHandler 'include' line (deal.II: the
+  /// line, without its comment, starts with "include " or "INCLUDE "), or
+  /// an empty string.
+  std::string
+  included_file(const std::string &line)
+  {
+    const std::string text = Utilities::trim(line.substr(0, line.find('#')));
+    if (text.compare(0, 8, "include ") != 0 && text.compare(0, 8, "INCLUDE ") != 0)
+      return "";
+    return Utilities::trim(text.substr(8));
+  }
+
+  /// Follows the 'include' lines of a .prm file: every file must be a
+  /// regular file and none may include itself, directly or through others
+  /// (ParameterHandler would recurse until the stack overflows).
+  void
+  check_includes(const std::string &file, std::vector<std::string> &chain)
+  {
+    std::error_code error;
+    const auto      canonical = std::filesystem::weakly_canonical(file, error).string();
+    chain.push_back(canonical);
+    std::ifstream in(file);
+    std::string   line;
+    for (unsigned int number = 1; std::getline(in, line); ++number)
+      {
+        const std::string included = included_file(line);
+        if (included.empty())
+          continue;
+        const std::string where = "the parameter file '" + file + "', line " +
+                                  std::to_string(number) + ", 'include " + included + "'";
+        require_regular_file(included, where + ": the included file");
+        const auto again = std::filesystem::weakly_canonical(included, error).string();
+        if (std::find(chain.begin(), chain.end(), again) != chain.end())
+          throw std::runtime_error(where + ": includes a file that is already being read "
+                                           "(an include cycle, which never ends).");
+        check_includes(included, chain);
+      }
+    chain.pop_back();
+  }
+
+  /// The number of values set in @p tree (JSON or XML read by boost),
+  /// without XML attributes and comments.
+  unsigned int
+  count_values(const boost::property_tree::ptree &tree)
+  {
+    unsigned int n = 0;
+    for (const auto &[key, child] : tree)
+      if (key != "<xmlattr>" && key != "<xmlcomment>")
+        n += child.empty() ? !Utilities::trim(child.data()).empty() : count_values(child);
+    return n;
+  }
+
+  /// Reads a JSON or XML parameter file as ParameterHandler will, so that
+  /// a malformed one is named with its line, and one that sets nothing
+  /// ("{}", "<ParameterHandler/>") is refused like an empty .prm.
+  void
+  check_structured_file(const std::string &file, const bool json)
+  {
+    boost::property_tree::ptree tree;
+    try
+      {
+        if (json)
+          boost::property_tree::read_json(file, tree);
+        else
+          boost::property_tree::read_xml(file, tree);
+      }
+    catch (const boost::property_tree::file_parser_error &e)
+      {
+        throw std::runtime_error("the parameter file '" + file + "', line " +
+                                 std::to_string(e.line()) + ": " + e.message() + "; expected a parameter file in " +
+                                 (json ? "JSON" : "XML") + " (deal.II's ParameterHandler format).");
+      }
+    if (count_values(tree) == 0)
+      throw std::runtime_error("the parameter file '" + file +
+                               "' sets no value (an empty file would run the default scene).");
+  }
+
+  /// Refuses a parameter file that is not a regular file or holds no
+  /// settings: ParameterHandler reads both as an empty file and the run
+  /// would solve the default scene as if asked to.
   void
   check_parameter_file(const std::string &file)
   {
-    std::error_code error;
-    if (std::filesystem::is_directory(file, error))
-      throw std::runtime_error("the parameter file '" + file +
-                               "' is a directory; expected a .prm file.");
+    require_regular_file(file, "the parameter file");
     std::ifstream in(file);
     if (!in)
       throw std::runtime_error("cannot open the parameter file '" + file + "'.");
-    const bool prm_syntax = file.size() < 5 || (file.substr(file.size() - 5) != ".json" &&
-                                                file.substr(file.size() - 4) != ".xml");
+    const auto ends_with = [&](const std::string &suffix) {
+      return file.size() >= suffix.size() &&
+             file.compare(file.size() - suffix.size(), suffix.size(), suffix) == 0;
+    };
     std::string line;
     bool        empty = true, settings = false;
     while (std::getline(in, line))
       {
         empty    = empty && line.find_first_not_of(" \t\r") == std::string::npos;
-        settings = settings || (prm_syntax ? is_setting(line) : !empty);
+        settings = settings || is_setting(line);
       }
     if (empty)
       throw std::runtime_error("the parameter file '" + file +
                                "' is empty: it has no settings (an empty file would run "
                                "the default scene).");
+    if (ends_with(".json") || ends_with(".xml"))
+      return check_structured_file(file, ends_with(".json"));
     if (!settings)
       throw std::runtime_error("the parameter file '" + file +
                                "' has no settings, only comments or subsections (it would "
                                "run the default scene).");
-  }
-
-  /// Applies "A/B/Key=value" by parsing the equivalent prm text, so that the
-  /// same checks and messages as for the file apply.
-  void
-  apply_override(ParameterHandler &prm, const std::string &path, const std::string &value)
-  {
-    std::vector<std::string> parts = Utilities::split_string_list(path, '/');
-    std::string              text;
-    for (unsigned int i = 0; i + 1 < parts.size(); ++i)
-      text += "subsection " + parts[i] + "\n";
-    text += "set " + parts.back() + " = " + value + "\n";
-    for (unsigned int i = 0; i + 1 < parts.size(); ++i)
-      text += "end\n";
-    try
-      {
-        prm.parse_input_from_string(text, "--set " + path + "=" + value);
-      }
-    catch (const std::exception &e)
-      {
-        throw std::runtime_error("--set \"" + path + "=" + value + "\": " + e.what());
-      }
-  }
-
-  /// The message of an exception without deal.II's source location and
-  /// stack trace: users need the "Additional information" only.
-  std::string
-  clean_message(const std::exception &e)
-  {
-    std::string       text = e.what();
-    const std::string key  = "Additional information:";
-    const auto        pos  = text.find(key);
-    if (pos != std::string::npos)
-      {
-        text = text.substr(pos + key.size());
-        const auto end = text.find("Stacktrace:");
-        if (end != std::string::npos)
-          text = text.substr(0, end);
-      }
-    // Collapse the line breaks and indentation of deal.II's formatting.
-    std::string result;
-    bool        space = false;
-    for (const char c : text)
-      if (c == '\n' || c == ' ' || c == '\t')
-        space = !result.empty();
-      else
-        {
-          if (space)
-            result += ' ';
-          result += c;
-          space = false;
-        }
-    while (!result.empty() && result.back() == '-')
-      result.pop_back();
-    return result;
+    std::vector<std::string> chain;
+    check_includes(file, chain);
   }
 
   /// Undoes ParameterHandler's name mangling ("_20" for a blank, ...).
@@ -199,6 +251,77 @@ namespace
       else
         result += name[i];
     return result;
+  }
+
+  /// Applies "A/B/Key=value" after checking that the subsections and the
+  /// key are declared, so that a message names the option, the missing
+  /// name or the expected value (ParameterHandler's own names an
+  /// "<input string>").
+  void
+  apply_override(ParameterHandler                  &prm,
+                 const boost::property_tree::ptree &declared,
+                 const std::string                 &path,
+                 const std::string                 &value)
+  {
+    const std::string option = "--set \"" + contact_fem::excerpt(path + "=" + value) + "\"";
+    std::vector<std::string> parts = Utilities::split_string_list(path, '/');
+    if (parts.empty() || std::any_of(parts.begin(), parts.end(),
+                                     [](const std::string &p) { return p.empty(); }))
+      throw std::runtime_error(option + ": expected \"Subsection/Key=value\" (a key before "
+                                        "'=', subsections separated by single '/').");
+    const boost::property_tree::ptree *node = &declared;
+    std::string                        where = "at the top level";
+    for (unsigned int i = 0; i < parts.size(); ++i)
+      {
+        const bool                         last  = i + 1 == parts.size();
+        const boost::property_tree::ptree *found = nullptr;
+        for (const auto &[key, child] : *node)
+          if (demangle(key) == parts[i])
+            found = &child;
+        const bool is_key = found && found->count("value") && found->count("default_value");
+        if (!found || is_key != last)
+          throw std::runtime_error(
+            option + ": " +
+            (found ? "'" + parts[i] + "' is " + (is_key ? "a key, not a subsection" :
+                                                           "a subsection, not a key") :
+                     "no " + std::string(last ? "key" : "subsection") + " '" + parts[i] +
+                       "' " + where) +
+            " (--print-parameters lists every subsection and key).");
+        node  = found;
+        where = "in subsection '";
+        for (unsigned int j = 0; j <= i; ++j)
+          where += (j > 0 ? "/" : "") + parts[j];
+        where += "'";
+      }
+    for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+      prm.enter_subsection(parts[i]);
+    bool matched = true;
+    try
+      {
+        prm.set(parts.back(), value);
+      }
+    catch (...)
+      {
+        matched = false;
+      }
+    for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+      prm.leave_subsection();
+    if (!matched)
+      throw std::runtime_error(option + ": '" + contact_fem::excerpt(value) +
+                               "' is not a valid value; expected " +
+                               node->get<std::string>("pattern_description") + ".");
+  }
+
+  /// The declared parameters with their defaults, patterns and
+  /// documentation (ParameterHandler's JSON listing).
+  boost::property_tree::ptree
+  declared_parameters(const ParameterHandler &prm)
+  {
+    std::stringstream json;
+    prm.print_parameters(json, ParameterHandler::JSON);
+    boost::property_tree::ptree tree;
+    boost::property_tree::read_json(json, tree);
+    return tree;
   }
 
   /// Every parameter with its default, its allowed values and its
@@ -234,26 +357,38 @@ namespace
   {
     // The problem is destroyed before an error is reported, so that its
     // MPI-aware members shut down normally.
-    std::string error;
-    int         code = 0;
+    std::exception_ptr error;
+    int                code    = 0;
+    bool               solving = false;
     {
       contact_fem::ContactProblem<dim> problem(prm, name, directory);
-      if (validate_only)
-        {
-          problem.print_input_warnings();
-          return 0;
-        }
       try
         {
-          code = problem.run();
+          if (validate_only)
+            problem.validate();
+          else
+            code = problem.run();
+        }
+      catch (...)
+        {
+          error   = std::current_exception();
+          solving = problem.started_solving();
+        }
+    }
+    if (error && solving)
+      try
+        {
+          std::rethrow_exception(error);
         }
       catch (const std::exception &e)
         {
-          error = clean_message(e);
+          // After the first solve: a failure of the run, not bad input.
+          if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+            std::cerr << "contact_fem: error: " << contact_fem::user_message(e) << std::endl;
+          return 2;
         }
-    }
-    if (!error.empty())
-      throw std::runtime_error(error);
+    if (error)
+      std::rethrow_exception(error);
     return code;
   }
 } // namespace
@@ -263,6 +398,7 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  contact_fem::install_interrupt_handlers();
   try
     {
       const CommandLine cl = parse_command_line(argc, argv);
@@ -278,22 +414,19 @@ main(int argc, char **argv)
         {
           if (root)
             {
-              std::stringstream json;
-              prm.print_parameters(json, ParameterHandler::JSON);
-              boost::property_tree::ptree tree;
-              boost::property_tree::read_json(json, tree);
               std::cout << "# contact_fem parameters: default values, allowed values and "
                            "documentation.\n\n";
-              print_parameter_tree(tree, 0, std::cout);
+              print_parameter_tree(declared_parameters(prm), 0, std::cout);
             }
           return 0;
         }
       if (cl.prm_file.empty())
         throw std::runtime_error("no parameter file given.\n\n" + std::string(usage));
       check_parameter_file(cl.prm_file);
+      const boost::property_tree::ptree declared = declared_parameters(prm);
       prm.parse_input(cl.prm_file);
       for (const auto &[path, value] : cl.overrides)
-        apply_override(prm, path, value);
+        apply_override(prm, declared, path, value);
       if (!cl.output_directory.empty())
         prm.set("Output directory", cl.output_directory);
 
@@ -311,10 +444,26 @@ main(int argc, char **argv)
       return dim == 2 ? run<2>(prm, name, directory, cl.validate) :
                         run<3>(prm, name, directory, cl.validate);
     }
+  catch (const contact_fem::Interrupted &e)
+    {
+      // Before the output directory was prepared: nothing to mark.
+      if (root)
+        std::cerr << "contact_fem: " << e.what() << " before the first load step." << std::endl;
+      return 128 + e.signal;
+    }
+  catch (const std::bad_alloc &)
+    {
+      if (root)
+        std::cerr << "contact_fem: error: out of memory (std::bad_alloc) while setting up the "
+                     "scene: the mesh needs more memory than the run may use (RAM, cgroup "
+                     "or ulimit -v); refine less."
+                  << std::endl;
+      return 2;
+    }
   catch (const std::exception &e)
     {
       if (root)
-        std::cerr << "contact_fem: error: " << clean_message(e) << std::endl;
+        std::cerr << "contact_fem: error: " << contact_fem::user_message(e) << std::endl;
       return 1;
     }
 }

@@ -12,6 +12,15 @@
 //   # driver: env NAME=VALUE         an environment variable of the run
 //   # driver: parameter directory    run on a directory named scene.prm
 //                                    instead of the .prm file
+//   # driver: parameter PATH         run on PATH instead of the .prm file
+//   # driver: fifo PATH              a named pipe (FIFO) at PATH
+//   # driver: hold-lock DIR          hold the output-directory lock of DIR
+//                                    (as a live run does) during the run;
+//                                    the driver's pid prints as <pid>
+//   # driver: signal NAME REGEX      send signal NAME (INT or TERM) to the
+//                                    run once a line of its output matches
+//   # driver: show PATH REGEX        after the run, print the lines of
+//                                    file PATH that match
 //   # driver: mkdir PATH             a directory (in the working directory)
 //   # driver: write PATH [TEXT]      a file holding TEXT
 //   # driver: read-only PATH         a directory nobody may write to: the
@@ -25,9 +34,13 @@
 //   # driver: mask REGEX             replace each match in the printed text
 //                                    by '...' (a part decided by round-off,
 //                                    e.g. the step at which a run fails)
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <algorithm>
 #include <array>
@@ -51,8 +64,11 @@ namespace
     std::string                                      arguments;
     std::vector<std::pair<std::string, std::string>> environment;
     bool                                             parameter_directory = false;
+    std::string                                      parameter_file;
     std::vector<std::string>                         read_only, listed;
-    std::string                                      keep, mask;
+    std::vector<std::pair<std::string, std::string>> shown;
+    std::string                                      keep, mask, signal_pattern;
+    int                                              signal = 0;
   };
 
   /// Lets the test directory be removed again by a non-root user.
@@ -96,11 +112,36 @@ namespace
           }
         else if (directive == "parameter" && argument == "directory")
           c.parameter_directory = true;
+        else if (directive == "parameter")
+          c.parameter_file = argument;
+        else if (directive == "fifo")
+          {
+            fs::remove(argument);
+            mkfifo(argument.c_str(), 0644);
+          }
+        else if (directive == "hold-lock")
+          {
+            // Kept open (and locked) until the driver ends.
+            fs::create_directories(argument);
+            const int fd = open((argument + "/.contact_fem.lock").c_str(), O_RDWR | O_CREAT, 0644);
+            const std::string pid = std::to_string(getpid());
+            if (fd < 0 || flock(fd, LOCK_EX | LOCK_NB) != 0 || ftruncate(fd, 0) != 0 ||
+                write(fd, pid.c_str(), pid.size()) != ssize_t(pid.size()))
+              std::exit(2);
+          }
+        else if (directive == "signal")
+          {
+            c.signal         = argument == "INT" ? SIGINT : SIGTERM;
+            c.signal_pattern = rest;
+          }
+        else if (directive == "show")
+          c.shown.emplace_back(argument, rest);
         else if (directive == "mkdir")
           fs::create_directories(argument);
         else if (directive == "write")
           {
-            fs::create_directories(fs::path(argument).parent_path());
+            if (fs::path(argument).has_parent_path())
+              fs::create_directories(fs::path(argument).parent_path());
             std::ofstream(argument) << rest << (rest.empty() ? "" : "\n");
           }
         else if (directive == "read-only")
@@ -163,8 +204,16 @@ namespace
     std::string            text;
     std::array<char, 4096> buffer;
     ssize_t                n;
+    bool signalled = c.signal == 0;
     while ((n = read(channel[0], buffer.data(), buffer.size())) > 0)
-      text.append(buffer.data(), n);
+      {
+        text.append(buffer.data(), n);
+        if (!signalled && std::regex_search(text, std::regex(c.signal_pattern)))
+          {
+            kill(child, c.signal);
+            signalled = true;
+          }
+      }
     close(channel[0]);
     waitpid(child, &status, 0);
     return text;
@@ -183,14 +232,16 @@ main(int argc, char **argv)
   const std::string directory = prm.substr(0, prm.find_last_of('/'));
   const Case        c         = prepare(prm);
 
-  std::string parameter_file = prm;
+  std::string parameter_file = c.parameter_file.empty() ? prm : c.parameter_file;
   if (c.parameter_directory)
     {
       parameter_file = "scene.prm";
       fs::remove_all(parameter_file);
       fs::create_directory(parameter_file);
     }
-  const std::string command = std::string(CONTACT_FEM_EXECUTABLE) + " '" + parameter_file +
+  // With a signal to send, the shell is replaced by the run (exec), so
+  // that the signal reaches the run itself.
+  const std::string command = std::string(c.signal != 0 ? "exec " : "") + CONTACT_FEM_EXECUTABLE + " '" + parameter_file +
                               "' --output-directory results" + c.arguments + " 2>&1";
   int         status = 0;
   std::string text   = run(command, c, status);
@@ -200,6 +251,9 @@ main(int argc, char **argv)
     text.replace(pos, directory.size(), "<dir>");
   if (!c.mask.empty())
     text = std::regex_replace(text, std::regex(c.mask), "...");
+  const std::string pid = "process " + std::to_string(getpid());
+  for (std::size_t pos = text.find(pid); pos != std::string::npos; pos = text.find(pid))
+    text.replace(pos, pid.size(), "process <pid>");
   if (c.keep.empty())
     std::cout << text;
   else
@@ -222,6 +276,15 @@ main(int argc, char **argv)
       for (const auto &name : names)
         std::cout << " " << name;
       std::cout << std::endl;
+    }
+  for (const auto &[path, pattern] : c.shown)
+    {
+      std::ifstream in(path);
+      std::string   line;
+      std::cout << path << ":" << std::endl;
+      while (std::getline(in, line))
+        if (std::regex_search(line, std::regex(pattern)))
+          std::cout << line << std::endl;
     }
   for (const auto &read_only : c.read_only)
     make_writable(read_only);

@@ -11,6 +11,8 @@
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
+#include <iostream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -48,6 +50,109 @@ namespace contact_fem
     return "";
   }
 
+
+
+  std::string
+  user_message(const std::exception &e)
+  {
+    std::string       text = e.what();
+    const std::string key  = "Additional information:";
+    const auto        pos  = text.find(key);
+    if (pos != std::string::npos)
+      {
+        text = text.substr(pos + key.size());
+        const auto end = text.find("Stacktrace:");
+        if (end != std::string::npos)
+          text = text.substr(0, end);
+      }
+    // Collapse the line breaks and indentation of deal.II's formatting.
+    std::string result;
+    bool        space = false;
+    for (const char c : text)
+      if (c == '\n' || c == ' ' || c == '\t')
+        space = !result.empty();
+      else
+        {
+          if (space)
+            result += ' ';
+          result += c;
+          space = false;
+        }
+    while (!result.empty() && result.back() == '-')
+      result.pop_back();
+    // A message quotes what the user wrote: bounded, whatever its length.
+    constexpr std::size_t longest = 2000;
+    if (result.size() > longest)
+      result = result.substr(0, longest) + "... (the message continues for " +
+               std::to_string(result.size() - longest) + " characters)";
+    return result;
+  }
+
+  std::string
+  excerpt(const std::string &value)
+  {
+    constexpr std::size_t shown = 60;
+    if (value.size() <= shown + 20)
+      return value;
+    return value.substr(0, shown) + "... (" + std::to_string(value.size()) + " characters)";
+  }
+
+  void
+  check_expression(const std::string &expression, const unsigned int dim, const std::string &key)
+  {
+    // deal.II adds rand() and rand_seed() to muparser: a load or a
+    // displacement drawn at random makes a run unrepeatable.
+    static const std::regex random_function("(^|[^A-Za-z0-9_])(rand|rand_seed|rnd)\\s*\\(");
+    AssertThrow(!std::regex_search(expression, random_function),
+                ExcMessage(key + ": '" + excerpt(expression) +
+                           "' calls a random-number function (rand, rand_seed): two runs of "
+                           "one scene would differ; use a deterministic expression."));
+    // muparser's own limit (MaxLenExpression of muparser 2.3).
+    constexpr std::size_t longest = 19999;
+    AssertThrow(expression.size() <= longest,
+                ExcMessage(key + ": '" + excerpt(expression) + "' is longer than the " +
+                           std::to_string(longest) +
+                           " characters the expression parser (muparser) takes."));
+    const std::string variables = dim == 2 ? "x,y,t" : "x,y,z,t";
+    // deal.II prints muparser's error, the whole expression included, to
+    // std::cerr: caught here, and only its reason is quoted.
+    std::ostringstream printed;
+    std::streambuf    *cerr_buffer = std::cerr.rdbuf(printed.rdbuf());
+    bool               valid       = true;
+    try
+      {
+        if (dim == 2)
+          {
+            FunctionParser<2> f(1);
+            f.initialize(variables, expression, {}, true);
+            f.value(Point<2>());
+          }
+        else
+          {
+            FunctionParser<3> f(1);
+            f.initialize(variables, expression, {}, true);
+            f.value(Point<3>());
+          }
+      }
+    catch (...)
+      {
+        valid = false;
+      }
+    std::cerr.rdbuf(cerr_buffer);
+    const std::string text   = printed.str();
+    const auto        start  = text.find("Message:");
+    const auto        open   = text.find('<', start);
+    const auto        close  = text.find('>', open);
+    std::string reason = start != std::string::npos && close != std::string::npos ?
+                           text.substr(open + 1, close - open - 1) :
+                           "";
+    while (!reason.empty() && (reason.back() == '.' || reason.back() == ' '))
+      reason.pop_back();
+    reason = reason.empty() ? reason : " (" + excerpt(reason) + ")";
+    AssertThrow(valid, ExcMessage(key + ": '" + excerpt(expression) +
+                                  "' is not a valid expression of " + variables + reason + "."));
+  }
+
   std::vector<double>
   parse_number_list(const std::string &text, const std::string &key, const std::string &expected)
   {
@@ -58,7 +163,7 @@ namespace contact_fem
         double            value   = 0.;
         const std::string problem = number_problem(entries[i], value);
         AssertThrow(problem.empty(),
-                    ExcMessage(key + ": entry " + std::to_string(i + 1) + ", '" + entries[i] +
+                    ExcMessage(key + ": entry " + std::to_string(i + 1) + ", '" + excerpt(entries[i]) +
                                "', " + problem + "; expected " + expected + "."));
         values.push_back(value);
       }
@@ -75,7 +180,7 @@ namespace contact_fem
           continue;
         const auto colon = item.find(':');
         AssertThrow(colon != std::string::npos,
-                    ExcMessage(key + ": entry '" + item +
+                    ExcMessage(key + ": entry '" + excerpt(item) +
                                "' is not of the form 'id: value'."));
         result.emplace_back(trim(item.substr(0, colon)), trim(item.substr(colon + 1)));
       }
@@ -98,7 +203,7 @@ namespace contact_fem
         id = -1;
       }
     AssertThrow(id >= 0 && id < 255,
-                ExcMessage(key + ": '" + text +
+                ExcMessage(key + ": '" + excerpt(text) +
                            "' is not a boundary id (an integer from 0 to 254)."));
     return static_cast<types::boundary_id>(id);
   }

@@ -1,5 +1,8 @@
 #include <contact_fem/core/resources.h>
 
+#include <sys/resource.h>
+
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
@@ -53,6 +56,23 @@ namespace contact_fem
         }
       return -1.;
     }
+
+    /// What RLIMIT_AS (ulimit -v) leaves beside this process' address
+    /// space (VmSize of /proc/self/status) in bytes, or -1 without a limit.
+    double
+    address_space_available()
+    {
+      rlimit limit;
+      if (getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY)
+        return -1.;
+      std::ifstream in("/proc/self/status");
+      std::string   line;
+      double        used = 0.;
+      while (std::getline(in, line))
+        if (line.compare(0, 7, "VmSize:") == 0)
+          used = 1024. * std::atof(line.c_str() + 7);
+      return std::max(1., static_cast<double>(limit.rlim_cur) - used);
+    }
   } // namespace
 
   AvailableMemory
@@ -62,14 +82,19 @@ namespace contact_fem
     if (const char *given = std::getenv("CONTACT_FEM_AVAILABLE_MEMORY"))
       {
         result.bytes  = std::atof(given);
-        result.source = "CONTACT_FEM_AVAILABLE_MEMORY";
+        result.source    = "CONTACT_FEM_AVAILABLE_MEMORY";
+        result.whole_run = true;
         return result;
       }
     const double meminfo = meminfo_available(), cgroup = cgroup_available();
     if (meminfo > 0.)
-      result = {meminfo, "MemAvailable in /proc/meminfo"};
+      result = {meminfo, "MemAvailable in /proc/meminfo", false};
     if (cgroup >= 0. && (meminfo <= 0. || cgroup < meminfo))
-      result = {cgroup, "the memory limit of this process' cgroup"};
+      result = {cgroup, "the memory limit of this process' cgroup", false};
+    const double address_space = address_space_available();
+    if (address_space >= 0. && (result.bytes <= 0. || address_space < result.bytes))
+      result = {address_space, "the address-space limit (ulimit -v) beside this process' "
+                               "address space", false};
     return result;
   }
 

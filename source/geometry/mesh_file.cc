@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -68,7 +69,7 @@ namespace contact_fem
       return nullptr;
     }
 
-    constexpr int gmsh_hexahedron = 5;
+    constexpr int gmsh_quadrilateral = 3, gmsh_hexahedron = 5;
 
     /// A hexahedron of the file, for the check of its shape.
     struct GmshHexahedron
@@ -76,6 +77,14 @@ namespace contact_fem
       long                tag;
       unsigned int        line;
       std::array<long, 8> nodes;
+    };
+
+    /// A quadrilateral of the file, for the check of its shape (2D).
+    struct GmshQuadrilateral
+    {
+      long                tag;
+      unsigned int        line;
+      std::array<long, 4> nodes;
     };
 
     /// What the scan found in the file.
@@ -90,8 +99,10 @@ namespace contact_fem
       /// cells and forgets element numbers and lines, so the hexahedra are
       /// checked here, where a message can name them.
       bool                               keep_hexahedra = false;
+      /// Every node, for the check that elements name listed nodes only.
       std::unordered_map<long, Point<3>> node_coordinates;
       std::vector<GmshHexahedron>        hexahedra;
+      std::vector<GmshQuadrilateral>     quadrilaterals;
     };
 
     /// Reads a text file line by line and knows the line number, so that
@@ -203,8 +214,7 @@ namespace contact_fem
                       ": lengths multiply into areas, volumes and forces that overflow "
                       "double precision (1.8e308) beyond it. Scale the mesh (Gmsh: "
                       "Mesh.ScalingFactor).");
-      if (contents.keep_hexahedra)
-        contents.node_coordinates[tag] = Point<3>(xyz[0], xyz[1], xyz[2]);
+      contents.node_coordinates[tag] = Point<3>(xyz[0], xyz[1], xyz[2]);
       contents.z_min = std::min(contents.z_min, xyz[2]);
       contents.z_max = std::max(contents.z_max, xyz[2]);
       for (unsigned int d = 0; d < 3; ++d)
@@ -285,6 +295,34 @@ namespace contact_fem
       contents.hexahedra.push_back(hexahedron);
     }
 
+    /// Keeps the quadrilateral of the element line @p v whose four nodes
+    /// start at @p first_node.
+    void
+    record_quadrilateral(const std::vector<double> &v, const std::size_t first_node,
+                         const unsigned int line, Contents &contents)
+    {
+      GmshQuadrilateral quadrilateral{static_cast<long>(v[0]), line, {}};
+      for (unsigned int i = 0; i < 4; ++i)
+        quadrilateral.nodes[i] = static_cast<long>(v[first_node + i]);
+      contents.quadrilaterals.push_back(quadrilateral);
+    }
+
+    /// Refuses an element of line @p v (nodes from @p first_node on) that
+    /// names a node $Nodes does not list (deal.II's reader says only
+    /// "vertex not found").
+    void
+    check_nodes_listed(const std::vector<double> &v, const std::size_t first_node,
+                       const LineReader &reader, const Contents &contents)
+    {
+      if (!contents.have_nodes)
+        return;
+      for (std::size_t i = first_node; i < v.size(); ++i)
+        if (contents.node_coordinates.count(static_cast<long>(v[i])) == 0)
+          reader.fail("element " + std::to_string(static_cast<long>(v[0])) + " uses node " +
+                      std::to_string(static_cast<long>(v[i])) +
+                      ", which $Nodes does not list.");
+    }
+
     /// $Elements (2.x: 'tag type n_tags tags... nodes...') or $ELM (1:
     /// 'tag type physical elementary n_nodes nodes...').
     void
@@ -303,8 +341,12 @@ namespace contact_fem
             reader.fail("element " + std::to_string(static_cast<long>(v[0])) + " has " +
                         std::to_string(v.size()) + " numbers, expected " +
                         std::to_string(length) + " (a line cut short: truncated file?).");
+          if (length > 0)
+            check_nodes_listed(v, before, reader, contents);
           if (type == gmsh_hexahedron)
             record_hexahedron(v, length - 8, reader.line_number, contents);
+          if (type == gmsh_quadrilateral)
+            record_quadrilateral(v, length - 4, reader.line_number, contents);
           ++contents.elements[type];
         }
       reader.expect(section == "$ELM" ? "$ENDELM" : "$EndElements", section);
@@ -333,8 +375,12 @@ namespace contact_fem
               if (v.size() < element_line_length(type, 1))
                 reader.fail("element " + std::to_string(static_cast<long>(v[0])) +
                             " is cut short (truncated file?).");
+              if (element_line_length(type, 1) > 0)
+                check_nodes_listed(v, 1, reader, contents);
               if (type == gmsh_hexahedron)
                 record_hexahedron(v, 1, reader.line_number, contents);
+              if (type == gmsh_quadrilateral)
+                record_quadrilateral(v, 1, reader.line_number, contents);
             }
           contents.elements[type] += n;
         }
@@ -575,16 +621,88 @@ namespace contact_fem
                              ". contact_fem needs hexahedra with a positive Jacobian at "
                              "every corner: remesh, or fix the node order."));
     }
+
+    /// What is wrong with the quadrilateral @p x (Gmsh order: around the
+    /// cell), or an empty string: a collapsed edge, a flat corner, or a
+    /// butterfly (corners of both turns). Cells listed in the opposite turn
+    /// (every corner negative) pass: deal.II reorders them.
+    std::string
+    quadrilateral_problem(const std::array<Point<3>, 4> &x, const std::array<long, 4> &nodes)
+    {
+      const auto node = [&](const unsigned int i) {
+        std::ostringstream text;
+        text << "node " << nodes[i] << " (" << std::setprecision(8) << x[i][0] << ", "
+             << x[i][1] << ")";
+        return text.str();
+      };
+      double h = 0.;
+      for (unsigned int i = 0; i < 4; ++i)
+        h = std::max(h, x[i].distance(x[(i + 1) % 4]));
+      unsigned int n_positive = 0, n_negative = 0;
+      for (unsigned int i = 0; i < 4; ++i)
+        {
+          const Tensor<1, 3> a = x[(i + 1) % 4] - x[i], b = x[(i + 3) % 4] - x[i];
+          if (a.norm() <= 1e-12 * h)
+            return "is degenerate: its edge from " + node(i) + " to " + node((i + 1) % 4) +
+                   " has zero length (a collapsed edge; a quadrilateral needs four "
+                   "distinct corners)";
+          const double jacobian = a[0] * b[1] - a[1] * b[0];
+          if (std::abs(jacobian) <= 1e-8 * a.norm() * b.norm())
+            return "is degenerate: its corner at " + node(i) +
+                   " is flat (the two edges there lie on one line)";
+          (jacobian > 0. ? n_positive : n_negative) += 1;
+        }
+      if (n_positive > 0 && n_negative > 0)
+        return "is inverted: its corners turn both ways (a twisted, butterfly-shaped cell "
+               "whose edges cross): its nodes are not in Gmsh's order around the cell";
+      return "";
+    }
+
+    /// Refuses quadrilaterals that are no valid cells (2D), naming the line,
+    /// the element and the node: deal.II's reader takes them and the run
+    /// stopped later with a count of "inverted or degenerate cells" only.
+    void
+    check_quadrilaterals(const Contents &contents, const std::string &file)
+    {
+      std::size_t n_bad = 0;
+      std::string first;
+      for (const auto &quadrilateral : contents.quadrilaterals)
+        {
+          std::array<Point<3>, 4> x;
+          for (unsigned int i = 0; i < 4; ++i)
+            x[i] = contents.node_coordinates.at(quadrilateral.nodes[i]);
+          const std::string problem = quadrilateral_problem(x, quadrilateral.nodes);
+          if (!problem.empty() && n_bad++ == 0)
+            first = "line " + std::to_string(quadrilateral.line) + ": quadrilateral " +
+                    std::to_string(quadrilateral.tag) + " " + problem;
+        }
+      AssertThrow(n_bad == 0,
+                  ExcMessage(mesh_key + ": '" + file + "', " + first +
+                             (n_bad > 1 ? "; " + std::to_string(n_bad - 1) +
+                                            " more quadrilaterals are degenerate or inverted" :
+                                          "") +
+                             ". contact_fem needs quadrilaterals with a positive Jacobian "
+                             "at every corner: remesh, or fix the node order."));
+    }
   } // namespace
 
   template <int dim>
   void
   read_gmsh(const std::string &file, Triangulation<dim> &coarse)
   {
+    std::error_code error;
+    AssertThrow(std::filesystem::is_regular_file(file, error),
+                ExcMessage(mesh_key + ": '" + file + "' is " +
+                           (std::filesystem::is_directory(file, error) ?
+                              "a directory" :
+                              "not a regular file (a FIFO, socket or device)") +
+                           "; expected a Gmsh .msh file."));
     const Contents contents = scan_gmsh(file, dim == 3);
     check_contents(contents, file, dim);
     if (dim == 3)
       check_hexahedra(contents, file);
+    else
+      check_quadrilaterals(contents, file);
     GridIn<dim> grid_in;
     grid_in.attach_triangulation(coarse);
     std::ifstream in(file);

@@ -723,7 +723,7 @@ namespace contact_fem
     for (const auto &r : rows)
       for (unsigned int k = 0; k < r.size(); ++k)
         out << r[k] << (k + 1 < r.size() ? ',' : '\n');
-    check_written(path, write_file_atomically(path, out.str()));
+    throw_if_unwritten(path, write_file_atomically(path, out.str()), comm);
   }
 
   namespace
@@ -865,14 +865,17 @@ namespace contact_fem
     // One record per cycle and load step; the pvd "time" counts them.
     (void)step;
     (void)time;
-    const std::string name = data_out.write_vtu_with_pvtu_record(
-      output.directory + "/", "solution", vtu_records.size() + 1, comm, 3);
+    const std::string name = write_vtu_pieces<dim>(data_out, output.directory + "/", "solution",
+                                                   vtu_records.size() + 1, 3, comm);
     vtu_records.emplace_back(vtu_records.size() + 1, name);
     std::ostringstream pvd;
     DataOutBase::write_pvd_record(pvd, vtu_records);
     const std::string path = output.directory + "/solution.pvd";
-    check_written(path, Utilities::MPI::this_mpi_process(comm) != 0 ||
-                          write_file_atomically(path, pvd.str()));
+    throw_if_unwritten(path,
+                       Utilities::MPI::this_mpi_process(comm) != 0 ?
+                         std::string() :
+                         write_file_atomically(path, pvd.str()),
+                       comm);
   }
 
   template <int dim>
@@ -888,8 +891,7 @@ namespace contact_fem
     data_out.add_data_vector(indicators, "error_indicator", DataOut<dim>::type_cell_data);
     data_out.build_patches(*mapping, degree);
     data_out.set_flags(fast_vtk_flags());
-    data_out.write_vtu_with_pvtu_record(output.directory + "/", "error_indicators", cycle,
-                                        comm, 2);
+    write_vtu_pieces<dim>(data_out, output.directory + "/", "error_indicators", cycle, 2, comm);
   }
 
   template <int dim>
@@ -949,7 +951,7 @@ namespace contact_fem
     std::ostringstream out;
     summary.write(out);
     out << '\n';
-    check_written(path, write_file_atomically(path, out.str()));
+    throw_if_unwritten(path, write_file_atomically(path, out.str()), comm);
   }
 
   template <int dim>
@@ -996,8 +998,7 @@ namespace contact_fem
   ContactProblem<dim>::check_written(const std::string &path, const bool ok) const
   {
     // Collective, so that every rank stops if rank 0 could not write.
-    const bool all_ok = Utilities::MPI::min(ok ? 1 : 0, comm) == 1;
-    AssertThrow(all_ok, ExcMessage("Output: cannot write '" + path + "'."));
+    throw_if_unwritten(path, ok ? "" : "the write failed: a full disk?", comm);
   }
 
   // The class is instantiated in contact_problem.cc; here only the members

@@ -10,6 +10,8 @@
 #include <contact_fem/simulator/cattaneo.h>
 #include <contact_fem/simulator/contact_problem.h>
 #include <contact_fem/core/format.h>
+#include <contact_fem/core/interruption.h>
+#include <contact_fem/core/parameters.h>
 #include <contact_fem/solvers/rigid_body_modes.h>
 
 #include <algorithm>
@@ -1031,6 +1033,7 @@ namespace contact_fem
                                        const bool         first_step,
                                        Json              &record)
   {
+    solving = true;
     Timer step_timer;
     prepare_load_step(time, step_size, first_step);
     const bool frictional = contact && contact->frictional();
@@ -1055,6 +1058,7 @@ namespace contact_fem
     for (; iteration <= newton_parameters.max_iterations; ++iteration)
       {
         const std::string at = where + ", iteration " + std::to_string(iteration);
+        stop_if_interrupted(comm);
         if (iteration > 0 && contact && contact->n_active() == 0 &&
             !contact_parameters.allow_loss_of_contact)
           throw NewtonFailure(no_contact_message(at, true, iteration == 1), false);
@@ -1155,22 +1159,9 @@ namespace contact_fem
   }
 
   template <int dim>
-  int
-  ContactProblem<dim>::run()
+  void
+  ContactProblem<dim>::create_checked_mesh()
   {
-    Timer total_timer;
-    // The output directory is prepared only now, after all input was
-    // checked: an earlier run's files go (they would pass for this run's),
-    // and a directory that cannot take the new ones stops the run before
-    // any work.
-    const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
-    const OutputDirectoryReport earlier_outputs = open_output_directory();
-    pcout << "contact_fem: scene '" << scene_name << "', " << dim << "D, "
-          << Utilities::MPI::n_mpi_processes(comm) << " MPI process(es)" << std::endl
-          << effective_input;
-    report_earlier_outputs(earlier_outputs);
-    print_input_warnings();
-
     {
       TimerOutput::Scope t(*timer, "Setup: mesh");
       scene.create_mesh(triangulation);
@@ -1188,6 +1179,41 @@ namespace contact_fem
     if (mapping->get_degree() > degree)
       pcout << "Q" << degree << " elements on a mapping of degree " << mapping->get_degree()
             << " (the curved boundaries are not replaced by chords)" << std::endl;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::validate()
+  {
+    print_input_warnings();
+    create_checked_mesh();
+    Json record = Json::object();
+    start_cycle(0, record);
+    // The first load step up to its solve: constraints, loads, contact
+    // search.
+    LoadStepControl control(load_stepping, 0., load_stepping.n_steps);
+    const double    time = control.next_time();
+    prepare_load_step(time, time, true);
+  }
+
+  template <int dim>
+  int
+  ContactProblem<dim>::run()
+  {
+    Timer total_timer;
+    // The output directory is prepared only now, after all input was
+    // checked: an earlier run's files go (they would pass for this run's),
+    // and a directory that cannot take the new ones stops the run before
+    // any work.
+    const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+    const OutputDirectoryReport earlier_outputs = open_output_directory();
+    pcout << "contact_fem: scene '" << scene_name << "', " << dim << "D, "
+          << Utilities::MPI::n_mpi_processes(comm) << " MPI process(es)" << std::endl
+          << effective_input;
+    report_earlier_outputs(earlier_outputs);
+    print_input_warnings();
+
+    create_checked_mesh();
 
     if (root)
       {
@@ -1198,16 +1224,84 @@ namespace contact_fem
                            "newton_iterations,wall_time,cumulative_wall_time\n";
       }
     check_written(output.directory + "/convergence.csv", !root || convergence_csv.good());
-    Json   cycles     = Json::array();
+    Json cycles    = Json::array();
+    int  exit_code = 0;
+    try
+      {
+        exit_code = run_cycles(cycles, total_timer);
+      }
+    catch (const Interrupted &e)
+      {
+        pcout << std::endl
+              << "Error: " << e.what() << ": stopped; summary.json keeps the finished "
+              << "cycles and says \"interrupted\"." << std::endl;
+        write_summary(cycles, total_timer.wall_time(),
+                      std::string(e.what()) + ": results of the finished cycles only");
+        exit_code = 128 + e.signal;
+      }
+    catch (const OutputFailure &e)
+      {
+        // A full disk: say so, and try to mark the summary (it may fail too).
+        pcout << std::endl << "Error: " << e.what() << std::endl;
+        try
+          {
+            write_summary(cycles, total_timer.wall_time(), std::string("failed: ") + e.what());
+          }
+        catch (const OutputFailure &)
+          {}
+        exit_code = 2;
+      }
+    catch (const std::bad_alloc &)
+      {
+        pcout << std::endl
+              << "Error: out of memory in cycle " << cycle << " (std::bad_alloc): the "
+              << "mesh needs more memory than the run may use (RAM, cgroup or ulimit -v). "
+              << "summary.json keeps the finished cycles; refine "
+              << "less (" << refinement_keys() << ", Refinement/Maximum cells)."
+              << std::endl;
+        write_summary(cycles, total_timer.wall_time(),
+                      "failed: out of memory; results of the finished cycles only");
+        exit_code = 2;
+      }
+    catch (const std::exception &e)
+      {
+        // Anything else thrown after the first solve started is a failure of
+        // the run (main() gives exit 2): the summary says so.
+        if (solving)
+          write_summary(cycles, total_timer.wall_time(), "failed: " + user_message(e));
+        throw;
+      }
+    if (console.file_failed())
+      pcout << "Warning: writing '" << output.directory
+            << "/log.txt' failed during the run: the log is incomplete (the console has "
+               "everything)."
+            << std::endl;
+    return exit_code;
+  }
+
+  template <int dim>
+  int
+  ContactProblem<dim>::run_cycles(Json &cycles, const Timer &total_timer)
+  {
     double cumulative = 0.;
-    int    exit_code  = 0;
     for (cycle = 0; cycle < refinement.n_cycles; ++cycle)
       {
+        const double old_dofs = dof_handler.n_dofs();
         if (cycle > 0 && !refine_mesh())
           {
             // The last cycle's results are final: mark the run complete.
             write_summary(cycles, total_timer.wall_time(), converged_status());
             break;
+          }
+        if (const std::string shortage =
+              cycle > 0 ? memory_shortage(old_dofs, dof_handler.n_dofs()) : "";
+            !shortage.empty())
+          {
+            pcout << "Error: " << shortage << std::endl;
+            write_summary(cycles, total_timer.wall_time(),
+                          "stopped before the memory ran out: results of cycle " +
+                            std::to_string(cycle - 1));
+            return 2;
           }
         timer->reset();
         uncounted_wall_time = 0.;
@@ -1250,10 +1344,7 @@ namespace contact_fem
                     << std::defaultfloat << std::setprecision(6) << std::endl;
           }
         if (!converged)
-          {
-            exit_code = 2;
-            break;
-          }
+          return 2;
         if (beyond_model)
           {
             pcout << std::endl
@@ -1265,16 +1356,10 @@ namespace contact_fem
                   << "', exit code 3). Model range/Accept results outside the "
                      "small-strain range = true accepts them."
                   << std::endl;
-            exit_code = 3;
-            break;
+            return 3;
           }
       }
-    if (console.file_failed())
-      pcout << "Warning: writing '" << output.directory
-            << "/log.txt' failed during the run: the log is incomplete (the console has "
-               "everything)."
-            << std::endl;
-    return exit_code;
+    return 0;
   }
 
   template <int dim>
@@ -1837,6 +1922,7 @@ namespace contact_fem
       }
     while (!control.finished())
       {
+        stop_if_interrupted(comm);
         const double time        = control.next_time();
         Json         step_record = Json::object();
         try

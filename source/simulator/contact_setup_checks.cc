@@ -209,6 +209,36 @@ namespace contact_fem
                        format_bytes(available.bytes) + " available (" + available.source + ")";
   }
 
+  template <int dim>
+  std::string
+  ContactProblem<dim>::memory_shortage(const double old_dofs, const double new_dofs) const
+  {
+    AvailableMemory available;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      available = available_memory();
+    available.bytes  = Utilities::MPI::broadcast(comm, available.bytes, 0);
+    available.source = Utilities::MPI::broadcast(comm, available.source, 0);
+    available.whole_run = Utilities::MPI::broadcast(comm, available.whole_run, 0);
+    if (!(available.bytes > 0.))
+      return "";
+    const unsigned int processes = Utilities::MPI::n_mpi_processes(comm);
+    const double       needed    = estimated_memory(new_dofs, processes);
+    // What the run may reach: the figure itself when it is the run's whole
+    // budget, else what is still free beyond what the finished cycle holds.
+    const double budget =
+      available.whole_run ? available.bytes :
+                            available.bytes + estimated_memory(old_dofs, processes);
+    if (needed <= budget)
+      return "";
+    return "the mesh of cycle " + std::to_string(cycle) + " has " + format(new_dofs) +
+           " DoFs, which need about " + format_bytes(needed) +
+           " of memory (about 4 kB per DoF, measured), more than the " + format_bytes(budget) +
+           " this run may use (" + available.source +
+           "). The adaptive loop stops here, before the memory runs out; the results of "
+           "cycle " + std::to_string(cycle - 1) +
+           " are kept. Allow fewer cells (Refinement/Maximum cells) or more memory.";
+  }
+
   // The class is instantiated in contact_problem.cc; here only the members
   // defined in this file.
 #define INSTANTIATE(dim) \
@@ -217,7 +247,8 @@ namespace contact_fem
   template void ContactProblem<dim>::check_boundary_ids(const Triangulation<dim> &) const; \
   template void ContactProblem<dim>::check_contact_pairs(const Triangulation<dim> &) const; \
   template std::string ContactProblem<dim>::refinement_keys() const; \
-  template void        ContactProblem<dim>::check_memory_estimate( const parallel::distributed::Triangulation<dim> &);
+  template void        ContactProblem<dim>::check_memory_estimate( const parallel::distributed::Triangulation<dim> &); \
+  template std::string ContactProblem<dim>::memory_shortage(const double, const double) const;
   INSTANTIATE(2)
   INSTANTIATE(3)
 #undef INSTANTIATE

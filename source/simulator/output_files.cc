@@ -1,7 +1,12 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
 
 #include <contact_fem/simulator/output_files.h>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
@@ -9,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -106,6 +112,43 @@ namespace contact_fem
                 path + "' (" + std::strerror(file ? EIO : open_error) + ").");
     }
 
+    /// The lock file that marks a directory as taken by a live run.
+    const std::string lock_name = ".contact_fem.lock";
+
+    /// Takes the lock of @p directory for the rest of this process: an
+    /// flock(2) on its lock file, which the kernel releases when the
+    /// process ends however it ends, so that the lock of a dead run never
+    /// blocks. The file holds the pid of the run, for the message.
+    void
+    lock_directory(const std::string &directory)
+    {
+      static std::string locked;
+      const std::string  path = fs::weakly_canonical(directory).string() + "/" + lock_name;
+      if (locked == path)
+        return;
+      const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+      require(fd >= 0, "Output directory: cannot create the lock file '" + path + "' (" +
+                         std::strerror(errno) + ").");
+      if (::flock(fd, LOCK_EX | LOCK_NB) != 0)
+        {
+          const int error = errno;
+          char      pid[32] = {};
+          const auto n     = ::pread(fd, pid, sizeof(pid) - 1, 0);
+          ::close(fd);
+          require(false, "Output directory: '" + directory + "' is in use by another " +
+                           "contact_fem run" +
+                           (n > 0 ? " (process " + std::string(pid, n) + ")" : std::string()) +
+                           (error == EWOULDBLOCK ? "" : std::string(": ") + std::strerror(error)) +
+                           "; two runs would mix their files. Wait for it to end, or give "
+                           "this run another --output-directory.");
+        }
+      const std::string pid = std::to_string(::getpid());
+      const bool written = ::ftruncate(fd, 0) == 0 &&
+                           ::pwrite(fd, pid.c_str(), pid.size(), 0) == ssize_t(pid.size());
+      (void)written; // the pid only improves a message
+      locked = path; // fd stays open: the lock lasts as long as the process
+    }
+
     /// The work of prepare_output_directory() on rank 0.
     OutputDirectoryReport
     prepare_on_this_process(const std::string &directory)
@@ -115,10 +158,11 @@ namespace contact_fem
       require(!error && fs::is_directory(directory),
               "Output directory: cannot create '" + directory + "': " +
                 (error ? error.message() : "it exists and is not a directory") + ".");
+      check_writable(directory);
+      lock_directory(directory);
       OutputDirectoryReport report;
       report.earlier_scene = earlier_scene(directory);
       report.removed       = remove_earlier_outputs(directory);
-      check_writable(directory);
       return report;
     }
   } // namespace
@@ -163,19 +207,79 @@ namespace contact_fem
     return report;
   }
 
-  bool
+  std::string
   write_file_atomically(const std::string &path, const std::string &text)
   {
     const std::string partial = path + partial_suffix;
-    {
-      std::ofstream out(partial);
-      out << text;
-      out.close();
-      if (!out)
-        return false;
-    }
-    std::error_code error;
-    fs::rename(partial, path, error);
-    return !error;
+    std::string       problem;
+    errno            = 0;
+    std::FILE *file  = std::fopen(partial.c_str(), "wb");
+    if (!file)
+      return std::strerror(errno);
+    const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size() &&
+                         std::fflush(file) == 0;
+    const int  error   = errno;
+    const bool closed  = std::fclose(file) == 0;
+    if (!written || !closed)
+      problem = std::strerror(error != 0 ? error : errno != 0 ? errno : EIO);
+    else if (std::rename(partial.c_str(), path.c_str()) != 0)
+      problem = std::strerror(errno);
+    // Never leave half a file behind (a full disk).
+    if (!problem.empty())
+      std::remove(partial.c_str());
+    return problem;
   }
+
+  void
+  throw_if_unwritten(const std::string &path, const std::string &problem, const MPI_Comm comm)
+  {
+    std::string first;
+    for (const std::string &p : Utilities::MPI::all_gather(comm, problem))
+      if (first.empty())
+        first = p;
+    if (!first.empty())
+      throw OutputFailure("Output: cannot write '" + path + "' (" + first + ").");
+  }
+
+  template <int dim>
+  std::string
+  write_vtu_pieces(const DataOutInterface<dim, dim> &data,
+                   const std::string                &directory,
+                   const std::string                &base,
+                   const unsigned int                counter,
+                   const unsigned int                n_digits,
+                   const MPI_Comm                    comm)
+  {
+    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n    = Utilities::MPI::n_mpi_processes(comm);
+    const std::string  stem = base + "_" + Utilities::int_to_string(counter, n_digits);
+    const auto         piece_name = [&](const unsigned int r) {
+      return stem + "." + Utilities::int_to_string(r, Utilities::needed_digits(n - 1)) + ".vtu";
+    };
+    std::ostringstream piece;
+    data.write_vtu(piece);
+    const std::string piece_path = directory + piece_name(rank);
+    throw_if_unwritten(piece_path, write_file_atomically(piece_path, piece.str()), comm);
+
+    const std::string record_name = stem + ".pvtu";
+    std::string       problem;
+    if (rank == 0)
+      {
+        std::vector<std::string> pieces;
+        for (unsigned int r = 0; r < n; ++r)
+          pieces.push_back(piece_name(r));
+        std::ostringstream record;
+        data.write_pvtu_record(record, pieces);
+        problem = write_file_atomically(directory + record_name, record.str());
+      }
+    throw_if_unwritten(directory + record_name, problem, comm);
+    return record_name;
+  }
+
+  template std::string
+  write_vtu_pieces<2>(const DataOutInterface<2, 2> &, const std::string &, const std::string &,
+                      const unsigned int, const unsigned int, const MPI_Comm);
+  template std::string
+  write_vtu_pieces<3>(const DataOutInterface<3, 3> &, const std::string &, const std::string &,
+                      const unsigned int, const unsigned int, const MPI_Comm);
 } // namespace contact_fem

@@ -15,36 +15,6 @@ namespace contact_fem
 {
   namespace
   {
-    /// Checks that @p expression is a valid muparser expression of x, y, (z,) t.
-    void
-    check_expression(const std::string &expression,
-                     const unsigned int dim,
-                     const std::string &key)
-    {
-      const std::string variables = dim == 2 ? "x,y,t" : "x,y,z,t";
-      try
-        {
-          if (dim == 2)
-            {
-              FunctionParser<2> f(1);
-              f.initialize(variables, expression, {}, true);
-              f.value(Point<2>());
-            }
-          else
-            {
-              FunctionParser<3> f(1);
-              f.initialize(variables, expression, {}, true);
-              f.value(Point<3>());
-            }
-        }
-      catch (...)
-        {
-          AssertThrow(false,
-                      ExcMessage(key + ": '" + expression +
-                                 "' is not a valid expression of " + variables + "."));
-        }
-    }
-
     /// Component indices of letters like "xy" (spaces ignored); @p what
     /// names the entry in the message.
     std::vector<unsigned int>
@@ -189,7 +159,11 @@ namespace contact_fem
          split_key_value_list(prm.get("Pressure"), pressure_key))
       {
         check_expression(expression, dim, pressure_key);
-        pressures.push_back({parse_boundary_id(id, pressure_key), expression});
+        const types::boundary_id b = parse_boundary_id(id, pressure_key);
+        for (const auto &other : pressures)
+          AssertThrow(other.boundary_id != b,
+                      ExcMessage(pressure_key + ": boundary " + id + " is given twice."));
+        pressures.push_back({b, expression});
       }
     const std::string traction_key = "Boundary conditions/Traction";
     tractions.clear();

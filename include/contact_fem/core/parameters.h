@@ -6,6 +6,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
 
+#include <exception>
+
 #include <limits>
 #include <string>
 #include <utility>
@@ -47,6 +49,25 @@ namespace contact_fem
   /// Parses "a: b; c: d" style lists; throws naming @p key on malformed input.
   std::vector<std::pair<std::string, std::string>>
   split_key_value_list(const std::string &text, const std::string &key);
+
+  /// The message of @p e without deal.II's source location and stack trace
+  /// (users need its "Additional information" only), on one line and
+  /// bounded in length.
+  std::string
+  user_message(const std::exception &e);
+
+  /// @p value itself if short, else its start and its length: messages
+  /// quote a bounded excerpt of what the user wrote, never a whole long
+  /// value (a 10,000-character expression would flood the log).
+  std::string
+  excerpt(const std::string &value);
+
+  /// Checks that @p expression is a valid, deterministic muparser expression
+  /// of x, y, (z,) t (@p dim 2 or 3); throws naming @p key otherwise.
+  /// rand() and rand_seed() are refused: two runs of one scene would
+  /// differ.
+  void
+  check_expression(const std::string &expression, const unsigned int dim, const std::string &key);
 
   /// Parses a boundary id; throws naming @p key if it is not in 0..254.
   types::boundary_id

@@ -14,12 +14,18 @@ namespace contact_fem
   {
     double      bytes = 0.;
     std::string source;
+    /// Whether @p bytes is what the whole run may use (given by
+    /// CONTACT_FEM_AVAILABLE_MEMORY), not what is still free beside what it
+    /// holds already.
+    bool whole_run = false;
   };
 
-  /// The smaller of MemAvailable in /proc/meminfo and what a cgroup (v2:
+  /// The smallest of MemAvailable in /proc/meminfo, what a cgroup (v2:
   /// memory.max - memory.current, v1: memory.limit_in_bytes -
-  /// memory.usage_in_bytes) still grants: a batch job's limit is often far
-  /// below the machine's free memory. The environment variable
+  /// memory.usage_in_bytes) still grants, and what the address-space limit
+  /// (ulimit -v, RLIMIT_AS) leaves beside the process' address space
+  /// (VmSize): a batch job's limit is often far below the machine's free
+  /// memory. The environment variable
   /// CONTACT_FEM_AVAILABLE_MEMORY (bytes) replaces both, for job limits the
   /// program cannot see and for tests that must not depend on the machine.
   AvailableMemory

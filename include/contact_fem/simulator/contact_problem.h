@@ -118,8 +118,30 @@ namespace contact_fem
     void
     print_input_warnings() const;
 
+    /// Whether run() got as far as its first solve: an error thrown after
+    /// that is a failure of the run (exit 2), not bad input (exit 1).
+    bool
+    started_solving() const
+    {
+      return solving;
+    }
+
+    /// --validate: every check a run makes before its first solve (the
+    /// mesh, its materials, the boundary conditions, fixed points and
+    /// probes, the contact interface and the first contact search),
+    /// without writing any output. Throws what the run would throw.
+    void
+    validate();
+
   private:
     // --- set-up (contact_problem.cc)
+    /// Builds the scene's mesh and checks it (materials, cell shapes).
+    void
+    create_checked_mesh();
+    /// The adaptive cycles of run(), recorded in @p cycles; returns the
+    /// exit code.
+    int
+    run_cycles(Json &cycles, const Timer &total_timer);
     void
     setup_dofs();
     /// Distributes the DoFs on the current mesh, in a random order of each
@@ -403,6 +425,11 @@ namespace contact_fem
     /// boundary at a time of the load path, naming the key.
     void
     check_load_path(const Triangulation<dim> &coarse, const double area) const;
+    /// Why the next adaptive cycle, with @p new_dofs DoFs after a cycle
+    /// with @p old_dofs, would exhaust the memory the run may use (RAM,
+    /// cgroup, ulimit -v), or an empty string if it fits.
+    std::string
+    memory_shortage(const double old_dofs, const double new_dofs) const;
     // --- diagnoses (contact_diagnosis.cc)
     /// The resultant of the applied pressures and tractions on each body. Collective.
     std::map<types::material_id, Tensor<1, dim>>
@@ -631,6 +658,8 @@ namespace contact_fem
     std::ofstream                                  convergence_csv;
     /// Set by check_memory_estimate(), printed by run().
     std::string memory_warning;
+    /// Set by the first solve_load_step() (started_solving()).
+    bool solving = false;
     /// A cycle's reactions did not balance its load (check_reaction_balance()).
     bool balance_failed = false;
     /// A cycle converged beyond ModelRange (warn_about_large_strains(),
