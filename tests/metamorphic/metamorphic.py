@@ -172,8 +172,9 @@ def run(exe, prm_text, name, work_dir, mpi):
     command = ([mpi, "-np", "2"] if mpi else []) + [exe, prm]
     result = subprocess.run(command, capture_output=True, text=True)
     if result.returncode != 0:
-        print(result.stdout[-3000:], result.stderr[-3000:])
-        sys.exit(f"metamorphic.py: variant '{name}' failed with exit code {result.returncode}")
+        print(f"  {name}: exit code {result.returncode}: " + " ".join(
+            (result.stdout + result.stderr).strip().splitlines()[-1:])[:600])
+        return None
     with open(os.path.join(out_dir, "summary.json")) as f:
         return json.load(f)
 
@@ -217,16 +218,24 @@ def main():
     template_dir = os.path.dirname(os.path.abspath(args.template))
     work_dir = os.getcwd()
     base = Variant("identity=identity:", dim, args.size)
-    reference = invariants(run(args.executable, expand(template, base, template_dir, work_dir),
-                               "identity", work_dir, args.mpirun), base, dim)
+    summary = run(args.executable, expand(template, base, template_dir, work_dir), "identity",
+                  work_dir, args.mpirun)
+    if summary is None:
+        sys.exit("metamorphic.py: the untransformed scene failed")
+    reference = invariants(summary, base, dim)
     print(f"{os.path.basename(args.template)}: reference")
     for name, value, _ in reference:
         print(f"  {name} = {value}")
     failures = 0
     for spec in args.variants:
         v = Variant(spec, dim, args.size)
-        results = invariants(run(args.executable, expand(template, v, template_dir, work_dir),
-                                 v.name, work_dir, args.mpirun), v, dim)
+        summary = run(args.executable, expand(template, v, template_dir, work_dir), v.name,
+                      work_dir, args.mpirun)
+        if summary is None:
+            failures += 1
+            print(f"{v.name}: FAILED")
+            continue
+        results = invariants(summary, v, dim)
         different, worst = 0, 0.0
         for (name, ref, _), (_, value, unit) in zip(reference, results):
             if unit is None:
