@@ -58,7 +58,14 @@ namespace contact_fem
     std::string       text = e.what();
     const std::string key  = "Additional information:";
     const auto        pos  = text.find(key);
-    if (pos != std::string::npos)
+    // deal.II's generic assertions explain nothing under "Additional
+    // information"; their violated condition says what failed.
+    const std::string condition = "The violated condition was:";
+    const auto        at        = text.find(condition);
+    const bool        generic   = text.find("which is used in many places") != std::string::npos;
+    if (generic && at != std::string::npos && pos != std::string::npos && at < pos)
+      text = "violated condition: " + text.substr(at + condition.size(), pos - at - condition.size());
+    else if (pos != std::string::npos)
       {
         text = text.substr(pos + key.size());
         const auto end = text.find("Stacktrace:");

@@ -7,6 +7,7 @@
 #include <contact_fem/geometry/hexahedron_shape.h>
 #include <contact_fem/core/value_range.h>
 #include <contact_fem/geometry/mesh_file.h>
+#include <contact_fem/core/parameters.h>
 
 #include <algorithm>
 #include <array>
@@ -712,11 +713,42 @@ namespace contact_fem
       }
     catch (const std::exception &e)
       {
+        std::vector<Point<3>> nodes;
+        for (const auto &[tag, x] : contents.node_coordinates)
+          nodes.push_back(x);
         AssertThrow(false,
                     ExcMessage(mesh_key + ": cannot read '" + file + "' as a Gmsh mesh: " +
-                               e.what()));
+                               user_message(e) + far_from_origin_hint(nodes)));
       }
   }
+
+  template <int spacedim>
+  std::string
+  far_from_origin_hint(const std::vector<Point<spacedim>> &vertices)
+  {
+    if (vertices.empty())
+      return "";
+    const BoundingBox<spacedim> box(vertices);
+    const double extent   = box.get_boundary_points().first.distance(box.get_boundary_points().second);
+    const double distance = box.center().norm();
+    // The shipped curved meshes pass at 1e3 sizes and fail in deal.II at
+    // 1e4 (doc/metamorphic.md).
+    constexpr double far = 1e3;
+    if (!(distance > far * extent))
+      return "";
+    std::ostringstream text;
+    text << std::setprecision(3) << ". The mesh lies " << distance << " from the origin, "
+         << distance / extent
+         << " times its size: deal.II computes cell measures and the pull-backs of curved "
+            "manifolds from absolute coordinates, which lose the digits of its cells there. "
+            "Move the mesh near the origin (the results do not depend on where it is).";
+    return text.str();
+  }
+
+  template std::string
+  far_from_origin_hint(const std::vector<Point<2>> &);
+  template std::string
+  far_from_origin_hint(const std::vector<Point<3>> &);
 
   namespace
   {

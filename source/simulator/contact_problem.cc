@@ -12,6 +12,7 @@
 #include <contact_fem/core/format.h>
 #include <contact_fem/core/interruption.h>
 #include <contact_fem/core/parameters.h>
+#include <contact_fem/geometry/mesh_file.h>
 #include <contact_fem/solvers/rigid_body_modes.h>
 
 #include <algorithm>
@@ -1164,7 +1165,7 @@ namespace contact_fem
   {
     {
       TimerOutput::Scope t(*timer, "Setup: mesh");
-      scene.create_mesh(triangulation);
+      create_scene_mesh(scene, triangulation);
       std::set<types::material_id> material_ids;
       for (const auto &[id, constants] : materials.bodies)
         material_ids.insert(id);
@@ -1266,9 +1267,17 @@ namespace contact_fem
     catch (const std::exception &e)
       {
         // Anything else thrown after the first solve started is a failure of
-        // the run (main() gives exit 2): the summary says so.
+        // the run (main() gives exit 2): the summary says so. Far from the
+        // origin deal.II's geometry may fail anywhere: say so.
+        std::vector<Point<dim>> vertices;
+        for (const auto &cell : triangulation.cell_iterators_on_level(0))
+          for (const unsigned int v : cell->vertex_indices())
+            vertices.push_back(cell->vertex(v));
+        const std::string far = far_from_origin_hint(vertices);
         if (solving)
-          write_summary(cycles, total_timer.wall_time(), "failed: " + user_message(e));
+          write_summary(cycles, total_timer.wall_time(), "failed: " + user_message(e) + far);
+        if (!far.empty())
+          throw std::runtime_error(user_message(e) + far);
         throw;
       }
     if (console.file_failed())

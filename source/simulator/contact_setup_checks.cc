@@ -53,7 +53,7 @@ namespace contact_fem
     coarse_scene.refinement_boxes.clear();
     coarse_scene.distortion = 0.;
     parallel::distributed::Triangulation<dim> coarse(comm);
-    create_coarse_mesh(coarse_scene, coarse);
+    create_scene_mesh(coarse_scene, coarse);
     check_value_ranges(coarse);
     check_boundary_ids(coarse);
     check_contact_pairs(coarse);

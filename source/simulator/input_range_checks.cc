@@ -5,6 +5,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <contact_fem/core/value_range.h>
+#include <contact_fem/geometry/mesh_file.h>
 #include <contact_fem/simulator/contact_problem.h>
 
 #include <cctype>
@@ -43,7 +44,7 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactProblem<dim>::create_coarse_mesh(const Scene<dim>                          &coarse_scene,
+  ContactProblem<dim>::create_scene_mesh(const Scene<dim>                          &coarse_scene,
                                           parallel::distributed::Triangulation<dim> &coarse) const
   {
     try
@@ -63,12 +64,24 @@ namespace contact_fem
         if (info != std::string::npos)
           what = Utilities::trim(what.substr(info + 23));
         what = what.substr(0, what.find("\n\nStacktrace"));
+        // The vertices of the coarse cells (a failed refinement may leave
+        // unfinished ones), or else those read from the mesh file.
+        const Triangulation<dim> &built =
+          coarse.n_levels() == 0 && coarse_scene.coarse_mesh ? *coarse_scene.coarse_mesh : coarse;
+        std::vector<Point<dim>> used;
+        if (built.n_levels() > 0)
+          for (const auto &cell : built.cell_iterators_on_level(0))
+            for (const unsigned int v : cell->vertex_indices())
+              used.push_back(cell->vertex(v));
+        const std::string far = far_from_origin_hint(used);
         AssertThrow(false,
                     ExcMessage(geometry_key() + ": building the mesh failed in deal.II ('" +
-                               Utilities::trim(what) +
-                               "'); check the lengths and coordinates (finite, of magnitude "
-                               "at most " + format(largest_input_magnitude) +
-                               ", the parts of the scene of positive size)."));
+                               Utilities::trim(what) + "')" +
+                               (far.empty() ?
+                                  "; check the lengths and coordinates (finite, of magnitude "
+                                  "at most " + format(largest_input_magnitude) +
+                                    ", the parts of the scene of positive size)." :
+                                  far)));
       }
   }
 
@@ -164,7 +177,7 @@ namespace contact_fem
 #define INSTANTIATE(dim) \
   template void ContactProblem<dim>::check_value_ranges(const Triangulation<dim> &) const; \
   template std::string ContactProblem<dim>::geometry_key() const; \
-  template void ContactProblem<dim>::create_coarse_mesh(const Scene<dim> &, parallel::distributed::Triangulation<dim> &) const; \
+  template void ContactProblem<dim>::create_scene_mesh(const Scene<dim> &, parallel::distributed::Triangulation<dim> &) const; \
   template void ContactProblem<dim>::check_load_path(const Triangulation<dim> &, const double) const;
   INSTANTIATE(2)
   INSTANTIATE(3)

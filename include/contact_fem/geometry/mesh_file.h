@@ -33,6 +33,17 @@ namespace contact_fem
   read_gmsh(const std::string &file, Triangulation<dim> &coarse);
 
   /**
+   * For messages of a failure in deal.II's geometry: if the points
+   * @p vertices lie more than 1e3 times their extent from the origin, a
+   * sentence saying so (deal.II computes cell measures and the pull-backs of
+   * curved manifolds from absolute coordinates, which lose the digits of
+   * small cells far out); otherwise empty.
+   */
+  template <int spacedim>
+  std::string
+  far_from_origin_hint(const std::vector<Point<spacedim>> &vertices);
+
+  /**
    * Throws if a body (material id) of @p coarse is cut by an internal
    * crack: two of its boundary faces lie on top of each other (coincident
    * vertices that the cells on either side do not share) and at least one

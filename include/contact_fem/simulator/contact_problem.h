@@ -411,10 +411,12 @@ namespace contact_fem
     /// "Geometry/Mesh file 'name'" or the subsection of a built-in scene.
     std::string
     geometry_key() const;
-    /// Builds the mesh of @p coarse_scene; a library exception becomes a
-    /// message naming geometry_key().
+    /// Builds the mesh of @p coarse_scene (the scene itself, or its coarse
+    /// mesh for the early checks); a library exception becomes a message
+    /// naming geometry_key() (and the distance from the origin where that
+    /// is the likely cause).
     void
-    create_coarse_mesh(const Scene<dim>                          &coarse_scene,
+    create_scene_mesh(const Scene<dim>                          &coarse_scene,
                        parallel::distributed::Triangulation<dim> &coarse) const;
     /// Refuses coordinates, moduli and loads whose products overflow
     /// double precision, naming the key or mesh file.
