@@ -29,6 +29,8 @@ variants_3d="far=translate:1e4,1e4,1e4 thousand=translate:1e3,1e3,0 hundred=tran
   echo "reaction, strain energy; scaled by the known factors) must agree to 1e-7 relative."
   echo "Translations are in units of the model size."
   echo
+  # The reading of the last run, kept by hand below the generated header.
+  [[ -f "$here/metamorphic/reading.md" ]] && cat "$here/metamorphic/reading.md"
 } > "$doc"
 status=0
 for scene in two_cylinders:16:"$variants_2d" hertz_kratos:20:"$variants_2d" two_cylinders_3d:16:"$variants_3d"; do
