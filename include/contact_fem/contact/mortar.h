@@ -137,10 +137,12 @@ namespace contact_fem
 
     /**
      * Projects a point @p x along the direction @p direction onto the curve
-     * of @p face: returns the parameter eta with (face(eta) - x) x direction
-     * = 0 (2D cross product), found by Newton's method from eta = 0 (exact
-     * after one step for straight faces). Returns false if the projection
-     * does not converge or the direction is parallel to the face.
+     * of @p face: the parameter eta with (face(eta) - x) x direction = 0 (2D
+     * cross product). Where the line crosses the face, eta in [-1, 1] is the
+     * bracketed root, to the precision of double arithmetic; where it passes
+     * beside the face, eta is the root on the continuation of the face's
+     * chord, outside [-1, 1] on the side where the line passes. Returns
+     * false only if the line is parallel to that chord and misses the face.
      */
     bool
     project_along(const LineFace     &face,
