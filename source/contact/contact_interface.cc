@@ -6,6 +6,7 @@
 #include <deal.II/numerics/rtree.h>
 
 #include <contact_fem/contact/contact_interface.h>
+#include <contact_fem/core/format.h>
 #include <contact_fem/contact/mortar.h>
 
 #include <algorithm>
@@ -825,9 +826,9 @@ namespace contact_fem
                         faces[m].nodes.begin() + 2,
                     ExcMessage("Contact pair " + std::to_string(faces[f].pair) +
                                ": the master faces leave a hole under the slave face from " +
-                               Mortar::coordinates_text(lines[f].nodes[0]) + " to " +
-                               Mortar::coordinates_text(lines[f].nodes[1]) +
-                               " at the master node " + Mortar::coordinates_text(x) +
+                               coordinates_text(lines[f].nodes[0]) + " to " +
+                               coordinates_text(lines[f].nodes[1]) +
+                               " at the master node " + coordinates_text(x) +
                                ", inside the master surface. The mortar segmentation "
                                "lost a face; the contact pressures would be wrong."));
     };

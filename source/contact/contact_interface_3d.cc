@@ -7,6 +7,7 @@
 #include <deal.II/numerics/rtree.h>
 
 #include <contact_fem/contact/contact_interface.h>
+#include <contact_fem/core/format.h>
 #include <contact_fem/contact/mortar_3d.h>
 
 #include <algorithm>
@@ -415,7 +416,7 @@ namespace contact_fem
     AssertThrow(std::abs(area - 4.) <= 4. * tiling_tolerance,
                 ExcMessage("Contact pair " + std::to_string(faces[f].pair) +
                            ": the master faces cover " + std::to_string(area / 4.) +
-                           " of the slave face centred at " + Mortar::coordinates_text(middle) +
+                           " of the slave face centred at " + coordinates_text(middle) +
                            ", which lies inside the master surface. The mortar "
                            "segmentation lost or doubled a part; the contact pressures "
                            "would be wrong."));

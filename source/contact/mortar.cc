@@ -1,11 +1,10 @@
 #include <deal.II/base/quadrature_lib.h>
 
 #include <contact_fem/contact/mortar.h>
+#include <contact_fem/core/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
-#include <sstream>
 #include <limits>
 #include <string>
 #include <utility>
@@ -63,23 +62,6 @@ namespace contact_fem
         }
       return BoundingBox<spacedim>(std::make_pair(lower, upper));
     }
-
-    template <int spacedim>
-    std::string
-    coordinates_text(const Point<spacedim> &x)
-    {
-      std::ostringstream text;
-      text << std::setprecision(6) << '(';
-      for (unsigned int d = 0; d < spacedim; ++d)
-        text << (d > 0 ? ", " : "") << x[d];
-      text << ')';
-      return text.str();
-    }
-
-    template std::string
-    coordinates_text(const Point<2> &);
-    template std::string
-    coordinates_text(const Point<3> &);
 
     template BoundingBox<2>
     interpolant_box(const std::vector<Point<2>> &, const double);

@@ -1,6 +1,7 @@
 #include <deal.II/base/quadrature_lib.h>
 
 #include <contact_fem/contact/mortar.h>
+#include <contact_fem/core/format.h>
 #include <contact_fem/contact/mortar_3d.h>
 
 #include <algorithm>

@@ -7,6 +7,7 @@
 #include <contact_fem/geometry/hexahedron_shape.h>
 #include <contact_fem/core/value_range.h>
 #include <contact_fem/geometry/mesh_file.h>
+#include <contact_fem/core/format.h>
 #include <contact_fem/core/parameters.h>
 
 #include <algorithm>
@@ -745,26 +746,29 @@ namespace contact_fem
     return text.str();
   }
 
+  template <int dim>
+  std::string
+  far_from_origin_hint(const Triangulation<dim> &tria)
+  {
+    std::vector<Point<dim>> vertices;
+    if (tria.n_levels() > 0)
+      for (const auto &cell : tria.cell_iterators_on_level(0))
+        for (const unsigned int v : cell->vertex_indices())
+          vertices.push_back(cell->vertex(v));
+    return far_from_origin_hint(vertices);
+  }
+
   template std::string
   far_from_origin_hint(const std::vector<Point<2>> &);
   template std::string
   far_from_origin_hint(const std::vector<Point<3>> &);
+  template std::string
+  far_from_origin_hint(const Triangulation<2> &);
+  template std::string
+  far_from_origin_hint(const Triangulation<3> &);
 
   namespace
   {
-    /// "(x, y)" with 8 significant digits.
-    template <int dim>
-    std::string
-    coordinates(const Point<dim> &p)
-    {
-      std::ostringstream text;
-      text << std::setprecision(8) << "(";
-      for (unsigned int d = 0; d < dim; ++d)
-        text << (d > 0 ? ", " : "") << (std::abs(p[d]) < 1e-300 ? 0. : p[d]);
-      text << ")";
-      return text.str();
-    }
-
     /// Union-find over vertex indices.
     class Clusters
     {
@@ -896,7 +900,7 @@ namespace contact_fem
                 ExcMessage(mesh_key + ": '" + file + "': the body of material id " +
                            std::to_string(faces[first].body) + " is cut inside: its cells on "
                            "either side of the node at " +
-                           coordinates(coarse.get_vertices()[loose]) +
+                           coordinates_text(coarse.get_vertices()[loose]) +
                            " use two coincident copies of it, so " + std::to_string(n_cracked) +
                            " pair(s) of boundary faces without a boundary id lie on top of "
                            "each other (an internal crack). Merge the duplicate nodes: in "

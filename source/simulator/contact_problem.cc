@@ -1269,11 +1269,7 @@ namespace contact_fem
         // Anything else thrown after the first solve started is a failure of
         // the run (main() gives exit 2): the summary says so. Far from the
         // origin deal.II's geometry may fail anywhere: say so.
-        std::vector<Point<dim>> vertices;
-        for (const auto &cell : triangulation.cell_iterators_on_level(0))
-          for (const unsigned int v : cell->vertex_indices())
-            vertices.push_back(cell->vertex(v));
-        const std::string far = far_from_origin_hint(vertices);
+        const std::string far = far_from_origin_hint(triangulation);
         if (solving)
           write_summary(cycles, total_timer.wall_time(), "failed: " + user_message(e) + far);
         if (!far.empty())

@@ -64,16 +64,11 @@ namespace contact_fem
         if (info != std::string::npos)
           what = Utilities::trim(what.substr(info + 23));
         what = what.substr(0, what.find("\n\nStacktrace"));
-        // The vertices of the coarse cells (a failed refinement may leave
-        // unfinished ones), or else those read from the mesh file.
-        const Triangulation<dim> &built =
-          coarse.n_levels() == 0 && coarse_scene.coarse_mesh ? *coarse_scene.coarse_mesh : coarse;
-        std::vector<Point<dim>> used;
-        if (built.n_levels() > 0)
-          for (const auto &cell : built.cell_iterators_on_level(0))
-            for (const unsigned int v : cell->vertex_indices())
-              used.push_back(cell->vertex(v));
-        const std::string far = far_from_origin_hint(used);
+        // The mesh built so far, or else the one read from the mesh file.
+        const std::string far = far_from_origin_hint(
+          coarse.n_levels() == 0 && coarse_scene.coarse_mesh ?
+            static_cast<const Triangulation<dim> &>(*coarse_scene.coarse_mesh) :
+            static_cast<const Triangulation<dim> &>(coarse));
         AssertThrow(false,
                     ExcMessage(geometry_key() + ": building the mesh failed in deal.II ('" +
                                Utilities::trim(what) + "')" +

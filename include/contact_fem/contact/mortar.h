@@ -9,7 +9,6 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <array>
-#include <string>
 #include <vector>
 
 namespace contact_fem
@@ -111,11 +110,6 @@ namespace contact_fem
             double                           &lower,
             double                           &upper,
             std::array<int, 2>              *bounding_master_ends = nullptr);
-
-    /// "(x, y)" or "(x, y, z)" with 6 significant digits, for messages.
-    template <int spacedim>
-    std::string
-    coordinates_text(const Point<spacedim> &x);
 
     /// The mortar blocks of one slave face against one master face.
     struct SegmentOperators

@@ -2,6 +2,8 @@
 #ifndef contact_fem_format_h
 #define contact_fem_format_h
 
+#include <deal.II/base/point.h>
+
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -50,6 +52,20 @@ namespace contact_fem
       s << scientific(value, 4);
     return s.str();
   }
+  /// "(x, y)" or "(x, y, z)" with 8 significant digits, for messages
+  /// (denormal coordinates print as 0).
+  template <int dim>
+  std::string
+  coordinates_text(const dealii::Point<dim> &p)
+  {
+    std::ostringstream text;
+    text << std::setprecision(8) << "(";
+    for (unsigned int d = 0; d < dim; ++d)
+      text << (d > 0 ? ", " : "") << (std::abs(p[d]) < 1e-300 ? 0. : p[d]);
+    text << ")";
+    return text.str();
+  }
+
   /// @p value with @p digits significant digits (default float format).
   inline std::string
   significant(const double value, const unsigned int digits)

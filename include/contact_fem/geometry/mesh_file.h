@@ -43,6 +43,12 @@ namespace contact_fem
   std::string
   far_from_origin_hint(const std::vector<Point<spacedim>> &vertices);
 
+  /// The same for the vertices of the coarse cells of @p tria (a failed
+  /// refinement may leave unfinished ones); empty for an empty mesh.
+  template <int dim>
+  std::string
+  far_from_origin_hint(const Triangulation<dim> &tria);
+
   /**
    * Throws if a body (material id) of @p coarse is cut by an internal
    * crack: two of its boundary faces lie on top of each other (coincident
