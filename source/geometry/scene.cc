@@ -233,6 +233,8 @@ namespace contact_fem
   Scene<dim>::parse_parameters(ParameterHandler &prm, const std::string &prm_directory)
   {
     prm.enter_subsection("Geometry");
+    frame              = ModelFrame<dim>();
+    message_origin     = {};
     type               = prm.get("Type");
     mesh_file          = prm.get("Mesh file");
     global_refinements = prm.get_integer("Global refinements");
@@ -362,7 +364,14 @@ namespace contact_fem
     // Every check runs here, before any work and under --validate.
     const std::string key    = "Geometry/Manifolds";
     auto              coarse = std::make_shared<Triangulation<dim>>();
-    read_gmsh(mesh_file, *coarse);
+    const Point<3> origin    = read_gmsh(mesh_file, *coarse);
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        frame.origin[d]   = origin[d];
+        message_origin[d] = origin[d];
+      }
+    for (auto &m : manifolds)
+      m.centre = frame.to_model(m.centre);
     check_unmerged_vertices(*coarse, mesh_file);
     check_boundary_manifolds(manifolds, *coarse, key);
     // Random vertex moves would invalidate the transfinite chart of the
@@ -421,7 +430,7 @@ namespace contact_fem
             fitted << (fitted.tellp() > 0 ? "; " : "") << static_cast<unsigned int>(b.id)
                    << ": cylinder ";
             for (unsigned int d = 0; d < dim; ++d)
-              fitted << clean(b.axis_point[d], b.cylinder_radius) << ", ";
+              fitted << clean(frame.to_user(b.axis_point)[d], b.cylinder_radius) << ", ";
             for (unsigned int d = 0; d < dim; ++d)
               fitted << clean(b.axis[d], 1.) << ", ";
             fitted << b.cylinder_radius;
@@ -431,7 +440,7 @@ namespace contact_fem
             fitted << (fitted.tellp() > 0 ? "; " : "") << static_cast<unsigned int>(b.id)
                    << (dim == 2 ? ": circle " : ": sphere ");
             for (unsigned int d = 0; d < dim; ++d)
-              fitted << clean(b.centre[d], b.radius) << ", ";
+              fitted << clean(frame.to_user(b.centre)[d], b.radius) << ", ";
             fitted << b.radius;
           }
       }
@@ -817,7 +826,7 @@ namespace contact_fem
             for (const auto &cell : tria.active_cell_iterators())
               if (cell->is_locally_owned())
                 {
-                  const Point<dim> centre = cell->center();
+                  const Point<dim> centre = frame.to_user(cell->center());
                   bool             inside = true;
                   for (unsigned int d = 0; d < dim; ++d)
                     inside = inside && centre[d] >= box.lower[d] && centre[d] <= box.upper[d];

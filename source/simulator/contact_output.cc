@@ -696,12 +696,13 @@ namespace contact_fem
     for (const auto &s : interface->slave_nodes)
       if (s.paired)
         {
-          // 2D: x only; 3D: the whole position (the profile is a surface).
+          // 2D: x only; 3D: the whole position (the profile is a surface),
+          // in the user's coordinates.
           const Point<dim> position = interface->nodes[s.node].reference +
                                       interface->displacement(s.node, interface_displacement);
           rows.emplace_back();
           for (unsigned int d = 0; d < (dim == 2 ? 1 : dim); ++d)
-            rows.back().push_back(position[d]);
+            rows.back().push_back(scene.frame.to_user(position)[d]);
           rows.back().insert(rows.back().end(),
                              {contact->normal_pressure(s.node),
                               hertz ? h.pressure(hertz_coordinate(analytical, position)) : 0.,
@@ -946,8 +947,17 @@ namespace contact_fem
       .set("status", status)
       .set("degree", degree)
       .set("mapping_degree", mapping->get_degree())
-      .set("wall_time", wall_time)
-      .set("cycles", cycles);
+      .set("wall_time", wall_time);
+    // A mesh far from the origin is computed (and its VTU files written)
+    // moved next to it: the point of the user's coordinates that is 0 there.
+    if (scene.frame.shifted())
+      {
+        Json origin = Json::array();
+        for (unsigned int d = 0; d < dim; ++d)
+          origin.push(scene.frame.origin[d]);
+        summary.set("coordinate_origin", origin);
+      }
+    summary.set("cycles", cycles);
     std::ostringstream out;
     summary.write(out);
     out << '\n';
