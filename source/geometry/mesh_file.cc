@@ -110,6 +110,8 @@ namespace contact_fem
       /// their numbers: a mesh far from the origin is handed to deal.II
       /// with these rewritten (read_gmsh()).
       std::vector<std::pair<unsigned int, unsigned int>> node_lines;
+      /// $PhysicalNames: (dimension, tag, name).
+      std::vector<PhysicalName> physical_names;
       Point<3> lower = Point<3>(std::numeric_limits<double>::max(),
                                 std::numeric_limits<double>::max(),
                                 std::numeric_limits<double>::max());
@@ -418,6 +420,30 @@ namespace contact_fem
           reader.fail("expected " + end + ", found '" + Utilities::trim(line) + "'.");
     }
 
+    /// $PhysicalNames: a count, then 'dimension tag "name"' lines.
+    void
+    scan_physical_names(LineReader &reader, Contents &contents)
+    {
+      const std::string section = "$PhysicalNames";
+      const auto        n = static_cast<std::size_t>(
+        reader.numbers(section, "", "the number of names", 1)[0]);
+      for (std::size_t i = 0; i < n; ++i)
+        {
+          const std::string line  = reader.require(section, count_of(i, n, "names"));
+          const auto        open  = line.find('"');
+          const auto        close = line.rfind('"');
+          std::istringstream numbers(line.substr(0, open));
+          PhysicalName       name;
+          if (open == std::string::npos || close == open ||
+              !(numbers >> name.dimension >> name.tag))
+            reader.fail("expected 'dimension tag \"name\"' in $PhysicalNames, found '" +
+                        Utilities::trim(line) + "'.");
+          name.name = Utilities::trim(line.substr(open + 1, close - open - 1));
+          contents.physical_names.push_back(name);
+        }
+      reader.expect("$EndPhysicalNames", section);
+    }
+
     /// The MSH version of the file (1 for the old format that starts with
     /// $NOD, left for the caller as @p pending section). Binary files stop
     /// here.
@@ -479,6 +505,8 @@ namespace contact_fem
                               scan_elements_v2(reader, section, contents);
               contents.have_elements = true;
             }
+          else if (section == "$PhysicalNames")
+            scan_physical_names(reader, contents);
           else
             skip_section(reader, section);
           section.clear();
@@ -745,7 +773,7 @@ namespace contact_fem
   } // namespace
 
   template <int dim>
-  Point<3>
+  MeshFileInfo
   read_gmsh(const std::string &file, Triangulation<dim> &coarse)
   {
     std::error_code error;
@@ -761,7 +789,10 @@ namespace contact_fem
       check_hexahedra(contents, file);
     else
       check_quadrilaterals(contents, file);
-    const Point<3> origin = choose_frame_origin(contents.lower, contents.upper, dim);
+    MeshFileInfo   info;
+    info.physical_names   = contents.physical_names;
+    const Point<3> origin = info.frame_origin =
+      choose_frame_origin(contents.lower, contents.upper, dim);
     GridIn<dim>    grid_in;
     grid_in.attach_triangulation(coarse);
     try
@@ -782,7 +813,7 @@ namespace contact_fem
         AssertThrow(false, ExcMessage(mesh_key + ": cannot read '" + file +
                                       "' as a Gmsh mesh: " + user_message(e)));
       }
-    return origin;
+    return info;
   }
 
 
@@ -1189,8 +1220,8 @@ namespace contact_fem
     return false;
   }
 
-  template Point<3> read_gmsh<2>(const std::string &, Triangulation<2> &);
-  template Point<3> read_gmsh<3>(const std::string &, Triangulation<3> &);
+  template MeshFileInfo read_gmsh<2>(const std::string &, Triangulation<2> &);
+  template MeshFileInfo read_gmsh<3>(const std::string &, Triangulation<3> &);
   template void check_unmerged_vertices<2>(const Triangulation<2> &, const std::string &);
   template void check_unmerged_vertices<3>(const Triangulation<3> &, const std::string &);
   template std::vector<PolygonalBoundary<2>>

@@ -300,26 +300,52 @@ namespace contact_fem
     for (unsigned int d = 0; d < dim; ++d)
       user[d] = point.coordinates[d];
     const Point<dim> location = scene.frame.to_model(user);
+    // The nearest vertex of the body, in units of its cell's diameter: a
+    // point typed with fewer digits than the mesh file holds (a rotated
+    // mesh) still names its vertex, and a miss names the nearest one.
     std::vector<types::global_dof_index> dofs;
+    std::pair<double, Point<dim>>        nearest(std::numeric_limits<double>::infinity(), {});
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         if (cell->is_artificial() || cell->material_id() != point.material_id)
           continue;
         for (const auto v : cell->vertex_indices())
-          if (cell->vertex(v).distance(location) < vertex_match_tolerance * cell->diameter())
-            {
+          {
+            const double distance = cell->vertex(v).distance(location) / cell->diameter();
+            if (distance < nearest.first)
+              {
+                // Printed: coordinates of round-off size (on a symmetry
+                // line) as 0, so that the message is the same everywhere.
+                nearest = {distance, scene.frame.to_user(cell->vertex(v))};
+                for (unsigned int d = 0; d < dim; ++d)
+                  if (std::abs(nearest.second[d]) < 1e-10 * cell->diameter())
+                    nearest.second[d] = 0.;
+              }
+            if (distance < vertex_match_tolerance && dofs.empty())
               for (unsigned int d = 0; d < dim; ++d)
                 dofs.push_back(cell->vertex_dof_index(v, d));
-              break;
-            }
-        if (!dofs.empty())
-          break;
+          }
       }
     const unsigned int found = dofs.empty() ? 0 : 1;
-    const std::string  text  = to_string(point);
-    AssertThrow(Utilities::MPI::sum(found, comm) > 0,
-                ExcMessage(key + ": body " + std::to_string(point.material_id) +
-                           " has no mesh vertex at (" + text.substr(text.find('@') + 2) + ")."));
+    if (Utilities::MPI::sum(found, comm) == 0)
+      {
+        for (const auto &candidate : Utilities::MPI::all_gather(comm, nearest))
+          if (candidate.first < nearest.first)
+            nearest = candidate;
+        const std::string text = to_string(point);
+        AssertThrow(false,
+                    ExcMessage(key + ": body " + std::to_string(point.material_id) +
+                               " has no mesh vertex at (" + text.substr(text.find('@') + 2) +
+                               ")" +
+                               (std::isfinite(nearest.first) ?
+                                  "; its nearest vertex is " +
+                                    coordinates_text(scene.frame.to_model(nearest.second)) +
+                                    ", " + significant(nearest.first, 2) +
+                                    " of its cell's diameter away (a point names a vertex "
+                                    "within " + significant(vertex_match_tolerance, 2) + ")" :
+                                  "; the body has no cells") +
+                               "."));
+      }
     return dofs;
   }
 

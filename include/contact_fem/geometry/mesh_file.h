@@ -14,6 +14,23 @@ namespace contact_fem
 {
   using namespace dealii;
 
+  /// An entry of a Gmsh file's $PhysicalNames.
+  struct PhysicalName
+  {
+    int         dimension = 0;
+    int         tag       = 0;
+    std::string name;
+  };
+
+  /// What read_gmsh() found beside the mesh.
+  struct MeshFileInfo
+  {
+    /// The origin of the computing frame in the file's coordinates
+    /// (choose_frame_origin(); zero for a mesh near the origin).
+    Point<3> frame_origin;
+    std::vector<PhysicalName> physical_names;
+  };
+
   /**
    * Reads the Gmsh file @p file into @p coarse after a scan of its text:
    * ASCII (MSH 1, 2.x, 4.x), complete (every section closed, the announced
@@ -27,13 +44,12 @@ namespace contact_fem
    * later in p4est, and take collapsed or twisted hexahedra.
    *
    * A mesh far from the origin is read moved next to it (ModelFrame): the
-   * return value is the origin of the computing frame in the file's
-   * coordinates (choose_frame_origin(); zero for a mesh near the origin).
+   * returned frame_origin says by how much.
    *
    * Implemented in source/mesh_file.cc.
    */
   template <int dim>
-  Point<3>
+  MeshFileInfo
   read_gmsh(const std::string &file, Triangulation<dim> &coarse);
 
   /**

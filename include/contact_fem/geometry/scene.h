@@ -163,9 +163,10 @@ namespace contact_fem
     refine_boxes(parallel::distributed::Triangulation<dim> &tria) const;
 
   private:
-    /// Reads and checks the mesh file into coarse_mesh.
+    /// Reads and checks the mesh file into coarse_mesh; its physical names
+    /// replace the ids they stand for in @p prm (PhysicalNames).
     void
-    read_mesh_file();
+    read_mesh_file(ParameterHandler &prm);
     /// The mesh file's coarse mesh with its manifolds, into @p tria.
     void
     create_from_mesh_file(parallel::distributed::Triangulation<dim> &tria) const;

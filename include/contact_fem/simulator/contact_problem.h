@@ -623,8 +623,10 @@ namespace contact_fem
     std::vector<double>                    step_start_displacement;
     /// The search reaches this many times the motion it is sized for.
     static constexpr double                search_growth = 1.5;
-    /// A point names a vertex closer than this times the cell's diameter.
-    static constexpr double                vertex_match_tolerance = 1e-8;
+    /// A point names a vertex closer than this times the cell's diameter
+    /// (far above the digits a user types, far below the distance of two
+    /// vertices of a valid cell).
+    static constexpr double                vertex_match_tolerance = 1e-3;
     /// A direct solve whose residual exceeds this fraction of the
     /// right-hand side has met a singular matrix.
     static constexpr double                singular_residual_ratio = 1e-3;
