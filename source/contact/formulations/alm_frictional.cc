@@ -499,7 +499,18 @@ namespace contact_fem
   void
   AlmFrictional<dim>::print_results(const ContactInterface<dim> &interface,
                                     const std::vector<double> &,
+                                    const Json   &contact,
+                                    const Json   &reaction,
                                     std::ostream &out) const
+  {
+    print_cone_check(interface, out);
+    print_friction_totals(contact, reaction, dim, out);
+  }
+
+  template <int dim>
+  void
+  AlmFrictional<dim>::print_cone_check(const ContactInterface<dim> &interface,
+                                       std::ostream                &out) const
   {
     double largest_bound = 0., off_bound = 0., outside = 0.;
     for (const auto &s : interface.slave_nodes)
@@ -561,6 +572,28 @@ namespace contact_fem
     contact.set("friction", law_names)
       .set("stick_nodes", n_stick())
       .set("slip_nodes", n_slip());
+    add_friction_totals(interface, *this, last_step_slip, contact);
+  }
+
+  template <int dim>
+  std::string
+  AlmFrictional<dim>::iteration_header() const
+  {
+    return friction_iteration_header();
+  }
+
+  template <int dim>
+  std::string
+  AlmFrictional<dim>::iteration_cells(const unsigned int iteration) const
+  {
+    return friction_iteration_cells(iteration, n_stick(), n_slip(), last_stick_slip_changes);
+  }
+
+  template <int dim>
+  std::vector<typename ContactFormulation<dim>::NodalField>
+  AlmFrictional<dim>::nodal_fields(const ContactInterface<dim> &interface) const
+  {
+    return friction_nodal_fields(interface, *this, last_step_slip);
   }
 
   template class AlmFrictional<2>;

@@ -77,6 +77,8 @@ namespace contact_fem
   void
   ContactFormulation<dim>::print_results(const ContactInterface<dim> &,
                                          const std::vector<double> &,
+                                         const Json &,
+                                         const Json &,
                                          std::ostream &) const
   {}
 
@@ -163,7 +165,7 @@ namespace contact_fem
           const bool tangential_penalty_given =
             Utilities::trim(prm.get("Tangential penalty")) != "auto";
           prm.leave_subsection();
-          AssertThrow(formulation->frictional() || !pure_slip,
+          AssertThrow(formulation->path_dependent() || !pure_slip,
                       ExcMessage("Contact/Pure slip = true, but Contact/Formulation = " + name +
                                  " has no friction: the key concerns the frictional "
                                  "formulations only."));
@@ -171,7 +173,7 @@ namespace contact_fem
                       ExcMessage("Contact/Tangential penalty is set, but only Contact/"
                                  "Formulation = penalty frictional has a tangential penalty (" +
                                  name + " would ignore it)."));
-          AssertThrow(formulation->frictional() || !friction_given,
+          AssertThrow(formulation->path_dependent() || !friction_given,
                       ExcMessage("Contact/Friction is set, but Contact/Formulation = " + name +
                                  " has no friction: use a frictional formulation (" +
                                  "alm frictional, penalty frictional), or leave " +

@@ -419,15 +419,48 @@ namespace contact_fem
       .set("tangential_penalty", tangent_penalty.empty() ? 0. : tangent_penalty[0])
       .set("stick_nodes", n_stick())
       .set("slip_nodes", this->n_active() - n_stick());
+    add_friction_totals(interface, *this, last_step_slip, contact);
+  }
+
+  template <int dim>
+  std::string
+  PenaltyFrictional<dim>::iteration_header() const
+  {
+    return friction_iteration_header();
+  }
+
+  template <int dim>
+  std::string
+  PenaltyFrictional<dim>::iteration_cells(const unsigned int iteration) const
+  {
+    return friction_iteration_cells(iteration, n_stick(), n_slip(), last_stick_slip_changes);
+  }
+
+  template <int dim>
+  std::vector<typename ContactFormulation<dim>::NodalField>
+  PenaltyFrictional<dim>::nodal_fields(const ContactInterface<dim> &interface) const
+  {
+    return friction_nodal_fields(interface, *this, last_step_slip);
   }
 
   template <int dim>
   void
   PenaltyFrictional<dim>::print_results(const ContactInterface<dim> &interface,
                                         const std::vector<double>   &u,
+                                        const Json                  &contact,
+                                        const Json                  &reaction,
                                         std::ostream                &out) const
   {
-    PenaltyFrictionless<dim>::print_results(interface, u, out);
+    PenaltyFrictionless<dim>::print_results(interface, u, contact, reaction, out);
+    print_slip_checks(interface, out);
+    print_friction_totals(contact, reaction, dim, out);
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictional<dim>::print_slip_checks(const ContactInterface<dim> &interface,
+                                            std::ostream                &out) const
+  {
     // sum_j D_j t_j and sum_j D_j p_j over the active nodes; with a single
     // Coulomb law (T(0) = 0) and every active node slipping one way their
     // ratio is mu up to round-off.
@@ -467,8 +500,7 @@ namespace contact_fem
              "Contact/Tangential penalty (auto: that of the normal penalty) or use "
              "alm frictional."
           << std::endl;
-    // The forces themselves are printed by the driver with every
-    // frictional formulation's results; here only the slip check.
+    // The forces themselves are printed by print_friction_totals().
     if (normal_force == 0.)
       return;
     const double ratio = tangential_force / normal_force;

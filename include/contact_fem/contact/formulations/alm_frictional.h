@@ -5,6 +5,7 @@
 #define contact_fem_alm_frictional_h
 
 #include <contact_fem/contact/formulations/frictionless_formulation.h>
+#include <contact_fem/contact/formulations/friction_results.h>
 #include <contact_fem/contact/friction/frictional_law.h>
 #include <contact_fem/contact/friction/stick_slip_sets.h>
 
@@ -115,39 +116,44 @@ namespace contact_fem
     }
 
     bool
-    frictional() const override
+    path_dependent() const override
     {
       return true;
     }
 
     bool
-    sticks(const unsigned int n) const override
+    transmits_shear() const override
+    {
+      return true;
+    }
+
+    /// Whether node @p n is active and sticks.
+    bool
+    held_tangentially(const unsigned int n) const override
     {
       return sets.sticks(n, this->active);
     }
 
-    double
-    slip_increment(const ContactInterface<dim> &interface,
-                   const SlaveNode             &s,
-                   const std::vector<double>   &u) const override;
+    std::string
+    iteration_header() const override;
 
-    double
-    accepted_slip(const unsigned int n) const override
-    {
-      return last_step_slip[n];
-    }
+    /// Stick and slip counts and the stick/slip changes of the last
+    /// update_active_set() (part of the changes it returned).
+    std::string
+    iteration_cells(const unsigned int iteration) const override;
+
+    /// tangential_traction, slip_increment (of the last accepted step) and
+    /// stick.
+    std::vector<typename ContactFormulation<dim>::NodalField>
+    nodal_fields(const ContactInterface<dim> &interface) const override;
+
+    /// Number of active nodes that stick / slip (active nodes held
+    /// tangentially by a support neither stick nor slip).
+    unsigned int
+    n_stick() const;
 
     unsigned int
-    n_stick() const override;
-
-    unsigned int
-    n_slip() const override;
-
-    unsigned int
-    stick_slip_changes() const override
-    {
-      return last_stick_slip_changes;
-    }
+    n_slip() const;
 
     std::vector<int>
     contact_sets() const override;
@@ -168,14 +174,26 @@ namespace contact_fem
     void
     add_results(const ContactInterface<dim> &interface, Json &contact) const override;
 
-    /// The friction cone check: slip nodes on the bound (|t - sigma T(p)|),
-    /// stick nodes inside it (|t| - T(p)), relative to the largest bound.
+    /// The friction cone check, then the friction totals.
     void
     print_results(const ContactInterface<dim> &interface,
                   const std::vector<double>   &u,
+                  const Json                  &contact,
+                  const Json                  &reaction,
                   std::ostream                &out) const override;
 
   private:
+    /// The friction cone check: slip nodes on the bound (|t - sigma T(p)|),
+    /// stick nodes inside it (|t| - T(p)), relative to the largest bound.
+    void
+    print_cone_check(const ContactInterface<dim> &interface, std::ostream &out) const;
+
+    /// The weighted tangential slip of slave node @p s at @p u since the
+    /// last accepted load step, along the tangent of frame_normal(s).
+    double
+    slip_increment(const ContactInterface<dim> &interface,
+                   const SlaveNode             &s,
+                   const std::vector<double>   &u) const;
 
     /// The direction w = tau + sigma T'(p) n of the slip condition
     /// w . lambda = sigma (T - T' p) of slip node @p s.
@@ -235,6 +253,7 @@ namespace contact_fem
     std::vector<double> last_step_slip;
     /// Multipliers of the nodes released in the last update.
     std::vector<double> released_pressure, released_tangential;
+    /// Stick/slip changes of the last update_active_set().
     unsigned int        last_stick_slip_changes = 0;
 
     struct FrictionState : public State

@@ -4,6 +4,7 @@
 #ifndef contact_fem_penalty_frictional_h
 #define contact_fem_penalty_frictional_h
 
+#include <contact_fem/contact/formulations/friction_results.h>
 #include <contact_fem/contact/formulations/penalty_frictionless.h>
 #include <contact_fem/contact/friction/frictional_law.h>
 #include <contact_fem/contact/friction/stick_slip_sets.h>
@@ -112,39 +113,44 @@ namespace contact_fem
     }
 
     bool
-    frictional() const override
+    path_dependent() const override
     {
       return true;
     }
 
     bool
-    sticks(const unsigned int n) const override
+    transmits_shear() const override
+    {
+      return true;
+    }
+
+    /// Whether node @p n is active and sticks.
+    bool
+    held_tangentially(const unsigned int n) const override
     {
       return sets.sticks(n, this->active);
     }
 
-    double
-    slip_increment(const ContactInterface<dim> &interface,
-                   const SlaveNode             &s,
-                   const std::vector<double>   &u) const override;
+    std::string
+    iteration_header() const override;
+
+    /// Stick and slip counts and the stick/slip changes of the last
+    /// update_active_set() (part of the changes it returned).
+    std::string
+    iteration_cells(const unsigned int iteration) const override;
+
+    /// tangential_traction, slip_increment (of the last accepted step) and
+    /// stick.
+    std::vector<typename ContactFormulation<dim>::NodalField>
+    nodal_fields(const ContactInterface<dim> &interface) const override;
+
+    /// Number of active nodes that stick / slip (active nodes held
+    /// tangentially by a support neither stick nor slip).
+    unsigned int
+    n_stick() const;
 
     unsigned int
-    n_stick() const override;
-
-    unsigned int
-    n_slip() const override;
-
-    double
-    accepted_slip(const unsigned int n) const override
-    {
-      return last_step_slip[n];
-    }
-
-    unsigned int
-    stick_slip_changes() const override
-    {
-      return last_stick_slip_changes;
-    }
+    n_slip() const;
 
     /// 0 inactive, 1 stick, 2 / 3 slip with sign + / -.
     std::vector<int>
@@ -165,15 +171,29 @@ namespace contact_fem
     void
     add_results(const ContactInterface<dim> &interface, Json &contact) const override;
 
-    /// The total tangential and normal contact forces sum_j D_j t_j and
-    /// sum_j D_j p_j, their ratio, and with one Coulomb law and every
-    /// active node slipping one way the check ratio = mu.
+    /// The checks of the base class and print_slip_checks(), then the
+    /// friction totals.
     void
     print_results(const ContactInterface<dim> &interface,
                   const std::vector<double>   &u,
+                  const Json                  &contact,
+                  const Json                  &reaction,
                   std::ostream                &out) const override;
 
   private:
+    /// The largest elastic slip of the stick nodes, and from the total
+    /// tangential and normal contact forces sum_j D_j t_j and sum_j D_j p_j,
+    /// with one Coulomb law and every active node slipping one way, the
+    /// check ratio = mu.
+    void
+    print_slip_checks(const ContactInterface<dim> &interface, std::ostream &out) const;
+
+    /// The weighted slip increment xi_j of slave node @p s at @p u since
+    /// the last accepted load step, along tangent(s.normal).
+    double
+    slip_increment(const ContactInterface<dim> &interface,
+                   const SlaveNode             &s,
+                   const std::vector<double>   &u) const;
 
     /// Whether the law of node @p s has no friction at all (mu = 0, bound 0).
     bool
@@ -215,6 +235,7 @@ namespace contact_fem
     /// load step (the history).
     std::vector<double> converged_displacement;
     std::vector<double> accepted_tangential;
+    /// Stick/slip changes of the last update_active_set().
     unsigned int        last_stick_slip_changes = 0;
 
     struct FrictionState : public State
