@@ -10,10 +10,11 @@
 namespace contact_fem
 {
   template <int dim>
-  AlmFrictional<dim>::AlmFrictional(ParameterHandler &prm)
+  AlmFrictional<dim>::AlmFrictional(ParameterHandler &prm, const FrictionParameters &friction)
     : FrictionlessFormulation<dim>(
         FrictionlessFormulation<dim>::Parameters::parse_for_exact_gap(prm, "alm frictional"))
-    , laws(FrictionParameters::parse_laws(prm))
+    , laws(friction.laws)
+    , pure_slip(friction.pure_slip)
   {
     AssertThrow(dim == 2,
                 ExcMessage("Contact/Formulation = alm frictional: friction is implemented in "
@@ -23,9 +24,6 @@ namespace contact_fem
                            "'coulomb 0.2' or 'tresca 0.01' (or per pair '3: coulomb 0.2'); "
                            "for frictionless contact use Contact/Formulation = alm "
                            "frictionless."));
-    prm.enter_subsection("Contact");
-    pure_slip = prm.get_bool("Pure slip");
-    prm.leave_subsection();
   }
 
   template <int dim>

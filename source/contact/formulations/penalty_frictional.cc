@@ -71,9 +71,11 @@ namespace contact_fem
   }
 
   template <int dim>
-  PenaltyFrictional<dim>::PenaltyFrictional(ParameterHandler &prm)
+  PenaltyFrictional<dim>::PenaltyFrictional(ParameterHandler         &prm,
+                                            const FrictionParameters &friction)
     : PenaltyFrictionless<dim>(refuse_adaptive_penalty(prm))
-    , laws(FrictionParameters::parse_laws(prm))
+    , laws(friction.laws)
+    , pure_slip(friction.pure_slip)
   {
     AssertThrow(dim == 2,
                 ExcMessage("Contact/Formulation = penalty frictional: friction is implemented "
@@ -84,7 +86,6 @@ namespace contact_fem
                            "0.2'); for frictionless contact use Contact/Formulation = "
                            "penalty frictionless."));
     prm.enter_subsection("Contact");
-    pure_slip          = prm.get_bool("Pure slip");
     tangential_penalty = parse_auto_or_positive(prm.get("Tangential penalty"),
                                                 "Contact/Tangential penalty");
     prm.leave_subsection();
@@ -199,7 +200,7 @@ namespace contact_fem
                                        DynamicSparsityPattern          &pattern) const
   {
     const bool any_friction = std::any_of(laws.begin(), laws.end(), [](const auto &law) {
-      return law->threshold(1.) != 0. || law->threshold_derivative(1.) != 0.;
+      return !law->frictionless();
     });
     if (!any_friction)
       {

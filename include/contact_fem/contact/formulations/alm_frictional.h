@@ -54,8 +54,8 @@ namespace contact_fem
     using typename FrictionlessFormulation<dim>::State;
     using SlaveNode = typename ContactInterface<dim>::SlaveNode;
 
-    /// Reads the shared normal keys, Contact/Friction and Pure slip.
-    explicit AlmFrictional(ParameterHandler &prm);
+    /// Reads the shared normal keys; @p friction: the laws and Pure slip.
+    AlmFrictional(ParameterHandler &prm, const FrictionParameters &friction);
 
     void
     initialize(const ContactInterface<dim> &interface) override;
@@ -214,12 +214,11 @@ namespace contact_fem
     int
     stick_or_slip(const SlaveNode &s, const double augmented_pressure, const double xi) const;
 
-    /// Whether the law of node @p s has no friction at all (mu = 0, bound 0):
-    /// its slip sign then changes nothing.
+    /// Whether the law of node @p s has no friction at all (mu = 0, bound 0).
     bool
     frictionless_law(const SlaveNode &s) const
     {
-      return laws[s.pair]->threshold(1.) == 0. && laws[s.pair]->threshold_derivative(1.) == 0.;
+      return laws[s.pair]->frictionless();
     }
 
     /// u_j = sum_l M_jl / D_j u_l + offsets: the gap and the stick condition

@@ -65,9 +65,9 @@ namespace contact_fem
     static void
     declare_parameters(ParameterHandler &prm);
 
-    /// Reads the penalty keys, Contact/Friction, Pure slip and Tangential
-    /// penalty.
-    explicit PenaltyFrictional(ParameterHandler &prm);
+    /// Reads the penalty keys and Tangential penalty; @p friction: the laws
+    /// and Pure slip.
+    PenaltyFrictional(ParameterHandler &prm, const FrictionParameters &friction);
 
     void
     initialize(const ContactInterface<dim> &interface) override;
@@ -199,7 +199,7 @@ namespace contact_fem
     bool
     frictionless_law(const SlaveNode &s) const
     {
-      return laws[s.pair]->threshold(1.) == 0. && laws[s.pair]->threshold_derivative(1.) == 0.;
+      return laws[s.pair]->frictionless();
     }
 
     /// The return mapping of active node @p s at pressure @p p and slip
