@@ -32,12 +32,12 @@ namespace contact_fem
   {
     FrictionlessFormulation<dim>::initialize(interface);
     const unsigned int n = interface.nodes.size();
-    tangential.assign(n, 0.);
+    tangential.assign(n, TangentialVector<dim>());
     sets.initialize(interface);
     released_pressure.assign(n, 0.);
-    released_tangential.assign(n, 0.);
+    released_tangential.assign(n, TangentialVector<dim>());
     converged_displacement.assign(interface.dofs().size(), 0.);
-    last_step_slip.assign(n, 0.);
+    last_step_slip.assign(n, TangentialVector<dim>());
     last_stick_slip_changes = 0;
   }
 
@@ -57,7 +57,7 @@ namespace contact_fem
                                     const double     augmented_pressure,
                                     const double     xi) const
   {
-    const double trial = tangential[s.node] - this->penalty[s.pair] * xi;
+    const double trial = tangential[s.node][0] - this->penalty[s.pair] * xi;
     const int    sign  = trial >= 0. ? 1 : -1;
     if (pure_slip)
       return sign;
@@ -80,7 +80,7 @@ namespace contact_fem
     const double         p = this->pressure[s.node];
     const Tensor<1, dim> n = frame_normal(s);
     return ContactFormulation<dim>::tangent(n) +
-           sets.sign[s.node] * laws[s.pair]->threshold_derivative(p) * n;
+           sets.direction[s.node][0] * laws[s.pair]->threshold_derivative(p) * n;
   }
 
   template <int dim>
@@ -126,7 +126,7 @@ namespace contact_fem
   {
     this->set_pair_scaling(interface, 1.);
     std::fill(released_pressure.begin(), released_pressure.end(), 0.);
-    std::fill(released_tangential.begin(), released_tangential.end(), 0.);
+    std::fill(released_tangential.begin(), released_tangential.end(), TangentialVector<dim>());
     auto &pressure = this->pressure;
     auto &active   = this->active;
     for (const auto &s : interface.slave_nodes)
@@ -139,11 +139,11 @@ namespace contact_fem
             released_pressure[s.node]   = pressure[s.node];
             released_tangential[s.node] = tangential[s.node];
             pressure[s.node]            = 0.;
-            tangential[s.node]          = 0.;
-            sets.sign[s.node]           = 0;
+            tangential[s.node]          = TangentialVector<dim>();
+            sets.direction[s.node]      = TangentialVector<dim>();
             continue;
           }
-        sets.sign[s.node] =
+        sets.direction[s.node][0] =
           carries_friction(interface, s) ?
             stick_or_slip(s, pressure[s.node] - this->penalty[s.pair] * g,
                           slip_increment(interface, s, u)) :
@@ -152,7 +152,7 @@ namespace contact_fem
     this->deactivate_master_nodes(interface);
     for (unsigned int n = 0; n < interface.nodes.size(); ++n)
       if (!interface.nodes[n].slave)
-        sets.sign[n] = 0;
+        sets.direction[n] = TangentialVector<dim>();
     note_pressure_dependent_slip(interface);
   }
 
@@ -258,7 +258,7 @@ namespace contact_fem
         {
           if (!carries_friction(interface, s))
             continue;
-          if (sets.sign[s.node] == 0)
+          if (sets.direction[s.node][0] == 0)
             add_stick_constraint(interface, s, fixed_values, constraints);
           else
             add_slip_constraint(interface, s, fixed_values, constraints, false);
@@ -277,7 +277,7 @@ namespace contact_fem
     for (const auto &s : interface.slave_nodes)
       if (s.paired && this->active[s.node] && carries_friction(interface, s))
         {
-          if (sets.sign[s.node] == 0)
+          if (sets.direction[s.node][0] == 0)
             add_stick_constraint(interface, s, fixed_values, constraints);
           else
             add_slip_constraint(interface, s, fixed_values, constraints, true);
@@ -308,11 +308,11 @@ namespace contact_fem
     Vector<double>                       values;
     for (const auto &s : interface.slave_nodes)
       {
-        if (!s.paired || !this->active[s.node] || sets.sign[s.node] == 0 ||
+        if (!s.paired || !this->active[s.node] || sets.direction[s.node][0] == 0 ||
             !carries_friction(interface, s) || !owned.is_element(interface.nodes[s.node].dofs[0]))
           continue;
         const double p = this->pressure[s.node];
-        const double h = sets.sign[s.node] * (laws[s.pair]->threshold(p) -
+        const double h = sets.direction[s.node][0] * (laws[s.pair]->threshold(p) -
                                               laws[s.pair]->threshold_derivative(p) * p);
         if (h == 0.)
           continue;
@@ -347,7 +347,7 @@ namespace contact_fem
         if (!s.paired || !this->active[s.node])
           {
             this->pressure[s.node] = 0.;
-            tangential[s.node]     = 0.;
+            tangential[s.node] = TangentialVector<dim>();
             continue;
           }
         const auto &slave = interface.nodes[s.node];
@@ -358,7 +358,7 @@ namespace contact_fem
             const unsigned int c   = this->eliminated_component(interface, s);
             this->pressure[s.node] = -residual[interface.position(slave.dofs[c])] /
                                      (s.D * s.normal[c]);
-            tangential[s.node] = 0.;
+            tangential[s.node] = TangentialVector<dim>();
             continue;
           }
         Tensor<1, dim> lambda;
@@ -366,7 +366,7 @@ namespace contact_fem
           lambda[d] = residual[interface.position(slave.dofs[d])] / s.D;
         const Tensor<1, dim> n = frame_normal(s);
         this->pressure[s.node] = -(lambda * n);
-        tangential[s.node]     = lambda * ContactFormulation<dim>::tangent(n);
+        tangential[s.node][0]  = lambda * ContactFormulation<dim>::tangent(n);
       }
   }
 
@@ -378,7 +378,7 @@ namespace contact_fem
     unsigned int changes    = 0;
     last_stick_slip_changes = 0;
     std::fill(released_pressure.begin(), released_pressure.end(), 0.);
-    std::fill(released_tangential.begin(), released_tangential.end(), 0.);
+    std::fill(released_tangential.begin(), released_tangential.end(), TangentialVector<dim>());
     auto &pressure = this->pressure;
     auto &active   = this->active;
     for (const auto &s : interface.slave_nodes)
@@ -394,8 +394,8 @@ namespace contact_fem
             released_pressure[s.node]   = pressure[s.node];
             released_tangential[s.node] = tangential[s.node];
             pressure[s.node]            = 0.;
-            tangential[s.node]          = 0.;
-            sets.sign[s.node]           = 0;
+            tangential[s.node]          = TangentialVector<dim>();
+            sets.direction[s.node]      = TangentialVector<dim>();
             active[s.node]              = false;
             continue;
           }
@@ -403,12 +403,12 @@ namespace contact_fem
                            stick_or_slip(s, augmented, slip_increment(interface, s, u)) :
                            0;
         // Under a law without friction the sign changes nothing.
-        if (active[s.node] && sign != sets.sign[s.node] && !frictionless_law(s))
+        if (active[s.node] && sign != sets.direction[s.node][0] && !frictionless_law(s))
           {
             ++changes;
             ++last_stick_slip_changes;
           }
-        sets.sign[s.node] = sign;
+        sets.direction[s.node][0] = sign;
         active[s.node]    = true;
       }
     note_pressure_dependent_slip(interface);
@@ -431,7 +431,7 @@ namespace contact_fem
         if (!this->active[s.node])
           {
             const double rn = released_pressure[s.node] / k;
-            const double rt = released_tangential[s.node] / k;
+            const double rt = released_tangential[s.node][0] / k;
             sum += rn * rn + rt * rt;
             continue;
           }
@@ -440,10 +440,10 @@ namespace contact_fem
         if (carries_friction(interface, s))
           {
             const double p  = this->pressure[s.node];
-            const double rt = sets.sign[s.node] == 0 ?
+            const double rt = sets.direction[s.node][0] == 0 ?
                                 slip_increment(interface, s, u) :
-                                (tangential[s.node] -
-                                 sets.sign[s.node] * laws[s.pair]->threshold(p)) /
+                                (tangential[s.node][0] -
+                                 sets.direction[s.node][0] * laws[s.pair]->threshold(p)) /
                                   k;
             sum += rt * rt;
           }
@@ -486,10 +486,10 @@ namespace contact_fem
   AlmFrictional<dim>::accept_load_step(const ContactInterface<dim> &interface,
                                        const std::vector<double>   &u)
   {
-    std::fill(last_step_slip.begin(), last_step_slip.end(), 0.);
+    std::fill(last_step_slip.begin(), last_step_slip.end(), TangentialVector<dim>());
     for (const auto &s : interface.slave_nodes)
       if (s.paired)
-        last_step_slip[s.node] = slip_increment(interface, s, u);
+        last_step_slip[s.node][0] = slip_increment(interface, s, u);
     converged_displacement = u;
   }
 
@@ -515,10 +515,10 @@ namespace contact_fem
       if (s.paired && this->active[s.node] && carries_friction(interface, s))
         {
           const double bound = laws[s.pair]->threshold(this->pressure[s.node]);
-          const double t     = tangential[s.node];
+          const double t     = tangential[s.node][0];
           largest_bound      = std::max(largest_bound, bound);
-          if (sets.sign[s.node] != 0)
-            off_bound = std::max(off_bound, std::abs(t - sets.sign[s.node] * bound));
+          if (sets.direction[s.node][0] != 0)
+            off_bound = std::max(off_bound, std::abs(t - sets.direction[s.node][0] * bound));
           else
             outside = std::max(outside, std::abs(t) - bound);
         }

@@ -10,7 +10,7 @@ namespace contact_fem
   void
   add_friction_totals(const ContactInterface<dim>   &interface,
                       const ContactFormulation<dim> &contact,
-                      const std::vector<double>     &accepted_slip,
+                      const std::vector<TangentialVector<dim>> &accepted_slip,
                       Json                          &result)
   {
     // Totals over the active slave nodes of the force the slave exerts on
@@ -27,7 +27,7 @@ namespace contact_fem
           length += s.D;
           force -= s.D * lambda;
           t_max    = std::max(t_max, std::abs(t));
-          slip_max = std::max(slip_max, std::abs(accepted_slip[s.node]));
+          slip_max = std::max(slip_max, magnitude<dim>(accepted_slip[s.node]));
         }
     Json components = Json::array();
     for (unsigned int d = 0; d < dim; ++d)
@@ -77,18 +77,26 @@ namespace contact_fem
   std::vector<typename ContactFormulation<dim>::NodalField>
   friction_nodal_fields(const ContactInterface<dim>   &interface,
                         const ContactFormulation<dim> &contact,
-                        const std::vector<double>     &accepted_slip)
+                        const std::vector<TangentialVector<dim>> &accepted_slip)
   {
     const unsigned int  n_nodes = interface.nodes.size();
     std::vector<double> tangential(n_nodes, 0.), stick(n_nodes, 0.);
     for (const auto &s : interface.slave_nodes)
       if (s.paired)
         tangential[s.node] = frame_tangential_traction(contact, s);
+    std::vector<typename ContactFormulation<dim>::NodalField> fields = {
+      {"tangential_traction", tangential}};
+    for (unsigned int c = 0; c < dim - 1; ++c)
+      {
+        fields.push_back({dim == 2 ? "slip_increment" : "slip_increment_" + std::to_string(c + 1),
+                          std::vector<double>(n_nodes)});
+        for (unsigned int n = 0; n < n_nodes; ++n)
+          fields.back().values[n] = accepted_slip[n][c];
+      }
     for (unsigned int n = 0; n < n_nodes; ++n)
       stick[n] = contact.held_tangentially(n) ? 1. : 0.;
-    return {{"tangential_traction", tangential},
-            {"slip_increment", accepted_slip},
-            {"stick", stick}};
+    fields.push_back({"stick", stick});
+    return fields;
   }
 
   std::string
@@ -112,19 +120,19 @@ namespace contact_fem
   template void
   add_friction_totals(const ContactInterface<2> &,
                       const ContactFormulation<2> &,
-                      const std::vector<double> &,
+                      const std::vector<TangentialVector<2>> &,
                       Json &);
   template void
   add_friction_totals(const ContactInterface<3> &,
                       const ContactFormulation<3> &,
-                      const std::vector<double> &,
+                      const std::vector<TangentialVector<3>> &,
                       Json &);
   template std::vector<ContactFormulation<2>::NodalField>
   friction_nodal_fields(const ContactInterface<2> &,
                         const ContactFormulation<2> &,
-                        const std::vector<double> &);
+                        const std::vector<TangentialVector<2>> &);
   template std::vector<ContactFormulation<3>::NodalField>
   friction_nodal_fields(const ContactInterface<3> &,
                         const ContactFormulation<3> &,
-                        const std::vector<double> &);
+                        const std::vector<TangentialVector<3>> &);
 } // namespace contact_fem

@@ -97,10 +97,10 @@ namespace contact_fem
   {
     PenaltyFrictionless<dim>::initialize(interface);
     const unsigned int n = interface.nodes.size();
-    tangential.assign(n, 0.);
-    accepted_tangential.assign(n, 0.);
+    tangential.assign(n, TangentialVector<dim>());
+    accepted_tangential.assign(n, TangentialVector<dim>());
     sets.initialize(interface);
-    last_step_slip.assign(n, 0.);
+    last_step_slip.assign(n, TangentialVector<dim>());
     converged_displacement.assign(interface.dofs().size(), 0.);
     last_stick_slip_changes = 0;
   }
@@ -134,7 +134,7 @@ namespace contact_fem
   int
   PenaltyFrictional<dim>::stick_or_slip(const SlaveNode &s, const double p, const double xi) const
   {
-    const double trial = accepted_tangential[s.node] - tangent_penalty[s.pair] * xi;
+    const double trial = accepted_tangential[s.node][0] - tangent_penalty[s.pair] * xi;
     const int    sign  = trial >= 0. ? 1 : -1;
     if (pure_slip || frictionless_law(s))
       return sign;
@@ -150,7 +150,7 @@ namespace contact_fem
                                               const double     xi) const
   {
     if (sign == 0)
-      return accepted_tangential[s.node] - tangent_penalty[s.pair] * xi;
+      return accepted_tangential[s.node][0] - tangent_penalty[s.pair] * xi;
     return sign * laws[s.pair]->threshold(std::max(p, 0.));
   }
 
@@ -167,8 +167,8 @@ namespace contact_fem
     for (unsigned int n = 0; n < interface.nodes.size(); ++n)
       if (!this->active[n])
         {
-          tangential[n] = 0.;
-          sets.sign[n]  = 0;
+          tangential[n]     = TangentialVector<dim>();
+          sets.direction[n] = TangentialVector<dim>();
         }
     for (const auto &s : interface.slave_nodes)
       {
@@ -176,8 +176,8 @@ namespace contact_fem
           continue;
         if (!carries_friction(interface, s))
           {
-            tangential[s.node] = 0.;
-            sets.sign[s.node]  = 0;
+            tangential[s.node]     = TangentialVector<dim>();
+            sets.direction[s.node] = TangentialVector<dim>();
             continue;
           }
         // The elastic predictor: every node starts the step sticking (a node
@@ -185,7 +185,7 @@ namespace contact_fem
         // would decide); the first solve tells which slip, and which way.
         // A law without friction, or Pure slip, slips at once.
         const double g = interface.gap(s, u);
-        sets.sign[s.node] =
+        sets.direction[s.node][0] =
           pure_slip || frictionless_law(s) ?
             stick_or_slip(s, this->penalty[s.pair] * (-g), slip_increment(interface, s, u)) :
             0;
@@ -240,7 +240,7 @@ namespace contact_fem
         if (!this->active[s.node] || !carries_friction(interface, s) ||
             !owned.is_element(interface.nodes[s.node].dofs[0]))
           continue;
-        const int sign = sets.sign[s.node];
+        const int sign = sets.direction[s.node][0];
         if (sign != 0 && frictionless_law(s))
           continue; // T = 0: the frictionless system
         this->gap_gradient(interface, s, dofs, g_gradient);
@@ -253,7 +253,7 @@ namespace contact_fem
             const double eps_t = tangent_penalty[s.pair];
             // grad xi . u_n: the slip reference.
             const double xi_reference = -slip_increment(interface, s, zero);
-            const double load         = s.D * (accepted_tangential[s.node] + eps_t * xi_reference);
+            const double load         = s.D * (accepted_tangential[s.node][0] + eps_t * xi_reference);
             for (unsigned int a = 0; a < n; ++a)
               {
                 for (unsigned int b = 0; b < n; ++b)
@@ -296,8 +296,8 @@ namespace contact_fem
           continue;
         if (!this->active[s.node] || !carries_friction(interface, s))
           {
-            tangential[s.node] = 0.;
-            sets.sign[s.node]  = 0;
+            tangential[s.node]     = TangentialVector<dim>();
+            sets.direction[s.node] = TangentialVector<dim>();
             continue;
           }
         const double p    = this->pressure[s.node];
@@ -306,17 +306,17 @@ namespace contact_fem
         // A slipping node reverses through stick: its slip solve overshoots
         // (with eps_t ~ 1e4 E/h a node that should stick swings from one
         // bound to the other, period 2, if the sign may flip directly).
-        if (was_active[s.node] && sets.sign[s.node] != 0 && sign == -sets.sign[s.node] &&
+        if (was_active[s.node] && sets.direction[s.node][0] != 0 && sign == -sets.direction[s.node][0] &&
             !pure_slip && !frictionless_law(s))
           sign = 0;
         // Under a law without friction the sign changes nothing.
-        if (was_active[s.node] && sign != sets.sign[s.node] && !frictionless_law(s))
+        if (was_active[s.node] && sign != sets.direction[s.node][0] && !frictionless_law(s))
           {
             ++changes;
             ++last_stick_slip_changes;
           }
-        sets.sign[s.node]  = sign;
-        tangential[s.node] = tangential_traction(s, sign, p, xi);
+        sets.direction[s.node][0] = sign;
+        tangential[s.node][0] = tangential_traction(s, sign, p, xi);
       }
     return changes;
   }
@@ -331,7 +331,7 @@ namespace contact_fem
     Residuals result = PenaltyFrictionless<dim>::residuals(interface, u);
     for (const auto &s : interface.slave_nodes)
       {
-        const double t = tangential[s.node];
+        const double t = tangential[s.node][0];
         if (!s.paired || !this->active[s.node] || t == 0.)
           continue;
         const Tensor<1, dim> tau = ContactFormulation<dim>::tangent(s.normal);
@@ -372,10 +372,10 @@ namespace contact_fem
   PenaltyFrictional<dim>::accept_load_step(const ContactInterface<dim> &interface,
                                            const std::vector<double>   &u)
   {
-    last_step_slip.assign(interface.nodes.size(), 0.);
+    last_step_slip.assign(interface.nodes.size(), TangentialVector<dim>());
     for (const auto &s : interface.slave_nodes)
       if (s.paired)
-        last_step_slip[s.node] = slip_increment(interface, s, u);
+        last_step_slip[s.node][0] = slip_increment(interface, s, u);
     converged_displacement = u;
     accepted_tangential    = tangential;
   }
@@ -471,13 +471,13 @@ namespace contact_fem
     for (const auto &s : interface.slave_nodes)
       if (s.paired && this->active[s.node])
         {
-          tangential_force += s.D * tangential[s.node];
+          tangential_force += s.D * tangential[s.node][0];
           normal_force += s.D * this->pressure[s.node];
-          if (sets.sign[s.node] == 0 || !carries_friction(interface, s))
+          if (sets.direction[s.node][0] == 0 || !carries_friction(interface, s))
             all_slip = false;
           else if (common_sign == 0)
-            common_sign = sets.sign[s.node];
-          else if (sets.sign[s.node] != common_sign)
+            common_sign = sets.direction[s.node][0];
+          else if (sets.direction[s.node][0] != common_sign)
             one_way = false;
         }
     // A stick node moves |t| / eps_t elastically: the tangential analogue
@@ -488,7 +488,7 @@ namespace contact_fem
     double elastic_slip = 0.;
     for (const auto &s : interface.slave_nodes)
       if (sets.sticks(s.node, this->active) && carries_friction(interface, s))
-        elastic_slip = std::max(elastic_slip, std::abs(tangential[s.node]) /
+        elastic_slip = std::max(elastic_slip, std::abs(tangential[s.node][0]) /
                                                 tangent_penalty[s.pair] / s.size);
     constexpr double allowed_elastic_slip = 1e-2;
     out << "    largest elastic slip / h:     " << value_or_ok(elastic_slip, 1e-6)

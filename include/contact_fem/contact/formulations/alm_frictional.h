@@ -103,7 +103,7 @@ namespace contact_fem
     traction(const SlaveNode &s) const override
     {
       const Tensor<1, dim> n = frame_normal(s);
-      return -this->pressure[s.node] * n + tangential[s.node] * ContactFormulation<dim>::tangent(n);
+      return -this->pressure[s.node] * n + tangential[s.node][0] * ContactFormulation<dim>::tangent(n);
     }
 
     /// The shared interface normal where the law has friction; the slave
@@ -241,25 +241,28 @@ namespace contact_fem
     std::vector<std::shared_ptr<const FrictionalLaw>> laws; ///< per pair
     bool pure_slip = false;
 
-    std::vector<double> tangential; ///< t_j per interface node
-    StickSlipSets       sets;
+    /// t_j per interface node, in the tangent frame of frame_normal().
+    std::vector<TangentialVector<dim>> tangential;
+    StickSlipSets<dim>       sets;
     /// Whether a slip node's bound depends on its pressure (Coulomb): only
     /// then do its test functions leave the trial space (symmetric()).
     bool                pressure_dependent_slip = false;
     /// Interface displacement of the last accepted load step.
     std::vector<double> converged_displacement;
     /// Slip of every interface node in the last accepted load step.
-    std::vector<double> last_step_slip;
+    std::vector<TangentialVector<dim>> last_step_slip;
     /// Multipliers of the nodes released in the last update.
-    std::vector<double> released_pressure, released_tangential;
+    std::vector<double>                released_pressure;
+    std::vector<TangentialVector<dim>> released_tangential;
     /// Stick/slip changes of the last update_active_set().
     unsigned int        last_stick_slip_changes = 0;
 
     struct FrictionState : public State
     {
       std::unique_ptr<State> normal;
-      std::vector<double>    tangential, converged_displacement, last_step_slip;
-      StickSlipSets          sets;
+      std::vector<TangentialVector<dim>> tangential, last_step_slip;
+      std::vector<double>                converged_displacement;
+      StickSlipSets<dim>          sets;
     };
   };
 } // namespace contact_fem

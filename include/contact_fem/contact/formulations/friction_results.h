@@ -26,7 +26,7 @@ namespace contact_fem
   void
   add_friction_totals(const ContactInterface<dim>   &interface,
                       const ContactFormulation<dim> &contact,
-                      const std::vector<double>     &accepted_slip,
+                      const std::vector<TangentialVector<dim>> &accepted_slip,
                       Json                          &result);
 
   /// Prints the stick/slip counts and the totals of add_friction_totals()
@@ -38,12 +38,12 @@ namespace contact_fem
                         std::ostream      &out);
 
   /// The nodal fields tangential_traction, slip_increment (of the last
-  /// accepted step) and stick.
+  /// accepted step; per component, numbered from 1, in 3D) and stick.
   template <int dim>
   std::vector<typename ContactFormulation<dim>::NodalField>
   friction_nodal_fields(const ContactInterface<dim>   &interface,
                         const ContactFormulation<dim> &contact,
-                        const std::vector<double>     &accepted_slip);
+                        const std::vector<TangentialVector<dim>> &accepted_slip);
 
   /// The stick / slip / stick-slip-change cells of the Newton table.
   std::string

@@ -109,7 +109,7 @@ namespace contact_fem
     traction(const SlaveNode &s) const override
     {
       return -this->pressure[s.node] * s.normal +
-             tangential[s.node] * ContactFormulation<dim>::tangent(s.normal);
+             tangential[s.node][0] * ContactFormulation<dim>::tangent(s.normal);
     }
 
     bool
@@ -227,23 +227,25 @@ namespace contact_fem
     double tangential_penalty = 0.; ///< given; 0: the pair's normal penalty
     std::vector<double> tangent_penalty; ///< eps_t per pair
 
-    std::vector<double> tangential; ///< t_j per interface node
-    StickSlipSets       sets;
+    /// t_j per interface node, in the tangent frame of the slave normal.
+    std::vector<TangentialVector<dim>> tangential;
+    StickSlipSets<dim>       sets;
     /// Slip of every interface node in the last accepted load step.
-    std::vector<double> last_step_slip;
+    std::vector<TangentialVector<dim>> last_step_slip;
     /// Interface displacement and tangential tractions of the last accepted
     /// load step (the history).
     std::vector<double> converged_displacement;
-    std::vector<double> accepted_tangential;
+    std::vector<TangentialVector<dim>> accepted_tangential;
     /// Stick/slip changes of the last update_active_set().
     unsigned int        last_stick_slip_changes = 0;
 
     struct FrictionState : public State
     {
       std::unique_ptr<State> normal;
-      std::vector<double>    tangential, converged_displacement, accepted_tangential;
-      StickSlipSets          sets;
-      std::vector<double>    last_step_slip;
+      std::vector<TangentialVector<dim>> tangential, accepted_tangential;
+      std::vector<double>                converged_displacement;
+      StickSlipSets<dim>          sets;
+      std::vector<TangentialVector<dim>> last_step_slip;
     };
   };
 } // namespace contact_fem
