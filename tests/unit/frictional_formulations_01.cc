@@ -1,6 +1,6 @@
 // The frictional formulations through the ContactFormulation interface, on
-// the hand-made interface of contact_formulations_01: two unit squares, the
-// upper one (slave, boundary 3) 0.1 above the lower one (master, 4),
+// a hand-made interface: two unit squares, the upper one (slave, its base
+// boundary 4) 0.1 above the lower one (master, its top 3),
 // matching faces: two slave nodes with D_j = 1/2, M_jl = delta_jl / 2,
 // normal (0, -1), tangent (1, 0), gap g_j = 0.1 + u_sy - u_my, weighted slip
 // xi_j = u_sx - u_mx since the last accepted step. Coulomb mu = 0.5, k = 10.
@@ -31,6 +31,7 @@
 #include <contact_fem/contact/formulations/contact_formulation.h>
 #include <contact_fem/material/material.h>
 
+#include "unit_test_blocks.h"
 #include "unit_test_materials.h"
 
 #include <iomanip>
@@ -50,21 +51,7 @@ namespace
     GridGenerator::hyper_rectangle(lower, Point<2>(0., 0.), Point<2>(1., 1.));
     GridGenerator::hyper_rectangle(upper, Point<2>(0., 1. + gap0), Point<2>(1., 2. + gap0));
     GridGenerator::merge_triangulations(lower, upper, tria);
-    for (const auto &cell : tria.active_cell_iterators())
-      {
-        const bool is_upper = cell->center()[1] > 1.;
-        cell->set_material_id(is_upper ? 1 : 2);
-        for (const auto f : cell->face_indices())
-          {
-            const double y = cell->face(f)->center()[1];
-            if (is_upper && std::abs(y - (1. + gap0)) < 1e-12)
-              cell->face(f)->set_boundary_id(3);
-            else if (!is_upper && std::abs(y - 1.) < 1e-12)
-              cell->face(f)->set_boundary_id(4);
-            else
-              cell->face(f)->set_boundary_id(0);
-          }
-      }
+    label_stacked_blocks(tria, gap0);
   }
 
   /// The interface displacement: every slave node moved by (@p dx, @p dy),
@@ -88,7 +75,7 @@ namespace
     ContactParameters::declare_parameters(prm);
     ContactFormulation<2>::declare_parameters(prm);
     prm.enter_subsection("Contact");
-    prm.set("Pairs", "3: 4");
+    prm.set("Pairs", "4: 3");
     prm.set("Formulation", name);
     prm.set("Penalty", penalty);
     prm.set("Scale factor", "10");
@@ -203,7 +190,7 @@ main(int argc, char **argv)
   AffineConstraints<double> no_dirichlet;
   no_dirichlet.close();
   ContactInterface<2> interface;
-  interface.initialize(mapping, dof_handler, {ContactPair{3, 4}}, no_dirichlet, no_dirichlet,
+  interface.initialize(mapping, dof_handler, {ContactPair{4, 3}}, no_dirichlet, no_dirichlet,
                        materials, MPI_COMM_WORLD);
   interface.update(std::vector<double>(interface.dofs().size(), 0.), 3.);
   for (const auto &s : interface.slave_nodes)

@@ -11,10 +11,8 @@ namespace contact_fem
 {
   template <int dim>
   AlmFrictional<dim>::AlmFrictional(ParameterHandler &prm, const FrictionParameters &friction)
-    : FrictionlessFormulation<dim>(
-        FrictionlessFormulation<dim>::Parameters::parse_for_exact_gap(prm, "alm frictional"))
-    , laws(friction.laws)
-    , pure_slip(friction.pure_slip)
+    : Base(friction,
+           FrictionlessFormulation<dim>::Parameters::parse_for_exact_gap(prm, "alm frictional"))
   {
     AssertThrow(dim == 2,
                 ExcMessage("Contact/Formulation = alm frictional: friction is implemented in "
@@ -30,15 +28,10 @@ namespace contact_fem
   void
   AlmFrictional<dim>::initialize(const ContactInterface<dim> &interface)
   {
-    FrictionlessFormulation<dim>::initialize(interface);
+    Base::initialize(interface);
     const unsigned int n = interface.nodes.size();
-    tangential.assign(n, TangentialVector<dim>());
-    sets.initialize(interface);
     released_pressure.assign(n, 0.);
     released_tangential.assign(n, TangentialVector<dim>());
-    converged_displacement.assign(interface.dofs().size(), 0.);
-    last_step_slip.assign(n, TangentialVector<dim>());
-    last_stick_slip_changes = 0;
   }
 
   template <int dim>
@@ -461,27 +454,6 @@ namespace contact_fem
   }
 
   template <int dim>
-  unsigned int
-  AlmFrictional<dim>::n_stick() const
-  {
-    return sets.n_stick(this->active);
-  }
-
-  template <int dim>
-  unsigned int
-  AlmFrictional<dim>::n_slip() const
-  {
-    return sets.n_slip(this->active);
-  }
-
-  template <int dim>
-  std::vector<int>
-  AlmFrictional<dim>::contact_sets() const
-  {
-    return sets.codes(this->active);
-  }
-
-  template <int dim>
   void
   AlmFrictional<dim>::accept_load_step(const ContactInterface<dim> &interface,
                                        const std::vector<double>   &u)
@@ -564,34 +536,10 @@ namespace contact_fem
   AlmFrictional<dim>::add_results(const ContactInterface<dim> &interface, Json &contact) const
   {
     FrictionlessFormulation<dim>::add_results(interface, contact);
-    Json law_names = Json::array();
-    for (const auto &law : laws)
-      law_names.push(law->description());
-    contact.set("friction", law_names)
+    contact.set("friction", this->law_names())
       .set("stick_nodes", n_stick())
       .set("slip_nodes", n_slip());
     add_friction_totals(interface, *this, last_step_slip, contact);
-  }
-
-  template <int dim>
-  std::string
-  AlmFrictional<dim>::iteration_header() const
-  {
-    return friction_iteration_header();
-  }
-
-  template <int dim>
-  std::string
-  AlmFrictional<dim>::iteration_cells(const unsigned int iteration) const
-  {
-    return friction_iteration_cells(iteration, n_stick(), n_slip(), last_stick_slip_changes);
-  }
-
-  template <int dim>
-  std::vector<typename ContactFormulation<dim>::NodalField>
-  AlmFrictional<dim>::nodal_fields(const ContactInterface<dim> &interface) const
-  {
-    return friction_nodal_fields(interface, *this, last_step_slip);
   }
 
   template class AlmFrictional<2>;

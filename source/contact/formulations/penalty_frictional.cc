@@ -73,9 +73,7 @@ namespace contact_fem
   template <int dim>
   PenaltyFrictional<dim>::PenaltyFrictional(ParameterHandler         &prm,
                                             const FrictionParameters &friction)
-    : PenaltyFrictionless<dim>(refuse_adaptive_penalty(prm))
-    , laws(friction.laws)
-    , pure_slip(friction.pure_slip)
+    : Base(friction, refuse_adaptive_penalty(prm))
   {
     AssertThrow(dim == 2,
                 ExcMessage("Contact/Formulation = penalty frictional: friction is implemented "
@@ -95,14 +93,8 @@ namespace contact_fem
   void
   PenaltyFrictional<dim>::initialize(const ContactInterface<dim> &interface)
   {
-    PenaltyFrictionless<dim>::initialize(interface);
-    const unsigned int n = interface.nodes.size();
-    tangential.assign(n, TangentialVector<dim>());
-    accepted_tangential.assign(n, TangentialVector<dim>());
-    sets.initialize(interface);
-    last_step_slip.assign(n, TangentialVector<dim>());
-    converged_displacement.assign(interface.dofs().size(), 0.);
-    last_stick_slip_changes = 0;
+    Base::initialize(interface);
+    accepted_tangential.assign(interface.nodes.size(), TangentialVector<dim>());
   }
 
   template <int dim>
@@ -347,27 +339,6 @@ namespace contact_fem
   }
 
   template <int dim>
-  unsigned int
-  PenaltyFrictional<dim>::n_stick() const
-  {
-    return sets.n_stick(this->active);
-  }
-
-  template <int dim>
-  unsigned int
-  PenaltyFrictional<dim>::n_slip() const
-  {
-    return sets.n_slip(this->active);
-  }
-
-  template <int dim>
-  std::vector<int>
-  PenaltyFrictional<dim>::contact_sets() const
-  {
-    return sets.codes(this->active);
-  }
-
-  template <int dim>
   void
   PenaltyFrictional<dim>::accept_load_step(const ContactInterface<dim> &interface,
                                            const std::vector<double>   &u)
@@ -413,35 +384,11 @@ namespace contact_fem
                                       Json                        &contact) const
   {
     PenaltyFrictionless<dim>::add_results(interface, contact);
-    Json law_names = Json::array();
-    for (const auto &law : laws)
-      law_names.push(law->description());
-    contact.set("friction", law_names)
+    contact.set("friction", this->law_names())
       .set("tangential_penalty", tangent_penalty.empty() ? 0. : tangent_penalty[0])
       .set("stick_nodes", n_stick())
       .set("slip_nodes", this->n_active() - n_stick());
     add_friction_totals(interface, *this, last_step_slip, contact);
-  }
-
-  template <int dim>
-  std::string
-  PenaltyFrictional<dim>::iteration_header() const
-  {
-    return friction_iteration_header();
-  }
-
-  template <int dim>
-  std::string
-  PenaltyFrictional<dim>::iteration_cells(const unsigned int iteration) const
-  {
-    return friction_iteration_cells(iteration, n_stick(), n_slip(), last_stick_slip_changes);
-  }
-
-  template <int dim>
-  std::vector<typename ContactFormulation<dim>::NodalField>
-  PenaltyFrictional<dim>::nodal_fields(const ContactInterface<dim> &interface) const
-  {
-    return friction_nodal_fields(interface, *this, last_step_slip);
   }
 
   template <int dim>

@@ -4,10 +4,8 @@
 #ifndef contact_fem_alm_frictional_h
 #define contact_fem_alm_frictional_h
 
+#include <contact_fem/contact/formulations/frictional_formulation.h>
 #include <contact_fem/contact/formulations/frictionless_formulation.h>
-#include <contact_fem/contact/formulations/friction_results.h>
-#include <contact_fem/contact/friction/frictional_law.h>
-#include <contact_fem/contact/friction/stick_slip_sets.h>
 
 namespace contact_fem
 {
@@ -47,8 +45,10 @@ namespace contact_fem
    * operators (small sliding): a load step is a physical increment.
    */
   template <int dim>
-  class AlmFrictional : public FrictionlessFormulation<dim>
+  class AlmFrictional : public FrictionalFormulation<dim, FrictionlessFormulation<dim>>
   {
+    using Base = FrictionalFormulation<dim, FrictionlessFormulation<dim>>;
+
   public:
     using typename FrictionlessFormulation<dim>::Residuals;
     using typename FrictionlessFormulation<dim>::State;
@@ -115,49 +115,6 @@ namespace contact_fem
       return sets.held[s.node] || frictionless_law(s) ? s.normal : s.interface_normal;
     }
 
-    bool
-    path_dependent() const override
-    {
-      return true;
-    }
-
-    bool
-    transmits_shear() const override
-    {
-      return true;
-    }
-
-    /// Whether node @p n is active and sticks.
-    bool
-    held_tangentially(const unsigned int n) const override
-    {
-      return sets.sticks(n, this->active);
-    }
-
-    std::string
-    iteration_header() const override;
-
-    /// Stick and slip counts and the stick/slip changes of the last
-    /// update_active_set() (part of the changes it returned).
-    std::string
-    iteration_cells(const unsigned int iteration) const override;
-
-    /// tangential_traction, slip_increment (of the last accepted step) and
-    /// stick.
-    std::vector<typename ContactFormulation<dim>::NodalField>
-    nodal_fields(const ContactInterface<dim> &interface) const override;
-
-    /// Number of active nodes that stick / slip (active nodes held
-    /// tangentially by a support neither stick nor slip).
-    unsigned int
-    n_stick() const;
-
-    unsigned int
-    n_slip() const;
-
-    std::vector<int>
-    contact_sets() const override;
-
     void
     accept_load_step(const ContactInterface<dim> &interface,
                      const std::vector<double>   &u) override;
@@ -214,13 +171,6 @@ namespace contact_fem
     int
     stick_or_slip(const SlaveNode &s, const double augmented_pressure, const double xi) const;
 
-    /// Whether the law of node @p s has no friction at all (mu = 0, bound 0).
-    bool
-    frictionless_law(const SlaveNode &s) const
-    {
-      return laws[s.pair]->frictionless();
-    }
-
     /// u_j = sum_l M_jl / D_j u_l + offsets: the gap and the stick condition
     /// of node @p s, both components.
     void
@@ -238,31 +188,30 @@ namespace contact_fem
                         AffineConstraints<double>   &constraints,
                         const bool                   test) const;
 
-    std::vector<std::shared_ptr<const FrictionalLaw>> laws; ///< per pair
-    bool pure_slip = false;
+    using Base::converged_displacement;
+    using Base::frictionless_law;
+    using Base::last_step_slip;
+    using Base::last_stick_slip_changes;
+    using Base::laws;
+    using Base::n_slip;
+    using Base::n_stick;
+    using Base::pure_slip;
+    using Base::sets;
+    using Base::tangential;
 
-    /// t_j per interface node, in the tangent frame of frame_normal().
-    std::vector<TangentialVector<dim>> tangential;
-    StickSlipSets<dim>       sets;
     /// Whether a slip node's bound depends on its pressure (Coulomb): only
     /// then do its test functions leave the trial space (symmetric()).
-    bool                pressure_dependent_slip = false;
-    /// Interface displacement of the last accepted load step.
-    std::vector<double> converged_displacement;
-    /// Slip of every interface node in the last accepted load step.
-    std::vector<TangentialVector<dim>> last_step_slip;
+    bool pressure_dependent_slip = false;
     /// Multipliers of the nodes released in the last update.
     std::vector<double>                released_pressure;
     std::vector<TangentialVector<dim>> released_tangential;
-    /// Stick/slip changes of the last update_active_set().
-    unsigned int        last_stick_slip_changes = 0;
 
     struct FrictionState : public State
     {
-      std::unique_ptr<State> normal;
+      std::unique_ptr<State>             normal;
       std::vector<TangentialVector<dim>> tangential, last_step_slip;
       std::vector<double>                converged_displacement;
-      StickSlipSets<dim>          sets;
+      StickSlipSets<dim>                 sets;
     };
   };
 } // namespace contact_fem

@@ -4,10 +4,8 @@
 #ifndef contact_fem_penalty_frictional_h
 #define contact_fem_penalty_frictional_h
 
-#include <contact_fem/contact/formulations/friction_results.h>
+#include <contact_fem/contact/formulations/frictional_formulation.h>
 #include <contact_fem/contact/formulations/penalty_frictionless.h>
-#include <contact_fem/contact/friction/frictional_law.h>
-#include <contact_fem/contact/friction/stick_slip_sets.h>
 
 namespace contact_fem
 {
@@ -54,8 +52,10 @@ namespace contact_fem
    * are refused (Contact/Adaptive penalty).
    */
   template <int dim>
-  class PenaltyFrictional : public PenaltyFrictionless<dim>
+  class PenaltyFrictional : public FrictionalFormulation<dim, PenaltyFrictionless<dim>>
   {
+    using Base = FrictionalFormulation<dim, PenaltyFrictionless<dim>>;
+
   public:
     using typename PenaltyFrictionless<dim>::Residuals;
     using State     = typename ContactFormulation<dim>::State;
@@ -112,50 +112,6 @@ namespace contact_fem
              tangential[s.node][0] * ContactFormulation<dim>::tangent(s.normal);
     }
 
-    bool
-    path_dependent() const override
-    {
-      return true;
-    }
-
-    bool
-    transmits_shear() const override
-    {
-      return true;
-    }
-
-    /// Whether node @p n is active and sticks.
-    bool
-    held_tangentially(const unsigned int n) const override
-    {
-      return sets.sticks(n, this->active);
-    }
-
-    std::string
-    iteration_header() const override;
-
-    /// Stick and slip counts and the stick/slip changes of the last
-    /// update_active_set() (part of the changes it returned).
-    std::string
-    iteration_cells(const unsigned int iteration) const override;
-
-    /// tangential_traction, slip_increment (of the last accepted step) and
-    /// stick.
-    std::vector<typename ContactFormulation<dim>::NodalField>
-    nodal_fields(const ContactInterface<dim> &interface) const override;
-
-    /// Number of active nodes that stick / slip (active nodes held
-    /// tangentially by a support neither stick nor slip).
-    unsigned int
-    n_stick() const;
-
-    unsigned int
-    n_slip() const;
-
-    /// 0 inactive, 1 stick, 2 / 3 slip with sign + / -.
-    std::vector<int>
-    contact_sets() const override;
-
     /// The slip reference (interface displacement) and the tangential
     /// tractions of the accepted step become the history.
     void
@@ -195,13 +151,6 @@ namespace contact_fem
                    const SlaveNode             &s,
                    const std::vector<double>   &u) const;
 
-    /// Whether the law of node @p s has no friction at all (mu = 0, bound 0).
-    bool
-    frictionless_law(const SlaveNode &s) const
-    {
-      return laws[s.pair]->frictionless();
-    }
-
     /// The return mapping of active node @p s at pressure @p p and slip
     /// increment @p xi: 0 = stick, +1 / -1 = slip with that sign of the
     /// trial traction (a frictionless law always "slips", with T = 0).
@@ -222,22 +171,21 @@ namespace contact_fem
                   const SlaveNode             &s,
                   std::vector<double>         &gradient) const;
 
-    std::vector<std::shared_ptr<const FrictionalLaw>> laws; ///< per pair
-    bool   pure_slip          = false;
-    double tangential_penalty = 0.; ///< given; 0: the pair's normal penalty
-    std::vector<double> tangent_penalty; ///< eps_t per pair
+    using Base::converged_displacement;
+    using Base::frictionless_law;
+    using Base::last_step_slip;
+    using Base::last_stick_slip_changes;
+    using Base::laws;
+    using Base::n_slip;
+    using Base::n_stick;
+    using Base::pure_slip;
+    using Base::sets;
+    using Base::tangential;
 
-    /// t_j per interface node, in the tangent frame of the slave normal.
-    std::vector<TangentialVector<dim>> tangential;
-    StickSlipSets<dim>       sets;
-    /// Slip of every interface node in the last accepted load step.
-    std::vector<TangentialVector<dim>> last_step_slip;
-    /// Interface displacement and tangential tractions of the last accepted
-    /// load step (the history).
-    std::vector<double> converged_displacement;
+    double              tangential_penalty = 0.; ///< given; 0: the pair's normal penalty
+    std::vector<double> tangent_penalty;         ///< eps_t per pair
+    /// Tangential tractions of the last accepted load step (the history).
     std::vector<TangentialVector<dim>> accepted_tangential;
-    /// Stick/slip changes of the last update_active_set().
-    unsigned int        last_stick_slip_changes = 0;
 
     struct FrictionState : public State
     {
