@@ -12,30 +12,6 @@ namespace contact_fem
 {
   namespace
   {
-    /// 'auto' (0) or a finite number > 0, else an error naming @p key.
-    double
-    parse_auto_or_positive(const std::string &text, const std::string &key)
-    {
-      const std::string trimmed = Utilities::trim(text);
-      if (trimmed == "auto")
-        return 0.;
-      double value = -1.;
-      try
-        {
-          std::size_t pos = 0;
-          value           = std::stod(trimmed, &pos);
-          if (pos != trimmed.size())
-            value = -1.;
-        }
-      catch (...)
-        {
-          value = -1.;
-        }
-      AssertThrow(value > 0. && std::isfinite(value),
-                  ExcMessage(key + ": got '" + text + "'; expected 'auto' or a number > 0."));
-      return value;
-    }
-
     /// Contact/Adaptive penalty must be off: the adapted normal penalty
     /// would enter the slip bound and the tangential penalty node by node.
     ParameterHandler &
