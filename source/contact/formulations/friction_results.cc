@@ -21,7 +21,7 @@ namespace contact_fem
       if (s.paired && contact.is_active(s.node))
         {
           const Tensor<1, dim> lambda = contact.traction(s);
-          const double         t = lambda * ContactFormulation<dim>::tangent(contact.frame_normal(s));
+          const double         t      = frame_tangential_traction(contact, s);
           normal += s.D * contact.normal_pressure(s.node);
           tangential += s.D * t;
           length += s.D;

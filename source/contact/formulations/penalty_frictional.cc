@@ -221,7 +221,8 @@ namespace contact_fem
             const double eps_t = tangent_penalty[s.pair];
             // grad xi . u_n: the slip reference.
             const double xi_reference = -slip_increment(interface, s, zero);
-            const double load         = s.D * (accepted_tangential[s.node][0] + eps_t * xi_reference);
+            const double load =
+              s.D * (accepted_tangential[s.node][0] + eps_t * xi_reference);
             for (unsigned int a = 0; a < n; ++a)
               {
                 for (unsigned int b = 0; b < n; ++b)
@@ -274,8 +275,8 @@ namespace contact_fem
         // A slipping node reverses through stick: its slip solve overshoots
         // (with eps_t ~ 1e4 E/h a node that should stick swings from one
         // bound to the other, period 2, if the sign may flip directly).
-        if (was_active[s.node] && sets.direction[s.node][0] != 0 && sign == -sets.direction[s.node][0] &&
-            !pure_slip && !frictionless_law(s))
+        if (was_active[s.node] && sets.direction[s.node][0] != 0 &&
+            sign == -sets.direction[s.node][0] && !pure_slip && !frictionless_law(s))
           sign = 0;
         // Under a law without friction the sign changes nothing.
         if (was_active[s.node] && sign != sets.direction[s.node][0] && !frictionless_law(s))

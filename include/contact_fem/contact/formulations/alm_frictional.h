@@ -103,7 +103,8 @@ namespace contact_fem
     traction(const SlaveNode &s) const override
     {
       const Tensor<1, dim> n = frame_normal(s);
-      return -this->pressure[s.node] * n + tangential[s.node][0] * ContactFormulation<dim>::tangent(n);
+      return -this->pressure[s.node] * n +
+             tangential[s.node][0] * ContactFormulation<dim>::tangent(n);
     }
 
     /// The shared interface normal where the law has friction; the slave
