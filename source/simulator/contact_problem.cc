@@ -1062,10 +1062,11 @@ namespace contact_fem
     solving = true;
     Timer step_timer;
     prepare_load_step(time, step_size, first_step);
-    const bool frictional = contact && contact->frictional();
     pcout << "  Load step " << step + 1 << ", t = " << time << std::endl;
     if (output.print_newton_iterations)
-      pcout << NewtonMonitor::header(frictional, linear_solver->iterative()) << std::endl;
+      pcout << NewtonMonitor::header(contact ? contact->iteration_header() : "",
+                                     linear_solver->iterative())
+            << std::endl;
     linear_iterations_of_step.clear();
     const std::string where =
       "load step " + std::to_string(step + 1) + " (t = " + std::to_string(time) + ")";
@@ -1101,22 +1102,16 @@ namespace contact_fem
                               "extreme." + singular_system_hint());
         assessment =
           monitor.assess(iteration, r_u, r_lambda, update.changes, update.searched_again);
-        NewtonMonitor::FrictionCounts friction;
-        if (frictional)
-          {
-            friction.n_stick = contact->n_stick();
-            friction.n_slip  = contact->n_slip();
-            friction.changes = contact->stick_slip_changes();
-          }
         std::optional<unsigned int> linear_iterations;
         if (linear_solver->iterative())
           linear_iterations =
             iteration > 0 ? linear_iterations_of_step.back() : 0u;
         if (output.print_newton_iterations)
           pcout << monitor.row(iteration, update.changes, contact ? contact->n_active() : 0u,
-                               assessment, frictional ? &friction : nullptr, linear_iterations)
+                               assessment, contact ? contact->iteration_cells(iteration) : "",
+                               linear_iterations)
                 << std::endl;
-        if (frictional)
+        if (contact)
           check_for_cycling(at, iteration, update.changes, sets_of_iteration);
         if (assessment.converged && contact &&
             !accept_contact_state(step, time, step_size, searches_after_check))
@@ -1162,7 +1157,8 @@ namespace contact_fem
                                          std::vector<std::vector<int>> &sets_of_iteration) const
   {
     sets_of_iteration.push_back(contact->contact_sets());
-    if (changes == 0 || iteration < 2)
+    // An empty set: the formulation offers no detection.
+    if (changes == 0 || iteration < 2 || sets_of_iteration.back().empty())
       return;
     for (unsigned int k = 0; k + 1 < iteration; ++k)
       if (sets_of_iteration[k] == sets_of_iteration.back())
@@ -1739,8 +1735,9 @@ namespace contact_fem
     // the elasticity of the contact zone (compliant for a small zone, but
     // physical, not a discretisation artefact), and the factors of an
     // unsymmetric slip system are not those of the probe's test space.
-    if (contact->frictional() && contact->n_stick() > 0)
-      return;
+    for (unsigned int n = 0; n < interface->nodes.size(); ++n)
+      if (contact->held_tangentially(n))
+        return;
     TimerOutput::Scope t(*timer, "Check: held rotation");
     double                          softest = std::numeric_limits<double>::max();
     std::vector<types::material_id> bodies;
