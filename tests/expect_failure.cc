@@ -31,11 +31,16 @@
 //                                    contain a match (for runs whose other
 //                                    lines are round-off, e.g. after a
 //                                    singular solve)
+//   # driver: file-size-limit BYTES  no file of the run may grow beyond
+//                                    BYTES (RLIMIT_FSIZE, with SIGXFSZ
+//                                    ignored: writes fail as on a full
+//                                    disk)
 //   # driver: mask REGEX             replace each match in the printed text
 //                                    by '...' (a part decided by round-off,
 //                                    e.g. the step at which a run fails)
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -69,6 +74,7 @@ namespace
     std::vector<std::pair<std::string, std::string>> shown;
     std::string                                      keep, mask, signal_pattern;
     int                                              signal = 0;
+    long                                             file_size_limit = -1;
   };
 
   /// Lets the test directory be removed again by a non-root user.
@@ -110,6 +116,8 @@ namespace
             const auto eq = argument.find('=');
             c.environment.emplace_back(argument.substr(0, eq), argument.substr(eq + 1));
           }
+        else if (directive == "file-size-limit")
+          c.file_size_limit = std::stol(argument);
         else if (directive == "parameter" && argument == "directory")
           c.parameter_directory = true;
         else if (directive == "parameter")
@@ -186,6 +194,16 @@ namespace
         close(channel[1]);
         for (const auto &[name, value] : c.environment)
           setenv(name.c_str(), value.c_str(), 1);
+        if (c.file_size_limit >= 0)
+          {
+            // An ignored signal stays ignored across exec: the write fails
+            // with EFBIG instead of killing the run.
+            std::signal(SIGXFSZ, SIG_IGN);
+            const rlimit limit{static_cast<rlim_t>(c.file_size_limit),
+                               static_cast<rlim_t>(c.file_size_limit)};
+            if (setrlimit(RLIMIT_FSIZE, &limit) != 0)
+              std::exit(3);
+          }
         if (!c.read_only.empty() && geteuid() == 0)
           {
             // nobody: permissions apply again.
