@@ -419,5 +419,39 @@ namespace contact_fem
         }
       return result.overlap_length > 0.;
     }
+
+    double
+    closest_parameter(const LineFace &face, const Point<2> &x)
+    {
+      const Tensor<1, 2> chord = face.nodes[1] - face.nodes[0];
+      double xi = std::clamp(2. * ((x - face.nodes[0]) * chord) / chord.norm_square() - 1.,
+                             -1., 1.);
+      if (face.degree() == 1)
+        return xi;
+      for (unsigned int it = 0; it < 20; ++it)
+        {
+          const Tensor<1, 2> t    = face.tangent(xi);
+          const double       step = ((x - face.point(xi)) * t) / t.norm_square();
+          const double       next = std::clamp(xi + step, -1., 1.);
+          constexpr double   parameter_tolerance = 1e-12;
+          const bool         done = std::abs(next - xi) < parameter_tolerance;
+          xi                      = next;
+          if (done)
+            break;
+        }
+      return xi;
+    }
+
+    BoundingBox<2>
+    whole_face_box(const LineFace &face)
+    {
+      return interpolant_box(face.nodes, lebesgue_constant(face.degree()));
+    }
+
+    unsigned int
+    n_quadrature_points(const LineFace &slave, const LineFace &)
+    {
+      return slave.shape_degree() + 3;
+    }
   } // namespace Mortar
 } // namespace contact_fem
