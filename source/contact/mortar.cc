@@ -1,6 +1,7 @@
 #include <deal.II/base/quadrature_lib.h>
 
 #include <contact_fem/contact/mortar.h>
+#include <contact_fem/contact/mortar_kernel.h>
 #include <contact_fem/core/format.h>
 
 #include <algorithm>
@@ -377,7 +378,7 @@ namespace contact_fem
       result.xi_begin       = lower;
       result.xi_end         = upper;
 
-      std::vector<double> xq, wq;
+      std::vector<double> xq, wq, phi(ps + 1);
       gauss_rule(n_quadrature_points, xq, wq);
       for (unsigned int q = 0; q < xq.size(); ++q)
         {
@@ -406,16 +407,8 @@ namespace contact_fem
           const Tensor<1, 2> separation = master.point(eta) - x_slave;
 
           result.overlap_length += jxw;
-          for (unsigned int j = 0; j <= ps; ++j)
-            {
-              double phi_j = 0.;
-              for (unsigned int k = 0; k <= ps; ++k)
-                phi_j += dual_coefficients(j, k) * shape_value(ps, k, xi);
-              result.D[j] += phi_j * jxw;
-              result.weighted_gap[j] += phi_j * jxw * separation;
-              for (unsigned int l = 0; l <= pm; ++l)
-                result.M(j, l) += phi_j * shape_value(pm, l, eta) * jxw;
-            }
+          add_quadrature_point<2>(dual_coefficients, ps, pm, xi, eta, jxw, separation, phi,
+                                  result);
         }
       return result.overlap_length > 0.;
     }

@@ -3,6 +3,7 @@
 #include <contact_fem/contact/mortar.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/contact/mortar_3d.h>
+#include <contact_fem/contact/mortar_kernel.h>
 
 #include <algorithm>
 #include <cmath>
@@ -717,20 +718,7 @@ namespace contact_fem
         const Tensor<1, 3> separation = master.point(eta) - x_slave;
 
         result.overlap_area += jxw;
-        for (unsigned int j = 0; j < ns; ++j)
-          {
-            phi[j] = 0.;
-            for (unsigned int k = 0; k < ns; ++k)
-              phi[j] += dual_coefficients(j, k) * quad_shape_value(ps, k, xi);
-            result.D[j] += phi[j] * jxw;
-            result.weighted_gap[j] += phi[j] * jxw * separation;
-          }
-        for (unsigned int l = 0; l < nm; ++l)
-          {
-            const double Nl = quad_shape_value(pm, l, eta);
-            for (unsigned int j = 0; j < ns; ++j)
-              result.M(j, l) += phi[j] * Nl * jxw;
-          }
+        add_quadrature_point<3>(dual_coefficients, ps, pm, xi, eta, jxw, separation, phi, result);
       };
       for_each_point(slave, plane, result.polygons, n_quadrature_points, add_point);
       return result.overlap_area > 0.;

@@ -187,6 +187,40 @@ namespace contact_fem
         return dual_basis_coefficients(slave, slave_normals, overlaps);
       }
     };
+    /**
+     * Adds one quadrature point of the overlap of a slave face with a master
+     * face to the blocks of @p result (integrate_pair(), both dimensions):
+     * the slave point at parameter @p xi with weight @p jxw, projected to
+     * @p eta on the master, apart from it by @p separation. @p phi: room
+     * for the dual functions there (one per slave DoF node).
+     */
+    template <int dim>
+    void
+    add_quadrature_point(const FullMatrix<double>              &dual_coefficients,
+                         const unsigned int                     slave_degree,
+                         const unsigned int                     master_degree,
+                         const typename Kernel<dim>::Parameter &xi,
+                         const typename Kernel<dim>::Parameter &eta,
+                         const double                           jxw,
+                         const Tensor<1, dim>                  &separation,
+                         std::vector<double>                   &phi,
+                         typename Kernel<dim>::Operators       &result)
+    {
+      for (unsigned int j = 0; j < result.D.size(); ++j)
+        {
+          phi[j] = 0.;
+          for (unsigned int k = 0; k < result.D.size(); ++k)
+            phi[j] += dual_coefficients(j, k) * Kernel<dim>::shape_value(slave_degree, k, xi);
+          result.D[j] += phi[j] * jxw;
+          result.weighted_gap[j] += phi[j] * jxw * separation;
+        }
+      for (unsigned int l = 0; l < result.M.n(); ++l)
+        {
+          const double N_l = Kernel<dim>::shape_value(master_degree, l, eta);
+          for (unsigned int j = 0; j < result.D.size(); ++j)
+            result.M(j, l) += phi[j] * N_l * jxw;
+        }
+    }
   } // namespace Mortar
 } // namespace contact_fem
 
