@@ -90,8 +90,8 @@ namespace contact_fem
      * points, in face DoF order) turns its normal (rotated tangent in 2D,
      * t_xi x t_eta in 3D) out of the cell, negative otherwise. The support
      * points are in the face's own orientation (FEFaceValues permutes them
-     * like the face DoFs); in 3D their vertices are checked against those
-     * of @p face, in case that ever changes.
+     * like the face DoFs); their vertices are checked against those of
+     * @p face, in case that ever changes.
      */
     template <int dim, typename FaceIterator>
     double
@@ -99,33 +99,16 @@ namespace contact_fem
                         const FaceIterator      &face,
                         const unsigned int       nodes_per_face)
     {
-      if constexpr (dim == 2)
-        {
-          Mortar::LineFace line;
-          for (unsigned int k = 0; k < nodes_per_face; ++k)
-            {
-              Point<2> x;
-              for (unsigned int d = 0; d < 2; ++d)
-                x[d] = fe_face.quadrature_point(k)[d];
-              line.nodes.push_back(x);
-            }
-          const Tensor<1, 2> n_rot = Mortar::face_normal(line, -1., 1.);
-          double             dot   = 0.;
-          for (unsigned int d = 0; d < 2; ++d)
-            dot += n_rot[d] * fe_face.normal_vector(0)[d];
-          return dot;
-        }
-      else
-        {
-          Mortar::QuadFace quad;
-          for (unsigned int k = 0; k < nodes_per_face; ++k)
-            quad.nodes.push_back(fe_face.quadrature_point(k));
-          for (unsigned int v = 0; v < 4; ++v)
-            AssertThrow(quad.nodes[v].distance(face->vertex(v)) <= 1e-10 * face->diameter(),
-                        ExcMessage("Contact: the support points of a 3D contact face "
-                                   "are not in the order of its vertices."));
-          return Mortar::face_normal(quad, Point<2>(-1., -1.), 1.) * fe_face.normal_vector(0);
-        }
+      using Kernel = Mortar::Kernel<dim>;
+      typename Kernel::Face geometry;
+      for (unsigned int k = 0; k < nodes_per_face; ++k)
+        geometry.nodes.push_back(fe_face.quadrature_point(k));
+      for (unsigned int v = 0; v < Kernel::n_vertices; ++v)
+        AssertThrow(geometry.nodes[v].distance(face->vertex(v)) <= 1e-10 * face->diameter(),
+                    ExcMessage("Contact: the support points of a contact face are not in "
+                               "the order of its vertices."));
+      return Mortar::face_normal(geometry, Kernel::node_parameter(1, 0), 1.) *
+             fe_face.normal_vector(0);
     }
   } // namespace
 
@@ -173,13 +156,8 @@ namespace contact_fem
     if (n_geometry_points > 0)
       for (unsigned int k = first_geometry_node; k < nodes_per_face + n_geometry_points; ++k)
         {
-          Point<dim - 1> x;
-          if constexpr (dim == 2)
-            x[0] = 0.5 * (Mortar::node_parameter(2, k) + 1.);
-          else
-            for (unsigned int d = 0; d < 2; ++d)
-              x[d] = 0.5 * (Mortar::quad_node_parameter(2, k)[d] + 1.);
-          geometry_nodes.push_back(x);
+          geometry_nodes.push_back(
+            Mortar::Kernel<dim>::unit(Mortar::Kernel<dim>::node_parameter(2, k)));
         }
     std::unique_ptr<FEFaceValues<dim>> fe_face_geometry;
     if (n_geometry_points > 0)

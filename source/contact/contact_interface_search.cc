@@ -14,6 +14,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <tuple>
 
 namespace contact_fem
 {
@@ -240,6 +241,53 @@ namespace contact_fem
       }
   }
 
+  namespace
+  {
+    /**
+     * The point of the faces in @p tree (boxes that hold the whole faces
+     * @p geometries) closest to @p x: its face, parameter and distance.
+     * The nearest box bounds the distance from above; every face closer
+     * than that has its box within that distance. Ties (a shared edge or
+     * vertex) go to the lower face index, so the result does not depend on
+     * the query order.
+     */
+    template <int dim, class Tree>
+    std::tuple<unsigned int, typename Mortar::Kernel<dim>::Parameter, double>
+    closest_point(const Tree                                              &tree,
+                  const std::vector<typename Mortar::Kernel<dim>::Face> &geometries,
+                  const Point<dim>                                        &x)
+    {
+      std::vector<std::pair<BoundingBox<dim>, unsigned int>> nearest;
+      tree.query(boost::geometry::index::nearest(x, 1), std::back_inserter(nearest));
+      const auto  &first    = geometries[nearest[0].second];
+      const auto   first_xi = Mortar::closest_parameter(first, x);
+      const double bound    = x.distance(first.point(first_xi));
+      BoundingBox<dim> around(std::make_pair(x, x));
+      around.extend(bound * (1. + 1e-12) + 1e-300);
+      std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
+      tree.query(boost::geometry::index::intersects(around), std::back_inserter(hits));
+
+      // Seeded with the nearest box's face, so that a closest face is found
+      // even if round-off keeps it out of the hits.
+      double       best      = bound;
+      auto         best_xi   = first_xi;
+      unsigned int best_face = nearest[0].second;
+      for (const auto &hit : hits)
+        {
+          const unsigned int f  = hit.second;
+          const auto         xi = Mortar::closest_parameter(geometries[f], x);
+          const double       d  = x.distance(geometries[f].point(xi));
+          if (d < best - 1e-14 * bound || (d <= best && f < best_face))
+            {
+              best      = d;
+              best_xi   = xi;
+              best_face = f;
+            }
+        }
+      return {best_face, best_xi, best};
+    }
+  } // namespace
+
   template <int dim>
   std::vector<double>
   ContactInterface<dim>::surface_distances(const std::vector<SlaveNode> &points,
@@ -287,37 +335,7 @@ namespace contact_fem
             if (s.pair != p)
               continue;
             const Point<dim> x = nodes[s.node].reference + u[s.node];
-            // The nearest box bounds the distance from above; every face
-            // closer than that has its box within that distance.
-            std::vector<std::pair<BoundingBox<dim>, unsigned int>> nearest;
-            tree.query(boost::geometry::index::nearest(x, 1), std::back_inserter(nearest));
-            const auto  &first    = geometries[nearest[0].second];
-            const auto   first_xi = Mortar::closest_parameter(first, x);
-            const double bound    = x.distance(first.point(first_xi));
-            BoundingBox<dim> around(std::make_pair(x, x));
-            around.extend(bound * (1. + 1e-12) + 1e-300);
-            std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
-            tree.query(boost::geometry::index::intersects(around), std::back_inserter(hits));
-
-            // Seeded with the nearest box's face, so that a closest face is
-            // found even if round-off keeps it out of the hits.
-            double       best      = bound;
-            auto         best_xi   = first_xi;
-            unsigned int best_face = nearest[0].second;
-            for (const auto &hit : hits)
-              {
-                const unsigned int f  = hit.second;
-                const auto         xi = Mortar::closest_parameter(geometries[f], x);
-                const double       d  = x.distance(geometries[f].point(xi));
-                // Ties (a shared edge or vertex) go to the lower face index,
-                // so the result does not depend on the query order.
-                if (d < best - 1e-14 * bound || (d <= best && f < best_face))
-                  {
-                    best      = d;
-                    best_xi   = xi;
-                    best_face = f;
-                  }
-              }
+            const auto [best_face, best_xi, best] = closest_point<dim>(tree, geometries, x);
             const FaceGeometry  &face = geometries[best_face];
             const Tensor<1, dim> r    = x - face.point(best_xi);
             Tensor<1, dim>       normal;

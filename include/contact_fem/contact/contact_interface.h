@@ -286,7 +286,8 @@ namespace contact_fem
     /// The slave and master faces (indices in faces) the last search found
     /// a mortar segment between, as (slave face, master face).
     std::vector<std::pair<unsigned int, unsigned int>> coupled_faces;
-    /// Length of every face at the configuration of the last search.
+    /// Length of every face (in 3D the side of a square of its area) at
+    /// the configuration of the last search.
     std::vector<double> face_lengths;
     unsigned int                degree = 1;          ///< of the elements
     unsigned int                geometry_degree = 1; ///< of the face geometry

@@ -53,6 +53,12 @@ namespace contact_fem
       {
         return 2. * unit[0] - 1.;
       }
+      /// The point of the unit domain of a parameter (parameter()'s inverse).
+      static Point<1>
+      unit(const Parameter xi)
+      {
+        return Point<1>(0.5 * (xi + 1.));
+      }
       static Parameter
       node_parameter(const unsigned int p, const unsigned int i)
       {
@@ -133,6 +139,11 @@ namespace contact_fem
       parameter(const Point<2> &unit)
       {
         return Point<2>(2. * unit[0] - 1., 2. * unit[1] - 1.);
+      }
+      static Point<2>
+      unit(const Parameter &xi)
+      {
+        return Point<2>(0.5 * (xi[0] + 1.), 0.5 * (xi[1] + 1.));
       }
       static Parameter
       node_parameter(const unsigned int p, const unsigned int i)
