@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/manifold_lib.h>
 
+#include <contact_fem/core/format.h>
 #include <contact_fem/geometry/boundary_manifolds.h>
 #include <contact_fem/geometry/mesh_file.h>
 #include <contact_fem/core/parameters.h>
@@ -26,16 +27,6 @@ namespace contact_fem
       std::ostringstream text;
       text << std::setprecision(digits) << (std::abs(value) < 1e-300 ? 0. : value);
       return text.str();
-    }
-
-    template <int dim>
-    std::string
-    coordinates(const Point<dim> &p)
-    {
-      std::string text = "(";
-      for (unsigned int d = 0; d < dim; ++d)
-        text += (d > 0 ? ", " : "") + number(p[d]);
-      return text + ")";
     }
 
     /// The forms of an entry in @p dim dimensions, for messages.
@@ -101,8 +92,12 @@ namespace contact_fem
         return " Its vertices do not lie on one " + m.kind + " (a flat boundary, or several "
                "arcs: give each its own boundary id).";
       std::string text = std::to_string(m.boundary_id) + ": " + m.kind + " ";
+      // In the user's coordinates (the mesh may be computed moved).
       for (unsigned int d = 0; d < dim; ++d)
-        text += number(std::abs(centre[d]) < 1e-12 * radius ? 0. : centre[d]) + ", ";
+        {
+          const double c = centre[d] + message_origin[d];
+          text += number(std::abs(c) < 1e-12 * radius ? 0. : c) + ", ";
+        }
       return " Its vertices lie on '" + text + number(radius) + "'.";
     }
   } // namespace
@@ -194,7 +189,7 @@ namespace contact_fem
             worst = &p;
         const double off = m.distance_from_surface(*worst);
         AssertThrow(std::abs(off) <= on_surface_tolerance * m.radius,
-                    ExcMessage(key + ": entry '" + m.entry + "': vertex " + coordinates(*worst) +
+                    ExcMessage(key + ": entry '" + m.entry + "': vertex " + coordinates_text(*worst) +
                                " of boundary " + std::to_string(m.boundary_id) + " lies " +
                                number(std::abs(off), 3) + (off > 0. ? " outside" : " inside") +
                                " the " + m.kind + " (allowed: " + number(on_surface_tolerance) +
@@ -284,7 +279,7 @@ namespace contact_fem
     AssertThrow(n_inverted == 0,
                 ExcMessage(key + ": refining the mesh on these manifolds inverts " +
                            std::to_string(n_inverted) + " cell(s), the first near " +
-                           coordinates(first) + what));
+                           coordinates_text(first) + what));
   }
 
   template struct BoundaryManifold<2>;

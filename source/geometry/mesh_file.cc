@@ -7,6 +7,7 @@
 #include <contact_fem/geometry/hexahedron_shape.h>
 #include <contact_fem/core/value_range.h>
 #include <contact_fem/geometry/mesh_file.h>
+#include <contact_fem/geometry/model_frame.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/core/parameters.h>
 
@@ -105,6 +106,16 @@ namespace contact_fem
       std::unordered_map<long, Point<3>> node_coordinates;
       std::vector<GmshHexahedron>        hexahedra;
       std::vector<GmshQuadrilateral>     quadrilaterals;
+      /// The lines holding node coordinates, with the position of x among
+      /// their numbers: a mesh far from the origin is handed to deal.II
+      /// with these rewritten (read_gmsh()).
+      std::vector<std::pair<unsigned int, unsigned int>> node_lines;
+      /// $PhysicalNames: (dimension, tag, name).
+      std::vector<PhysicalName> physical_names;
+      Point<3> lower = Point<3>(std::numeric_limits<double>::max(),
+                                std::numeric_limits<double>::max(),
+                                std::numeric_limits<double>::max());
+      Point<3> upper = -lower;
     };
 
     /// Reads a text file line by line and knows the line number, so that
@@ -206,7 +217,7 @@ namespace contact_fem
 
     void
     record_node(LineReader &reader, const long tag, const std::vector<double> &xyz,
-                Contents &contents)
+                const unsigned int x_column, Contents &contents)
     {
       for (const double x : xyz)
         if (!(std::abs(x) <= largest_input_magnitude))
@@ -217,6 +228,12 @@ namespace contact_fem
                       "double precision (1.8e308) beyond it. Scale the mesh (Gmsh: "
                       "Mesh.ScalingFactor).");
       contents.node_coordinates[tag] = Point<3>(xyz[0], xyz[1], xyz[2]);
+      contents.node_lines.emplace_back(reader.line_number, x_column);
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          contents.lower[d] = std::min(contents.lower[d], xyz[d]);
+          contents.upper[d] = std::max(contents.upper[d], xyz[d]);
+        }
       contents.z_min = std::min(contents.z_min, xyz[2]);
       contents.z_max = std::max(contents.z_max, xyz[2]);
       for (unsigned int d = 0; d < 3; ++d)
@@ -233,7 +250,7 @@ namespace contact_fem
       for (std::size_t i = 0; i < n; ++i)
         {
           const auto v = reader.numbers(section, count_of(i, n, "nodes"), "'tag x y z'", 4);
-          record_node(reader, static_cast<long>(v[0]), {v[1], v[2], v[3]}, contents);
+          record_node(reader, static_cast<long>(v[0]), {v[1], v[2], v[3]}, 1, contents);
         }
       reader.expect(section == "$NOD" ? "$ENDNOD" : "$EndNodes", section);
     }
@@ -265,7 +282,7 @@ namespace contact_fem
                                             version >= 4.1 ? 3 : 4);
               const std::size_t o = version >= 4.1 ? 0 : 1;
               record_node(reader, version >= 4.1 ? tags[i] : static_cast<long>(v[0]),
-                          {v[o], v[o + 1], v[o + 2]}, contents);
+                          {v[o], v[o + 1], v[o + 2]}, o, contents);
             }
         }
       if (seen != n_nodes)
@@ -403,6 +420,30 @@ namespace contact_fem
           reader.fail("expected " + end + ", found '" + Utilities::trim(line) + "'.");
     }
 
+    /// $PhysicalNames: a count, then 'dimension tag "name"' lines.
+    void
+    scan_physical_names(LineReader &reader, Contents &contents)
+    {
+      const std::string section = "$PhysicalNames";
+      const auto        n = static_cast<std::size_t>(
+        reader.numbers(section, "", "the number of names", 1)[0]);
+      for (std::size_t i = 0; i < n; ++i)
+        {
+          const std::string line  = reader.require(section, count_of(i, n, "names"));
+          const auto        open  = line.find('"');
+          const auto        close = line.rfind('"');
+          std::istringstream numbers(line.substr(0, open));
+          PhysicalName       name;
+          if (open == std::string::npos || close == open ||
+              !(numbers >> name.dimension >> name.tag))
+            reader.fail("expected 'dimension tag \"name\"' in $PhysicalNames, found '" +
+                        Utilities::trim(line) + "'.");
+          name.name = Utilities::trim(line.substr(open + 1, close - open - 1));
+          contents.physical_names.push_back(name);
+        }
+      reader.expect("$EndPhysicalNames", section);
+    }
+
     /// The MSH version of the file (1 for the old format that starts with
     /// $NOD, left for the caller as @p pending section). Binary files stop
     /// here.
@@ -464,6 +505,8 @@ namespace contact_fem
                               scan_elements_v2(reader, section, contents);
               contents.have_elements = true;
             }
+          else if (section == "$PhysicalNames")
+            scan_physical_names(reader, contents);
           else
             skip_section(reader, section);
           section.clear();
@@ -688,8 +731,49 @@ namespace contact_fem
     }
   } // namespace
 
+  namespace
+  {
+    /// The text of @p file with every node moved by -@p origin (17 digits:
+    /// the moved coordinates are read back exactly); the other numbers of a
+    /// node line (its tag, parametric coordinates) and all other lines stay
+    /// as they are.
+    std::string
+    moved_copy(const std::string &file, const Contents &contents, const Point<3> &origin)
+    {
+      std::ifstream      in(file);
+      std::ostringstream out;
+      out << std::setprecision(17);
+      std::string  line;
+      unsigned int line_number = 0;
+      auto         node_line   = contents.node_lines.begin();
+      while (std::getline(in, line))
+        {
+          ++line_number;
+          if (node_line == contents.node_lines.end() || node_line->first != line_number)
+            {
+              out << line << '\n';
+              continue;
+            }
+          std::istringstream words(line);
+          std::string        word;
+          for (unsigned int k = 0; words >> word; ++k)
+            {
+              out << (k > 0 ? " " : "");
+              const unsigned int d = k - node_line->second;
+              if (k >= node_line->second && d < 3)
+                out << std::stod(word) - origin[d];
+              else
+                out << word;
+            }
+          out << '\n';
+          ++node_line;
+        }
+      return out.str();
+    }
+  } // namespace
+
   template <int dim>
-  void
+  MeshFileInfo
   read_gmsh(const std::string &file, Triangulation<dim> &coarse)
   {
     std::error_code error;
@@ -705,67 +789,35 @@ namespace contact_fem
       check_hexahedra(contents, file);
     else
       check_quadrilaterals(contents, file);
-    GridIn<dim> grid_in;
+    MeshFileInfo   info;
+    info.physical_names   = contents.physical_names;
+    const Point<3> origin = info.frame_origin =
+      choose_frame_origin(contents.lower, contents.upper, dim);
+    GridIn<dim>    grid_in;
     grid_in.attach_triangulation(coarse);
-    std::ifstream in(file);
     try
       {
-        grid_in.read_msh(in);
+        if (origin.norm_square() > 0.)
+          {
+            std::istringstream in(moved_copy(file, contents, origin));
+            grid_in.read_msh(in);
+          }
+        else
+          {
+            std::ifstream in(file);
+            grid_in.read_msh(in);
+          }
       }
     catch (const std::exception &e)
       {
-        std::vector<Point<3>> nodes;
-        for (const auto &[tag, x] : contents.node_coordinates)
-          nodes.push_back(x);
-        AssertThrow(false,
-                    ExcMessage(mesh_key + ": cannot read '" + file + "' as a Gmsh mesh: " +
-                               user_message(e) + far_from_origin_hint(nodes)));
+        AssertThrow(false, ExcMessage(mesh_key + ": cannot read '" + file +
+                                      "' as a Gmsh mesh: " + user_message(e)));
       }
+    return info;
   }
 
-  template <int spacedim>
-  std::string
-  far_from_origin_hint(const std::vector<Point<spacedim>> &vertices)
-  {
-    if (vertices.empty())
-      return "";
-    const BoundingBox<spacedim> box(vertices);
-    const double extent   = box.get_boundary_points().first.distance(box.get_boundary_points().second);
-    const double distance = box.center().norm();
-    // The shipped curved meshes pass at 1e3 sizes and fail in deal.II at
-    // 1e4 (doc/metamorphic.md).
-    constexpr double far = 1e3;
-    if (!(distance > far * extent))
-      return "";
-    std::ostringstream text;
-    text << std::setprecision(3) << ". The mesh lies " << distance << " from the origin, "
-         << distance / extent
-         << " times its size: deal.II computes cell measures and the pull-backs of curved "
-            "manifolds from absolute coordinates, which lose the digits of its cells there. "
-            "Move the mesh near the origin (the results do not depend on where it is).";
-    return text.str();
-  }
 
-  template <int dim>
-  std::string
-  far_from_origin_hint(const Triangulation<dim> &tria)
-  {
-    std::vector<Point<dim>> vertices;
-    if (tria.n_levels() > 0)
-      for (const auto &cell : tria.cell_iterators_on_level(0))
-        for (const unsigned int v : cell->vertex_indices())
-          vertices.push_back(cell->vertex(v));
-    return far_from_origin_hint(vertices);
-  }
 
-  template std::string
-  far_from_origin_hint(const std::vector<Point<2>> &);
-  template std::string
-  far_from_origin_hint(const std::vector<Point<3>> &);
-  template std::string
-  far_from_origin_hint(const Triangulation<2> &);
-  template std::string
-  far_from_origin_hint(const Triangulation<3> &);
 
   namespace
   {
@@ -1168,8 +1220,8 @@ namespace contact_fem
     return false;
   }
 
-  template void read_gmsh<2>(const std::string &, Triangulation<2> &);
-  template void read_gmsh<3>(const std::string &, Triangulation<3> &);
+  template MeshFileInfo read_gmsh<2>(const std::string &, Triangulation<2> &);
+  template MeshFileInfo read_gmsh<3>(const std::string &, Triangulation<3> &);
   template void check_unmerged_vertices<2>(const Triangulation<2> &, const std::string &);
   template void check_unmerged_vertices<3>(const Triangulation<3> &, const std::string &);
   template std::vector<PolygonalBoundary<2>>

@@ -7,6 +7,7 @@
 
 #include <contact_fem/core/format.h>
 #include <contact_fem/core/parameters.h>
+#include <contact_fem/geometry/physical_names.h>
 #include <contact_fem/geometry/scene.h>
 
 #include <array>
@@ -96,7 +97,11 @@ namespace contact_fem
                       "Gmsh file (ASCII, format 2.2 or 4) for Type = mesh file; a "
                       "relative name is taken relative to the .prm file. Bodies "
                       "are the cells' physical tags (material ids), surfaces the "
-                      "faces' physical tags (boundary ids). Cells: first-order "
+                      "faces' physical tags (boundary ids); their physical names "
+                      "(Gmsh $PhysicalNames) may stand for the ids in every key "
+                      "that takes one. A mesh far from the origin (more than 10 "
+                      "times its size) is computed moved next to it; the input "
+                      "stays in the file's coordinates. Cells: first-order "
                       "quadrilaterals (hexahedra in 3D). Read and checked with "
                       "the input (also by --validate): binary, truncated, "
                       "simplex or wrong-dimension files and bodies cut by "
@@ -233,6 +238,8 @@ namespace contact_fem
   Scene<dim>::parse_parameters(ParameterHandler &prm, const std::string &prm_directory)
   {
     prm.enter_subsection("Geometry");
+    frame              = ModelFrame<dim>();
+    message_origin     = {};
     type               = prm.get("Type");
     mesh_file          = prm.get("Mesh file");
     global_refinements = prm.get_integer("Global refinements");
@@ -276,10 +283,11 @@ namespace contact_fem
                                " coordinates, each lower below its upper."));
         refinement_boxes.push_back(refinement_box);
       }
-    const std::string manifolds_key = "Geometry/Manifolds";
-    manifolds = parse_boundary_manifolds<dim>(prm.get("Manifolds"), manifolds_key);
-    AssertThrow(manifolds.empty() || type == "mesh file",
-                ExcMessage(manifolds_key + ": only for Type = mesh file (the built-in "
+    // Parsed once the mesh file is read (its physical names may stand for
+    // the boundary ids).
+    manifolds.clear();
+    AssertThrow(Utilities::trim(prm.get("Manifolds")).empty() || type == "mesh file",
+                ExcMessage("Geometry/Manifolds: only for Type = mesh file (the built-in "
                            "geometries attach their own manifolds)."));
     prm.enter_subsection("Hertz cylinder");
     hertz.radius                = prm.get_double("Radius");
@@ -340,7 +348,7 @@ namespace contact_fem
         in.seekg(0, std::ios::end);
         AssertThrow(in.tellg() > 0,
                     ExcMessage("Geometry/Mesh file: '" + mesh_file + "' is empty."));
-        read_mesh_file();
+        read_mesh_file(prm);
       }
     else if (type == "hertz sphere")
       {
@@ -357,12 +365,23 @@ namespace contact_fem
 
   template <int dim>
   void
-  Scene<dim>::read_mesh_file()
+  Scene<dim>::read_mesh_file(ParameterHandler &prm)
   {
     // Every check runs here, before any work and under --validate.
-    const std::string key    = "Geometry/Manifolds";
-    auto              coarse = std::make_shared<Triangulation<dim>>();
-    read_gmsh(mesh_file, *coarse);
+    const std::string  key    = "Geometry/Manifolds";
+    auto               coarse = std::make_shared<Triangulation<dim>>();
+    const MeshFileInfo info   = read_gmsh(mesh_file, *coarse);
+    PhysicalNames(info.physical_names, dim, mesh_file).substitute(prm);
+    prm.enter_subsection("Geometry");
+    manifolds = parse_boundary_manifolds<dim>(prm.get("Manifolds"), key);
+    prm.leave_subsection();
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        frame.origin[d]   = info.frame_origin[d];
+        message_origin[d] = info.frame_origin[d];
+      }
+    for (auto &m : manifolds)
+      m.centre = frame.to_model(m.centre);
     check_unmerged_vertices(*coarse, mesh_file);
     check_boundary_manifolds(manifolds, *coarse, key);
     // Random vertex moves would invalidate the transfinite chart of the
@@ -421,7 +440,7 @@ namespace contact_fem
             fitted << (fitted.tellp() > 0 ? "; " : "") << static_cast<unsigned int>(b.id)
                    << ": cylinder ";
             for (unsigned int d = 0; d < dim; ++d)
-              fitted << clean(b.axis_point[d], b.cylinder_radius) << ", ";
+              fitted << clean(frame.to_user(b.axis_point)[d], b.cylinder_radius) << ", ";
             for (unsigned int d = 0; d < dim; ++d)
               fitted << clean(b.axis[d], 1.) << ", ";
             fitted << b.cylinder_radius;
@@ -431,7 +450,7 @@ namespace contact_fem
             fitted << (fitted.tellp() > 0 ? "; " : "") << static_cast<unsigned int>(b.id)
                    << (dim == 2 ? ": circle " : ": sphere ");
             for (unsigned int d = 0; d < dim; ++d)
-              fitted << clean(b.centre[d], b.radius) << ", ";
+              fitted << clean(frame.to_user(b.centre)[d], b.radius) << ", ";
             fitted << b.radius;
           }
       }
@@ -817,7 +836,7 @@ namespace contact_fem
             for (const auto &cell : tria.active_cell_iterators())
               if (cell->is_locally_owned())
                 {
-                  const Point<dim> centre = cell->center();
+                  const Point<dim> centre = frame.to_user(cell->center());
                   bool             inside = true;
                   for (unsigned int d = 0; d < dim; ++d)
                     inside = inside && centre[d] >= box.lower[d] && centre[d] <= box.upper[d];

@@ -73,9 +73,9 @@ namespace contact_fem
     prm.enter_subsection("Materials");
     prm.declare_entry("Material ids",
                       "",
-                      Patterns::List(Patterns::Integer(0, 255)),
-                      "Material ids of the bodies (cell material ids of the mesh), "
-                      "one entry per body. The lists below give the constants in "
+                      Patterns::Anything(),
+                      "Material ids of the bodies (cell material ids of the mesh, "
+                      "or their Gmsh physical names), one entry per body. The lists below give the constants in "
                       "the same order." + not_set_help(true),
                       true);
     prm.declare_entry("Young's moduli",
@@ -106,8 +106,24 @@ namespace contact_fem
   Materials<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Materials");
-    const auto ids = Utilities::string_to_int(
-      Utilities::split_string_list(prm.get("Material ids")));
+    std::vector<int> ids;
+    for (const std::string &entry : Utilities::split_string_list(prm.get("Material ids")))
+      {
+        std::size_t end = 0;
+        int         id  = -1;
+        try
+          {
+            id = std::stoi(entry, &end);
+          }
+        catch (...)
+          {
+          }
+        AssertThrow(end == entry.size() && id >= 0 && id <= 255,
+                    ExcMessage("Materials/Material ids: '" + entry + "' is not a material id "
+                               "(an integer from 0 to 255) nor a physical name of the bodies "
+                               "of a mesh file."));
+        ids.push_back(id);
+      }
     const std::string E_text = prm.get("Young's moduli"), nu_text = prm.get("Poisson's ratios");
     prm.leave_subsection();
     AssertThrow(!ids.empty(),

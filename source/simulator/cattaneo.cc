@@ -275,7 +275,7 @@ namespace contact_fem
                                 ContactFormulation<dim>::tangent(contact.frame_normal(s));
           node.weight = s.D;
           node.active = active;
-          node.stick  = contact.sticks(s.node);
+          node.stick  = contact.held_tangentially(s.node);
           nodes.push_back(node);
         }
     const auto [P, Q] = cattaneo_loads(interface, contact);

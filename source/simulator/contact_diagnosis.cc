@@ -2,7 +2,7 @@
 // stalled Newton iteration, forces that do not balance, a model beyond
 // double precision. Each names the real cause rather than the most common
 // one.
-#include <deal.II/base/function_parser.h>
+#include <contact_fem/geometry/model_frame.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
@@ -61,11 +61,9 @@ namespace contact_fem
                   loads[cell->material_id()] += force_at(q) * fe_face.JxW(q);
               }
     };
-    const std::string variables = dim == 2 ? "x,y,t" : "x,y,z,t";
     for (const auto &condition : boundary_conditions.pressures)
       {
-        FunctionParser<dim> pressure(1);
-        pressure.initialize(variables, condition.expression, {}, true);
+        UserFunction<dim> pressure({condition.expression}, scene.frame);
         pressure.set_time(time);
         integrate(condition.boundary_id, [&](const unsigned int q) {
           return -pressure.value(fe_face.quadrature_point(q)) * fe_face.normal_vector(q);
@@ -73,8 +71,7 @@ namespace contact_fem
       }
     for (const auto &condition : boundary_conditions.tractions)
       {
-        FunctionParser<dim> traction(dim);
-        traction.initialize(variables, condition.expressions, {}, true);
+        UserFunction<dim> traction(condition.expressions, scene.frame);
         traction.set_time(time);
         integrate(condition.boundary_id, [&](const unsigned int q) {
           Tensor<1, dim> t;
@@ -145,8 +142,7 @@ namespace contact_fem
       {
         if (condition.expression == "0")
           continue;
-        FunctionParser<dim> function(1);
-        function.initialize(dim == 2 ? "x,y,t" : "x,y,z,t", condition.expression, {}, true);
+        UserFunction<dim> function({condition.expression}, scene.frame);
         function.set_time(time);
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned())

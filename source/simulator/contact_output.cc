@@ -95,31 +95,12 @@ namespace contact_fem
       for (const auto &s : interface.slave_nodes)
         if (s.paired && contact.is_active(s.node))
           {
-            if (contact.frictional())
+            if (contact.transmits_shear())
               force -= s.D * contact.traction(s);
             else
               force += contact.normal_pressure(s.node) * s.D * s.normal;
           }
       return force;
-    }
-  } // namespace
-
-  namespace
-  {
-    /// A force (a net reaction, a load, a contact force), or "0 (...)" when
-    /// it is below 1e-10 of the forces of the scene: displacement-driven
-    /// scenes have no net reaction, and the round-off left (1e-15 serial,
-    /// 9e-16 on two ranks in kratos_patch_01; any sign) must not be printed
-    /// as a number.
-    std::string
-    force_text(const double force, const double force_scale)
-    {
-      std::ostringstream s;
-      if (std::abs(force) < 1e-10 * force_scale)
-        s << "0 (< 1e-10 of the forces)";
-      else
-        s << force;
-      return s.str();
     }
   } // namespace
 
@@ -169,8 +150,6 @@ namespace contact_fem
       .set("total_contact_force", total_contact_force(*interface, *contact).norm())
       .set("slave_element_size", n_active > 0 ? size_sum / n_active : 0.);
     contact->add_results(*interface, result);
-    if (contact->frictional())
-      add_friction_results(result);
     result.set("largest_unexplained_penetration_over_h", last_penetration_excess);
     Json slave_split = Json::array(), master_split = Json::array();
     for (const unsigned int n : interface->slave_faces_per_rank)
@@ -179,38 +158,6 @@ namespace contact_fem
       master_split.push(n);
     result.set("slave_faces_per_rank", slave_split).set("master_faces_per_rank", master_split);
     return result;
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::add_friction_results(Json &result) const
-  {
-    // Totals over the active slave nodes of the force the slave exerts on
-    // the master, split along each node's own normal and tangent.
-    double         normal = 0., tangential = 0., t_max = 0., slip_max = 0., length = 0.;
-    Tensor<1, dim> force;
-    for (const auto &s : interface->slave_nodes)
-      if (s.paired && contact->is_active(s.node))
-        {
-          const Tensor<1, dim> lambda = contact->traction(s);
-          const double         t      = lambda * ContactFormulation<dim>::tangent(contact->frame_normal(s));
-          normal += s.D * contact->normal_pressure(s.node);
-          tangential += s.D * t;
-          length += s.D;
-          force -= s.D * lambda;
-          t_max    = std::max(t_max, std::abs(t));
-          slip_max = std::max(slip_max, std::abs(contact->accepted_slip(s.node)));
-        }
-    Json components = Json::array();
-    for (unsigned int d = 0; d < dim; ++d)
-      components.push(force[d]);
-    result.set("total_normal_contact_force", normal)
-      .set("total_tangential_contact_force", tangential)
-      .set("tangential_over_normal_force", normal > 0. ? tangential / normal : 0.)
-      .set("contact_force_components", components)
-      .set("active_contact_length", length)
-      .set("max_tangential_traction", t_max)
-      .set("max_slip_increment", slip_max);
   }
 
   template <int dim>
@@ -569,10 +516,9 @@ namespace contact_fem
               << " h (tolerance " << contact_parameters.penetration_tolerance << " h)"
               << std::endl;
         std::ostringstream own_checks;
-        contact->print_results(*interface, interface_displacement, own_checks);
+        contact->print_results(*interface, interface_displacement, contact_json, reaction,
+                               own_checks);
         pcout << own_checks.str();
-        if (contact->frictional())
-          print_friction_results(contact_json, reaction);
       }
     // A plain "0" when nothing is loaded. The net of loads that balance
     // is round-off, or exactly 0 depending on the summation order (on the
@@ -644,38 +590,6 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactProblem<dim>::print_friction_results(const Json &contact_json,
-                                              const Json &reaction) const
-  {
-    const double normal     = contact_json["total_normal_contact_force"].number_value();
-    const double tangential = contact_json["total_tangential_contact_force"].number_value();
-    const double scale      = reaction["force_scale"].number_value();
-    pcout << "    stick / slip nodes:           "
-          << contact_json["stick_nodes"].number_value() << " / "
-          << contact_json["slip_nodes"].number_value() << std::endl
-          << "    normal contact force:         " << force_text(normal, scale) << std::endl
-          << "    tangential contact force:     " << force_text(tangential, scale) << std::endl
-          << "    active contact length:        "
-          << contact_json["active_contact_length"].number_value() << std::endl
-          << "    tangential / normal force:    "
-          << (std::abs(tangential) < 1e-10 * scale || normal <= 0. ?
-                std::string("0 (no tangential force)") :
-                significant(tangential / normal, 10))
-          << std::endl
-          << "    largest slip in the last step: "
-          << value_or_ok(contact_json["max_slip_increment"].number_value(), 1e-12) << std::endl;
-    const Json &load      = reaction["applied_load_components"];
-    const Json &support   = reaction["support_reaction_components"];
-    const Json &imbalance = reaction["relative_imbalance_components"];
-    for (unsigned int d = 0; d < dim; ++d)
-      pcout << "    balance in " << "xyz"[d] << ": load "
-            << force_text(load[d].number_value(), scale) << ", support reaction "
-            << force_text(support[d].number_value(), scale) << ", relative imbalance "
-            << value_or_ok(imbalance[d].number_value(), 1e-10) << std::endl;
-  }
-
-  template <int dim>
-  void
   ContactProblem<dim>::write_pressure_profile() const
   {
     const bool   hertz = analytical.type == "hertz cylinder" || analytical.type == "hertz sphere";
@@ -688,38 +602,34 @@ namespace contact_fem
         check_written(path, true);
         return;
       }
-    // With friction also the tangential traction (on the slave, along the
-    // tangent whose x component is positive), the slip increment of the
-    // last load step and the stick flag.
-    const bool                         frictional = contact->frictional();
+    // The formulation's own nodal fields (friction: tangential traction,
+    // slip increment of the last load step, stick flag) follow.
+    const auto fields = contact->nodal_fields(*interface);
     std::vector<std::vector<double>> rows;
     for (const auto &s : interface->slave_nodes)
       if (s.paired)
         {
-          // 2D: x only; 3D: the whole position (the profile is a surface).
+          // 2D: x only; 3D: the whole position (the profile is a surface),
+          // in the user's coordinates.
           const Point<dim> position = interface->nodes[s.node].reference +
                                       interface->displacement(s.node, interface_displacement);
           rows.emplace_back();
           for (unsigned int d = 0; d < (dim == 2 ? 1 : dim); ++d)
-            rows.back().push_back(position[d]);
+            rows.back().push_back(scene.frame.to_user(position)[d]);
           rows.back().insert(rows.back().end(),
                              {contact->normal_pressure(s.node),
                               hertz ? h.pressure(hertz_coordinate(analytical, position)) : 0.,
                               interface->gap(s, interface_displacement),
                               contact->is_active(s.node) ? 1. : 0.});
-          if (frictional)
-            {
-              rows.back().push_back(contact->traction(s) *
-                                    ContactFormulation<dim>::tangent(contact->frame_normal(s)));
-              rows.back().push_back(contact->accepted_slip(s.node));
-              rows.back().push_back(contact->sticks(s.node) ? 1. : 0.);
-            }
+          for (const auto &field : fields)
+            rows.back().push_back(field.values[s.node]);
         }
     std::sort(rows.begin(), rows.end());
     std::ostringstream out;
-    out << (dim == 2 ? "x" : "x,y,z") << ",pressure,hertz_pressure,gap,active"
-        << (frictional ? ",tangential_traction,slip_increment,stick" : "") << "\n"
-        << std::setprecision(10);
+    out << (dim == 2 ? "x" : "x,y,z") << ",pressure,hertz_pressure,gap,active";
+    for (const auto &field : fields)
+      out << "," << field.name;
+    out << "\n" << std::setprecision(10);
     for (const auto &r : rows)
       for (unsigned int k = 0; k < r.size(); ++k)
         out << r[k] << (k + 1 < r.size() ? ',' : '\n');
@@ -755,10 +665,13 @@ namespace contact_fem
 
     std::vector<std::string> names = {"contact_pressure", "weighted_gap", "active", "slave",
                                       "master"};
-    const bool frictional = contact && contact->frictional();
-    if (frictional)
-      for (const std::string name : {"tangential_traction", "slip_increment", "stick"})
-        names.push_back(name);
+    // The formulation's own nodal fields (friction: tangential traction,
+    // slip, stick) follow the five above.
+    const auto contact_fields =
+      contact ? contact->nodal_fields(*interface) :
+                std::vector<typename ContactFormulation<dim>::NodalField>();
+    for (const auto &field : contact_fields)
+      names.push_back(field.name);
     std::vector<TrilinosWrappers::MPI::Vector> fields(names.size());
     for (auto &f : fields)
       f.reinit(scalar_owned, comm);
@@ -769,19 +682,9 @@ namespace contact_fem
         for (unsigned int n = 0; n < interface->nodes.size(); ++n)
           node_of_dof[interface->nodes[n].dofs[0]] = n;
         std::vector<double> gap(interface->nodes.size(), 0.);
-        std::vector<double> tangential(interface->nodes.size(), 0.),
-          slip(interface->nodes.size(), 0.);
         for (const auto &s : interface->slave_nodes)
           if (s.paired)
-            {
-              gap[s.node] = interface->gap(s, interface_displacement);
-              if (frictional)
-                {
-                  tangential[s.node] =
-                    contact->traction(s) * ContactFormulation<dim>::tangent(contact->frame_normal(s));
-                  slip[s.node] = contact->accepted_slip(s.node);
-                }
-            }
+            gap[s.node] = interface->gap(s, interface_displacement);
 
         std::vector<types::global_dof_index> vector_dofs(fe.n_dofs_per_cell()),
           scalar_dofs_of_cell(scalar_fe.n_dofs_per_cell());
@@ -819,12 +722,8 @@ namespace contact_fem
                     fields[2](scalar_dof) = active ? 1. : 0.;
                     fields[3](scalar_dof) = interface->nodes[n].slave ? 1. : 0.;
                     fields[4](scalar_dof) = interface->nodes[n].master ? 1. : 0.;
-                    if (frictional)
-                      {
-                        fields[5](scalar_dof) = tangential[n];
-                        fields[6](scalar_dof) = slip[n];
-                        fields[7](scalar_dof) = contact->sticks(n) ? 1. : 0.;
-                      }
+                    for (unsigned int k = 0; k < contact_fields.size(); ++k)
+                      fields[5 + k](scalar_dof) = contact_fields[k].values[n];
                   }
               }
             ++scalar_cell;
@@ -946,8 +845,17 @@ namespace contact_fem
       .set("status", status)
       .set("degree", degree)
       .set("mapping_degree", mapping->get_degree())
-      .set("wall_time", wall_time)
-      .set("cycles", cycles);
+      .set("wall_time", wall_time);
+    // A mesh far from the origin is computed (and its VTU files written)
+    // moved next to it: the point of the user's coordinates that is 0 there.
+    if (scene.frame.shifted())
+      {
+        Json origin = Json::array();
+        for (unsigned int d = 0; d < dim; ++d)
+          origin.push(scene.frame.origin[d]);
+        summary.set("coordinate_origin", origin);
+      }
+    summary.set("cycles", cycles);
     std::ostringstream out;
     summary.write(out);
     out << '\n';
@@ -1007,8 +915,6 @@ namespace contact_fem
   template Tensor<1, dim> ContactProblem<dim>::applied_load(const double) const; \
   template Json           ContactProblem<dim>::contact_results() const;          \
   template Json           ContactProblem<dim>::reaction_results() const;         \
-  template void ContactProblem<dim>::add_friction_results(Json &) const;         \
-  template void ContactProblem<dim>::print_friction_results(const Json &, const Json &) const; \
   template void ContactProblem<dim>::print_hertz_sphere_results(const Json &) const; \
   template Json ContactProblem<dim>::analytical_results(const Json &,            \
                                                         const Json &) const;     \

@@ -1,4 +1,4 @@
-#include <deal.II/base/function_parser.h>
+#include <contact_fem/geometry/model_frame.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
@@ -194,6 +194,7 @@ namespace contact_fem
     refinement.parse_parameters(prm);
     spr_settings.parse_parameters(prm);
     analytical.parse_parameters(prm, prm_directory, dim);
+    analytical.move_origin(scene.frame.origin[0], scene.frame.origin[1], dim);
     output.parse_parameters(prm, dim);
     model_range.parse_parameters(prm);
     check_scene_before_meshing();
@@ -295,29 +296,56 @@ namespace contact_fem
   std::vector<types::global_dof_index>
   ContactProblem<dim>::vertex_dofs(const BodyPoint &point, const std::string &key) const
   {
-    Point<dim> location;
+    Point<dim> user;
     for (unsigned int d = 0; d < dim; ++d)
-      location[d] = point.coordinates[d];
+      user[d] = point.coordinates[d];
+    const Point<dim> location = scene.frame.to_model(user);
+    // The nearest vertex of the body, in units of its cell's diameter: a
+    // point typed with fewer digits than the mesh file holds (a rotated
+    // mesh) still names its vertex, and a miss names the nearest one.
     std::vector<types::global_dof_index> dofs;
+    std::pair<double, Point<dim>>        nearest(std::numeric_limits<double>::infinity(), {});
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         if (cell->is_artificial() || cell->material_id() != point.material_id)
           continue;
         for (const auto v : cell->vertex_indices())
-          if (cell->vertex(v).distance(location) < vertex_match_tolerance * cell->diameter())
-            {
+          {
+            const double distance = cell->vertex(v).distance(location) / cell->diameter();
+            if (distance < nearest.first)
+              {
+                // Printed: coordinates of round-off size (on a symmetry
+                // line) as 0, so that the message is the same everywhere.
+                nearest = {distance, scene.frame.to_user(cell->vertex(v))};
+                for (unsigned int d = 0; d < dim; ++d)
+                  if (std::abs(nearest.second[d]) < 1e-10 * cell->diameter())
+                    nearest.second[d] = 0.;
+              }
+            if (distance < vertex_match_tolerance && dofs.empty())
               for (unsigned int d = 0; d < dim; ++d)
                 dofs.push_back(cell->vertex_dof_index(v, d));
-              break;
-            }
-        if (!dofs.empty())
-          break;
+          }
       }
     const unsigned int found = dofs.empty() ? 0 : 1;
-    const std::string  text  = to_string(point);
-    AssertThrow(Utilities::MPI::sum(found, comm) > 0,
-                ExcMessage(key + ": body " + std::to_string(point.material_id) +
-                           " has no mesh vertex at (" + text.substr(text.find('@') + 2) + ")."));
+    if (Utilities::MPI::sum(found, comm) == 0)
+      {
+        for (const auto &candidate : Utilities::MPI::all_gather(comm, nearest))
+          if (candidate.first < nearest.first)
+            nearest = candidate;
+        const std::string text = to_string(point);
+        AssertThrow(false,
+                    ExcMessage(key + ": body " + std::to_string(point.material_id) +
+                               " has no mesh vertex at (" + text.substr(text.find('@') + 2) +
+                               ")" +
+                               (std::isfinite(nearest.first) ?
+                                  "; its nearest vertex is " +
+                                    coordinates_text(scene.frame.to_model(nearest.second)) +
+                                    ", " + significant(nearest.first, 2) +
+                                    " of its cell's diameter away (a point names a vertex "
+                                    "within " + significant(vertex_match_tolerance, 2) + ")" :
+                                  "; the body has no cells") +
+                               "."));
+      }
     return dofs;
   }
 
@@ -350,8 +378,7 @@ namespace contact_fem
       {
         std::vector<std::string> expressions(dim, "0");
         expressions[condition.component] = condition.expression;
-        FunctionParser<dim> function(dim);
-        function.initialize(dim == 2 ? "x,y,t" : "x,y,z,t", expressions, {}, true);
+        UserFunction<dim> function(expressions, scene.frame);
         function.set_time(time);
         ComponentMask mask(dim, false);
         mask.set(condition.component, true);
@@ -435,12 +462,11 @@ namespace contact_fem
     FEFaceValues<dim>     fe_face(*mapping, fe, quadrature,
                               update_values | update_normal_vectors |
                                 update_quadrature_points | update_JxW_values);
-    std::vector<std::unique_ptr<FunctionParser<dim>>> pressures;
+    std::vector<std::unique_ptr<UserFunction<dim>>> pressures;
     for (const auto &condition : boundary_conditions.pressures)
       {
-        pressures.push_back(std::make_unique<FunctionParser<dim>>(1));
-        pressures.back()->initialize(dim == 2 ? "x,y,t" : "x,y,z,t",
-                                     condition.expression, {}, true);
+        pressures.push_back(std::make_unique<UserFunction<dim>>(
+          std::vector<std::string>{condition.expression}, scene.frame));
         pressures.back()->set_time(time);
       }
     cell_loads.assign(triangulation.n_active_cells(), Vector<double>());
@@ -468,12 +494,11 @@ namespace contact_fem
                 }
     // Traction vectors (Boundary conditions/Traction): one parser per
     // component.
-    std::vector<std::unique_ptr<FunctionParser<dim>>> tractions;
+    std::vector<std::unique_ptr<UserFunction<dim>>> tractions;
     for (const auto &condition : boundary_conditions.tractions)
       {
-        tractions.push_back(std::make_unique<FunctionParser<dim>>(dim));
-        tractions.back()->initialize(dim == 2 ? "x,y,t" : "x,y,z,t", condition.expressions, {},
-                                     true);
+        tractions.push_back(
+          std::make_unique<UserFunction<dim>>(condition.expressions, scene.frame));
         tractions.back()->set_time(time);
       }
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -1037,10 +1062,11 @@ namespace contact_fem
     solving = true;
     Timer step_timer;
     prepare_load_step(time, step_size, first_step);
-    const bool frictional = contact && contact->frictional();
     pcout << "  Load step " << step + 1 << ", t = " << time << std::endl;
     if (output.print_newton_iterations)
-      pcout << NewtonMonitor::header(frictional, linear_solver->iterative()) << std::endl;
+      pcout << NewtonMonitor::header(contact ? contact->iteration_header() : "",
+                                     linear_solver->iterative())
+            << std::endl;
     linear_iterations_of_step.clear();
     const std::string where =
       "load step " + std::to_string(step + 1) + " (t = " + std::to_string(time) + ")";
@@ -1076,22 +1102,16 @@ namespace contact_fem
                               "extreme." + singular_system_hint());
         assessment =
           monitor.assess(iteration, r_u, r_lambda, update.changes, update.searched_again);
-        NewtonMonitor::FrictionCounts friction;
-        if (frictional)
-          {
-            friction.n_stick = contact->n_stick();
-            friction.n_slip  = contact->n_slip();
-            friction.changes = contact->stick_slip_changes();
-          }
         std::optional<unsigned int> linear_iterations;
         if (linear_solver->iterative())
           linear_iterations =
             iteration > 0 ? linear_iterations_of_step.back() : 0u;
         if (output.print_newton_iterations)
           pcout << monitor.row(iteration, update.changes, contact ? contact->n_active() : 0u,
-                               assessment, frictional ? &friction : nullptr, linear_iterations)
+                               assessment, contact ? contact->iteration_cells(iteration) : "",
+                               linear_iterations)
                 << std::endl;
-        if (frictional)
+        if (contact)
           check_for_cycling(at, iteration, update.changes, sets_of_iteration);
         if (assessment.converged && contact &&
             !accept_contact_state(step, time, step_size, searches_after_check))
@@ -1137,7 +1157,8 @@ namespace contact_fem
                                          std::vector<std::vector<int>> &sets_of_iteration) const
   {
     sets_of_iteration.push_back(contact->contact_sets());
-    if (changes == 0 || iteration < 2)
+    // An empty set: the formulation offers no detection.
+    if (changes == 0 || iteration < 2 || sets_of_iteration.back().empty())
       return;
     for (unsigned int k = 0; k + 1 < iteration; ++k)
       if (sets_of_iteration[k] == sets_of_iteration.back())
@@ -1211,6 +1232,17 @@ namespace contact_fem
     pcout << "contact_fem: scene '" << scene_name << "', " << dim << "D, "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI process(es)" << std::endl
           << effective_input;
+    if (scene.frame.shifted())
+      {
+        std::string origin;
+        for (unsigned int d = 0; d < dim; ++d)
+          origin += (d > 0 ? ", " : "") + significant(scene.frame.origin[d], 17);
+        pcout << "  The mesh lies far from the origin: it is computed moved next to it by "
+                 "-(" << origin << ") (deal.II's geometry loses the digits of small cells far "
+                 "out). Inputs, messages and pressure_profile.csv use the mesh file's "
+                 "coordinates; the VTU files (32-bit points) the moved ones: add (" << origin
+              << ") (summary.json: coordinate_origin)." << std::endl;
+      }
     report_earlier_outputs(earlier_outputs);
     print_input_warnings();
 
@@ -1267,13 +1299,9 @@ namespace contact_fem
     catch (const std::exception &e)
       {
         // Anything else thrown after the first solve started is a failure of
-        // the run (main() gives exit 2): the summary says so. Far from the
-        // origin deal.II's geometry may fail anywhere: say so.
-        const std::string far = far_from_origin_hint(triangulation);
+        // the run (main() gives exit 2): the summary says so.
         if (solving)
-          write_summary(cycles, total_timer.wall_time(), "failed: " + user_message(e) + far);
-        if (!far.empty())
-          throw std::runtime_error(user_message(e) + far);
+          write_summary(cycles, total_timer.wall_time(), "failed: " + user_message(e));
         throw;
       }
     if (console.file_failed())
@@ -1707,8 +1735,9 @@ namespace contact_fem
     // the elasticity of the contact zone (compliant for a small zone, but
     // physical, not a discretisation artefact), and the factors of an
     // unsymmetric slip system are not those of the probe's test space.
-    if (contact->frictional() && contact->n_stick() > 0)
-      return;
+    for (unsigned int n = 0; n < interface->nodes.size(); ++n)
+      if (contact->held_tangentially(n))
+        return;
     TimerOutput::Scope t(*timer, "Check: held rotation");
     double                          softest = std::numeric_limits<double>::max();
     std::vector<types::material_id> bodies;

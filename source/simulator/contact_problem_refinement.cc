@@ -106,7 +106,7 @@ namespace contact_fem
     // largest over the active nodes.
     // With friction the shear part is compared with the mortar tangential
     // traction instead (it is no longer zero), and with Cattaneo.
-    const bool          frictional = contact->frictional();
+    const bool          with_shear = contact->transmits_shear();
     std::vector<double> pressure(interface->nodes.size(), 0.);
     std::vector<double> tangential(interface->nodes.size(), 0.);
     double              largest_shear = 0., p_max = 0.;
@@ -129,7 +129,7 @@ namespace contact_fem
           if (contact->is_active(s.node))
             {
               Tensor<1, dim> shear = traction + normal * n;
-              if (frictional)
+              if (with_shear)
                 {
                   const Tensor<1, dim> tau =
                     ContactFormulation<dim>::tangent(contact->frame_normal(s));
@@ -144,7 +144,7 @@ namespace contact_fem
     AssertThrow(i == nodes.size() && i == node_stresses.size(), ExcInternalError());
     const double      shear = p_max > 0. ? largest_shear / p_max : 0.;
     const std::string label = prefix.empty() ? "    recovered" : "    plain SPR recovered";
-    if (frictional)
+    if (with_shear)
       {
         cycle_record.set(prefix + "recovered_tangential_traction_deviation_max_relative", shear);
         pcout << label << " tangential traction - mortar one, largest / p_max: "
@@ -222,7 +222,7 @@ namespace contact_fem
               // With friction the whole traction vector (normal and
               // tangential) is imposed, not the pressure alone.
               Tensor<1, dim> traction;
-              if (active && contact->frictional())
+              if (active && contact->transmits_shear())
                 traction = (s.D / reference) * contact->traction(s);
               else if (active)
                 traction = -contact->normal_pressure(s.node) * s.D / reference * s.normal;
@@ -295,7 +295,7 @@ namespace contact_fem
       {
         // Stick ties the slave to the master's mesh; frictionless contact
         // is left as it was (its meshes and outputs unchanged).
-        if (contact && contact->frictional())
+        if (contact && contact->transmits_shear())
           Marking::flag_master_faces_opposite_flagged_slave_faces(dof_handler, *interface);
         std::set<types::boundary_id> contact_ids;
         for (const auto &pair : contact_parameters.pairs)

@@ -1,9 +1,10 @@
 // Checks that the numbers of a scene fit double precision, done on the
 // coarse mesh before any work: coordinates, moduli and loads whose products
 // would overflow, and loads that are not numbers somewhere on the load path.
-#include <deal.II/base/function_parser.h>
+#include <contact_fem/geometry/model_frame.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <contact_fem/core/format.h>
 #include <contact_fem/core/value_range.h>
 #include <contact_fem/geometry/mesh_file.h>
 #include <contact_fem/simulator/contact_problem.h>
@@ -64,19 +65,12 @@ namespace contact_fem
         if (info != std::string::npos)
           what = Utilities::trim(what.substr(info + 23));
         what = what.substr(0, what.find("\n\nStacktrace"));
-        // The mesh built so far, or else the one read from the mesh file.
-        const std::string far = far_from_origin_hint(
-          coarse.n_levels() == 0 && coarse_scene.coarse_mesh ?
-            static_cast<const Triangulation<dim> &>(*coarse_scene.coarse_mesh) :
-            static_cast<const Triangulation<dim> &>(coarse));
         AssertThrow(false,
                     ExcMessage(geometry_key() + ": building the mesh failed in deal.II ('" +
-                               Utilities::trim(what) + "')" +
-                               (far.empty() ?
-                                  "; check the lengths and coordinates (finite, of magnitude "
-                                  "at most " + format(largest_input_magnitude) +
-                                    ", the parts of the scene of positive size)." :
-                                  far)));
+                               Utilities::trim(what) +
+                               "'); check the lengths and coordinates (finite, of magnitude "
+                               "at most " + format(largest_input_magnitude) +
+                               ", the parts of the scene of positive size)."));
       }
   }
 
@@ -123,11 +117,9 @@ namespace contact_fem
     // Each load and prescribed displacement at the vertices of its boundary
     // at the start and at the end of every load step: a value that is not
     // a number would stop the first solve without naming its key.
-    const std::string variables = dim == 2 ? "x,y,t" : "x,y,z,t";
-    const auto        check     = [&](const std::string &key, const types::boundary_id id,
+    const auto check = [&](const std::string &key, const types::boundary_id id,
                            const std::vector<std::string> &expressions, const bool force) {
-      FunctionParser<dim> function(expressions.size());
-      function.initialize(variables, expressions, {}, true);
+      UserFunction<dim> function(expressions, scene.frame);
       for (unsigned int step = 0; step <= load_stepping.n_steps; ++step)
         {
           const double time = load_stepping.end_time * step / load_stepping.n_steps;
@@ -143,8 +135,8 @@ namespace contact_fem
                           << static_cast<unsigned int>(id) << " is "
                           << (std::isnan(value) ? std::string("not a number") :
                                                   format(value))
-                          << " at t = " << time << " at the point (" << face->vertex(v)
-                          << ")";
+                          << " at t = " << time << " at the point "
+                          << coordinates_text(face->vertex(v));
                     AssertThrow(std::isfinite(value),
                                 ExcMessage(where.str() +
                                            "; expected a finite number at every point and "

@@ -470,17 +470,18 @@ namespace contact_fem
       {
         // mu of the law the run uses: one source, no second key to keep
         // consistent with it. The comparison is of the first pair.
-        const auto laws = FrictionParameters::parse_laws(prm);
-        const auto coulomb =
-          laws.empty() ? nullptr : dynamic_cast<const CoulombFriction *>(laws.front().get());
-        AssertThrow(coulomb != nullptr && coulomb->threshold_derivative(0.) > 0.,
+        const auto laws    = FrictionParameters::parse_laws(prm);
+        const bool coulomb = !laws.empty() &&
+                             laws.front()->kind() == FrictionalLaw::Kind::coulomb &&
+                             laws.front()->parameter() > 0.;
+        AssertThrow(coulomb,
                     ExcMessage("Analytical solution/Type = cattaneo: needs a Coulomb law "
                                "with mu > 0 in Contact/Friction (e.g. 'coulomb 0.2') for "
                                "the first contact pair, " +
                                (laws.empty() ? std::string("found none (the key is empty)") :
                                                "found '" + laws.front()->description() + "'") +
                                "."));
-        friction_coefficient = coulomb->threshold_derivative(0.);
+        friction_coefficient = laws.front()->parameter();
       }
   }
 

@@ -95,11 +95,11 @@ namespace contact_fem
   }
 
   std::string
-  NewtonMonitor::header(const bool frictional, const bool iterative)
+  NewtonMonitor::header(const std::string &contact_cells, const bool iterative)
   {
     return std::string(
              "    | it | disp. ratio | disp. abs | mult. ratio | mult. abs | changes | active |") +
-           (frictional ? " stick |  slip | s/s ch. |" : "") + (iterative ? " lin. it |" : "");
+           contact_cells + (iterative ? " lin. it |" : "");
   }
 
   double
@@ -114,7 +114,7 @@ namespace contact_fem
                      const unsigned int                 changes,
                      const unsigned int                 n_active,
                      const Assessment                  &a,
-                     const FrictionCounts              *friction,
+                     const std::string                 &contact_cells,
                      const std::optional<unsigned int> &linear_iterations) const
   {
     std::ostringstream s;
@@ -123,10 +123,7 @@ namespace contact_fem
       << cells(a.ratio_lambda, last_lambda, parameters.multiplier_absolute_tolerance) << " | "
       << std::setw(7) << (iteration == 0 ? std::string("-") : std::to_string(changes)) << " | "
       << std::setw(6) << n_active << " |";
-    if (friction)
-      s << " " << std::setw(5) << friction->n_stick << " | " << std::setw(5) << friction->n_slip
-        << " | " << std::setw(7)
-        << (iteration == 0 ? std::string("-") : std::to_string(friction->changes)) << " |";
+    s << contact_cells;
     if (linear_iterations)
       s << " " << std::setw(7)
         << (iteration == 0 ? std::string("-") : std::to_string(*linear_iterations)) << " |";

@@ -4,6 +4,7 @@
 
 #include <deal.II/base/point.h>
 
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -52,8 +53,16 @@ namespace contact_fem
       s << scientific(value, 4);
     return s.str();
   }
-  /// "(x, y)" or "(x, y, z)" with 8 significant digits, for messages
-  /// (denormal coordinates print as 0).
+  /// Where the origin of the computing frame lies in the user's (mesh
+  /// file's) coordinates: a mesh far from the origin is computed moved next
+  /// to it (ModelFrame). Set once the mesh file is read; the contact room
+  /// reports positions of the computing frame, and messages add this to
+  /// speak in the user's coordinates.
+  inline std::array<double, 3> message_origin{};
+
+  /// "(x, y)" or "(x, y, z)" of a point of the computing frame, in the
+  /// user's coordinates, with 8 significant digits, for messages (denormal
+  /// coordinates print as 0).
   template <int dim>
   std::string
   coordinates_text(const dealii::Point<dim> &p)
@@ -61,7 +70,10 @@ namespace contact_fem
     std::ostringstream text;
     text << std::setprecision(8) << "(";
     for (unsigned int d = 0; d < dim; ++d)
-      text << (d > 0 ? ", " : "") << (std::abs(p[d]) < 1e-300 ? 0. : p[d]);
+      {
+        const double x = p[d] + message_origin[d];
+        text << (d > 0 ? ", " : "") << (std::abs(x) < 1e-300 ? 0. : x);
+      }
     text << ")";
     return text.str();
   }
@@ -72,6 +84,22 @@ namespace contact_fem
   {
     std::ostringstream s;
     s << std::setprecision(digits) << value;
+    return s.str();
+  }
+
+  /// A force (a net reaction, a load, a contact force), or "0 (...)" when
+  /// it is below 1e-10 of the forces of the scene: displacement-driven
+  /// scenes have no net reaction, and the round-off left (1e-15 serial,
+  /// 9e-16 on two ranks in kratos_patch_01; any sign) must not be printed
+  /// as a number.
+  inline std::string
+  force_text(const double force, const double force_scale)
+  {
+    std::ostringstream s;
+    if (std::abs(force) < 1e-10 * force_scale)
+      s << "0 (< 1e-10 of the forces)";
+    else
+      s << force;
     return s.str();
   }
 } // namespace contact_fem

@@ -14,6 +14,23 @@ namespace contact_fem
 {
   using namespace dealii;
 
+  /// An entry of a Gmsh file's $PhysicalNames.
+  struct PhysicalName
+  {
+    int         dimension = 0;
+    int         tag       = 0;
+    std::string name;
+  };
+
+  /// What read_gmsh() found beside the mesh.
+  struct MeshFileInfo
+  {
+    /// The origin of the computing frame in the file's coordinates
+    /// (choose_frame_origin(); zero for a mesh near the origin).
+    Point<3> frame_origin;
+    std::vector<PhysicalName> physical_names;
+  };
+
   /**
    * Reads the Gmsh file @p file into @p coarse after a scan of its text:
    * ASCII (MSH 1, 2.x, 4.x), complete (every section closed, the announced
@@ -26,28 +43,14 @@ namespace contact_fem
    * a 3D mesh as an unknown element type, accept triangles only to crash
    * later in p4est, and take collapsed or twisted hexahedra.
    *
+   * A mesh far from the origin is read moved next to it (ModelFrame): the
+   * returned frame_origin says by how much.
+   *
    * Implemented in source/mesh_file.cc.
    */
   template <int dim>
-  void
+  MeshFileInfo
   read_gmsh(const std::string &file, Triangulation<dim> &coarse);
-
-  /**
-   * For messages of a failure in deal.II's geometry: if the points
-   * @p vertices lie more than 1e3 times their extent from the origin, a
-   * sentence saying so (deal.II computes cell measures and the pull-backs of
-   * curved manifolds from absolute coordinates, which lose the digits of
-   * small cells far out); otherwise empty.
-   */
-  template <int spacedim>
-  std::string
-  far_from_origin_hint(const std::vector<Point<spacedim>> &vertices);
-
-  /// The same for the vertices of the coarse cells of @p tria (a failed
-  /// refinement may leave unfinished ones); empty for an empty mesh.
-  template <int dim>
-  std::string
-  far_from_origin_hint(const Triangulation<dim> &tria);
 
   /**
    * Throws if a body (material id) of @p coarse is cut by an internal

@@ -8,6 +8,7 @@
 
 #include <contact_fem/geometry/boundary_manifolds.h>
 #include <contact_fem/geometry/mesh_file.h>
+#include <contact_fem/geometry/model_frame.h>
 
 #include <memory>
 #include <set>
@@ -140,11 +141,16 @@ namespace contact_fem
 
     std::string  type;
     std::string  mesh_file;
+    /// Where the mesh is computed (a mesh file far from the origin is moved
+    /// next to it on reading); the keys of the input stay in the user's
+    /// coordinates and go through it.
+    ModelFrame<dim> frame;
     unsigned int global_refinements = 0;
     double       distortion         = 0.;
 
     /// Geometry/Local refinements: cells whose centre lies in the box are
-    /// refined 'rounds' times (after the global refinements).
+    /// refined 'rounds' times (after the global refinements). In the user's
+    /// coordinates.
     struct RefinementBox
     {
       unsigned int rounds = 0;
@@ -157,9 +163,10 @@ namespace contact_fem
     refine_boxes(parallel::distributed::Triangulation<dim> &tria) const;
 
   private:
-    /// Reads and checks the mesh file into coarse_mesh.
+    /// Reads and checks the mesh file into coarse_mesh; its physical names
+    /// replace the ids they stand for in @p prm (PhysicalNames).
     void
-    read_mesh_file();
+    read_mesh_file(ParameterHandler &prm);
     /// The mesh file's coarse mesh with its manifolds, into @p tria.
     void
     create_from_mesh_file(parallel::distributed::Triangulation<dim> &tria) const;
@@ -175,7 +182,8 @@ namespace contact_fem
     create_contact_blocks(parallel::distributed::Triangulation<dim> &tria) const;
 
   public:
-    /// Geometry/Manifolds: the surfaces of boundary ids of a mesh file.
+    /// Geometry/Manifolds: the surfaces of boundary ids of a mesh file, in
+    /// the computing frame (the entries' text in the user's coordinates).
     std::vector<BoundaryManifold<dim>> manifolds;
     /// The coarse mesh of a mesh file, read and checked by
     /// parse_parameters(), with the manifold ids set; released by

@@ -324,11 +324,11 @@ namespace contact_fem
                       std::vector<std::vector<int>> &sets_of_iteration) const;
 
     /// Whether every cycle solves the whole load path from the unloaded
-    /// state: with friction, whose answer depends on the path.
+    /// state: with a formulation whose answer depends on the path.
     bool
     resolves_load_path() const
     {
-      return contact && contact->frictional();
+      return contact && contact->path_dependent();
     }
 
     /// Adds a cell's matrix and load when the test space differs from the
@@ -497,14 +497,6 @@ namespace contact_fem
     // --- results (contact_output.cc)
     Json
     contact_results() const;
-    /// Friction totals of the active slave nodes (normal and tangential
-    /// contact force, their ratio, the force vector, largest tangential
-    /// traction and slip increment) into the contact results.
-    void
-    add_friction_results(Json &result) const;
-    /// Prints the friction totals and the balance per direction.
-    void
-    print_friction_results(const Json &contact_json, const Json &reaction) const;
     /// Prints the comparison with the Hertz sphere (analytical_results()).
     void
     print_hertz_sphere_results(const Json &hertz) const;
@@ -623,8 +615,10 @@ namespace contact_fem
     std::vector<double>                    step_start_displacement;
     /// The search reaches this many times the motion it is sized for.
     static constexpr double                search_growth = 1.5;
-    /// A point names a vertex closer than this times the cell's diameter.
-    static constexpr double                vertex_match_tolerance = 1e-8;
+    /// A point names a vertex closer than this times the cell's diameter
+    /// (far above the digits a user types, far below the distance of two
+    /// vertices of a valid cell).
+    static constexpr double                vertex_match_tolerance = 1e-3;
     /// A direct solve whose residual exceeds this fraction of the
     /// right-hand side has met a singular matrix.
     static constexpr double                singular_residual_ratio = 1e-3;

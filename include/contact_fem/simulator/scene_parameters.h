@@ -106,6 +106,20 @@ namespace contact_fem
       return std::hypot(x - center, y - center_y);
     }
 
+    /// Takes the centre and the 2D reference profile (functions of x) into
+    /// the computing frame whose origin lies at (@p x0, @p y0) of the
+    /// user's coordinates (ModelFrame); the 3D profile is a function of the
+    /// distance from the axis, which does not move.
+    void
+    move_origin(const double x0, const double y0, const unsigned int dim)
+    {
+      center -= x0;
+      center_y -= y0;
+      if (dim == 2)
+        for (auto &row : reference_pressure_profile)
+          row.first -= x0;
+    }
+
     /// The reference pressure at @p x: linear between the rows, zero
     /// outside their range.
     double

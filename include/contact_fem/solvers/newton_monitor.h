@@ -46,27 +46,23 @@ namespace contact_fem
            const unsigned int changes,
            const bool         searched_again);
 
-    /// The header of the table; with @p frictional also the stick and
-    /// slip counts and the stick/slip changes (part of all changes); with
-    /// @p iterative the Krylov iterations of the linear solve.
+    /// The header of the table; with @p contact_cells the contact
+    /// formulation's own columns (ContactFormulation::iteration_header(),
+    /// e.g. the stick and slip counts of friction); with @p iterative the
+    /// Krylov iterations of the linear solve.
     static std::string
-    header(const bool frictional, const bool iterative);
+    header(const std::string &contact_cells, const bool iterative);
 
-    /// The friction cells of a row.
-    struct FrictionCounts
-    {
-      unsigned int n_stick = 0, n_slip = 0, changes = 0;
-    };
-
-    /// The row of @p iteration for the last assess(); with @p friction
-    /// (frictional formulations) its cells too, and with
-    /// @p linear_iterations (an iterative linear solver) those.
+    /// The row of @p iteration for the last assess(), with the contact
+    /// formulation's own @p contact_cells (ContactFormulation::
+    /// iteration_cells()) and with @p linear_iterations (an iterative
+    /// linear solver) those.
     std::string
     row(const unsigned int                 iteration,
         const unsigned int                 changes,
         const unsigned int                 n_active,
         const Assessment                  &assessment,
-        const FrictionCounts              *friction          = nullptr,
+        const std::string                 &contact_cells     = "",
         const std::optional<unsigned int> &linear_iterations = std::nullopt) const;
 
     /// The equilibrium residual at which an iterate is accepted: the

@@ -10,10 +10,9 @@
 namespace contact_fem
 {
   template <int dim>
-  AlmFrictional<dim>::AlmFrictional(ParameterHandler &prm)
-    : FrictionlessFormulation<dim>(
-        FrictionlessFormulation<dim>::Parameters::parse_for_exact_gap(prm, "alm frictional"))
-    , laws(FrictionParameters::parse_laws(prm))
+  AlmFrictional<dim>::AlmFrictional(ParameterHandler &prm, const FrictionParameters &friction)
+    : Base(friction,
+           FrictionlessFormulation<dim>::Parameters::parse_for_exact_gap(prm, "alm frictional"))
   {
     AssertThrow(dim == 2,
                 ExcMessage("Contact/Formulation = alm frictional: friction is implemented in "
@@ -23,24 +22,16 @@ namespace contact_fem
                            "'coulomb 0.2' or 'tresca 0.01' (or per pair '3: coulomb 0.2'); "
                            "for frictionless contact use Contact/Formulation = alm "
                            "frictionless."));
-    prm.enter_subsection("Contact");
-    pure_slip = prm.get_bool("Pure slip");
-    prm.leave_subsection();
   }
 
   template <int dim>
   void
   AlmFrictional<dim>::initialize(const ContactInterface<dim> &interface)
   {
-    FrictionlessFormulation<dim>::initialize(interface);
+    Base::initialize(interface);
     const unsigned int n = interface.nodes.size();
-    tangential.assign(n, 0.);
-    sets.initialize(interface);
     released_pressure.assign(n, 0.);
-    released_tangential.assign(n, 0.);
-    converged_displacement.assign(interface.dofs().size(), 0.);
-    last_step_slip.assign(n, 0.);
-    last_stick_slip_changes = 0;
+    released_tangential.assign(n, TangentialVector<dim>());
   }
 
   template <int dim>
@@ -59,7 +50,7 @@ namespace contact_fem
                                     const double     augmented_pressure,
                                     const double     xi) const
   {
-    const double trial = tangential[s.node] - this->penalty[s.pair] * xi;
+    const double trial = tangential[s.node][0] - this->penalty[s.pair] * xi;
     const int    sign  = trial >= 0. ? 1 : -1;
     if (pure_slip)
       return sign;
@@ -82,7 +73,7 @@ namespace contact_fem
     const double         p = this->pressure[s.node];
     const Tensor<1, dim> n = frame_normal(s);
     return ContactFormulation<dim>::tangent(n) +
-           sets.sign[s.node] * laws[s.pair]->threshold_derivative(p) * n;
+           sets.direction[s.node][0] * laws[s.pair]->threshold_derivative(p) * n;
   }
 
   template <int dim>
@@ -128,7 +119,7 @@ namespace contact_fem
   {
     this->set_pair_scaling(interface, 1.);
     std::fill(released_pressure.begin(), released_pressure.end(), 0.);
-    std::fill(released_tangential.begin(), released_tangential.end(), 0.);
+    std::fill(released_tangential.begin(), released_tangential.end(), TangentialVector<dim>());
     auto &pressure = this->pressure;
     auto &active   = this->active;
     for (const auto &s : interface.slave_nodes)
@@ -141,11 +132,11 @@ namespace contact_fem
             released_pressure[s.node]   = pressure[s.node];
             released_tangential[s.node] = tangential[s.node];
             pressure[s.node]            = 0.;
-            tangential[s.node]          = 0.;
-            sets.sign[s.node]           = 0;
+            tangential[s.node]          = TangentialVector<dim>();
+            sets.direction[s.node]      = TangentialVector<dim>();
             continue;
           }
-        sets.sign[s.node] =
+        sets.direction[s.node][0] =
           carries_friction(interface, s) ?
             stick_or_slip(s, pressure[s.node] - this->penalty[s.pair] * g,
                           slip_increment(interface, s, u)) :
@@ -154,7 +145,7 @@ namespace contact_fem
     this->deactivate_master_nodes(interface);
     for (unsigned int n = 0; n < interface.nodes.size(); ++n)
       if (!interface.nodes[n].slave)
-        sets.sign[n] = 0;
+        sets.direction[n] = TangentialVector<dim>();
     note_pressure_dependent_slip(interface);
   }
 
@@ -260,7 +251,7 @@ namespace contact_fem
         {
           if (!carries_friction(interface, s))
             continue;
-          if (sets.sign[s.node] == 0)
+          if (sets.direction[s.node][0] == 0)
             add_stick_constraint(interface, s, fixed_values, constraints);
           else
             add_slip_constraint(interface, s, fixed_values, constraints, false);
@@ -279,7 +270,7 @@ namespace contact_fem
     for (const auto &s : interface.slave_nodes)
       if (s.paired && this->active[s.node] && carries_friction(interface, s))
         {
-          if (sets.sign[s.node] == 0)
+          if (sets.direction[s.node][0] == 0)
             add_stick_constraint(interface, s, fixed_values, constraints);
           else
             add_slip_constraint(interface, s, fixed_values, constraints, true);
@@ -310,11 +301,11 @@ namespace contact_fem
     Vector<double>                       values;
     for (const auto &s : interface.slave_nodes)
       {
-        if (!s.paired || !this->active[s.node] || sets.sign[s.node] == 0 ||
+        if (!s.paired || !this->active[s.node] || sets.direction[s.node][0] == 0 ||
             !carries_friction(interface, s) || !owned.is_element(interface.nodes[s.node].dofs[0]))
           continue;
         const double p = this->pressure[s.node];
-        const double h = sets.sign[s.node] * (laws[s.pair]->threshold(p) -
+        const double h = sets.direction[s.node][0] * (laws[s.pair]->threshold(p) -
                                               laws[s.pair]->threshold_derivative(p) * p);
         if (h == 0.)
           continue;
@@ -349,7 +340,7 @@ namespace contact_fem
         if (!s.paired || !this->active[s.node])
           {
             this->pressure[s.node] = 0.;
-            tangential[s.node]     = 0.;
+            tangential[s.node] = TangentialVector<dim>();
             continue;
           }
         const auto &slave = interface.nodes[s.node];
@@ -360,7 +351,7 @@ namespace contact_fem
             const unsigned int c   = this->eliminated_component(interface, s);
             this->pressure[s.node] = -residual[interface.position(slave.dofs[c])] /
                                      (s.D * s.normal[c]);
-            tangential[s.node] = 0.;
+            tangential[s.node] = TangentialVector<dim>();
             continue;
           }
         Tensor<1, dim> lambda;
@@ -368,7 +359,7 @@ namespace contact_fem
           lambda[d] = residual[interface.position(slave.dofs[d])] / s.D;
         const Tensor<1, dim> n = frame_normal(s);
         this->pressure[s.node] = -(lambda * n);
-        tangential[s.node]     = lambda * ContactFormulation<dim>::tangent(n);
+        tangential[s.node][0]  = lambda * ContactFormulation<dim>::tangent(n);
       }
   }
 
@@ -380,7 +371,7 @@ namespace contact_fem
     unsigned int changes    = 0;
     last_stick_slip_changes = 0;
     std::fill(released_pressure.begin(), released_pressure.end(), 0.);
-    std::fill(released_tangential.begin(), released_tangential.end(), 0.);
+    std::fill(released_tangential.begin(), released_tangential.end(), TangentialVector<dim>());
     auto &pressure = this->pressure;
     auto &active   = this->active;
     for (const auto &s : interface.slave_nodes)
@@ -396,8 +387,8 @@ namespace contact_fem
             released_pressure[s.node]   = pressure[s.node];
             released_tangential[s.node] = tangential[s.node];
             pressure[s.node]            = 0.;
-            tangential[s.node]          = 0.;
-            sets.sign[s.node]           = 0;
+            tangential[s.node]          = TangentialVector<dim>();
+            sets.direction[s.node]      = TangentialVector<dim>();
             active[s.node]              = false;
             continue;
           }
@@ -405,12 +396,12 @@ namespace contact_fem
                            stick_or_slip(s, augmented, slip_increment(interface, s, u)) :
                            0;
         // Under a law without friction the sign changes nothing.
-        if (active[s.node] && sign != sets.sign[s.node] && !frictionless_law(s))
+        if (active[s.node] && sign != sets.direction[s.node][0] && !frictionless_law(s))
           {
             ++changes;
             ++last_stick_slip_changes;
           }
-        sets.sign[s.node] = sign;
+        sets.direction[s.node][0] = sign;
         active[s.node]    = true;
       }
     note_pressure_dependent_slip(interface);
@@ -433,7 +424,7 @@ namespace contact_fem
         if (!this->active[s.node])
           {
             const double rn = released_pressure[s.node] / k;
-            const double rt = released_tangential[s.node] / k;
+            const double rt = released_tangential[s.node][0] / k;
             sum += rn * rn + rt * rt;
             continue;
           }
@@ -442,10 +433,10 @@ namespace contact_fem
         if (carries_friction(interface, s))
           {
             const double p  = this->pressure[s.node];
-            const double rt = sets.sign[s.node] == 0 ?
+            const double rt = sets.direction[s.node][0] == 0 ?
                                 slip_increment(interface, s, u) :
-                                (tangential[s.node] -
-                                 sets.sign[s.node] * laws[s.pair]->threshold(p)) /
+                                (tangential[s.node][0] -
+                                 sets.direction[s.node][0] * laws[s.pair]->threshold(p)) /
                                   k;
             sum += rt * rt;
           }
@@ -463,35 +454,14 @@ namespace contact_fem
   }
 
   template <int dim>
-  unsigned int
-  AlmFrictional<dim>::n_stick() const
-  {
-    return sets.n_stick(this->active);
-  }
-
-  template <int dim>
-  unsigned int
-  AlmFrictional<dim>::n_slip() const
-  {
-    return sets.n_slip(this->active);
-  }
-
-  template <int dim>
-  std::vector<int>
-  AlmFrictional<dim>::contact_sets() const
-  {
-    return sets.codes(this->active);
-  }
-
-  template <int dim>
   void
   AlmFrictional<dim>::accept_load_step(const ContactInterface<dim> &interface,
                                        const std::vector<double>   &u)
   {
-    std::fill(last_step_slip.begin(), last_step_slip.end(), 0.);
+    std::fill(last_step_slip.begin(), last_step_slip.end(), TangentialVector<dim>());
     for (const auto &s : interface.slave_nodes)
       if (s.paired)
-        last_step_slip[s.node] = slip_increment(interface, s, u);
+        last_step_slip[s.node][0] = slip_increment(interface, s, u);
     converged_displacement = u;
   }
 
@@ -499,17 +469,28 @@ namespace contact_fem
   void
   AlmFrictional<dim>::print_results(const ContactInterface<dim> &interface,
                                     const std::vector<double> &,
+                                    const Json   &contact,
+                                    const Json   &reaction,
                                     std::ostream &out) const
+  {
+    print_cone_check(interface, out);
+    print_friction_totals(contact, reaction, dim, out);
+  }
+
+  template <int dim>
+  void
+  AlmFrictional<dim>::print_cone_check(const ContactInterface<dim> &interface,
+                                       std::ostream                &out) const
   {
     double largest_bound = 0., off_bound = 0., outside = 0.;
     for (const auto &s : interface.slave_nodes)
       if (s.paired && this->active[s.node] && carries_friction(interface, s))
         {
           const double bound = laws[s.pair]->threshold(this->pressure[s.node]);
-          const double t     = tangential[s.node];
+          const double t     = tangential[s.node][0];
           largest_bound      = std::max(largest_bound, bound);
-          if (sets.sign[s.node] != 0)
-            off_bound = std::max(off_bound, std::abs(t - sets.sign[s.node] * bound));
+          if (sets.direction[s.node][0] != 0)
+            off_bound = std::max(off_bound, std::abs(t - sets.direction[s.node][0] * bound));
           else
             outside = std::max(outside, std::abs(t) - bound);
         }
@@ -555,12 +536,10 @@ namespace contact_fem
   AlmFrictional<dim>::add_results(const ContactInterface<dim> &interface, Json &contact) const
   {
     FrictionlessFormulation<dim>::add_results(interface, contact);
-    Json law_names = Json::array();
-    for (const auto &law : laws)
-      law_names.push(law->description());
-    contact.set("friction", law_names)
+    contact.set("friction", this->law_names())
       .set("stick_nodes", n_stick())
       .set("slip_nodes", n_slip());
+    add_friction_totals(interface, *this, last_step_slip, contact);
   }
 
   template class AlmFrictional<2>;

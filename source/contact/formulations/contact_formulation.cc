@@ -11,14 +11,19 @@ namespace contact_fem
 {
   namespace
   {
-    /// The registry: a formulation's .prm name, how to declare its own keys,
-    /// and how to make it. A new formulation adds one entry.
+    /// The registry: a formulation's .prm name, the shared keys it reads
+    /// besides its own, how to declare its own keys, and how to make it. A
+    /// new formulation adds one entry.
     template <int dim>
     struct Registered
     {
-      std::string                                                        name;
-      std::function<void(ParameterHandler &)>                            declare;
-      std::function<std::unique_ptr<ContactFormulation<dim>>(ParameterHandler &)> create;
+      std::string name;
+      bool        takes_friction;           ///< Contact/Friction, Pure slip
+      bool        takes_tangential_penalty; ///< Contact/Tangential penalty
+      std::function<void(ParameterHandler &)> declare;
+      std::function<std::unique_ptr<ContactFormulation<dim>>(ParameterHandler &,
+                                                             const FrictionParameters &)>
+        create;
     };
 
     template <int dim>
@@ -26,24 +31,32 @@ namespace contact_fem
     registry()
     {
       return {{"alm frictionless",
+               false,
+               false,
                [](ParameterHandler &) {},
-               [](ParameterHandler &prm) {
+               [](ParameterHandler &prm, const FrictionParameters &) {
                  return std::make_unique<AlmFrictionless<dim>>(prm);
                }},
               {"penalty frictionless",
+               false,
+               false,
                PenaltyFrictionless<dim>::declare_parameters,
-               [](ParameterHandler &prm) {
+               [](ParameterHandler &prm, const FrictionParameters &) {
                  return std::make_unique<PenaltyFrictionless<dim>>(prm);
                }},
               {"alm frictional",
+               true,
+               false,
                [](ParameterHandler &) {},
-               [](ParameterHandler &prm) {
-                 return std::make_unique<AlmFrictional<dim>>(prm);
+               [](ParameterHandler &prm, const FrictionParameters &friction) {
+                 return std::make_unique<AlmFrictional<dim>>(prm, friction);
                }},
               {"penalty frictional",
+               true,
+               true,
                PenaltyFrictional<dim>::declare_parameters,
-               [](ParameterHandler &prm) {
-                 return std::make_unique<PenaltyFrictional<dim>>(prm);
+               [](ParameterHandler &prm, const FrictionParameters &friction) {
+                 return std::make_unique<PenaltyFrictional<dim>>(prm, friction);
                }}};
     }
   } // namespace
@@ -77,6 +90,8 @@ namespace contact_fem
   void
   ContactFormulation<dim>::print_results(const ContactInterface<dim> &,
                                          const std::vector<double> &,
+                                         const Json &,
+                                         const Json &,
                                          std::ostream &) const
   {}
 
@@ -155,23 +170,28 @@ namespace contact_fem
     for (const auto &entry : registry<dim>())
       if (entry.name == name)
         {
-          auto formulation = entry.create(prm);
-          // A law the formulation would ignore is a mistake worth a message.
+          // The shared friction keys are read here, once, for the
+          // formulations that take them.
+          FrictionParameters friction;
+          if (entry.takes_friction)
+            friction.parse_parameters(prm);
+          auto formulation = entry.create(prm, friction);
+          // A key the formulation would ignore is a mistake worth a message.
           prm.enter_subsection("Contact");
           const bool friction_given = !Utilities::trim(prm.get("Friction")).empty();
           const bool pure_slip      = prm.get_bool("Pure slip");
           const bool tangential_penalty_given =
             Utilities::trim(prm.get("Tangential penalty")) != "auto";
           prm.leave_subsection();
-          AssertThrow(formulation->frictional() || !pure_slip,
+          AssertThrow(entry.takes_friction || !pure_slip,
                       ExcMessage("Contact/Pure slip = true, but Contact/Formulation = " + name +
                                  " has no friction: the key concerns the frictional "
                                  "formulations only."));
-          AssertThrow(name == "penalty frictional" || !tangential_penalty_given,
+          AssertThrow(entry.takes_tangential_penalty || !tangential_penalty_given,
                       ExcMessage("Contact/Tangential penalty is set, but only Contact/"
                                  "Formulation = penalty frictional has a tangential penalty (" +
                                  name + " would ignore it)."));
-          AssertThrow(formulation->frictional() || !friction_given,
+          AssertThrow(entry.takes_friction || !friction_given,
                       ExcMessage("Contact/Friction is set, but Contact/Formulation = " + name +
                                  " has no friction: use a frictional formulation (" +
                                  "alm frictional, penalty frictional), or leave " +

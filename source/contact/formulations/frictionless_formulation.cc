@@ -9,31 +9,27 @@
 
 namespace contact_fem
 {
-  namespace
+  double
+  parse_auto_or_positive(const std::string &text, const std::string &key)
   {
-    double
-    parse_auto_or_positive(const std::string &text, const std::string &key)
-    {
-      if (Utilities::trim(text) == "auto")
-        return 0.;
-      double value = -1.;
-      try
-        {
-          std::size_t pos = 0;
-          value           = std::stod(Utilities::trim(text), &pos);
-          if (pos != Utilities::trim(text).size())
-            value = -1.;
-        }
-      catch (...)
-        {
+    if (Utilities::trim(text) == "auto")
+      return 0.;
+    double value = -1.;
+    try
+      {
+        std::size_t pos = 0;
+        value           = std::stod(Utilities::trim(text), &pos);
+        if (pos != Utilities::trim(text).size())
           value = -1.;
-        }
-      AssertThrow(value > 0. && std::isfinite(value),
-                  ExcMessage(key + ": got '" + text +
-                             "'; expected 'auto' or a number > 0."));
-      return value;
-    }
-  } // namespace
+      }
+    catch (...)
+      {
+        value = -1.;
+      }
+    AssertThrow(value > 0. && std::isfinite(value),
+                ExcMessage(key + ": got '" + text + "'; expected 'auto' or a number > 0."));
+    return value;
+  }
 
   template <int dim>
   void

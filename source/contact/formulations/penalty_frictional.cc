@@ -12,30 +12,6 @@ namespace contact_fem
 {
   namespace
   {
-    /// 'auto' (0) or a finite number > 0, else an error naming @p key.
-    double
-    parse_auto_or_positive(const std::string &text, const std::string &key)
-    {
-      const std::string trimmed = Utilities::trim(text);
-      if (trimmed == "auto")
-        return 0.;
-      double value = -1.;
-      try
-        {
-          std::size_t pos = 0;
-          value           = std::stod(trimmed, &pos);
-          if (pos != trimmed.size())
-            value = -1.;
-        }
-      catch (...)
-        {
-          value = -1.;
-        }
-      AssertThrow(value > 0. && std::isfinite(value),
-                  ExcMessage(key + ": got '" + text + "'; expected 'auto' or a number > 0."));
-      return value;
-    }
-
     /// Contact/Adaptive penalty must be off: the adapted normal penalty
     /// would enter the slip bound and the tangential penalty node by node.
     ParameterHandler &
@@ -71,9 +47,9 @@ namespace contact_fem
   }
 
   template <int dim>
-  PenaltyFrictional<dim>::PenaltyFrictional(ParameterHandler &prm)
-    : PenaltyFrictionless<dim>(refuse_adaptive_penalty(prm))
-    , laws(FrictionParameters::parse_laws(prm))
+  PenaltyFrictional<dim>::PenaltyFrictional(ParameterHandler         &prm,
+                                            const FrictionParameters &friction)
+    : Base(friction, refuse_adaptive_penalty(prm))
   {
     AssertThrow(dim == 2,
                 ExcMessage("Contact/Formulation = penalty frictional: friction is implemented "
@@ -84,7 +60,6 @@ namespace contact_fem
                            "0.2'); for frictionless contact use Contact/Formulation = "
                            "penalty frictionless."));
     prm.enter_subsection("Contact");
-    pure_slip          = prm.get_bool("Pure slip");
     tangential_penalty = parse_auto_or_positive(prm.get("Tangential penalty"),
                                                 "Contact/Tangential penalty");
     prm.leave_subsection();
@@ -94,14 +69,8 @@ namespace contact_fem
   void
   PenaltyFrictional<dim>::initialize(const ContactInterface<dim> &interface)
   {
-    PenaltyFrictionless<dim>::initialize(interface);
-    const unsigned int n = interface.nodes.size();
-    tangential.assign(n, 0.);
-    accepted_tangential.assign(n, 0.);
-    sets.initialize(interface);
-    last_step_slip.assign(n, 0.);
-    converged_displacement.assign(interface.dofs().size(), 0.);
-    last_stick_slip_changes = 0;
+    Base::initialize(interface);
+    accepted_tangential.assign(interface.nodes.size(), TangentialVector<dim>());
   }
 
   template <int dim>
@@ -133,7 +102,7 @@ namespace contact_fem
   int
   PenaltyFrictional<dim>::stick_or_slip(const SlaveNode &s, const double p, const double xi) const
   {
-    const double trial = accepted_tangential[s.node] - tangent_penalty[s.pair] * xi;
+    const double trial = accepted_tangential[s.node][0] - tangent_penalty[s.pair] * xi;
     const int    sign  = trial >= 0. ? 1 : -1;
     if (pure_slip || frictionless_law(s))
       return sign;
@@ -149,7 +118,7 @@ namespace contact_fem
                                               const double     xi) const
   {
     if (sign == 0)
-      return accepted_tangential[s.node] - tangent_penalty[s.pair] * xi;
+      return accepted_tangential[s.node][0] - tangent_penalty[s.pair] * xi;
     return sign * laws[s.pair]->threshold(std::max(p, 0.));
   }
 
@@ -166,8 +135,8 @@ namespace contact_fem
     for (unsigned int n = 0; n < interface.nodes.size(); ++n)
       if (!this->active[n])
         {
-          tangential[n] = 0.;
-          sets.sign[n]  = 0;
+          tangential[n]     = TangentialVector<dim>();
+          sets.direction[n] = TangentialVector<dim>();
         }
     for (const auto &s : interface.slave_nodes)
       {
@@ -175,8 +144,8 @@ namespace contact_fem
           continue;
         if (!carries_friction(interface, s))
           {
-            tangential[s.node] = 0.;
-            sets.sign[s.node]  = 0;
+            tangential[s.node]     = TangentialVector<dim>();
+            sets.direction[s.node] = TangentialVector<dim>();
             continue;
           }
         // The elastic predictor: every node starts the step sticking (a node
@@ -184,7 +153,7 @@ namespace contact_fem
         // would decide); the first solve tells which slip, and which way.
         // A law without friction, or Pure slip, slips at once.
         const double g = interface.gap(s, u);
-        sets.sign[s.node] =
+        sets.direction[s.node][0] =
           pure_slip || frictionless_law(s) ?
             stick_or_slip(s, this->penalty[s.pair] * (-g), slip_increment(interface, s, u)) :
             0;
@@ -199,7 +168,7 @@ namespace contact_fem
                                        DynamicSparsityPattern          &pattern) const
   {
     const bool any_friction = std::any_of(laws.begin(), laws.end(), [](const auto &law) {
-      return law->threshold(1.) != 0. || law->threshold_derivative(1.) != 0.;
+      return !law->frictionless();
     });
     if (!any_friction)
       {
@@ -239,7 +208,7 @@ namespace contact_fem
         if (!this->active[s.node] || !carries_friction(interface, s) ||
             !owned.is_element(interface.nodes[s.node].dofs[0]))
           continue;
-        const int sign = sets.sign[s.node];
+        const int sign = sets.direction[s.node][0];
         if (sign != 0 && frictionless_law(s))
           continue; // T = 0: the frictionless system
         this->gap_gradient(interface, s, dofs, g_gradient);
@@ -252,7 +221,8 @@ namespace contact_fem
             const double eps_t = tangent_penalty[s.pair];
             // grad xi . u_n: the slip reference.
             const double xi_reference = -slip_increment(interface, s, zero);
-            const double load         = s.D * (accepted_tangential[s.node] + eps_t * xi_reference);
+            const double load =
+              s.D * (accepted_tangential[s.node][0] + eps_t * xi_reference);
             for (unsigned int a = 0; a < n; ++a)
               {
                 for (unsigned int b = 0; b < n; ++b)
@@ -295,8 +265,8 @@ namespace contact_fem
           continue;
         if (!this->active[s.node] || !carries_friction(interface, s))
           {
-            tangential[s.node] = 0.;
-            sets.sign[s.node]  = 0;
+            tangential[s.node]     = TangentialVector<dim>();
+            sets.direction[s.node] = TangentialVector<dim>();
             continue;
           }
         const double p    = this->pressure[s.node];
@@ -305,17 +275,17 @@ namespace contact_fem
         // A slipping node reverses through stick: its slip solve overshoots
         // (with eps_t ~ 1e4 E/h a node that should stick swings from one
         // bound to the other, period 2, if the sign may flip directly).
-        if (was_active[s.node] && sets.sign[s.node] != 0 && sign == -sets.sign[s.node] &&
-            !pure_slip && !frictionless_law(s))
+        if (was_active[s.node] && sets.direction[s.node][0] != 0 &&
+            sign == -sets.direction[s.node][0] && !pure_slip && !frictionless_law(s))
           sign = 0;
         // Under a law without friction the sign changes nothing.
-        if (was_active[s.node] && sign != sets.sign[s.node] && !frictionless_law(s))
+        if (was_active[s.node] && sign != sets.direction[s.node][0] && !frictionless_law(s))
           {
             ++changes;
             ++last_stick_slip_changes;
           }
-        sets.sign[s.node]  = sign;
-        tangential[s.node] = tangential_traction(s, sign, p, xi);
+        sets.direction[s.node][0] = sign;
+        tangential[s.node][0] = tangential_traction(s, sign, p, xi);
       }
     return changes;
   }
@@ -330,7 +300,7 @@ namespace contact_fem
     Residuals result = PenaltyFrictionless<dim>::residuals(interface, u);
     for (const auto &s : interface.slave_nodes)
       {
-        const double t = tangential[s.node];
+        const double t = tangential[s.node][0];
         if (!s.paired || !this->active[s.node] || t == 0.)
           continue;
         const Tensor<1, dim> tau = ContactFormulation<dim>::tangent(s.normal);
@@ -346,35 +316,14 @@ namespace contact_fem
   }
 
   template <int dim>
-  unsigned int
-  PenaltyFrictional<dim>::n_stick() const
-  {
-    return sets.n_stick(this->active);
-  }
-
-  template <int dim>
-  unsigned int
-  PenaltyFrictional<dim>::n_slip() const
-  {
-    return sets.n_slip(this->active);
-  }
-
-  template <int dim>
-  std::vector<int>
-  PenaltyFrictional<dim>::contact_sets() const
-  {
-    return sets.codes(this->active);
-  }
-
-  template <int dim>
   void
   PenaltyFrictional<dim>::accept_load_step(const ContactInterface<dim> &interface,
                                            const std::vector<double>   &u)
   {
-    last_step_slip.assign(interface.nodes.size(), 0.);
+    last_step_slip.assign(interface.nodes.size(), TangentialVector<dim>());
     for (const auto &s : interface.slave_nodes)
       if (s.paired)
-        last_step_slip[s.node] = slip_increment(interface, s, u);
+        last_step_slip[s.node][0] = slip_increment(interface, s, u);
     converged_displacement = u;
     accepted_tangential    = tangential;
   }
@@ -412,22 +361,31 @@ namespace contact_fem
                                       Json                        &contact) const
   {
     PenaltyFrictionless<dim>::add_results(interface, contact);
-    Json law_names = Json::array();
-    for (const auto &law : laws)
-      law_names.push(law->description());
-    contact.set("friction", law_names)
+    contact.set("friction", this->law_names())
       .set("tangential_penalty", tangent_penalty.empty() ? 0. : tangent_penalty[0])
       .set("stick_nodes", n_stick())
       .set("slip_nodes", this->n_active() - n_stick());
+    add_friction_totals(interface, *this, last_step_slip, contact);
   }
 
   template <int dim>
   void
   PenaltyFrictional<dim>::print_results(const ContactInterface<dim> &interface,
                                         const std::vector<double>   &u,
+                                        const Json                  &contact,
+                                        const Json                  &reaction,
                                         std::ostream                &out) const
   {
-    PenaltyFrictionless<dim>::print_results(interface, u, out);
+    PenaltyFrictionless<dim>::print_results(interface, u, contact, reaction, out);
+    print_slip_checks(interface, out);
+    print_friction_totals(contact, reaction, dim, out);
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictional<dim>::print_slip_checks(const ContactInterface<dim> &interface,
+                                            std::ostream                &out) const
+  {
     // sum_j D_j t_j and sum_j D_j p_j over the active nodes; with a single
     // Coulomb law (T(0) = 0) and every active node slipping one way their
     // ratio is mu up to round-off.
@@ -437,13 +395,13 @@ namespace contact_fem
     for (const auto &s : interface.slave_nodes)
       if (s.paired && this->active[s.node])
         {
-          tangential_force += s.D * tangential[s.node];
+          tangential_force += s.D * tangential[s.node][0];
           normal_force += s.D * this->pressure[s.node];
-          if (sets.sign[s.node] == 0 || !carries_friction(interface, s))
+          if (sets.direction[s.node][0] == 0 || !carries_friction(interface, s))
             all_slip = false;
           else if (common_sign == 0)
-            common_sign = sets.sign[s.node];
-          else if (sets.sign[s.node] != common_sign)
+            common_sign = sets.direction[s.node][0];
+          else if (sets.direction[s.node][0] != common_sign)
             one_way = false;
         }
     // A stick node moves |t| / eps_t elastically: the tangential analogue
@@ -454,7 +412,7 @@ namespace contact_fem
     double elastic_slip = 0.;
     for (const auto &s : interface.slave_nodes)
       if (sets.sticks(s.node, this->active) && carries_friction(interface, s))
-        elastic_slip = std::max(elastic_slip, std::abs(tangential[s.node]) /
+        elastic_slip = std::max(elastic_slip, std::abs(tangential[s.node][0]) /
                                                 tangent_penalty[s.pair] / s.size);
     constexpr double allowed_elastic_slip = 1e-2;
     out << "    largest elastic slip / h:     " << value_or_ok(elastic_slip, 1e-6)
@@ -467,8 +425,7 @@ namespace contact_fem
              "Contact/Tangential penalty (auto: that of the normal penalty) or use "
              "alm frictional."
           << std::endl;
-    // The forces themselves are printed by the driver with every
-    // frictional formulation's results; here only the slip check.
+    // The forces themselves are printed by print_friction_totals().
     if (normal_force == 0.)
       return;
     const double ratio = tangential_force / normal_force;

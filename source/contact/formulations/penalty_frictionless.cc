@@ -233,7 +233,9 @@ namespace contact_fem
   void
   PenaltyFrictionless<dim>::print_results(const ContactInterface<dim> &interface,
                                           const std::vector<double>   &u,
-                                          std::ostream                &out) const
+                                          const Json &,
+                                          const Json &,
+                                          std::ostream &out) const
   {
     if (!adaptive)
       return;

@@ -20,15 +20,9 @@ namespace contact_fem
   } // namespace
 
   std::string
-  CoulombFriction::description() const
+  FrictionalLaw::description() const
   {
-    return "coulomb " + plain(mu);
-  }
-
-  std::string
-  TrescaFriction::description() const
-  {
-    return "tresca " + plain(bound);
+    return (law_kind == Kind::coulomb ? "coulomb " : "tresca ") + plain(law_parameter);
   }
 
   std::unique_ptr<FrictionalLaw>
@@ -90,6 +84,15 @@ namespace contact_fem
                       "Frictional formulations: every active node slips (no stick "
                       "set), in the direction of its trial traction; for scenes "
                       "known to slip everywhere.");
+    prm.leave_subsection();
+  }
+
+  void
+  FrictionParameters::parse_parameters(ParameterHandler &prm)
+  {
+    laws = parse_laws(prm);
+    prm.enter_subsection("Contact");
+    pure_slip = prm.get_bool("Pure slip");
     prm.leave_subsection();
   }
 

@@ -4,9 +4,8 @@
 #ifndef contact_fem_alm_frictional_h
 #define contact_fem_alm_frictional_h
 
+#include <contact_fem/contact/formulations/frictional_formulation.h>
 #include <contact_fem/contact/formulations/frictionless_formulation.h>
-#include <contact_fem/contact/friction/frictional_law.h>
-#include <contact_fem/contact/friction/stick_slip_sets.h>
 
 namespace contact_fem
 {
@@ -46,15 +45,17 @@ namespace contact_fem
    * operators (small sliding): a load step is a physical increment.
    */
   template <int dim>
-  class AlmFrictional : public FrictionlessFormulation<dim>
+  class AlmFrictional : public FrictionalFormulation<dim, FrictionlessFormulation<dim>>
   {
+    using Base = FrictionalFormulation<dim, FrictionlessFormulation<dim>>;
+
   public:
     using typename FrictionlessFormulation<dim>::Residuals;
     using typename FrictionlessFormulation<dim>::State;
     using SlaveNode = typename ContactInterface<dim>::SlaveNode;
 
-    /// Reads the shared normal keys, Contact/Friction and Pure slip.
-    explicit AlmFrictional(ParameterHandler &prm);
+    /// Reads the shared normal keys; @p friction: the laws and Pure slip.
+    AlmFrictional(ParameterHandler &prm, const FrictionParameters &friction);
 
     void
     initialize(const ContactInterface<dim> &interface) override;
@@ -102,7 +103,8 @@ namespace contact_fem
     traction(const SlaveNode &s) const override
     {
       const Tensor<1, dim> n = frame_normal(s);
-      return -this->pressure[s.node] * n + tangential[s.node] * ContactFormulation<dim>::tangent(n);
+      return -this->pressure[s.node] * n +
+             tangential[s.node][0] * ContactFormulation<dim>::tangent(n);
     }
 
     /// The shared interface normal where the law has friction; the slave
@@ -113,44 +115,6 @@ namespace contact_fem
     {
       return sets.held[s.node] || frictionless_law(s) ? s.normal : s.interface_normal;
     }
-
-    bool
-    frictional() const override
-    {
-      return true;
-    }
-
-    bool
-    sticks(const unsigned int n) const override
-    {
-      return sets.sticks(n, this->active);
-    }
-
-    double
-    slip_increment(const ContactInterface<dim> &interface,
-                   const SlaveNode             &s,
-                   const std::vector<double>   &u) const override;
-
-    double
-    accepted_slip(const unsigned int n) const override
-    {
-      return last_step_slip[n];
-    }
-
-    unsigned int
-    n_stick() const override;
-
-    unsigned int
-    n_slip() const override;
-
-    unsigned int
-    stick_slip_changes() const override
-    {
-      return last_stick_slip_changes;
-    }
-
-    std::vector<int>
-    contact_sets() const override;
 
     void
     accept_load_step(const ContactInterface<dim> &interface,
@@ -168,14 +132,26 @@ namespace contact_fem
     void
     add_results(const ContactInterface<dim> &interface, Json &contact) const override;
 
-    /// The friction cone check: slip nodes on the bound (|t - sigma T(p)|),
-    /// stick nodes inside it (|t| - T(p)), relative to the largest bound.
+    /// The friction cone check, then the friction totals.
     void
     print_results(const ContactInterface<dim> &interface,
                   const std::vector<double>   &u,
+                  const Json                  &contact,
+                  const Json                  &reaction,
                   std::ostream                &out) const override;
 
   private:
+    /// The friction cone check: slip nodes on the bound (|t - sigma T(p)|),
+    /// stick nodes inside it (|t| - T(p)), relative to the largest bound.
+    void
+    print_cone_check(const ContactInterface<dim> &interface, std::ostream &out) const;
+
+    /// The weighted tangential slip of slave node @p s at @p u since the
+    /// last accepted load step, along the tangent of frame_normal(s).
+    double
+    slip_increment(const ContactInterface<dim> &interface,
+                   const SlaveNode             &s,
+                   const std::vector<double>   &u) const;
 
     /// The direction w = tau + sigma T'(p) n of the slip condition
     /// w . lambda = sigma (T - T' p) of slip node @p s.
@@ -196,14 +172,6 @@ namespace contact_fem
     int
     stick_or_slip(const SlaveNode &s, const double augmented_pressure, const double xi) const;
 
-    /// Whether the law of node @p s has no friction at all (mu = 0, bound 0):
-    /// its slip sign then changes nothing.
-    bool
-    frictionless_law(const SlaveNode &s) const
-    {
-      return laws[s.pair]->threshold(1.) == 0. && laws[s.pair]->threshold_derivative(1.) == 0.;
-    }
-
     /// u_j = sum_l M_jl / D_j u_l + offsets: the gap and the stick condition
     /// of node @p s, both components.
     void
@@ -221,27 +189,30 @@ namespace contact_fem
                         AffineConstraints<double>   &constraints,
                         const bool                   test) const;
 
-    std::vector<std::shared_ptr<const FrictionalLaw>> laws; ///< per pair
-    bool pure_slip = false;
+    using Base::converged_displacement;
+    using Base::frictionless_law;
+    using Base::last_step_slip;
+    using Base::last_stick_slip_changes;
+    using Base::laws;
+    using Base::n_slip;
+    using Base::n_stick;
+    using Base::pure_slip;
+    using Base::sets;
+    using Base::tangential;
 
-    std::vector<double> tangential; ///< t_j per interface node
-    StickSlipSets       sets;
     /// Whether a slip node's bound depends on its pressure (Coulomb): only
     /// then do its test functions leave the trial space (symmetric()).
-    bool                pressure_dependent_slip = false;
-    /// Interface displacement of the last accepted load step.
-    std::vector<double> converged_displacement;
-    /// Slip of every interface node in the last accepted load step.
-    std::vector<double> last_step_slip;
+    bool pressure_dependent_slip = false;
     /// Multipliers of the nodes released in the last update.
-    std::vector<double> released_pressure, released_tangential;
-    unsigned int        last_stick_slip_changes = 0;
+    std::vector<double>                released_pressure;
+    std::vector<TangentialVector<dim>> released_tangential;
 
     struct FrictionState : public State
     {
-      std::unique_ptr<State> normal;
-      std::vector<double>    tangential, converged_displacement, last_step_slip;
-      StickSlipSets          sets;
+      std::unique_ptr<State>             normal;
+      std::vector<TangentialVector<dim>> tangential, last_step_slip;
+      std::vector<double>                converged_displacement;
+      StickSlipSets<dim>                 sets;
     };
   };
 } // namespace contact_fem

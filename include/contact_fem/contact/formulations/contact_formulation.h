@@ -157,64 +157,66 @@ namespace contact_fem
     std::vector<double>
     pressures(const ContactInterface<dim> &interface) const;
 
-    /// Whether the formulation has friction: tangential multipliers,
-    /// stick/slip sets and an answer that depends on the load path (the
-    /// driver then re-solves the whole path on every mesh).
+    /// Whether the answer depends on the load path (a history such as the
+    /// slip of friction): the driver then re-solves the whole path on every
+    /// mesh.
     virtual bool
-    frictional() const
+    path_dependent() const
     {
       return false;
     }
 
-    /// Whether interface node @p n is active and sticks (frictional only).
+    /// Whether the contact traction has a tangential part (traction() is
+    /// not -p n): the driver then recovers, checks and refines with the
+    /// whole traction vector.
     virtual bool
-    sticks(const unsigned int) const
+    transmits_shear() const
     {
       return false;
     }
 
-    /// The weighted tangential slip of slave node @p s at @p u since the
-    /// last accepted load step, along tangent(s.normal) (frictional only).
-    virtual double
-    slip_increment(const ContactInterface<dim> &,
-                   const typename ContactInterface<dim>::SlaveNode &,
-                   const std::vector<double> &) const
+    /// Whether interface node @p n is active and held tangentially by the
+    /// contact (friction: it sticks): such nodes tie the bodies together.
+    virtual bool
+    held_tangentially(const unsigned int) const
     {
-      return 0.;
+      return false;
     }
 
-    /// The weighted tangential slip of interface node @p n in the last
-    /// accepted load step (frictional only; for output).
-    virtual double
-    accepted_slip(const unsigned int) const
+    /// The formulation's own cells of the Newton table (after the active
+    /// count): the header, and the row of the current iterate at
+    /// @p iteration. None by default.
+    virtual std::string
+    iteration_header() const
     {
-      return 0.;
+      return "";
     }
 
-    /// Number of active nodes that stick, and the stick/slip changes of
-    /// the last update_active_set() (part of the changes it returned).
-    virtual unsigned int
-    n_stick() const
+    virtual std::string
+    iteration_cells(const unsigned int) const
     {
-      return 0;
+      return "";
     }
 
-    /// Number of active nodes that slip (frictional only; active nodes
-    /// held tangentially by a support neither stick nor slip).
-    virtual unsigned int
-    n_slip() const
+    /// A value per interface node, named, for the pressure profile and the
+    /// VTU output (friction: tangential traction, slip, stick).
+    struct NodalField
     {
-      return 0;
+      std::string         name;
+      std::vector<double> values; ///< per interface node
+    };
+
+    /// The formulation's own nodal fields beyond the pressure. None by
+    /// default.
+    virtual std::vector<NodalField>
+    nodal_fields(const ContactInterface<dim> &) const
+    {
+      return {};
     }
 
-    virtual unsigned int
-    stick_slip_changes() const
-    {
-      return 0;
-    }
-
-    /// The contact sets of every interface node as one code each (for the
-    /// detection of a cycling iteration): by default the active set.
+    /// The contact sets of every interface node as one code each, for the
+    /// detection of a cycling iteration (friction: stick/slip cycles). Empty
+    /// (the default): no detection.
     virtual std::vector<int>
     contact_sets() const;
 
@@ -263,10 +265,16 @@ namespace contact_fem
     virtual void
     add_results(const ContactInterface<dim> &interface, Json &contact) const = 0;
 
-    /// Prints the formulation's own checks of the results, if any.
+    /// Prints the formulation's own checks and results, if any, after the
+    /// driver's contact results: @p contact is what add_results() (and the
+    /// driver) wrote, @p reaction the run's reaction results (force_scale,
+    /// applied_load_components, support_reaction_components,
+    /// relative_imbalance_components).
     virtual void
     print_results(const ContactInterface<dim> &interface,
                   const std::vector<double>   &u,
+                  const Json                  &contact,
+                  const Json                  &reaction,
                   std::ostream                &out) const;
 
     /// Declares the parameters of every registered formulation.

@@ -8,6 +8,11 @@
 
 namespace contact_fem
 {
+  /// 'auto' (0) or a finite number > 0 (a penalty or scale key), else an
+  /// error naming @p key.
+  double
+  parse_auto_or_positive(const std::string &text, const std::string &key);
+
   /**
    * Base of the frictionless formulations: the contact pressure lambda_j of
    * every slave node j (positive in compression), the active set, and

@@ -4,9 +4,8 @@
 #ifndef contact_fem_penalty_frictional_h
 #define contact_fem_penalty_frictional_h
 
+#include <contact_fem/contact/formulations/frictional_formulation.h>
 #include <contact_fem/contact/formulations/penalty_frictionless.h>
-#include <contact_fem/contact/friction/frictional_law.h>
-#include <contact_fem/contact/friction/stick_slip_sets.h>
 
 namespace contact_fem
 {
@@ -53,8 +52,10 @@ namespace contact_fem
    * are refused (Contact/Adaptive penalty).
    */
   template <int dim>
-  class PenaltyFrictional : public PenaltyFrictionless<dim>
+  class PenaltyFrictional : public FrictionalFormulation<dim, PenaltyFrictionless<dim>>
   {
+    using Base = FrictionalFormulation<dim, PenaltyFrictionless<dim>>;
+
   public:
     using typename PenaltyFrictionless<dim>::Residuals;
     using State     = typename ContactFormulation<dim>::State;
@@ -64,9 +65,9 @@ namespace contact_fem
     static void
     declare_parameters(ParameterHandler &prm);
 
-    /// Reads the penalty keys, Contact/Friction, Pure slip and Tangential
-    /// penalty.
-    explicit PenaltyFrictional(ParameterHandler &prm);
+    /// Reads the penalty keys and Tangential penalty; @p friction: the laws
+    /// and Pure slip.
+    PenaltyFrictional(ParameterHandler &prm, const FrictionParameters &friction);
 
     void
     initialize(const ContactInterface<dim> &interface) override;
@@ -108,47 +109,8 @@ namespace contact_fem
     traction(const SlaveNode &s) const override
     {
       return -this->pressure[s.node] * s.normal +
-             tangential[s.node] * ContactFormulation<dim>::tangent(s.normal);
+             tangential[s.node][0] * ContactFormulation<dim>::tangent(s.normal);
     }
-
-    bool
-    frictional() const override
-    {
-      return true;
-    }
-
-    bool
-    sticks(const unsigned int n) const override
-    {
-      return sets.sticks(n, this->active);
-    }
-
-    double
-    slip_increment(const ContactInterface<dim> &interface,
-                   const SlaveNode             &s,
-                   const std::vector<double>   &u) const override;
-
-    unsigned int
-    n_stick() const override;
-
-    unsigned int
-    n_slip() const override;
-
-    double
-    accepted_slip(const unsigned int n) const override
-    {
-      return last_step_slip[n];
-    }
-
-    unsigned int
-    stick_slip_changes() const override
-    {
-      return last_stick_slip_changes;
-    }
-
-    /// 0 inactive, 1 stick, 2 / 3 slip with sign + / -.
-    std::vector<int>
-    contact_sets() const override;
 
     /// The slip reference (interface displacement) and the tangential
     /// tractions of the accepted step become the history.
@@ -165,22 +127,29 @@ namespace contact_fem
     void
     add_results(const ContactInterface<dim> &interface, Json &contact) const override;
 
-    /// The total tangential and normal contact forces sum_j D_j t_j and
-    /// sum_j D_j p_j, their ratio, and with one Coulomb law and every
-    /// active node slipping one way the check ratio = mu.
+    /// The checks of the base class and print_slip_checks(), then the
+    /// friction totals.
     void
     print_results(const ContactInterface<dim> &interface,
                   const std::vector<double>   &u,
+                  const Json                  &contact,
+                  const Json                  &reaction,
                   std::ostream                &out) const override;
 
   private:
+    /// The largest elastic slip of the stick nodes, and from the total
+    /// tangential and normal contact forces sum_j D_j t_j and sum_j D_j p_j,
+    /// with one Coulomb law and every active node slipping one way, the
+    /// check ratio = mu.
+    void
+    print_slip_checks(const ContactInterface<dim> &interface, std::ostream &out) const;
 
-    /// Whether the law of node @p s has no friction at all (mu = 0, bound 0).
-    bool
-    frictionless_law(const SlaveNode &s) const
-    {
-      return laws[s.pair]->threshold(1.) == 0. && laws[s.pair]->threshold_derivative(1.) == 0.;
-    }
+    /// The weighted slip increment xi_j of slave node @p s at @p u since
+    /// the last accepted load step, along tangent(s.normal).
+    double
+    slip_increment(const ContactInterface<dim> &interface,
+                   const SlaveNode             &s,
+                   const std::vector<double>   &u) const;
 
     /// The return mapping of active node @p s at pressure @p p and slip
     /// increment @p xi: 0 = stick, +1 / -1 = slip with that sign of the
@@ -202,27 +171,29 @@ namespace contact_fem
                   const SlaveNode             &s,
                   std::vector<double>         &gradient) const;
 
-    std::vector<std::shared_ptr<const FrictionalLaw>> laws; ///< per pair
-    bool   pure_slip          = false;
-    double tangential_penalty = 0.; ///< given; 0: the pair's normal penalty
-    std::vector<double> tangent_penalty; ///< eps_t per pair
+    using Base::converged_displacement;
+    using Base::frictionless_law;
+    using Base::last_step_slip;
+    using Base::last_stick_slip_changes;
+    using Base::laws;
+    using Base::n_slip;
+    using Base::n_stick;
+    using Base::pure_slip;
+    using Base::sets;
+    using Base::tangential;
 
-    std::vector<double> tangential; ///< t_j per interface node
-    StickSlipSets       sets;
-    /// Slip of every interface node in the last accepted load step.
-    std::vector<double> last_step_slip;
-    /// Interface displacement and tangential tractions of the last accepted
-    /// load step (the history).
-    std::vector<double> converged_displacement;
-    std::vector<double> accepted_tangential;
-    unsigned int        last_stick_slip_changes = 0;
+    double              tangential_penalty = 0.; ///< given; 0: the pair's normal penalty
+    std::vector<double> tangent_penalty;         ///< eps_t per pair
+    /// Tangential tractions of the last accepted load step (the history).
+    std::vector<TangentialVector<dim>> accepted_tangential;
 
     struct FrictionState : public State
     {
       std::unique_ptr<State> normal;
-      std::vector<double>    tangential, converged_displacement, accepted_tangential;
-      StickSlipSets          sets;
-      std::vector<double>    last_step_slip;
+      std::vector<TangentialVector<dim>> tangential, accepted_tangential;
+      std::vector<double>                converged_displacement;
+      StickSlipSets<dim>          sets;
+      std::vector<TangentialVector<dim>> last_step_slip;
     };
   };
 } // namespace contact_fem

@@ -85,6 +85,8 @@ namespace contact_fem
     void
     print_results(const ContactInterface<dim> &interface,
                   const std::vector<double>   &u,
+                  const Json                  &contact,
+                  const Json                  &reaction,
                   std::ostream                &out) const override;
 
   private:

@@ -23,12 +23,24 @@ namespace contact_fem
    * which the semi-smooth Newton iteration needs for a consistent
    * linearisation of the slip condition |t| = threshold(p).
    *
-   * A new law is one class derived from this one and one line in
-   * FrictionalLaw::create().
+   * A new law is one class derived from this one, one Kind and one entry
+   * in FrictionalLaw::create().
    */
   class FrictionalLaw
   {
   public:
+    /// The laws Contact/Friction names.
+    enum class Kind
+    {
+      coulomb, ///< "coulomb MU": threshold MU p
+      tresca   ///< "tresca BOUND": a constant threshold
+    };
+
+    FrictionalLaw(const Kind kind, const double parameter)
+      : law_kind(kind)
+      , law_parameter(parameter)
+    {}
+
     virtual ~FrictionalLaw() = default;
 
     /// The slip bound at contact pressure @p p (>= 0), a stress.
@@ -39,14 +51,40 @@ namespace contact_fem
     virtual double
     threshold_derivative(const double p) const = 0;
 
+    Kind
+    kind() const
+    {
+      return law_kind;
+    }
+
+    /// The law's parameter as the .prm gives it: mu (Coulomb), the bound
+    /// (Tresca).
+    double
+    parameter() const
+    {
+      return law_parameter;
+    }
+
+    /// Whether the law has no friction at all (mu = 0, bound 0): its slip
+    /// sign then changes nothing.
+    bool
+    frictionless() const
+    {
+      return law_parameter == 0.;
+    }
+
     /// How the .prm names the law with its parameter ("coulomb 0.2").
-    virtual std::string
-    description() const = 0;
+    std::string
+    description() const;
 
     /// A law from its .prm text "coulomb MU" or "tresca BOUND"; @p key
     /// names the entry in error messages.
     static std::unique_ptr<FrictionalLaw>
     create(const std::string &text, const std::string &key);
+
+  private:
+    Kind   law_kind;
+    double law_parameter;
   };
 
   /// Coulomb: threshold mu p.
@@ -54,26 +92,20 @@ namespace contact_fem
   {
   public:
     explicit CoulombFriction(const double mu)
-      : mu(mu)
+      : FrictionalLaw(Kind::coulomb, mu)
     {}
 
     double
     threshold(const double p) const override
     {
-      return mu * p;
+      return parameter() * p;
     }
 
     double
     threshold_derivative(const double) const override
     {
-      return mu;
+      return parameter();
     }
-
-    std::string
-    description() const override;
-
-  private:
-    double mu;
   };
 
   /// Tresca: a threshold independent of the pressure (of an active node).
@@ -81,13 +113,13 @@ namespace contact_fem
   {
   public:
     explicit TrescaFriction(const double bound)
-      : bound(bound)
+      : FrictionalLaw(Kind::tresca, bound)
     {}
 
     double
     threshold(const double) const override
     {
-      return bound;
+      return parameter();
     }
 
     double
@@ -95,25 +127,30 @@ namespace contact_fem
     {
       return 0.;
     }
-
-    std::string
-    description() const override;
-
-  private:
-    double bound;
   };
 
   /**
-   * The keys Contact/Friction and Contact/Pure slip. Friction: one law for every pair ("coulomb 0.2"), or one
-   * per pair by its slave boundary id ("3: coulomb 0.2; 5: tresca 0.01").
+   * The keys Contact/Friction and Contact/Pure slip, parsed once (by
+   * ContactFormulation::create() for the formulations that take a law).
+   * Friction: one law for every pair ("coulomb 0.2"), or one per pair by its
+   * slave boundary id ("3: coulomb 0.2; 5: tresca 0.01").
    */
   struct FrictionParameters
   {
+    /// The law of every pair of Contact/Pairs, in that order; empty when
+    /// the key is empty.
+    std::vector<std::shared_ptr<const FrictionalLaw>> laws;
+    /// Every active node slips (no stick set).
+    bool pure_slip = false;
+
     static void
     declare_parameters(ParameterHandler &prm);
 
-    /// The law of every pair of Contact/Pairs, in that order; empty when
-    /// the key is empty. Throws naming the key on bad input.
+    /// Reads both keys; throws naming the key on bad input.
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /// The laws of Contact/Friction alone (see laws).
     static std::vector<std::shared_ptr<const FrictionalLaw>>
     parse_laws(ParameterHandler &prm);
   };

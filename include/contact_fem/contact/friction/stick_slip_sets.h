@@ -5,6 +5,7 @@
 
 #include <contact_fem/contact/contact_interface.h>
 
+#include <cmath>
 #include <vector>
 
 namespace contact_fem
@@ -43,22 +44,39 @@ namespace contact_fem
     return relative * tau;
   }
 
+  /// A tangential quantity of a node (traction, slip, slip direction): its
+  /// dim - 1 components in the node's tangent frame; in 2D one, along
+  /// ContactFormulation::tangent().
+  template <int dim>
+  using TangentialVector = Tensor<1, dim - 1>;
+
+  /// The magnitude of @p t (in 2D |t[0]|, exactly).
+  template <int dim>
+  double
+  magnitude(const TangentialVector<dim> &t)
+  {
+    if constexpr (dim == 2)
+      return std::abs(t[0]);
+    else
+      return t.norm();
+  }
+
   /**
-   * The stick/slip sets of the interface nodes: per node the slip sign
-   * (0 = stick, +1 / -1 = slip with that sign of the trial traction),
-   * meaningful for active nodes, and whether a support holds the node (it
-   * then neither sticks nor slips).
+   * The stick/slip sets of the interface nodes: per node the slip direction
+   * of the trial traction (zero = stick; in 2D +1 / -1), meaningful for
+   * active nodes, and whether a support holds the node (it then neither
+   * sticks nor slips).
    */
+  template <int dim>
   struct StickSlipSets
   {
-    std::vector<int>  sign;
-    std::vector<bool> held;
+    std::vector<TangentialVector<dim>> direction;
+    std::vector<bool>                  held;
 
-    template <int dim>
     void
     initialize(const ContactInterface<dim> &interface)
     {
-      sign.assign(interface.nodes.size(), 0);
+      direction.assign(interface.nodes.size(), TangentialVector<dim>());
       held.assign(interface.nodes.size(), false);
       for (unsigned int n = 0; n < held.size(); ++n)
         for (unsigned int d = 0; d < dim; ++d)
@@ -68,20 +86,20 @@ namespace contact_fem
     bool
     sticks(const unsigned int n, const std::vector<bool> &active) const
     {
-      return active[n] && !held[n] && sign[n] == 0;
+      return active[n] && !held[n] && direction[n].norm_square() == 0.;
     }
 
     bool
     slips(const unsigned int n, const std::vector<bool> &active) const
     {
-      return active[n] && !held[n] && sign[n] != 0;
+      return active[n] && !held[n] && direction[n].norm_square() != 0.;
     }
 
     unsigned int
     n_stick(const std::vector<bool> &active) const
     {
       unsigned int count = 0;
-      for (unsigned int n = 0; n < sign.size(); ++n)
+      for (unsigned int n = 0; n < direction.size(); ++n)
         count += sticks(n, active);
       return count;
     }
@@ -90,20 +108,20 @@ namespace contact_fem
     n_slip(const std::vector<bool> &active) const
     {
       unsigned int count = 0;
-      for (unsigned int n = 0; n < sign.size(); ++n)
+      for (unsigned int n = 0; n < direction.size(); ++n)
         count += slips(n, active);
       return count;
     }
 
     /// One code per node for the detection of a cycling iteration:
-    /// 0 inactive, 1 stick, 2 / 3 slip with sign + / -.
+    /// 0 inactive, 1 stick, 2 / 3 slip along + / - the first tangent.
     std::vector<int>
     codes(const std::vector<bool> &active) const
     {
-      std::vector<int> result(sign.size(), 0);
-      for (unsigned int n = 0; n < sign.size(); ++n)
+      std::vector<int> result(direction.size(), 0);
+      for (unsigned int n = 0; n < direction.size(); ++n)
         if (active[n])
-          result[n] = sign[n] == 0 ? 1 : (sign[n] > 0 ? 2 : 3);
+          result[n] = direction[n].norm_square() == 0. ? 1 : (direction[n][0] > 0 ? 2 : 3);
       return result;
     }
   };

@@ -1,0 +1,59 @@
+// What the frictional formulations report alike: the friction totals of the
+// results, their printout, the nodal fields and the Newton table cells.
+#ifndef contact_fem_friction_results_h
+#define contact_fem_friction_results_h
+
+#include <contact_fem/contact/formulations/contact_formulation.h>
+#include <contact_fem/contact/friction/stick_slip_sets.h>
+
+namespace contact_fem
+{
+  /// The tangential traction of slave node @p s along the tangent of the
+  /// formulation's frame (2D: one component).
+  template <int dim>
+  double
+  frame_tangential_traction(const ContactFormulation<dim>                 &contact,
+                      const typename ContactInterface<dim>::SlaveNode &s)
+  {
+    return contact.traction(s) * ContactFormulation<dim>::tangent(contact.frame_normal(s));
+  }
+
+  /// Adds the totals over the active slave nodes (normal and tangential
+  /// contact force, their ratio, the force components, the active length,
+  /// the largest tangential traction and the largest slip of the last
+  /// accepted step, @p accepted_slip per interface node) to @p result.
+  template <int dim>
+  void
+  add_friction_totals(const ContactInterface<dim>   &interface,
+                      const ContactFormulation<dim> &contact,
+                      const std::vector<TangentialVector<dim>> &accepted_slip,
+                      Json                          &result);
+
+  /// Prints the stick/slip counts and the totals of add_friction_totals()
+  /// from @p contact, and the balance per component from @p reaction.
+  void
+  print_friction_totals(const Json        &contact,
+                        const Json        &reaction,
+                        const unsigned int dim,
+                        std::ostream      &out);
+
+  /// The nodal fields tangential_traction, slip_increment (of the last
+  /// accepted step; per component, numbered from 1, in 3D) and stick.
+  template <int dim>
+  std::vector<typename ContactFormulation<dim>::NodalField>
+  friction_nodal_fields(const ContactInterface<dim>   &interface,
+                        const ContactFormulation<dim> &contact,
+                        const std::vector<TangentialVector<dim>> &accepted_slip);
+
+  /// The stick / slip / stick-slip-change cells of the Newton table.
+  std::string
+  friction_iteration_header();
+
+  std::string
+  friction_iteration_cells(const unsigned int iteration,
+                           const unsigned int n_stick,
+                           const unsigned int n_slip,
+                           const unsigned int changes);
+} // namespace contact_fem
+
+#endif

@@ -1,0 +1,115 @@
+// What the frictional formulations share on top of their normal part: the
+// laws, the frictional state of every node and how it is reported.
+#ifndef contact_fem_frictional_formulation_h
+#define contact_fem_frictional_formulation_h
+
+#include <contact_fem/contact/formulations/friction_results.h>
+#include <contact_fem/contact/friction/frictional_law.h>
+#include <contact_fem/contact/friction/stick_slip_sets.h>
+
+#include <utility>
+
+namespace contact_fem
+{
+  /**
+   * A frictional formulation over the normal part @p NormalPart (a
+   * FrictionlessFormulation: pressure, active set, penalties): the law of
+   * every pair, and per interface node the tangential multiplier, the slip
+   * of the last accepted load step and the stick/slip set, each a
+   * TangentialVector (dim - 1 components). It answers the driver's general
+   * questions for friction (path dependent, shear, stick = held
+   * tangentially, cycle codes) and reports the state (stick / slip columns
+   * of the Newton table, nodal fields). The derived class decides the
+   * conditions (constraints or penalties) and the history it keeps.
+   */
+  template <int dim, class NormalPart>
+  class FrictionalFormulation : public NormalPart
+  {
+  public:
+    using SlaveNode = typename ContactInterface<dim>::SlaveNode;
+
+    /// The normal part is made from @p args.
+    template <typename... Args>
+    explicit FrictionalFormulation(const FrictionParameters &friction, Args &&...args)
+      : NormalPart(std::forward<Args>(args)...)
+      , laws(friction.laws)
+      , pure_slip(friction.pure_slip)
+    {}
+
+    /// The normal part's, and a frictional state of zero for every node.
+    void
+    initialize(const ContactInterface<dim> &interface) override;
+
+    bool
+    path_dependent() const override
+    {
+      return true;
+    }
+
+    bool
+    transmits_shear() const override
+    {
+      return true;
+    }
+
+    /// Whether node @p n is active and sticks.
+    bool
+    held_tangentially(const unsigned int n) const override
+    {
+      return sets.sticks(n, this->active);
+    }
+
+    std::string
+    iteration_header() const override;
+
+    /// Stick and slip counts and the stick/slip changes of the last
+    /// update_active_set() (part of the changes it returned).
+    std::string
+    iteration_cells(const unsigned int iteration) const override;
+
+    /// tangential_traction, slip_increment (of the last accepted step) and
+    /// stick.
+    std::vector<typename ContactFormulation<dim>::NodalField>
+    nodal_fields(const ContactInterface<dim> &interface) const override;
+
+    /// 0 inactive, 1 stick, 2 / 3 slip with sign + / -.
+    std::vector<int>
+    contact_sets() const override;
+
+    /// Number of active nodes that stick / slip (active nodes held
+    /// tangentially by a support neither stick nor slip).
+    unsigned int
+    n_stick() const;
+
+    unsigned int
+    n_slip() const;
+
+  protected:
+    /// Whether the law of node @p s has no friction at all (mu = 0, bound
+    /// 0): its slip sign then changes nothing.
+    bool
+    frictionless_law(const SlaveNode &s) const
+    {
+      return laws[s.pair]->frictionless();
+    }
+
+    /// The laws by their .prm names, as the results list them.
+    Json
+    law_names() const;
+
+    std::vector<std::shared_ptr<const FrictionalLaw>> laws; ///< per pair
+    bool pure_slip = false;
+
+    /// t_j per interface node, in the formulation's frame.
+    std::vector<TangentialVector<dim>> tangential;
+    StickSlipSets<dim>                 sets;
+    /// Slip of every interface node in the last accepted load step.
+    std::vector<TangentialVector<dim>> last_step_slip;
+    /// Interface displacement of the last accepted load step.
+    std::vector<double> converged_displacement;
+    /// Stick/slip changes of the last update_active_set().
+    unsigned int last_stick_slip_changes = 0;
+  };
+} // namespace contact_fem
+
+#endif

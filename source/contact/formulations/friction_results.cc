@@ -1,0 +1,138 @@
+#include <contact_fem/contact/formulations/friction_results.h>
+#include <contact_fem/core/format.h>
+
+#include <iomanip>
+#include <sstream>
+
+namespace contact_fem
+{
+  template <int dim>
+  void
+  add_friction_totals(const ContactInterface<dim>   &interface,
+                      const ContactFormulation<dim> &contact,
+                      const std::vector<TangentialVector<dim>> &accepted_slip,
+                      Json                          &result)
+  {
+    // Totals over the active slave nodes of the force the slave exerts on
+    // the master, split along each node's own normal and tangent.
+    double         normal = 0., tangential = 0., t_max = 0., slip_max = 0., length = 0.;
+    Tensor<1, dim> force;
+    for (const auto &s : interface.slave_nodes)
+      if (s.paired && contact.is_active(s.node))
+        {
+          const Tensor<1, dim> lambda = contact.traction(s);
+          const double         t      = frame_tangential_traction(contact, s);
+          normal += s.D * contact.normal_pressure(s.node);
+          tangential += s.D * t;
+          length += s.D;
+          force -= s.D * lambda;
+          t_max    = std::max(t_max, std::abs(t));
+          slip_max = std::max(slip_max, magnitude<dim>(accepted_slip[s.node]));
+        }
+    Json components = Json::array();
+    for (unsigned int d = 0; d < dim; ++d)
+      components.push(force[d]);
+    result.set("total_normal_contact_force", normal)
+      .set("total_tangential_contact_force", tangential)
+      .set("tangential_over_normal_force", normal > 0. ? tangential / normal : 0.)
+      .set("contact_force_components", components)
+      .set("active_contact_length", length)
+      .set("max_tangential_traction", t_max)
+      .set("max_slip_increment", slip_max);
+  }
+
+  void
+  print_friction_totals(const Json        &contact,
+                        const Json        &reaction,
+                        const unsigned int dim,
+                        std::ostream      &out)
+  {
+    const double normal     = contact["total_normal_contact_force"].number_value();
+    const double tangential = contact["total_tangential_contact_force"].number_value();
+    const double scale      = reaction["force_scale"].number_value();
+    out << "    stick / slip nodes:           " << contact["stick_nodes"].number_value()
+        << " / " << contact["slip_nodes"].number_value() << std::endl
+        << "    normal contact force:         " << force_text(normal, scale) << std::endl
+        << "    tangential contact force:     " << force_text(tangential, scale) << std::endl
+        << "    active contact length:        "
+        << contact["active_contact_length"].number_value() << std::endl
+        << "    tangential / normal force:    "
+        << (std::abs(tangential) < 1e-10 * scale || normal <= 0. ?
+              std::string("0 (no tangential force)") :
+              significant(tangential / normal, 10))
+        << std::endl
+        << "    largest slip in the last step: "
+        << value_or_ok(contact["max_slip_increment"].number_value(), 1e-12) << std::endl;
+    const Json &load      = reaction["applied_load_components"];
+    const Json &support   = reaction["support_reaction_components"];
+    const Json &imbalance = reaction["relative_imbalance_components"];
+    for (unsigned int d = 0; d < dim; ++d)
+      out << "    balance in " << "xyz"[d] << ": load "
+          << force_text(load[d].number_value(), scale) << ", support reaction "
+          << force_text(support[d].number_value(), scale) << ", relative imbalance "
+          << value_or_ok(imbalance[d].number_value(), 1e-10) << std::endl;
+  }
+
+  template <int dim>
+  std::vector<typename ContactFormulation<dim>::NodalField>
+  friction_nodal_fields(const ContactInterface<dim>   &interface,
+                        const ContactFormulation<dim> &contact,
+                        const std::vector<TangentialVector<dim>> &accepted_slip)
+  {
+    const unsigned int  n_nodes = interface.nodes.size();
+    std::vector<double> tangential(n_nodes, 0.), stick(n_nodes, 0.);
+    for (const auto &s : interface.slave_nodes)
+      if (s.paired)
+        tangential[s.node] = frame_tangential_traction(contact, s);
+    std::vector<typename ContactFormulation<dim>::NodalField> fields = {
+      {"tangential_traction", tangential}};
+    for (unsigned int c = 0; c < dim - 1; ++c)
+      {
+        fields.push_back({dim == 2 ? "slip_increment" : "slip_increment_" + std::to_string(c + 1),
+                          std::vector<double>(n_nodes)});
+        for (unsigned int n = 0; n < n_nodes; ++n)
+          fields.back().values[n] = accepted_slip[n][c];
+      }
+    for (unsigned int n = 0; n < n_nodes; ++n)
+      stick[n] = contact.held_tangentially(n) ? 1. : 0.;
+    fields.push_back({"stick", stick});
+    return fields;
+  }
+
+  std::string
+  friction_iteration_header()
+  {
+    return " stick |  slip | s/s ch. |";
+  }
+
+  std::string
+  friction_iteration_cells(const unsigned int iteration,
+                           const unsigned int n_stick,
+                           const unsigned int n_slip,
+                           const unsigned int changes)
+  {
+    std::ostringstream s;
+    s << " " << std::setw(5) << n_stick << " | " << std::setw(5) << n_slip << " | "
+      << std::setw(7) << (iteration == 0 ? std::string("-") : std::to_string(changes)) << " |";
+    return s.str();
+  }
+
+  template void
+  add_friction_totals(const ContactInterface<2> &,
+                      const ContactFormulation<2> &,
+                      const std::vector<TangentialVector<2>> &,
+                      Json &);
+  template void
+  add_friction_totals(const ContactInterface<3> &,
+                      const ContactFormulation<3> &,
+                      const std::vector<TangentialVector<3>> &,
+                      Json &);
+  template std::vector<ContactFormulation<2>::NodalField>
+  friction_nodal_fields(const ContactInterface<2> &,
+                        const ContactFormulation<2> &,
+                        const std::vector<TangentialVector<2>> &);
+  template std::vector<ContactFormulation<3>::NodalField>
+  friction_nodal_fields(const ContactInterface<3> &,
+                        const ContactFormulation<3> &,
+                        const std::vector<TangentialVector<3>> &);
+} // namespace contact_fem

@@ -1,0 +1,120 @@
+#include <deal.II/base/utilities.h>
+
+#include <contact_fem/geometry/physical_names.h>
+
+#include <algorithm>
+#include <cctype>
+
+namespace contact_fem
+{
+  namespace
+  {
+    bool
+    is_number(const std::string &word)
+    {
+      return !word.empty() &&
+             std::all_of(word.begin(), word.end(), [](const unsigned char c) {
+               return std::isdigit(c) != 0;
+             });
+    }
+
+    std::string
+    listed(const std::map<std::string, unsigned int> &names)
+    {
+      std::string text;
+      for (const auto &[name, id] : names)
+        text += (text.empty() ? "" : ", ") + name + " (" + std::to_string(id) + ")";
+      return text.empty() ? "none" : text;
+    }
+  } // namespace
+
+  PhysicalNames::PhysicalNames(const std::vector<PhysicalName> &names,
+                               const unsigned int               dim,
+                               const std::string               &file)
+    : file(file)
+  {
+    for (const auto &n : names)
+      if (n.dimension == static_cast<int>(dim) || n.dimension + 1 == static_cast<int>(dim))
+        {
+          auto &ids = n.dimension == static_cast<int>(dim) ? body_ids : surface_ids;
+          const auto [entry, inserted] = ids.emplace(n.name, n.tag);
+          AssertThrow(inserted || entry->second == static_cast<unsigned int>(n.tag),
+                      ExcMessage("Geometry/Mesh file: '" + file + "' gives the physical name '" +
+                                 n.name + "' to the tags " + std::to_string(entry->second) +
+                                 " and " + std::to_string(n.tag) + " of " +
+                                 (n.dimension == static_cast<int>(dim) ? "cells" : "faces") +
+                                 "; a name must stand for one id."));
+        }
+  }
+
+  std::string
+  PhysicalNames::id_of(const std::string &word, const std::string &key, const bool bodies) const
+  {
+    if (word.empty() || is_number(word))
+      return word;
+    const auto &ids   = bodies ? body_ids : surface_ids;
+    const auto  found = ids.find(word);
+    AssertThrow(found != ids.end(),
+                ExcMessage(key + ": '" + word + "' is neither a " +
+                           (bodies ? "material id" : "boundary id") +
+                           " nor a physical name of the " +
+                           (bodies ? "bodies (cells)" : "surfaces (faces)") +
+                           " of the mesh file '" + file + "' (its names: " + listed(ids) +
+                           ")."));
+    return std::to_string(found->second);
+  }
+
+  std::string
+  PhysicalNames::replace_ids(const std::string &text,
+                             const std::string &key,
+                             const bool         bodies,
+                             const char         separator,
+                             const bool         both_sides) const
+  {
+    std::string result;
+    for (const std::string &entry : Utilities::split_string_list(text, ';'))
+      {
+        const auto at = entry.find(separator);
+        if (at == std::string::npos)
+          {
+            result += (result.empty() ? "" : "; ") + entry;
+            continue;
+          }
+        const std::string rest = entry.substr(at + 1);
+        const std::string fixed =
+          id_of(Utilities::trim(entry.substr(0, at)), key, bodies) +
+          (separator == '@' ? " @" : ":") +
+          (both_sides ? " " + id_of(Utilities::trim(rest), key, bodies) : rest);
+        result += (result.empty() ? "" : "; ") + fixed;
+      }
+    return result;
+  }
+
+  void
+  PhysicalNames::substitute(ParameterHandler &prm) const
+  {
+    if (body_ids.empty() && surface_ids.empty())
+      return;
+    const auto replace = [&](const std::string &section, const std::string &name,
+                             const bool bodies, const char separator, const bool both_sides) {
+      prm.enter_subsection(section);
+      const std::string text = prm.get(name);
+      if (!Utilities::trim(text).empty())
+        prm.set(name,
+                replace_ids(text, section + "/" + name, bodies, separator, both_sides));
+      prm.leave_subsection();
+    };
+    for (const std::string name : {"Fixed", "Prescribed displacement", "Pressure", "Traction"})
+      replace("Boundary conditions", name, false, ':', false);
+    replace("Boundary conditions", "Fixed points", true, '@', false);
+    replace("Output", "Displacement probes", true, '@', false);
+    replace("Contact", "Pairs", false, ':', true);
+    replace("Geometry", "Manifolds", false, ':', false);
+    prm.enter_subsection("Materials");
+    std::string ids;
+    for (const std::string &word : Utilities::split_string_list(prm.get("Material ids"), ','))
+      ids += (ids.empty() ? "" : ", ") + id_of(word, "Materials/Material ids", true);
+    prm.set("Material ids", ids);
+    prm.leave_subsection();
+  }
+} // namespace contact_fem
