@@ -1,17 +1,19 @@
-#include <deal.II/base/bounding_box.h>
+// ContactInterface: the surfaces gathered from every rank, their hanging
+// vertices, the mortar sums of the slave nodes and the gaps. The search is in
+// contact_interface_search.cc, the tiling checks in
+// contact_interface_tiling.cc.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/boost_adaptors/bounding_box.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/numerics/rtree.h>
 
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/core/format.h>
-#include <contact_fem/contact/mortar.h>
+#include <contact_fem/contact/mortar_kernel.h>
+
+#include <deal.II/lac/vector.h>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -88,8 +90,8 @@ namespace contact_fem
      * points, in face DoF order) turns its normal (rotated tangent in 2D,
      * t_xi x t_eta in 3D) out of the cell, negative otherwise. The support
      * points are in the face's own orientation (FEFaceValues permutes them
-     * like the face DoFs); in 3D their vertices are checked against those
-     * of @p face, in case that ever changes.
+     * like the face DoFs); their vertices are checked against those of
+     * @p face, in case that ever changes.
      */
     template <int dim, typename FaceIterator>
     double
@@ -97,33 +99,16 @@ namespace contact_fem
                         const FaceIterator      &face,
                         const unsigned int       nodes_per_face)
     {
-      if constexpr (dim == 2)
-        {
-          Mortar::LineFace line;
-          for (unsigned int k = 0; k < nodes_per_face; ++k)
-            {
-              Point<2> x;
-              for (unsigned int d = 0; d < 2; ++d)
-                x[d] = fe_face.quadrature_point(k)[d];
-              line.nodes.push_back(x);
-            }
-          const Tensor<1, 2> n_rot = Mortar::face_normal(line, -1., 1.);
-          double             dot   = 0.;
-          for (unsigned int d = 0; d < 2; ++d)
-            dot += n_rot[d] * fe_face.normal_vector(0)[d];
-          return dot;
-        }
-      else
-        {
-          Mortar::QuadFace quad;
-          for (unsigned int k = 0; k < nodes_per_face; ++k)
-            quad.nodes.push_back(fe_face.quadrature_point(k));
-          for (unsigned int v = 0; v < 4; ++v)
-            AssertThrow(quad.nodes[v].distance(face->vertex(v)) <= 1e-10 * face->diameter(),
-                        ExcMessage("Contact: the support points of a 3D contact face "
-                                   "are not in the order of its vertices."));
-          return Mortar::face_normal(quad, Point<2>(-1., -1.), 1.) * fe_face.normal_vector(0);
-        }
+      using Kernel = Mortar::Kernel<dim>;
+      typename Kernel::Face geometry;
+      for (unsigned int k = 0; k < nodes_per_face; ++k)
+        geometry.nodes.push_back(fe_face.quadrature_point(k));
+      for (unsigned int v = 0; v < Kernel::n_vertices; ++v)
+        AssertThrow(geometry.nodes[v].distance(face->vertex(v)) <= 1e-10 * face->diameter(),
+                    ExcMessage("Contact: the support points of a contact face are not in "
+                               "the order of its vertices."));
+      return Mortar::face_normal(geometry, Kernel::node_parameter(1, 0), 1.) *
+             fe_face.normal_vector(0);
     }
   } // namespace
 
@@ -171,13 +156,8 @@ namespace contact_fem
     if (n_geometry_points > 0)
       for (unsigned int k = first_geometry_node; k < nodes_per_face + n_geometry_points; ++k)
         {
-          Point<dim - 1> x;
-          if constexpr (dim == 2)
-            x[0] = 0.5 * (Mortar::node_parameter(2, k) + 1.);
-          else
-            for (unsigned int d = 0; d < 2; ++d)
-              x[d] = 0.5 * (Mortar::quad_node_parameter(2, k)[d] + 1.);
-          geometry_nodes.push_back(x);
+          geometry_nodes.push_back(
+            Mortar::Kernel<dim>::unit(Mortar::Kernel<dim>::node_parameter(2, k)));
         }
     std::unique_ptr<FEFaceValues<dim>> fe_face_geometry;
     if (n_geometry_points > 0)
@@ -404,110 +384,30 @@ namespace contact_fem
   }
 
   template <int dim>
-  Mortar::LineFace
-  ContactInterface<dim>::line(const Face &face, const std::vector<Tensor<1, dim>> &u) const
+  typename ContactInterface<dim>::FaceGeometry
+  ContactInterface<dim>::face_geometry(const Face                        &face,
+                                       const std::vector<Tensor<1, dim>> &u) const
   {
-    const auto position = [&](const Point<dim> &X, const Tensor<1, dim> &displacement) {
-      Point<2> x;
-      for (unsigned int d = 0; d < 2; ++d)
-        x[d] = X[d] + displacement[d];
-      return x;
-    };
-    Mortar::LineFace result;
+    using Kernel = Mortar::Kernel<dim>;
+    FaceGeometry result;
     result.element_degree = degree;
     for (const unsigned int n : face.nodes)
-      result.nodes.push_back(position(nodes[n].reference, u.empty() ? Tensor<1, dim>() : u[n]));
-    // The geometry midpoint moves with the linear displacement of the face.
-    for (const Point<dim> &X : face.geometry_points)
-      result.nodes.push_back(
-        position(X,
-                 u.empty() ? Tensor<1, dim>() : 0.5 * (u[face.nodes[0]] + u[face.nodes[1]])));
-    return result;
-  }
-
-  namespace
-  {
-    /// The nodes of @p line (a 2D face) as points of the space.
-    template <int dim>
-    std::vector<Point<dim>>
-    node_points(const Mortar::LineFace &line)
-    {
-      std::vector<Point<dim>> points;
-      for (const auto &x : line.nodes)
-        points.push_back(Point<dim>(x[0], x[1]));
-      return points;
-    }
-
-    /// The box of the nodes of @p line: the search's, whose reach covers
-    /// the bulge of a curved quadratic line beyond its nodes.
-    template <int dim>
-    BoundingBox<dim>
-    face_box(const Mortar::LineFace &line)
-    {
-      return BoundingBox<dim>(node_points<dim>(line));
-    }
-
-    /// A box that holds all of @p line, not only its nodes: the
-    /// penetration check needs the exact nearest face.
-    template <int dim>
-    BoundingBox<dim>
-    whole_face_box(const Mortar::LineFace &line)
-    {
-      return Mortar::interpolant_box(node_points<dim>(line),
-                                     Mortar::lebesgue_constant(line.degree()));
-    }
-
-    double
-    face_length(const Mortar::LineFace &line)
-    {
-      const QGauss<1> q(3);
-      double          length = 0.;
-      for (unsigned int i = 0; i < q.size(); ++i)
-        length += 2. * q.weight(i) * line.tangent(2. * q.point(i)[0] - 1.).norm();
-      return length;
-    }
-  } // namespace
-
-  template <int dim>
-  std::map<unsigned int, typename ContactInterface<dim>::SlaveNode>
-  ContactInterface<dim>::slave_node_geometry(const std::vector<Mortar::LineFace> &lines,
-                                             const std::vector<double>           &lengths) const
-  {
-    // Nodal normals (length-weighted mean of the face normals), the
-    // integral of N_j over the adjacent slave faces, and the nodal sizes.
-    std::map<unsigned int, SlaveNode> slave_data;
-    for (unsigned int f = 0; f < faces.size(); ++f)
-      if (faces[f].slave)
-        for (unsigned int k = 0; k < faces[f].nodes.size(); ++k)
-          {
-            SlaveNode &s = slave_data[faces[f].nodes[k]];
-            s.node       = faces[f].nodes[k];
-            s.pair       = faces[f].pair;
-            const Tensor<1, 2> n =
-              Mortar::face_normal(lines[f], Mortar::node_parameter(degree, k),
-                                  faces[f].orientation);
-            for (unsigned int d = 0; d < 2; ++d)
-              s.normal[d] += lengths[f] * n[d];
-            const QGauss<1> q(degree + 1);
-            for (unsigned int i = 0; i < q.size(); ++i)
-              {
-                const double xi = 2. * q.point(i)[0] - 1.;
-                s.full_area += 2. * q.weight(i) * lines[f].tangent(xi).norm() *
-                               Mortar::shape_value(degree, k, xi);
-              }
-            s.size += lengths[f] / degree;
-          }
-    std::map<unsigned int, unsigned int> n_adjacent;
-    for (const auto &face : faces)
-      if (face.slave)
-        for (const unsigned int n : face.nodes)
-          ++n_adjacent[n];
-    for (auto &[n, s] : slave_data)
+      result.nodes.push_back(nodes[n].reference + (u.empty() ? Tensor<1, dim>() : u[n]));
+    // The geometry points of Q1 on a quadratic mapping (the midpoint in 2D;
+    // the edge midpoints and the centre in 3D) move with the (bi)linear
+    // displacement of the face.
+    for (unsigned int k = 0; k < face.geometry_points.size(); ++k)
       {
-        s.normal /= s.normal.norm();
-        s.size /= n_adjacent[n];
+        Tensor<1, dim> displacement;
+        if (!u.empty())
+          {
+            const auto xi = Kernel::node_parameter(2, face.nodes.size() + k);
+            for (unsigned int v = 0; v < face.nodes.size(); ++v)
+              displacement += Kernel::shape_value(1, v, xi) * u[face.nodes[v]];
+          }
+        result.nodes.push_back(face.geometry_points[k] + displacement);
       }
-    return slave_data;
+    return result;
   }
 
   template <int dim>
@@ -525,39 +425,11 @@ namespace contact_fem
   }
 
   template <int dim>
-  std::map<unsigned int, std::pair<Tensor<1, 2>, double>>
-  ContactInterface<dim>::surface_node_normals(const std::vector<Mortar::LineFace> &lines,
-                                              const std::vector<double>           &lengths,
-                                              const bool                           slave) const
-  {
-    std::map<unsigned int, std::pair<Tensor<1, 2>, double>> result;
-    std::map<unsigned int, double>                           length_of_node;
-    for (unsigned int f = 0; f < faces.size(); ++f)
-      if (faces[f].slave == slave)
-        for (unsigned int k = 0; k < faces[f].nodes.size(); ++k)
-          {
-            auto &[normal, modulus] = result[faces[f].nodes[k]];
-            normal += lengths[f] * Mortar::face_normal(lines[f], Mortar::node_parameter(degree, k),
-                                                       faces[f].orientation);
-            modulus += lengths[f] * faces[f].youngs_modulus /
-                       (1. - faces[f].poisson_ratio * faces[f].poisson_ratio);
-            length_of_node[faces[f].nodes[k]] += lengths[f];
-          }
-    for (auto &[n, value] : result)
-      {
-        value.first /= value.first.norm();
-        value.second /= length_of_node[n];
-      }
-    return result;
-  }
-
-  template <int dim>
-  template <class SegmentOperators>
   void
   ContactInterface<dim>::add_segment(
     const unsigned int                                      f,
     const unsigned int                                      m,
-    const SegmentOperators                                 &ops,
+    const typename Mortar::Kernel<dim>::Operators          &ops,
     std::map<unsigned int, SlaveNode>                      &slave_data,
     std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
     std::map<unsigned int, Tensor<1, dim>>                 &weighted_gap_of_node)
@@ -571,6 +443,97 @@ namespace contact_fem
         for (unsigned int l = 0; l < faces[m].nodes.size(); ++l)
           M_of_node[s.node][faces[m].nodes[l]] += ops.M(j, l);
       }
+  }
+
+
+  template <int dim>
+  bool
+  ContactInterface<dim>::add_constrained_face(
+    const unsigned int f,
+    const std::vector<std::pair<unsigned int, typename Mortar::Kernel<dim>::Operators>>
+                                                           &segments,
+    std::map<unsigned int, SlaveNode>                      &slave_data,
+    std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
+    std::map<unsigned int, Tensor<1, dim>>                 &weighted_gap_of_node)
+  {
+    const std::vector<unsigned int> &local = faces[f].nodes;
+    const bool has_hanging_vertex          = std::any_of(local.begin(), local.end(), [&](auto n) {
+      return !nodes[n].parents.empty();
+    });
+    if (segments.empty() || !has_hanging_vertex)
+      return false;
+
+    // The owners of the face's trace: its regular nodes and the parents of
+    // its hanging vertices; T(q, a) is the weight of owner q in node a.
+    std::vector<unsigned int>            owners;
+    std::map<unsigned int, unsigned int> owner_index;
+    const auto                           owner = [&](const unsigned int n) {
+      const auto [it, inserted] = owner_index.emplace(n, owners.size());
+      if (inserted)
+        owners.push_back(n);
+      return it->second;
+    };
+    std::vector<std::vector<std::pair<unsigned int, double>>> weights(local.size());
+    for (unsigned int a = 0; a < local.size(); ++a)
+      if (nodes[local[a]].parents.empty())
+        weights[a].emplace_back(owner(local[a]), 1.);
+      else
+        for (const auto &[parent, weight] : nodes[local[a]].parents)
+          weights[a].emplace_back(owner(parent), weight);
+    const unsigned int n = local.size();
+    // A face whose owners outnumber its nodes has a dependent trace basis
+    // and no dual basis of its own: its hanging rows are lumped instead.
+    if (owners.size() != n)
+      return false;
+    FullMatrix<double> T(n, n);
+    for (unsigned int a = 0; a < n; ++a)
+      for (const auto &[q, weight] : weights[a])
+        T(q, a) += weight;
+
+    std::vector<double> D(n, 0.);
+    double              D_sum = 0.;
+    for (const auto &segment : segments)
+      for (unsigned int a = 0; a < n; ++a)
+        D[a] += segment.second.D[a];
+    for (const double d : D)
+      D_sum += std::abs(d);
+    constexpr double least_nodal_weight = 1e-12;
+    if (std::any_of(D.begin(), D.end(),
+                    [&](const double d) { return std::abs(d) <= least_nodal_weight * D_sum; }))
+      return false;
+
+    // The dual functions of the owners, Psi~_q = sum_a S(q, a) Psi_a, are
+    // biorthogonal to the owners' trace functions N~_q = sum_a T(q, a) N_a
+    // on this face: S D T^T = D~ with D~ = T D, so S = D~ T^-T D^-1. They sum
+    // to one, as the Psi_a do, since the columns of T sum to one.
+    FullMatrix<double> T_inverse_transpose(n, n);
+    T_inverse_transpose.copy_transposed(T);
+    T_inverse_transpose.gauss_jordan();
+    Vector<double> D_owner(n);
+    for (unsigned int q = 0; q < n; ++q)
+      for (unsigned int a = 0; a < n; ++a)
+        D_owner[q] += T(q, a) * D[a];
+    FullMatrix<double> S(n, n);
+    for (unsigned int q = 0; q < n; ++q)
+      for (unsigned int a = 0; a < n; ++a)
+        S(q, a) = D_owner[q] * T_inverse_transpose(q, a) / D[a];
+
+    for (const auto &[m, ops] : segments)
+      {
+        coupled_faces.emplace_back(f, m);
+        for (unsigned int q = 0; q < n; ++q)
+          {
+            SlaveNode &s = slave_data[owners[q]];
+            for (unsigned int a = 0; a < n; ++a)
+              {
+                s.D += T(q, a) * ops.D[a];
+                weighted_gap_of_node[owners[q]] += S(q, a) * ops.weighted_gap[a];
+                for (unsigned int l = 0; l < faces[m].nodes.size(); ++l)
+                  M_of_node[owners[q]][faces[m].nodes[l]] += S(q, a) * ops.M(a, l);
+              }
+          }
+      }
+    return true;
   }
 
   template <int dim>
@@ -633,227 +596,6 @@ namespace contact_fem
         h.paired = h.paired || slave_data.at(parent).paired;
   }
 
-  template <int dim>
-  void
-  ContactInterface<dim>::update(const std::vector<double> &u_at_dofs,
-                                const double               search_factor,
-                                const std::vector<double> &motion_allowance)
-  {
-    if constexpr (dim == 3)
-      update_3d(u_at_dofs, search_factor, motion_allowance);
-    else
-      {
-        search_displacement = u_at_dofs;
-        reach_of_search.assign(pairs.size(), std::numeric_limits<double>::max());
-        std::vector<Tensor<1, dim>> u(nodes.size());
-        for (unsigned int n = 0; n < nodes.size(); ++n)
-          u[n] = displacement(n, u_at_dofs);
-
-        std::vector<Mortar::LineFace> lines(faces.size());
-        std::vector<double>           lengths(faces.size());
-        for (unsigned int f = 0; f < faces.size(); ++f)
-          {
-            lines[f]   = line(faces[f], u);
-            lengths[f] = face_length(lines[f]);
-          }
-
-        std::map<unsigned int, SlaveNode> slave_data = slave_node_geometry(lines, lengths);
-        face_lengths = lengths;
-        coupled_faces.clear();
-
-        // Broad phase: one R-tree of master face boxes per pair.
-        statistics.assign(pairs.size(), PairStatistics());
-        std::map<unsigned int, std::map<unsigned int, double>> M_of_node;
-        std::map<unsigned int, Tensor<1, 2>>                   weighted_gap_of_node;
-        std::vector<bool> master_is_candidate(faces.size(), false);
-        for (unsigned int p = 0; p < pairs.size(); ++p)
-          {
-            const double allowance = motion_allowance.empty() ? 0. : motion_allowance[p];
-            std::vector<std::pair<BoundingBox<dim>, unsigned int>> master_boxes;
-            for (unsigned int f = 0; f < faces.size(); ++f)
-              if (!faces[f].slave && faces[f].pair == p)
-                {
-                  // A margin, so that touching boxes of flat faces meet.
-                  constexpr double master_box_margin = 1e-2;
-                  BoundingBox<dim> box               = face_box<dim>(lines[f]);
-                  box.extend(master_box_margin * lengths[f]);
-                  master_boxes.emplace_back(box, f);
-                }
-            const auto tree = pack_rtree(master_boxes);
-
-            double       slave_length = 0., slave_modulus = 0.;
-            unsigned int n_overlapping_faces = 0;
-            for (unsigned int f = 0; f < faces.size(); ++f)
-              {
-                if (!faces[f].slave || faces[f].pair != p)
-                  continue;
-                BoundingBox<dim> box = face_box<dim>(lines[f]);
-                box.extend(search_factor * lengths[f] + allowance);
-                reach_of_search[p] =
-                  std::min(reach_of_search[p], search_factor * lengths[f] + allowance);
-
-                std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
-                tree.query(boost::geometry::index::intersects(box),
-                           std::back_inserter(hits));
-                std::sort(hits.begin(), hits.end(),
-                          [](const auto &a, const auto &b) { return a.second < b.second; });
-                if (hits.empty())
-                  continue;
-
-                // Narrow phase: opposing normals, then exact segmentation.
-                std::vector<Tensor<1, 2>> normals;
-                for (const unsigned int n : faces[f].nodes)
-                  {
-                    Tensor<1, 2> nn;
-                    for (unsigned int d = 0; d < 2; ++d)
-                      nn[d] = slave_data[n].normal[d];
-                    normals.push_back(nn);
-                  }
-                const Tensor<1, 2> n_slave =
-                  Mortar::face_normal(lines[f], 0., faces[f].orientation);
-                // Segmentation first: the dual basis is built on the part of
-                // the slave face that the masters cover.
-                std::vector<unsigned int>               masters, facing;
-                std::vector<std::pair<double, double>> intervals;
-                std::vector<std::array<int, 2>>         bounding_ends;
-                for (const auto &hit : hits)
-                  {
-                    const unsigned int m = hit.second;
-                    const Tensor<1, 2> n_master =
-                      Mortar::face_normal(lines[m], 0., faces[m].orientation);
-                    if (!(n_slave * n_master < 0.))
-                      continue;
-                    facing.push_back(m);
-                    double             lower, upper;
-                    std::array<int, 2> ends;
-                    if (Mortar::overlap(lines[f], normals, lines[m], lower, upper, &ends))
-                      {
-                        masters.push_back(m);
-                        intervals.emplace_back(lower, upper);
-                        bounding_ends.push_back(ends);
-                      }
-                  }
-                if (masters.empty())
-                  continue;
-                check_tiling(f, lines, masters, intervals, bounding_ends, facing);
-                const FullMatrix<double> A =
-                  Mortar::dual_basis_coefficients(lines[f], intervals);
-                bool overlapping = false;
-                for (const unsigned int m : masters)
-                  {
-                    Mortar::SegmentOperators ops;
-                    if (!Mortar::integrate_pair(lines[f], normals, A, lines[m],
-                                                degree + 3, ops))
-                      continue;
-                    overlapping            = true;
-                    master_is_candidate[m] = true;
-                    add_segment(f, m, ops, slave_data, M_of_node, weighted_gap_of_node);
-                  }
-                if (overlapping)
-                  {
-                    ++n_overlapping_faces;
-                    slave_length += lengths[f];
-                    slave_modulus += lengths[f] * faces[f].youngs_modulus;
-                  }
-              }
-
-            double master_length = 0., master_modulus = 0.;
-            unsigned int n_master = 0;
-            for (unsigned int f = 0; f < faces.size(); ++f)
-              if (!faces[f].slave && faces[f].pair == p && master_is_candidate[f])
-                {
-                  master_length += lengths[f];
-                  master_modulus += lengths[f] * faces[f].youngs_modulus;
-                  ++n_master;
-                }
-            // Moduli and sizes of the overlapping faces only: the parts of
-            // the surfaces far from contact must not dilute the penalty.
-            PairStatistics &stat = statistics[p];
-            if (n_overlapping_faces > 0)
-              {
-                stat.slave_modulus    = slave_modulus / slave_length;
-                stat.mean_slave_size  = slave_length / n_overlapping_faces;
-                stat.master_modulus   = master_modulus / master_length;
-                stat.mean_master_size = master_length / n_master;
-              }
-          }
-
-        store_slave_nodes(slave_data, M_of_node, weighted_gap_of_node, u_at_dofs,
-                          surface_node_normals(lines, lengths, true),
-                          surface_node_normals(lines, lengths, false));
-      }
-  }
-
-  template <int dim>
-  void
-  ContactInterface<dim>::check_tiling(const unsigned int                            f,
-                                      const std::vector<Mortar::LineFace>          &lines,
-                                      const std::vector<unsigned int>              &masters,
-                                      const std::vector<std::pair<double, double>> &intervals,
-                                      const std::vector<std::array<int, 2>> &bounding_ends,
-                                      const std::vector<unsigned int>       &facing) const
-  {
-    // Walk the covered intervals of the slave face in order. Every part
-    // left uncovered must end at the rim of the master surface: at a slave
-    // end, or at a master node that no other facing master face shares.
-    // A shared node there means that a master face which covers the gap was
-    // lost by the segmentation, and the dual weights D_j of the slave nodes
-    // would shrink (nodal pressures = force / D_j spike): stop instead.
-    std::vector<unsigned int> order(masters.size());
-    for (unsigned int k = 0; k < order.size(); ++k)
-      order[k] = k;
-    std::sort(order.begin(), order.end(), [&](const unsigned int a, const unsigned int b) {
-      return intervals[a].first < intervals[b].first;
-    });
-    // Near contact (a master node closer to its slave image than a slave
-    // face length) the facing master faces are a graph over the slave face,
-    // so their overlaps must join; farther away the normal lines may cross
-    // before they reach the master, and a gap is no sign of a lost face.
-    // side: 0 for the lower end of interval k, 1 for its upper end.
-    const double slave_length = lines[f].nodes[0].distance(lines[f].nodes[1]);
-    const auto   check_end    = [&](const unsigned int k, const unsigned int side) {
-      const int end = bounding_ends[k][side];
-      if (end < 0)
-        return;
-      const double   xi = side == 0 ? intervals[k].first : intervals[k].second;
-      const Point<2> x  = lines[masters[k]].nodes[end];
-      if (x.distance(lines[f].point(xi)) > slave_length)
-        return;
-      const unsigned int node = faces[masters[k]].nodes[end];
-      for (const unsigned int m : facing)
-        AssertThrow(m == masters[k] ||
-                      std::find(faces[m].nodes.begin(), faces[m].nodes.begin() + 2, node) ==
-                        faces[m].nodes.begin() + 2,
-                    ExcMessage("Contact pair " + std::to_string(faces[f].pair) +
-                               ": the master faces leave a hole under the slave face from " +
-                               coordinates_text(lines[f].nodes[0]) + " to " +
-                               coordinates_text(lines[f].nodes[1]) +
-                               " at the master node " + coordinates_text(x) +
-                               ", inside the master surface. The mortar segmentation "
-                               "lost a face; the contact pressures would be wrong."));
-    };
-    // Overlaps meet at the slave image of their shared master node up to
-    // the precision of that image.
-    constexpr double meeting_tolerance = 1e-10;
-    double           reach             = -1.;
-    int              reach_face        = -1;
-    for (const unsigned int k : order)
-      {
-        if (intervals[k].first > reach + meeting_tolerance)
-          {
-            if (reach_face >= 0)
-              check_end(reach_face, 1);
-            check_end(k, 0);
-          }
-        if (intervals[k].second > reach)
-          {
-            reach      = intervals[k].second;
-            reach_face = k;
-          }
-      }
-    if (reach < 1. - meeting_tolerance)
-      check_end(reach_face, 1);
-  }
 
   template <int dim>
   std::vector<double>
@@ -895,144 +637,7 @@ namespace contact_fem
     return relative.norm() / s.D;
   }
 
-  namespace
-  {
-    /// The point of @p face closest to @p x: its parameter in [-1, 1]
-    /// (Gauss-Newton from the chord projection, exact for straight faces).
-    double
-    closest_parameter(const Mortar::LineFace &face, const Point<2> &x)
-    {
-      const Tensor<1, 2> chord = face.nodes[1] - face.nodes[0];
-      double xi = std::clamp(2. * ((x - face.nodes[0]) * chord) / chord.norm_square() - 1.,
-                             -1., 1.);
-      if (face.degree() == 1)
-        return xi;
-      for (unsigned int it = 0; it < 20; ++it)
-        {
-          const Tensor<1, 2> t    = face.tangent(xi);
-          const double       step = ((x - face.point(xi)) * t) / t.norm_square();
-          const double       next = std::clamp(xi + step, -1., 1.);
-          constexpr double   parameter_tolerance = 1e-12;
-          const bool         done = std::abs(next - xi) < parameter_tolerance;
-          xi                      = next;
-          if (done)
-            break;
-        }
-      return xi;
-    }
-  } // namespace
-
-  template <int dim>
-  std::vector<double>
-  ContactInterface<dim>::surface_distances(const std::vector<SlaveNode> &points,
-                                           const std::vector<double>    &u_at_dofs) const
-  {
-    std::vector<double> distances(points.size(), std::numeric_limits<double>::infinity());
-    if constexpr (dim == 3)
-      return surface_distances_3d(points, u_at_dofs);
-    else
-      {
-        std::vector<Tensor<1, dim>> u(nodes.size());
-        for (unsigned int n = 0; n < nodes.size(); ++n)
-          u[n] = displacement(n, u_at_dofs);
-        // Master faces per node, to tell a vertex inside the master surface
-        // (two faces: sign by their mean normal) from its rim (one face).
-        std::vector<std::vector<unsigned int>> master_faces_of_node(nodes.size());
-        std::vector<Mortar::LineFace>          lines(faces.size());
-        for (unsigned int f = 0; f < faces.size(); ++f)
-          if (!faces[f].slave)
-            {
-              lines[f] = line(faces[f], u);
-              for (const unsigned int n : faces[f].nodes)
-                master_faces_of_node[n].push_back(f);
-            }
-        const auto outward_normal = [&](const unsigned int f, const double xi) {
-          return Mortar::face_normal(lines[f], xi, faces[f].orientation);
-        };
-
-        for (unsigned int p = 0; p < pairs.size(); ++p)
-          {
-            std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
-            for (unsigned int f = 0; f < faces.size(); ++f)
-              if (!faces[f].slave && faces[f].pair == p)
-                boxes.emplace_back(whole_face_box<dim>(lines[f]), f);
-            if (boxes.empty())
-              continue;
-            const auto tree = pack_rtree(boxes);
-
-            for (unsigned int i = 0; i < points.size(); ++i)
-              {
-                const SlaveNode &s = points[i];
-                if (s.pair != p)
-                  continue;
-                const Point<dim> xd = nodes[s.node].reference + u[s.node];
-                const Point<2>   x(xd[0], xd[1]);
-                // The nearest box bounds the distance from above; every face
-                // closer than that has its box within that distance.
-                std::vector<std::pair<BoundingBox<dim>, unsigned int>> nearest;
-                tree.query(boost::geometry::index::nearest(xd, 1),
-                           std::back_inserter(nearest));
-                const auto  &first = lines[nearest[0].second];
-                const double first_xi = closest_parameter(first, x);
-                const double bound    = x.distance(first.point(first_xi));
-                BoundingBox<dim> around(std::make_pair(xd, xd));
-                around.extend(bound * (1. + 1e-12) + 1e-300);
-                std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
-                tree.query(boost::geometry::index::intersects(around),
-                           std::back_inserter(hits));
-
-                // Seeded with the nearest box's face, so that a closest face
-                // is found even if round-off keeps it out of the hits.
-                double       best      = bound;
-                double       best_xi   = first_xi;
-                unsigned int best_face = nearest[0].second;
-                for (const auto &hit : hits)
-                  {
-                    const unsigned int f  = hit.second;
-                    const double       xi = closest_parameter(lines[f], x);
-                    const double       d  = x.distance(lines[f].point(xi));
-                    // Ties (a shared vertex) go to the lower face index, so
-                    // the result does not depend on the query order.
-                    if (d < best - 1e-14 * bound || (d <= best && f < best_face))
-                      {
-                        best      = d;
-                        best_xi   = xi;
-                        best_face = f;
-                      }
-                  }
-                Tensor<1, 2> normal;
-                if (std::abs(best_xi) < 1.)
-                  normal = outward_normal(best_face, best_xi);
-                else
-                  {
-                    const unsigned int vertex = faces[best_face].nodes[best_xi < 0. ? 0 : 1];
-                    if (master_faces_of_node[vertex].size() < 2)
-                      continue; // beyond the rim of the master surface
-                    for (const unsigned int f : master_faces_of_node[vertex])
-                      normal += outward_normal(f, faces[f].nodes[0] == vertex ? -1. : 1.);
-                  }
-                const double side = (x - lines[best_face].point(best_xi)) * normal;
-                distances[i]      = side < 0. ? -best : best;
-              }
-          }
-      }
-    return distances;
-  }
 
   template class ContactInterface<2>;
   template class ContactInterface<3>;
-  template void
-  ContactInterface<2>::add_segment(const unsigned int,
-                                   const unsigned int,
-                                   const Mortar::SegmentOperators &,
-                                   std::map<unsigned int, SlaveNode> &,
-                                   std::map<unsigned int, std::map<unsigned int, double>> &,
-                                   std::map<unsigned int, Tensor<1, 2>> &);
-  template void
-  ContactInterface<3>::add_segment(const unsigned int,
-                                   const unsigned int,
-                                   const Mortar::QuadSegmentOperators &,
-                                   std::map<unsigned int, SlaveNode> &,
-                                   std::map<unsigned int, std::map<unsigned int, double>> &,
-                                   std::map<unsigned int, Tensor<1, 3>> &);
 } // namespace contact_fem

@@ -1,6 +1,7 @@
 #include <deal.II/base/quadrature_lib.h>
 
 #include <contact_fem/contact/mortar.h>
+#include <contact_fem/contact/mortar_kernel.h>
 #include <contact_fem/core/format.h>
 
 #include <algorithm>
@@ -377,7 +378,7 @@ namespace contact_fem
       result.xi_begin       = lower;
       result.xi_end         = upper;
 
-      std::vector<double> xq, wq;
+      std::vector<double> xq, wq, phi(ps + 1);
       gauss_rule(n_quadrature_points, xq, wq);
       for (unsigned int q = 0; q < xq.size(); ++q)
         {
@@ -406,18 +407,44 @@ namespace contact_fem
           const Tensor<1, 2> separation = master.point(eta) - x_slave;
 
           result.overlap_length += jxw;
-          for (unsigned int j = 0; j <= ps; ++j)
-            {
-              double phi_j = 0.;
-              for (unsigned int k = 0; k <= ps; ++k)
-                phi_j += dual_coefficients(j, k) * shape_value(ps, k, xi);
-              result.D[j] += phi_j * jxw;
-              result.weighted_gap[j] += phi_j * jxw * separation;
-              for (unsigned int l = 0; l <= pm; ++l)
-                result.M(j, l) += phi_j * shape_value(pm, l, eta) * jxw;
-            }
+          add_quadrature_point<2>(dual_coefficients, ps, pm, xi, eta, jxw, separation, phi,
+                                  result);
         }
       return result.overlap_length > 0.;
+    }
+
+    double
+    closest_parameter(const LineFace &face, const Point<2> &x)
+    {
+      const Tensor<1, 2> chord = face.nodes[1] - face.nodes[0];
+      double xi = std::clamp(2. * ((x - face.nodes[0]) * chord) / chord.norm_square() - 1.,
+                             -1., 1.);
+      if (face.degree() == 1)
+        return xi;
+      for (unsigned int it = 0; it < 20; ++it)
+        {
+          const Tensor<1, 2> t    = face.tangent(xi);
+          const double       step = ((x - face.point(xi)) * t) / t.norm_square();
+          const double       next = std::clamp(xi + step, -1., 1.);
+          constexpr double   parameter_tolerance = 1e-12;
+          const bool         done = std::abs(next - xi) < parameter_tolerance;
+          xi                      = next;
+          if (done)
+            break;
+        }
+      return xi;
+    }
+
+    BoundingBox<2>
+    whole_face_box(const LineFace &face)
+    {
+      return interpolant_box(face.nodes, lebesgue_constant(face.degree()));
+    }
+
+    unsigned int
+    n_quadrature_points(const LineFace &slave, const LineFace &)
+    {
+      return slave.shape_degree() + 3;
     }
   } // namespace Mortar
 } // namespace contact_fem

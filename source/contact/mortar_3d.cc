@@ -3,6 +3,7 @@
 #include <contact_fem/contact/mortar.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/contact/mortar_3d.h>
+#include <contact_fem/contact/mortar_kernel.h>
 
 #include <algorithm>
 #include <cmath>
@@ -388,6 +389,29 @@ namespace contact_fem
               }
           }
       }
+
+      /// Whether @p quad is a flat parallelogram with its nodes where the
+      /// bilinear map of its vertices puts them.
+      bool
+      is_parallelogram(const QuadFace &quad)
+      {
+        const auto  &x         = quad.nodes;
+        const double tolerance = 1e-12 * x[0].distance(x[3]);
+        // Differences first: the round-off is then that of the face's size,
+        // not of its distance from the origin.
+        if (((x[3] - x[1]) - (x[2] - x[0])).norm() > tolerance)
+          return false;
+        for (unsigned int k = 4; k < x.size(); ++k)
+          {
+            const Point<2> xi = quad_node_parameter(2, k);
+            Tensor<1, 3>   bilinear;
+            for (unsigned int v = 1; v < 4; ++v)
+              bilinear += quad_shape_value(1, v, xi) * (x[v] - x[0]);
+            if (((x[k] - x[0]) - bilinear).norm() > tolerance)
+              return false;
+          }
+        return true;
+      }
     } // namespace
 
     double
@@ -694,23 +718,74 @@ namespace contact_fem
         const Tensor<1, 3> separation = master.point(eta) - x_slave;
 
         result.overlap_area += jxw;
-        for (unsigned int j = 0; j < ns; ++j)
-          {
-            phi[j] = 0.;
-            for (unsigned int k = 0; k < ns; ++k)
-              phi[j] += dual_coefficients(j, k) * quad_shape_value(ps, k, xi);
-            result.D[j] += phi[j] * jxw;
-            result.weighted_gap[j] += phi[j] * jxw * separation;
-          }
-        for (unsigned int l = 0; l < nm; ++l)
-          {
-            const double Nl = quad_shape_value(pm, l, eta);
-            for (unsigned int j = 0; j < ns; ++j)
-              result.M(j, l) += phi[j] * Nl * jxw;
-          }
+        add_quadrature_point<3>(dual_coefficients, ps, pm, xi, eta, jxw, separation, phi, result);
       };
       for_each_point(slave, plane, result.polygons, n_quadrature_points, add_point);
       return result.overlap_area > 0.;
+    }
+
+    Point<2>
+    closest_parameter(const QuadFace &quad, const Point<3> &x)
+    {
+      constexpr double parameter_tolerance = 1e-13;
+      Point<2>         xi;
+      for (unsigned int it = 0; it < 30; ++it)
+        {
+          const auto         t = quad.tangents(xi);
+          const Tensor<1, 3> r = x - quad.point(xi);
+          const double       a = t[0] * t[0], b = t[0] * t[1], c = t[1] * t[1];
+          const double       det = a * c - b * b;
+          Point<2>           next(xi[0] + (c * (r * t[0]) - b * (r * t[1])) / det,
+                        xi[1] + (a * (r * t[1]) - b * (r * t[0])) / det);
+          for (unsigned int held = 0; held < 2; ++held)
+            if (std::abs(next[held]) > 1.)
+              {
+                next[held]               = next[held] > 0. ? 1. : -1.;
+                const unsigned int along = 1 - held;
+                next[along]              = std::clamp(next[along], -1., 1.);
+                for (unsigned int k = 0; k < 20; ++k)
+                  {
+                    const Tensor<1, 3> tangent = quad.tangents(next)[along];
+                    const double       step =
+                      ((x - quad.point(next)) * tangent) / tangent.norm_square();
+                    next[along] = std::clamp(next[along] + step, -1., 1.);
+                    if (std::abs(step) < parameter_tolerance)
+                      break;
+                  }
+                break;
+              }
+          const bool done = next.distance(xi) < parameter_tolerance;
+          xi              = next;
+          if (done)
+            break;
+        }
+      return xi;
+    }
+
+    BoundingBox<3>
+    whole_face_box(const QuadFace &quad)
+    {
+      const double lebesgue_1d = lebesgue_constant(quad.degree());
+      return interpolant_box(quad.nodes, lebesgue_1d * lebesgue_1d);
+    }
+
+    unsigned int
+    n_quadrature_points(const QuadFace &slave, const QuadFace &master)
+    {
+      const unsigned int exact = 2 * slave.shape_degree() + 1;
+      return is_parallelogram(slave) && is_parallelogram(master) ? exact : exact + 2;
+    }
+
+    std::vector<unsigned int>
+    boundary_vertices(const Point<2> &xi)
+    {
+      const bool on_xi = std::abs(xi[0]) == 1., on_eta = std::abs(xi[1]) == 1.;
+      const unsigned int i = xi[0] > 0. ? 1 : 0, j = xi[1] > 0. ? 2 : 0;
+      if (on_xi && on_eta)
+        return {i + j};
+      if (on_xi)
+        return {i, i + 2};
+      return {j, j + 1};
     }
   } // namespace Mortar
 } // namespace contact_fem

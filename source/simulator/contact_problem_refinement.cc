@@ -35,7 +35,7 @@ namespace contact_fem
           for (const auto &face : interface.faces)
             if (face.slave)
               {
-                const Mortar::LineFace line = interface.line(face);
+                const Mortar::LineFace line = interface.face_geometry(face);
                 for (unsigned int q = 0; q < quadrature.size(); ++q)
                   {
                     const double xi = 2. * quadrature.point(q)[0] - 1.;
@@ -54,7 +54,7 @@ namespace contact_fem
           for (const auto &face : interface.faces)
             if (face.slave)
               {
-                const Mortar::QuadFace quad = interface.quad(face);
+                const Mortar::QuadFace quad = interface.face_geometry(face);
                 for (unsigned int q = 0; q < quadrature.size(); ++q)
                   {
                     const Point<2> xi(2. * quadrature.point(q)[0] - 1.,

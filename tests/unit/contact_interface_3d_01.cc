@@ -114,7 +114,7 @@ main(int argc, char **argv)
   for (const auto &face : interface.faces)
     {
       const Tensor<1, 3> n =
-        Mortar::face_normal(interface.quad(face), Point<2>(), face.orientation);
+        Mortar::face_normal(interface.face_geometry(face), Point<2>(), face.orientation);
       std::cout << "  " << (face.slave ? "slave" : "master") << " face normal (" << clean(n[0])
                 << ", " << clean(n[1]) << ", " << clean(n[2]) << ")" << std::endl;
     }

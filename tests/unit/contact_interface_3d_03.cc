@@ -58,7 +58,7 @@ namespace
     double result = 0.;
     for (const auto &face : interface.faces)
       if (face.slave)
-        result += area(interface.quad(face));
+        result += area(interface.face_geometry(face));
     return result;
   }
 } // namespace
@@ -98,7 +98,7 @@ main(int argc, char **argv)
     {
       ++(face.slave ? n_slave : n_master);
       n_with_five += face.geometry_points.size() == 5;
-      const Mortar::QuadFace quad = interface.quad(face);
+      const Mortar::QuadFace quad = interface.face_geometry(face);
       if (face.slave)
         for (unsigned int k = 4; k < 9; ++k)
           off_cylinder = std::max(off_cylinder,
@@ -134,7 +134,7 @@ main(int argc, char **argv)
   double largest_error = 0.;
   for (const auto &face : interface.faces)
     {
-      const Mortar::QuadFace moved = interface.quad(face, u);
+      const Mortar::QuadFace moved = interface.face_geometry(face, u);
       const auto            &v     = face.nodes;
       const Tensor<1, 3>     expected[5] = {0.5 * (u[v[0]] + u[v[2]]), 0.5 * (u[v[1]] + u[v[3]]),
                                         0.5 * (u[v[0]] + u[v[1]]), 0.5 * (u[v[2]] + u[v[3]]),

@@ -12,8 +12,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <contact_fem/material/material.h>
-#include <contact_fem/contact/mortar.h>
-#include <contact_fem/contact/mortar_3d.h>
+#include <contact_fem/contact/mortar_kernel.h>
 #include <contact_fem/contact/contact_parameters.h>
 
 #include <array>
@@ -39,10 +38,13 @@ namespace contact_fem
    * linear in the displacement. surface_distances() checks a converged
    * state against the whole master surface, independently of the operators.
    *
-   * 2D: line faces of degree 1 or 2. 3D: quadrilateral faces of degree 1
-   * or 2, through the kernel of mortar_3d.h. In both, Q1 on a quadratic
-   * mapping has faces of geometry degree 2 (Face::geometry_points) with
-   * the linear or bilinear shapes of the element.
+   * Written once over the dimension, with the face kernel of
+   * Mortar::Kernel<dim> (mortar_kernel.h): line faces of degree 1 or 2 in
+   * 2D, quadrilateral faces of degree 1 or 2 in 3D. In both, Q1 on a
+   * quadratic mapping has faces of geometry degree 2
+   * (Face::geometry_points) with the linear or bilinear shapes of the
+   * element. Only the tiling check of the segmentation differs by
+   * dimension (check_tiling()).
    *
    * Hanging vertices (3D adaptive meshes: a node on the edge of a coarser
    * neighbour face) carry no multiplier: the multiplier space is that of
@@ -55,13 +57,19 @@ namespace contact_fem
    * vertices go to their parents with the hanging-node weights, so no
    * constraint refers to a hanging DoF.
    *
-   * Implemented in source/contact/contact_interface.cc, the 3D search and
-   * distances in source/contact/contact_interface_3d.cc.
+   * Implemented in source/contact/contact_interface.cc (set-up, hanging
+   * vertices, operators), source/contact/contact_interface_search.cc (search
+   * and integration, surface distances) and
+   * source/contact/contact_interface_tiling.cc (the tiling checks).
    */
   template <int dim>
   class ContactInterface
   {
   public:
+    /// The face geometry of the mortar kernel: Mortar::LineFace (2D) or
+    /// Mortar::QuadFace (3D).
+    using FaceGeometry = typename Mortar::Kernel<dim>::Face;
+
     /// A node (support point) of a contact surface.
     struct Node
     {
@@ -85,7 +93,7 @@ namespace contact_fem
       /// face on a quadratic mapping, from the mapping: in 2D the midpoint,
       /// in 3D the four edge midpoints and the centre (nodes 4-8 of
       /// Mortar::QuadFace). They move with the (bi)linear interpolation of
-      /// the vertex displacements (line(), quad()). Empty if isoparametric.
+      /// the vertex displacements (face_geometry()). Empty if isoparametric.
       std::vector<Point<dim>>   geometry_points;
       double                    orientation; ///< makes the rotated tangent point outward
       unsigned int              pair;
@@ -252,13 +260,10 @@ namespace contact_fem
     contact_modulus(const unsigned int pair = 0) const;
 
     /// The geometry of @p face at X + u (@p u per interface node; empty:
-    /// the reference configuration). Only 2D.
-    Mortar::LineFace
-    line(const Face &face, const std::vector<Tensor<1, dim>> &u = {}) const;
-
-    /// The geometry of @p face at X + u, as line(). Only 3D.
-    Mortar::QuadFace
-    quad(const Face &face, const std::vector<Tensor<1, dim>> &u = {}) const;
+    /// the reference configuration). Its geometry points move with the
+    /// (bi)linear interpolation of the vertex displacements.
+    FaceGeometry
+    face_geometry(const Face &face, const std::vector<Tensor<1, dim>> &u = {}) const;
 
     /**
      * Normalised weighted gap g_j = (n_j . (sum_l M_jl x_l - D_j x_j) +
@@ -281,7 +286,8 @@ namespace contact_fem
     /// The slave and master faces (indices in faces) the last search found
     /// a mortar segment between, as (slave face, master face).
     std::vector<std::pair<unsigned int, unsigned int>> coupled_faces;
-    /// Length of every face at the configuration of the last search.
+    /// Length of every face (in 3D the side of a square of its area) at
+    /// the configuration of the last search.
     std::vector<double> face_lengths;
     unsigned int                degree = 1;          ///< of the elements
     unsigned int                geometry_degree = 1; ///< of the face geometry
@@ -296,54 +302,44 @@ namespace contact_fem
                  const unsigned int                      nodes_per_face,
                  const unsigned int                      n_geometry_points);
 
-    /// Normal, size and full_area of every slave node, from the face
-    /// geometry of the search configuration (2D).
-    std::map<unsigned int, SlaveNode>
-    slave_node_geometry(const std::vector<Mortar::LineFace> &lines,
-                        const std::vector<double>           &lengths) const;
+    /// Per surface node: its mean unit normal and mean plane-strain
+    /// modulus (surface_node_normals()).
+    using SurfaceNormals = std::map<unsigned int, std::pair<Tensor<1, dim>, double>>;
 
-    /// Per node of the slave (@p slave) or master surfaces: the
-    /// length-weighted mean unit normal of its faces and their mean
-    /// plane-strain modulus E / (1 - nu^2) (2D).
-    std::map<unsigned int, std::pair<Tensor<1, 2>, double>>
-    surface_node_normals(const std::vector<Mortar::LineFace> &lines,
-                         const std::vector<double>           &lengths,
-                         const bool                           slave) const;
+    /// Per node of the slave (@p slave) or master surfaces: the mean unit
+    /// normal of its faces and their mean plane-strain modulus E / (1 -
+    /// nu^2), weighted by the face @p measures (lengths or areas); with
+    /// @p slave_data, also the normal, full_area and size of every slave
+    /// node.
+    SurfaceNormals
+    surface_node_normals(const std::vector<FaceGeometry>   &geometries,
+                         const std::vector<double>         &measures,
+                         const bool                         slave,
+                         std::map<unsigned int, SlaveNode> *slave_data = nullptr) const;
 
-    /// Stops the run if the overlaps @p intervals (slave parameters) of
-    /// slave face @p f with the master faces @p masters leave a part of the
-    /// face uncovered that does not end at the rim of the master surface
-    /// (a slave end, or a master end node that none of the other @p facing
-    /// master faces shares): a hole in the tiling would shrink the dual
-    /// weights D_j silently (2D). @p bounding_ends: what Mortar::overlap()
-    /// says bounds each interval.
+    /**
+     * Stops the run if the @p overlaps of slave face @p f with the master
+     * faces @p masters leave a hole or a doubled part where the master
+     * surface covers the face (away from the rim of the @p facing master
+     * faces): a hole in the tiling would shrink the dual weights D_j
+     * silently. Specialised per dimension (contact_interface_tiling.cc):
+     * the covered intervals of a line face in 2D, the area of the overlap
+     * polygons in 3D.
+     */
     void
-    check_tiling(const unsigned int                            f,
-                 const std::vector<Mortar::LineFace>          &lines,
-                 const std::vector<unsigned int>              &masters,
-                 const std::vector<std::pair<double, double>> &intervals,
-                 const std::vector<std::array<int, 2>>        &bounding_ends,
-                 const std::vector<unsigned int>              &facing) const;
-
-    /// 3D: stops the run if the overlap @p polygons of slave face @p f
-    /// (near the master and away from the rim of the @p facing master
-    /// faces) do not tile its parameter square.
-    void
-    check_tiling(const unsigned int                           f,
-                 const std::vector<Mortar::QuadFace>         &quads,
-                 const std::vector<unsigned int>             &masters,
-                 const std::vector<unsigned int>             &facing,
-                 const std::vector<Mortar::ParameterPolygon> &polygons) const;
+    check_tiling(const unsigned int                               f,
+                 const std::vector<FaceGeometry>                 &geometries,
+                 const std::vector<unsigned int>                 &masters,
+                 const typename Mortar::Kernel<dim>::Overlaps    &overlaps,
+                 const std::vector<unsigned int>                 &facing) const;
 
     /// Adds the operators @p ops of slave face @p f against master face
     /// @p m to the sums of the slave nodes of @p f (D, M, weighted gap) and
-    /// records the pair as coupled. 2D (Mortar::SegmentOperators) and 3D
-    /// (Mortar::QuadSegmentOperators).
-    template <class SegmentOperators>
+    /// records the pair as coupled.
     void
     add_segment(const unsigned int                                      f,
                 const unsigned int                                      m,
-                const SegmentOperators                                 &ops,
+                const typename Mortar::Kernel<dim>::Operators          &ops,
                 std::map<unsigned int, SlaveNode>                      &slave_data,
                 std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
                 std::map<unsigned int, Tensor<1, dim>>                 &weighted_gap_of_node);
@@ -378,14 +374,11 @@ namespace contact_fem
     bool
     add_constrained_face(
       const unsigned int                                                        f,
-      const std::vector<std::pair<unsigned int, Mortar::QuadSegmentOperators>> &segments,
+      const std::vector<std::pair<unsigned int, typename Mortar::Kernel<dim>::Operators>>
+                                                             &segments,
       std::map<unsigned int, SlaveNode>                                        &slave_data,
       std::map<unsigned int, std::map<unsigned int, double>>                   &M_of_node,
       std::map<unsigned int, Tensor<1, dim>> &weighted_gap_of_node);
-
-    /// Per surface node: its mean unit normal and mean plane-strain
-    /// modulus (surface_node_normals(), surface_node_normals_3d()).
-    using SurfaceNormals = std::map<unsigned int, std::pair<Tensor<1, dim>, double>>;
 
     /// Fills slave_nodes from the integrated operators: a node is paired
     /// when the master covers a fair part of its support; its M entries,
@@ -399,37 +392,18 @@ namespace contact_fem
                       const SurfaceNormals                   &slave_normals,
                       const SurfaceNormals                   &master_normals);
 
-    /// update() in 3D.
+    /// Search and integration of pair @p p on the face @p geometries of
+    /// @p measures: adds D, M and the weighted gap of the slave nodes of the
+    /// pair, and sets its statistics.
     void
-    update_3d(const std::vector<double> &u_at_dofs,
-              const double               search_factor,
-              const std::vector<double> &motion_allowance);
-
-    /// Search and integration of pair @p p in 3D: adds D, M and the weighted
-    /// gap of the slave nodes of the pair, and sets its statistics.
-    void
-    search_pair_3d(const unsigned int                                      p,
-                   const std::vector<Mortar::QuadFace>                    &quads,
-                   const std::vector<double>                              &areas,
-                   const double                                            search_factor,
-                   const double                                            allowance,
-                   std::map<unsigned int, SlaveNode>                      &slave_data,
-                   std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
-                   std::map<unsigned int, Tensor<1, dim>> &weighted_gap_of_node);
-
-    /// Per node of the slave or master surface in 3D: the area-weighted
-    /// mean unit normal of its faces and their mean E / (1 - nu^2); with
-    /// @p slave_data, also the full_area and size of every slave node.
-    std::map<unsigned int, std::pair<Tensor<1, dim>, double>>
-    surface_node_normals_3d(const std::vector<Mortar::QuadFace> &quads,
-                            const std::vector<double>           &areas,
-                            const bool                           slave,
-                            std::map<unsigned int, SlaveNode>   *slave_data = nullptr) const;
-
-    /// surface_distances() in 3D.
-    std::vector<double>
-    surface_distances_3d(const std::vector<SlaveNode> &points,
-                         const std::vector<double>    &u_at_dofs) const;
+    search_pair(const unsigned int                                      p,
+                const std::vector<FaceGeometry>                        &geometries,
+                const std::vector<double>                              &measures,
+                const double                                            search_factor,
+                const double                                            allowance,
+                std::map<unsigned int, SlaveNode>                      &slave_data,
+                std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
+                std::map<unsigned int, Tensor<1, dim>> &weighted_gap_of_node);
 
     /// Displacement at dofs() of the last search, and its reach per pair.
     std::vector<double>                                 search_displacement;
@@ -439,19 +413,21 @@ namespace contact_fem
     IndexSet                                            owned_dofs;
     MPI_Comm                                            communicator;
   };
-  // The 3D members exist for dim = 3 only (contact_interface_3d.cc).
-  template <>
-  Mortar::QuadFace
-  ContactInterface<3>::quad(const Face &, const std::vector<Tensor<1, 3>> &) const;
+  // The tiling checks differ by dimension (contact_interface_tiling.cc).
   template <>
   void
-  ContactInterface<3>::update_3d(const std::vector<double> &,
-                                 const double,
-                                 const std::vector<double> &);
+  ContactInterface<2>::check_tiling(const unsigned int,
+                                    const std::vector<Mortar::LineFace> &,
+                                    const std::vector<unsigned int> &,
+                                    const Mortar::Kernel<2>::Overlaps &,
+                                    const std::vector<unsigned int> &) const;
   template <>
-  std::vector<double>
-  ContactInterface<3>::surface_distances_3d(const std::vector<SlaveNode> &,
-                                            const std::vector<double> &) const;
+  void
+  ContactInterface<3>::check_tiling(const unsigned int,
+                                    const std::vector<Mortar::QuadFace> &,
+                                    const std::vector<unsigned int> &,
+                                    const Mortar::Kernel<3>::Overlaps &,
+                                    const std::vector<unsigned int> &) const;
 } // namespace contact_fem
 
 #endif

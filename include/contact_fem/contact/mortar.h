@@ -166,6 +166,23 @@ namespace contact_fem
                    const LineFace                   &master,
                    const unsigned int                n_quadrature_points,
                    SegmentOperators                 &result);
+
+    /// The point of @p face closest to @p x: its parameter in [-1, 1]
+    /// (Gauss-Newton from the chord projection, exact for straight faces).
+    double
+    closest_parameter(const LineFace &face, const Point<2> &x);
+
+    /// A box that holds all of @p face, not only its nodes (a quadratic
+    /// face bulges beyond them): the penetration check needs the exact
+    /// nearest face. The search works on the nodes' boxes, whose reach (a
+    /// fraction of the face size) covers that bulge.
+    BoundingBox<2>
+    whole_face_box(const LineFace &face);
+
+    /// Gauss points of the mortar integration of a pair: exact for flat
+    /// faces (polynomial integrands) with two to spare.
+    unsigned int
+    n_quadrature_points(const LineFace &slave, const LineFace &master);
   } // namespace Mortar
 } // namespace contact_fem
 

@@ -1,0 +1,399 @@
+// The search of ContactInterface, written once over the dimension: the
+// nodal normals of the surfaces, the broad phase (R-tree of the master
+// faces), the narrow phase and the mortar integration of every slave face
+// against its masters, and the independent surface distances.
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/boost_adaptors/bounding_box.h>
+#include <deal.II/numerics/rtree.h>
+
+#include <contact_fem/contact/contact_interface.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <tuple>
+
+namespace contact_fem
+{
+  template <int dim>
+  typename ContactInterface<dim>::SurfaceNormals
+  ContactInterface<dim>::surface_node_normals(const std::vector<FaceGeometry>   &geometries,
+                                              const std::vector<double>         &measures,
+                                              const bool                         slave,
+                                              std::map<unsigned int, SlaveNode> *slave_data) const
+  {
+    using Kernel = Mortar::Kernel<dim>;
+    SurfaceNormals                       result;
+    std::map<unsigned int, double>       measure_of_node;
+    std::map<unsigned int, unsigned int> n_adjacent;
+    // The full area: exact for flat faces; in 3D the curved geometry of Q1
+    // on a quadratic mapping takes the points of its degree, 2D keeps the
+    // element's (its outputs were made so).
+    const QGauss<dim - 1> q(dim == 2 ? degree + 1 : geometry_degree + 1);
+    for (unsigned int f = 0; f < faces.size(); ++f)
+      if (faces[f].slave == slave)
+        for (unsigned int k = 0; k < faces[f].nodes.size(); ++k)
+          {
+            const unsigned int n    = faces[f].nodes[k];
+            auto &[normal, modulus] = result[n];
+            normal += measures[f] * Mortar::face_normal(geometries[f],
+                                                        Kernel::node_parameter(degree, k),
+                                                        faces[f].orientation);
+            modulus += measures[f] * faces[f].youngs_modulus /
+                       (1. - faces[f].poisson_ratio * faces[f].poisson_ratio);
+            measure_of_node[n] += measures[f];
+            ++n_adjacent[n];
+            if (slave_data == nullptr)
+              continue;
+            SlaveNode &s = (*slave_data)[n];
+            s.node       = n;
+            s.pair       = faces[f].pair;
+            for (unsigned int i = 0; i < q.size(); ++i)
+              {
+                const auto xi = Kernel::parameter(q.point(i));
+                s.full_area += Kernel::reference_measure * q.weight(i) *
+                               Kernel::area_element(geometries[f], xi) *
+                               Kernel::shape_value(degree, k, xi);
+              }
+            // The nodal size h_j: the face's side (the side of a square of
+            // its area in 3D).
+            s.size += Kernel::side(measures[f]) / degree;
+          }
+    for (auto &[n, value] : result)
+      {
+        value.first /= value.first.norm();
+        value.second /= measure_of_node[n];
+        if (slave_data != nullptr)
+          {
+            SlaveNode &s = slave_data->at(n);
+            s.normal     = value.first;
+            s.size /= n_adjacent[n];
+          }
+      }
+    return result;
+  }
+
+  namespace
+  {
+    /// The length (2D) or area (3D) of @p face.
+    template <int dim>
+    double
+    face_measure(const typename Mortar::Kernel<dim>::Face &face)
+    {
+      using Kernel = Mortar::Kernel<dim>;
+      const QGauss<dim - 1> q(3);
+      double                measure = 0.;
+      for (unsigned int i = 0; i < q.size(); ++i)
+        measure += Kernel::reference_measure * q.weight(i) *
+                   Kernel::area_element(face, Kernel::parameter(q.point(i)));
+      return measure;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ContactInterface<dim>::update(const std::vector<double> &u_at_dofs,
+                                const double               search_factor,
+                                const std::vector<double> &motion_allowance)
+  {
+    search_displacement = u_at_dofs;
+    reach_of_search.assign(pairs.size(), std::numeric_limits<double>::max());
+    std::vector<Tensor<1, dim>> u(nodes.size());
+    for (unsigned int n = 0; n < nodes.size(); ++n)
+      u[n] = displacement(n, u_at_dofs);
+    // Lengths of the faces (2D) or areas (3D), and their sides.
+    std::vector<FaceGeometry> geometries(faces.size());
+    std::vector<double>       measures(faces.size());
+    face_lengths.resize(faces.size());
+    for (unsigned int f = 0; f < faces.size(); ++f)
+      {
+        geometries[f]   = face_geometry(faces[f], u);
+        measures[f]     = face_measure<dim>(geometries[f]);
+        face_lengths[f] = Mortar::Kernel<dim>::side(measures[f]);
+      }
+    std::map<unsigned int, SlaveNode> slave_data;
+    const SurfaceNormals              slave_normals =
+      surface_node_normals(geometries, measures, true, &slave_data);
+    coupled_faces.clear();
+
+    statistics.assign(pairs.size(), PairStatistics());
+    std::map<unsigned int, std::map<unsigned int, double>> M_of_node;
+    std::map<unsigned int, Tensor<1, dim>>                 weighted_gap_of_node;
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      search_pair(p, geometries, measures, search_factor,
+                  motion_allowance.empty() ? 0. : motion_allowance[p], slave_data, M_of_node,
+                  weighted_gap_of_node);
+    store_slave_nodes(slave_data, M_of_node, weighted_gap_of_node, u_at_dofs, slave_normals,
+                      surface_node_normals(geometries, measures, false));
+  }
+
+  template <int dim>
+  void
+  ContactInterface<dim>::search_pair(
+    const unsigned int                                      p,
+    const std::vector<FaceGeometry>                        &geometries,
+    const std::vector<double>                              &measures,
+    const double                                            search_factor,
+    const double                                            allowance,
+    std::map<unsigned int, SlaveNode>                      &slave_data,
+    std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
+    std::map<unsigned int, Tensor<1, dim>>                 &weighted_gap_of_node)
+  {
+    using Kernel = Mortar::Kernel<dim>;
+    // Broad phase: an R-tree of the master face boxes, with a margin so
+    // that touching boxes of flat faces meet.
+    constexpr double master_box_margin = 1e-2;
+    std::vector<std::pair<BoundingBox<dim>, unsigned int>> master_boxes;
+    for (unsigned int f = 0; f < faces.size(); ++f)
+      if (!faces[f].slave && faces[f].pair == p)
+        {
+          BoundingBox<dim> box(geometries[f].nodes);
+          box.extend(master_box_margin * face_lengths[f]);
+          master_boxes.emplace_back(box, f);
+        }
+    const auto tree = pack_rtree(master_boxes);
+
+    std::vector<bool> master_is_candidate(faces.size(), false);
+    double            slave_measure = 0., slave_modulus = 0.;
+    unsigned int      n_overlapping_faces = 0;
+    for (unsigned int f = 0; f < faces.size(); ++f)
+      {
+        if (!faces[f].slave || faces[f].pair != p)
+          continue;
+        const double     reach = search_factor * face_lengths[f] + allowance;
+        BoundingBox<dim> box(geometries[f].nodes);
+        box.extend(reach);
+        reach_of_search[p] = std::min(reach_of_search[p], reach);
+        std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
+        tree.query(boost::geometry::index::intersects(box), std::back_inserter(hits));
+        std::sort(hits.begin(), hits.end(),
+                  [](const auto &a, const auto &b) { return a.second < b.second; });
+
+        // Narrow phase: opposing normals, then the overlaps, on which the
+        // dual basis of the slave face is built (the part the masters
+        // cover).
+        std::vector<Tensor<1, dim>> normals;
+        for (const unsigned int n : faces[f].nodes)
+          normals.push_back(slave_data.at(n).normal);
+        const Tensor<1, dim> n_slave =
+          Mortar::face_normal(geometries[f], Kernel::centre(), faces[f].orientation);
+        std::vector<unsigned int>   masters, facing;
+        typename Kernel::Overlaps   overlaps;
+        for (const auto &hit : hits)
+          {
+            const unsigned int m = hit.second;
+            if (!(n_slave * Mortar::face_normal(geometries[m], Kernel::centre(),
+                                                faces[m].orientation) <
+                  0.))
+              continue;
+            facing.push_back(m);
+            if (Kernel::add_overlap(geometries[f], normals, geometries[m], overlaps))
+              masters.push_back(m);
+          }
+        if (masters.empty())
+          continue;
+        check_tiling(f, geometries, masters, overlaps, facing);
+        const FullMatrix<double> A = Kernel::dual_basis(geometries[f], normals, overlaps);
+        std::vector<std::pair<unsigned int, typename Kernel::Operators>> segments;
+        for (const unsigned int m : masters)
+          {
+            typename Kernel::Operators ops;
+            if (!Mortar::integrate_pair(geometries[f], normals, A, geometries[m],
+                                        Mortar::n_quadrature_points(geometries[f],
+                                                                    geometries[m]),
+                                        ops))
+              continue;
+            master_is_candidate[m] = true;
+            segments.emplace_back(m, std::move(ops));
+          }
+        if (!add_constrained_face(f, segments, slave_data, M_of_node, weighted_gap_of_node))
+          for (const auto &[m, ops] : segments)
+            add_segment(f, m, ops, slave_data, M_of_node, weighted_gap_of_node);
+        if (!segments.empty())
+          {
+            ++n_overlapping_faces;
+            slave_measure += measures[f];
+            slave_modulus += measures[f] * faces[f].youngs_modulus;
+          }
+      }
+
+    // Moduli and sizes of the overlapping faces only: the parts of the
+    // surfaces far from contact must not dilute the penalty.
+    double       master_measure = 0., master_modulus = 0.;
+    unsigned int n_master = 0;
+    for (unsigned int f = 0; f < faces.size(); ++f)
+      if (master_is_candidate[f])
+        {
+          master_measure += measures[f];
+          master_modulus += measures[f] * faces[f].youngs_modulus;
+          ++n_master;
+        }
+    PairStatistics &stat = statistics[p];
+    if (n_overlapping_faces > 0)
+      {
+        stat.slave_modulus    = slave_modulus / slave_measure;
+        stat.mean_slave_size  = Kernel::side(slave_measure / n_overlapping_faces);
+        stat.master_modulus   = master_modulus / master_measure;
+        stat.mean_master_size = Kernel::side(master_measure / n_master);
+      }
+  }
+
+  namespace
+  {
+    /**
+     * The point of the faces in @p tree (boxes that hold the whole faces
+     * @p geometries) closest to @p x: its face, parameter and distance.
+     * The nearest box bounds the distance from above; every face closer
+     * than that has its box within that distance. Ties (a shared edge or
+     * vertex) go to the lower face index, so the result does not depend on
+     * the query order.
+     */
+    template <int dim, class Tree>
+    std::tuple<unsigned int, typename Mortar::Kernel<dim>::Parameter, double>
+    closest_point(const Tree                                              &tree,
+                  const std::vector<typename Mortar::Kernel<dim>::Face> &geometries,
+                  const Point<dim>                                        &x)
+    {
+      std::vector<std::pair<BoundingBox<dim>, unsigned int>> nearest;
+      tree.query(boost::geometry::index::nearest(x, 1), std::back_inserter(nearest));
+      const auto  &first    = geometries[nearest[0].second];
+      const auto   first_xi = Mortar::closest_parameter(first, x);
+      const double bound    = x.distance(first.point(first_xi));
+      BoundingBox<dim> around(std::make_pair(x, x));
+      around.extend(bound * (1. + 1e-12) + 1e-300);
+      std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
+      tree.query(boost::geometry::index::intersects(around), std::back_inserter(hits));
+
+      // Seeded with the nearest box's face, so that a closest face is found
+      // even if round-off keeps it out of the hits.
+      double       best      = bound;
+      auto         best_xi   = first_xi;
+      unsigned int best_face = nearest[0].second;
+      for (const auto &hit : hits)
+        {
+          const unsigned int f  = hit.second;
+          const auto         xi = Mortar::closest_parameter(geometries[f], x);
+          const double       d  = x.distance(geometries[f].point(xi));
+          if (d < best - 1e-14 * bound || (d <= best && f < best_face))
+            {
+              best      = d;
+              best_xi   = xi;
+              best_face = f;
+            }
+        }
+      return {best_face, best_xi, best};
+    }
+  } // namespace
+
+  template <int dim>
+  std::vector<double>
+  ContactInterface<dim>::surface_distances(const std::vector<SlaveNode> &points,
+                                           const std::vector<double>    &u_at_dofs) const
+  {
+    using Kernel = Mortar::Kernel<dim>;
+    std::vector<double> distances(points.size(), std::numeric_limits<double>::infinity());
+    std::vector<Tensor<1, dim>> u(nodes.size());
+    for (unsigned int n = 0; n < nodes.size(); ++n)
+      u[n] = displacement(n, u_at_dofs);
+    // Master faces per vertex node and per edge (by its sorted vertex
+    // nodes; in 2D an edge is a vertex): a closest point on an edge with
+    // one face, or on a vertex of such an edge, lies on the rim of the
+    // master surface.
+    std::vector<std::vector<unsigned int>>                        master_faces_of_node(nodes.size());
+    std::map<std::pair<unsigned int, unsigned int>, unsigned int> faces_of_edge;
+    std::vector<FaceGeometry>                                     geometries(faces.size());
+    for (unsigned int f = 0; f < faces.size(); ++f)
+      if (!faces[f].slave)
+        {
+          geometries[f] = face_geometry(faces[f], u);
+          const auto &v = faces[f].nodes;
+          for (unsigned int k = 0; k < Kernel::n_vertices; ++k)
+            master_faces_of_node[v[k]].push_back(f);
+          for (const auto &[a, b] : Kernel::edges)
+            ++faces_of_edge[std::minmax(v[a], v[b])];
+        }
+    std::set<unsigned int> rim_vertices;
+    for (const auto &[edge, count] : faces_of_edge)
+      if (count < 2)
+        rim_vertices.insert({edge.first, edge.second});
+
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      {
+        std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
+        for (unsigned int f = 0; f < faces.size(); ++f)
+          if (!faces[f].slave && faces[f].pair == p)
+            boxes.emplace_back(Mortar::whole_face_box(geometries[f]), f);
+        if (boxes.empty())
+          continue;
+        const auto tree = pack_rtree(boxes);
+        for (unsigned int i = 0; i < points.size(); ++i)
+          {
+            const SlaveNode &s = points[i];
+            if (s.pair != p)
+              continue;
+            const Point<dim> x = nodes[s.node].reference + u[s.node];
+            const auto [best_face, best_xi, best] = closest_point<dim>(tree, geometries, x);
+            const FaceGeometry  &face = geometries[best_face];
+            const Tensor<1, dim> r    = x - face.point(best_xi);
+            Tensor<1, dim>       normal;
+            if (Kernel::inside(best_xi))
+              normal = Mortar::face_normal(face, best_xi, faces[best_face].orientation);
+            else
+              {
+                // On an edge or a vertex: the mean normal of the faces there.
+                std::vector<unsigned int> vertices;
+                for (const unsigned int k : Kernel::boundary_vertices(best_xi))
+                  vertices.push_back(faces[best_face].nodes[k]);
+                if (std::any_of(vertices.begin(), vertices.end(),
+                                [&](const unsigned int v) { return rim_vertices.count(v); }))
+                  {
+                    // On the rim of the master surface: beyond it in 2D (a
+                    // rim vertex); in 3D a distance only if the node lies
+                    // straight over the rim edge (along the face normal).
+                    if constexpr (dim == 2)
+                      continue;
+                    const Tensor<1, dim> n =
+                      Mortar::face_normal(face, best_xi, faces[best_face].orientation);
+                    if ((r - (r * n) * n).norm() > 1e-8 * s.size)
+                      continue;
+                    distances[i] = r * n < 0. ? -best : best;
+                    continue;
+                  }
+                for (const unsigned int f : master_faces_of_node[vertices[0]])
+                  {
+                    const auto &v    = faces[f].nodes;
+                    const auto  last = v.begin() + Kernel::n_vertices;
+                    if (vertices.size() == 2 && std::find(v.begin(), last, vertices[1]) == last)
+                      continue;
+                    const unsigned int k = std::find(v.begin(), last, vertices[0]) - v.begin();
+                    normal += Mortar::face_normal(geometries[f], Kernel::node_parameter(1, k),
+                                                  faces[f].orientation);
+                  }
+              }
+            const double side = r * normal;
+            distances[i]      = side < 0. ? -best : best;
+          }
+      }
+    return distances;
+  }
+
+  // The members defined here, for both dimensions; the class itself is
+  // instantiated in contact_interface.cc.
+  template void
+  ContactInterface<2>::update(const std::vector<double> &,
+                              const double,
+                              const std::vector<double> &);
+  template std::vector<double>
+  ContactInterface<2>::surface_distances(const std::vector<SlaveNode> &,
+                                         const std::vector<double> &) const;
+  template void
+  ContactInterface<3>::update(const std::vector<double> &,
+                              const double,
+                              const std::vector<double> &);
+  template std::vector<double>
+  ContactInterface<3>::surface_distances(const std::vector<SlaveNode> &,
+                                         const std::vector<double> &) const;
+} // namespace contact_fem
