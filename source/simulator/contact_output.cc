@@ -5,6 +5,7 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <contact_fem/postprocess/forces.h>
 #include <contact_fem/simulator/contact_problem.h>
 #include <contact_fem/simulator/cattaneo.h>
 #include <contact_fem/simulator/hertz.h>
@@ -233,6 +234,39 @@ namespace contact_fem
       .set("largest_body_load", largest_body_load)
       .set("relative_imbalance", scale > no_force ? (load + reaction).norm() / scale : 0.);
     return result;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::record_forces(const unsigned int step, const double time,
+                                     Json &step_record)
+  {
+    std::vector<double> contact_force;
+    if (contact)
+      contact_force = contact->residuals(*interface, interface_displacement).contact_force;
+    const ForceReport<dim> forces = compute_forces<dim>(
+      {dof_handler, residual, dirichlet_constraints, boundary_conditions.displacements,
+       boundary_conditions.points, interface.get(), contact.get(), contact_force,
+       contact_parameters.pairs});
+    std::ostringstream text;
+    forces.print(text, time);
+    pcout << text.str();
+    step_record.set("forces", forces.to_json());
+    if (force_history.empty())
+      force_history_header = "cycle,step,t" + forces.csv_header();
+    std::ostringstream row;
+    row << cycle << ',' << step << ',' << std::setprecision(10) << time << forces.csv_row();
+    force_history.push_back(row.str());
+    const std::string path = output.directory + "/forces.csv";
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      {
+        check_written(path, true);
+        return;
+      }
+    std::string csv = force_history_header + "\n";
+    for (const auto &line : force_history)
+      csv += line + "\n";
+    throw_if_unwritten(path, write_file_atomically(path, csv), comm);
   }
 
   namespace
@@ -919,6 +953,7 @@ namespace contact_fem
   template Json ContactProblem<dim>::analytical_results(const Json &,            \
                                                         const Json &) const;     \
   template void ContactProblem<dim>::write_pressure_profile() const;             \
+  template void ContactProblem<dim>::record_forces(const unsigned int, const double, Json &); \
   template Json ContactProblem<dim>::probe_results() const;                      \
   template double ContactProblem<dim>::hertz_pressure_error(                      \
     const std::vector<double> &) const;                                           \

@@ -1989,8 +1989,9 @@ namespace contact_fem
             path.converged = false;
             break;
           }
-        steps.push(step_record);
         ++path.n_solved;
+        record_forces(path.n_solved, time, step_record);
+        steps.push(step_record);
         // The history the Cattaneo comparison needs (unloading).
         if (analytical.type == "cattaneo" && contact)
           cattaneo_load_path.push_back(cattaneo_loads(*interface, *contact).second);

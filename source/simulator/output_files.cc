@@ -173,7 +173,8 @@ namespace contact_fem
     // The VTU names are deal.II's write_vtu_with_pvtu_record(): base_NNN.pvtu
     // and base_NNN.RANK.vtu (contact_output.cc).
     static const std::regex pattern(
-      "(summary\\.json|log\\.txt|convergence\\.csv|pressure_profile\\.csv|solution\\.pvd)"
+      "(summary\\.json|log\\.txt|convergence\\.csv|pressure_profile\\.csv|forces\\.csv|"
+      "solution\\.pvd)"
       "(\\.partial)?|"
       "(solution|error_indicators)_[0-9]+\\.([0-9]+\\.vtu|pvtu)|"
       "\\.contact_fem-write-check");

@@ -524,6 +524,11 @@ namespace contact_fem
     write_convergence_row(const Json &cycle_record, const double cumulative_time);
     void
     write_pressure_profile() const;
+    /// The reactions and pair forces of the converged load step @p step
+    /// (postprocess/forces.h): printed, into @p step_record and as a row
+    /// of forces.csv.
+    void
+    record_forces(const unsigned int step, const double time, Json &step_record);
     /// Prints the contact results and the balance of the last load step.
     void
     print_results(const Json &contact_json, const Json &reaction, const Json &hertz) const;
@@ -664,6 +669,9 @@ namespace contact_fem
     /// The signed tangential load of every converged load step of the
     /// cycle, with Analytical solution/Type = cattaneo (cattaneo_loads()).
     std::vector<double> cattaneo_load_path;
+    /// forces.csv: its header and the rows of the run so far.
+    std::string              force_history_header;
+    std::vector<std::string> force_history;
     /// The materials, boundary conditions and pairs as the run takes them
     /// (apply_scene_settings()), printed at its start.
     std::string effective_input;

@@ -1,0 +1,247 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/fe/fe.h>
+
+#include <contact_fem/core/format.h>
+#include <contact_fem/postprocess/forces.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace contact_fem
+{
+  namespace
+  {
+    /// Components below 1e-6 of @p scale as 0: their digits are the
+    /// round-off of the converged equilibrium.
+    template <int dim>
+    Tensor<1, dim>
+    snapped(const Tensor<1, dim> &force, const double scale)
+    {
+      Tensor<1, dim> result = force;
+      for (unsigned int d = 0; d < dim; ++d)
+        if (std::abs(result[d]) < 1e-6 * scale)
+          result[d] = 0.;
+      return result;
+    }
+
+    template <int dim>
+    std::string
+    vector_text(const Tensor<1, dim> &force, const double scale)
+    {
+      const Tensor<1, dim> f = snapped(force, scale);
+      std::string          text = "(";
+      for (unsigned int d = 0; d < dim; ++d)
+        text += (d > 0 ? ", " : "") + significant(f[d], 6);
+      return text + ")";
+    }
+
+    template <int dim>
+    Json
+    vector_json(const Tensor<1, dim> &force)
+    {
+      Json components = Json::array();
+      for (unsigned int d = 0; d < dim; ++d)
+        components.push(force[d]);
+      return components;
+    }
+
+    std::string
+    pair_name(const ContactPair &pair)
+    {
+      return std::to_string(pair.slave) + ": " + std::to_string(pair.master);
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ForceReport<dim>::print(std::ostream &out, const double time) const
+  {
+    if (supports.empty() && pairs.empty())
+      return;
+    out << "    forces at t = " << time
+        << " (on the bodies: reactions of the supports; pairs, from the master on the slave):"
+        << std::endl;
+    for (const auto &s : supports)
+      out << "      " << s.label << ": " << vector_text(s.force, scale) << std::endl;
+    for (const auto &p : pairs)
+      out << "      pair " << pair_name(p.pair) << ": normal " << vector_text(p.normal, scale)
+          << ", tangential " << vector_text(p.tangential, scale) << ", contact "
+          << (dim == 2 ? "length " : "area ") << significant(p.area, 6) << std::endl;
+  }
+
+  template <int dim>
+  Json
+  ForceReport<dim>::to_json() const
+  {
+    Json support_list = Json::array(), pair_list = Json::array();
+    for (const auto &s : supports)
+      {
+        Json entry = Json::object();
+        entry.set("support", s.label).set("force", vector_json(s.force));
+        support_list.push(entry);
+      }
+    for (const auto &p : pairs)
+      {
+        Json entry = Json::object();
+        entry.set("slave", static_cast<unsigned int>(p.pair.slave))
+          .set("master", static_cast<unsigned int>(p.pair.master))
+          .set("normal_force", vector_json(p.normal))
+          .set("tangential_force", vector_json(p.tangential))
+          .set(dim == 2 ? "contact_length" : "contact_area", p.area);
+        pair_list.push(entry);
+      }
+    Json result = Json::object();
+    result.set("reactions", support_list).set("pairs", pair_list);
+    return result;
+  }
+
+  template <int dim>
+  std::string
+  ForceReport<dim>::csv_header() const
+  {
+    const char *axes = "xyz";
+    std::string header;
+    for (const auto &s : supports)
+      for (unsigned int d = 0; d < dim; ++d)
+        header += "," + s.column + "_" + axes[d];
+    for (const auto &p : pairs)
+      {
+        const std::string name =
+          "pair_" + std::to_string(p.pair.slave) + "_" + std::to_string(p.pair.master);
+        for (const std::string part : {"normal", "tangential"})
+          for (unsigned int d = 0; d < dim; ++d)
+            header += "," + name + "_" + part + "_" + axes[d];
+        header += "," + name + (dim == 2 ? "_length" : "_area");
+      }
+    return header;
+  }
+
+  template <int dim>
+  std::string
+  ForceReport<dim>::csv_row() const
+  {
+    std::ostringstream row;
+    row << std::setprecision(10);
+    for (const auto &s : supports)
+      for (unsigned int d = 0; d < dim; ++d)
+        row << ',' << s.force[d];
+    for (const auto &p : pairs)
+      {
+        for (const auto *part : {&p.normal, &p.tangential})
+          for (unsigned int d = 0; d < dim; ++d)
+            row << ',' << (*part)[d];
+        row << ',' << p.area;
+      }
+    return row.str();
+  }
+
+  template <int dim>
+  ForceReport<dim>
+  compute_forces(const ForceInputs<dim> &in)
+  {
+    const auto              &fe    = in.dof_handler.get_fe();
+    const IndexSet          &owned = in.dof_handler.locally_owned_dofs();
+    const MPI_Comm           comm  = in.dof_handler.get_communicator();
+    ForceReport<dim>         report;
+    std::set<types::global_dof_index> seen;
+    // The reaction at a held DoF: K u - f there, less the contact force
+    // (internal) where the DoF belongs to a contact node.
+    const auto reaction_at = [&](const types::global_dof_index dof) {
+      double r = in.residual(dof);
+      if (in.interface &&
+          std::binary_search(in.interface->dofs().begin(), in.interface->dofs().end(), dof))
+        r -= in.contact_force[in.interface->position(dof)];
+      return r;
+    };
+    // Boundaries in the order of the input; each held component of a DoF
+    // counts once, for the first boundary that holds it.
+    std::vector<types::boundary_id>                   ids;
+    std::map<types::boundary_id, std::vector<bool>>   held;
+    for (const auto &condition : in.displacements)
+      {
+        if (!held.count(condition.boundary_id))
+          {
+            ids.push_back(condition.boundary_id);
+            held[condition.boundary_id] = std::vector<bool>(dim, false);
+          }
+        held[condition.boundary_id][condition.component] = true;
+      }
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const types::boundary_id id : ids)
+      {
+        Tensor<1, dim> force;
+        for (const auto &cell : in.dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const auto f : cell->face_indices())
+              if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
+                {
+                  cell->get_dof_indices(dofs);
+                  for (unsigned int i = 0; i < dofs.size(); ++i)
+                    {
+                      const unsigned int c = fe.system_to_component_index(i).first;
+                      if (fe.has_support_on_face(i, f) && held[id][c] &&
+                          owned.is_element(dofs[i]) && in.dirichlet.is_constrained(dofs[i]) &&
+                          seen.insert(dofs[i]).second)
+                        force[c] += reaction_at(dofs[i]);
+                    }
+                }
+        report.supports.push_back({"boundary " + std::to_string(id),
+                                   "boundary_" + std::to_string(id),
+                                   Utilities::MPI::sum(force, comm)});
+      }
+    // What else is held: the fixed points, by body.
+    std::set<types::material_id> point_bodies;
+    for (const auto &condition : in.points)
+      point_bodies.insert(condition.point.material_id);
+    for (const types::material_id body : point_bodies)
+      {
+        Tensor<1, dim> force;
+        for (const auto &cell : in.dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned() && cell->material_id() == body)
+            {
+              cell->get_dof_indices(dofs);
+              for (unsigned int i = 0; i < dofs.size(); ++i)
+                if (owned.is_element(dofs[i]) && in.dirichlet.is_constrained(dofs[i]) &&
+                    seen.insert(dofs[i]).second)
+                  force[fe.system_to_component_index(i).first] += reaction_at(dofs[i]);
+            }
+        report.supports.push_back({"fixed points of body " + std::to_string(body),
+                                   "fixed_points_" + std::to_string(body),
+                                   Utilities::MPI::sum(force, comm)});
+      }
+    // The interface is the same on every rank.
+    if (in.interface && in.contact)
+      {
+        report.pairs.resize(in.pairs.size());
+        std::vector<Tensor<1, dim>> total(in.pairs.size());
+        for (unsigned int p = 0; p < in.pairs.size(); ++p)
+          report.pairs[p].pair = in.pairs[p];
+        for (const auto &s : in.interface->slave_nodes)
+          if (s.paired && in.contact->is_active(s.node))
+            {
+              const Tensor<1, dim> lambda = in.contact->traction(s);
+              const Tensor<1, dim> n      = in.contact->frame_normal(s);
+              auto                &pair   = report.pairs[s.pair];
+              pair.normal += s.D * (lambda * n) * n;
+              total[s.pair] += s.D * lambda;
+              pair.area += s.D;
+            }
+        for (unsigned int p = 0; p < in.pairs.size(); ++p)
+          report.pairs[p].tangential = total[p] - report.pairs[p].normal;
+      }
+    for (const auto &s : report.supports)
+      report.scale = std::max(report.scale, s.force.norm());
+    for (const auto &p : report.pairs)
+      report.scale = std::max(report.scale, (p.normal + p.tangential).norm());
+    return report;
+  }
+
+  template struct ForceReport<2>;
+  template struct ForceReport<3>;
+  template ForceReport<2>
+  compute_forces(const ForceInputs<2> &);
+  template ForceReport<3>
+  compute_forces(const ForceInputs<3> &);
+} // namespace contact_fem
