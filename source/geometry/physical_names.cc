@@ -93,8 +93,8 @@ namespace contact_fem
   void
   PhysicalNames::substitute(ParameterHandler &prm) const
   {
-    if (body_ids.empty() && surface_ids.empty())
-      return;
+    // Also without names: a word in an id's place then says that the file
+    // has none.
     const auto replace = [&](const std::string &section, const std::string &name,
                              const bool bodies, const char separator, const bool both_sides) {
       prm.enter_subsection(section);
