@@ -138,6 +138,20 @@ namespace contact_fem
   }
 
   template <int dim>
+  double
+  held_dof_reaction(const TrilinosWrappers::MPI::Vector &residual,
+                    const ContactInterface<dim>         *interface,
+                    const std::vector<double>           &contact_force,
+                    const types::global_dof_index        dof)
+  {
+    double r = residual(dof);
+    if (interface &&
+        std::binary_search(interface->dofs().begin(), interface->dofs().end(), dof))
+      r -= contact_force[interface->position(dof)];
+    return r;
+  }
+
+  template <int dim>
   ForceReport<dim>
   compute_forces(const ForceInputs<dim> &in)
   {
@@ -146,14 +160,8 @@ namespace contact_fem
     const MPI_Comm           comm  = in.dof_handler.get_communicator();
     ForceReport<dim>         report;
     std::set<types::global_dof_index> seen;
-    // The reaction at a held DoF: K u - f there, less the contact force
-    // (internal) where the DoF belongs to a contact node.
     const auto reaction_at = [&](const types::global_dof_index dof) {
-      double r = in.residual(dof);
-      if (in.interface &&
-          std::binary_search(in.interface->dofs().begin(), in.interface->dofs().end(), dof))
-        r -= in.contact_force[in.interface->position(dof)];
-      return r;
+      return held_dof_reaction(in.residual, in.interface, in.contact_force, dof);
     };
     // Boundaries in the order of the input; each held component of a DoF
     // counts once, for the first boundary that holds it.
@@ -240,6 +248,12 @@ namespace contact_fem
 
   template struct ForceReport<2>;
   template struct ForceReport<3>;
+  template double
+  held_dof_reaction(const TrilinosWrappers::MPI::Vector &, const ContactInterface<2> *,
+                    const std::vector<double> &, const types::global_dof_index);
+  template double
+  held_dof_reaction(const TrilinosWrappers::MPI::Vector &, const ContactInterface<3> *,
+                    const std::vector<double> &, const types::global_dof_index);
   template ForceReport<2>
   compute_forces(const ForceInputs<2> &);
   template ForceReport<3>

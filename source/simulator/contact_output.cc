@@ -184,10 +184,8 @@ namespace contact_fem
                 dirichlet_constraints.is_constrained(dofs[i]) &&
                 seen.insert(dofs[i]).second)
               {
-                double r = residual(dofs[i]);
-                if (interface && std::binary_search(interface->dofs().begin(),
-                                                    interface->dofs().end(), dofs[i]))
-                  r -= contact_force[interface->position(dofs[i])];
+                const double r =
+                  held_dof_reaction(residual, interface.get(), contact_force, dofs[i]);
                 reaction[fe.system_to_component_index(i).first] += r;
                 absolute_sum += std::abs(r);
               }

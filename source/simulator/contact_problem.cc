@@ -325,6 +325,9 @@ namespace contact_fem
               for (unsigned int d = 0; d < dim; ++d)
                 dofs.push_back(cell->vertex_dof_index(v, d));
           }
+        // The nearest vertex matters only where no rank finds the point.
+        if (!dofs.empty())
+          break;
       }
     const unsigned int found = dofs.empty() ? 0 : 1;
     if (Utilities::MPI::sum(found, comm) == 0)

@@ -93,6 +93,16 @@ namespace contact_fem
   template <int dim>
   ForceReport<dim>
   compute_forces(const ForceInputs<dim> &in);
+
+  /// The reaction at the held DoF @p dof (owned): K u - f there, less the
+  /// contact force (internal) where it belongs to a contact node of
+  /// @p interface (null without contact).
+  template <int dim>
+  double
+  held_dof_reaction(const TrilinosWrappers::MPI::Vector &residual,
+                    const ContactInterface<dim>         *interface,
+                    const std::vector<double>           &contact_force,
+                    const types::global_dof_index        dof);
 } // namespace contact_fem
 
 #endif
