@@ -10,6 +10,7 @@
 # Usage: run_perturbed.sh NUMDIFF NORMALIZE_PL COMPARISON_FILE RANKS CONTACT_FEM PRM [MPIEXEC...]
 # (RANKS 0: a serial run; else MPIEXEC... launches RANKS processes.)
 set -u
+. "$(dirname "$0")/output_filters.sh"
 numdiff="$1" normalize="$2" comparison="$3" ranks="$4" contact_fem="$5" prm="$6"
 shift 6
 seed="${CONTACT_FEM_PERTURBATION_SEED:-1}"
@@ -28,19 +29,9 @@ if [ $status -ne 0 ]; then
   cat output
   exit 1
 fi
-# An iterative solve's multigrid aggregates follow the DoF numbering, so its
-# Krylov counts (the table's last column, 'lin. it') change with the
-# numbering by design, not by round-off: that column is left out.
-strip() {
-  if grep -q "lin. it |" "$comparison"; then
-    sed -E '/^    \| +[0-9]+ \|/ s/ +[-0-9]+ \|( converged.*)?$/ |\1/' "$1"
-  else
-    cat "$1"
-  fi
-}
-strip "$comparison" > expected
-strip output > compared
-if ! "$numdiff" -a 1e-6 -r 1e-8 -s ' \t\r\n=,:;<>[](){}^' expected compared > diff; then
+strip_krylov_counts "$comparison" > expected
+strip_krylov_counts output > compared
+if ! numdiff_outputs "$numdiff" expected compared diff; then
   echo "Output with DoF renumbering seed $seed differs from $comparison"
   echo "(run: $(pwd)/output); first 30 lines of numdiff:"
   head -n 30 diff

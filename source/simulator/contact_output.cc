@@ -7,8 +7,6 @@
 
 #include <contact_fem/postprocess/forces.h>
 #include <contact_fem/simulator/contact_problem.h>
-#include <contact_fem/simulator/cattaneo.h>
-#include <contact_fem/simulator/hertz.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/simulator/output_files.h>
 
@@ -84,25 +82,6 @@ namespace contact_fem
       const TrilinosWrappers::MPI::Vector &solution;
       const bool                           b_bar;
     };
-
-    /// Resultant of the contact pressures on the slave side (the same on
-    /// every rank: the interface is known everywhere).
-    template <int dim>
-    Tensor<1, dim>
-    total_contact_force(const ContactInterface<dim>   &interface,
-                        const ContactFormulation<dim> &contact)
-    {
-      Tensor<1, dim> force;
-      for (const auto &s : interface.slave_nodes)
-        if (s.paired && contact.is_active(s.node))
-          {
-            if (contact.transmits_shear())
-              force -= s.D * contact.traction(s);
-            else
-              force += contact.normal_pressure(s.node) * s.D * s.normal;
-          }
-      return force;
-    }
   } // namespace
 
   template <int dim>
@@ -148,7 +127,7 @@ namespace contact_fem
       .set("max_contact_pressure", p_max)
       .set("min_active_contact_pressure", n_active > 0 ? p_min : 0.)
       .set("max_gap_over_h_on_active_nodes", gap_max)
-      .set("total_contact_force", total_contact_force(*interface, *contact).norm())
+      .set("total_contact_force", contact_state().contact_force().norm())
       .set("slave_element_size", n_active > 0 ? size_sum / n_active : 0.);
     contact->add_results(*interface, result);
     result.set("largest_unexplained_penetration_over_h", last_penetration_excess);
@@ -269,52 +248,6 @@ namespace contact_fem
 
   namespace
   {
-    /// The Hertz load: the transmitted contact force, the same as the
-    /// applied pressure resultant when the balance holds, and the only
-    /// measure when the scene is driven by a prescribed displacement. The
-    /// sphere takes the force's component along its axis (z; a model cut
-    /// by symmetry planes transmits a horizontal part too), for the whole
-    /// sphere.
-    template <int dim>
-    double
-    hertz_load(const ContactInterface<dim>   &interface,
-               const ContactFormulation<dim> &contact,
-               const AnalyticalSolution      &analytical)
-    {
-      // Cattaneo: the normal load P, not the resultant with Q.
-      if (analytical.type == "cattaneo")
-        return cattaneo_loads(interface, contact).first;
-      const Tensor<1, dim> force = total_contact_force(interface, contact);
-      return analytical.type == "hertz sphere" ?
-               std::abs(force[dim - 1]) / analytical.symmetry_fraction :
-               force.norm();
-    }
-
-    /// Hertz' solution of the scene's analytical type, E* from the
-    /// materials of the first contact pair.
-    template <int dim>
-    HertzContact
-    hertz_solution(const ContactInterface<dim>   &interface,
-                   const ContactFormulation<dim> &contact,
-                   const AnalyticalSolution      &analytical)
-    {
-      const double load   = hertz_load(interface, contact, analytical);
-      const double E_star = interface.contact_modulus(0);
-      return analytical.type == "hertz sphere" ?
-               HertzContact::sphere(load, analytical.radius, E_star) :
-               HertzContact::cylinder(load, analytical.radius, E_star);
-    }
-
-    /// The distance from the first point of contact that Hertz' pressure is
-    /// a function of: x - Center (cylinder), the distance from the axis
-    /// (sphere).
-    template <int dim>
-    double
-    hertz_coordinate(const AnalyticalSolution &analytical, const Point<dim> &x)
-    {
-      return dim == 2 ? x[0] - analytical.center : analytical.axis_distance(x[0], x[1]);
-    }
-
     /// The reference profile's coordinate: x (2D), the distance from the
     /// axis (3D, axisymmetric).
     template <int dim>
@@ -323,160 +256,15 @@ namespace contact_fem
     {
       return dim == 2 ? x[0] : analytical.axis_distance(x[0], x[1]);
     }
-
-    /// Radial extent of the contact zone about the axis of the Hertz
-    /// sphere, at the deformed positions of the paired slave nodes: the
-    /// farthest active node, and the nearest inactive one beyond it (the
-    /// exact radius should lie between; infinite if there is none).
-    struct RadialExtent
-    {
-      double last_active = 0., first_inactive = std::numeric_limits<double>::infinity();
-    };
-
-    template <int dim>
-    RadialExtent
-    radial_extent(const ContactInterface<dim>   &interface,
-                  const ContactFormulation<dim> &contact,
-                  const std::vector<double>     &interface_displacement,
-                  const AnalyticalSolution      &analytical)
-    {
-      std::vector<std::pair<double, bool>> nodes;
-      for (const auto &s : interface.slave_nodes)
-        if (s.paired)
-          {
-            const Point<dim> x = interface.nodes[s.node].reference +
-                                 interface.displacement(s.node, interface_displacement);
-            nodes.emplace_back(analytical.axis_distance(x[0], x[1]), contact.is_active(s.node));
-          }
-      RadialExtent extent;
-      for (const auto &[r, active] : nodes)
-        if (active)
-          extent.last_active = std::max(extent.last_active, r);
-      for (const auto &[r, active] : nodes)
-        if (!active && r > extent.last_active)
-          extent.first_inactive = std::min(extent.first_inactive, r);
-      return extent;
-    }
   } // namespace
-
-  template <int dim>
-  Json
-  ContactProblem<dim>::analytical_results(const Json &contact_json, const Json &reaction) const
-  {
-    Json result = Json::object();
-    if (!contact)
-      return result;
-    const double       load = hertz_load(*interface, *contact, analytical);
-    const HertzContact h    = hertz_solution(*interface, *contact, analytical);
-    // The numerical values come from contact_results(); the sphere's
-    // contact radius is measured about its axis.
-    const RadialExtent extent =
-      analytical.type == "hertz sphere" ?
-        radial_extent(*interface, *contact, interface_displacement, analytical) :
-        RadialExtent();
-    const double p_num = contact_json["max_contact_pressure"].number_value();
-    const double a_num = analytical.type == "hertz sphere" ?
-                           extent.last_active :
-                           contact_json["contact_half_width"].number_value();
-    const double size  = contact_json["slave_element_size"].number_value();
-    // A degree-1 geometry (Q1 on a linear mapping, e.g. with Finite
-    // element/Mapping degree = 1) replaces the arc by its chords, which lie inside the circle
-    // by h^2 t (1 - t) / (2 R) along a chord of length h: the discrete
-    // cylinder is shorter where it touches, and the contact force does the
-    // extra work W = sum_faces (lambda_a + lambda_b) h^3 / (24 R) (linear
-    // pressure interpolation), which lowers Pi_h by about W. On adaptive Q1
-    // meshes W is as large as the squared energy error itself (see
-    // doc/convergence.md), so the energy error below adds it back.
-    // Quadratic arcs (Q2, or Q1 on a quadratic mapping) deviate by
-    // O(h^4 / R^3): no term.
-    // (2D only: the chords of 3D faces are not summed.)
-    double chord_gap_work = 0.;
-    if (dim == 2 && interface->geometry_degree == 1)
-      for (const auto &face : interface->faces)
-        if (face.slave)
-          {
-            const unsigned int a = face.nodes[0], b = face.nodes[1];
-            const double h = interface->nodes[a].reference.distance(interface->nodes[b].reference);
-            chord_gap_work +=
-              (contact->normal_pressure(a) + contact->normal_pressure(b)) * h * h * h /
-              (24. * analytical.radius);
-          }
-    result.set("type", analytical.type)
-      .set("load", load)
-      .set("a", h.a)
-      .set("p_max", h.p_max)
-      .set("a_error", std::abs(a_num - h.a))
-      .set("a_error_in_slave_elements", size > 0. ? std::abs(a_num - h.a) / size : 0.)
-      .set("p_max_relative_error", (p_num - h.p_max) / h.p_max)
-      .set("pressure_l2_relative_error", hertz_pressure_error(contact->pressures(*interface)));
-    if (dim == 2 && interface->geometry_degree == 1)
-      result.set("chord_gap_work", chord_gap_work);
-    if (analytical.type == "hertz sphere")
-      {
-        // F of the model against the pressure resultant applied to it.
-        const double applied = reaction["applied_load"].number_value();
-        const double modelled_force =
-          std::abs(total_contact_force(*interface, *contact)[dim - 1]);
-        result.set("symmetry_fraction", analytical.symmetry_fraction)
-          .set("contact_force_along_axis", modelled_force)
-          .set("contact_force_over_applied_load", applied > 0. ? modelled_force / applied : 0.)
-          .set("contact_radius", extent.last_active)
-          .set("first_inactive_radius", extent.first_inactive); // null if none
-      }
-    // Cattaneo-Mindlin: stick zone and tangential traction (cattaneo.cc).
-    if (analytical.type == "cattaneo")
-      result.set("cattaneo",
-                 cattaneo_results(*interface, *contact, analytical, cattaneo_load_path));
-    return result;
-  }
-
-
-  namespace
-  {
-    /// Relative L2 error of a pressure per interface node against
-    /// @p exact(x) over the paired slave nodes, with the mortar weights D_j
-    /// as nodal quadrature weights, at the deformed positions x of the nodes.
-    template <int dim, typename Exact>
-    double
-    pressure_l2_relative_error(const ContactInterface<dim>         &interface,
-                               const std::vector<double>           &interface_displacement,
-                               const std::vector<double>           &pressure,
-                               const Exact                         &exact)
-    {
-      double l2_error = 0., l2_norm = 0.;
-      for (const auto &s : interface.slave_nodes)
-        if (s.paired)
-          {
-            const Point<dim> x = interface.nodes[s.node].reference +
-                                 interface.displacement(s.node, interface_displacement);
-            const double p_exact = exact(x);
-            l2_error += s.D * std::pow(pressure[s.node] - p_exact, 2);
-            l2_norm += s.D * p_exact * p_exact;
-          }
-      return l2_norm > 0. ? std::sqrt(l2_error / l2_norm) : 0.;
-    }
-  } // namespace
-
-  template <int dim>
-  double
-  ContactProblem<dim>::hertz_pressure_error(const std::vector<double> &pressure) const
-  {
-    const HertzContact h = hertz_solution(*interface, *contact, analytical);
-    return pressure_l2_relative_error(*interface, interface_displacement, pressure,
-                                      [&](const Point<dim> &x) {
-                                        return h.pressure(hertz_coordinate(analytical, x));
-                                      });
-  }
 
   template <int dim>
   double
   ContactProblem<dim>::reference_pressure_error(const std::vector<double> &pressure) const
   {
-    return pressure_l2_relative_error(*interface, interface_displacement, pressure,
-                                      [&](const Point<dim> &x) {
-                                        return analytical.reference_pressure(
-                                          profile_coordinate(analytical, x));
-                                      });
+    return pressure_l2_relative_error<dim>(contact_state(), pressure, [&](const Point<dim> &x) {
+      return analytical.reference_pressure(profile_coordinate(analytical, x));
+    });
   }
 
 
@@ -567,67 +355,21 @@ namespace contact_fem
           << std::endl
           << "    relative imbalance:           "
           << value_or_ok(reaction["relative_imbalance"].number_value(), 1e-10) << std::endl;
-    if (analytical.type == "hertz cylinder" && contact)
-      pcout << "    Hertz a:                      " << hertz["a"].number_value() << std::endl
-            << "    Hertz p_max:                  " << hertz["p_max"].number_value() << std::endl
-            << "    p_max relative error:         "
-            << std::setprecision(3) << hertz["p_max_relative_error"].number_value() << std::endl
-            << "    |a - a_Hertz| / slave h:      "
-            << hertz["a_error_in_slave_elements"].number_value() << std::endl
-            << "    p_max within 2 % of Hertz:    "
-            << (std::abs(hertz["p_max_relative_error"].number_value()) < 0.02 ? "yes" : "no")
-            << std::endl
-            << "    a within one slave element:   "
-            << (hertz["a_error_in_slave_elements"].number_value() <= 1. ? "yes" : "no")
-            << std::endl
-            << std::setprecision(6);
-    if (analytical.type == "hertz sphere" && contact)
-      print_hertz_sphere_results(hertz);
-    if (analytical.type == "cattaneo" && contact)
-      pcout << cattaneo_report(hertz["cattaneo"]);
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::print_hertz_sphere_results(const Json &hertz) const
-  {
-    const double first_inactive = hertz["first_inactive_radius"].number_value();
-    // The errors are printed to 3 digits: the tests compare them.
-    pcout << "    Hertz load F (whole sphere):  " << hertz["load"].number_value()
-          << " (contact force along z " << hertz["contact_force_along_axis"].number_value()
-          << " over symmetry fraction " << hertz["symmetry_fraction"].number_value() << ")"
-          << std::endl
-          << "    contact force / applied load: "
-          << hertz["contact_force_over_applied_load"].number_value() << std::endl
-          << "    Hertz a:                      " << hertz["a"].number_value() << std::endl
-          << "    Hertz p0:                     " << hertz["p_max"].number_value() << std::endl
-          << "    contact radius:               " << hertz["contact_radius"].number_value()
-          << " (farthest active node; first inactive node beyond: "
-          << (std::isfinite(first_inactive) ? significant(first_inactive, 6) : "none") << ")"
-          << std::endl
-          << std::setprecision(3) << "    p_max relative error:         "
-          << hertz["p_max_relative_error"].number_value() << std::endl
-          << "    |a - a_Hertz| / slave h:      " << hertz["a_error_in_slave_elements"].number_value()
-          << std::endl
-          << "    pressure L2 error vs Hertz:   "
-          << hertz["pressure_l2_relative_error"].number_value() << std::endl
-          << "    p_max within 3 % of Hertz:    "
-          << (std::abs(hertz["p_max_relative_error"].number_value()) < 0.03 ? "yes" : "no")
-          << std::endl
-          << "    a within one slave element:   "
-          << (hertz["a_error_in_slave_elements"].number_value() <= 1. ? "yes" : "no")
-          << std::endl
-          << std::setprecision(6);
+    if (comparison && contact)
+      {
+        std::ostringstream text;
+        comparison->print(hertz, text);
+        pcout << text.str();
+      }
   }
 
   template <int dim>
   void
   ContactProblem<dim>::write_pressure_profile() const
   {
-    const bool   hertz = analytical.type == "hertz cylinder" || analytical.type == "hertz sphere";
-    HertzContact h;
-    if (hertz)
-      h = hertz_solution(*interface, *contact, analytical);
+    // The exact pressure where the analytical solution gives one (else 0).
+    const std::function<double(const Point<dim> &)> exact =
+      comparison ? comparison->exact_pressure(contact_state()) : nullptr;
     const std::string path = output.directory + "/pressure_profile.csv";
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       {
@@ -650,7 +392,7 @@ namespace contact_fem
             rows.back().push_back(scene.frame.to_user(position)[d]);
           rows.back().insert(rows.back().end(),
                              {contact->normal_pressure(s.node),
-                              hertz ? h.pressure(hertz_coordinate(analytical, position)) : 0.,
+                              exact ? exact(position) : 0.,
                               interface->gap(s, interface_displacement),
                               contact->is_active(s.node) ? 1. : 0.});
           for (const auto &field : fields)
@@ -947,14 +689,9 @@ namespace contact_fem
   template Tensor<1, dim> ContactProblem<dim>::applied_load(const double) const; \
   template Json           ContactProblem<dim>::contact_results() const;          \
   template Json           ContactProblem<dim>::reaction_results() const;         \
-  template void ContactProblem<dim>::print_hertz_sphere_results(const Json &) const; \
-  template Json ContactProblem<dim>::analytical_results(const Json &,            \
-                                                        const Json &) const;     \
   template void ContactProblem<dim>::write_pressure_profile() const;             \
   template void ContactProblem<dim>::record_forces(const unsigned int, const double, Json &); \
   template Json ContactProblem<dim>::probe_results() const;                      \
-  template double ContactProblem<dim>::hertz_pressure_error(                      \
-    const std::vector<double> &) const;                                           \
   template double ContactProblem<dim>::reference_pressure_error(                  \
     const std::vector<double> &) const;                                           \
   template void ContactProblem<dim>::write_convergence_row(const Json &, const double); \

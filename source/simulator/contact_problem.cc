@@ -7,7 +7,6 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <contact_fem/simulator/cattaneo.h>
 #include <contact_fem/simulator/contact_problem.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/core/interruption.h>
@@ -195,6 +194,7 @@ namespace contact_fem
     spr_settings.parse_parameters(prm);
     analytical.parse_parameters(prm, prm_directory, dim);
     analytical.move_origin(scene.frame.origin[0], scene.frame.origin[1], dim);
+    comparison = AnalyticalComparison<dim>::create(analytical);
     output.parse_parameters(prm, dim);
     model_range.parse_parameters(prm);
     check_scene_before_meshing();
@@ -1945,7 +1945,8 @@ namespace contact_fem
                             n_steps);
     LoadPath           path;
     Json               steps = Json::array();
-    cattaneo_load_path.clear();
+    if (comparison)
+      comparison->start_load_path();
     TrilinosWrappers::MPI::Vector saved_solution = solution;
     std::unique_ptr<typename ContactFormulation<dim>::State> saved_state;
     // The mortar operators of the last converged state: a failed step has
@@ -1995,9 +1996,9 @@ namespace contact_fem
         ++path.n_solved;
         record_forces(path.n_solved, time, step_record);
         steps.push(step_record);
-        // The history the Cattaneo comparison needs (unloading).
-        if (analytical.type == "cattaneo" && contact)
-          cattaneo_load_path.push_back(cattaneo_loads(*interface, *contact).second);
+        // The load history a comparison may need (Cattaneo unloading).
+        if (comparison && contact)
+          comparison->record_load_step(contact_state());
         if (contact)
           contact->accept_load_step(*interface, interface_displacement);
         if (control.accept())
@@ -2070,9 +2071,10 @@ namespace contact_fem
     if (converged)
       check_reaction_balance(reaction_json, cycle_record);
     Json hertz_json = Json::object();
-    if (analytical.type != "none")
+    if (comparison)
       {
-        hertz_json = analytical_results(contact_json, reaction_json);
+        if (contact)
+          hertz_json = comparison->compare(contact_state(), contact_json, reaction_json);
         cycle_record.set("analytical", hertz_json);
         cycle_record.set("pressure_l2_relative_error",
                          hertz_json["pressure_l2_relative_error"]);
@@ -2100,7 +2102,7 @@ namespace contact_fem
         // squared energy-norm error (plus the contact work, see the
         // parameter).
         // Degree-1 Hertz: the work of the contact force on the chord gap
-        // (analytical_results()) is a geometry error of the polygonal arc, not
+        // (HertzCylinder::compare()) is a geometry error of the polygonal arc, not
         // part of the discretisation error the estimate is compared with.
         const double chord_work = hertz_json["chord_gap_work"].number_value();
         const double chord_gap_work = std::isfinite(chord_work) ? chord_work : 0.;

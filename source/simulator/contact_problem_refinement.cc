@@ -5,7 +5,6 @@
 #include <deal.II/numerics/error_estimator.h>
 
 #include <contact_fem/simulator/contact_problem.h>
-#include <contact_fem/simulator/cattaneo.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/adaptivity/marking.h>
 #include <contact_fem/contact/mortar.h>
@@ -155,21 +154,12 @@ namespace contact_fem
         cycle_record.set(prefix + "recovered_shear_traction_max_relative", shear);
         pcout << label << " shear traction / p_max: " << value_or_ok(shear, 1e-6) << std::endl;
       }
-    if (analytical.type == "cattaneo")
+    if (comparison)
       {
-        const Json   cattaneo =
-          cattaneo_results(*interface, *contact, analytical, cattaneo_load_path, &tangential);
-        const double error    = cattaneo["tangential_l2_relative_error"].number_value();
-        cycle_record.set(prefix + "recovered_tangential_l2_relative_error_cattaneo", error);
-        pcout << label << " tangential traction, L2 error against Cattaneo: "
-              << value_or_ok(error, 1e-10) << std::endl;
-      }
-    if (analytical.type == "hertz cylinder" || analytical.type == "hertz sphere")
-      {
-        const double error = hertz_pressure_error(pressure);
-        cycle_record.set(prefix + "recovered_pressure_l2_relative_error", error);
-        pcout << label << " pressure, L2 error against Hertz: " << value_or_ok(error, 1e-10)
-              << std::endl;
+        std::ostringstream text;
+        comparison->report_recovered(contact_state(), pressure, tangential, label, prefix,
+                                     cycle_record, text);
+        pcout << text.str();
       }
     if (!analytical.reference_pressure_profile.empty())
       {
@@ -203,10 +193,8 @@ namespace contact_fem
     // is reported (a known pressure), every paired node is listed, the
     // inactive ones not imposed, in the order report_recovered_tractions()
     // expects.
-    const bool pressure_known = contact && (analytical.type == "hertz cylinder" ||
-                                            analytical.type == "hertz sphere" ||
-                                            analytical.type == "cattaneo" ||
-                                            !analytical.reference_pressure_profile.empty());
+    const bool pressure_known =
+      contact && (comparison || !analytical.reference_pressure_profile.empty());
     std::vector<ContactNodeTraction<dim>> tractions;
     if (contact && (settings.contact_terms || pressure_known))
       {

@@ -1,4 +1,4 @@
-// The Cattaneo-Mindlin formulas of simulator/cattaneo.h on the values of
+// The Cattaneo-Mindlin formulas of postprocess/cattaneo_solution.h on the values of
 // prm/cattaneo.prm (P = 10, Q = 0.93616, mu = 0.2, R* = 4, E* = 200 /
 // (2 (1 - 0.3^2))): a, p_max, c/a; the tangential traction integrates to Q
 // and the pressure to P; q is continuous at +-c and equals mu p in the
@@ -6,7 +6,7 @@
 // the exact traction with the exact stick set: no L2 error, and the
 // measured stick half-width c_h within one node spacing of c.
 
-#include <contact_fem/simulator/cattaneo.h>
+#include <contact_fem/postprocess/cattaneo_solution.h>
 
 #include <cmath>
 #include <iomanip>

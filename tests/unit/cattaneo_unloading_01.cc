@@ -1,4 +1,4 @@
-// The Mindlin-Deresiewicz unloading solution of simulator/cattaneo.h on the
+// The Mindlin-Deresiewicz unloading solution of postprocess/cattaneo_solution.h on the
 // values of prm/cattaneo.prm (P = 10, mu = 0.2, R* = 4, E* = 200 / (2 (1 -
 // 0.3^2))), unloaded from Q* = 1.6: the traction integrates to Q, equals
 // the Cattaneo traction of Q* at Q = Q* and its opposite at Q = -Q*, is
@@ -7,7 +7,7 @@
 // its peak), a reversal past -Q* (monotone the other way), and a second
 // reversal (no solution).
 
-#include <contact_fem/simulator/cattaneo.h>
+#include <contact_fem/postprocess/cattaneo_solution.h>
 
 #include <cmath>
 #include <iomanip>

@@ -32,6 +32,7 @@
 #include <contact_fem/geometry/scene.h>
 #include <contact_fem/adaptivity/stress_recovery.h>
 #include <contact_fem/material/volumetric_projection.h>
+#include <contact_fem/postprocess/analytical_comparison.h>
 
 #include <cmath>
 #include <fstream>
@@ -497,18 +498,16 @@ namespace contact_fem
     // --- results (contact_output.cc)
     Json
     contact_results() const;
-    /// Prints the comparison with the Hertz sphere (analytical_results()).
-    void
-    print_hertz_sphere_results(const Json &hertz) const;
     Json
     reaction_results() const;
-    Json
-    analytical_results(const Json &contact, const Json &reaction) const;
-    /// Relative L2 error of a pressure per interface node against the Hertz
-    /// pressure over the paired slave nodes (Hertz scenes with contact).
-    double
-    hertz_pressure_error(const std::vector<double> &pressure) const;
-    /// The same against Analytical solution/Reference pressure profile.
+    /// The converged contact state that results read (with contact).
+    ContactState<dim>
+    contact_state() const
+    {
+      return {*interface, *contact, interface_displacement};
+    }
+    /// Relative L2 error of a pressure per interface node against Analytical
+    /// solution/Reference pressure profile (pressure_l2_relative_error()).
     double
     reference_pressure_error(const std::vector<double> &pressure) const;
     /// Prints and returns the displacements at Output/Displacement probes.
@@ -666,9 +665,8 @@ namespace contact_fem
     /// A cycle converged beyond ModelRange (warn_about_large_strains(),
     /// warn_about_large_displacements()).
     bool outside_model_range = false;
-    /// The signed tangential load of every converged load step of the
-    /// cycle, with Analytical solution/Type = cattaneo (cattaneo_loads()).
-    std::vector<double> cattaneo_load_path;
+    /// The comparison with Analytical solution/Type; null for none.
+    std::unique_ptr<AnalyticalComparison<dim>> comparison;
     /// forces.csv: its header and the rows of the run so far.
     std::string              force_history_header;
     std::vector<std::string> force_history;

@@ -1,7 +1,7 @@
 // Hertz' solutions of an elastic cylinder (2D, plane strain) or sphere (3D)
 // pressed onto a half-space: the reference of the Hertz scenes.
-#ifndef contact_fem_hertz_h
-#define contact_fem_hertz_h
+#ifndef contact_fem_hertz_solution_h
+#define contact_fem_hertz_solution_h
 
 #include <deal.II/base/numbers.h>
 

@@ -1,6 +1,6 @@
 #include <deal.II/base/numbers.h>
 
-#include <contact_fem/simulator/cattaneo.h>
+#include <contact_fem/postprocess/cattaneo_solution.h>
 #include <contact_fem/core/format.h>
 
 #include <algorithm>
@@ -19,8 +19,8 @@ namespace contact_fem
     , Q(Q)
     , mu(mu)
   {
-    a     = std::sqrt(4. * P * radius / (numbers::PI * E_star));
-    p_max = 2. * P / (numbers::PI * a);
+    a     = std::sqrt(4. * P * radius / (dealii::numbers::PI * E_star));
+    p_max = 2. * P / (dealii::numbers::PI * a);
     c     = Q < mu * P ? a * std::sqrt(1. - Q / (mu * P)) : 0.;
   }
 
@@ -230,86 +230,4 @@ namespace contact_fem
     return out.str();
   }
 
-  template <int dim>
-  std::pair<double, double>
-  cattaneo_loads(const ContactInterface<dim> &interface, const ContactFormulation<dim> &contact)
-  {
-    Tensor<1, dim> force, mean_normal;
-    for (const auto &s : interface.slave_nodes)
-      if (s.paired && contact.is_active(s.node))
-        {
-          force += s.D * contact.traction(s);
-          mean_normal += s.D * s.normal;
-        }
-    // The frame of the solution, not the mean normal: an active set one
-    // node off the symmetric one tilts that by ~1e-3 rad, which takes 1 %
-    // off Q, and a sliding body tilts it to the resultant itself.
-    Tensor<1, dim> n0;
-    n0[1] = mean_normal[1] < 0. ? -1. : 1.;
-    return {-(force * n0), force * ContactFormulation<dim>::tangent(n0)};
-  }
-
-  template <int dim>
-  Json
-  cattaneo_results(const ContactInterface<dim>   &interface,
-                   const ContactFormulation<dim> &contact,
-                   const AnalyticalSolution      &analytical,
-                   const std::vector<double>     &load_path,
-                   const std::vector<double>     *tangential)
-  {
-    const double E_star = interface.contact_modulus(0);
-    const double mu     = analytical.friction_coefficient;
-    std::vector<CattaneoNode> nodes;
-    for (const auto &s : interface.slave_nodes)
-      if (s.paired)
-        {
-          CattaneoNode node;
-          const bool   active = contact.is_active(s.node);
-          node.x = interface.nodes[s.node].reference[0] +
-                   interface.displacement(s.node, interface.search_configuration())[0] -
-                   analytical.center;
-          node.t = !active ? 0. :
-                   tangential ?
-                              (*tangential)[s.node] :
-                              contact.traction(s) *
-                                ContactFormulation<dim>::tangent(contact.frame_normal(s));
-          node.weight = s.D;
-          node.active = active;
-          node.stick  = contact.held_tangentially(s.node);
-          nodes.push_back(node);
-        }
-    const auto [P, Q] = cattaneo_loads(interface, contact);
-    // The same tolerance as for "no tangential load" in the comparison.
-    std::vector<double> path = load_path;
-    path.push_back(Q);
-    const TangentialPath history = classify_tangential_path(path, 1e-6 * mu * P);
-    if (history.kind == TangentialPath::Kind::none)
-      return Json::object()
-        .set("mu", mu)
-        .set("P", P)
-        .set("Q", std::abs(Q))
-        .set("no_solution", "the tangential load turned back twice: no analytical "
-                            "solution (Cattaneo for monotone loading, "
-                            "Mindlin-Deresiewicz for one unloading)");
-    if (history.kind == TangentialPath::Kind::unloading)
-      return to_json(compare_with_cattaneo(nodes,
-                                           CattaneoSolution(P, history.Q, history.Q_star, mu,
-                                                            analytical.radius, E_star),
-                                           history.direction));
-    return to_json(compare_with_cattaneo(
-      nodes, CattaneoSolution(P, std::abs(Q), mu, analytical.radius, E_star)));
-  }
-
-  template std::pair<double, double>
-  cattaneo_loads(const ContactInterface<2> &, const ContactFormulation<2> &);
-  template std::pair<double, double>
-  cattaneo_loads(const ContactInterface<3> &, const ContactFormulation<3> &);
-  template Json
-  cattaneo_results(const ContactInterface<2> &, const ContactFormulation<2> &,
-                   const AnalyticalSolution &, const std::vector<double> &,
-                   const std::vector<double> *);
-  template Json
-  cattaneo_results(const ContactInterface<3> &, const ContactFormulation<3> &,
-                   const AnalyticalSolution &, const std::vector<double> &,
-                   const std::vector<double> *);
 } // namespace contact_fem

@@ -1,13 +1,11 @@
 // The Cattaneo-Mindlin solution of two elastic cylinders (plane strain)
 // pressed together by P and then sheared by Q < mu P at constant P, and its
-// comparison with the stick zone and tangential traction of a frictional run.
-#ifndef contact_fem_cattaneo_h
-#define contact_fem_cattaneo_h
+// comparison with the stick zone and tangential traction of a frictional run
+// (nodal values in, numbers out: the run's side is cattaneo_comparison.cc).
+#ifndef contact_fem_cattaneo_solution_h
+#define contact_fem_cattaneo_solution_h
 
-#include <contact_fem/contact/contact_interface.h>
-#include <contact_fem/contact/formulations/contact_formulation.h>
 #include <contact_fem/core/json.h>
-#include <contact_fem/simulator/scene_parameters.h>
 
 #include <string>
 #include <utility>
@@ -142,42 +140,9 @@ namespace contact_fem
   Json
   to_json(const CattaneoComparison &comparison);
 
-  /// The lines print_results() shows for a Cattaneo scene, from to_json().
+  /// The lines printed for a Cattaneo scene, from to_json().
   std::string
   cattaneo_report(const Json &cattaneo);
-
-  /**
-   * The transmitted normal load P >= 0 and signed tangential load Q of the
-   * converged state: the resultant of the contact tractions on the slave
-   * (equal to the load applied to a slave body without supports) in the
-   * frame of the analytical solution, whose contact plane is normal to y:
-   * n0 = (0, +-1) on the side of the mean slave normal, Q along
-   * ContactFormulation::tangent(n0) (the nodes' tangential tractions are
-   * measured along the same orientation).
-   */
-  template <int dim>
-  std::pair<double, double>
-  cattaneo_loads(const ContactInterface<dim> &interface, const ContactFormulation<dim> &contact);
-
-  /**
-   * The comparison of the converged state: P and Q from cattaneo_loads(),
-   * the history of Q along the load path from @p load_path (the Q of every
-   * converged load step of the cycle: classify_tangential_path()), E* from
-   * the materials of the first pair, R* = Analytical solution/Radius, x of
-   * each node in the configuration the mortar operators were built on (the
-   * reference one with Contact/Kinematics = small) less Analytical
-   * solution/Center. With @p tangential (per interface node) those
-   * tangential tractions are compared instead of the formulation's (e.g.
-   * the recovered stress's). A path without an analytical solution gives
-   * no comparison (the key "no_solution" says why).
-   */
-  template <int dim>
-  Json
-  cattaneo_results(const ContactInterface<dim>   &interface,
-                   const ContactFormulation<dim> &contact,
-                   const AnalyticalSolution      &analytical,
-                   const std::vector<double>     &load_path,
-                   const std::vector<double>     *tangential = nullptr);
 } // namespace contact_fem
 
 #endif
