@@ -2,13 +2,11 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/numerics/data_out.h>
-#include <deal.II/numerics/data_postprocessor.h>
 
 #include <contact_fem/postprocess/forces.h>
 #include <contact_fem/simulator/contact_problem.h>
 #include <contact_fem/core/format.h>
-#include <contact_fem/simulator/output_files.h>
+#include <contact_fem/postprocess/output_files.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,74 +14,9 @@
 #include <iomanip>
 #include <limits>
 #include <sstream>
-#include <unordered_map>
 
 namespace contact_fem
 {
-  namespace
-  {
-    /// Von Mises stress of the FE displacement, cell by cell material; with
-    /// B-bar (@p b_bar) from the projected volumetric strain.
-    template <int dim>
-    class VonMises : public DataPostprocessorScalar<dim>
-    {
-    public:
-      VonMises(const Materials<dim>                &materials,
-               const Mapping<dim>                  &mapping,
-               const TrilinosWrappers::MPI::Vector &solution,
-               const bool                           b_bar)
-        : DataPostprocessorScalar<dim>("von_Mises", update_gradients | update_quadrature_points)
-        , materials(materials)
-        , mapping(mapping)
-        , solution(solution)
-        , b_bar(b_bar)
-      {}
-
-      void
-      evaluate_vector_field(const DataPostprocessorInputs::Vector<dim> &inputs,
-                            std::vector<Vector<double>> &computed) const override
-      {
-        const typename DoFHandler<dim>::active_cell_iterator cell =
-          inputs.template get_cell<dim>();
-        const auto id = cell->material_id();
-        // Patches are built on several threads: each call has its own
-        // projection (output only, so its set-up cost does not matter).
-        std::unique_ptr<VolumetricProjection<dim>> projection;
-        Vector<double>                              local_values;
-        if (b_bar)
-          {
-            projection =
-              std::make_unique<VolumetricProjection<dim>>(mapping, cell->get_fe());
-            projection->reinit(cell);
-            local_values.reinit(cell->get_fe().n_dofs_per_cell());
-            cell->get_dof_values(solution, local_values);
-          }
-        for (unsigned int q = 0; q < computed.size(); ++q)
-          {
-            SymmetricTensor<2, dim> strain;
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = 0; j <= i; ++j)
-                strain[i][j] =
-                  0.5 * (inputs.solution_gradients[q][i][j] + inputs.solution_gradients[q][j][i]);
-            const SymmetricTensor<2, dim> stress =
-              b_bar ? materials.stress(id,
-                                       strain,
-                                       projection->value(local_values,
-                                                         mapping.transform_real_to_unit_cell(
-                                                           cell, inputs.evaluation_points[q]))) :
-                      materials.stress(id, strain);
-            computed[q](0) = materials.von_mises(id, stress);
-          }
-      }
-
-    private:
-      const Materials<dim>                &materials;
-      const Mapping<dim>                  &mapping;
-      const TrilinosWrappers::MPI::Vector &solution;
-      const bool                           b_bar;
-    };
-  } // namespace
-
   template <int dim>
   Tensor<1, dim>
   ContactProblem<dim>::applied_load(const double time) const
@@ -410,163 +343,6 @@ namespace contact_fem
     throw_if_unwritten(path, write_file_atomically(path, out.str()), comm);
   }
 
-  namespace
-  {
-    /// zlib's fastest level: deal.II's default (best compression) took 60 %
-    /// of the VTU time of prm/hertz.prm for 6 % smaller files
-    /// (doc/performance.md).
-    DataOutBase::VtkFlags
-    fast_vtk_flags()
-    {
-      DataOutBase::VtkFlags flags;
-      flags.compression_level = DataOutBase::VtkFlags::best_speed;
-      return flags;
-    }
-  } // namespace
-
-  template <int dim>
-  void
-  ContactProblem<dim>::write_vtu(const unsigned int step, const double time)
-  {
-    TimerOutput::Scope t(*timer, "Output: VTU");
-    // Nodal contact fields live on a scalar Q_p space on the same mesh.
-    const FE_Q<dim> scalar_fe(degree);
-    DoFHandler<dim> scalar_dofs(triangulation);
-    scalar_dofs.distribute_dofs(scalar_fe);
-    const IndexSet scalar_owned = scalar_dofs.locally_owned_dofs();
-    IndexSet       scalar_relevant;
-    DoFTools::extract_locally_relevant_dofs(scalar_dofs, scalar_relevant);
-
-    std::vector<std::string> names = {"contact_pressure", "weighted_gap", "active", "slave",
-                                      "master"};
-    // The formulation's own nodal fields (friction: tangential traction,
-    // slip, stick) follow the five above.
-    const auto contact_fields =
-      contact ? contact->nodal_fields(*interface) :
-                std::vector<typename ContactFormulation<dim>::NodalField>();
-    for (const auto &field : contact_fields)
-      names.push_back(field.name);
-    std::vector<TrilinosWrappers::MPI::Vector> fields(names.size());
-    for (auto &f : fields)
-      f.reinit(scalar_owned, comm);
-
-    if (interface)
-      {
-        std::unordered_map<types::global_dof_index, unsigned int> node_of_dof;
-        for (unsigned int n = 0; n < interface->nodes.size(); ++n)
-          node_of_dof[interface->nodes[n].dofs[0]] = n;
-        std::vector<double> gap(interface->nodes.size(), 0.);
-        for (const auto &s : interface->slave_nodes)
-          if (s.paired)
-            gap[s.node] = interface->gap(s, interface_displacement);
-
-        std::vector<types::global_dof_index> vector_dofs(fe.n_dofs_per_cell()),
-          scalar_dofs_of_cell(scalar_fe.n_dofs_per_cell());
-        auto scalar_cell = scalar_dofs.begin_active();
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          {
-            if (cell->is_locally_owned())
-              {
-                cell->get_dof_indices(vector_dofs);
-                scalar_cell->get_dof_indices(scalar_dofs_of_cell);
-                for (unsigned int i = 0; i < vector_dofs.size(); ++i)
-                  {
-                    const auto ci = fe.system_to_component_index(i);
-                    const auto it = node_of_dof.find(vector_dofs[i]);
-                    if (ci.first != 0 || it == node_of_dof.end())
-                      continue;
-                    const auto scalar_dof = scalar_dofs_of_cell[ci.second];
-                    if (!scalar_owned.is_element(scalar_dof))
-                      continue;
-                    const unsigned int n = it->second;
-                    // A hanging vertex has no multiplier of its own: it shows
-                    // the interpolation of its parents, as its displacement.
-                    const std::vector<std::pair<unsigned int, double>> itself = {{n, 1.}};
-                    const auto &parents = interface->nodes[n].parents;
-                    double      pressure = 0., interpolated_gap = 0.;
-                    bool        active   = true;
-                    for (const auto &[source, weight] : parents.empty() ? itself : parents)
-                      {
-                        pressure += weight * contact->normal_pressure(source);
-                        interpolated_gap += weight * gap[source];
-                        active = active && contact->is_active(source);
-                      }
-                    fields[0](scalar_dof) = pressure;
-                    fields[1](scalar_dof) = interpolated_gap;
-                    fields[2](scalar_dof) = active ? 1. : 0.;
-                    fields[3](scalar_dof) = interface->nodes[n].slave ? 1. : 0.;
-                    fields[4](scalar_dof) = interface->nodes[n].master ? 1. : 0.;
-                    for (unsigned int k = 0; k < contact_fields.size(); ++k)
-                      fields[5 + k](scalar_dof) = contact_fields[k].values[n];
-                  }
-              }
-            ++scalar_cell;
-          }
-      }
-    std::vector<TrilinosWrappers::MPI::Vector> ghosted_fields(names.size());
-    for (unsigned int k = 0; k < names.size(); ++k)
-      {
-        fields[k].compress(VectorOperation::insert);
-        ghosted_fields[k].reinit(scalar_owned, scalar_relevant, comm);
-        ghosted_fields[k] = fields[k];
-      }
-
-    DataOut<dim> data_out;
-    data_out.attach_triangulation(triangulation);
-    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      vector_field(dim, DataComponentInterpretation::component_is_part_of_vector);
-    data_out.add_data_vector(dof_handler, ghosted_solution,
-                             std::vector<std::string>(dim, "displacement"), vector_field);
-    const VonMises<dim> von_mises(materials, *mapping, ghosted_solution,
-                                  volumetric_projection != nullptr);
-    data_out.add_data_vector(dof_handler, ghosted_solution, von_mises);
-    if (interface)
-      for (unsigned int k = 0; k < names.size(); ++k)
-        data_out.add_data_vector(scalar_dofs, ghosted_fields[k], names[k]);
-    Vector<float> material(triangulation.n_active_cells()),
-      subdomain(triangulation.n_active_cells());
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          material(cell->active_cell_index())  = cell->material_id();
-          subdomain(cell->active_cell_index()) = triangulation.locally_owned_subdomain();
-        }
-    data_out.add_data_vector(material, "material_id");
-    data_out.add_data_vector(subdomain, "subdomain");
-    data_out.build_patches(*mapping, degree);
-    data_out.set_flags(fast_vtk_flags());
-    // One record per cycle and load step; the pvd "time" counts them.
-    (void)step;
-    (void)time;
-    const std::string name = write_vtu_pieces<dim>(data_out, output.directory + "/", "solution",
-                                                   vtu_records.size() + 1, 3, comm);
-    vtu_records.emplace_back(vtu_records.size() + 1, name);
-    std::ostringstream pvd;
-    DataOutBase::write_pvd_record(pvd, vtu_records);
-    const std::string path = output.directory + "/solution.pvd";
-    throw_if_unwritten(path,
-                       Utilities::MPI::this_mpi_process(comm) != 0 ?
-                         std::string() :
-                         write_file_atomically(path, pvd.str()),
-                       comm);
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::write_error_indicators() const
-  {
-    DataOut<dim> data_out;
-    data_out.attach_dof_handler(dof_handler);
-    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      vector_field(dim, DataComponentInterpretation::component_is_part_of_vector);
-    data_out.add_data_vector(ghosted_solution, std::vector<std::string>(dim, "displacement"),
-                             DataOut<dim>::type_dof_data, vector_field);
-    data_out.add_data_vector(indicators, "error_indicator", DataOut<dim>::type_cell_data);
-    data_out.build_patches(*mapping, degree);
-    data_out.set_flags(fast_vtk_flags());
-    write_vtu_pieces<dim>(data_out, output.directory + "/", "error_indicators", cycle, 2, comm);
-  }
-
   template <int dim>
   void
   ContactProblem<dim>::write_convergence_row(const Json &r, const double cumulative)
@@ -647,6 +423,8 @@ namespace contact_fem
     check_written(output.directory + "/log.txt", !root || static_cast<bool>(log_file));
     if (root)
       console.attach(log_file);
+    if (output.write_vtu)
+      vtu_output = std::make_unique<VtuOutput<dim>>(output.directory, comm);
     return report;
   }
 
@@ -697,8 +475,6 @@ namespace contact_fem
   template void ContactProblem<dim>::write_convergence_row(const Json &, const double); \
   template void ContactProblem<dim>::print_results(const Json &, const Json &,           \
                                                    const Json &) const;                \
-  template void ContactProblem<dim>::write_vtu(const unsigned int, const double); \
-  template void ContactProblem<dim>::write_error_indicators() const;             \
   template void ContactProblem<dim>::write_summary(const Json &,                  \
                                                    const double,                  \
                                                    const std::string &) const; \

@@ -2009,8 +2009,13 @@ namespace contact_fem
             saved_state      = contact->save_state();
             *saved_interface = *interface;
           }
-        if (output.write_vtu)
-          write_vtu(path.n_solved, time);
+        if (vtu_output)
+          {
+            TimerOutput::Scope t(*timer, "Output: VTU");
+            const std::unique_ptr<ContactState<dim>> state =
+              contact ? std::make_unique<ContactState<dim>>(contact_state()) : nullptr;
+            vtu_output->write_solution(solution_view(state.get()), cycle, time);
+          }
       }
     current_time = control.converged_time();
     cycle_record.set("load_steps", steps);
@@ -2145,8 +2150,8 @@ namespace contact_fem
                       << plain / energy_error << std::setprecision(6) << std::endl;
               }
           }
-        if (output.write_vtu)
-          write_error_indicators();
+        if (vtu_output)
+          vtu_output->write_error_indicators(solution_view(nullptr), indicators, cycle);
       }
     return true;
   }

@@ -496,8 +496,10 @@ namespace contact_fem
                       "Before any work the run removes the files of an earlier "
                       "run from it (only the names contact_fem writes: "
                       "summary.json, log.txt, convergence.csv, "
-                      "pressure_profile.csv, solution.pvd, solution_*.pvtu/vtu, "
-                      "error_indicators_*.pvtu/vtu) and checks that it can write "
+                      "pressure_profile.csv, forces.csv, solution.pvd, "
+                      "solution_cycle_*.pvd, solution_*.pvtu/vtu, "
+                      "error_indicators.pvd, error_indicators_*.pvtu/vtu) and "
+                      "checks that it can write "
                       "there. Must not be named 'output' in tests.");
     prm.enter_subsection("Output");
     prm.declare_entry("Write VTU", "true", Patterns::Bool(),

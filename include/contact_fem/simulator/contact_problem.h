@@ -23,7 +23,7 @@
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/core/json.h>
 #include <contact_fem/material/material.h>
-#include <contact_fem/simulator/output_files.h>
+#include <contact_fem/postprocess/output_files.h>
 #include <contact_fem/simulator/scene_parameters.h>
 #include <contact_fem/contact/contact_parameters.h>
 #include <contact_fem/core/parameters.h>
@@ -33,6 +33,7 @@
 #include <contact_fem/adaptivity/stress_recovery.h>
 #include <contact_fem/material/volumetric_projection.h>
 #include <contact_fem/postprocess/analytical_comparison.h>
+#include <contact_fem/postprocess/vtu_output.h>
 
 #include <cmath>
 #include <fstream>
@@ -513,12 +514,13 @@ namespace contact_fem
     /// Prints and returns the displacements at Output/Displacement probes.
     Json
     probe_results() const;
-    void
-    write_vtu(const unsigned int step, const double time);
-    /// error_indicators-<cycle>.vtu: the mesh of the cycle with the
-    /// displacement and the cell indicators of the last estimate.
-    void
-    write_error_indicators() const;
+    /// The converged solution on the current mesh, as the output reads it.
+    SolutionView<dim>
+    solution_view(const ContactState<dim> *contact_state) const
+    {
+      return {dof_handler, *mapping, ghosted_solution, materials, volumetric_projection.get(),
+              contact_state};
+    }
     void
     write_convergence_row(const Json &cycle_record, const double cumulative_time);
     void
@@ -642,7 +644,8 @@ namespace contact_fem
 
     std::unique_ptr<TimerOutput>       timer; ///< made once the input is valid
     double                             current_time = 0.;
-    std::vector<std::pair<double, std::string>> vtu_records;
+    /// The VTU/PVD files (with Output/Write VTU), made with the output directory.
+    std::unique_ptr<VtuOutput<dim>>             vtu_output;
     Vector<float>                               indicators; ///< of the last estimate
     double relative_estimate = 0.; ///< eta / |u|_E of the last SPR estimate
     /// The linear solver can still answer for the current load step's last

@@ -2,7 +2,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
-#include <contact_fem/simulator/output_files.h>
+#include <contact_fem/postprocess/output_files.h>
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -171,10 +171,10 @@ namespace contact_fem
   is_output_file_name(const std::string &name)
   {
     // The VTU names are deal.II's write_vtu_with_pvtu_record(): base_NNN.pvtu
-    // and base_NNN.RANK.vtu (contact_output.cc).
+    // and base_NNN.RANK.vtu (vtu_output.cc).
     static const std::regex pattern(
       "(summary\\.json|log\\.txt|convergence\\.csv|pressure_profile\\.csv|forces\\.csv|"
-      "solution\\.pvd)"
+      "solution(_cycle_[0-9]+)?\\.pvd|error_indicators\\.pvd)"
       "(\\.partial)?|"
       "(solution|error_indicators)_[0-9]+\\.([0-9]+\\.vtu|pvtu)|"
       "\\.contact_fem-write-check");

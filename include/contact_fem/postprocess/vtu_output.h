@@ -1,0 +1,73 @@
+// The VTU/PVD files of a run: the solution of every converged load step
+// (displacement, stress, von Mises stress, contact fields) and the error
+// indicators of every adaptive cycle, with ParaView collections whose times
+// are the load times (solution) and the cycles (indicators).
+#ifndef contact_fem_vtu_output_h
+#define contact_fem_vtu_output_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <contact_fem/material/material.h>
+#include <contact_fem/material/volumetric_projection.h>
+#include <contact_fem/postprocess/analytical_comparison.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace contact_fem
+{
+  /// The converged solution on the current mesh, as the output reads it.
+  template <int dim>
+  struct SolutionView
+  {
+    const DoFHandler<dim>               &dof_handler;
+    const Mapping<dim>                  &mapping;
+    const TrilinosWrappers::MPI::Vector &solution; ///< with ghost entries
+    const Materials<dim>                &materials;
+    /// B-bar's projection of the volumetric strain, or null.
+    const VolumetricProjection<dim> *volumetric_projection;
+    /// The contact state, or null for a scene without contact pairs.
+    const ContactState<dim> *contact;
+  };
+
+  template <int dim>
+  class VtuOutput
+  {
+  public:
+    VtuOutput(const std::string &directory, const MPI_Comm comm);
+
+    /// solution_NNN.pvtu (NNN counts the files of the run) for the load
+    /// step converged at load time @p time of adaptive cycle @p cycle,
+    /// listed at @p time in solution_cycle_K.pvd and in solution.pvd (the
+    /// load path of the latest cycle: the final mesh's after the run).
+    void
+    write_solution(const SolutionView<dim> &view, const unsigned int cycle, const double time);
+
+    /// error_indicators_KK.pvtu: the mesh of cycle @p cycle with the
+    /// displacement and the cell indicators @p indicators of its estimate,
+    /// listed at time @p cycle in error_indicators.pvd.
+    void
+    write_error_indicators(const SolutionView<dim> &view,
+                           const Vector<float>     &indicators,
+                           const unsigned int       cycle);
+
+  private:
+    /// Writes @p records as the collection @p name (rank 0), collectively.
+    void
+    write_collection(const std::string                                  &name,
+                     const std::vector<std::pair<double, std::string>> &records) const;
+
+    std::string  directory;
+    MPI_Comm     comm;
+    unsigned int n_solutions = 0;
+    unsigned int records_cycle = 0;
+    std::vector<std::pair<double, std::string>> cycle_records, indicator_records;
+  };
+} // namespace contact_fem
+
+#endif

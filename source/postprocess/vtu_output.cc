@@ -1,0 +1,302 @@
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <contact_fem/contact/contact_interface.h>
+#include <contact_fem/contact/formulations/contact_formulation.h>
+#include <contact_fem/postprocess/output_files.h>
+#include <contact_fem/postprocess/vtu_output.h>
+
+#include <memory>
+#include <sstream>
+#include <unordered_map>
+
+namespace contact_fem
+{
+  namespace
+  {
+    /// The Cauchy stress tensor of the FE displacement (cell by cell
+    /// material; with B-bar from the projected volumetric strain) and its
+    /// von Mises stress sqrt(3/2 s:s), s the deviator (in 2D of the plane
+    /// strain state, with sigma_zz).
+    template <int dim>
+    class StressFields : public DataPostprocessor<dim>
+    {
+    public:
+      StressFields(const SolutionView<dim> &view)
+        : materials(view.materials)
+        , mapping(view.mapping)
+        , solution(view.solution)
+        , b_bar(view.volumetric_projection != nullptr)
+      {}
+
+      std::vector<std::string>
+      get_names() const override
+      {
+        std::vector<std::string> names(dim * dim, "stress");
+        names.push_back("von_Mises");
+        return names;
+      }
+
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      get_data_component_interpretation() const override
+      {
+        std::vector<DataComponentInterpretation::DataComponentInterpretation> kinds(
+          dim * dim, DataComponentInterpretation::component_is_part_of_tensor);
+        kinds.push_back(DataComponentInterpretation::component_is_scalar);
+        return kinds;
+      }
+
+      UpdateFlags
+      get_needed_update_flags() const override
+      {
+        return update_gradients | update_quadrature_points;
+      }
+
+      void
+      evaluate_vector_field(const DataPostprocessorInputs::Vector<dim> &inputs,
+                            std::vector<Vector<double>> &computed) const override
+      {
+        const typename DoFHandler<dim>::active_cell_iterator cell =
+          inputs.template get_cell<dim>();
+        const auto id = cell->material_id();
+        // Patches are built on several threads: each call has its own
+        // projection (output only, so its set-up cost does not matter).
+        std::unique_ptr<VolumetricProjection<dim>> projection;
+        Vector<double>                              local_values;
+        if (b_bar)
+          {
+            projection =
+              std::make_unique<VolumetricProjection<dim>>(mapping, cell->get_fe());
+            projection->reinit(cell);
+            local_values.reinit(cell->get_fe().n_dofs_per_cell());
+            cell->get_dof_values(solution, local_values);
+          }
+        for (unsigned int q = 0; q < computed.size(); ++q)
+          {
+            SymmetricTensor<2, dim> strain;
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j <= i; ++j)
+                strain[i][j] =
+                  0.5 * (inputs.solution_gradients[q][i][j] + inputs.solution_gradients[q][j][i]);
+            const SymmetricTensor<2, dim> stress =
+              b_bar ? materials.stress(id,
+                                       strain,
+                                       projection->value(local_values,
+                                                         mapping.transform_real_to_unit_cell(
+                                                           cell, inputs.evaluation_points[q]))) :
+                      materials.stress(id, strain);
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                computed[q](i * dim + j) = stress[i][j];
+            computed[q](dim * dim) = materials.von_mises(id, stress);
+          }
+      }
+
+    private:
+      const Materials<dim>                &materials;
+      const Mapping<dim>                  &mapping;
+      const TrilinosWrappers::MPI::Vector &solution;
+      const bool                           b_bar;
+    };
+
+    /// zlib's fastest level: deal.II's default (best compression) took 60 %
+    /// of the VTU time of prm/hertz.prm for 6 % smaller files
+    /// (doc/performance.md).
+    DataOutBase::VtkFlags
+    fast_vtk_flags()
+    {
+      DataOutBase::VtkFlags flags;
+      flags.compression_level = DataOutBase::VtkFlags::best_speed;
+      return flags;
+    }
+
+    /// The nodal contact fields of @p contact on a scalar Q_p space
+    /// @p scalar_dofs of the same mesh: the contact pressure, weighted gap,
+    /// active, slave and master flags, then the formulation's own fields
+    /// (friction: tangential traction, slip, stick); their names in
+    /// @p names. Hanging vertices show the interpolation of their parents.
+    template <int dim>
+    std::vector<TrilinosWrappers::MPI::Vector>
+    contact_fields(const SolutionView<dim>  &view,
+                   const DoFHandler<dim>    &scalar_dofs,
+                   std::vector<std::string> &names)
+    {
+      const ContactInterface<dim>   &interface = view.contact->interface;
+      const ContactFormulation<dim> &contact   = view.contact->contact;
+      const MPI_Comm comm = view.dof_handler.get_communicator();
+      const IndexSet scalar_owned = scalar_dofs.locally_owned_dofs();
+      IndexSet       scalar_relevant;
+      DoFTools::extract_locally_relevant_dofs(scalar_dofs, scalar_relevant);
+
+      names = {"contact_pressure", "weighted_gap", "active", "slave", "master"};
+      const auto own_fields = contact.nodal_fields(interface);
+      for (const auto &field : own_fields)
+        names.push_back(field.name);
+      std::vector<TrilinosWrappers::MPI::Vector> fields(names.size());
+      for (auto &f : fields)
+        f.reinit(scalar_owned, comm);
+
+      std::unordered_map<types::global_dof_index, unsigned int> node_of_dof;
+      for (unsigned int n = 0; n < interface.nodes.size(); ++n)
+        node_of_dof[interface.nodes[n].dofs[0]] = n;
+      std::vector<double> gap(interface.nodes.size(), 0.);
+      for (const auto &s : interface.slave_nodes)
+        if (s.paired)
+          gap[s.node] = interface.gap(s, view.contact->displacement);
+
+      const FiniteElement<dim>            &fe = view.dof_handler.get_fe();
+      std::vector<types::global_dof_index> vector_dofs(fe.n_dofs_per_cell()),
+        scalar_dofs_of_cell(scalar_dofs.get_fe().n_dofs_per_cell());
+      auto scalar_cell = scalar_dofs.begin_active();
+      for (const auto &cell : view.dof_handler.active_cell_iterators())
+        {
+          if (cell->is_locally_owned())
+            {
+              cell->get_dof_indices(vector_dofs);
+              scalar_cell->get_dof_indices(scalar_dofs_of_cell);
+              for (unsigned int i = 0; i < vector_dofs.size(); ++i)
+                {
+                  const auto ci = fe.system_to_component_index(i);
+                  const auto it = node_of_dof.find(vector_dofs[i]);
+                  if (ci.first != 0 || it == node_of_dof.end())
+                    continue;
+                  const auto scalar_dof = scalar_dofs_of_cell[ci.second];
+                  if (!scalar_owned.is_element(scalar_dof))
+                    continue;
+                  const unsigned int n = it->second;
+                  // A hanging vertex has no multiplier of its own: it shows
+                  // the interpolation of its parents, as its displacement.
+                  const std::vector<std::pair<unsigned int, double>> itself = {{n, 1.}};
+                  const auto &parents = interface.nodes[n].parents;
+                  double      pressure = 0., interpolated_gap = 0.;
+                  bool        active   = true;
+                  for (const auto &[source, weight] : parents.empty() ? itself : parents)
+                    {
+                      pressure += weight * contact.normal_pressure(source);
+                      interpolated_gap += weight * gap[source];
+                      active = active && contact.is_active(source);
+                    }
+                  fields[0](scalar_dof) = pressure;
+                  fields[1](scalar_dof) = interpolated_gap;
+                  fields[2](scalar_dof) = active ? 1. : 0.;
+                  fields[3](scalar_dof) = interface.nodes[n].slave ? 1. : 0.;
+                  fields[4](scalar_dof) = interface.nodes[n].master ? 1. : 0.;
+                  for (unsigned int k = 0; k < own_fields.size(); ++k)
+                    fields[5 + k](scalar_dof) = own_fields[k].values[n];
+                }
+            }
+          ++scalar_cell;
+        }
+      std::vector<TrilinosWrappers::MPI::Vector> ghosted(names.size());
+      for (unsigned int k = 0; k < names.size(); ++k)
+        {
+          fields[k].compress(VectorOperation::insert);
+          ghosted[k].reinit(scalar_owned, scalar_relevant, comm);
+          ghosted[k] = fields[k];
+        }
+      return ghosted;
+    }
+
+    template <int dim>
+    void
+    add_displacement(DataOut<dim> &data_out, const SolutionView<dim> &view)
+    {
+      const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+        vector_field(dim, DataComponentInterpretation::component_is_part_of_vector);
+      data_out.add_data_vector(view.dof_handler, view.solution,
+                               std::vector<std::string>(dim, "displacement"), vector_field);
+    }
+  } // namespace
+
+  template <int dim>
+  VtuOutput<dim>::VtuOutput(const std::string &directory, const MPI_Comm comm)
+    : directory(directory)
+    , comm(comm)
+  {}
+
+  template <int dim>
+  void
+  VtuOutput<dim>::write_solution(const SolutionView<dim> &view,
+                                 const unsigned int       cycle,
+                                 const double             time)
+  {
+    const auto &triangulation = view.dof_handler.get_triangulation();
+    const unsigned int degree = view.dof_handler.get_fe().degree;
+    // Nodal contact fields live on a scalar Q_p space on the same mesh.
+    const FE_Q<dim> scalar_fe(degree);
+    DoFHandler<dim> scalar_dofs(triangulation);
+    scalar_dofs.distribute_dofs(scalar_fe);
+    std::vector<std::string>                   names;
+    std::vector<TrilinosWrappers::MPI::Vector> fields;
+    if (view.contact)
+      fields = contact_fields(view, scalar_dofs, names);
+
+    DataOut<dim> data_out;
+    data_out.attach_triangulation(triangulation);
+    add_displacement(data_out, view);
+    const StressFields<dim> stress(view);
+    data_out.add_data_vector(view.dof_handler, view.solution, stress);
+    for (unsigned int k = 0; k < fields.size(); ++k)
+      data_out.add_data_vector(scalar_dofs, fields[k], names[k]);
+    Vector<float> material(triangulation.n_active_cells()),
+      subdomain(triangulation.n_active_cells());
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          material(cell->active_cell_index())  = cell->material_id();
+          subdomain(cell->active_cell_index()) = triangulation.locally_owned_subdomain();
+        }
+    data_out.add_data_vector(material, "material_id");
+    data_out.add_data_vector(subdomain, "subdomain");
+    data_out.build_patches(view.mapping, degree);
+    data_out.set_flags(fast_vtk_flags());
+    const std::string name =
+      write_vtu_pieces<dim>(data_out, directory + "/", "solution", ++n_solutions, 3, comm);
+    if (cycle != records_cycle)
+      cycle_records.clear();
+    records_cycle = cycle;
+    cycle_records.emplace_back(time, name);
+    write_collection("solution_cycle_" + std::to_string(cycle) + ".pvd", cycle_records);
+    write_collection("solution.pvd", cycle_records);
+  }
+
+  template <int dim>
+  void
+  VtuOutput<dim>::write_error_indicators(const SolutionView<dim> &view,
+                                         const Vector<float>     &indicators,
+                                         const unsigned int       cycle)
+  {
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(view.dof_handler);
+    add_displacement(data_out, view);
+    data_out.add_data_vector(indicators, "error_indicator", DataOut<dim>::type_cell_data);
+    data_out.build_patches(view.mapping, view.dof_handler.get_fe().degree);
+    data_out.set_flags(fast_vtk_flags());
+    const std::string name =
+      write_vtu_pieces<dim>(data_out, directory + "/", "error_indicators", cycle, 2, comm);
+    indicator_records.emplace_back(cycle, name);
+    write_collection("error_indicators.pvd", indicator_records);
+  }
+
+  template <int dim>
+  void
+  VtuOutput<dim>::write_collection(
+    const std::string                                  &name,
+    const std::vector<std::pair<double, std::string>> &records) const
+  {
+    std::ostringstream pvd;
+    DataOutBase::write_pvd_record(pvd, records);
+    const std::string path = directory + "/" + name;
+    throw_if_unwritten(path,
+                       Utilities::MPI::this_mpi_process(comm) != 0 ?
+                         std::string() :
+                         write_file_atomically(path, pvd.str()),
+                       comm);
+  }
+
+  template class VtuOutput<2>;
+  template class VtuOutput<3>;
+} // namespace contact_fem
