@@ -174,7 +174,8 @@ namespace contact_fem
     // and base_NNN.RANK.vtu (vtu_output.cc).
     static const std::regex pattern(
       "(summary\\.json|log\\.txt|convergence\\.csv|pressure_profile\\.csv|forces\\.csv|"
-      "solution(_cycle_[0-9]+)?\\.pvd|error_indicators\\.pvd)"
+      "(solution|contact_surface)(_cycle_[0-9]+)?\\.pvd|error_indicators\\.pvd|"
+      "contact_surface_[0-9]+\\.vtu)"
       "(\\.partial)?|"
       "(solution|error_indicators)_[0-9]+\\.([0-9]+\\.vtu|pvtu)|"
       "\\.contact_fem-write-check");

@@ -9,6 +9,8 @@
 #include <contact_fem/postprocess/output_files.h>
 #include <contact_fem/postprocess/vtu_output.h>
 
+#include <functional>
+#include <iomanip>
 #include <memory>
 #include <sstream>
 #include <unordered_map>
@@ -200,6 +202,145 @@ namespace contact_fem
       return ghosted;
     }
 
+    /// The VTK cell type and the VTK order of the nodes of a slave face
+    /// (deal.II's face node order: Mortar::LineFace, Mortar::QuadFace).
+    template <int dim>
+    std::pair<unsigned int, std::vector<unsigned int>>
+    vtk_cell(const std::vector<unsigned int> &nodes)
+    {
+      if (dim == 2)
+        return nodes.size() == 3 ?
+                 std::make_pair(21u, std::vector<unsigned int>{nodes[0], nodes[1], nodes[2]}) :
+                 std::make_pair(3u, std::vector<unsigned int>{nodes[0], nodes[1]});
+      // Corners counter-clockwise, then the edge midpoints in the same
+      // order (edges 2, 1, 3, 0 of deal.II's face), then the centre.
+      if (nodes.size() == 9)
+        return {28u,
+                {nodes[0], nodes[1], nodes[3], nodes[2], nodes[6], nodes[5], nodes[7], nodes[4],
+                 nodes[8]}};
+      return {9u, {nodes[0], nodes[1], nodes[3], nodes[2]}};
+    }
+
+    /// The slave surfaces of @p state as an ASCII VTU: the deformed faces
+    /// (degree-1 faces on a curved geometry as their straight cells) and
+    /// per node the contact pressure, the traction vector on the slave, the
+    /// weighted gap, the active flag, the pair, the formulation's own fields
+    /// and the displacement. A hanging vertex shows the interpolation of its
+    /// parents.
+    template <int dim>
+    std::string
+    contact_surface_vtu(const ContactState<dim> &state)
+    {
+      const ContactInterface<dim>   &interface = state.interface;
+      const ContactFormulation<dim> &contact   = state.contact;
+      std::vector<int> point_of_node(interface.nodes.size(), -1);
+      std::vector<unsigned int> points, connectivity, offsets, types;
+      for (const auto &face : interface.faces)
+        if (face.slave)
+          {
+            const auto [type, nodes] = vtk_cell<dim>(face.nodes);
+            for (const unsigned int n : nodes)
+              {
+                if (point_of_node[n] < 0)
+                  {
+                    point_of_node[n] = points.size();
+                    points.push_back(n);
+                  }
+                connectivity.push_back(point_of_node[n]);
+              }
+            offsets.push_back(connectivity.size());
+            types.push_back(type);
+          }
+      // Per interface node: the slave node's values, interpolated at a
+      // hanging vertex.
+      const unsigned int n_nodes = interface.nodes.size();
+      std::vector<double> pressure(n_nodes, 0.), gap(n_nodes, 0.), active(n_nodes, 0.),
+        pair(n_nodes, -1.);
+      std::vector<Tensor<1, dim>> traction(n_nodes);
+      for (const auto &s : interface.slave_nodes)
+        {
+          pair[s.node] = s.pair;
+          if (!s.paired)
+            continue;
+          pressure[s.node] = contact.normal_pressure(s.node);
+          gap[s.node]      = interface.gap(s, state.displacement);
+          active[s.node]   = contact.is_active(s.node) ? 1. : 0.;
+          if (contact.is_active(s.node))
+            traction[s.node] = contact.traction(s);
+        }
+      const auto own_fields = contact.nodal_fields(interface);
+      auto value = [&](const std::vector<double> &field, const unsigned int n) {
+        if (interface.nodes[n].parents.empty())
+          return field[n];
+        double v = 0.;
+        for (const auto &[source, weight] : interface.nodes[n].parents)
+          v += weight * field[source];
+        return v;
+      };
+
+      std::ostringstream out;
+      out << std::setprecision(10);
+      out << "<?xml version=\"1.0\"?>\n"
+          << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+          << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << points.size()
+          << "\" NumberOfCells=\"" << types.size() << "\">\n"
+          << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+      for (const unsigned int n : points)
+        {
+          const Point<dim> x = state.position(n);
+          for (unsigned int d = 0; d < 3; ++d)
+            out << (d < dim ? x[d] : 0.) << (d < 2 ? ' ' : '\n');
+        }
+      out << "</DataArray>\n</Points>\n<Cells>\n"
+          << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+      for (const unsigned int c : connectivity)
+        out << c << '\n';
+      out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+      for (const unsigned int o : offsets)
+        out << o << '\n';
+      out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+      for (const unsigned int t : types)
+        out << t << '\n';
+      out << "</DataArray>\n</Cells>\n<PointData>\n";
+      auto scalar = [&](const std::string &name, const std::vector<double> &field) {
+        out << "<DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
+        for (const unsigned int n : points)
+          out << value(field, n) << '\n';
+        out << "</DataArray>\n";
+      };
+      scalar("contact_pressure", pressure);
+      scalar("weighted_gap", gap);
+      scalar("active", active);
+      scalar("pair", pair);
+      for (const auto &field : own_fields)
+        scalar(field.name, field.values);
+      auto vector = [&](const std::string &name, const std::function<Tensor<1, dim>(unsigned int)> &at) {
+        out << "<DataArray type=\"Float64\" Name=\"" << name
+            << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+        for (const unsigned int n : points)
+          {
+            const Tensor<1, dim> v = at(n);
+            for (unsigned int d = 0; d < 3; ++d)
+              out << (d < dim ? v[d] : 0.) << (d < 2 ? ' ' : '\n');
+          }
+        out << "</DataArray>\n";
+      };
+      vector("traction", [&](const unsigned int n) {
+        if (interface.nodes[n].parents.empty())
+          return traction[n];
+        Tensor<1, dim> t;
+        for (const auto &[source, weight] : interface.nodes[n].parents)
+          t += weight * traction[source];
+        return t;
+      });
+      // The points less this are the reference positions.
+      vector("displacement", [&](const unsigned int n) {
+        return interface.displacement(n, state.displacement);
+      });
+      out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+      return out.str();
+    }
+
     template <int dim>
     void
     add_displacement(DataOut<dim> &data_out, const SolutionView<dim> &view)
@@ -256,11 +397,29 @@ namespace contact_fem
     const std::string name =
       write_vtu_pieces<dim>(data_out, directory + "/", "solution", ++n_solutions, 3, comm);
     if (cycle != records_cycle)
-      cycle_records.clear();
+      {
+        cycle_records.clear();
+        surface_records.clear();
+      }
     records_cycle = cycle;
     cycle_records.emplace_back(time, name);
     write_collection("solution_cycle_" + std::to_string(cycle) + ".pvd", cycle_records);
     write_collection("solution.pvd", cycle_records);
+    if (view.contact)
+      {
+        // The interface is known on every rank: rank 0 writes it whole.
+        const std::string surface = "contact_surface_" + Utilities::int_to_string(n_solutions, 3) + ".vtu";
+        const std::string path    = directory + "/" + surface;
+        throw_if_unwritten(path,
+                           Utilities::MPI::this_mpi_process(comm) != 0 ?
+                             std::string() :
+                             write_file_atomically(path, contact_surface_vtu(*view.contact)),
+                           comm);
+        surface_records.emplace_back(time, surface);
+        write_collection("contact_surface_cycle_" + std::to_string(cycle) + ".pvd",
+                         surface_records);
+        write_collection("contact_surface.pvd", surface_records);
+      }
   }
 
   template <int dim>

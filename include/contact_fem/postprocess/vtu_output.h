@@ -1,5 +1,6 @@
 // The VTU/PVD files of a run: the solution of every converged load step
-// (displacement, stress, von Mises stress, contact fields) and the error
+// (displacement, stress, von Mises stress, contact fields), the slave
+// contact surfaces (pressure, traction vector, gap, state) and the error
 // indicators of every adaptive cycle, with ParaView collections whose times
 // are the load times (solution) and the cycles (indicators).
 #ifndef contact_fem_vtu_output_h
@@ -45,6 +46,8 @@ namespace contact_fem
     /// step converged at load time @p time of adaptive cycle @p cycle,
     /// listed at @p time in solution_cycle_K.pvd and in solution.pvd (the
     /// load path of the latest cycle: the final mesh's after the run).
+    /// With contact also contact_surface_NNN.vtu, the slave surfaces
+    /// alone, in contact_surface_cycle_K.pvd and contact_surface.pvd.
     void
     write_solution(const SolutionView<dim> &view, const unsigned int cycle, const double time);
 
@@ -66,7 +69,7 @@ namespace contact_fem
     MPI_Comm     comm;
     unsigned int n_solutions = 0;
     unsigned int records_cycle = 0;
-    std::vector<std::pair<double, std::string>> cycle_records, indicator_records;
+    std::vector<std::pair<double, std::string>> cycle_records, surface_records, indicator_records;
   };
 } // namespace contact_fem
 

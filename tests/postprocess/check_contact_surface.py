@@ -1,0 +1,100 @@
+#!/usr/bin/env python3
+"""Runs a contact patch scene with its VTU output and checks what the files say.
+
+Usage: check_contact_surface.py CONTACT_FEM SCENE.prm
+
+The scene is a 2D patch test under a uniform pressure p = 2 (exact for the
+mortar method): every active slave node of contact_surface_NNN.vtu must
+show the pressure 2 and the traction (0, 2) on the slave to 1e-10, the
+traction integrated over the surface's cells (exact for a uniform traction
+on straight cells) must equal the pair force of forces.csv to 1e-10, and
+solution.pvd and contact_surface.pvd must list the two load steps at their
+load times 0.5 and 1.
+"""
+import csv
+import os
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+
+contact_fem, scene = sys.argv[1:3]
+env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+run = subprocess.run([contact_fem, scene, "--set", "Output directory=results",
+                      "--set", "Output/Write VTU=true",
+                      "--set", "Load stepping/Number of load steps=2"],
+                     env=env, capture_output=True, text=True)
+if run.returncode != 0:
+    sys.exit("contact_fem failed:\n" + run.stdout + run.stderr)
+
+failures = []
+
+
+def check(condition, what):
+    if not condition:
+        failures.append(what)
+
+
+def numbers(element):
+    return [float(x) for x in element.text.split()]
+
+
+def collection(name):
+    root = ET.parse(os.path.join("results", name)).getroot()
+    return [(float(d.get("timestep")), d.get("file")) for d in root.iter("DataSet")]
+
+
+# The collections: the load steps at their load times.
+for name in ("solution.pvd", "contact_surface.pvd", "contact_surface_cycle_0.pvd"):
+    times = [t for t, _ in collection(name)]
+    check(times == [0.5, 1.0], f"{name}: times {times}, expected [0.5, 1.0]")
+
+last_surface = collection("contact_surface.pvd")[-1][1]
+piece = ET.parse(os.path.join("results", last_surface)).getroot().find(".//Piece")
+n_points = int(piece.get("NumberOfPoints"))
+raw = numbers(piece.find("Points/DataArray"))
+points = [raw[i:i + 3] for i in range(0, len(raw), 3)]
+cells = {e.get("Name"): [int(float(x)) for x in e.text.split()] for e in piece.find("Cells")}
+fields = {}
+for e in piece.find("PointData"):
+    values = numbers(e)
+    components = int(e.get("NumberOfComponents", "1"))
+    check(len(values) == n_points * components, f"{e.get('Name')}: {len(values)} values")
+    fields[e.get("Name")] = [values[i:i + components] for i in range(0, len(values), components)]
+check(set(cells["types"]) == {3}, f"cell types {set(cells['types'])}, expected lines (3)")
+check(cells["offsets"][-1] == len(cells["connectivity"]), "offsets do not end at the connectivity")
+
+for k in range(n_points):
+    if fields["active"][k][0] != 1.0:
+        failures.append(f"node {k} is not active")
+        continue
+    p = fields["contact_pressure"][k][0]
+    t = fields["traction"][k]
+    check(abs(p - 2.0) < 2e-10, f"node {k}: pressure {p!r}, expected 2")
+    check(abs(t[0]) < 2e-10 and abs(abs(t[1]) - 2.0) < 2e-10,
+          f"node {k}: traction {t}, expected (0, +-2)")
+
+# Integrated traction (trapezoid rule: exact for a uniform traction) over
+# the reference cells (points less displacement), where the mortar weights
+# of the pair force are measured (Contact/Kinematics = small).
+points = [[x[d] - u[d] for d in range(3)] for x, u in zip(points, fields["displacement"])]
+force = [0.0, 0.0]
+start = 0
+for end in cells["offsets"]:
+    a, b = cells["connectivity"][start:start + 2]
+    start = end
+    length = sum((points[a][d] - points[b][d]) ** 2 for d in range(2)) ** 0.5
+    for d in range(2):
+        force[d] += 0.5 * length * (fields["traction"][a][d] + fields["traction"][b][d])
+with open(os.path.join("results", "forces.csv")) as f:
+    last = list(csv.DictReader(f))[-1]
+pair = [float(last["pair_3_4_normal_x"]) + float(last["pair_3_4_tangential_x"]),
+        float(last["pair_3_4_normal_y"]) + float(last["pair_3_4_tangential_y"])]
+for d in range(2):
+    check(abs(force[d] - pair[d]) <= 1e-10 * max(1.0, abs(pair[1])),
+          f"integrated traction {force} differs from the pair force {pair} of forces.csv")
+
+if failures:
+    print("\n".join(failures))
+    sys.exit(1)
+print(f"{n_points} slave nodes: pressure 2 and traction (0, 2) at each; integrated "
+      f"traction = pair force {pair}; load times 0.5 and 1")
