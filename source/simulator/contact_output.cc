@@ -162,10 +162,20 @@ namespace contact_fem
     forces.print(text, time);
     pcout << text.str();
     step_record.set("forces", forces.to_json());
+    // The probes' displacements follow the forces: a force-displacement
+    // curve is two columns of one file.
+    const std::vector<double> probes = probe_displacements();
     if (force_history.empty())
-      force_history_header = "cycle,step,t" + forces.csv_header();
+      {
+        force_history_header = "cycle,step,t" + forces.csv_header();
+        for (unsigned int k = 0; k < probes.size(); ++k)
+          force_history_header +=
+            ",probe_" + std::to_string(k / dim + 1) + "_u" + std::string(1, "xyz"[k % dim]);
+      }
     std::ostringstream row;
     row << cycle << ',' << step << ',' << std::setprecision(10) << time << forces.csv_row();
+    for (const double u : probes)
+      row << ',' << u;
     force_history.push_back(row.str());
     const std::string path = output.directory + "/forces.csv";
     if (Utilities::MPI::this_mpi_process(comm) != 0)
@@ -202,8 +212,8 @@ namespace contact_fem
 
 
   template <int dim>
-  Json
-  ContactProblem<dim>::probe_results() const
+  std::vector<double>
+  ContactProblem<dim>::probe_displacements() const
   {
     // Each DoF is added by its owner only, so the sum over ranks is its value.
     std::vector<double> values(probe_dofs.size() * dim, 0.);
@@ -212,6 +222,14 @@ namespace contact_fem
         if (owned_dofs.is_element(probe_dofs[i][d]))
           values[i * dim + d] = solution(probe_dofs[i][d]);
     Utilities::MPI::sum(values, comm, values);
+    return values;
+  }
+
+  template <int dim>
+  Json
+  ContactProblem<dim>::probe_results() const
+  {
+    const std::vector<double> values = probe_displacements();
 
     Json probes = Json::array();
     for (unsigned int i = 0; i < probe_dofs.size(); ++i)
@@ -372,7 +390,23 @@ namespace contact_fem
                     << number(r["analytical"]["a_error"]) << ','
                     << number(r["pressure_l2_relative_error"]) << ','
                     << number(r["energy_error"]) << ',' << iterations << ','
-                    << number(r["wall_time"]) << ',' << cumulative << std::endl;
+                    << number(r["wall_time"]) << ',' << cumulative << ','
+                    << number(r["contact"]["max_contact_pressure"]) << ','
+                    << number(r["pressure_reference_l2_relative_error"]);
+    // Per contact pair, from the cycle's last load step: the magnitude of
+    // the normal force and the contact length (2D) or area (3D).
+    const Json &steps = r["load_steps"];
+    const Json &pairs = steps[steps.size() - 1]["forces"]["pairs"];
+    for (unsigned int p = 0; p < contact_parameters.pairs.size(); ++p)
+      {
+        const Json &force = pairs[p]["normal_force"];
+        double      squared = 0.;
+        for (unsigned int d = 0; d < dim; ++d)
+          squared += force[d].number_value() * force[d].number_value();
+        convergence_csv << ',' << number(Json(std::sqrt(squared))) << ','
+                        << number(pairs[p][dim == 2 ? "contact_length" : "contact_area"]);
+      }
+    convergence_csv << std::endl;
     check_written(path, convergence_csv.good());
   }
 
@@ -470,6 +504,7 @@ namespace contact_fem
   template void ContactProblem<dim>::write_pressure_profile() const;             \
   template void ContactProblem<dim>::record_forces(const unsigned int, const double, Json &); \
   template Json ContactProblem<dim>::probe_results() const;                      \
+  template std::vector<double> ContactProblem<dim>::probe_displacements() const; \
   template double ContactProblem<dim>::reference_pressure_error(                  \
     const std::vector<double> &) const;                                           \
   template void ContactProblem<dim>::write_convergence_row(const Json &, const double); \

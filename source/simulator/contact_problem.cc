@@ -1257,7 +1257,16 @@ namespace contact_fem
         convergence_csv << "cycle,cells,dofs,active_slave_nodes,estimator,estimated_error,"
                            "relative_estimated_error,effectivity_index,p_max_relative_error,"
                            "a_error,pressure_l2_relative_error,energy_error,"
-                           "newton_iterations,wall_time,cumulative_wall_time\n";
+                           "newton_iterations,wall_time,cumulative_wall_time,"
+                           "max_contact_pressure,pressure_reference_l2_relative_error";
+        for (const auto &pair : contact_parameters.pairs)
+          {
+            const std::string name =
+              "pair_" + std::to_string(pair.slave) + "_" + std::to_string(pair.master);
+            convergence_csv << ',' << name << "_normal_force," << name
+                            << (dim == 2 ? "_contact_length" : "_contact_area");
+          }
+        convergence_csv << '\n';
       }
     check_written(output.directory + "/convergence.csv", !root || convergence_csv.good());
     Json cycles    = Json::array();

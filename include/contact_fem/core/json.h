@@ -39,6 +39,12 @@ namespace contact_fem
     /// Element @p i of an array (a null value if absent).
     const Json &
     operator[](const std::size_t i) const;
+    /// The number of elements of an array (0 for any other value).
+    std::size_t
+    size() const
+    {
+      return type == Type::array ? items.size() : 0;
+    }
     /// The number held (NaN if the value is not a number).
     double
     number_value() const;

@@ -514,6 +514,10 @@ namespace contact_fem
     /// Prints and returns the displacements at Output/Displacement probes.
     Json
     probe_results() const;
+    /// The displacement components at the probes, probe by probe (the same
+    /// on every rank). Collective.
+    std::vector<double>
+    probe_displacements() const;
     /// The converged solution on the current mesh, as the output reads it.
     SolutionView<dim>
     solution_view(const ContactState<dim> *contact_state) const
