@@ -240,6 +240,7 @@ namespace contact_fem
     prm.enter_subsection("Geometry");
     frame              = ModelFrame<dim>();
     message_origin     = {};
+    mesh_note.clear();
     type               = prm.get("Type");
     mesh_file          = prm.get("Mesh file");
     global_refinements = prm.get_integer("Global refinements");
@@ -382,6 +383,8 @@ namespace contact_fem
       }
     for (auto &m : manifolds)
       m.centre = frame.to_model(m.centre);
+    place_new_vertices_on_manifolds(manifolds, info.first_new_vertex, *coarse);
+    mesh_note = info.split_note;
     check_unmerged_vertices(*coarse, mesh_file);
     check_boundary_manifolds(manifolds, *coarse, key);
     // Random vertex moves would invalidate the transfinite chart of the

@@ -29,6 +29,13 @@ namespace contact_fem
     /// (choose_frame_origin(); zero for a mesh near the origin).
     Point<3> frame_origin;
     std::vector<PhysicalName> physical_names;
+    /// A mesh with triangles, tetrahedra or prisms is split into
+    /// quadrilaterals or hexahedra (mesh_split.h): what was split ("24
+    /// tetrahedra split into 96 hexahedra"), and the first vertex the split
+    /// made (the vertices before it are the file's nodes). Empty and
+    /// invalid for a mesh read as it is.
+    std::string  split_note;
+    unsigned int first_new_vertex = numbers::invalid_unsigned_int;
   };
 
   /**

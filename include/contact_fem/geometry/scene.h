@@ -192,6 +192,9 @@ namespace contact_fem
     /// Boundaries of the mesh file that look like polygons of a curve and
     /// have no manifold.
     std::vector<PolygonalBoundary<dim>> polygonal_boundaries;
+    /// What the reader split ("24 tetrahedra split into 96 hexahedra"), or
+    /// empty: the mesh file's cells were read as they are.
+    std::string mesh_note;
 
     struct Hertz
     {
