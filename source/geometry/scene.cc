@@ -387,16 +387,25 @@ namespace contact_fem
     mesh_note = info.split_note;
     check_unmerged_vertices(*coarse, mesh_file);
     check_boundary_manifolds(manifolds, *coarse, key);
-    // Random vertex moves would invalidate the transfinite chart of the
-    // coarse cells (as for the Hertz disc): a distorted mesh keeps straight
-    // interior lines.
-    set_manifold_ids(manifolds, distortion == 0., *coarse);
-    check_refinement_on_manifolds(manifolds, distortion == 0., *coarse, key);
+    set_manifold_ids(manifolds, curved_interior(), *coarse);
+    check_refinement_on_manifolds(manifolds, curved_interior(), *coarse, key);
     std::vector<types::boundary_id> with_manifold;
     for (const auto &m : manifolds)
       with_manifold.push_back(m.boundary_id);
     polygonal_boundaries = find_polygonal_boundaries(*coarse, with_manifold);
     coarse_mesh          = coarse;
+  }
+
+  template <int dim>
+  bool
+  Scene<dim>::curved_interior() const
+  {
+    // Random vertex moves would invalidate the transfinite chart of the
+    // coarse cells (as for the Hertz disc): a distorted mesh keeps straight
+    // interior lines. So does a split mesh: the corner pieces of
+    // tetrahedra touch a curved surface with an edge or a corner only, in
+    // great numbers, and the chart's pull-back fails for some of them.
+    return distortion == 0. && mesh_note.empty();
   }
 
   template <int dim>
@@ -407,7 +416,7 @@ namespace contact_fem
                                         "create_mesh() uses it once."));
     tria.copy_triangulation(*coarse_mesh);
     coarse_mesh.reset();
-    attach_manifolds(manifolds, distortion == 0., tria);
+    attach_manifolds(manifolds, curved_interior(), tria);
   }
 
   template <int dim>

@@ -167,6 +167,10 @@ namespace contact_fem
     /// replace the ids they stand for in @p prm (PhysicalNames).
     void
     read_mesh_file(ParameterHandler &prm);
+    /// Whether the cells of a body with a curved boundary follow it inside
+    /// (a transfinite interpolation) or keep straight interior lines.
+    bool
+    curved_interior() const;
     /// The mesh file's coarse mesh with its manifolds, into @p tria.
     void
     create_from_mesh_file(parallel::distributed::Triangulation<dim> &tria) const;
