@@ -915,18 +915,23 @@ namespace contact_fem
     info.physical_names   = contents.physical_names;
     const Point<3> origin = info.frame_origin =
       choose_frame_origin(contents.lower, contents.upper, dim);
+    std::string split_text; // the split mesh as a file for deal.II's reader
+    if (needs_split(contents.elements, dim))
+      {
+        const SplitMesh split =
+          split_mesh(contents.element_list, contents.node_coordinates, origin, dim);
+        check_split_cells(split, contents, file, dim);
+        info.first_new_vertex = split.n_file_nodes;
+        info.split_note       = split_summary(split, dim);
+        split_text            = msh22_text(split);
+      }
     GridIn<dim>    grid_in;
     grid_in.attach_triangulation(coarse);
     try
       {
-        if (needs_split(contents.elements, dim))
+        if (!split_text.empty())
           {
-            const SplitMesh split =
-              split_mesh(contents.element_list, contents.node_coordinates, origin, dim);
-            check_split_cells(split, contents, file, dim);
-            info.first_new_vertex = split.n_file_nodes;
-            info.split_note       = split_summary(split, dim);
-            std::istringstream in(msh22_text(split));
+            std::istringstream in(split_text);
             grid_in.read_msh(in);
           }
         else if (origin.norm_square() > 0.)
