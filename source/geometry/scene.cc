@@ -102,11 +102,16 @@ namespace contact_fem
                       "that takes one. A mesh far from the origin (more than 10 "
                       "times its size) is computed moved next to it; the input "
                       "stays in the file's coordinates. Cells: first-order "
-                      "quadrilaterals (hexahedra in 3D). Read and checked with "
-                      "the input (also by --validate): binary, truncated, "
-                      "simplex or wrong-dimension files and bodies cut by "
-                      "unmerged nodes are refused with a message; bodies in "
-                      "contact keep their own nodes (different material ids).");
+                      "quadrilaterals and triangles (2D), hexahedra, tetrahedra "
+                      "and prisms (3D); a mesh with triangles, tetrahedra or "
+                      "prisms is split on reading, every cell into "
+                      "quadrilaterals or hexahedra at its corners (README, "
+                      "Meshes). Read and checked with the input (also by "
+                      "--validate): binary, truncated, pyramid, second-order "
+                      "or wrong-dimension files, degenerate cells and bodies "
+                      "cut by unmerged nodes are refused with a message; "
+                      "bodies in contact keep their own nodes (different "
+                      "material ids).");
     prm.declare_entry("Distortion",
                       "0",
                       Patterns::Double(0., 0.45),
