@@ -829,7 +829,8 @@ namespace contact_fem
               std::array<Point<3>, 4> x;
               for (unsigned int i = 0; i < 4; ++i)
                 x[i] = split.points[piece.vertices[i]];
-              problem = quadrilateral_problem(x, std::array<long, 4>{}).empty() ? "" : "is degenerate or inverted";
+              if (!quadrilateral_problem(x, std::array<long, 4>{}).empty())
+                problem = "is degenerate or inverted";
             }
           if (problem.empty() || n_bad++ > 0)
             continue;
