@@ -114,8 +114,13 @@ namespace contact_fem
       /// $PhysicalNames: (dimension, tag, name).
       std::vector<PhysicalName> physical_names;
       /// Every element with its physical tag, for the split of meshes with
-      /// triangles, tetrahedra or prisms (mesh_split.h).
+      /// triangles, tetrahedra or prisms (mesh_split.h); kept only when
+      /// asked for (a second scan: a large hexahedral mesh is not held
+      /// twice).
+      bool                     keep_elements = false;
       std::vector<GmshElement> element_list;
+      /// "element 12, line 40": the first pyramid, for its message.
+      std::string first_pyramid;
       /// MSH 4.x $Entities: the physical tag of (dimension, entity tag).
       std::map<std::pair<int, int>, int> entity_physical;
       Point<3> lower = Point<3>(std::numeric_limits<double>::max(),
@@ -339,7 +344,11 @@ namespace contact_fem
                    const int physical, const unsigned int line, Contents &contents)
     {
       const ElementType *t = find_element_type(type);
-      if (t == nullptr)
+      if (t != nullptr && t->dim == 3 && t->n_nodes == 5 && contents.first_pyramid.empty())
+        contents.first_pyramid =
+          "the first: element " + std::to_string(static_cast<long>(v[0])) + ", line " +
+          std::to_string(line);
+      if (t == nullptr || !contents.keep_elements)
         return;
       GmshElement element{type, static_cast<long>(v[0]), line, physical, {}};
       for (unsigned int i = 0; i < t->n_nodes; ++i)
@@ -535,13 +544,14 @@ namespace contact_fem
     }
 
     Contents
-    scan_gmsh(const std::string &file, const bool keep_hexahedra)
+    scan_gmsh(const std::string &file, const bool keep_hexahedra, const bool keep_elements)
     {
       LineReader   reader(file);
       std::string  section;
       const double version = read_format(reader, section);
       Contents     contents;
       contents.keep_hexahedra = keep_hexahedra;
+      contents.keep_elements  = keep_elements;
       std::string  line;
       while (!section.empty() || reader.next(line))
         {
@@ -597,17 +607,6 @@ namespace contact_fem
       return text;
     }
 
-    /// "element 12, line 40": the first pyramid of @p contents.
-    std::string
-    first_pyramid(const Contents &contents)
-    {
-      for (const GmshElement &e : contents.element_list)
-        if (const ElementType *t = find_element_type(e.type); t && t->n_nodes == 5 && t->dim == 3)
-          return "the first: element " + std::to_string(e.tag) + ", line " +
-                 std::to_string(e.line);
-      return "";
-    }
-
     /// Refuses what the scan found but deal.II's reader (or p4est) cannot
     /// take, or would take wrongly.
     void
@@ -643,7 +642,7 @@ namespace contact_fem
       const std::string pyramids =
         describe(contents, [](const ElementType &t) { return t.n_nodes == 5 && t.dim == 3; });
       AssertThrow(pyramids.empty(),
-                  ExcMessage(prefix + "holds " + pyramids + " (" + first_pyramid(contents) +
+                  ExcMessage(prefix + "holds " + pyramids + " (" + contents.first_pyramid +
                              "): pyramids are not supported. contact_fem splits "
                              "tetrahedra, prisms and hexahedra into hexahedra on reading, "
                              "but a pyramid has no such split that matches its neighbours' "
@@ -677,6 +676,20 @@ namespace contact_fem
       std::ostringstream text;
       text << std::setprecision(8) << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
       return text.str();
+    }
+
+    /// Throws if @p n_bad cells are degenerate or inverted: the first
+    /// (@p first) named, the others counted, then what is needed.
+    void
+    refuse_bad_cells(const std::string &file, const std::size_t n_bad, const std::string &first,
+                     const std::string &cells, const std::string &need)
+    {
+      AssertThrow(n_bad == 0,
+                  ExcMessage(mesh_key + ": '" + file + "', " + first +
+                             (n_bad > 1 ? "; " + std::to_string(n_bad - 1) + " more " + cells +
+                                            " are degenerate or inverted" :
+                                          "") +
+                             ". " + need));
     }
 
     /// Refuses hexahedra that are no valid cells: deal.II's reader would
@@ -728,13 +741,9 @@ namespace contact_fem
                  << "the opposite face in the same turn)";
           first = what.str();
         }
-      AssertThrow(n_bad == 0,
-                  ExcMessage(mesh_key + ": '" + file + "', " + first +
-                             (n_bad > 1 ? "; " + std::to_string(n_bad - 1) +
-                                            " more hexahedra are degenerate or inverted" :
-                                          "") +
-                             ". contact_fem needs hexahedra with a positive Jacobian at "
-                             "every corner: remesh, or fix the node order."));
+      refuse_bad_cells(file, n_bad, first, "hexahedra",
+                       "contact_fem needs hexahedra with a positive Jacobian at every "
+                       "corner: remesh, or fix the node order.");
     }
 
     /// What is wrong with the quadrilateral @p x (Gmsh order: around the
@@ -791,13 +800,9 @@ namespace contact_fem
             first = "line " + std::to_string(quadrilateral.line) + ": quadrilateral " +
                     std::to_string(quadrilateral.tag) + " " + problem;
         }
-      AssertThrow(n_bad == 0,
-                  ExcMessage(mesh_key + ": '" + file + "', " + first +
-                             (n_bad > 1 ? "; " + std::to_string(n_bad - 1) +
-                                            " more quadrilaterals are degenerate or inverted" :
-                                          "") +
-                             ". contact_fem needs quadrilaterals with a positive Jacobian "
-                             "at every corner: remesh, or fix the node order."));
+      refuse_bad_cells(file, n_bad, first, "quadrilaterals",
+                       "contact_fem needs quadrilaterals with a positive Jacobian at every "
+                       "corner: remesh, or fix the node order.");
     }
 
     /// Refuses a split mesh (mesh_split.h) with a degenerate or inverted
@@ -843,14 +848,10 @@ namespace contact_fem
                   " (its corner piece of the split into " +
                   (dim == 2 ? "quadrilaterals" : "hexahedra") + ")";
         }
-      AssertThrow(n_bad == 0,
-                  ExcMessage(mesh_key + ": '" + file + "', " + first +
-                             (n_bad > 1 ? "; " + std::to_string(n_bad - 1) +
-                                            " more split cells are degenerate or inverted" :
-                                          "") +
-                             ". contact_fem splits each cell at its corners and needs "
-                             "every piece with a positive Jacobian: remesh (a flat or "
-                             "sliver element), or fix the node order."));
+      refuse_bad_cells(file, n_bad, first, "split cells",
+                       "contact_fem splits each cell at its corners and needs every piece "
+                       "with a positive Jacobian: remesh (a flat or sliver element), or fix "
+                       "the node order.");
     }
   } // namespace
 
@@ -906,7 +907,7 @@ namespace contact_fem
                               "a directory" :
                               "not a regular file (a FIFO, socket or device)") +
                            "; expected a Gmsh .msh file."));
-    const Contents contents = scan_gmsh(file, dim == 3);
+    Contents contents = scan_gmsh(file, dim == 3, false);
     check_contents(contents, file, dim);
     if (dim == 3)
       check_hexahedra(contents, file);
@@ -919,6 +920,7 @@ namespace contact_fem
     std::string split_text; // the split mesh as a file for deal.II's reader
     if (needs_split(contents.elements, dim))
       {
+        contents = scan_gmsh(file, false, true);
         const SplitMesh split =
           split_mesh(contents.element_list, contents.node_coordinates, origin, dim);
         check_split_cells(split, contents, file, dim);
