@@ -113,6 +113,16 @@ namespace contact_fem
   }
 
   template <int dim>
+  Point<dim>
+  BoundaryManifold<dim>::closest_point(const Point<dim> &p) const
+  {
+    Tensor<1, dim> r = p - centre;
+    if (kind == "cylinder")
+      r -= (r * axis) * axis;
+    return p + (radius / r.norm() - 1.) * r;
+  }
+
+  template <int dim>
   std::unique_ptr<Manifold<dim>>
   BoundaryManifold<dim>::make_manifold() const
   {
@@ -197,6 +207,25 @@ namespace contact_fem
                                "); a wrong centre or radius would move the boundary "
                                "under refinement." + fitted_surface(m, points)));
       }
+  }
+
+  template <int dim>
+  void
+  place_new_vertices_on_manifolds(const std::vector<BoundaryManifold<dim>> &manifolds,
+                                  const unsigned int                        first_new_vertex,
+                                  Triangulation<dim>                       &coarse)
+  {
+    std::vector<bool> moved(coarse.n_vertices(), false);
+    for (const auto &cell : coarse.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        for (const auto &m : manifolds)
+          if (face->at_boundary() && face->boundary_id() == m.boundary_id)
+            for (unsigned int v = 0; v < face->n_vertices(); ++v)
+              if (const unsigned int i = face->vertex_index(v); i >= first_new_vertex && !moved[i])
+                {
+                  face->vertex(v) = m.closest_point(face->vertex(v));
+                  moved[i]        = true;
+                }
   }
 
   template <int dim>
@@ -292,6 +321,10 @@ namespace contact_fem
                                             const Triangulation<2> &, const std::string &);
   template void check_boundary_manifolds<3>(const std::vector<BoundaryManifold<3>> &,
                                             const Triangulation<3> &, const std::string &);
+  template void place_new_vertices_on_manifolds<2>(const std::vector<BoundaryManifold<2>> &,
+                                                   unsigned int, Triangulation<2> &);
+  template void place_new_vertices_on_manifolds<3>(const std::vector<BoundaryManifold<3>> &,
+                                                   unsigned int, Triangulation<3> &);
   template void set_manifold_ids<2>(const std::vector<BoundaryManifold<2>> &, bool,
                                     Triangulation<2> &);
   template void set_manifold_ids<3>(const std::vector<BoundaryManifold<3>> &, bool,

@@ -7,6 +7,7 @@
 #include <contact_fem/geometry/hexahedron_shape.h>
 #include <contact_fem/core/value_range.h>
 #include <contact_fem/geometry/mesh_file.h>
+#include <contact_fem/geometry/mesh_split.h>
 #include <contact_fem/geometry/model_frame.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/core/parameters.h>
@@ -112,6 +113,16 @@ namespace contact_fem
       std::vector<std::pair<unsigned int, unsigned int>> node_lines;
       /// $PhysicalNames: (dimension, tag, name).
       std::vector<PhysicalName> physical_names;
+      /// Every element with its physical tag, for the split of meshes with
+      /// triangles, tetrahedra or prisms (mesh_split.h); kept only when
+      /// asked for (a second scan: a large hexahedral mesh is not held
+      /// twice).
+      bool                     keep_elements = false;
+      std::vector<GmshElement> element_list;
+      /// "element 12, line 40": the first pyramid, for its message.
+      std::string first_pyramid;
+      /// MSH 4.x $Entities: the physical tag of (dimension, entity tag).
+      std::map<std::pair<int, int>, int> entity_physical;
       Point<3> lower = Point<3>(std::numeric_limits<double>::max(),
                                 std::numeric_limits<double>::max(),
                                 std::numeric_limits<double>::max());
@@ -326,6 +337,25 @@ namespace contact_fem
       contents.quadrilaterals.push_back(quadrilateral);
     }
 
+    /// Keeps the element of line @p v (nodes from @p first_node on) with
+    /// its physical tag, for the split (mesh_split.h).
+    void
+    record_element(const std::vector<double> &v, const int type, const std::size_t first_node,
+                   const int physical, const unsigned int line, Contents &contents)
+    {
+      const ElementType *t = find_element_type(type);
+      if (t != nullptr && t->dim == 3 && t->n_nodes == 5 && contents.first_pyramid.empty())
+        contents.first_pyramid =
+          "the first: element " + std::to_string(static_cast<long>(v[0])) + ", line " +
+          std::to_string(line);
+      if (t == nullptr || !contents.keep_elements)
+        return;
+      GmshElement element{type, static_cast<long>(v[0]), line, physical, {}};
+      for (unsigned int i = 0; i < t->n_nodes; ++i)
+        element.nodes.push_back(static_cast<long>(v[first_node + i]));
+      contents.element_list.push_back(std::move(element));
+    }
+
     /// Refuses an element of line @p v (nodes from @p first_node on) that
     /// names a node $Nodes does not list (deal.II's reader says only
     /// "vertex not found").
@@ -366,6 +396,9 @@ namespace contact_fem
             record_hexahedron(v, length - 8, reader.line_number, contents);
           if (type == gmsh_quadrilateral)
             record_quadrilateral(v, length - 4, reader.line_number, contents);
+          // MSH 1: 'tag type physical ...'; 2.x: the first tag is the physical one.
+          const int physical = static_cast<int>(section == "$ELM" ? v[2] : v[2] > 0 ? v[3] : 0);
+          record_element(v, type, before, physical, reader.line_number, contents);
           ++contents.elements[type];
         }
       reader.expect(section == "$ELM" ? "$ENDELM" : "$EndElements", section);
@@ -374,7 +407,7 @@ namespace contact_fem
     /// $Elements of MSH 4.x: entity blocks 'dim tag type count' (4.0: 'tag
     /// dim type count'), then 'tag nodes...' lines.
     void
-    scan_elements_v4(LineReader &reader, Contents &contents)
+    scan_elements_v4(LineReader &reader, const double version, Contents &contents)
     {
       const std::string section = "$Elements";
       const auto header = reader.numbers(section, "", "'blocks elements ...'", 2);
@@ -387,6 +420,11 @@ namespace contact_fem
                                             "an entity block header", 4);
           const int  type = static_cast<int>(block[2]);
           const auto n    = static_cast<std::size_t>(block[3]);
+          // 4.1: 'dim tag type count'; 4.0: 'tag dim type count'.
+          const auto entity = version >= 4.1 ? std::make_pair(int(block[0]), int(block[1])) :
+                                               std::make_pair(int(block[1]), int(block[0]));
+          const auto found    = contents.entity_physical.find(entity);
+          const int  physical = found == contents.entity_physical.end() ? 0 : found->second;
           for (std::size_t i = 0; i < n; ++i, ++seen)
             {
               const auto v = reader.numbers(section, count_of(seen, n_elements, "elements"),
@@ -400,6 +438,7 @@ namespace contact_fem
                 record_hexahedron(v, 1, reader.line_number, contents);
               if (type == gmsh_quadrilateral)
                 record_quadrilateral(v, 1, reader.line_number, contents);
+              record_element(v, type, 1, physical, reader.line_number, contents);
             }
           contents.elements[type] += n;
         }
@@ -418,6 +457,35 @@ namespace contact_fem
       while (Utilities::trim(line = reader.require(section, "")) != end)
         if (!line.empty() && line[0] == '$')
           reader.fail("expected " + end + ", found '" + Utilities::trim(line) + "'.");
+    }
+
+    /// $Entities of MSH 4.x: the physical tag of each point, curve,
+    /// surface and volume (one line each; the count of physical tags
+    /// follows the bounding box, or a point's coordinates in 4.1).
+    void
+    scan_entities(LineReader &reader, const double version, Contents &contents)
+    {
+      const std::string section = "$Entities";
+      const auto n = reader.numbers(section, "", "'points curves surfaces volumes'", 4);
+      for (int dim = 0; dim < 4; ++dim)
+        for (std::size_t i = 0; i < static_cast<std::size_t>(n[dim]); ++i)
+          {
+            const std::size_t at = dim == 0 && version >= 4.1 ? 4 : 7;
+            const auto v = reader.numbers(section, "", "an entity line", at + 1);
+            const auto n_physical = static_cast<std::size_t>(v[at]);
+            if (n_physical > 1)
+              reader.fail("the " + std::string(dim == 0 ? "point" : dim == 1 ? "curve" :
+                                               dim == 2 ? "surface" : "volume") + " " +
+                          std::to_string(static_cast<long>(v[0])) + " belongs to " +
+                          std::to_string(n_physical) + " physical groups; contact_fem takes "
+                          "one boundary or material id per entity: put it into one "
+                          "physical group only.");
+            if (v.size() < at + 1 + n_physical)
+              reader.fail("an entity line is cut short (truncated file?).");
+            contents.entity_physical[{dim, static_cast<int>(v[0])}] =
+              n_physical == 1 ? static_cast<int>(v[at + 1]) : 0;
+          }
+      reader.expect("$EndEntities", section);
     }
 
     /// $PhysicalNames: a count, then 'dimension tag "name"' lines.
@@ -476,13 +544,14 @@ namespace contact_fem
     }
 
     Contents
-    scan_gmsh(const std::string &file, const bool keep_hexahedra)
+    scan_gmsh(const std::string &file, const bool keep_hexahedra, const bool keep_elements)
     {
       LineReader   reader(file);
       std::string  section;
       const double version = read_format(reader, section);
       Contents     contents;
       contents.keep_hexahedra = keep_hexahedra;
+      contents.keep_elements  = keep_elements;
       std::string  line;
       while (!section.empty() || reader.next(line))
         {
@@ -501,12 +570,14 @@ namespace contact_fem
             }
           else if (section == "$Elements" || section == "$ELM")
             {
-              version >= 4. ? scan_elements_v4(reader, contents) :
+              version >= 4. ? scan_elements_v4(reader, version, contents) :
                               scan_elements_v2(reader, section, contents);
               contents.have_elements = true;
             }
           else if (section == "$PhysicalNames")
             scan_physical_names(reader, contents);
+          else if (section == "$Entities" && version >= 4.)
+            scan_entities(reader, version, contents);
           else
             skip_section(reader, section);
           section.clear();
@@ -549,8 +620,10 @@ namespace contact_fem
           const ElementType *t = find_element_type(type);
           AssertThrow(t != nullptr,
                       ExcMessage(prefix + "holds elements of Gmsh type " + std::to_string(type) +
-                                 ", which contact_fem does not read (quadrilaterals in 2D, "
-                                 "hexahedra in 3D, with their boundary lines or faces)."));
+                                 ", which contact_fem does not read (first-order "
+                                 "triangles and quadrilaterals in 2D; tetrahedra, prisms "
+                                 "and hexahedra in 3D; with their boundary lines or "
+                                 "faces)."));
           top = std::max(top, t->dim);
         }
       // deal.II's reader names only an unknown element type for these.
@@ -566,25 +639,21 @@ namespace contact_fem
                               top == 2 ? "volumes: gmsh -3; or, if this is a 2D (plane strain) "
                                          "mesh, run it with Dimension = 2)." :
                                          "volumes: gmsh -3).")));
-      const std::string simplices =
-        describe(contents, [&](const ElementType &t) { return t.simplex && t.dim == dim; });
-      AssertThrow(simplices.empty() || dim == 3,
-                  ExcMessage(prefix + "holds " + simplices +
-                             ": simplex cells are not supported; contact_fem needs "
-                             "quadrilaterals in 2D and hexahedra in 3D. In Gmsh: "
-                             "Mesh.RecombineAll = 1 (with Mesh.Algorithm = 8, or "
-                             "transfinite surfaces), or Mesh.SubdivisionAlgorithm = 1, "
-                             "which splits every triangle into quadrilaterals."));
-      AssertThrow(simplices.empty(),
-                  ExcMessage(prefix + "holds " + simplices +
-                             ": tetrahedra, prisms and pyramids are not supported; "
-                             "contact_fem needs hexahedra in 3D. In Gmsh: transfinite "
-                             "volumes with recombined surfaces (Transfinite Volume, "
-                             "Recombine Surface, or Mesh.RecombineAll = 1 with "
-                             "Mesh.Recombine3DAll = 1), the extrusion of a quadrilateral "
-                             "mesh (Extrude with Layers and Recombine), or "
-                             "Mesh.SubdivisionAlgorithm = 2, which splits every "
-                             "tetrahedron into hexahedra."));
+      const std::string pyramids =
+        describe(contents, [](const ElementType &t) { return t.n_nodes == 5 && t.dim == 3; });
+      AssertThrow(pyramids.empty(),
+                  ExcMessage(prefix + "holds " + pyramids + " (" + contents.first_pyramid +
+                             "): pyramids are not supported. contact_fem splits "
+                             "tetrahedra, prisms and hexahedra into hexahedra on reading, "
+                             "but a pyramid has no such split that matches its neighbours' "
+                             "(the region at its apex would be a cell with eight "
+                             "quadrilateral faces, no hexahedron). Gmsh makes pyramids where "
+                             "tetrahedra meet quadrilateral faces (a recombined surface, or "
+                             "a hexahedral or prism volume beside a tetrahedral one): mesh "
+                             "such volumes with tetrahedra only (no Recombine, "
+                             "Mesh.RecombineAll = 0, Mesh.Recombine3DAll = 0), or the whole "
+                             "model with hexahedra and prisms (Extrude with Layers and "
+                             "Recombine, transfinite volumes)."));
       const std::string high_order =
         describe(contents, [](const ElementType &t) { return !t.first_order; });
       AssertThrow(high_order.empty(),
@@ -607,6 +676,20 @@ namespace contact_fem
       std::ostringstream text;
       text << std::setprecision(8) << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
       return text.str();
+    }
+
+    /// Throws if @p n_bad cells are degenerate or inverted: the first
+    /// (@p first) named, the others counted, then what is needed.
+    void
+    refuse_bad_cells(const std::string &file, const std::size_t n_bad, const std::string &first,
+                     const std::string &cells, const std::string &need)
+    {
+      AssertThrow(n_bad == 0,
+                  ExcMessage(mesh_key + ": '" + file + "', " + first +
+                             (n_bad > 1 ? "; " + std::to_string(n_bad - 1) + " more " + cells +
+                                            " are degenerate or inverted" :
+                                          "") +
+                             ". " + need));
     }
 
     /// Refuses hexahedra that are no valid cells: deal.II's reader would
@@ -658,13 +741,9 @@ namespace contact_fem
                  << "the opposite face in the same turn)";
           first = what.str();
         }
-      AssertThrow(n_bad == 0,
-                  ExcMessage(mesh_key + ": '" + file + "', " + first +
-                             (n_bad > 1 ? "; " + std::to_string(n_bad - 1) +
-                                            " more hexahedra are degenerate or inverted" :
-                                          "") +
-                             ". contact_fem needs hexahedra with a positive Jacobian at "
-                             "every corner: remesh, or fix the node order."));
+      refuse_bad_cells(file, n_bad, first, "hexahedra",
+                       "contact_fem needs hexahedra with a positive Jacobian at every "
+                       "corner: remesh, or fix the node order.");
     }
 
     /// What is wrong with the quadrilateral @p x (Gmsh order: around the
@@ -721,13 +800,58 @@ namespace contact_fem
             first = "line " + std::to_string(quadrilateral.line) + ": quadrilateral " +
                     std::to_string(quadrilateral.tag) + " " + problem;
         }
-      AssertThrow(n_bad == 0,
-                  ExcMessage(mesh_key + ": '" + file + "', " + first +
-                             (n_bad > 1 ? "; " + std::to_string(n_bad - 1) +
-                                            " more quadrilaterals are degenerate or inverted" :
-                                          "") +
-                             ". contact_fem needs quadrilaterals with a positive Jacobian "
-                             "at every corner: remesh, or fix the node order."));
+      refuse_bad_cells(file, n_bad, first, "quadrilaterals",
+                       "contact_fem needs quadrilaterals with a positive Jacobian at every "
+                       "corner: remesh, or fix the node order.");
+    }
+
+    /// Refuses a split mesh (mesh_split.h) with a degenerate or inverted
+    /// piece, naming the element of the file it comes from: the pieces of a
+    /// valid element are valid (those of a triangle or tetrahedron are its
+    /// affine images), so this finds flat simplices and twisted prisms.
+    void
+    check_split_cells(const SplitMesh &split, const Contents &contents, const std::string &file,
+                      const unsigned int dim)
+    {
+      std::size_t n_bad = 0;
+      std::string first;
+      for (const auto &piece : split.cells)
+        {
+          std::string problem;
+          if (dim == 3)
+            {
+              std::array<Point<3>, 8> x;
+              for (unsigned int i = 0; i < 8; ++i)
+                x[i] = split.points[piece.vertices[i]];
+              const HexahedronShape shape = check_hexahedron(x).shape;
+              if (shape == HexahedronShape::collapsed_edge || shape == HexahedronShape::flat)
+                problem = "is degenerate (no volume there)";
+              else if (shape == HexahedronShape::twisted)
+                problem = "is inverted (a twisted, self-intersecting cell)";
+            }
+          else
+            {
+              std::array<Point<3>, 4> x;
+              for (unsigned int i = 0; i < 4; ++i)
+                x[i] = split.points[piece.vertices[i]];
+              if (!quadrilateral_problem(x, std::array<long, 4>{}).empty())
+                problem = "is degenerate or inverted";
+            }
+          if (problem.empty() || n_bad++ > 0)
+            continue;
+          const GmshElement &e    = contents.element_list[piece.parent];
+          const long         node = e.nodes[piece.corner];
+          first = "line " + std::to_string(e.line) + ": " +
+                  find_element_type(e.type)->singular + " " + std::to_string(e.tag) + " " +
+                  problem + " at its node " + std::to_string(node) + " " +
+                  coordinates_3d(contents.node_coordinates.at(node)) +
+                  " (its corner piece of the split into " +
+                  (dim == 2 ? "quadrilaterals" : "hexahedra") + ")";
+        }
+      refuse_bad_cells(file, n_bad, first, "split cells",
+                       "contact_fem splits each cell at its corners and needs every piece "
+                       "with a positive Jacobian: remesh (a flat or sliver element), or fix "
+                       "the node order.");
     }
   } // namespace
 
@@ -783,7 +907,7 @@ namespace contact_fem
                               "a directory" :
                               "not a regular file (a FIFO, socket or device)") +
                            "; expected a Gmsh .msh file."));
-    const Contents contents = scan_gmsh(file, dim == 3);
+    Contents contents = scan_gmsh(file, dim == 3, false);
     check_contents(contents, file, dim);
     if (dim == 3)
       check_hexahedra(contents, file);
@@ -793,11 +917,27 @@ namespace contact_fem
     info.physical_names   = contents.physical_names;
     const Point<3> origin = info.frame_origin =
       choose_frame_origin(contents.lower, contents.upper, dim);
+    std::string split_text; // the split mesh as a file for deal.II's reader
+    if (needs_split(contents.elements, dim))
+      {
+        contents = scan_gmsh(file, false, true);
+        const SplitMesh split =
+          split_mesh(contents.element_list, contents.node_coordinates, origin, dim);
+        check_split_cells(split, contents, file, dim);
+        info.first_new_vertex = split.n_file_nodes;
+        info.split_note       = split_summary(split, dim);
+        split_text            = msh22_text(split);
+      }
     GridIn<dim>    grid_in;
     grid_in.attach_triangulation(coarse);
     try
       {
-        if (origin.norm_square() > 0.)
+        if (!split_text.empty())
+          {
+            std::istringstream in(split_text);
+            grid_in.read_msh(in);
+          }
+        else if (origin.norm_square() > 0.)
           {
             std::istringstream in(moved_copy(file, contents, origin));
             grid_in.read_msh(in);

@@ -102,11 +102,16 @@ namespace contact_fem
                       "that takes one. A mesh far from the origin (more than 10 "
                       "times its size) is computed moved next to it; the input "
                       "stays in the file's coordinates. Cells: first-order "
-                      "quadrilaterals (hexahedra in 3D). Read and checked with "
-                      "the input (also by --validate): binary, truncated, "
-                      "simplex or wrong-dimension files and bodies cut by "
-                      "unmerged nodes are refused with a message; bodies in "
-                      "contact keep their own nodes (different material ids).");
+                      "quadrilaterals and triangles (2D), hexahedra, tetrahedra "
+                      "and prisms (3D); a mesh with triangles, tetrahedra or "
+                      "prisms is split on reading, every cell into "
+                      "quadrilaterals or hexahedra at its corners (README, "
+                      "Meshes). Read and checked with the input (also by "
+                      "--validate): binary, truncated, pyramid, second-order "
+                      "or wrong-dimension files, degenerate cells and bodies "
+                      "cut by unmerged nodes are refused with a message; "
+                      "bodies in contact keep their own nodes (different "
+                      "material ids).");
     prm.declare_entry("Distortion",
                       "0",
                       Patterns::Double(0., 0.45),
@@ -142,7 +147,8 @@ namespace contact_fem
                       "the new vertices of these boundaries on their surface instead "
                       "of on the chords of the coarse mesh, the interior of every "
                       "body with such a boundary follows by transfinite "
-                      "interpolation (unless Distortion > 0), and Q1 runs on a "
+                      "interpolation (unless Distortion > 0 or the mesh was split "
+                      "into quadrilaterals or hexahedra on reading), and Q1 runs on a "
                       "quadratic mapping (Finite element/Mapping degree = auto). "
                       "Every vertex of these boundaries must lie on its surface "
                       "within 1e-4 R. Empty: the faces of the file stay straight, "
@@ -240,6 +246,7 @@ namespace contact_fem
     prm.enter_subsection("Geometry");
     frame              = ModelFrame<dim>();
     message_origin     = {};
+    mesh_note.clear();
     type               = prm.get("Type");
     mesh_file          = prm.get("Mesh file");
     global_refinements = prm.get_integer("Global refinements");
@@ -382,18 +389,29 @@ namespace contact_fem
       }
     for (auto &m : manifolds)
       m.centre = frame.to_model(m.centre);
+    place_new_vertices_on_manifolds(manifolds, info.first_new_vertex, *coarse);
+    mesh_note = info.split_note;
     check_unmerged_vertices(*coarse, mesh_file);
     check_boundary_manifolds(manifolds, *coarse, key);
-    // Random vertex moves would invalidate the transfinite chart of the
-    // coarse cells (as for the Hertz disc): a distorted mesh keeps straight
-    // interior lines.
-    set_manifold_ids(manifolds, distortion == 0., *coarse);
-    check_refinement_on_manifolds(manifolds, distortion == 0., *coarse, key);
+    set_manifold_ids(manifolds, curved_interior(), *coarse);
+    check_refinement_on_manifolds(manifolds, curved_interior(), *coarse, key);
     std::vector<types::boundary_id> with_manifold;
     for (const auto &m : manifolds)
       with_manifold.push_back(m.boundary_id);
     polygonal_boundaries = find_polygonal_boundaries(*coarse, with_manifold);
     coarse_mesh          = coarse;
+  }
+
+  template <int dim>
+  bool
+  Scene<dim>::curved_interior() const
+  {
+    // Random vertex moves would invalidate the transfinite chart of the
+    // coarse cells (as for the Hertz disc): a distorted mesh keeps straight
+    // interior lines. So does a split mesh: the corner pieces of
+    // tetrahedra touch a curved surface with an edge or a corner only, in
+    // great numbers, and the chart's pull-back fails for some of them.
+    return distortion == 0. && mesh_note.empty();
   }
 
   template <int dim>
@@ -404,7 +422,7 @@ namespace contact_fem
                                         "create_mesh() uses it once."));
     tria.copy_triangulation(*coarse_mesh);
     coarse_mesh.reset();
-    attach_manifolds(manifolds, distortion == 0., tria);
+    attach_manifolds(manifolds, curved_interior(), tria);
   }
 
   template <int dim>

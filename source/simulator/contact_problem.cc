@@ -1195,6 +1195,8 @@ namespace contact_fem
         material_ids.insert(id);
       Scene<dim>::check_mesh(triangulation, material_ids);
     }
+    if (!scene.mesh_note.empty())
+      pcout << "Mesh file: " << scene.mesh_note << std::endl;
     // Refining a polygon of a curve without its manifold moves p_max away
     // from the converged value with every level: say so once, up front.
     const bool refines = scene.global_refinements > 0 || !scene.refinement_boxes.empty() ||

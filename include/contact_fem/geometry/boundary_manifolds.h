@@ -39,6 +39,10 @@ namespace contact_fem
     double
     distance_from_surface(const Point<dim> &p) const;
 
+    /// The point of the surface nearest @p p (along the radius).
+    Point<dim>
+    closest_point(const Point<dim> &p) const;
+
     /// The deal.II manifold: PolarManifold (circle, as the built-in Hertz
     /// disc), SphericalManifold or CylindricalManifold.
     std::unique_ptr<Manifold<dim>>
@@ -68,6 +72,19 @@ namespace contact_fem
   check_boundary_manifolds(const std::vector<BoundaryManifold<dim>> &manifolds,
                            const Triangulation<dim>                 &coarse,
                            const std::string                        &key);
+
+  /**
+   * Moves the vertices of @p coarse from @p first_new_vertex on (those that
+   * the split of a mesh file made: MeshFileInfo) that lie on a boundary
+   * face of an entry of @p manifolds onto its surface: the split puts them
+   * on the straight faces between the file's nodes, inside the curve by
+   * the sag of the chord.
+   */
+  template <int dim>
+  void
+  place_new_vertices_on_manifolds(const std::vector<BoundaryManifold<dim>> &manifolds,
+                                  unsigned int                              first_new_vertex,
+                                  Triangulation<dim>                       &coarse);
 
   /**
    * Sets the manifold ids of @p coarse: the faces of each boundary id get

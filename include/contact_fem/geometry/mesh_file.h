@@ -29,19 +29,30 @@ namespace contact_fem
     /// (choose_frame_origin(); zero for a mesh near the origin).
     Point<3> frame_origin;
     std::vector<PhysicalName> physical_names;
+    /// A mesh with triangles, tetrahedra or prisms is split into
+    /// quadrilaterals or hexahedra (mesh_split.h): what was split ("24
+    /// tetrahedra split into 96 hexahedra"), and the first vertex the split
+    /// made (the vertices before it are the file's nodes). Empty and
+    /// invalid for a mesh read as it is.
+    std::string  split_note;
+    unsigned int first_new_vertex = numbers::invalid_unsigned_int;
   };
 
   /**
    * Reads the Gmsh file @p file into @p coarse after a scan of its text:
    * ASCII (MSH 1, 2.x, 4.x), complete (every section closed, the announced
-   * numbers of nodes and elements present), first-order quadrilaterals
-   * (dim = 2) or hexahedra (dim = 3) as cells, in 2D nodes in one plane
-   * z = const, in 3D hexahedra with a positive Jacobian at every corner (or
-   * at none: the opposite turn, which deal.II reorders). Each finding throws
-   * with a message naming the file (and the line, the element) and the
-   * fix; deal.II's reader would report a binary file as "The string <\x01",
-   * a 3D mesh as an unknown element type, accept triangles only to crash
-   * later in p4est, and take collapsed or twisted hexahedra.
+   * numbers of nodes and elements present), first-order quadrilaterals or
+   * triangles (dim = 2), hexahedra, tetrahedra or prisms (dim = 3) as
+   * cells, no pyramids, in 2D nodes in one plane z = const, cells with a
+   * positive Jacobian at every corner (or at none: the opposite turn,
+   * which deal.II reorders). Each finding throws with a message naming
+   * the file (and the line, the element) and the fix; deal.II's reader
+   * would report a binary file as "The string <\x01", a 3D mesh as an
+   * unknown element type, and take collapsed or twisted hexahedra.
+   *
+   * A mesh with triangles, tetrahedra or prisms is split into
+   * quadrilaterals or hexahedra (mesh_split.h); the returned split_note
+   * and first_new_vertex say so.
    *
    * A mesh far from the origin is read moved next to it (ModelFrame): the
    * returned frame_origin says by how much.

@@ -167,6 +167,10 @@ namespace contact_fem
     /// replace the ids they stand for in @p prm (PhysicalNames).
     void
     read_mesh_file(ParameterHandler &prm);
+    /// Whether the cells of a body with a curved boundary follow it inside
+    /// (a transfinite interpolation) or keep straight interior lines.
+    bool
+    curved_interior() const;
     /// The mesh file's coarse mesh with its manifolds, into @p tria.
     void
     create_from_mesh_file(parallel::distributed::Triangulation<dim> &tria) const;
@@ -192,6 +196,9 @@ namespace contact_fem
     /// Boundaries of the mesh file that look like polygons of a curve and
     /// have no manifold.
     std::vector<PolygonalBoundary<dim>> polygonal_boundaries;
+    /// What the reader split ("24 tetrahedra split into 96 hexahedra"), or
+    /// empty: the mesh file's cells were read as they are.
+    std::string mesh_note;
 
     struct Hertz
     {
