@@ -4,6 +4,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <contact_fem/postprocess/forces.h>
+#include <contact_fem/postprocess/pressure_profile.h>
 #include <contact_fem/simulator/contact_problem.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/postprocess/output_files.h>
@@ -318,47 +319,22 @@ namespace contact_fem
   void
   ContactProblem<dim>::write_pressure_profile() const
   {
+    // The latest cycle's as pressure_profile.csv, and each cycle's.
+    const std::string latest = output.directory + "/pressure_profile.csv";
+    const std::string of_cycle =
+      output.directory + "/pressure_profile_cycle_" + std::to_string(cycle) + ".csv";
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      {
+        check_written(latest, true);
+        check_written(of_cycle, true);
+        return;
+      }
     // The exact pressure where the analytical solution gives one (else 0).
     const std::function<double(const Point<dim> &)> exact =
       comparison ? comparison->exact_pressure(contact_state()) : nullptr;
-    const std::string path = output.directory + "/pressure_profile.csv";
-    if (Utilities::MPI::this_mpi_process(comm) != 0)
-      {
-        check_written(path, true);
-        return;
-      }
-    // The formulation's own nodal fields (friction: tangential traction,
-    // slip increment of the last load step, stick flag) follow.
-    const auto fields = contact->nodal_fields(*interface);
-    std::vector<std::vector<double>> rows;
-    for (const auto &s : interface->slave_nodes)
-      if (s.paired)
-        {
-          // 2D: x only; 3D: the whole position (the profile is a surface),
-          // in the user's coordinates.
-          const Point<dim> position = interface->nodes[s.node].reference +
-                                      interface->displacement(s.node, interface_displacement);
-          rows.emplace_back();
-          for (unsigned int d = 0; d < (dim == 2 ? 1 : dim); ++d)
-            rows.back().push_back(scene.frame.to_user(position)[d]);
-          rows.back().insert(rows.back().end(),
-                             {contact->normal_pressure(s.node),
-                              exact ? exact(position) : 0.,
-                              interface->gap(s, interface_displacement),
-                              contact->is_active(s.node) ? 1. : 0.});
-          for (const auto &field : fields)
-            rows.back().push_back(field.values[s.node]);
-        }
-    std::sort(rows.begin(), rows.end());
-    std::ostringstream out;
-    out << (dim == 2 ? "x" : "x,y,z") << ",pressure,hertz_pressure,gap,active";
-    for (const auto &field : fields)
-      out << "," << field.name;
-    out << "\n" << std::setprecision(10);
-    for (const auto &r : rows)
-      for (unsigned int k = 0; k < r.size(); ++k)
-        out << r[k] << (k + 1 < r.size() ? ',' : '\n');
-    throw_if_unwritten(path, write_file_atomically(path, out.str()), comm);
+    const std::string csv = pressure_profile_csv(contact_state(), scene.frame, exact);
+    throw_if_unwritten(latest, write_file_atomically(latest, csv), comm);
+    throw_if_unwritten(of_cycle, write_file_atomically(of_cycle, csv), comm);
   }
 
   template <int dim>

@@ -496,9 +496,12 @@ namespace contact_fem
                       "Before any work the run removes the files of an earlier "
                       "run from it (only the names contact_fem writes: "
                       "summary.json, log.txt, convergence.csv, "
-                      "pressure_profile.csv, forces.csv, solution.pvd, "
+                      "pressure_profile.csv, pressure_profile_cycle_*.csv, "
+                      "forces.csv, solution.pvd, "
                       "solution_cycle_*.pvd, solution_*.pvtu/vtu, "
-                      "error_indicators.pvd, error_indicators_*.pvtu/vtu) and "
+                      "contact_surface.pvd, contact_surface_cycle_*.pvd, "
+                      "contact_surface_*.vtu, error_indicators.pvd, "
+                      "error_indicators_*.pvtu/vtu; doc/outputs.md) and "
                       "checks that it can write "
                       "there. Must not be named 'output' in tests.");
     prm.enter_subsection("Output");

@@ -9,7 +9,8 @@ show the pressure 2 and the traction (0, 2) on the slave to 1e-10, the
 traction integrated over the surface's cells (exact for a uniform traction
 on straight cells) must equal the pair force of forces.csv to 1e-10, and
 solution.pvd and contact_surface.pvd must list the two load steps at their
-load times 0.5 and 1.
+load times 0.5 and 1; pressure_profile.csv must hold the same slave nodes
+at the same current and reference positions.
 """
 import csv
 import os
@@ -20,7 +21,7 @@ import xml.etree.ElementTree as ET
 contact_fem, scene = sys.argv[1:3]
 env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 run = subprocess.run([contact_fem, scene, "--set", "Output directory=results",
-                      "--set", "Output/Write VTU=true",
+                      "--set", "Output/Write VTU=true", "--set", "Output/Write pressure profile=true",
                       "--set", "Load stepping/Number of load steps=2"],
                      env=env, capture_output=True, text=True)
 if run.returncode != 0:
@@ -92,6 +93,30 @@ pair = [float(last["pair_3_4_normal_x"]) + float(last["pair_3_4_tangential_x"]),
 for d in range(2):
     check(abs(force[d] - pair[d]) <= 1e-10 * max(1.0, abs(pair[1])),
           f"integrated traction {force} differs from the pair force {pair} of forces.csv")
+
+# pressure_profile.csv (the latest cycle's, equal to pressure_profile_cycle_0.csv):
+# the same slave nodes, at the same current and reference positions, with
+# the pressure 2.
+with open(os.path.join("results", "pressure_profile.csv")) as f:
+    profile = list(csv.DictReader(f))
+with open(os.path.join("results", "pressure_profile_cycle_0.csv")) as f:
+    check(list(csv.DictReader(f)) == profile, "pressure_profile_cycle_0.csv differs from pressure_profile.csv")
+check(len(profile) == n_points, f"pressure_profile.csv: {len(profile)} rows, {n_points} slave nodes")
+current = [[x[d] + u[d] for d in range(2)] for x, u in zip(points, fields["displacement"])]
+reference = [x[:2] for x in points]
+
+
+def near(p, candidates):
+    return min(max(abs(p[d] - q[d]) for d in range(2)) for q in candidates) < 1e-9
+
+
+for row in profile:
+    here = [float(row["x"]), float(row["y"])]
+    there = [float(row["reference_x"]), float(row["reference_y"])]
+    check(near(here, current), f"profile row at {here}: no slave node of the VTU there")
+    check(near(there, reference), f"profile row at reference {there}: no slave node there")
+    check(abs(float(row["pressure"]) - 2.0) < 2e-10 and row["pair"] == "0",
+          f"profile row at {here}: pressure {row['pressure']}, pair {row['pair']}")
 
 if failures:
     print("\n".join(failures))
