@@ -1956,6 +1956,7 @@ namespace contact_fem
                             n_steps);
     LoadPath           path;
     Json               steps = Json::array();
+    Timer              path_timer;
     if (comparison)
       comparison->start_load_path();
     TrilinosWrappers::MPI::Vector saved_solution = solution;
@@ -2014,6 +2015,20 @@ namespace contact_fem
           contact->accept_load_step(*interface, interface_displacement);
         if (control.accept())
           pcout << "  Growing the step to " << control.step_size() << std::endl;
+        // Progress, with the wall times (which tests leave out): the
+        // remainder is estimated from the mean time per load step so far.
+        if (output.print_timing)
+          {
+            const unsigned int left    = control.n_steps_left();
+            const double       elapsed = path_timer.wall_time();
+            pcout << "  Progress: load step " << path.n_solved << " of " << path.n_solved + left
+                  << " of cycle " << cycle << " done, " << significant(elapsed, 3)
+                  << " s in this cycle";
+            if (left > 0)
+              pcout << ", about " << significant(elapsed / path.n_solved * left, 2)
+                    << " s to go";
+            pcout << std::endl;
+          }
         saved_solution = solution;
         if (contact)
           {

@@ -1,9 +1,18 @@
 #include <contact_fem/solvers/load_step_control.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace contact_fem
 {
+  unsigned int
+  LoadStepControl::n_steps_left() const
+  {
+    // A remainder below a millionth of a step is the round-off of the sum.
+    const double left = (parameters.end_time - t_done) / step;
+    return left <= 1e-6 ? 0 : static_cast<unsigned int>(std::ceil(left - 1e-6));
+  }
+
   LoadStepControl::LoadStepControl(const LoadStepping &parameters,
                                    const double        start_time,
                                    const unsigned int  n_steps)

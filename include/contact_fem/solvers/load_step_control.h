@@ -54,6 +54,11 @@ namespace contact_fem
       return step;
     }
 
+    /// The steps left to the end time at the present step size (after
+    /// accept(): those after the converged one).
+    unsigned int
+    n_steps_left() const;
+
     /// Splits in a row so far.
     unsigned int
     n_splits() const
