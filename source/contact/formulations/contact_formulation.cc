@@ -81,6 +81,7 @@ namespace contact_fem
   void
   ContactFormulation<dim>::assemble(const ContactInterface<dim> &,
                                     const AffineConstraints<double> &,
+                                    const AffineConstraints<double> &,
                                     const IndexSet &,
                                     TrilinosWrappers::SparseMatrix &,
                                     TrilinosWrappers::MPI::Vector &) const

@@ -191,11 +191,12 @@ namespace contact_fem
   void
   PenaltyFrictional<dim>::assemble(const ContactInterface<dim>    &interface,
                                    const AffineConstraints<double> &constraints,
+                                   const AffineConstraints<double> &,
                                    const IndexSet                  &owned,
                                    TrilinosWrappers::SparseMatrix  &matrix,
                                    TrilinosWrappers::MPI::Vector   &rhs) const
   {
-    PenaltyFrictionless<dim>::assemble(interface, constraints, owned, matrix, rhs);
+    PenaltyFrictionless<dim>::assemble(interface, constraints, constraints, owned, matrix, rhs);
     // The tangential force D_j t_j grad xi_j with t_j linear in u:
     // stick: t = t_n - eps_t grad xi . (u - u_n);
     // slip:  t = sigma (T(p_k) + T'(p_k) (p(u) - p_k)), p(u) = -eps_n (g(0) +

@@ -89,8 +89,9 @@ namespace contact_fem
 
     /// The normal penalty of the base class plus the stick or slip terms.
     void
-    assemble(const ContactInterface<dim>    &interface,
+    assemble(const ContactInterface<dim>     &interface,
              const AffineConstraints<double> &constraints,
+             const AffineConstraints<double> &test_constraints,
              const IndexSet                  &owned,
              TrilinosWrappers::SparseMatrix  &matrix,
              TrilinosWrappers::MPI::Vector   &rhs) const override;
