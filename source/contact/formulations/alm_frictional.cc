@@ -452,12 +452,16 @@ namespace contact_fem
         dofs.push_back(interface.nodes[s.node].dofs[d]);
         gradient.push_back(e[d]);
       }
+    // Masters at round-off of M drop out, as from the constraint lines
+    // (ConstraintLine), whose couplings the sparsity pattern holds.
+    constexpr double negligible = 1e-14;
     for (const auto &[m, value] : s.M)
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          dofs.push_back(interface.nodes[m].dofs[d]);
-          gradient.push_back(-value / s.D * e[d]);
-        }
+      if (std::abs(value / s.D) >= negligible)
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            dofs.push_back(interface.nodes[m].dofs[d]);
+            gradient.push_back(-value / s.D * e[d]);
+          }
     const std::vector<double> zero(interface.dofs().size(), 0.);
     const double              old_slip =
       e * weighted_relative_displacement(interface, s, zero, converged_displacement);
@@ -652,7 +656,7 @@ namespace contact_fem
         return;
       }
     out << "    slip nodes off the slip bound: " << value_or_ok(off_bound / largest_bound, 1e-8)
-        << " (|t - sigma T(p)| / max T)" << std::endl
+        << (dim == 2 ? " (|t - sigma T(p)| / max T)" : " (|t - T(p) d| / max T)") << std::endl
         << "    stick nodes outside the cone:  "
         << value_or_ok(std::max(outside, 0.) / largest_bound, 1e-8) << " ((|t| - T(p)) / max T)"
         << std::endl;
