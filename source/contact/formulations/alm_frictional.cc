@@ -326,6 +326,8 @@ namespace contact_fem
                                       AffineConstraints<double>   &constraints,
                                       const bool                   all_candidates) const
   {
+    if (!all_candidates)
+      last_fixed_values = fixed_values;
     // For the sparsity: the stick lines couple a slave node with every
     // component of its masters (the gap line drops the components normal
     // to n), a superset of the slip lines' couplings.
@@ -452,19 +454,30 @@ namespace contact_fem
         dofs.push_back(interface.nodes[s.node].dofs[d]);
         gradient.push_back(e[d]);
       }
-    // Masters at round-off of M drop out, as from the constraint lines
-    // (ConstraintLine), whose couplings the sparsity pattern holds.
+    // Masters at round-off of M drop out, and Dirichlet components move
+    // their value to the right-hand side, as in the constraint lines
+    // (ConstraintLine), whose couplings the sparsity pattern holds (on
+    // another rank's part of the master the constraints do not know them).
     constexpr double negligible = 1e-14;
+    double           fixed_slip = 0.;
     for (const auto &[m, value] : s.M)
       if (std::abs(value / s.D) >= negligible)
         for (unsigned int d = 0; d < dim; ++d)
           {
-            dofs.push_back(interface.nodes[m].dofs[d]);
+            const auto &master = interface.nodes[m];
+            if (master.fixed[d])
+              {
+                fixed_slip -= value / s.D * e[d] *
+                              last_fixed_values[interface.position(master.dofs[d])];
+                continue;
+              }
+            dofs.push_back(master.dofs[d]);
             gradient.push_back(-value / s.D * e[d]);
           }
     const std::vector<double> zero(interface.dofs().size(), 0.);
     const double              old_slip =
-      e * weighted_relative_displacement(interface, s, zero, converged_displacement);
+      e * weighted_relative_displacement(interface, s, zero, converged_displacement) -
+      fixed_slip;
     const double       factor = s.D * cone_stiffness[s.node];
     const unsigned int size   = dofs.size();
     FullMatrix<double> local_matrix(size, size);
