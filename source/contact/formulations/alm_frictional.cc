@@ -51,14 +51,9 @@ namespace contact_fem
   {
     const TangentialVector<dim> trial = tangential[s.node] - this->penalty[s.pair] * xi;
     const double                size  = magnitude<dim>(trial);
-    // The direction of the trial traction (2D: its sign, + for zero; 3D:
-    // the first tangent for zero, where only a law without friction slips
-    // and the direction changes nothing).
-    // (Divided component by component: Tensor / double multiplies by the
-    // reciprocal, which leaves a 2D sign 1 - 1 ulp.)
-    TangentialVector<dim> direction;
-    for (unsigned int k = 0; k < dim - 1; ++k)
-      direction[k] = size > 0. ? trial[k] / size : (k == 0 ? 1. : 0.);
+    // For zero only a law without friction slips: its direction changes
+    // nothing.
+    const TangentialVector<dim> direction = unit_direction<dim>(trial, size);
     if (pure_slip)
       return direction;
     const double bound = laws[s.pair]->threshold(std::max(augmented_pressure, 0.));
@@ -561,12 +556,9 @@ namespace contact_fem
         const TangentialVector<dim> old        = sets.direction[s.node];
         active[s.node]                         = true;
         set_direction(interface, s, augmented, u);
-        // Under a law without friction the direction changes nothing; in 3D
-        // it turns continuously (linearised), so only stick <-> slip counts.
-        const TangentialVector<dim> &now = sets.direction[s.node];
-        const bool                   changed =
-          dim == 2 ? now != old : (now.norm_square() == 0.) != (old.norm_square() == 0.);
-        if (was_active && changed && !frictionless_law(s))
+        // Under a law without friction the direction changes nothing.
+        if (was_active && stick_slip_changed<dim>(old, sets.direction[s.node]) &&
+            !frictionless_law(s))
           {
             ++changes;
             ++last_stick_slip_changes;

@@ -112,11 +112,7 @@ namespace contact_fem
   {
     const TangentialVector<dim> trial = trial_traction(s, xi);
     const double                size  = magnitude<dim>(trial);
-    // The direction of the trial traction (2D: its sign, + for zero),
-    // divided component by component (an exact sign in 2D).
-    TangentialVector<dim> direction;
-    for (unsigned int k = 0; k < dim - 1; ++k)
-      direction[k] = size > 0. ? trial[k] / size : (k == 0 ? 1. : 0.);
+    const TangentialVector<dim> direction = unit_direction<dim>(trial, size);
     if (pure_slip || frictionless_law(s))
       return direction;
     // A node with neither traction nor slip (it just touched) sticks.
@@ -331,11 +327,9 @@ namespace contact_fem
         if (was_active[s.node] && old.norm_square() != 0. && direction * old < 0. &&
             !pure_slip && !frictionless_law(s))
           direction = TangentialVector<dim>();
-        // Under a law without friction the direction changes nothing; in 3D
-        // it turns continuously (linearised), so only stick <-> slip counts.
-        const bool changed = dim == 2 ? direction != old :
-                                        (direction.norm_square() == 0.) != (old.norm_square() == 0.);
-        if (was_active[s.node] && changed && !frictionless_law(s))
+        // Under a law without friction the direction changes nothing.
+        if (was_active[s.node] && stick_slip_changed<dim>(old, direction) &&
+            !frictionless_law(s))
           {
             ++changes;
             ++last_stick_slip_changes;

@@ -132,6 +132,33 @@ namespace contact_fem
       return t.norm();
   }
 
+  /// The unit direction of the trial traction @p trial of length @p size
+  /// (2D: its sign, + for zero; 3D: the first tangent for zero), divided
+  /// component by component: Tensor / double multiplies by the reciprocal,
+  /// which leaves a 2D sign 1 - 1 ulp.
+  template <int dim>
+  TangentialVector<dim>
+  unit_direction(const TangentialVector<dim> &trial, const double size)
+  {
+    TangentialVector<dim> direction;
+    for (unsigned int k = 0; k < dim - 1; ++k)
+      direction[k] = size > 0. ? trial[k] / size : (k == 0 ? 1. : 0.);
+    return direction;
+  }
+
+  /// Whether a node's stick/slip state changed from @p old to @p now: in
+  /// 2D any change of the sign, in 3D only stick <-> slip (the direction
+  /// turns continuously and the Newton iteration linearises it).
+  template <int dim>
+  bool
+  stick_slip_changed(const TangentialVector<dim> &old, const TangentialVector<dim> &now)
+  {
+    if constexpr (dim == 2)
+      return now != old;
+    else
+      return (now.norm_square() == 0.) != (old.norm_square() == 0.);
+  }
+
   /**
    * The stick/slip sets of the interface nodes: per node the slip direction
    * of the trial traction (zero = stick; in 2D +1 / -1), meaningful for
