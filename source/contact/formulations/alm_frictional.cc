@@ -166,14 +166,18 @@ namespace contact_fem
   void
   AlmFrictional<dim>::note_pressure_dependent_slip(const ContactInterface<dim> &interface)
   {
-    // In 2D with T' = 0 (Tresca, mu = 0) w = tau: the symmetric assembly
-    // serves. In 3D the test plane of a frictional slip node carries the
-    // cone's curvature term (assemble()), whatever T'.
+    // Only mu = 0 (w = tau, frame = slave normal) may use the symmetric
+    // assembly: its test space is the trial space. Under Tresca the trial
+    // space is normal to the slave normal, the slip condition to the frame
+    // (interface) normal; tested with the trial space it would impose
+    // t = T + p tan(angle between them) on curved pairs, which the residual
+    // never accepts (2D Tresca on prm/hertz_frictional.prm stalled). In 3D
+    // the test plane also carries the cone term (assemble()).
     pressure_dependent_slip = false;
     for (const auto &s : interface.slave_nodes)
       if (sets.slips(s.node, this->active) && carries_friction(interface, s) &&
           (laws[s.pair]->threshold_derivative(this->pressure[s.node]) != 0. ||
-           (dim == 3 && !frictionless_law(s))))
+           (!frictionless_law(s))))
         pressure_dependent_slip = true;
   }
 

@@ -36,8 +36,9 @@ namespace contact_fem
    *   frictionless) and the slip condition, linearised in p consistently:
    *   (tau + sigma T'(p) n) . lambda_j = sigma (T(p) - T'(p) p). Its test
    *   functions move along w = tau + sigma T' n instead of tau, and the
-   *   known part sigma (T - T' p) tau of its traction is a load. With
-   *   Coulomb (T' = mu > 0) the system is then unsymmetric (symmetric()).
+   *   known part sigma (T - T' p) tau of its traction is a load. The
+   *   system is then unsymmetric (symmetric()), Tresca's too (its test
+   *   space follows the interface normal, the trial space the slave's).
    * lambda_j is recovered from the residual of the slave node, r_j = D_j
    * lambda_j. In 2D the slip direction is a sign, so its linearisation
    * vanishes. In 3D the slip condition t = T(p) d(t - c xi) has two
@@ -242,9 +243,8 @@ namespace contact_fem
     using Base::sets;
     using Base::tangential;
 
-    /// Whether a slip node's bound depends on its pressure (Coulomb), or in
-    /// 3D whether any node slips under a law with friction: only then do
-    /// its test functions leave the trial space (symmetric()).
+    /// Whether any node slips under a law with friction: only then do its
+    /// test functions leave the trial space (symmetric()).
     bool pressure_dependent_slip = false;
     /// Multipliers of the nodes released in the last update.
     std::vector<double>                released_pressure;
