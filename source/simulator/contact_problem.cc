@@ -626,8 +626,8 @@ namespace contact_fem
             distribute_unsymmetric(cell_matrices[index], load, dofs);
         }
     if (contact)
-      contact->assemble(*interface, symmetric ? constraints : test_constraints, owned_dofs,
-                        system_matrix, system_rhs);
+      contact->assemble(*interface, constraints, symmetric ? constraints : test_constraints,
+                        owned_dofs, system_matrix, system_rhs);
     system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
   }

@@ -128,12 +128,20 @@ namespace contact_fem
           if (contact->is_active(s.node))
             {
               Tensor<1, dim> shear = traction + normal * n;
-              if (with_shear)
+              if (with_shear && dim == 2)
                 {
                   const Tensor<1, dim> tau =
                     ContactFormulation<dim>::tangent(contact->frame_normal(s));
                   tangential[s.node] = (s.D > 0. ? reference_length / s.D : 1.) * (traction * tau);
                   shear = (tangential[s.node] - contact->traction(s) * tau) * tau;
+                }
+              else if (with_shear)
+                {
+                  // 3D: the tangential parts as vectors (frame normal nf).
+                  const Tensor<1, dim> nf     = contact->frame_normal(s);
+                  const Tensor<1, dim> lambda = contact->traction(s);
+                  shear = (s.D > 0. ? reference_length / s.D : 1.) * (traction - (traction * nf) * nf) -
+                          (lambda - (lambda * nf) * nf);
                 }
               largest_shear = std::max(largest_shear, shear.norm());
               p_max         = std::max(p_max, contact->normal_pressure(s.node));

@@ -1,3 +1,4 @@
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <contact_fem/contact/formulations/alm_frictional.h>
@@ -14,9 +15,6 @@ namespace contact_fem
     : Base(friction,
            FrictionlessFormulation<dim>::Parameters::parse_for_exact_gap(prm, "alm frictional"))
   {
-    AssertThrow(dim == 2,
-                ExcMessage("Contact/Formulation = alm frictional: friction is implemented in "
-                           "2D only."));
     AssertThrow(!laws.empty(),
                 ExcMessage("Contact/Friction: 'alm frictional' needs a frictional law, e.g. "
                            "'coulomb 0.2' or 'tresca 0.01' (or per pair '3: coulomb 0.2'); "
@@ -32,38 +30,79 @@ namespace contact_fem
     const unsigned int n = interface.nodes.size();
     released_pressure.assign(n, 0.);
     released_tangential.assign(n, TangentialVector<dim>());
+    cone_stiffness.assign(n, 0.);
   }
 
   template <int dim>
-  double
+  TangentialVector<dim>
   AlmFrictional<dim>::slip_increment(const ContactInterface<dim> &interface,
                                      const SlaveNode             &s,
                                      const std::vector<double>   &u) const
   {
-    return weighted_slip(interface, s, converged_displacement, u,
-                         ContactFormulation<dim>::tangent(frame_normal(s)));
+    return to_frame(weighted_relative_displacement(interface, s, converged_displacement, u),
+                    frame_normal(s));
   }
 
   template <int dim>
-  int
-  AlmFrictional<dim>::stick_or_slip(const SlaveNode &s,
-                                    const double     augmented_pressure,
-                                    const double     xi) const
+  TangentialVector<dim>
+  AlmFrictional<dim>::stick_or_slip(const SlaveNode             &s,
+                                    const double                 augmented_pressure,
+                                    const TangentialVector<dim> &xi) const
   {
-    const double trial = tangential[s.node][0] - this->penalty[s.pair] * xi;
-    const int    sign  = trial >= 0. ? 1 : -1;
+    const TangentialVector<dim> trial = tangential[s.node] - this->penalty[s.pair] * xi;
+    const double                size  = magnitude<dim>(trial);
+    // For zero only a law without friction slips: its direction changes
+    // nothing.
+    const TangentialVector<dim> direction = unit_direction<dim>(trial, size);
     if (pure_slip)
-      return sign;
+      return direction;
     const double bound = laws[s.pair]->threshold(std::max(augmented_pressure, 0.));
     // A node with neither traction nor slip (it just touched) sticks: its
     // slip direction is undefined, and any guess would push it sideways.
-    if (trial == 0. && !frictionless_law(s))
-      return 0;
+    if (size == 0. && !frictionless_law(s))
+      return TangentialVector<dim>();
     // A node on the bound (every slip node at the start of a step) keeps
     // slipping: without the margin round-off would decide, differently on
     // another partition.
     constexpr double on_bound = 1e-10;
-    return std::abs(trial) < bound * (1. - on_bound) ? 0 : sign;
+    return size < bound * (1. - on_bound) ? TangentialVector<dim>() : direction;
+  }
+
+  template <int dim>
+  double
+  AlmFrictional<dim>::slip_cone_stiffness(const SlaveNode             &s,
+                                          const TangentialVector<dim> &xi) const
+  {
+    if (dim == 2 || !sets.slips(s.node, this->active) || frictionless_law(s))
+      return 0.;
+    // beta = c a / (1 - a), a = T(p) / |t*|: the derivative of the slip
+    // direction t* / |t*| across it. a reaches 1 at zero slip (infinitely
+    // stiff); the cap keeps beta below 1e4 c, the stiffness of a default
+    // tangential penalty, and changes only the rate, not the solution.
+    constexpr double largest_a = 1. - 1e-4;
+    const double     c         = this->penalty[s.pair];
+    const double     trial     = magnitude<dim>(tangential[s.node] - c * xi);
+    const double     bound     = laws[s.pair]->threshold(std::max(this->pressure[s.node], 0.));
+    const double     a         = trial > 0. ? std::min(bound / trial, largest_a) : largest_a;
+    return c * a / (1. - a);
+  }
+
+  template <int dim>
+  void
+  AlmFrictional<dim>::set_direction(const ContactInterface<dim> &interface,
+                                    const SlaveNode             &s,
+                                    const double                 augmented_pressure,
+                                    const std::vector<double>   &u)
+  {
+    if (!carries_friction(interface, s))
+      {
+        sets.direction[s.node] = TangentialVector<dim>();
+        cone_stiffness[s.node] = 0.;
+        return;
+      }
+    const TangentialVector<dim> xi = slip_increment(interface, s, u);
+    sets.direction[s.node]         = stick_or_slip(s, augmented_pressure, xi);
+    cone_stiffness[s.node]         = slip_cone_stiffness(s, xi);
   }
 
   template <int dim>
@@ -72,8 +111,32 @@ namespace contact_fem
   {
     const double         p = this->pressure[s.node];
     const Tensor<1, dim> n = frame_normal(s);
-    return ContactFormulation<dim>::tangent(n) +
-           sets.direction[s.node][0] * laws[s.pair]->threshold_derivative(p) * n;
+    if constexpr (dim == 2)
+      return ContactFormulation<dim>::tangent(n) +
+             sets.direction[s.node][0] * laws[s.pair]->threshold_derivative(p) * n;
+    else
+      return to_global(sets.direction[s.node], n) + laws[s.pair]->threshold_derivative(p) * n;
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  AlmFrictional<dim>::test_normal(const SlaveNode &s) const
+  {
+    if constexpr (dim == 2)
+      {
+        const Tensor<1, dim> w = slip_direction(s);
+        Tensor<1, dim>       result;
+        result[0] = w[1];
+        result[1] = -w[0];
+        return result;
+      }
+    else
+      {
+        // Normal to w = d + T' n and to e = n x d: n - T' d.
+        const Tensor<1, dim> n = frame_normal(s);
+        return n - laws[s.pair]->threshold_derivative(this->pressure[s.node]) *
+                     to_global(sets.direction[s.node], n);
+      }
   }
 
   template <int dim>
@@ -81,15 +144,15 @@ namespace contact_fem
   AlmFrictional<dim>::slip_eliminated_component(const SlaveNode &s) const
   {
     // Component c carries the gap (needs n_c) and the test line divides by
-    // w_d of the other one. |w|^2 = 1 + T'^2, so one choice always has
-    // min(|n_c|, |w_d|) of order one. With w = tau this is the largest
-    // |n_c|, the frictionless choice.
-    const Tensor<1, dim> w          = slip_direction(s);
+    // component c of the test normal m (2D: w turned, 3D: n - T' d). |m|^2
+    // = 1 + T'^2, so one choice always has min(|n_c|, |m_c|) of order one.
+    // With T' = 0 this is the largest |n_c|, the frictionless choice.
+    const Tensor<1, dim> m          = test_normal(s);
     unsigned int         best       = dim;
     double               best_value = 0.1;
     for (unsigned int c = 0; c < dim; ++c)
       {
-        const double value = std::min(std::abs(s.normal[c]), std::abs(w[(c + 1) % dim]));
+        const double value = std::min(std::abs(s.normal[c]), std::abs(m[c]));
         if (value > best_value)
           {
             best       = c;
@@ -103,11 +166,18 @@ namespace contact_fem
   void
   AlmFrictional<dim>::note_pressure_dependent_slip(const ContactInterface<dim> &interface)
   {
-    // With T' = 0 (Tresca, mu = 0) w = tau: the symmetric assembly serves.
+    // Only mu = 0 (w = tau, frame = slave normal) may use the symmetric
+    // assembly: its test space is the trial space. Under Tresca the trial
+    // space is normal to the slave normal, the slip condition to the frame
+    // (interface) normal; tested with the trial space it would impose
+    // t = T + p tan(angle between them) on curved pairs, which the residual
+    // never accepts (2D Tresca on prm/hertz_frictional.prm stalled). In 3D
+    // the test plane also carries the cone term (assemble()).
     pressure_dependent_slip = false;
     for (const auto &s : interface.slave_nodes)
       if (sets.slips(s.node, this->active) && carries_friction(interface, s) &&
-          laws[s.pair]->threshold_derivative(this->pressure[s.node]) != 0.)
+          (laws[s.pair]->threshold_derivative(this->pressure[s.node]) != 0. ||
+           (!frictionless_law(s))))
         pressure_dependent_slip = true;
   }
 
@@ -136,11 +206,7 @@ namespace contact_fem
             sets.direction[s.node]      = TangentialVector<dim>();
             continue;
           }
-        sets.direction[s.node][0] =
-          carries_friction(interface, s) ?
-            stick_or_slip(s, pressure[s.node] - this->penalty[s.pair] * g,
-                          slip_increment(interface, s, u)) :
-            0;
+        set_direction(interface, s, pressure[s.node] - this->penalty[s.pair] * g, u);
       }
     this->deactivate_master_nodes(interface);
     for (unsigned int n = 0; n < interface.nodes.size(); ++n)
@@ -167,18 +233,36 @@ namespace contact_fem
     // tau . z = tau . (old relative displacement) (frame tangent); the two
     // directions differ by the small angle between the slave and the
     // interface normal, so the 2x2 system is well conditioned.
-    const Tensor<1, dim> tau = ContactFormulation<dim>::tangent(frame_normal(s));
-    double               normal_offset = s.curvature_gap / s.D - s.normal * slave.reference;
+    double normal_offset = s.curvature_gap / s.D - s.normal * slave.reference;
     for (const auto &[m, value] : s.M)
       normal_offset += value * (s.normal * interface.nodes[m].reference) / s.D;
     Tensor<1, dim> old_relative = interface.displacement(s.node, converged_displacement);
     for (const auto &[m, value] : s.M)
       old_relative -= (value / s.D) * interface.displacement(m, converged_displacement);
-    const double   tangential_offset = old_relative * tau;
-    const double   det = s.normal[0] * tau[1] - s.normal[1] * tau[0];
+    const auto     frame = tangent_frame(frame_normal(s));
     Tensor<1, dim> offset;
-    offset[0] = (normal_offset * tau[1] - s.normal[1] * tangential_offset) / det;
-    offset[1] = (s.normal[0] * tangential_offset - tau[0] * normal_offset) / det;
+    if constexpr (dim == 2)
+      {
+        const Tensor<1, dim> &tau               = frame[0];
+        const double          tangential_offset = old_relative * tau;
+        const double          det = s.normal[0] * tau[1] - s.normal[1] * tau[0];
+        offset[0] = (normal_offset * tau[1] - s.normal[1] * tangential_offset) / det;
+        offset[1] = (s.normal[0] * tangential_offset - tau[0] * normal_offset) / det;
+      }
+    else
+      {
+        // Rows n, tau_1, tau_2: the same system in 3D.
+        Tensor<2, dim> rows;
+        Tensor<1, dim> values;
+        rows[0]   = s.normal;
+        values[0] = normal_offset;
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          {
+            rows[k + 1]   = frame[k];
+            values[k + 1] = old_relative * frame[k];
+          }
+        offset = invert(rows) * values;
+      }
     for (unsigned int d = 0; d < dim; ++d)
       {
         ConstraintLine line;
@@ -207,20 +291,29 @@ namespace contact_fem
         this->add_gap_line(interface, s, c, fixed_values, constraints);
         return;
       }
-    const unsigned int d     = (c + 1) % dim; // the other component (2D)
-    const auto        &slave = interface.nodes[s.node];
+    const auto &slave = interface.nodes[s.node];
     if (!constraints.can_store_line(slave.dofs[c]) || constraints.is_constrained(slave.dofs[c]))
       return;
-    // Test space: v_j = sum_l M_jl / D_j v_l + alpha w: the slave's own
-    // equation is w . r_j = 0, and the masters take the whole traction.
-    const Tensor<1, dim> w     = slip_direction(s);
-    const double         ratio = w[c] / w[d];
-    ConstraintLine       line;
-    line.add(slave, d, ratio, interface, fixed_values, true);
-    for (const auto &[m, value] : s.M)
+    // Test space: v_j = sum_l M_jl / D_j v_l + z with z normal to the test
+    // normal m (2D: z = alpha w; 3D: z in the plane of w and e = n x d): the
+    // slave's own equations are those along w (and e), and the masters take
+    // the whole traction. m . z = 0 solved for z_c.
+    const Tensor<1, dim> m = test_normal(s);
+    Tensor<1, dim>       ratio;
+    for (unsigned int d = 0; d < dim; ++d)
+      if (d != c)
+        ratio[d] = -m[d] / m[c];
+    ConstraintLine line;
+    for (unsigned int d = 0; d < dim; ++d)
+      if (d != c)
+        line.add(slave, d, ratio[d], interface, fixed_values, true);
+    for (const auto &[master, value] : s.M)
       {
-        line.add(interface.nodes[m], c, value / s.D, interface, fixed_values, true);
-        line.add(interface.nodes[m], d, -ratio * value / s.D, interface, fixed_values, true);
+        line.add(interface.nodes[master], c, value / s.D, interface, fixed_values, true);
+        for (unsigned int d = 0; d < dim; ++d)
+          if (d != c)
+            line.add(interface.nodes[master], d, -ratio[d] * value / s.D, interface,
+                     fixed_values, true);
       }
     line.store(slave.dofs[c], constraints);
   }
@@ -232,6 +325,8 @@ namespace contact_fem
                                       AffineConstraints<double>   &constraints,
                                       const bool                   all_candidates) const
   {
+    if (!all_candidates)
+      last_fixed_values = fixed_values;
     // For the sparsity: the stick lines couple a slave node with every
     // component of its masters (the gap line drops the components normal
     // to n), a superset of the slip lines' couplings.
@@ -251,7 +346,7 @@ namespace contact_fem
         {
           if (!carries_friction(interface, s))
             continue;
-          if (sets.direction[s.node][0] == 0)
+          if (!sets.slips(s.node, this->active))
             add_stick_constraint(interface, s, fixed_values, constraints);
           else
             add_slip_constraint(interface, s, fixed_values, constraints, false);
@@ -270,7 +365,7 @@ namespace contact_fem
     for (const auto &s : interface.slave_nodes)
       if (s.paired && this->active[s.node] && carries_friction(interface, s))
         {
-          if (sets.direction[s.node][0] == 0)
+          if (!sets.slips(s.node, this->active))
             add_stick_constraint(interface, s, fixed_values, constraints);
           else
             add_slip_constraint(interface, s, fixed_values, constraints, true);
@@ -288,46 +383,115 @@ namespace contact_fem
 
   template <int dim>
   void
-  AlmFrictional<dim>::assemble(const ContactInterface<dim> &interface,
+  AlmFrictional<dim>::assemble(const ContactInterface<dim>     &interface,
                                const AffineConstraints<double> &constraints,
+                               const AffineConstraints<double> &test_constraints,
                                const IndexSet                  &owned,
-                               TrilinosWrappers::SparseMatrix &,
-                               TrilinosWrappers::MPI::Vector &rhs) const
+                               TrilinosWrappers::SparseMatrix  &matrix,
+                               TrilinosWrappers::MPI::Vector   &rhs) const
   {
-    // K u = f + B^T lambda: the known part h tau of a slip node's traction,
-    // h = sigma (T(p) - T'(p) p), is a load (D_j on the slave, -M_jl on
-    // the masters); the rest is carried by the constraints.
+    // K u = f + B^T lambda: the known part h d of a slip node's traction,
+    // h = T(p) - T'(p) p along its slip direction d, is a load (D_j on the
+    // slave, -M_jl on the masters); the rest is carried by the constraints
+    // (and in 3D by the cone term).
     std::vector<types::global_dof_index> dofs;
     Vector<double>                       values;
     for (const auto &s : interface.slave_nodes)
       {
-        if (!s.paired || !this->active[s.node] || sets.direction[s.node][0] == 0 ||
-            !carries_friction(interface, s) || !owned.is_element(interface.nodes[s.node].dofs[0]))
+        if (!s.paired || !sets.slips(s.node, this->active) || !carries_friction(interface, s) ||
+            !owned.is_element(interface.nodes[s.node].dofs[0]))
           continue;
+        if (cone_stiffness[s.node] > 0.)
+          assemble_cone_term(interface, s, constraints, test_constraints, matrix, rhs);
         const double p = this->pressure[s.node];
-        const double h = sets.direction[s.node][0] * (laws[s.pair]->threshold(p) -
-                                              laws[s.pair]->threshold_derivative(p) * p);
+        const double h = laws[s.pair]->threshold(p) - laws[s.pair]->threshold_derivative(p) * p;
         if (h == 0.)
           continue;
-        const Tensor<1, dim> tau = ContactFormulation<dim>::tangent(frame_normal(s));
+        const Tensor<1, dim> direction = to_global(sets.direction[s.node], frame_normal(s));
         dofs.clear();
         std::vector<double> force;
         for (unsigned int d = 0; d < dim; ++d)
           {
             dofs.push_back(interface.nodes[s.node].dofs[d]);
-            force.push_back(s.D * h * tau[d]);
+            force.push_back(s.D * h * direction[d]);
           }
         for (const auto &[m, value] : s.M)
           for (unsigned int d = 0; d < dim; ++d)
             {
               dofs.push_back(interface.nodes[m].dofs[d]);
-              force.push_back(-value * h * tau[d]);
+              force.push_back(-value * h * direction[d]);
             }
         values.reinit(force.size());
         for (unsigned int i = 0; i < force.size(); ++i)
           values(i) = force[i];
-        constraints.distribute_local_to_global(values, dofs, rhs);
+        test_constraints.distribute_local_to_global(values, dofs, rhs);
       }
+  }
+
+  template <int dim>
+  void
+  AlmFrictional<dim>::assemble_cone_term(const ContactInterface<dim>     &interface,
+                                         const SlaveNode                 &s,
+                                         const AffineConstraints<double> &constraints,
+                                         const AffineConstraints<double> &test_constraints,
+                                         TrilinosWrappers::SparseMatrix  &matrix,
+                                         TrilinosWrappers::MPI::Vector   &rhs) const
+  {
+    // The slip condition across the slip direction, linearised: e . t +
+    // beta e . xi = 0 (e = n x d), tested with the e part of the test
+    // function: D_j beta (e . dv)(e . (du - du_n)), du = u_j - sum_l M_jl /
+    // D_j u_l. Rows in the test space, columns in the trial space, whose
+    // inhomogeneities move to the right-hand side.
+    const Tensor<1, dim> n = frame_normal(s);
+    Tensor<1, dim>       e;
+    if constexpr (dim == 3)
+      e = cross_product_3d(n, to_global(sets.direction[s.node], n));
+    std::vector<types::global_dof_index> dofs;
+    std::vector<double>                  gradient;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        dofs.push_back(interface.nodes[s.node].dofs[d]);
+        gradient.push_back(e[d]);
+      }
+    // Masters at round-off of M drop out, and Dirichlet components move
+    // their value to the right-hand side, as in the constraint lines
+    // (ConstraintLine), whose couplings the sparsity pattern holds (on
+    // another rank's part of the master the constraints do not know them).
+    constexpr double negligible = 1e-14;
+    double           fixed_slip = 0.;
+    for (const auto &[m, value] : s.M)
+      if (std::abs(value / s.D) >= negligible)
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const auto &master = interface.nodes[m];
+            if (master.fixed[d])
+              {
+                fixed_slip -= value / s.D * e[d] *
+                              last_fixed_values[interface.position(master.dofs[d])];
+                continue;
+              }
+            dofs.push_back(master.dofs[d]);
+            gradient.push_back(-value / s.D * e[d]);
+          }
+    const std::vector<double> zero(interface.dofs().size(), 0.);
+    const double              old_slip =
+      e * weighted_relative_displacement(interface, s, zero, converged_displacement) -
+      fixed_slip;
+    const double       factor = s.D * cone_stiffness[s.node];
+    const unsigned int size   = dofs.size();
+    FullMatrix<double> local_matrix(size, size);
+    Vector<double>     local_rhs(size), inhomogeneity(size);
+    for (unsigned int a = 0; a < size; ++a)
+      {
+        for (unsigned int b = 0; b < size; ++b)
+          local_matrix(a, b) = factor * gradient[a] * gradient[b];
+        local_rhs(a) = factor * old_slip * gradient[a];
+        if (constraints.is_constrained(dofs[a]))
+          inhomogeneity(a) = -constraints.get_inhomogeneity(dofs[a]);
+      }
+    local_matrix.vmult_add(local_rhs, inhomogeneity);
+    test_constraints.distribute_local_to_global(local_matrix, dofs, constraints, dofs, matrix);
+    test_constraints.distribute_local_to_global(local_rhs, dofs, rhs);
   }
 
   template <int dim>
@@ -359,7 +523,7 @@ namespace contact_fem
           lambda[d] = residual[interface.position(slave.dofs[d])] / s.D;
         const Tensor<1, dim> n = frame_normal(s);
         this->pressure[s.node] = -(lambda * n);
-        tangential[s.node][0]  = lambda * ContactFormulation<dim>::tangent(n);
+        tangential[s.node]     = to_frame(lambda, n);
       }
   }
 
@@ -392,17 +556,17 @@ namespace contact_fem
             active[s.node]              = false;
             continue;
           }
-        const int sign = carries_friction(interface, s) ?
-                           stick_or_slip(s, augmented, slip_increment(interface, s, u)) :
-                           0;
-        // Under a law without friction the sign changes nothing.
-        if (active[s.node] && sign != sets.direction[s.node][0] && !frictionless_law(s))
+        const bool                  was_active = active[s.node];
+        const TangentialVector<dim> old        = sets.direction[s.node];
+        active[s.node]                         = true;
+        set_direction(interface, s, augmented, u);
+        // Under a law without friction the direction changes nothing.
+        if (was_active && stick_slip_changed<dim>(old, sets.direction[s.node]) &&
+            !frictionless_law(s))
           {
             ++changes;
             ++last_stick_slip_changes;
           }
-        sets.direction[s.node][0] = sign;
-        active[s.node]    = true;
       }
     note_pressure_dependent_slip(interface);
     return changes;
@@ -424,7 +588,7 @@ namespace contact_fem
         if (!this->active[s.node])
           {
             const double rn = released_pressure[s.node] / k;
-            const double rt = released_tangential[s.node][0] / k;
+            const double rt = magnitude<dim>(released_tangential[s.node]) / k;
             sum += rn * rn + rt * rt;
             continue;
           }
@@ -433,10 +597,10 @@ namespace contact_fem
         if (carries_friction(interface, s))
           {
             const double p  = this->pressure[s.node];
-            const double rt = sets.direction[s.node][0] == 0 ?
-                                slip_increment(interface, s, u) :
-                                (tangential[s.node][0] -
-                                 sets.direction[s.node][0] * laws[s.pair]->threshold(p)) /
+            const double rt = !sets.slips(s.node, this->active) ?
+                                magnitude<dim>(slip_increment(interface, s, u)) :
+                                magnitude<dim>(tangential[s.node] -
+                                               laws[s.pair]->threshold(p) * sets.direction[s.node]) /
                                   k;
             sum += rt * rt;
           }
@@ -461,7 +625,7 @@ namespace contact_fem
     std::fill(last_step_slip.begin(), last_step_slip.end(), TangentialVector<dim>());
     for (const auto &s : interface.slave_nodes)
       if (s.paired)
-        last_step_slip[s.node][0] = slip_increment(interface, s, u);
+        last_step_slip[s.node] = slip_increment(interface, s, u);
     converged_displacement = u;
   }
 
@@ -486,13 +650,14 @@ namespace contact_fem
     for (const auto &s : interface.slave_nodes)
       if (s.paired && this->active[s.node] && carries_friction(interface, s))
         {
-          const double bound = laws[s.pair]->threshold(this->pressure[s.node]);
-          const double t     = tangential[s.node][0];
-          largest_bound      = std::max(largest_bound, bound);
-          if (sets.direction[s.node][0] != 0)
-            off_bound = std::max(off_bound, std::abs(t - sets.direction[s.node][0] * bound));
+          const double                 bound = laws[s.pair]->threshold(this->pressure[s.node]);
+          const TangentialVector<dim> &t     = tangential[s.node];
+          largest_bound                      = std::max(largest_bound, bound);
+          if (sets.slips(s.node, this->active))
+            off_bound =
+              std::max(off_bound, magnitude<dim>(t - bound * sets.direction[s.node]));
           else
-            outside = std::max(outside, std::abs(t) - bound);
+            outside = std::max(outside, magnitude<dim>(t) - bound);
         }
     if (largest_bound == 0.)
       {
@@ -500,7 +665,7 @@ namespace contact_fem
         return;
       }
     out << "    slip nodes off the slip bound: " << value_or_ok(off_bound / largest_bound, 1e-8)
-        << " (|t - sigma T(p)| / max T)" << std::endl
+        << (dim == 2 ? " (|t - sigma T(p)| / max T)" : " (|t - T(p) d| / max T)") << std::endl
         << "    stick nodes outside the cone:  "
         << value_or_ok(std::max(outside, 0.) / largest_bound, 1e-8) << " ((|t| - T(p)) / max T)"
         << std::endl;

@@ -81,6 +81,7 @@ namespace contact_fem
   void
   ContactFormulation<dim>::assemble(const ContactInterface<dim> &,
                                     const AffineConstraints<double> &,
+                                    const AffineConstraints<double> &,
                                     const IndexSet &,
                                     TrilinosWrappers::SparseMatrix &,
                                     TrilinosWrappers::MPI::Vector &) const
@@ -146,13 +147,14 @@ namespace contact_fem
                       "overlap by pressure / eps (no multipliers, no constraints). "
                       "'alm frictional' = 'alm frictionless' plus the tangential "
                       "traction of the law of Contact/Friction (Coulomb or Tresca), "
-                      "stick/slip semi-smooth Newton, 2D, small sliding. "
+                      "stick/slip semi-smooth Newton (the slip direction linearised "
+                      "in 3D), 2D and 3D, small sliding. "
                       "'penalty frictional' = 'penalty frictionless' plus a "
                       "tangential penalty (Contact/Tangential penalty) on the slip "
                       "increment of the load step, return mapping to the slip bound "
                       "of the law of Contact/Friction: a sticking node slips "
                       "elastically by t / eps_t; unsymmetric system under Coulomb "
-                      "slip; 2D, small sliding.");
+                      "slip; 2D and 3D, small sliding.");
     prm.leave_subsection();
     FrictionlessFormulation<dim>::Parameters::declare_parameters(prm);
     FrictionParameters::declare_parameters(prm);

@@ -14,16 +14,21 @@ namespace contact_fem
                       Json                          &result)
   {
     // Totals over the active slave nodes of the force the slave exerts on
-    // the master, split along each node's own normal and tangent.
+    // the master, split along each node's own normal and tangent (2D); in
+    // 3D the tangential force is the length of the sum of the tangential
+    // tractions (on the slave) times D_j, also given by its components.
     double         normal = 0., tangential = 0., t_max = 0., slip_max = 0., length = 0.;
-    Tensor<1, dim> force;
+    Tensor<1, dim> force, tangential_force;
     for (const auto &s : interface.slave_nodes)
       if (s.paired && contact.is_active(s.node))
         {
           const Tensor<1, dim> lambda = contact.traction(s);
-          const double         t      = frame_tangential_traction(contact, s);
+          const Tensor<1, dim> t_vector = tangential_traction_vector(contact, s);
+          const double         t =
+            dim == 2 ? frame_tangential_traction(contact, s) : t_vector.norm();
           normal += s.D * contact.normal_pressure(s.node);
           tangential += s.D * t;
+          tangential_force += s.D * t_vector;
           length += s.D;
           force -= s.D * lambda;
           t_max    = std::max(t_max, std::abs(t));
@@ -32,6 +37,14 @@ namespace contact_fem
     Json components = Json::array();
     for (unsigned int d = 0; d < dim; ++d)
       components.push(force[d]);
+    if (dim == 3)
+      {
+        tangential                = tangential_force.norm();
+        Json tangential_components = Json::array();
+        for (unsigned int d = 0; d < dim; ++d)
+          tangential_components.push(tangential_force[d]);
+        result.set("tangential_contact_force_components", tangential_components);
+      }
     result.set("total_normal_contact_force", normal)
       .set("total_tangential_contact_force", tangential)
       .set("tangential_over_normal_force", normal > 0. ? tangential / normal : 0.)
@@ -80,18 +93,36 @@ namespace contact_fem
                         const std::vector<TangentialVector<dim>> &accepted_slip)
   {
     const unsigned int  n_nodes = interface.nodes.size();
-    std::vector<double> tangential(n_nodes, 0.), stick(n_nodes, 0.);
-    for (const auto &s : interface.slave_nodes)
-      if (s.paired)
-        tangential[s.node] = frame_tangential_traction(contact, s);
-    std::vector<typename ContactFormulation<dim>::NodalField> fields = {
-      {"tangential_traction", tangential}};
-    for (unsigned int c = 0; c < dim - 1; ++c)
+    std::vector<double> stick(n_nodes, 0.);
+    std::vector<typename ContactFormulation<dim>::NodalField> fields;
+    if constexpr (dim == 2)
       {
-        fields.push_back({dim == 2 ? "slip_increment" : "slip_increment_" + std::to_string(c + 1),
-                          std::vector<double>(n_nodes)});
+        std::vector<double> tangential(n_nodes, 0.), slip(n_nodes, 0.);
+        for (const auto &s : interface.slave_nodes)
+          if (s.paired)
+            tangential[s.node] = frame_tangential_traction(contact, s);
         for (unsigned int n = 0; n < n_nodes; ++n)
-          fields.back().values[n] = accepted_slip[n][c];
+          slip[n] = accepted_slip[n][0];
+        fields = {{"tangential_traction", tangential}, {"slip_increment", slip}};
+      }
+    else
+      {
+        // Global components: the tangent frame is a storage choice.
+        std::vector<Tensor<1, dim>> tangential(n_nodes), slip(n_nodes);
+        for (const auto &s : interface.slave_nodes)
+          if (s.paired)
+            {
+              tangential[s.node] = tangential_traction_vector(contact, s);
+              slip[s.node]       = to_global(accepted_slip[s.node], contact.frame_normal(s));
+            }
+        for (const auto &[name, values] : {std::make_pair("tangential_traction_", &tangential),
+                                           std::make_pair("slip_increment_", &slip)})
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              fields.push_back({name + std::string(1, "xyz"[d]), std::vector<double>(n_nodes)});
+              for (unsigned int n = 0; n < n_nodes; ++n)
+                fields.back().values[n] = (*values)[n][d];
+            }
       }
     for (unsigned int n = 0; n < n_nodes; ++n)
       stick[n] = contact.held_tangentially(n) ? 1. : 0.;

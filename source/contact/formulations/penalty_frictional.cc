@@ -51,9 +51,6 @@ namespace contact_fem
                                             const FrictionParameters &friction)
     : Base(friction, refuse_adaptive_penalty(prm))
   {
-    AssertThrow(dim == 2,
-                ExcMessage("Contact/Formulation = penalty frictional: friction is implemented "
-                           "in 2D only."));
     AssertThrow(!laws.empty(),
                 ExcMessage("Contact/Friction: 'penalty frictional' needs a frictional law, "
                            "e.g. 'coulomb 0.2' or 'tresca 0.01' (or per pair '3: coulomb "
@@ -71,25 +68,27 @@ namespace contact_fem
   {
     Base::initialize(interface);
     accepted_tangential.assign(interface.nodes.size(), TangentialVector<dim>());
+    cone_factor.assign(interface.nodes.size(), 0.);
   }
 
   template <int dim>
-  double
+  TangentialVector<dim>
   PenaltyFrictional<dim>::slip_increment(const ContactInterface<dim> &interface,
                                          const SlaveNode             &s,
                                          const std::vector<double>   &u) const
   {
-    return weighted_slip(interface, s, converged_displacement, u,
-                         ContactFormulation<dim>::tangent(s.normal));
+    return to_frame(weighted_relative_displacement(interface, s, converged_displacement, u),
+                    s.normal);
   }
 
   template <int dim>
   void
   PenaltyFrictional<dim>::slip_gradient(const ContactInterface<dim> &,
                                         const SlaveNode     &s,
+                                        const unsigned int   k,
                                         std::vector<double> &gradient) const
   {
-    const Tensor<1, dim> tau = ContactFormulation<dim>::tangent(s.normal);
+    const Tensor<1, dim> tau = tangent_frame(s.normal)[k];
     gradient.clear();
     for (unsigned int d = 0; d < dim; ++d)
       gradient.push_back(tau[d]);
@@ -99,27 +98,52 @@ namespace contact_fem
   }
 
   template <int dim>
-  int
-  PenaltyFrictional<dim>::stick_or_slip(const SlaveNode &s, const double p, const double xi) const
+  TangentialVector<dim>
+  PenaltyFrictional<dim>::trial_traction(const SlaveNode &s, const TangentialVector<dim> &xi) const
   {
-    const double trial = accepted_tangential[s.node][0] - tangent_penalty[s.pair] * xi;
-    const int    sign  = trial >= 0. ? 1 : -1;
+    return accepted_tangential[s.node] - tangent_penalty[s.pair] * xi;
+  }
+
+  template <int dim>
+  TangentialVector<dim>
+  PenaltyFrictional<dim>::stick_or_slip(const SlaveNode             &s,
+                                        const double                 p,
+                                        const TangentialVector<dim> &xi) const
+  {
+    const TangentialVector<dim> trial = trial_traction(s, xi);
+    const double                size  = magnitude<dim>(trial);
+    const TangentialVector<dim> direction = unit_direction<dim>(trial, size);
     if (pure_slip || frictionless_law(s))
-      return sign;
+      return direction;
     // A node with neither traction nor slip (it just touched) sticks.
-    return std::abs(trial) <= laws[s.pair]->threshold(std::max(p, 0.)) ? 0 : sign;
+    return size <= laws[s.pair]->threshold(std::max(p, 0.)) ? TangentialVector<dim>() : direction;
+  }
+
+  template <int dim>
+  TangentialVector<dim>
+  PenaltyFrictional<dim>::tangential_traction(const SlaveNode             &s,
+                                              const TangentialVector<dim> &direction,
+                                              const double                 p,
+                                              const TangentialVector<dim> &xi) const
+  {
+    if (direction.norm_square() == 0.)
+      return trial_traction(s, xi);
+    return laws[s.pair]->threshold(std::max(p, 0.)) * direction;
   }
 
   template <int dim>
   double
-  PenaltyFrictional<dim>::tangential_traction(const SlaveNode &s,
-                                              const int        sign,
-                                              const double     p,
-                                              const double     xi) const
+  PenaltyFrictional<dim>::slip_cone_factor(const SlaveNode             &s,
+                                           const TangentialVector<dim> &direction,
+                                           const double                 p,
+                                           const TangentialVector<dim> &xi) const
   {
-    if (sign == 0)
-      return accepted_tangential[s.node][0] - tangent_penalty[s.pair] * xi;
-    return sign * laws[s.pair]->threshold(std::max(p, 0.));
+    // T / |t*|: the derivative of the slip direction t* / |t*| across it
+    // (3D; in 2D the direction is a sign).
+    if (dim == 2 || direction.norm_square() == 0. || frictionless_law(s))
+      return 0.;
+    const double size = magnitude<dim>(trial_traction(s, xi));
+    return size > 0. ? laws[s.pair]->threshold(std::max(p, 0.)) / size : 0.;
   }
 
   template <int dim>
@@ -142,6 +166,7 @@ namespace contact_fem
       {
         if (!this->active[s.node])
           continue;
+        cone_factor[s.node] = 0.;
         if (!carries_friction(interface, s))
           {
             tangential[s.node]     = TangentialVector<dim>();
@@ -152,11 +177,14 @@ namespace contact_fem
         // that slipped has its trial traction on the bound, where round-off
         // would decide); the first solve tells which slip, and which way.
         // A law without friction, or Pure slip, slips at once.
-        const double g = interface.gap(s, u);
-        sets.direction[s.node][0] =
-          pure_slip || frictionless_law(s) ?
-            stick_or_slip(s, this->penalty[s.pair] * (-g), slip_increment(interface, s, u)) :
-            0;
+        sets.direction[s.node] = TangentialVector<dim>();
+        if (pure_slip || frictionless_law(s))
+          {
+            const double                p  = this->penalty[s.pair] * (-interface.gap(s, u));
+            const TangentialVector<dim> xi = slip_increment(interface, s, u);
+            sets.direction[s.node]         = stick_or_slip(s, p, xi);
+            cone_factor[s.node]            = slip_cone_factor(s, sets.direction[s.node], p, xi);
+          }
       }
   }
 
@@ -191,59 +219,78 @@ namespace contact_fem
   void
   PenaltyFrictional<dim>::assemble(const ContactInterface<dim>    &interface,
                                    const AffineConstraints<double> &constraints,
+                                   const AffineConstraints<double> &,
                                    const IndexSet                  &owned,
                                    TrilinosWrappers::SparseMatrix  &matrix,
                                    TrilinosWrappers::MPI::Vector   &rhs) const
   {
-    PenaltyFrictionless<dim>::assemble(interface, constraints, owned, matrix, rhs);
+    PenaltyFrictionless<dim>::assemble(interface, constraints, constraints, owned, matrix, rhs);
     // The tangential force D_j t_j grad xi_j with t_j linear in u:
     // stick: t = t_n - eps_t grad xi . (u - u_n);
     // slip:  t = sigma (T(p_k) + T'(p_k) (p(u) - p_k)), p(u) = -eps_n (g(0) +
     // grad g . u) (exact for Coulomb and Tresca).
     const std::vector<double>            zero(interface.dofs().size(), 0.);
     std::vector<types::global_dof_index> dofs;
-    std::vector<double>                  g_gradient, xi_gradient;
+    std::vector<double>                  g_gradient;
+    std::array<std::vector<double>, dim - 1> xi_gradient;
     for (const auto &s : interface.slave_nodes)
       {
         if (!this->active[s.node] || !carries_friction(interface, s) ||
             !owned.is_element(interface.nodes[s.node].dofs[0]))
           continue;
-        const int sign = sets.direction[s.node][0];
-        if (sign != 0 && frictionless_law(s))
+        const TangentialVector<dim> &direction = sets.direction[s.node];
+        const bool                   slips     = direction.norm_square() != 0.;
+        if (slips && frictionless_law(s))
           continue; // T = 0: the frictionless system
         this->gap_gradient(interface, s, dofs, g_gradient);
-        slip_gradient(interface, s, xi_gradient);
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          slip_gradient(interface, s, k, xi_gradient[k]);
         const unsigned int n = dofs.size();
         FullMatrix<double> local_matrix(n, n);
         Vector<double>     local_rhs(n);
-        if (sign == 0)
-          {
-            const double eps_t = tangent_penalty[s.pair];
-            // grad xi . u_n: the slip reference.
-            const double xi_reference = -slip_increment(interface, s, zero);
-            const double load =
-              s.D * (accepted_tangential[s.node][0] + eps_t * xi_reference);
-            for (unsigned int a = 0; a < n; ++a)
-              {
-                for (unsigned int b = 0; b < n; ++b)
-                  local_matrix(a, b) = eps_t * s.D * xi_gradient[a] * xi_gradient[b];
-                local_rhs(a) = load * xi_gradient[a];
-              }
-          }
+        // grad xi . u_n: the slip reference.
+        const TangentialVector<dim> xi_reference = -slip_increment(interface, s, zero);
+        const double                eps_t        = tangent_penalty[s.pair];
+        if (!slips)
+          for (unsigned int k = 0; k < dim - 1; ++k)
+            {
+              const double load = s.D * (accepted_tangential[s.node][k] + eps_t * xi_reference[k]);
+              for (unsigned int a = 0; a < n; ++a)
+                {
+                  for (unsigned int b = 0; b < n; ++b)
+                    local_matrix(a, b) += eps_t * s.D * xi_gradient[k][a] * xi_gradient[k][b];
+                  local_rhs(a) += load * xi_gradient[k][a];
+                }
+            }
         else
           {
-            const double eps_n  = this->penalty[s.pair];
-            const double p      = std::max(this->pressure[s.node], 0.);
-            const double T      = laws[s.pair]->threshold(p);
-            const double dT     = laws[s.pair]->threshold_derivative(p);
-            const double g0     = interface.gap(s, zero);
-            const double load   = s.D * sign * (T - dT * p - dT * eps_n * g0);
-            const double factor = s.D * sign * dT * eps_n;
-            for (unsigned int a = 0; a < n; ++a)
+            const double eps_n = this->penalty[s.pair];
+            const double p     = std::max(this->pressure[s.node], 0.);
+            const double T     = laws[s.pair]->threshold(p);
+            const double dT    = laws[s.pair]->threshold_derivative(p);
+            const double g0    = interface.gap(s, zero);
+            // 3D: T d(t*) linearised across d, (T / |t*|) P t*(u), P = I - d d^T.
+            const double                a          = cone_factor[s.node];
+            const TangentialVector<dim> history    = accepted_tangential[s.node] +
+                                                  eps_t * xi_reference;
+            const TangentialVector<dim> cone_trial = history - (direction * history) * direction;
+            for (unsigned int k = 0; k < dim - 1; ++k)
               {
-                for (unsigned int b = 0; b < n; ++b)
-                  local_matrix(a, b) = factor * xi_gradient[a] * g_gradient[b];
-                local_rhs(a) = load * xi_gradient[a];
+                const double load   = s.D * direction[k] * (T - dT * p - dT * eps_n * g0) +
+                                    s.D * a * cone_trial[k];
+                const double factor = s.D * direction[k] * dT * eps_n;
+                for (unsigned int a_ = 0; a_ < n; ++a_)
+                  {
+                    for (unsigned int b = 0; b < n; ++b)
+                      {
+                        local_matrix(a_, b) += factor * xi_gradient[k][a_] * g_gradient[b];
+                        for (unsigned int l = 0; l < dim - 1 && a != 0.; ++l)
+                          local_matrix(a_, b) += s.D * a * eps_t *
+                                                 ((k == l ? 1. : 0.) - direction[k] * direction[l]) *
+                                                 xi_gradient[k][a_] * xi_gradient[l][b];
+                      }
+                    local_rhs(a_) += load * xi_gradient[k][a_];
+                  }
               }
           }
         constraints.distribute_local_to_global(local_matrix, local_rhs, dofs, matrix, rhs);
@@ -269,23 +316,27 @@ namespace contact_fem
             sets.direction[s.node] = TangentialVector<dim>();
             continue;
           }
-        const double p    = this->pressure[s.node];
-        const double xi   = slip_increment(interface, s, u);
-        int          sign = stick_or_slip(s, p, xi);
-        // A slipping node reverses through stick: its slip solve overshoots
-        // (with eps_t ~ 1e4 E/h a node that should stick swings from one
-        // bound to the other, period 2, if the sign may flip directly).
-        if (was_active[s.node] && sets.direction[s.node][0] != 0 &&
-            sign == -sets.direction[s.node][0] && !pure_slip && !frictionless_law(s))
-          sign = 0;
-        // Under a law without friction the sign changes nothing.
-        if (was_active[s.node] && sign != sets.direction[s.node][0] && !frictionless_law(s))
+        const double                 p         = this->pressure[s.node];
+        const TangentialVector<dim>  xi        = slip_increment(interface, s, u);
+        TangentialVector<dim>        direction = stick_or_slip(s, p, xi);
+        const TangentialVector<dim> &old       = sets.direction[s.node];
+        // A slipping node reverses (3D: turns by more than 90 degrees)
+        // through stick: its slip solve overshoots (with eps_t ~ 1e4 E/h a
+        // node that should stick swings from one bound to the other, period
+        // 2, if the direction may flip directly).
+        if (was_active[s.node] && old.norm_square() != 0. && direction * old < 0. &&
+            !pure_slip && !frictionless_law(s))
+          direction = TangentialVector<dim>();
+        // Under a law without friction the direction changes nothing.
+        if (was_active[s.node] && stick_slip_changed<dim>(old, direction) &&
+            !frictionless_law(s))
           {
             ++changes;
             ++last_stick_slip_changes;
           }
-        sets.direction[s.node][0] = sign;
-        tangential[s.node][0] = tangential_traction(s, sign, p, xi);
+        sets.direction[s.node] = direction;
+        tangential[s.node]     = tangential_traction(s, direction, p, xi);
+        cone_factor[s.node]    = slip_cone_factor(s, direction, p, xi);
       }
     return changes;
   }
@@ -300,17 +351,20 @@ namespace contact_fem
     Residuals result = PenaltyFrictionless<dim>::residuals(interface, u);
     for (const auto &s : interface.slave_nodes)
       {
-        const double t = tangential[s.node][0];
-        if (!s.paired || !this->active[s.node] || t == 0.)
+        const TangentialVector<dim> &t = tangential[s.node];
+        if (!s.paired || !this->active[s.node] || t.norm_square() == 0.)
           continue;
-        const Tensor<1, dim> tau = ContactFormulation<dim>::tangent(s.normal);
-        for (unsigned int d = 0; d < dim; ++d)
-          result.contact_force[interface.position(interface.nodes[s.node].dofs[d])] +=
-            s.D * t * tau[d];
-        for (const auto &[m, value] : s.M)
-          for (unsigned int d = 0; d < dim; ++d)
-            result.contact_force[interface.position(interface.nodes[m].dofs[d])] -=
-              value * t * tau[d];
+        const auto frame = tangent_frame(s.normal);
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              result.contact_force[interface.position(interface.nodes[s.node].dofs[d])] +=
+                s.D * t[k] * frame[k][d];
+            for (const auto &[m, value] : s.M)
+              for (unsigned int d = 0; d < dim; ++d)
+                result.contact_force[interface.position(interface.nodes[m].dofs[d])] -=
+                  value * t[k] * frame[k][d];
+          }
       }
     return result;
   }
@@ -323,7 +377,7 @@ namespace contact_fem
     last_step_slip.assign(interface.nodes.size(), TangentialVector<dim>());
     for (const auto &s : interface.slave_nodes)
       if (s.paired)
-        last_step_slip[s.node][0] = slip_increment(interface, s, u);
+        last_step_slip[s.node] = slip_increment(interface, s, u);
     converged_displacement = u;
     accepted_tangential    = tangential;
   }
@@ -388,22 +442,35 @@ namespace contact_fem
   {
     // sum_j D_j t_j and sum_j D_j p_j over the active nodes; with a single
     // Coulomb law (T(0) = 0) and every active node slipping one way their
-    // ratio is mu up to round-off.
-    double tangential_force = 0., normal_force = 0.;
-    int    common_sign = 0;
-    bool   all_slip = true, one_way = true;
+    // ratio is mu up to round-off. (3D: the length of the vector sum, and
+    // "one way" = every slip direction within 1e-10 of the first.)
+    double         tangential_force = 0., normal_force = 0.;
+    Tensor<1, dim> tangential_vector, common_direction;
+    bool           all_slip = true, one_way = true, first = true;
     for (const auto &s : interface.slave_nodes)
       if (s.paired && this->active[s.node])
         {
           tangential_force += s.D * tangential[s.node][0];
+          tangential_vector += s.D * to_global(tangential[s.node], s.normal);
           normal_force += s.D * this->pressure[s.node];
-          if (sets.direction[s.node][0] == 0 || !carries_friction(interface, s))
+          // 2D: the sign, in the node's own frame.
+          Tensor<1, dim> direction;
+          if (dim == 2)
+            direction[0] = sets.direction[s.node][0];
+          else
+            direction = to_global(sets.direction[s.node], s.normal);
+          if (sets.direction[s.node].norm_square() == 0. || !carries_friction(interface, s))
             all_slip = false;
-          else if (common_sign == 0)
-            common_sign = sets.direction[s.node][0];
-          else if (sets.direction[s.node][0] != common_sign)
+          else if (first)
+            {
+              common_direction = direction;
+              first            = false;
+            }
+          else if ((direction - common_direction).norm() > 1e-10)
             one_way = false;
         }
+    if (dim == 3)
+      tangential_force = tangential_vector.norm();
     // A stick node moves |t| / eps_t elastically: the tangential analogue
     // of the penetration, which a soft tangential penalty makes large
     // enough to hold a block that should slide (measured: Tangential
@@ -412,7 +479,7 @@ namespace contact_fem
     double elastic_slip = 0.;
     for (const auto &s : interface.slave_nodes)
       if (sets.sticks(s.node, this->active) && carries_friction(interface, s))
-        elastic_slip = std::max(elastic_slip, std::abs(tangential[s.node][0]) /
+        elastic_slip = std::max(elastic_slip, magnitude<dim>(tangential[s.node]) /
                                                 tangent_penalty[s.pair] / s.size);
     constexpr double allowed_elastic_slip = 1e-2;
     out << "    largest elastic slip / h:     " << value_or_ok(elastic_slip, 1e-6)
@@ -434,7 +501,7 @@ namespace contact_fem
         return law->threshold(0.) == 0. &&
                law->threshold_derivative(1.) == laws[0]->threshold_derivative(1.);
       });
-    if (one_coulomb_law && all_slip && one_way && common_sign != 0)
+    if (one_coulomb_law && all_slip && one_way && !first)
       {
         // Relative to mu (absolute for mu = 0).
         const double mu = laws[0]->threshold_derivative(1.);

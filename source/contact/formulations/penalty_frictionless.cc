@@ -125,6 +125,7 @@ namespace contact_fem
   void
   PenaltyFrictionless<dim>::assemble(const ContactInterface<dim>    &interface,
                                      const AffineConstraints<double> &constraints,
+                                     const AffineConstraints<double> &,
                                      const IndexSet                  &owned,
                                      TrilinosWrappers::SparseMatrix  &matrix,
                                      TrilinosWrappers::MPI::Vector   &rhs) const

@@ -1,6 +1,6 @@
 // Frictional contact by the augmented Lagrangian: exact normal and stick
 // constraints, Coulomb or Tresca slip through the test space (semi-smooth
-// Newton on the stick/slip complementarity, dual mortar, 2D).
+// Newton on the stick/slip complementarity, dual mortar, 2D and 3D).
 #ifndef contact_fem_alm_frictional_h
 #define contact_fem_alm_frictional_h
 
@@ -11,7 +11,8 @@ namespace contact_fem
 {
   /**
    * "alm frictional": the contact traction of slave node j is the vector
-   * lambda_j = -p_j n_j + t_j tau_j (on the slave), whose force is D_j
+   * lambda_j = -p_j n_j + t_j (on the slave; t_j in the tangent plane, dim
+   * - 1 components in the node's tangent_frame()), whose force is D_j
    * lambda_j on the slave node and -M_jl lambda_j on master node l. The
    * normal part is that of "alm frictionless" (the base class). The
    * tangential part follows the frictional law of the pair (slip bound
@@ -20,9 +21,11 @@ namespace contact_fem
    *   trial traction t*_j = t_j - c xi_j, with xi_j the weighted slip of the
    *   slave relative to the master since the last converged load step,
    *   stick  if |t*_j| < T(p_j - eps g_j):  xi_j = 0,
-   *   slip   otherwise:                     t_j = sigma_j T(p_j),
-   *                                         sigma_j = sign(t*_j),
+   *   slip   otherwise:                     t_j = T(p_j) d_j,
+   *                                         d_j = t*_j / |t*_j|
    *
+   * (the return mapping onto the disc |t| <= T; in 2D d_j is the sign
+   * sigma_j),
    * c = eps, the pair's penalty (E/h). Like the gap, each condition is
    * linear in the displacements once the sets and slip signs are fixed, so
    * every iteration is one linear solve:
@@ -33,11 +36,20 @@ namespace contact_fem
    *   frictionless) and the slip condition, linearised in p consistently:
    *   (tau + sigma T'(p) n) . lambda_j = sigma (T(p) - T'(p) p). Its test
    *   functions move along w = tau + sigma T' n instead of tau, and the
-   *   known part sigma (T - T' p) tau of its traction is a load. With
-   *   Coulomb (T' = mu > 0) the system is then unsymmetric (symmetric()).
+   *   known part sigma (T - T' p) tau of its traction is a load. The
+   *   system is then unsymmetric (symmetric()), Tresca's too (its test
+   *   space follows the interface normal, the trial space the slave's).
    * lambda_j is recovered from the residual of the slave node, r_j = D_j
    * lambda_j. In 2D the slip direction is a sign, so its linearisation
-   * vanishes.
+   * vanishes. In 3D the slip condition t = T(p) d(t - c xi) has two
+   * components; linearised, along d it is the 2D condition (w = d + T' n),
+   * and across it, along e = n x d,
+   *   (1 - a) e . t + a c e . xi = 0,   a = T(p) / |t*|,
+   * the derivative of the direction d. The test functions of a slip node
+   * then move in the plane of w and e (normal n - T' d), and the term
+   * D_j beta (e . v)(e . xi(u)), beta = c a / (1 - a), joins the matrix
+   * (assemble_cone_term()): Newton's quadratic convergence for a turning
+   * slip direction. At the solution e . t = e . xi = 0 whatever beta.
    *
    * Nodes with a Dirichlet component carry no tangential condition (the
    * support holds them tangentially): they are treated as frictionless.
@@ -76,11 +88,12 @@ namespace contact_fem
                          const std::vector<double>   &fixed_values,
                          AffineConstraints<double>   &constraints) const override;
 
-    /// The known traction sigma (T - T' p) tau of the slip nodes (Tresca's
-    /// bound) as a load.
+    /// The known traction (T - T' p) d of the slip nodes (Tresca's bound)
+    /// as a load; in 3D the cone term of the slip nodes.
     void
-    assemble(const ContactInterface<dim>    &interface,
+    assemble(const ContactInterface<dim>     &interface,
              const AffineConstraints<double> &constraints,
+             const AffineConstraints<double> &test_constraints,
              const IndexSet                  &owned,
              TrilinosWrappers::SparseMatrix  &matrix,
              TrilinosWrappers::MPI::Vector   &rhs) const override;
@@ -103,8 +116,7 @@ namespace contact_fem
     traction(const SlaveNode &s) const override
     {
       const Tensor<1, dim> n = frame_normal(s);
-      return -this->pressure[s.node] * n +
-             tangential[s.node][0] * ContactFormulation<dim>::tangent(n);
+      return -this->pressure[s.node] * n + to_global(tangential[s.node], n);
     }
 
     /// The shared interface normal where the law has friction; the slave
@@ -147,16 +159,32 @@ namespace contact_fem
     print_cone_check(const ContactInterface<dim> &interface, std::ostream &out) const;
 
     /// The weighted tangential slip of slave node @p s at @p u since the
-    /// last accepted load step, along the tangent of frame_normal(s).
-    double
+    /// last accepted load step, in the tangent frame of frame_normal(s).
+    TangentialVector<dim>
     slip_increment(const ContactInterface<dim> &interface,
                    const SlaveNode             &s,
                    const std::vector<double>   &u) const;
 
-    /// The direction w = tau + sigma T'(p) n of the slip condition
-    /// w . lambda = sigma (T - T' p) of slip node @p s.
+    /// The direction w of the slip condition w . lambda = T - T' p (along
+    /// d) of slip node @p s: 2D tau + sigma T'(p) n (the condition times
+    /// sigma), 3D d + T'(p) n.
     Tensor<1, dim>
     slip_direction(const SlaveNode &s) const;
+
+    /// The normal of the test space of slip node @p s: normal to w (2D),
+    /// to w and e = n x d (3D).
+    Tensor<1, dim>
+    test_normal(const SlaveNode &s) const;
+
+    /// The cone term of slip node @p s (3D): rows by @p test_constraints,
+    /// columns by @p constraints.
+    void
+    assemble_cone_term(const ContactInterface<dim>     &interface,
+                       const SlaveNode                 &s,
+                       const AffineConstraints<double> &constraints,
+                       const AffineConstraints<double> &test_constraints,
+                       TrilinosWrappers::SparseMatrix  &matrix,
+                       TrilinosWrappers::MPI::Vector   &rhs) const;
 
     /// Sets pressure_dependent_slip from the current sets.
     void
@@ -167,10 +195,25 @@ namespace contact_fem
     unsigned int
     slip_eliminated_component(const SlaveNode &s) const;
 
-    /// The stick/slip decision of an active frictional node: 0 = stick,
-    /// +1 / -1 = slip with that sign of the trial traction.
-    int
-    stick_or_slip(const SlaveNode &s, const double augmented_pressure, const double xi) const;
+    /// The stick/slip decision of an active frictional node with slip @p xi:
+    /// zero = stick, else the unit direction d of the trial traction (2D:
+    /// +1 / -1).
+    TangentialVector<dim>
+    stick_or_slip(const SlaveNode             &s,
+                  const double                 augmented_pressure,
+                  const TangentialVector<dim> &xi) const;
+
+    /// beta of the cone term of active node @p s (0 unless it slips under
+    /// a law with friction in 3D) at slip @p xi.
+    double
+    slip_cone_stiffness(const SlaveNode &s, const TangentialVector<dim> &xi) const;
+
+    /// The stick/slip set and the cone term of active node @p s at @p u.
+    void
+    set_direction(const ContactInterface<dim> &interface,
+                  const SlaveNode             &s,
+                  const double                 augmented_pressure,
+                  const std::vector<double>   &u);
 
     /// u_j = sum_l M_jl / D_j u_l + offsets: the gap and the stick condition
     /// of node @p s, both components.
@@ -200,12 +243,17 @@ namespace contact_fem
     using Base::sets;
     using Base::tangential;
 
-    /// Whether a slip node's bound depends on its pressure (Coulomb): only
-    /// then do its test functions leave the trial space (symmetric()).
+    /// Whether any node slips under a law with friction: only then do its
+    /// test functions leave the trial space (symmetric()).
     bool pressure_dependent_slip = false;
     /// Multipliers of the nodes released in the last update.
     std::vector<double>                released_pressure;
     std::vector<TangentialVector<dim>> released_tangential;
+    /// beta of the cone term per interface node (3D slip nodes).
+    std::vector<double> cone_stiffness;
+    /// The Dirichlet values at the interface DoFs of the last
+    /// add_constraints() (the fixed masters of the cone term).
+    mutable std::vector<double> last_fixed_values;
 
     struct FrictionState : public State
     {

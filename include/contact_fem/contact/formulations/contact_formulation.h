@@ -92,11 +92,13 @@ namespace contact_fem
                  DynamicSparsityPattern          &pattern) const;
 
     /// Adds the contact stiffness and load of the nodes whose first DoF is
-    /// in @p owned to the system, through @p constraints; the caller
-    /// compresses. Default: none.
+    /// in @p owned to the system: rows through @p test_constraints, columns
+    /// through @p constraints (the same object when symmetric()); the
+    /// caller compresses. Default: none.
     virtual void
-    assemble(const ContactInterface<dim>    &interface,
+    assemble(const ContactInterface<dim>     &interface,
              const AffineConstraints<double> &constraints,
+             const AffineConstraints<double> &test_constraints,
              const IndexSet                  &owned,
              TrilinosWrappers::SparseMatrix  &matrix,
              TrilinosWrappers::MPI::Vector   &rhs) const;

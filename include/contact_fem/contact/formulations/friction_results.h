@@ -18,6 +18,18 @@ namespace contact_fem
     return contact.traction(s) * ContactFormulation<dim>::tangent(contact.frame_normal(s));
   }
 
+  /// The tangential part of the traction of slave node @p s on the slave,
+  /// in the formulation's frame, as a global vector.
+  template <int dim>
+  Tensor<1, dim>
+  tangential_traction_vector(const ContactFormulation<dim>                   &contact,
+                             const typename ContactInterface<dim>::SlaveNode &s)
+  {
+    const Tensor<1, dim> n      = contact.frame_normal(s);
+    const Tensor<1, dim> lambda = contact.traction(s);
+    return lambda - (lambda * n) * n;
+  }
+
   /// Adds the totals over the active slave nodes (normal and tangential
   /// contact force, their ratio, the force components, the active length,
   /// the largest tangential traction and the largest slip of the last
@@ -38,7 +50,8 @@ namespace contact_fem
                         std::ostream      &out);
 
   /// The nodal fields tangential_traction, slip_increment (of the last
-  /// accepted step; per component, numbered from 1, in 3D) and stick.
+  /// accepted step; in 3D their global components, tangential_traction_x
+  /// ...) and stick.
   template <int dim>
   std::vector<typename ContactFormulation<dim>::NodalField>
   friction_nodal_fields(const ContactInterface<dim>   &interface,

@@ -1,6 +1,6 @@
 // Frictional contact by penalties: the normal penalty of "penalty
 // frictionless" plus a tangential penalty on the slip increment, with the
-// return mapping of elastoplasticity for Coulomb or Tresca slip (2D).
+// return mapping of elastoplasticity for Coulomb or Tresca slip (2D, 3D).
 #ifndef contact_fem_penalty_frictional_h
 #define contact_fem_penalty_frictional_h
 
@@ -11,7 +11,8 @@ namespace contact_fem
 {
   /**
    * "penalty frictional": the contact traction of slave node j on the slave
-   * is lambda_j = -p_j n_j + t_j tau_j (tau = ContactFormulation::tangent(n)),
+   * is lambda_j = -p_j n_j + t_j (t_j in the tangent plane, dim - 1
+   * components in tangent_frame(n_j)),
    * whose force is D_j lambda_j on the slave node and -M_jl lambda_j on
    * master node l. The normal part is that of "penalty frictionless" (the
    * base class): p_j = eps_n (-g_j) on active nodes (g_j < 0). The tangential
@@ -20,7 +21,8 @@ namespace contact_fem
    *
    *   trial  t*_j = t_n,j - eps_t xi_j     (t_n,j: of the last accepted step)
    *   stick  if |t*_j| <= T(p_j):  t_j = t*_j
-   *   slip   otherwise:            t_j = sigma_j T(p_j), sigma_j = sign(t*_j)
+   *   slip   otherwise:            t_j = T(p_j) d_j, d_j = t*_j / |t*_j|
+   *                                 (2D: the sign sigma_j)
    *
    * with T the slip bound of the pair's frictional law. eps_t is
    * Contact/Tangential penalty, by default the pair's normal penalty (1e4 *
@@ -32,7 +34,10 @@ namespace contact_fem
    *   stick:  eps_t D grad xi grad xi^T (symmetric),
    *   slip:   sigma T'(p) eps_n D grad xi grad g^T (unsymmetric) and the load
    *           D sigma (T - T' p - T' eps_n g(0)) grad xi,
-   * where grad xi = tau at the slave node, -M_jl / D_j tau at master l. The
+   * where grad xi = tau at the slave node, -M_jl / D_j tau at master l (per
+   * tangent in 3D, sigma -> d). In 3D the slip direction d(t*) is
+   * linearised too: T d(t*(u)) ~ T d + (T / |t*|) P t*(u), P = I - d d^T,
+   * which adds (T / |t*|) eps_t D P grad xi grad xi^T and its load. The
    * driver's direct solver takes the unsymmetric matrix; no test-space
    * constraints are used (symmetric() stays true: it concerns constraints
    * only).
@@ -89,8 +94,9 @@ namespace contact_fem
 
     /// The normal penalty of the base class plus the stick or slip terms.
     void
-    assemble(const ContactInterface<dim>    &interface,
+    assemble(const ContactInterface<dim>     &interface,
              const AffineConstraints<double> &constraints,
+             const AffineConstraints<double> &test_constraints,
              const IndexSet                  &owned,
              TrilinosWrappers::SparseMatrix  &matrix,
              TrilinosWrappers::MPI::Vector   &rhs) const override;
@@ -108,8 +114,7 @@ namespace contact_fem
     Tensor<1, dim>
     traction(const SlaveNode &s) const override
     {
-      return -this->pressure[s.node] * s.normal +
-             tangential[s.node][0] * ContactFormulation<dim>::tangent(s.normal);
+      return -this->pressure[s.node] * s.normal + to_global(tangential[s.node], s.normal);
     }
 
     /// The slip reference (interface displacement) and the tangential
@@ -145,30 +150,43 @@ namespace contact_fem
     print_slip_checks(const ContactInterface<dim> &interface, std::ostream &out) const;
 
     /// The weighted slip increment xi_j of slave node @p s at @p u since
-    /// the last accepted load step, along tangent(s.normal).
-    double
+    /// the last accepted load step, in tangent_frame(s.normal).
+    TangentialVector<dim>
     slip_increment(const ContactInterface<dim> &interface,
                    const SlaveNode             &s,
                    const std::vector<double>   &u) const;
 
+    /// t*_j = t_n,j - eps_t xi_j.
+    TangentialVector<dim>
+    trial_traction(const SlaveNode &s, const TangentialVector<dim> &xi) const;
+
     /// The return mapping of active node @p s at pressure @p p and slip
-    /// increment @p xi: 0 = stick, +1 / -1 = slip with that sign of the
-    /// trial traction (a frictionless law always "slips", with T = 0).
-    int
-    stick_or_slip(const SlaveNode &s, const double p, const double xi) const;
+    /// increment @p xi: zero = stick, else the unit direction of the trial
+    /// traction (2D: +1 / -1; a frictionless law always "slips", with T =
+    /// 0).
+    TangentialVector<dim>
+    stick_or_slip(const SlaveNode &s, const double p, const TangentialVector<dim> &xi) const;
 
-    /// The tangential traction of the return mapping with sign @p sign.
+    /// The tangential traction of the return mapping with @p direction.
+    TangentialVector<dim>
+    tangential_traction(const SlaveNode             &s,
+                        const TangentialVector<dim> &direction,
+                        const double                 p,
+                        const TangentialVector<dim> &xi) const;
+
+    /// T / |t*| of a 3D slip node (the linearised slip direction), else 0.
     double
-    tangential_traction(const SlaveNode &s,
-                        const int        sign,
-                        const double     p,
-                        const double     xi) const;
+    slip_cone_factor(const SlaveNode             &s,
+                     const TangentialVector<dim> &direction,
+                     const double                 p,
+                     const TangentialVector<dim> &xi) const;
 
-    /// grad xi_j at the DoFs of gap_gradient() (same order): tau at the
-    /// slave node, -M_jl / D_j tau at master l.
+    /// grad xi_j,k at the DoFs of gap_gradient() (same order): tau_k at the
+    /// slave node, -M_jl / D_j tau_k at master l.
     void
     slip_gradient(const ContactInterface<dim> &interface,
                   const SlaveNode             &s,
+                  const unsigned int           k,
                   std::vector<double>         &gradient) const;
 
     using Base::converged_displacement;
@@ -186,6 +204,8 @@ namespace contact_fem
     std::vector<double> tangent_penalty;         ///< eps_t per pair
     /// Tangential tractions of the last accepted load step (the history).
     std::vector<TangentialVector<dim>> accepted_tangential;
+    /// slip_cone_factor() per interface node, of the last update.
+    std::vector<double> cone_factor;
 
     struct FrictionState : public State
     {

@@ -57,8 +57,9 @@ namespace contact_fem
     /// eps_j D_j grad g_j grad g_j^T into the matrix and -eps_j D_j g_j(0)
     /// grad g_j into the right-hand side, per active node.
     void
-    assemble(const ContactInterface<dim>    &interface,
+    assemble(const ContactInterface<dim>     &interface,
              const AffineConstraints<double> &constraints,
+             const AffineConstraints<double> &test_constraints,
              const IndexSet                  &owned,
              TrilinosWrappers::SparseMatrix  &matrix,
              TrilinosWrappers::MPI::Vector   &rhs) const override;

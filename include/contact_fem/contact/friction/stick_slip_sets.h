@@ -3,8 +3,11 @@
 #ifndef contact_fem_stick_slip_sets_h
 #define contact_fem_stick_slip_sets_h
 
+#include <deal.II/base/tensor.h>
+
 #include <contact_fem/contact/contact_interface.h>
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -25,9 +28,26 @@ namespace contact_fem
     return true;
   }
 
-  /// The weighted slip of slave node @p s along @p tau from the interface
-  /// displacement @p from to @p to: tau . (du_j - sum_l M_jl / D_j du_l),
+  /// The weighted relative displacement of slave node @p s from the
+  /// interface displacement @p from to @p to: du_j - sum_l M_jl / D_j du_l,
   /// the slave relative to its mortar image on the master.
+  template <int dim>
+  Tensor<1, dim>
+  weighted_relative_displacement(const ContactInterface<dim>                     &interface,
+                                 const typename ContactInterface<dim>::SlaveNode &s,
+                                 const std::vector<double>                       &from,
+                                 const std::vector<double>                       &to)
+  {
+    Tensor<1, dim> relative =
+      interface.displacement(s.node, to) - interface.displacement(s.node, from);
+    for (const auto &[m, value] : s.M)
+      relative -=
+        (value / s.D) * (interface.displacement(m, to) - interface.displacement(m, from));
+    return relative;
+  }
+
+  /// The weighted slip of slave node @p s along @p tau:
+  /// tau . weighted_relative_displacement().
   template <int dim>
   double
   weighted_slip(const ContactInterface<dim>                     &interface,
@@ -36,19 +56,70 @@ namespace contact_fem
                 const std::vector<double>                       &to,
                 const Tensor<1, dim>                            &tau)
   {
-    Tensor<1, dim> relative =
-      interface.displacement(s.node, to) - interface.displacement(s.node, from);
-    for (const auto &[m, value] : s.M)
-      relative -=
-        (value / s.D) * (interface.displacement(m, to) - interface.displacement(m, from));
-    return relative * tau;
+    return weighted_relative_displacement(interface, s, from, to) * tau;
   }
 
   /// A tangential quantity of a node (traction, slip, slip direction): its
-  /// dim - 1 components in the node's tangent frame; in 2D one, along
-  /// ContactFormulation::tangent().
+  /// dim - 1 components in the node's tangent frame (tangent_frame()); in
+  /// 2D one, along ContactFormulation::tangent().
   template <int dim>
   using TangentialVector = Tensor<1, dim - 1>;
+
+  /**
+   * The orthonormal tangents of the frame of a node with unit normal @p n.
+   * 2D: the normal turned counterclockwise (ContactFormulation::tangent()).
+   * 3D: tau_1 = the x axis projected onto the tangent plane (the y axis
+   * where n is within 37 degrees of +-x), tau_2 = n x tau_1. The frame only
+   * stores the components of a node's tangential state, which is isotropic
+   * (Coulomb's disc), so no result depends on this choice; it is a fixed
+   * function of n, so a node keeps its frame while its normal does.
+   */
+  template <int dim>
+  std::array<Tensor<1, dim>, dim - 1>
+  tangent_frame(const Tensor<1, dim> &n)
+  {
+    std::array<Tensor<1, dim>, dim - 1> frame;
+    if constexpr (dim == 2)
+      {
+        frame[0][0] = -n[1];
+        frame[0][1] = n[0];
+      }
+    else
+      {
+        Tensor<1, dim> axis;
+        axis[std::abs(n[0]) > 0.8 ? 1 : 0] = 1.;
+        frame[0] = axis - (axis * n) * n;
+        frame[0] /= frame[0].norm();
+        frame[1] = cross_product_3d(n, frame[0]);
+      }
+    return frame;
+  }
+
+  /// The global vector of the tangential quantity @p t of a node with unit
+  /// normal @p n.
+  template <int dim>
+  Tensor<1, dim>
+  to_global(const TangentialVector<dim> &t, const Tensor<1, dim> &n)
+  {
+    const auto     frame = tangent_frame(n);
+    Tensor<1, dim> result;
+    for (unsigned int k = 0; k < dim - 1; ++k)
+      result += t[k] * frame[k];
+    return result;
+  }
+
+  /// The components of @p v in the tangent frame of unit normal @p n (its
+  /// normal part drops out).
+  template <int dim>
+  TangentialVector<dim>
+  to_frame(const Tensor<1, dim> &v, const Tensor<1, dim> &n)
+  {
+    const auto            frame = tangent_frame(n);
+    TangentialVector<dim> result;
+    for (unsigned int k = 0; k < dim - 1; ++k)
+      result[k] = v * frame[k];
+    return result;
+  }
 
   /// The magnitude of @p t (in 2D |t[0]|, exactly).
   template <int dim>
@@ -59,6 +130,33 @@ namespace contact_fem
       return std::abs(t[0]);
     else
       return t.norm();
+  }
+
+  /// The unit direction of the trial traction @p trial of length @p size
+  /// (2D: its sign, + for zero; 3D: the first tangent for zero), divided
+  /// component by component: Tensor / double multiplies by the reciprocal,
+  /// which leaves a 2D sign 1 - 1 ulp.
+  template <int dim>
+  TangentialVector<dim>
+  unit_direction(const TangentialVector<dim> &trial, const double size)
+  {
+    TangentialVector<dim> direction;
+    for (unsigned int k = 0; k < dim - 1; ++k)
+      direction[k] = size > 0. ? trial[k] / size : (k == 0 ? 1. : 0.);
+    return direction;
+  }
+
+  /// Whether a node's stick/slip state changed from @p old to @p now: in
+  /// 2D any change of the sign, in 3D only stick <-> slip (the direction
+  /// turns continuously and the Newton iteration linearises it).
+  template <int dim>
+  bool
+  stick_slip_changed(const TangentialVector<dim> &old, const TangentialVector<dim> &now)
+  {
+    if constexpr (dim == 2)
+      return now != old;
+    else
+      return (now.norm_square() == 0.) != (old.norm_square() == 0.);
   }
 
   /**
@@ -114,14 +212,18 @@ namespace contact_fem
     }
 
     /// One code per node for the detection of a cycling iteration:
-    /// 0 inactive, 1 stick, 2 / 3 slip along + / - the first tangent.
+    /// 0 inactive, 1 stick, 2 / 3 slip along + / - the tangent (2D); in 3D
+    /// 2 for slip in any direction (the direction turns continuously, and
+    /// the Newton iteration linearises it).
     std::vector<int>
     codes(const std::vector<bool> &active) const
     {
       std::vector<int> result(direction.size(), 0);
       for (unsigned int n = 0; n < direction.size(); ++n)
         if (active[n])
-          result[n] = direction[n].norm_square() == 0. ? 1 : (direction[n][0] > 0 ? 2 : 3);
+          result[n] = direction[n].norm_square() == 0. ?
+                        1 :
+                        (dim == 3 || direction[n][0] > 0 ? 2 : 3);
       return result;
     }
   };
