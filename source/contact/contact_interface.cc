@@ -237,6 +237,11 @@ namespace contact_fem
     dof_position.clear();
     for (unsigned int i = 0; i < interface_dofs.size(); ++i)
       dof_position[interface_dofs[i]] = i;
+    fixed_positions.assign(interface_dofs.size(), false);
+    for (const auto &node : nodes)
+      for (unsigned int d = 0; d < dim; ++d)
+        if (node.fixed[d])
+          fixed_positions[dof_position[node.dofs[d]]] = true;
     find_hanging_vertices(hanging);
     slave_nodes.clear();
     hanging_slave_vertices.clear();

@@ -163,6 +163,14 @@ namespace contact_fem
       return dof_position.at(dof);
     }
 
+    /// Whether the DoF at @p position of dofs() is a Dirichlet component
+    /// (Node::fixed), on every rank.
+    bool
+    dof_fixed(const unsigned int position) const
+    {
+      return fixed_positions[position];
+    }
+
     /// The number of slave nodes that carry a multiplier (first) and of
     /// hanging slave vertices (second).
     std::pair<unsigned int, unsigned int>
@@ -410,6 +418,7 @@ namespace contact_fem
     std::vector<double>                                 reach_of_search;
     std::vector<types::global_dof_index>               interface_dofs;
     std::map<types::global_dof_index, unsigned int>     dof_position;
+    std::vector<bool>                                   fixed_positions; ///< by position in dofs()
     IndexSet                                            owned_dofs;
     MPI_Comm                                            communicator;
   };

@@ -200,6 +200,41 @@ namespace contact_fem
   }
 
   template <int dim>
+  void
+  FrictionlessFormulation<dim>::eliminate_fixed(const ContactInterface<dim>          &interface,
+                                                const std::vector<double>            &fixed_values,
+                                                std::vector<types::global_dof_index> &dofs,
+                                                FullMatrix<double>                   &matrix,
+                                                Vector<double>                       &rhs) const
+  {
+    std::vector<unsigned int> kept;
+    for (unsigned int a = 0; a < dofs.size(); ++a)
+      {
+        const unsigned int position = interface.position(dofs[a]);
+        if (!interface.dof_fixed(position))
+          kept.push_back(a);
+        else
+          for (unsigned int b = 0; b < dofs.size(); ++b)
+            rhs(b) -= matrix(b, a) * fixed_values[position];
+      }
+    if (kept.size() == dofs.size())
+      return;
+    FullMatrix<double>                   reduced_matrix(kept.size(), kept.size());
+    Vector<double>                       reduced_rhs(kept.size());
+    std::vector<types::global_dof_index> reduced_dofs(kept.size());
+    for (unsigned int i = 0; i < kept.size(); ++i)
+      {
+        reduced_dofs[i] = dofs[kept[i]];
+        reduced_rhs(i)  = rhs(kept[i]);
+        for (unsigned int j = 0; j < kept.size(); ++j)
+          reduced_matrix(i, j) = matrix(kept[i], kept[j]);
+      }
+    dofs   = std::move(reduced_dofs);
+    matrix = std::move(reduced_matrix);
+    rhs    = std::move(reduced_rhs);
+  }
+
+  template <int dim>
   unsigned int
   FrictionlessFormulation<dim>::eliminated_component(
     const ContactInterface<dim>                     &interface,
