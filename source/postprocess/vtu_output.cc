@@ -13,6 +13,7 @@
 #include <iomanip>
 #include <memory>
 #include <sstream>
+#include <type_traits>
 #include <unordered_map>
 
 namespace contact_fem
@@ -269,10 +270,11 @@ namespace contact_fem
             traction[s.node] = contact.traction(s);
         }
       const auto own_fields = contact.nodal_fields(interface);
-      auto value = [&](const std::vector<double> &field, const unsigned int n) {
+      // A nodal value of @p field (numbers or vectors) at node n.
+      auto value = [&](const auto &field, const unsigned int n) {
         if (interface.nodes[n].parents.empty())
           return field[n];
-        double v = 0.;
+        std::decay_t<decltype(field[n])> v{};
         for (const auto &[source, weight] : interface.nodes[n].parents)
           v += weight * field[source];
         return v;
@@ -325,14 +327,7 @@ namespace contact_fem
           }
         out << "</DataArray>\n";
       };
-      vector("traction", [&](const unsigned int n) {
-        if (interface.nodes[n].parents.empty())
-          return traction[n];
-        Tensor<1, dim> t;
-        for (const auto &[source, weight] : interface.nodes[n].parents)
-          t += weight * traction[source];
-        return t;
-      });
+      vector("traction", [&](const unsigned int n) { return value(traction, n); });
       // The points less this are the reference positions.
       vector("displacement", [&](const unsigned int n) {
         return interface.displacement(n, state.displacement);

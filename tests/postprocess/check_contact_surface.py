@@ -14,18 +14,14 @@ at the same current and reference positions.
 """
 import csv
 import os
-import subprocess
 import sys
 import xml.etree.ElementTree as ET
 
+from scene_run import run_scene
+
 contact_fem, scene = sys.argv[1:3]
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-run = subprocess.run([contact_fem, scene, "--set", "Output directory=results",
-                      "--set", "Output/Write VTU=true", "--set", "Output/Write pressure profile=true",
-                      "--set", "Load stepping/Number of load steps=2"],
-                     env=env, capture_output=True, text=True)
-if run.returncode != 0:
-    sys.exit("contact_fem failed:\n" + run.stdout + run.stderr)
+run_scene(contact_fem, scene, "Output directory=results", "Output/Write VTU=true",
+          "Output/Write pressure profile=true", "Load stepping/Number of load steps=2")
 
 failures = []
 

@@ -18,24 +18,17 @@ import json
 import math
 import os
 import shutil
-import subprocess
 import sys
 
+from scene_run import run, run_scene
+
 contact_fem, plot_script, adaptive_scene, patch_scene = sys.argv[1:5]
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 failures = []
 
 
 def check(condition, what):
     if not condition:
         failures.append(what)
-
-
-def run(command):
-    result = subprocess.run(command, env=env, capture_output=True, text=True)
-    if result.returncode != 0:
-        sys.exit(f"{' '.join(command)} failed:\n{result.stdout}{result.stderr}")
-    return result.stdout
 
 
 def rows(directory, name):
@@ -52,7 +45,7 @@ def plots(directory):
 
 # 1. The adaptive scene.
 shutil.rmtree("adaptive", ignore_errors=True)
-run([contact_fem, adaptive_scene, "--set", "Output directory=adaptive"])
+run_scene(contact_fem, adaptive_scene, "Output directory=adaptive")
 convergence = rows("adaptive", "convergence.csv")
 forces = rows("adaptive", "forces.csv")
 check(len(convergence) == 3, f"convergence.csv: {len(convergence)} rows, expected 3")
@@ -72,9 +65,8 @@ plots("adaptive")
 
 # 2. The patch test with a probe.
 shutil.rmtree("patch", ignore_errors=True)
-run([contact_fem, patch_scene, "--set", "Output directory=patch",
-     "--set", "Output/Displacement probes=2 @ 1, 1",
-     "--set", "Load stepping/Number of load steps=2"])
+run_scene(contact_fem, patch_scene, "Output directory=patch",
+          "Output/Displacement probes=2 @ 1, 1", "Load stepping/Number of load steps=2")
 with open(os.path.join("patch", "summary.json")) as f:
     probe = json.load(f)["cycles"][-1]["displacement_probes"][0]["displacement"]
 last = rows("patch", "forces.csv")[-1]

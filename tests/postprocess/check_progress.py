@@ -9,26 +9,21 @@ SCENE in 4 load steps: after each converged step a line
 k = 1..4 in order, T not decreasing, and ', about R s to go' on every line
 but the last.
 """
-import os
 import re
-import subprocess
 import sys
 
+from scene_run import run_scene
+
 contact_fem, scene = sys.argv[1:3]
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-run = subprocess.run([contact_fem, scene, "--set", "Output directory=results",
-                      "--set", "Output/Print timing=true",
-                      "--set", "Load stepping/Number of load steps=4"],
-                     env=env, capture_output=True, text=True)
-if run.returncode != 0:
-    sys.exit("contact_fem failed:\n" + run.stdout + run.stderr)
+stdout = run_scene(contact_fem, scene, "Output directory=results", "Output/Print timing=true",
+                   "Load stepping/Number of load steps=4")
 pattern = re.compile(r"  Progress: load step (\d+) of (\d+) of cycle 0 done, ([0-9.e+-]+) s "
                      r"in this cycle(, about ([0-9.e+-]+) s to go)?$")
-lines = [pattern.match(line) for line in run.stdout.splitlines() if "Progress:" in line]
+lines = [pattern.match(line) for line in stdout.splitlines() if "Progress:" in line]
 failures = []
 if any(m is None for m in lines):
     failures.append("a progress line of another form:\n" +
-                    "\n".join(l for l in run.stdout.splitlines() if "Progress:" in l))
+                    "\n".join(l for l in stdout.splitlines() if "Progress:" in l))
 else:
     steps = [(int(m.group(1)), int(m.group(2))) for m in lines]
     if steps != [(k, 4) for k in range(1, 5)]:

@@ -326,7 +326,7 @@ namespace contact_fem
                                       const bool                   all_candidates) const
   {
     if (!all_candidates)
-      last_fixed_values = fixed_values;
+      this->dirichlet_values = fixed_values;
     // For the sparsity: the stick lines couple a slave node with every
     // component of its masters (the gap line drops the components normal
     // to n), a superset of the slip lines' couplings.
@@ -467,7 +467,7 @@ namespace contact_fem
             if (master.fixed[d])
               {
                 fixed_slip -= value / s.D * e[d] *
-                              last_fixed_values[interface.position(master.dofs[d])];
+                              this->dirichlet_values[interface.position(master.dofs[d])];
                 continue;
               }
             dofs.push_back(master.dofs[d]);

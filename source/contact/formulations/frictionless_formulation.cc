@@ -202,7 +202,6 @@ namespace contact_fem
   template <int dim>
   void
   FrictionlessFormulation<dim>::eliminate_fixed(const ContactInterface<dim>          &interface,
-                                                const std::vector<double>            &fixed_values,
                                                 std::vector<types::global_dof_index> &dofs,
                                                 FullMatrix<double>                   &matrix,
                                                 Vector<double>                       &rhs) const
@@ -215,7 +214,7 @@ namespace contact_fem
           kept.push_back(a);
         else
           for (unsigned int b = 0; b < dofs.size(); ++b)
-            rhs(b) -= matrix(b, a) * fixed_values[position];
+            rhs(b) -= matrix(b, a) * dirichlet_values[position];
       }
     if (kept.size() == dofs.size())
       return;

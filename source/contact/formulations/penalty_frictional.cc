@@ -293,7 +293,7 @@ namespace contact_fem
                   }
               }
           }
-        this->eliminate_fixed(interface, this->last_fixed_values, dofs, local_matrix, local_rhs);
+        this->eliminate_fixed(interface, dofs, local_matrix, local_rhs);
         constraints.distribute_local_to_global(local_matrix, local_rhs, dofs, matrix, rhs);
       }
   }

@@ -103,7 +103,7 @@ namespace contact_fem
     if (all_candidates)
       this->add_gap_constraints(interface, fixed_values, constraints, false);
     else
-      last_fixed_values = fixed_values;
+      this->dirichlet_values = fixed_values;
   }
 
   template <int dim>
@@ -153,7 +153,7 @@ namespace contact_fem
               local_matrix(a, b) = stiffness * gradient[a] * gradient[b];
             local_rhs(a) = -stiffness * g0 * gradient[a];
           }
-        this->eliminate_fixed(interface, last_fixed_values, dofs, local_matrix, local_rhs);
+        this->eliminate_fixed(interface, dofs, local_matrix, local_rhs);
         constraints.distribute_local_to_global(local_matrix, local_rhs, dofs, matrix, rhs);
       }
   }

@@ -251,9 +251,6 @@ namespace contact_fem
     std::vector<TangentialVector<dim>> released_tangential;
     /// beta of the cone term per interface node (3D slip nodes).
     std::vector<double> cone_stiffness;
-    /// The Dirichlet values at the interface DoFs of the last
-    /// add_constraints() (the fixed masters of the cone term).
-    mutable std::vector<double> last_fixed_values;
 
     struct FrictionState : public State
     {

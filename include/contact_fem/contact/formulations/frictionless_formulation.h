@@ -117,17 +117,23 @@ namespace contact_fem
     }
 
     /// A local system over interface DoFs @p dofs without its Dirichlet
-    /// components: their values (@p fixed_values, by position in
-    /// interface.dofs()) times their columns move to @p rhs, their rows
-    /// and columns go. For assemblies that add to the matrix directly: the
-    /// constraints of a rank do not know the Dirichlet DoFs of another
-    /// rank's part of a master surface, whose rows would be assembled.
+    /// components: their values (dirichlet_values) times their columns
+    /// move to @p rhs, their rows and columns go. For assemblies that add
+    /// to the matrix directly: the constraints of a rank do not know the
+    /// Dirichlet DoFs of another rank's part of a master surface, whose
+    /// rows would be assembled.
     void
     eliminate_fixed(const ContactInterface<dim>          &interface,
-                    const std::vector<double>            &fixed_values,
                     std::vector<types::global_dof_index> &dofs,
                     FullMatrix<double>                   &matrix,
                     Vector<double>                       &rhs) const;
+
+    /// The Dirichlet values at the interface DoFs (by position in
+    /// interface.dofs()) of the present Newton iteration, kept by the
+    /// add_constraints() of a formulation whose assembly eliminates
+    /// Dirichlet components itself (eliminate_fixed(), the frictional
+    /// cone term).
+    mutable std::vector<double> dirichlet_values;
 
     /// The DoFs of slave node @p s and its masters, with grad g_j there:
     /// -n_j at the slave node, n_j M_jl / D_j at master l.

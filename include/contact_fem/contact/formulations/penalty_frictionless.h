@@ -90,11 +90,6 @@ namespace contact_fem
                   const Json                  &reaction,
                   std::ostream                &out) const override;
 
-  protected:
-    /// The Dirichlet values of the interface DoFs of the present Newton
-    /// iteration (add_constraints()), for assemble().
-    mutable std::vector<double> last_fixed_values;
-
   private:
     /// Bussetta-Marceau-Ponthot update of a nodal penalty @p eps from the
     /// penetrations (> 0 when overlapping) of this and the previous iteration.
