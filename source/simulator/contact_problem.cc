@@ -8,6 +8,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <contact_fem/simulator/contact_problem.h>
+#include <contact_fem/contact/friction/friction_capacity.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/core/interruption.h>
 #include <contact_fem/core/parameters.h>
@@ -980,6 +981,8 @@ namespace contact_fem
       }
     catch (const LinearSolverFailure &e)
       {
+        if (e.singular && contact && contact->slides_everywhere())
+          throw NewtonFailure(where + ": " + e.what() + ": " + exceeded_friction_capacity({}));
         throw NewtonFailure(where + ": " + e.what() + "." +
                               (e.singular ? singular_system_hint() : precision_hint()),
                             false);
@@ -988,12 +991,13 @@ namespace contact_fem
       {
         const std::string what = e.what();
         const auto        pos  = what.find("the linear system is singular");
-        throw NewtonFailure(where + ": " +
-                              (pos != std::string::npos ?
-                                 what.substr(pos, what.find(')', pos) - pos + 1) :
-                                 std::string("the linear solver failed")) +
-                              "." + singular_system_hint(),
-                            false);
+        const std::string cause =
+          pos != std::string::npos ? what.substr(pos, what.find(')', pos) - pos + 1) :
+                                     std::string("the linear solver failed");
+        // Split: an overshooting iterate near a load reversal slips everywhere.
+        if (pos != std::string::npos && contact && contact->slides_everywhere())
+          throw NewtonFailure(where + ": " + cause + ": " + exceeded_friction_capacity({}));
+        throw NewtonFailure(where + ": " + cause + "." + singular_system_hint(), false);
       }
     // Both iterates satisfy the hanging-node and Dirichlet constraints, and
     // so does their combination.
@@ -1092,6 +1096,11 @@ namespace contact_fem
         if (iteration > 0 && contact && contact->n_active() == 0 &&
             !contact_parameters.allow_loss_of_contact)
           throw NewtonFailure(no_contact_message(at, true, iteration == 1), false);
+        // With every node slipping, a body that only friction holds is free
+        // to slide: the next solve would be (nearly) singular.
+        if (iteration > 0 && contact && contact->slides_everywhere())
+          if (const auto free = problem_traits().unsupported_bodies; !free.empty())
+            throw NewtonFailure(at + ": " + exceeded_friction_capacity(free));
         if (iteration > 0)
           newton_update(at, monitor.displacement_target());
         compute_residual();

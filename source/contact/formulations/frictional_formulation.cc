@@ -1,6 +1,8 @@
 #include <contact_fem/contact/formulations/frictional_formulation.h>
 #include <contact_fem/contact/formulations/penalty_frictionless.h>
 
+#include <algorithm>
+
 namespace contact_fem
 {
   template <int dim, class NormalPart>
@@ -14,6 +16,17 @@ namespace contact_fem
     last_step_slip.assign(n, TangentialVector<dim>());
     converged_displacement.assign(interface.dofs().size(), 0.);
     last_stick_slip_changes = 0;
+  }
+
+  template <int dim, class NormalPart>
+  bool
+  FrictionalFormulation<dim, NormalPart>::slides_everywhere() const
+  {
+    const bool any_friction = std::any_of(laws.begin(), laws.end(), [](const auto &law) {
+      return !law->frictionless();
+    });
+    return !pure_slip && any_friction && n_stick() == 0 && n_slip() > 0 &&
+           n_slip() == this->n_active();
   }
 
   template <int dim, class NormalPart>

@@ -185,6 +185,17 @@ namespace contact_fem
       return false;
     }
 
+    /// Whether every active node slips under a law with friction (none
+    /// sticks, none is held by a support): the contact then holds the
+    /// bodies tangentially nowhere, and a body held by nothing else is
+    /// free to slide (the load exceeds the friction capacity, or an
+    /// iterate overshot). False by default.
+    virtual bool
+    slides_everywhere() const
+    {
+      return false;
+    }
+
     /// The formulation's own cells of the Newton table (after the active
     /// count): the header, and the row of the current iterate at
     /// @p iteration. None by default.

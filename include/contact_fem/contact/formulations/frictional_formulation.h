@@ -59,6 +59,11 @@ namespace contact_fem
       return sets.sticks(n, this->active);
     }
 
+    /// Every active node slips under a law with friction (not with Pure
+    /// slip, which asks for that).
+    bool
+    slides_everywhere() const override;
+
     std::string
     iteration_header() const override;
 
