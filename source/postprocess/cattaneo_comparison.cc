@@ -64,7 +64,8 @@ namespace contact_fem
                      const std::vector<double>     *tangential = nullptr)
     {
       const double E_star = interface.contact_modulus(0);
-      const double mu     = analytical.friction_coefficient;
+      const double mu     = analytical.friction_coefficient; // Tresca: the bound g
+      const bool   tresca = analytical.tresca;
       std::vector<CattaneoNode> nodes;
       for (const auto &s : interface.slave_nodes)
         if (s.paired)
@@ -88,7 +89,9 @@ namespace contact_fem
       // The same tolerance as for "no tangential load" in the comparison.
       std::vector<double> path = load_path;
       path.push_back(Q);
-      const TangentialPath history = classify_tangential_path(path, 1e-6 * mu * P);
+      const double capacity =
+        CattaneoSolution(P, 0., mu, analytical.radius, E_star, tresca).capacity();
+      const TangentialPath history = classify_tangential_path(path, 1e-6 * capacity);
       if (history.kind == TangentialPath::Kind::none)
         return Json::object()
           .set("mu", mu)
@@ -100,10 +103,10 @@ namespace contact_fem
       if (history.kind == TangentialPath::Kind::unloading)
         return to_json(compare_with_cattaneo(nodes,
                                              CattaneoSolution(P, history.Q, history.Q_star, mu,
-                                                              analytical.radius, E_star),
+                                                              analytical.radius, E_star, tresca),
                                              history.direction));
       return to_json(compare_with_cattaneo(
-        nodes, CattaneoSolution(P, std::abs(Q), mu, analytical.radius, E_star)));
+        nodes, CattaneoSolution(P, std::abs(Q), mu, analytical.radius, E_star, tresca)));
     }
 
     template <int dim>

@@ -1,6 +1,7 @@
 #include <deal.II/base/numbers.h>
 
 #include <contact_fem/postprocess/cattaneo_solution.h>
+#include <contact_fem/postprocess/cattaneo_tresca.h>
 #include <contact_fem/core/format.h>
 
 #include <algorithm>
@@ -14,14 +15,24 @@ namespace contact_fem
                                      const double Q,
                                      const double mu,
                                      const double radius,
-                                     const double E_star)
+                                     const double E_star,
+                                     const bool   tresca)
     : P(P)
     , Q(Q)
-    , mu(mu)
+    , mu(tresca ? 0. : mu)
+    , g(tresca ? mu : 0.)
   {
     a     = std::sqrt(4. * P * radius / (dealii::numbers::PI * E_star));
     p_max = 2. * P / (dealii::numbers::PI * a);
-    c     = Q < mu * P ? a * std::sqrt(1. - Q / (mu * P)) : 0.;
+    c     = stick_half_width(Q);
+  }
+
+  double
+  CattaneoSolution::stick_half_width(const double load) const
+  {
+    if (g > 0.)
+      return tresca_stick_half_width(a, load, g);
+    return load < mu * P ? a * std::sqrt(1. - load / (mu * P)) : 0.;
   }
 
   CattaneoSolution::CattaneoSolution(const double P,
@@ -29,16 +40,16 @@ namespace contact_fem
                                      const double Q_star,
                                      const double mu,
                                      const double radius,
-                                     const double E_star)
-    : CattaneoSolution(P, Q_star, mu, radius, E_star)
+                                     const double E_star,
+                                     const bool   tresca)
+    : CattaneoSolution(P, Q_star, mu, radius, E_star, tresca)
   {
     this->Q      = Q;
     unloading    = true;
     this->Q_star = Q_star;
     c_star       = c;
     // The second term is a monotone solution for (Q_star - Q) / 2.
-    const double half_change = 0.5 * (Q_star - Q);
-    c = half_change < mu * P ? a * std::sqrt(1. - half_change / (mu * P)) : 0.;
+    c = stick_half_width(0.5 * (Q_star - Q));
   }
 
   double
@@ -50,6 +61,8 @@ namespace contact_fem
   double
   CattaneoSolution::monotone_traction(const double x, const double stick) const
   {
+    if (g > 0.)
+      return tresca_traction(x, a, stick, g);
     if (std::abs(x) >= a)
       return 0.;
     double q = mu * pressure(x);
@@ -154,8 +167,8 @@ namespace contact_fem
     // antisymmetric sum, the normal phase) q vanishes: the error is then
     // relative to the slip bound mu p_max instead.
     constexpr double no_tangential_load = 1e-6;
-    const double bound = exact.mu * exact.p_max;
-    if (!exact.unloading && exact.Q <= no_tangential_load * exact.mu * exact.P)
+    const double bound = exact.largest_bound();
+    if (!exact.unloading && exact.Q <= no_tangential_load * exact.capacity())
       norm = bound * bound * weights;
     result.tangential_l2_relative_error = norm > 0. ? std::sqrt(error / norm) : 0.;
     return result;
@@ -167,14 +180,17 @@ namespace contact_fem
     const CattaneoSolution &exact = comparison.exact;
     const double            a     = exact.a;
     Json                    result = Json::object();
-    result.set("mu", exact.mu)
+    // Under Tresca the bound g and Q over the capacity 2 a g instead.
+    const bool tresca = exact.g > 0.;
+    result.set(tresca ? "g" : "mu", tresca ? exact.g : exact.mu)
       .set("P", exact.P)
       .set("Q", exact.Q)
       .set("load_path", exact.unloading ? "unloading" : "monotone");
     if (exact.unloading)
       result.set("Q_star", exact.Q_star).set("c_star", exact.c_star);
     result
-      .set("Q_over_mu_P", exact.mu * exact.P > 0. ? exact.Q / (exact.mu * exact.P) : 0.)
+      .set(tresca ? "Q_over_2_a_g" : "Q_over_mu_P",
+           exact.capacity() > 0. ? exact.Q / exact.capacity() : 0.)
       .set("a", a)
       .set("p_max", exact.p_max)
       .set("c", exact.c)
@@ -196,8 +212,10 @@ namespace contact_fem
   {
     const auto value = [&](const char *key) { return cattaneo[key].number_value(); };
     std::ostringstream out;
-    out << std::setprecision(6) << "    Cattaneo mu, P, Q:            " << value("mu") << ", "
-        << value("P") << ", " << value("Q") << std::endl;
+    const bool tresca = !std::isnan(value("g"));
+    out << std::setprecision(6)
+        << (tresca ? "    Cattaneo Tresca g, P, Q:      " : "    Cattaneo mu, P, Q:            ")
+        << value(tresca ? "g" : "mu") << ", " << value("P") << ", " << value("Q") << std::endl;
     // cattaneo_results() gives no c for a path without a solution.
     if (std::isnan(value("c")))
       {
@@ -210,8 +228,8 @@ namespace contact_fem
       out << "    unloaded from the peak Q*:    " << value("Q_star")
           << " (Mindlin-Deresiewicz; c is the stick half-width b)" << std::endl;
     out
-        << "    Cattaneo Q/(mu P):            " << value_or_ok(value("Q_over_mu_P"), 1e-6)
-        << std::endl
+        << (tresca ? "    Cattaneo Q/(2 a g):           " : "    Cattaneo Q/(mu P):            ")
+        << value_or_ok(value(tresca ? "Q_over_2_a_g" : "Q_over_mu_P"), 1e-6) << std::endl
         << std::setprecision(4)
         << "    stick zone c_h/a vs c/a:      " << value("c_h_over_a") << " vs "
         << value("c_over_a") << std::endl

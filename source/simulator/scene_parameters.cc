@@ -277,7 +277,9 @@ namespace contact_fem
                       "sqrt(1 - Q/(mu P)), with P and Q the transmitted normal "
                       "and tangential contact forces and mu the Coulomb "
                       "coefficient of Contact/Friction (which must then be one "
-                      "'coulomb MU' law, or give the first pair such a law); "
+                      "'coulomb MU' law, or give the first pair such a law; "
+                      "under a 'tresca G' law instead, c/a = sqrt(1 - (Q/(2 a "
+                      "G))^2) and the slip zones carry G); "
                       "compares the stick zone and the tangential traction. "
                       "'hertz sphere' = 3D Hertz contact of a sphere of radius R "
                       "on a half-space, axis parallel to z through (Center, "
@@ -466,22 +468,22 @@ namespace contact_fem
       }
     AssertThrow(radius > 0., ExcMessage("Analytical solution/Radius: expected > 0."));
     friction_coefficient = std::numeric_limits<double>::quiet_NaN();
+    tresca               = false;
     if (type == "cattaneo")
       {
         // mu of the law the run uses: one source, no second key to keep
         // consistent with it. The comparison is of the first pair.
         const auto laws    = FrictionParameters::parse_laws(prm);
-        const bool coulomb = !laws.empty() &&
-                             laws.front()->kind() == FrictionalLaw::Kind::coulomb &&
-                             laws.front()->parameter() > 0.;
-        AssertThrow(coulomb,
+        const bool friction = !laws.empty() && laws.front()->parameter() > 0.;
+        AssertThrow(friction,
                     ExcMessage("Analytical solution/Type = cattaneo: needs a Coulomb law "
-                               "with mu > 0 in Contact/Friction (e.g. 'coulomb 0.2') for "
-                               "the first contact pair, " +
+                               "with mu > 0 or a Tresca law with g > 0 in Contact/Friction "
+                               "(e.g. 'coulomb 0.2') for the first contact pair, " +
                                (laws.empty() ? std::string("found none (the key is empty)") :
                                                "found '" + laws.front()->description() + "'") +
                                "."));
         friction_coefficient = laws.front()->parameter();
+        tresca               = laws.front()->kind() == FrictionalLaw::Kind::tresca;
       }
   }
 

@@ -21,10 +21,13 @@ namespace contact_fem
    *   c/a  = sqrt(1 - Q / (mu P)),
    *   q(x) = mu p_max [sqrt(1 - x^2/a^2) - (c/a) sqrt(1 - x^2/c^2)]  |x| < c (stick),
    *   q(x) = mu p(x)                                                 c <= |x| < a (slip).
+   * Under Tresca friction (bound g) the same with cattaneo_tresca.h:
+   * c/a = sqrt(1 - (Q / (2 a g))^2), q = g in the slip zones.
    */
   struct CattaneoSolution
   {
     double P = 0., Q = 0., mu = 0.;  ///< loads per unit thickness (Q >= 0), Coulomb mu
+    double g = 0.;                   ///< > 0: the Tresca bound instead of mu (then 0)
     double a = 0., p_max = 0., c = 0.;
     /// Mindlin-Deresiewicz unloading from the peak Q_star (> 0) to Q (in
     /// [-Q_star, Q_star], along the peak's direction): the traction is
@@ -36,19 +39,36 @@ namespace contact_fem
     double Q_star = 0., c_star = 0.;
 
     CattaneoSolution() = default;
-    /// Monotone loading; Q >= mu P (full slip) gives c = 0.
+    /// Monotone loading; Q >= mu P (full slip) gives c = 0. With @p tresca,
+    /// @p mu is the Tresca bound g.
     CattaneoSolution(const double P,
                      const double Q,
                      const double mu,
                      const double radius,
-                     const double E_star);
+                     const double E_star,
+                     const bool   tresca = false);
     /// Unloading from @p Q_star to @p Q (Mindlin-Deresiewicz).
     CattaneoSolution(const double P,
                      const double Q,
                      const double Q_star,
                      const double mu,
                      const double radius,
-                     const double E_star);
+                     const double E_star,
+                     const bool   tresca = false);
+
+    /// The largest tangential load: mu P, or 2 a g under Tresca.
+    double
+    capacity() const
+    {
+      return g > 0. ? 2. * a * g : mu * P;
+    }
+
+    /// The largest slip bound: mu p_max, or g.
+    double
+    largest_bound() const
+    {
+      return g > 0. ? g : mu * p_max;
+    }
 
     double
     pressure(const double x) const;
@@ -62,6 +82,10 @@ namespace contact_fem
     /// q_C(x) of a monotone load whose stick zone is |x| < @p stick.
     double
     monotone_traction(const double x, const double stick) const;
+
+    /// The stick half-width of a monotone load @p load.
+    double
+    stick_half_width(const double load) const;
   };
 
   /**

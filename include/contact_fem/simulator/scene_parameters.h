@@ -88,8 +88,10 @@ namespace contact_fem
     /// force over it.
     double symmetry_fraction = 1.;
     /// Coulomb coefficient of the Cattaneo-Mindlin solution (type
-    /// "cattaneo"): that of Contact/Friction (NaN otherwise).
+    /// "cattaneo"): that of Contact/Friction (NaN otherwise); with tresca
+    /// the bound g of a Tresca law.
     double friction_coefficient = std::numeric_limits<double>::quiet_NaN();
+    bool   tresca               = false;
     /// Total potential energy of the exact solution, if known (NaN if not):
     /// gives the energy-norm error and the effectivity of the estimate.
     double reference_potential_energy = std::numeric_limits<double>::quiet_NaN();
