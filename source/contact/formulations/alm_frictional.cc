@@ -65,7 +65,16 @@ namespace contact_fem
     // slipping: without the margin round-off would decide, differently on
     // another partition.
     constexpr double on_bound = 1e-10;
-    return size < bound * (1. - on_bound) ? TangentialVector<dim>() : direction;
+    if (size < bound * (1. - on_bound))
+      return TangentialVector<dim>();
+    // A slip node whose trial points back against its slip passes through
+    // stick: after a load reversal the first iterate lets the old slip
+    // nodes slide back freely, c xi carries their trial far past the
+    // opposite bound, and jumping there at once makes the set cycle (the
+    // exact answer keeps most of them stuck).
+    if (sets.direction[s.node] * direction < 0. && !frictionless_law(s))
+      return TangentialVector<dim>();
+    return direction;
   }
 
   template <int dim>
