@@ -107,6 +107,12 @@ namespace contact_fem
     for (const std::string name : {"Fixed", "Prescribed displacement", "Pressure", "Traction"})
       replace("Boundary conditions", name, false, ':', false);
     replace("Boundary conditions", "Fixed points", true, '@', false);
+    prm.enter_subsection("Boundary conditions");
+    std::string rollers;
+    for (const std::string &word : Utilities::split_string_list(prm.get("Rollers"), ';'))
+      rollers += (rollers.empty() ? "" : "; ") + id_of(word, "Boundary conditions/Rollers", false);
+    prm.set("Rollers", rollers);
+    prm.leave_subsection();
     replace("Output", "Displacement probes", true, '@', false);
     replace("Contact", "Pairs", false, ':', true);
     replace("Geometry", "Manifolds", false, ':', false);

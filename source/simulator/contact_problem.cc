@@ -392,6 +392,7 @@ namespace contact_fem
     for (const auto dof : fixed_point_dofs)
       if (!dirichlet_constraints.is_constrained(dof))
         dirichlet_constraints.add_line(dof);
+    inclined_supports.add_constraints(dof_handler, hanging_constraints, dirichlet_constraints);
     dirichlet_constraints.close();
   }
 
@@ -730,9 +731,11 @@ namespace contact_fem
     double local = 0.;
     for (const auto i : owned_dofs)
       if (!dirichlet_constraints.is_constrained(i) && !hanging_constraints.is_constrained(i) &&
+          !inclined_supports.holds(i) &&
           !(interface && std::binary_search(interface->dofs().begin(),
                                             interface->dofs().end(), i)))
         local += residual(i) * residual(i);
+    local += inclined_supports.free_residual_squared(residual);
     double sum = Utilities::MPI::sum(local, comm);
     if (interface)
       for (unsigned int k = 0; k < interface->dofs().size(); ++k)
