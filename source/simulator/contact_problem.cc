@@ -2119,6 +2119,8 @@ namespace contact_fem
     const double potential_energy = strain_energy - external_work;
     cycle_record.set("strain_energy", strain_energy).set("potential_energy", potential_energy);
     print_results(contact_json, reaction_json, hertz_json);
+    if (contact)
+      pcout << checkerboard_warning.check(*interface, *contact, cycle_record);
     if (!probe_dofs.empty())
       cycle_record.set("displacement_probes", probe_results());
     if (contact && !analytical.reference_pressure_profile.empty())
