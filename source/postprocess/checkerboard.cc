@@ -17,7 +17,7 @@ namespace contact_fem
   namespace
   {
     constexpr double       relative_threshold = 0.01;
-    constexpr double       alternating_fraction = 0.3;
+    constexpr double       alternating_fraction = 0.5;
     constexpr unsigned int least_alternating  = 3;
   } // namespace
 

@@ -120,19 +120,14 @@ namespace contact_fem
   }
 
   template <int dim>
-  void
-  InclinedSupports<dim>::add_constraints(const DoFHandler<dim>           &dof_handler,
-                                         const AffineConstraints<double> &hanging,
-                                         AffineConstraints<double>       &dirichlet)
+  std::map<types::global_dof_index,
+           std::pair<std::vector<types::global_dof_index>, std::set<types::boundary_id>>>
+  InclinedSupports<dim>::roller_nodes(const DoFHandler<dim> &dof_handler) const
   {
-    owned_nodes.clear();
-    held.clear();
-    if (normals.empty())
-      return;
-    // The nodes of the roller faces, with the boundaries each lies on.
+    // Keyed by the node's x DoF; its DoFs by component, and its boundaries.
     const auto &fe = dof_handler.get_fe();
-    std::map<types::global_dof_index, std::pair<std::vector<types::global_dof_index>,
-                                                std::set<types::boundary_id>>>
+    std::map<types::global_dof_index,
+             std::pair<std::vector<types::global_dof_index>, std::set<types::boundary_id>>>
                                          nodes;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -153,57 +148,77 @@ namespace contact_fem
                     node.second.insert(cell->face(f)->boundary_id());
                   }
             }
+    return nodes;
+  }
+
+  template <int dim>
+  void
+  InclinedSupports<dim>::constrain_node(const std::vector<types::global_dof_index> &dofs,
+                                        std::vector<Tensor<1, dim>>                 rows,
+                                        const std::vector<bool>                    &fixed,
+                                        AffineConstraints<double> &dirichlet) const
+  {
+    // Reduced row echelon form of the rows n^T on the free components: each
+    // independent row expresses its pivot component by the others (fixed
+    // ones enter through their own lines when the set is closed).
+    std::vector<bool> pivot_column(dim, false);
+    std::vector<int>  pivot(rows.size(), -1);
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      {
+        int best = -1;
+        for (unsigned int d = 0; d < dim; ++d)
+          if (!fixed[d] && !pivot_column[d] &&
+              (best < 0 || std::abs(rows[r][d]) > std::abs(rows[r][best])))
+            best = d;
+        if (best < 0 || std::abs(rows[r][best]) < 1e-8)
+          continue;
+        pivot[r]           = best;
+        pivot_column[best] = true;
+        rows[r] /= rows[r][best];
+        for (unsigned int s = 0; s < rows.size(); ++s)
+          if (s != r)
+            {
+              rows[s] -= rows[s][best] * rows[r];
+              rows[s][best] = 0.;
+            }
+      }
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      if (pivot[r] >= 0)
+        {
+          dirichlet.add_line(dofs[pivot[r]]);
+          for (unsigned int d = 0; d < dim; ++d)
+            if (static_cast<int>(d) != pivot[r] && std::abs(rows[r][d]) > 1e-13)
+              dirichlet.add_entry(dofs[pivot[r]], dofs[d], -rows[r][d]);
+        }
+  }
+
+  template <int dim>
+  void
+  InclinedSupports<dim>::add_constraints(const DoFHandler<dim>           &dof_handler,
+                                         const AffineConstraints<double> &hanging,
+                                         AffineConstraints<double>       &dirichlet)
+  {
+    owned_nodes.clear();
+    held.clear();
+    if (normals.empty())
+      return;
     const IndexSet &owned = dof_handler.locally_owned_dofs();
-    for (const auto &[first, node] : nodes)
+    for (const auto &[first, node] : roller_nodes(dof_handler))
       {
         const auto &[node_dofs, ids] = node;
         if (hanging.is_constrained(first))
           continue;
-        // Reduced row echelon form of the rows n^T on the free components:
-        // each independent row expresses its pivot component by the others
-        // (fixed ones enter through their own lines when the set is closed).
-        std::vector<Tensor<1, dim>> rows;
+        std::vector<Tensor<1, dim>> directions;
         for (const auto id : ids)
-          rows.push_back(normals.at(id));
-        std::vector<bool> fixed(dim), pivot_column(dim, false);
+          directions.push_back(normals.at(id));
+        std::vector<bool> fixed(dim);
         for (unsigned int d = 0; d < dim; ++d)
           fixed[d] = dirichlet.is_constrained(node_dofs[d]);
-        std::vector<int> pivot(rows.size(), -1);
-        for (unsigned int r = 0; r < rows.size(); ++r)
-          {
-            int best = -1;
-            for (unsigned int d = 0; d < dim; ++d)
-              if (!fixed[d] && !pivot_column[d] &&
-                  (best < 0 || std::abs(rows[r][d]) > std::abs(rows[r][best])))
-                best = d;
-            if (best < 0 || std::abs(rows[r][best]) < 1e-8)
-              continue;
-            pivot[r]           = best;
-            pivot_column[best] = true;
-            rows[r] /= rows[r][best];
-            for (unsigned int s = 0; s < rows.size(); ++s)
-              if (s != r)
-                {
-                  rows[s] -= rows[s][best] * rows[r];
-                  rows[s][best] = 0.;
-                }
-          }
-        for (unsigned int r = 0; r < rows.size(); ++r)
-          if (pivot[r] >= 0)
-            {
-              dirichlet.add_line(node_dofs[pivot[r]]);
-              for (unsigned int d = 0; d < dim; ++d)
-                if (static_cast<int>(d) != pivot[r] && std::abs(rows[r][d]) > 1e-13)
-                  dirichlet.add_entry(node_dofs[pivot[r]], node_dofs[d], -rows[r][d]);
-            }
+        constrain_node(node_dofs, directions, fixed, dirichlet);
         if (!owned.is_element(first))
           continue;
         // The directions whose residual is a reaction: the normals and the
         // fixed axes, orthonormalised.
-        Node held_node{node_dofs, {}};
-        std::vector<Tensor<1, dim>> directions;
-        for (const auto id : ids)
-          directions.push_back(normals.at(id));
         for (unsigned int d = 0; d < dim; ++d)
           if (fixed[d])
             {
@@ -211,6 +226,7 @@ namespace contact_fem
               axis[d] = 1.;
               directions.push_back(axis);
             }
+        Node held_node{node_dofs, {}};
         for (auto v : directions)
           {
             for (const auto &b : held_node.held_directions)

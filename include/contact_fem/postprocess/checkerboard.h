@@ -30,9 +30,11 @@ namespace contact_fem
   /**
    * Finds checkerboards on the Q1 slave surfaces of @p interface (degree-2
    * faces are not checked): a pair is flagged when at least 3 and at least
-   * 30 % of its neighbouring interior active node pairs alternate by more
+   * half of its neighbouring interior active node pairs alternate by more
    * than 1 % of the pair's largest pressure. A smooth profile (Hertz,
-   * flat punch, patch test) deviates in one direction over whole regions.
+   * flat punch, patch test) deviates in one direction over whole regions;
+   * the irregular nodal weights of an unstructured (split tetrahedral)
+   * surface alternate at about a third of the pairs and are not flagged.
    * The interface is the same on every rank, and so is the result.
    */
   template <int dim>

@@ -13,6 +13,7 @@
 #include <contact_fem/contact/contact_parameters.h>
 
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -64,6 +65,20 @@ namespace contact_fem
     free_residual_squared(const TrilinosWrappers::MPI::Vector &residual) const;
 
   private:
+    /// The nodes of the roller faces on this rank (owned and ghost cells),
+    /// keyed by their x DoF: their DoFs by component and their boundaries.
+    std::map<types::global_dof_index,
+             std::pair<std::vector<types::global_dof_index>, std::set<types::boundary_id>>>
+    roller_nodes(const DoFHandler<dim> &dof_handler) const;
+
+    /// Adds the lines n . u = 0 of the @p rows at the node with @p dofs,
+    /// whose @p fixed components are held already.
+    void
+    constrain_node(const std::vector<types::global_dof_index> &dofs,
+                   std::vector<Tensor<1, dim>>                 rows,
+                   const std::vector<bool>                    &fixed,
+                   AffineConstraints<double>                  &dirichlet) const;
+
     std::map<types::boundary_id, Tensor<1, dim>> normals;
     struct Node
     {
