@@ -107,14 +107,21 @@ namespace contact_fem
     for (const std::string name : {"Fixed", "Prescribed displacement", "Pressure", "Traction"})
       replace("Boundary conditions", name, false, ':', false);
     replace("Boundary conditions", "Fixed points", true, '@', false);
+    // Lists of bare ids: each word replaced.
+    const auto replace_list = [&](const std::string &section, const std::string &name,
+                                  const bool bodies, const char separator) {
+      prm.enter_subsection(section);
+      std::string ids;
+      for (const std::string &word : Utilities::split_string_list(prm.get(name), separator))
+        ids += (ids.empty() ? "" : std::string(1, separator) + " ") +
+               id_of(word, section + "/" + name, bodies);
+      prm.set(name, ids);
+      prm.leave_subsection();
+    };
+    replace_list("Boundary conditions", "Rollers", false, ';');
     replace("Output", "Displacement probes", true, '@', false);
     replace("Contact", "Pairs", false, ':', true);
     replace("Geometry", "Manifolds", false, ':', false);
-    prm.enter_subsection("Materials");
-    std::string ids;
-    for (const std::string &word : Utilities::split_string_list(prm.get("Material ids"), ','))
-      ids += (ids.empty() ? "" : ", ") + id_of(word, "Materials/Material ids", true);
-    prm.set("Material ids", ids);
-    prm.leave_subsection();
+    replace_list("Materials", "Material ids", true, ',');
   }
 } // namespace contact_fem

@@ -176,6 +176,15 @@ namespace contact_fem
           }
         held[condition.boundary_id][condition.component] = true;
       }
+    for (const types::boundary_id id : in.rollers)
+      if (!held.count(id))
+        {
+          ids.push_back(id);
+          held[id] = std::vector<bool>(dim, true);
+        }
+    const auto is_roller = [&](const types::boundary_id id) {
+      return std::find(in.rollers.begin(), in.rollers.end(), id) != in.rollers.end();
+    };
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const types::boundary_id id : ids)
       {
@@ -190,7 +199,8 @@ namespace contact_fem
                     {
                       const unsigned int c = fe.system_to_component_index(i).first;
                       if (fe.has_support_on_face(i, f) && held[id][c] &&
-                          owned.is_element(dofs[i]) && in.dirichlet.is_constrained(dofs[i]) &&
+                          owned.is_element(dofs[i]) &&
+                          (in.dirichlet.is_constrained(dofs[i]) || is_roller(id)) &&
                           seen.insert(dofs[i]).second)
                         force[c] += reaction_at(dofs[i]);
                     }

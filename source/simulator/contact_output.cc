@@ -94,7 +94,8 @@ namespace contact_fem
           cell->get_dof_indices(dofs);
           for (unsigned int i = 0; i < dofs.size(); ++i)
             if (owned_dofs.is_element(dofs[i]) &&
-                dirichlet_constraints.is_constrained(dofs[i]) &&
+                (dirichlet_constraints.is_constrained(dofs[i]) ||
+                 inclined_supports.holds(dofs[i])) &&
                 seen.insert(dofs[i]).second)
               {
                 const double r =
@@ -158,7 +159,7 @@ namespace contact_fem
     const ForceReport<dim> forces = compute_forces<dim>(
       {dof_handler, residual, dirichlet_constraints, boundary_conditions.displacements,
        boundary_conditions.points, interface.get(), contact.get(), contact_force,
-       contact_parameters.pairs});
+       contact_parameters.pairs, boundary_conditions.rollers});
     std::ostringstream text;
     forces.print(text, time);
     pcout << text.str();

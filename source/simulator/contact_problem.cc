@@ -393,6 +393,7 @@ namespace contact_fem
     for (const auto dof : fixed_point_dofs)
       if (!dirichlet_constraints.is_constrained(dof))
         dirichlet_constraints.add_line(dof);
+    inclined_supports.add_constraints(dof_handler, hanging_constraints, dirichlet_constraints);
     dirichlet_constraints.close();
   }
 
@@ -731,9 +732,11 @@ namespace contact_fem
     double local = 0.;
     for (const auto i : owned_dofs)
       if (!dirichlet_constraints.is_constrained(i) && !hanging_constraints.is_constrained(i) &&
+          !inclined_supports.holds(i) &&
           !(interface && std::binary_search(interface->dofs().begin(),
                                             interface->dofs().end(), i)))
         local += residual(i) * residual(i);
+    local += inclined_supports.free_residual_squared(residual);
     double sum = Utilities::MPI::sum(local, comm);
     if (interface)
       for (unsigned int k = 0; k < interface->dofs().size(); ++k)
@@ -2125,6 +2128,8 @@ namespace contact_fem
     const double potential_energy = strain_energy - external_work;
     cycle_record.set("strain_energy", strain_energy).set("potential_energy", potential_energy);
     print_results(contact_json, reaction_json, hertz_json);
+    if (contact)
+      pcout << checkerboard_warning.check(*interface, *contact, cycle_record);
     if (!probe_dofs.empty())
       cycle_record.set("displacement_probes", probe_results());
     if (contact && !analytical.reference_pressure_profile.empty())

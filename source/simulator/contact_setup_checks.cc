@@ -56,6 +56,7 @@ namespace contact_fem
     create_scene_mesh(coarse_scene, coarse);
     check_value_ranges(coarse);
     check_boundary_ids(coarse);
+    inclined_supports.initialize(coarse, boundary_conditions.rollers, contact_parameters.pairs);
     check_contact_pairs(coarse);
     check_memory_estimate(coarse);
   }
@@ -71,6 +72,8 @@ namespace contact_fem
     std::vector<std::pair<std::string, types::boundary_id>> named;
     for (const auto &c : boundary_conditions.displacements)
       named.emplace_back(c.key, c.boundary_id);
+    for (const auto id : boundary_conditions.rollers)
+      named.emplace_back("Boundary conditions/Rollers", id);
     for (const auto &c : boundary_conditions.pressures)
       named.emplace_back("Boundary conditions/Pressure", c.boundary_id);
     for (const auto &c : boundary_conditions.tractions)

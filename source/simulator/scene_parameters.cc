@@ -82,6 +82,14 @@ namespace contact_fem
                       "'material id @ x, y: components; ...', e.g. '1 @ 0, 1: x' "
                       "(the vertex of body 1 at (0, 1)). For rigid-body modes that "
                       "the boundary conditions leave free; the vertex must exist.");
+    prm.declare_entry("Rollers",
+                      "",
+                      Patterns::Anything(),
+                      "Flat boundaries of any orientation whose displacement normal to "
+                      "the boundary is zero (a roller or sliding support on a tilted "
+                      "plane, a symmetry plane of a turned model), as 'id; id; ...'. "
+                      "Curved or kinked boundaries and boundaries that touch a contact "
+                      "surface are refused.");
     prm.declare_entry("Prescribed displacement",
                       "",
                       Patterns::Anything(),
@@ -135,6 +143,20 @@ namespace contact_fem
             condition.component = d;
             points.push_back(condition);
           }
+      }
+    const std::string rollers_key = "Boundary conditions/Rollers";
+    rollers.clear();
+    for (const auto &entry : Utilities::split_string_list(prm.get("Rollers"), ';'))
+      {
+        AssertThrow(entry.find(':') == std::string::npos,
+                    ExcMessage(rollers_key + ": entry '" + excerpt(entry) +
+                               "' names components; a roller takes boundary ids only "
+                               "('id; id; ...'): the held direction is the boundary's "
+                               "normal."));
+        const types::boundary_id b = parse_boundary_id(entry, rollers_key);
+        AssertThrow(std::find(rollers.begin(), rollers.end(), b) == rollers.end(),
+                    ExcMessage(rollers_key + ": boundary " + entry + " is given twice."));
+        rollers.push_back(b);
       }
     const std::string disp_key = "Boundary conditions/Prescribed displacement";
     for (const auto &[id, rhs] : split_key_value_list(prm.get("Prescribed displacement"),
@@ -217,7 +239,8 @@ namespace contact_fem
       std::string conditions;
       prm.enter_subsection("Boundary conditions");
       for (const char *key :
-           {"Fixed", "Fixed points", "Prescribed displacement", "Pressure", "Traction"})
+           {"Fixed", "Fixed points", "Rollers", "Prescribed displacement", "Pressure",
+            "Traction"})
         if (const std::string value = Utilities::trim(prm.get(key)); !value.empty())
           conditions += (conditions.empty() ? "" : " | ") + std::string(key) + " = " + value;
       prm.leave_subsection();

@@ -16,10 +16,15 @@ Placeholders (p denotes a point of the scene's own frame):
   @x@ @y@ @z@       the scene-frame coordinates as expressions of x, y, z
   @VEC(a, b[, c])@  a traction vector (expressions), rotated and scaled
   @AXES(xyz)@       support components, mapped by the rotation (quarter turns)
+  @DX(a, b[, c])@ @DY(...)@ @DZ(...)@  a component of a displacement, rotated
+                    and scaled
   @MAT(id)@         a material id, after the swap of the ids 1 and 2
 
 Variants: name=kind:value, kinds translate (a vector in units of the model
-size), rotate (quarter turns about z), scale_length, scale_moduli, swap.
+size), rotate (quarter turns about z), rotate_degrees (angle[,ax,ay,az]:
+any angle about z or the axis (ax, ay, az); templates without @AXES@, @x@,
+@VEC@, e.g. supported by rollers), scale_length,
+scale_moduli, swap.
 """
 import argparse
 import json
@@ -37,6 +42,7 @@ class Variant:
         self.dim = dim
         self.shift = [0.0] * 3
         self.turns = 0
+        self.degrees = None
         self.length = 1.0
         self.moduli = 1.0
         self.swap = False
@@ -45,6 +51,10 @@ class Variant:
             self.shift[: len(parts)] = parts
         elif kind == "rotate":
             self.turns = int(value) % 4
+        elif kind == "rotate_degrees":
+            angle, *axis = [float(t) for t in value.split(",")]
+            self.degrees = angle
+            self.axis = axis or [0.0, 0.0, 1.0]
         elif kind == "scale_length":
             self.length = float(value)
         elif kind == "scale_moduli":
@@ -55,12 +65,27 @@ class Variant:
             sys.exit(f"metamorphic.py: unknown variant kind '{kind}' in '{spec}'")
 
     def cos_sin(self):
+        if self.degrees is not None:
+            angle = math.radians(self.degrees)
+            return (math.cos(angle), math.sin(angle))
         return [(1, 0), (0, 1), (-1, 0), (0, -1)][self.turns]
 
-    def point(self, p):
+    def matrix(self):
+        # Rotation by the angle about the axis (z unless given), Rodrigues.
         c, s = self.cos_sin()
+        a = getattr(self, "axis", [0.0, 0.0, 1.0])
+        n = math.sqrt(sum(t * t for t in a))
+        x, y, z = (t / n for t in a)
+        return [[c + x * x * (1 - c), x * y * (1 - c) - z * s, x * z * (1 - c) + y * s],
+                [y * x * (1 - c) + z * s, c + y * y * (1 - c), y * z * (1 - c) - x * s],
+                [z * x * (1 - c) - y * s, z * y * (1 - c) + x * s, c + z * z * (1 - c)]]
+
+    def rotate(self, p):
         p = list(p) + [0.0] * (3 - len(p))
-        q = [c * p[0] - s * p[1], s * p[0] + c * p[1], p[2]]
+        return [sum(r[j] * p[j] for j in range(3)) for r in self.matrix()]
+
+    def point(self, p):
+        q = self.rotate(p)
         return [self.length * q[i] + self.shift[i] for i in range(self.dim)]
 
     def local(self, axis):
@@ -143,6 +168,8 @@ def expand(text, v, template_dir, work_dir):
         return ", ".join(rotated)
 
     def axes(m):
+        if v.degrees is not None:
+            sys.exit("metamorphic.py: @AXES@ maps supports by quarter turns only")
         mapping = {"x": "x", "y": "y", "z": "z"}
         if v.turns % 2 == 1:
             mapping = {"x": "y", "y": "x", "z": "z"}
@@ -156,6 +183,8 @@ def expand(text, v, template_dir, work_dir):
         (r"@STRESS\((.*?)\)@", lambda m: f"{v.moduli!r}*({m.group(1)})"),
         (r"@VEC\((.*?)\)@", vec),
         (r"@AXES\(([^)]*)\)@", axes),
+        (r"@D([XYZ])\(([^)]*)\)@",
+         lambda m: fmt(v.length * v.rotate(numbers(m.group(2)))["XYZ".index(m.group(1))])),
         (r"@MAT\(([^)]*)\)@", lambda m: str(v.material(int(m.group(1))))),
         (r"@([xyz])@", lambda m: v.local(m.group(1))),
     ]

@@ -88,6 +88,9 @@ namespace contact_fem
     /// residual where a support holds a contact node).
     const std::vector<double>                 &contact_force;
     const std::vector<ContactPair>            &pairs;
+    /// Boundary conditions/Rollers: every component of their nodes carries
+    /// a part of the reaction (normal to the boundary).
+    const std::vector<types::boundary_id>     &rollers;
   };
 
   template <int dim>

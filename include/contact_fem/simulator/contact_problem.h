@@ -24,6 +24,7 @@
 #include <contact_fem/core/json.h>
 #include <contact_fem/material/material.h>
 #include <contact_fem/postprocess/output_files.h>
+#include <contact_fem/simulator/inclined_supports.h>
 #include <contact_fem/simulator/scene_parameters.h>
 #include <contact_fem/contact/contact_parameters.h>
 #include <contact_fem/core/parameters.h>
@@ -33,6 +34,7 @@
 #include <contact_fem/adaptivity/stress_recovery.h>
 #include <contact_fem/material/volumetric_projection.h>
 #include <contact_fem/postprocess/analytical_comparison.h>
+#include <contact_fem/postprocess/checkerboard.h>
 #include <contact_fem/postprocess/vtu_output.h>
 
 #include <cmath>
@@ -586,6 +588,8 @@ namespace contact_fem
 
     AffineConstraints<double> hanging_constraints;
     AffineConstraints<double> dirichlet_constraints;
+    InclinedSupports<dim>     inclined_supports; ///< Boundary conditions/Rollers
+    CheckerboardWarning       checkerboard_warning;
     std::vector<types::global_dof_index> fixed_point_dofs; ///< locally relevant
     /// Per Output/Displacement probes entry: its vertex DoFs (see
     /// vertex_dofs()).

@@ -55,6 +55,8 @@ namespace contact_fem
     std::vector<PointCondition>        points;
     std::vector<PressureCondition>     pressures;
     std::vector<TractionCondition>     tractions;
+    /// Boundaries whose normal displacement is zero (flat, any orientation).
+    std::vector<types::boundary_id> rollers;
 
     static void
     declare_parameters(ParameterHandler &prm);

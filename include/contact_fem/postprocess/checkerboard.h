@@ -1,0 +1,62 @@
+// Detection of the Q1 pressure checkerboard: contact pressures that
+// alternate from slave node to slave node instead of following a smooth
+// profile (the dual multipliers of a slave surface that the master side
+// cannot follow, issue 30).
+#ifndef contact_fem_checkerboard_h
+#define contact_fem_checkerboard_h
+
+#include <contact_fem/contact/contact_interface.h>
+#include <contact_fem/contact/formulations/contact_formulation.h>
+#include <contact_fem/core/json.h>
+
+#include <string>
+#include <vector>
+
+namespace contact_fem
+{
+  /// What the check found on one contact pair.
+  struct CheckerboardFinding
+  {
+    unsigned int pair = 0;
+    /// Pairs of neighbouring interior active slave nodes (all of whose
+    /// neighbours are active) and those of them whose pressures deviate
+    /// from their neighbours' mean in opposite directions, each by more
+    /// than the threshold.
+    unsigned int neighbour_pairs = 0, alternating = 0;
+    /// The largest such deviation over the pair's largest pressure.
+    double amplitude = 0.;
+  };
+
+  /**
+   * Finds checkerboards on the Q1 slave surfaces of @p interface (degree-2
+   * faces are not checked): a pair is flagged when at least 3 and at least
+   * half of its neighbouring interior active node pairs alternate by more
+   * than 1 % of the pair's largest pressure. A smooth profile (Hertz,
+   * flat punch, patch test) deviates in one direction over whole regions;
+   * the irregular nodal weights of an unstructured (split tetrahedral)
+   * surface alternate at about a third of the pairs and are not flagged.
+   * The interface is the same on every rank, and so is the result.
+   */
+  template <int dim>
+  std::vector<CheckerboardFinding>
+  find_checkerboards(const ContactInterface<dim> &interface, const ContactFormulation<dim> &contact);
+
+  /// Returns (once per run, else empty) the warning lines naming each
+  /// flagged pair, how strong the alternation is and what to change, and
+  /// records the warning in @p record ("checkerboard_warning") at every
+  /// cycle that finds one.
+  class CheckerboardWarning
+  {
+  public:
+    template <int dim>
+    std::string
+    check(const ContactInterface<dim>   &interface,
+          const ContactFormulation<dim> &contact,
+          Json                          &record);
+
+  private:
+    bool printed = false;
+  };
+} // namespace contact_fem
+
+#endif

@@ -1,0 +1,142 @@
+// The checkerboard test of find_checkerboards(): per active slave node the
+// deviation r_j = p_j - mean of p over its neighbours (the nodes of its
+// slave faces). A smooth profile has r of one sign over whole regions
+// (negative under a Hertz peak, positive toward a punch's edges, zero in a
+// patch test); a checkerboard flips the sign from node to node.
+#include <contact_fem/core/format.h>
+#include <contact_fem/postprocess/checkerboard.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace contact_fem
+{
+  namespace
+  {
+    constexpr double       relative_threshold = 0.01;
+    constexpr double       alternating_fraction = 0.5;
+    constexpr unsigned int least_alternating  = 3;
+  } // namespace
+
+  template <int dim>
+  std::vector<CheckerboardFinding>
+  find_checkerboards(const ContactInterface<dim> &interface, const ContactFormulation<dim> &contact)
+  {
+    std::vector<CheckerboardFinding> findings;
+    const unsigned int q1_face_nodes = dim == 2 ? 2 : 4;
+    for (unsigned int p = 0; p < interface.pairs.size(); ++p)
+      {
+        std::map<unsigned int, double> pressure; // active slave nodes of the pair
+        for (const auto &s : interface.slave_nodes)
+          if (s.pair == p && s.paired && contact.is_active(s.node) &&
+              interface.nodes[s.node].parents.empty())
+            pressure[s.node] = contact.normal_pressure(s.node);
+        std::map<unsigned int, std::set<unsigned int>> neighbours;
+        bool                                           q1 = true;
+        for (const auto &face : interface.faces)
+          if (face.slave && face.pair == p)
+            {
+              q1 = q1 && face.nodes.size() == q1_face_nodes;
+              for (const unsigned int a : face.nodes)
+                for (const unsigned int b : face.nodes)
+                  if (a != b)
+                    neighbours[a].insert(b);
+            }
+        if (!q1 || pressure.size() < 3)
+          continue;
+        double p_max = 0.;
+        for (const auto &[node, value] : pressure)
+          p_max = std::max(p_max, value);
+        std::map<unsigned int, double> deviation; // of the interior nodes
+        for (const auto &[node, value] : pressure)
+          {
+            double sum      = 0.;
+            bool   interior = !neighbours[node].empty();
+            for (const unsigned int k : neighbours[node])
+              {
+                interior = interior && pressure.count(k);
+                sum += interior ? pressure.at(k) : 0.;
+              }
+            if (interior)
+              deviation[node] = value - sum / neighbours[node].size();
+          }
+        CheckerboardFinding finding;
+        finding.pair = p;
+        for (const auto &[node, r] : deviation)
+          for (const unsigned int k : neighbours[node])
+            if (k > node && deviation.count(k))
+              {
+                ++finding.neighbour_pairs;
+                const double other = deviation.at(k);
+                if (r * other < 0. &&
+                    std::min(std::abs(r), std::abs(other)) > relative_threshold * p_max)
+                  {
+                    ++finding.alternating;
+                    finding.amplitude =
+                      std::max(finding.amplitude, std::max(std::abs(r), std::abs(other)) / p_max);
+                  }
+              }
+        if (finding.alternating >= least_alternating &&
+            finding.alternating >= alternating_fraction * finding.neighbour_pairs)
+          findings.push_back(finding);
+      }
+    return findings;
+  }
+
+  template <int dim>
+  std::string
+  CheckerboardWarning::check(const ContactInterface<dim>   &interface,
+                             const ContactFormulation<dim> &contact,
+                             Json                          &record)
+  {
+    std::string text;
+    for (const auto &finding : find_checkerboards(interface, contact))
+      {
+        const auto &pair  = interface.pairs[finding.pair];
+        const auto &stats = interface.statistics[finding.pair];
+        const std::string name = std::to_string(static_cast<unsigned int>(pair.slave)) + ": " +
+                                 std::to_string(static_cast<unsigned int>(pair.master));
+        std::ostringstream message;
+        message << "contact pair " << name << ": the contact pressure alternates from slave "
+                << "node to slave node (a checkerboard: " << finding.alternating << " of "
+                << finding.neighbour_pairs << " neighbouring active node pairs, up to "
+                << significant(100. * finding.amplitude, 2)
+                << " % of the largest pressure), so nodal pressures and p_max are not "
+                   "reliable; ";
+        const std::string swapped = "Contact/Pairs = " +
+                                    std::to_string(static_cast<unsigned int>(pair.master)) +
+                                    ": " +
+                                    std::to_string(static_cast<unsigned int>(pair.slave));
+        if (stats.mean_slave_size > 1.5 * stats.mean_master_size)
+          message << "the slave surface is the coarser one (mean element sizes "
+                  << significant(stats.mean_slave_size, 3) << " slave, "
+                  << significant(stats.mean_master_size, 3)
+                  << " master): make the finer surface the slave (" << swapped
+                  << "), or use Q2 (Finite element/Degree)";
+        else
+          message << "the master (mean element size " << significant(stats.mean_master_size, 3)
+                  << ", slave " << significant(stats.mean_slave_size, 3)
+                  << ") cannot follow the slave's multipliers: refine the master surface to "
+                     "the slave's resolution at the contact (Geometry/Local refinements), "
+                     "make the coarser surface the slave (" << swapped
+                  << "), or use Q2 (Finite element/Degree)";
+        record.set("checkerboard_warning", message.str());
+        if (!printed)
+          text += "  Warning: " + message.str() + ".\n";
+      }
+    printed = printed || !text.empty();
+    return text;
+  }
+
+  template std::vector<CheckerboardFinding>
+  find_checkerboards(const ContactInterface<2> &, const ContactFormulation<2> &);
+  template std::vector<CheckerboardFinding>
+  find_checkerboards(const ContactInterface<3> &, const ContactFormulation<3> &);
+  template std::string
+  CheckerboardWarning::check(const ContactInterface<2> &, const ContactFormulation<2> &, Json &);
+  template std::string
+  CheckerboardWarning::check(const ContactInterface<3> &, const ContactFormulation<3> &, Json &);
+} // namespace contact_fem
