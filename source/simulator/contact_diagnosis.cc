@@ -367,8 +367,7 @@ namespace contact_fem
                              "balance by " +
                              scientific(imbalance, 1) + " of the forces (tolerance " +
                              format(tolerance) + "): " + cause;
-    pcout << "  Warning: " << text << "." << std::endl;
-    cycle_record.set("balance_warning", text);
+    warn("balance_warning", text, cycle_record);
     balance_failed = true;
   }
 

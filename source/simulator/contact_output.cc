@@ -415,6 +415,8 @@ namespace contact_fem
           origin.push(scene.frame.origin[d]);
         summary.set("coordinate_origin", origin);
       }
+    if (!warnings.empty())
+      summary.set("warnings", warnings.to_json());
     summary.set("cycles", cycles);
     std::ostringstream out;
     summary.write(out);

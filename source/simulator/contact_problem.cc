@@ -8,6 +8,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <contact_fem/simulator/contact_problem.h>
+#include <contact_fem/simulator/solution_checks.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/core/interruption.h>
 #include <contact_fem/core/parameters.h>
@@ -1318,6 +1319,7 @@ namespace contact_fem
           write_summary(cycles, total_timer.wall_time(), "failed: " + user_message(e));
         throw;
       }
+    pcout << warnings.repeats();
     if (console.file_failed())
       pcout << "Warning: writing '" << output.directory
             << "/log.txt' failed during the run: the log is incomplete (the console has "
@@ -1456,412 +1458,31 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactProblem<dim>::warn_about_large_displacements(Json &cycle_record)
+  ContactProblem<dim>::warn(const std::string &kind, const std::string &text, Json &cycle_record)
   {
-    // Linear elasticity is a small-displacement theory: displacements of
-    // half the model size mean a rigid-body mode that the supports (and
-    // frictionless contact) leave free, or a load far beyond the model.
-    // (A tenth would flag prescribed rigid shifts, e.g. a deep initial
-    // overlap pushed apart.)
-    Point<dim> low, high;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        low[d]  = std::numeric_limits<double>::max();
-        high[d] = -std::numeric_limits<double>::max();
-      }
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto v : cell->vertex_indices())
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              low[d]  = std::min(low[d], cell->vertex(v)[d]);
-              high[d] = std::max(high[d], cell->vertex(v)[d]);
-            }
-    double size = 0.;
-    for (unsigned int d = 0; d < dim; ++d)
-      size = std::max(size, Utilities::MPI::max(high[d], comm) + Utilities::MPI::max(-low[d], comm));
-    const double u_max = solution.linfty_norm();
-    if (u_max > ModelRange::displacement_limit * size)
+    cycle_record.set(kind, text);
+    if (warnings.add(kind, cycle))
+      pcout << "  Warning: " << text << "." << std::endl;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::check_converged_solution(const bool solved, Json &cycle_record)
+  {
+    const SolutionChecks<dim> checks({dof_handler, *mapping, constraints, dirichlet_constraints,
+                                      owned_dofs, relevant_dofs, solution, ghosted_solution});
+    if (const std::string text = checks.large_displacement(); !text.empty())
       {
         outside_model_range = true;
-        std::ostringstream text;
-        text << "the largest displacement, " << u_max << ", exceeds half the model size ("
-             << size << "): a rigid-body mode that the supports leave free (e.g. a rotation; "
-             << "see Boundary conditions/Fixed points) or a load beyond small-strain theory";
-        pcout << "  Warning: " << text.str() << "." << std::endl;
-        cycle_record.set("warning", text.str());
+        warn("warning", text, cycle_record);
       }
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::warn_about_large_strains(Json &cycle_record)
-  {
-    // Linear elasticity and a contact gap linear in u assume small strains
-    // and rotations: beyond a few percent the answer is that of a model the
-    // bodies no longer follow (and the step count would matter to any
-    // geometry update).
-    constexpr double   strain_limit = ModelRange::strain_limit;
-    constexpr double   rotation_limit = ModelRange::rotation_limit;
-    const QGauss<dim>  quadrature(fe.degree + 1);
-    FEValues<dim>      fe_values(*mapping, fe, quadrature, update_gradients);
-    const FEValuesExtractors::Vector                 displacement(0);
-    std::vector<Tensor<2, dim>>                      gradients(quadrature.size());
-    double                                           strain = 0., rotation = 0.;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
+    if (solved)
+      if (const std::string text = checks.large_strain(cycle_record); !text.empty())
         {
-          fe_values.reinit(cell);
-          fe_values[displacement].get_function_gradients(ghosted_solution, gradients);
-          for (const auto &grad : gradients)
-            {
-              const auto eigenvalues = dealii::eigenvalues(symmetrize(grad));
-              for (const double e : eigenvalues)
-                strain = std::max(strain, std::abs(e));
-              // The infinitesimal rotation: the skew part's largest entry.
-              for (unsigned int i = 0; i < dim; ++i)
-                for (unsigned int j = 0; j < i; ++j)
-                  rotation = std::max(rotation, 0.5 * std::abs(grad[i][j] - grad[j][i]));
-            }
+          outside_model_range = true;
+          warn("small_strain_warning", text, cycle_record);
         }
-    strain   = Utilities::MPI::max(strain, comm);
-    rotation = Utilities::MPI::max(rotation, comm);
-    cycle_record.set("largest_strain", strain).set("largest_rotation", rotation);
-    if (strain <= strain_limit && rotation <= rotation_limit)
-      return;
-    outside_model_range = true;
-    std::ostringstream text;
-    text << "the solution leaves the small-strain range (largest principal strain "
-         << scientific(strain, 2) << ", largest rotation " << scientific(rotation, 2)
-         << " rad; linear elasticity and the contact gap assume below " << strain_limit
-         << " and " << rotation_limit << "): the load is beyond what this model describes";
-    pcout << "  Warning: " << text.str() << "." << std::endl;
-    cycle_record.set("small_strain_warning", text.str());
-  }
-
-  template <int dim>
-  double
-  ContactProblem<dim>::rotation_under_couple(const types::material_id body,
-                                             const Point<dim>        &centre,
-                                             const double             volume,
-                                             const double             polar,
-                                             const Tensor<1, dim>    &omega_axis,
-                                             const unsigned int       axis)
-  {
-    const QGauss<dim>                    quadrature(degree + 1);
-    FEValues<dim>                        fe_values(*mapping, fe, quadrature,
-                                update_values | update_gradients | update_quadrature_points |
-                                  update_JxW_values);
-    const FEValuesExtractors::Vector     displacement(0);
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    Vector<double>                       cell_load(fe.n_dofs_per_cell());
-    std::vector<Tensor<2, dim>>          gradients(quadrature.size());
-    // A body force f = omega x (x - c) / J: no net force, and with J = int
-    // |x - c|^2 minus the part along the axis, unit moment about the axis.
-    const auto couple = [&](const Point<dim> &x) {
-      const Tensor<1, dim> r = x - centre;
-      Tensor<1, dim>       f;
-      if constexpr (dim == 2)
-        {
-          f[0] = -r[1];
-          f[1] = r[0];
-        }
-      else
-        f = cross_product_3d(omega_axis, r);
-      return f / polar;
-    };
-    TrilinosWrappers::MPI::Vector probe_load(owned_dofs, comm);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->material_id() == body)
-        {
-          fe_values.reinit(cell);
-          cell_load = 0.;
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
-            {
-              const Tensor<1, dim> f = couple(fe_values.quadrature_point(q));
-              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                cell_load(i) += fe_values[displacement].value(i, q) * f * fe_values.JxW(q);
-            }
-          cell->get_dof_indices(dofs);
-          // The vector form condenses without inhomogeneities.
-          constraints.distribute_local_to_global(cell_load, dofs, probe_load);
-        }
-    probe_load.compress(VectorOperation::add);
-
-    // Response: solution + K^-1 probe, distributed, minus solution
-    // (the inhomogeneities cancel).
-    TrilinosWrappers::MPI::Vector response(owned_dofs, comm);
-    linear_solver->solve_again(response, probe_load);
-    response += solution;
-    constraints.distribute(response);
-    response -= solution;
-    TrilinosWrappers::MPI::Vector ghosted_response(owned_dofs, relevant_dofs, comm);
-    ghosted_response = response;
-
-    // Mean rotation of the body about the axis.
-    double rotation = 0.;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->material_id() == body)
-        {
-          fe_values.reinit(cell);
-          fe_values[displacement].get_function_gradients(ghosted_response, gradients);
-          const unsigned int i = (axis + 1) % 3, j = (axis + 2) % 3;
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
-            {
-              const Tensor<2, dim> &G = gradients[q];
-              rotation += (dim == 2 ? 0.5 * (G[1][0] - G[0][1]) :
-                                      0.5 * (G[j % dim][i % dim] - G[i % dim][j % dim])) *
-                          fe_values.JxW(q);
-            }
-        }
-    return std::abs(Utilities::MPI::sum(rotation, comm)) / volume;
-  }
-
-  template <int dim>
-  std::vector<bool>
-  ContactProblem<dim>::supporting_dofs(
-    const typename DoFHandler<dim>::active_cell_iterator &cell,
-    const std::vector<types::global_dof_index>           &dofs) const
-  {
-    std::vector<bool> fixed(dofs.size());
-    for (unsigned int i = 0; i < dofs.size(); ++i)
-      fixed[i] = dirichlet_constraints.is_constrained(dofs[i]) &&
-                 dirichlet_constraints.get_constraint_entries(dofs[i])->empty();
-    // A fixed point in 2D stiffens only logarithmically as the mesh around
-    // it is refined (the Hertz disc on its two fixed points: theta G V 2.9
-    // with 4 contact refinements, 3.4 with 6); in 3D its stiffness falls
-    // with the element size (the upper body of two_cylinders_3d, turned
-    // about z against four fixed points: 9.0 at 12.5k DoFs, 14.8 refined
-    // once), so there only fixed faces count as supports.
-    if (dim == 2 || std::find(fixed.begin(), fixed.end(), true) == fixed.end())
-      return fixed;
-    std::vector<bool> supporting(dofs.size(), false);
-    for (const auto f : cell->face_indices())
-      if (cell->face(f)->at_boundary())
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            const auto on_face = [&](const unsigned int i) {
-              return fe.has_support_on_face(i, f) && fe.system_to_component_index(i).first == d;
-            };
-            bool whole_face = true;
-            for (unsigned int i = 0; i < dofs.size(); ++i)
-              whole_face = whole_face && (!on_face(i) || fixed[i]);
-            for (unsigned int i = 0; i < dofs.size(); ++i)
-              supporting[i] = supporting[i] || (whole_face && on_face(i));
-          }
-    return supporting;
-  }
-
-  template <int dim>
-  std::map<types::material_id, std::vector<FixedDof<dim>>>
-  ContactProblem<dim>::fixed_dofs_by_body() const
-  {
-    // The support points of every DoF of a cell, mapped (Q2 has DoFs off
-    // the vertices); only cells with a fixed DoF are mapped.
-    FEValues<dim> fe_values(*mapping, fe, Quadrature<dim>(fe.get_unit_support_points()),
-                            update_quadrature_points);
-    std::map<types::material_id, std::vector<FixedDof<dim>>> fixed;
-    // A DoF is shared by the cells around it: take it once, on its owner;
-    // from ghost cells too, whose fixed face may be the one it is on.
-    std::vector<bool>                    taken(owned_dofs.n_elements(), false);
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (!cell->is_artificial())
-        {
-          cell->get_dof_indices(dofs);
-          const std::vector<bool> supporting = supporting_dofs(cell, dofs);
-          bool                    mapped     = false;
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (supporting[i] && owned_dofs.is_element(dofs[i]) &&
-                !taken[owned_dofs.index_within_set(dofs[i])])
-              {
-                taken[owned_dofs.index_within_set(dofs[i])] = true;
-                if (!mapped)
-                  fe_values.reinit(cell);
-                mapped = true;
-                fixed[cell->material_id()].push_back(
-                  {fe_values.quadrature_point(i), fe.system_to_component_index(i).first});
-              }
-        }
-    return fixed;
-  }
-
-  template <int dim>
-  typename ContactProblem<dim>::BodyMoments
-  ContactProblem<dim>::body_moments(const types::material_id body) const
-  {
-    const QGauss<dim> quadrature(degree + 1);
-    FEValues<dim>     fe_values(*mapping, fe, quadrature,
-                            update_quadrature_points | update_JxW_values);
-    double            volume = 0.;
-    Tensor<1, dim>    first_moment, second_moments; // int x_i, int x_i^2
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->material_id() == body)
-        {
-          fe_values.reinit(cell);
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
-            {
-              const Point<dim> &x = fe_values.quadrature_point(q);
-              volume += fe_values.JxW(q);
-              first_moment += x * fe_values.JxW(q);
-              for (unsigned int i = 0; i < dim; ++i)
-                second_moments[i] += x[i] * x[i] * fe_values.JxW(q);
-            }
-        }
-    BodyMoments moments;
-    moments.volume = Utilities::MPI::sum(volume, comm);
-    moments.centre = Point<dim>(Utilities::MPI::sum(first_moment, comm) / moments.volume);
-    second_moments = Utilities::MPI::sum(second_moments, comm);
-    for (unsigned int i = 0; i < dim; ++i)
-      moments.central[i] =
-        second_moments[i] - moments.volume * moments.centre[i] * moments.centre[i];
-    return moments;
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::warn_about_weakly_held_rotation(Json &cycle_record)
-  {
-    // Frictionless contact on a curved surface resists a rotation about its
-    // centre of curvature only through the discretisation (a polygon or a
-    // piecewise-quadratic arc is not quite a circle): that rigid-body mode
-    // has a stiffness far below the elastic ones, the solver finds no zero
-    // pivot, and the solution carries a rotation set by the mesh. Probe:
-    // load every body that touches a contact surface with a unit couple and
-    // solve with the factors of the converged system (one back
-    // substitution). An elastically held body of volume V turns by about
-    // 1 / (G V), G a shear modulus; the softest one of the model is taken,
-    // since a stiff body may rest on a soft one. Measured on the Hertz disc
-    // (theta G V): 3.4 with its fixed points, 300-500 without them.
-    constexpr double compliance_limit = 50.;
-    // A rotation that the body's own supports hold with a lever arm (see
-    // support_lever_arms()) of at least this fraction of the body's radius
-    // of gyration is held elastically: its probe (with the iterative
-    // solver a full Krylov solve) is skipped. Held by two fixed points on
-    // its axis, the Hertz disc gives theta G V 2.9, 9.9, 35, 54 and 146 at
-    // lever arms 0.88, 0.44, 0.22, 0.17 and 0.055 (about 2 / arm^2): at 0.5
-    // about 8, well below the limit; closer supports are probed.
-    constexpr double held_lever_arm = 0.5;
-    if (!contact || !factorisation_current || !linear_solver->can_solve_again() ||
-        linear_solver->n_null_pivots() > 0)
-      return;
-    // Stick nodes tie the bodies together: a rotation is then resisted by
-    // the elasticity of the contact zone (compliant for a small zone, but
-    // physical, not a discretisation artefact), and the factors of an
-    // unsymmetric slip system are not those of the probe's test space.
-    for (unsigned int n = 0; n < interface->nodes.size(); ++n)
-      if (contact->held_tangentially(n))
-        return;
-    TimerOutput::Scope t(*timer, "Check: held rotation");
-    double                          softest = std::numeric_limits<double>::max();
-    std::vector<types::material_id> bodies;
-    for (const auto &[id, constants] : materials.bodies)
-      {
-        softest = std::min(softest, constants.mu());
-        bodies.push_back(id);
-      }
-    std::set<types::boundary_id> contact_ids;
-    for (const auto &pair : contact_parameters.pairs)
-      contact_ids.insert({pair.slave, pair.master});
-    std::vector<unsigned int> touches(bodies.size(), 0);
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary() && contact_ids.count(cell->face(f)->boundary_id()))
-            touches[std::lower_bound(bodies.begin(), bodies.end(), cell->material_id()) -
-                    bodies.begin()] = 1;
-    Utilities::MPI::max(touches, comm, touches);
-
-    constexpr unsigned int n_axes = dim == 2 ? 1 : 3;
-    const auto             fixed  = fixed_dofs_by_body();
-    Json                   check  = Json::array();
-    for (unsigned int b = 0; b < bodies.size(); ++b)
-      {
-        if (touches[b] == 0)
-          continue;
-        const BodyMoments         moments   = body_moments(bodies[b]);
-        const auto                own_fixed = fixed.find(bodies[b]);
-        const std::vector<double> lever_arms =
-          support_lever_arms(own_fixed == fixed.end() ? std::vector<FixedDof<dim>>() :
-                                                        own_fixed->second,
-                             moments.centre, moments.radius_of_gyration(), comm);
-
-        // Per axis: held by the supports, probed (with theta G V), or not
-        // probed because an earlier axis of the body warned already.
-        Json held = Json::array(), probed = Json::array(), unprobed = Json::array();
-        Json levers = Json::object(), compliances = Json::object();
-        bool warned = false;
-        for (unsigned int axis = 0; axis < n_axes; ++axis)
-          {
-            // In 2D the rotation of the plane, about z.
-            const std::string name(1, "xyz"[dim == 2 ? 2 : axis]);
-            levers.set(name, lever_arms[axis]);
-            if (lever_arms[axis] >= held_lever_arm)
-              {
-                held.push(name);
-                continue;
-              }
-            if (warned)
-              {
-                unprobed.push(name);
-                continue;
-              }
-            Tensor<1, dim> omega_axis;
-            if constexpr (dim == 3)
-              omega_axis[axis] = 1.;
-            double polar = 0.;
-            for (unsigned int i = 0; i < dim; ++i)
-              if (dim == 2 || i != axis)
-                polar += moments.central[i];
-            double rotation = 0.;
-            try
-              {
-                rotation = rotation_under_couple(
-                  bodies[b], moments.centre, moments.volume, polar, omega_axis, axis);
-              }
-            catch (const LinearSolverFailure &e)
-              {
-                // An iterative solver may not converge on the probe of a
-                // nearly free rotation: say that the check did not run.
-                pcout << "  Note: the check for a weakly held rotation was skipped: "
-                      << e.what() << "." << std::endl;
-                cycle_record.set("held_rotation_check_skipped", e.what());
-                return;
-              }
-            const double compliance = rotation * softest * moments.volume;
-            probed.push(name);
-            compliances.set(name, compliance);
-            if (!(compliance > compliance_limit))
-              continue;
-            std::ostringstream text;
-            text << "body " << static_cast<unsigned int>(bodies[b])
-                 << " is held only weakly against rotation: a couple turns it "
-                 << std::setprecision(3) << compliance << std::setprecision(6)
-                 << " times more than elasticity would (theta G V, G the smallest shear "
-                 << "modulus); frictionless contact on a curved surface resists a rotation "
-                 << "about its centre only through the discretisation, so the results along "
-                 << "that rotation depend on the mesh; hold it (see Boundary "
-                 << "conditions/Fixed points)";
-            pcout << "  Warning: " << text.str() << "." << std::endl;
-            cycle_record.set("rotation_warning", text.str());
-            warned = true;
-          }
-        // Lever arms over the radius of gyration.
-        check.push(Json::object()
-                     .set("body", static_cast<unsigned int>(bodies[b]))
-                     .set("held_by_supports", held)
-                     .set("probed", probed)
-                     .set("not_probed_after_warning", unprobed)
-                     .set("support_lever_arms", levers)
-                     .set("probe_compliances", compliances));
-      }
-    cycle_record.set("held_rotation_check", check);
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::warn_about_singular_stiffness(Json &cycle_record) const
-  {
+    check_held_rotation(cycle_record);
     if (singular_solves == 0)
       return;
     std::ostringstream text;
@@ -1875,8 +1496,48 @@ namespace contact_fem
       text << ": a rigid-body mode that neither the supports nor the "
            << "active contact hold (see Boundary conditions/Fixed points). The solver "
            << "held it at one DoF; results along that mode are not determined by the model";
-    pcout << "  Warning: " << text.str() << "." << std::endl;
-    cycle_record.set("singular_stiffness_warning", text.str());
+    warn("singular_stiffness_warning", text.str(), cycle_record);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::check_held_rotation(Json &cycle_record)
+  {
+    if (!contact || !factorisation_current || !linear_solver->can_solve_again() ||
+        linear_solver->n_null_pivots() > 0)
+      return;
+    // Stick nodes tie the bodies together: a rotation is then resisted by
+    // the elasticity of the contact zone (compliant for a small zone, but
+    // physical, not a discretisation artefact), and the factors of an
+    // unsymmetric slip system are not those of the probe's test space.
+    for (unsigned int n = 0; n < interface->nodes.size(); ++n)
+      if (contact->held_tangentially(n))
+        return;
+    TimerOutput::Scope              t(*timer, "Check: held rotation");
+    double                          softest = std::numeric_limits<double>::max();
+    std::vector<types::material_id> bodies;
+    for (const auto &[id, constants] : materials.bodies)
+      {
+        softest = std::min(softest, constants.mu());
+        bodies.push_back(id);
+      }
+    std::set<types::boundary_id> contact_surfaces;
+    for (const auto &pair : contact_parameters.pairs)
+      contact_surfaces.insert({pair.slave, pair.master});
+    const SolutionChecks<dim> checks({dof_handler, *mapping, constraints, dirichlet_constraints,
+                                      owned_dofs, relevant_dofs, solution, ghosted_solution});
+    const auto probe =
+      checks.weakly_held_rotation(bodies, softest, contact_surfaces, *linear_solver);
+    for (const std::string &text : probe.warnings)
+      warn("rotation_warning", text, cycle_record);
+    if (!probe.skipped.empty())
+      {
+        pcout << "  Note: the check for a weakly held rotation was skipped: " << probe.skipped
+              << "." << std::endl;
+        cycle_record.set("held_rotation_check_skipped", probe.skipped);
+        return;
+      }
+    cycle_record.set("held_rotation_check", probe.check);
   }
 
   template <int dim>
@@ -2065,11 +1726,7 @@ namespace contact_fem
     const LoadPath path      = step_the_load(cycle, cycle_record);
     const unsigned int n_solved  = path.n_solved;
     const bool         converged = path.converged;
-    warn_about_large_displacements(cycle_record);
-    if (n_solved > 0)
-      warn_about_large_strains(cycle_record);
-    warn_about_weakly_held_rotation(cycle_record);
-    warn_about_singular_stiffness(cycle_record);
+    check_converged_solution(n_solved > 0, cycle_record);
     if (n_solved == 0)
       return false;
     if (!converged && contact)

@@ -22,6 +22,7 @@
 #include <contact_fem/contact/formulations/contact_formulation.h>
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/core/json.h>
+#include <contact_fem/core/warning_log.h>
 #include <contact_fem/material/material.h>
 #include <contact_fem/postprocess/output_files.h>
 #include <contact_fem/simulator/scene_parameters.h>
@@ -172,62 +173,18 @@ namespace contact_fem
     /// The summary status of a run whose last cycle converged.
     std::string
     converged_status() const;
-    /// Prints and records a warning when |u|_max exceeds half the model
-    /// size.
+    /// The checks of a converged solution against the model's range
+    /// (SolutionChecks) and the singular-stiffness warning; @p solved:
+    /// whether a load step converged on this mesh.
     void
-    warn_about_large_displacements(Json &cycle_record);
-    /// Records the largest strain and rotation, and prints and records a
-    /// warning when they leave the small-strain range.
+    check_converged_solution(const bool solved, Json &cycle_record);
+    /// The weakly held rotation probe of check_converged_solution().
     void
-    warn_about_large_strains(Json &cycle_record);
-    /// Prints and records a warning when a unit couple on a body in contact
-    /// turns it by theta with theta G V > 50 (a weakly held rotation); uses
-    /// the factors of the converged system. Rotations that the body's
-    /// supports hold are not probed; the record says which were.
+    check_held_rotation(Json &cycle_record);
+    /// Records warning @p text under @p kind in @p cycle_record and prints
+    /// it in the first cycle that gives the kind (WarningLog).
     void
-    warn_about_weakly_held_rotation(Json &cycle_record);
-    /// Volume, centroid and central second moments of a body.
-    struct BodyMoments
-    {
-      double         volume = 0.;
-      Point<dim>     centre;
-      Tensor<1, dim> central; ///< int (x_i - c_i)^2
-      /// The root mean square distance of the body from its centroid.
-      double
-      radius_of_gyration() const
-      {
-        double sum = 0.;
-        for (unsigned int i = 0; i < dim; ++i)
-          sum += central[i];
-        return std::sqrt(sum / volume);
-      }
-    };
-    /// The moments of body @p body (material id). Collective.
-    BodyMoments
-    body_moments(const types::material_id body) const;
-    /// Which DoFs @p dofs of @p cell hold the body as supports: fixed ones
-    /// (lines of dirichlet_constraints without entries: Fixed, Fixed
-    /// points, prescribed displacements); in 3D only those on a boundary
-    /// face whose DoFs of that component are all fixed.
-    std::vector<bool>
-    supporting_dofs(const typename DoFHandler<dim>::active_cell_iterator &cell,
-                    const std::vector<types::global_dof_index>           &dofs) const;
-    /// This rank's supporting DoFs (supporting_dofs()) of each body, each
-    /// once, at their support points.
-    std::map<types::material_id, std::vector<FixedDof<dim>>>
-    fixed_dofs_by_body() const;
-    /// The mean rotation about @p axis (3D; the plane's in 2D) of @p body
-    /// under a unit couple (body force omega x (x - centre) / polar), solved
-    /// with the kept factors of the converged system.
-    double
-    rotation_under_couple(const types::material_id body,
-                          const Point<dim>        &centre,
-                          const double             volume,
-                          const double             polar,
-                          const Tensor<1, dim>    &omega_axis,
-                          const unsigned int       axis);
-    void
-    warn_about_singular_stiffness(Json &cycle_record) const;
+    warn(const std::string &kind, const std::string &text, Json &cycle_record);
     /// The largest change of a prescribed displacement from the current
     /// solution to the values at the present time (before they are
     /// distributed): a lower bound of the motion of the step. Collective.
@@ -669,9 +626,10 @@ namespace contact_fem
     bool solving = false;
     /// A cycle's reactions did not balance its load (check_reaction_balance()).
     bool balance_failed = false;
-    /// A cycle converged beyond ModelRange (warn_about_large_strains(),
-    /// warn_about_large_displacements()).
+    /// A cycle converged beyond ModelRange (check_converged_solution()).
     bool outside_model_range = false;
+    /// The per-cycle warnings of the run, each printed once.
+    WarningLog warnings;
     /// The comparison with Analytical solution/Type; null for none.
     std::unique_ptr<AnalyticalComparison<dim>> comparison;
     /// forces.csv: its header and the rows of the run so far.
