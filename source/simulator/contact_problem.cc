@@ -198,7 +198,7 @@ namespace contact_fem
     comparison = AnalyticalComparison<dim>::create(analytical);
     output.parse_parameters(prm, dim);
     model_range.parse_parameters(prm);
-    check_scene_before_meshing();
+    memory_warning = input_checks().check_scene_before_meshing();
 
     timer = std::make_unique<TimerOutput>(comm, pcout, TimerOutput::never,
                                           TimerOutput::wall_times);
@@ -1190,7 +1190,7 @@ namespace contact_fem
   {
     {
       TimerOutput::Scope t(*timer, "Setup: mesh");
-      create_scene_mesh(scene, triangulation);
+      input_checks().create_scene_mesh(scene, triangulation);
       std::set<types::material_id> material_ids;
       for (const auto &[id, constants] : materials.bodies)
         material_ids.insert(id);
@@ -1207,6 +1207,14 @@ namespace contact_fem
     if (mapping->get_degree() > degree)
       pcout << "Q" << degree << " elements on a mapping of degree " << mapping->get_degree()
             << " (the curved boundaries are not replaced by chords)" << std::endl;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::print_input_warnings() const
+  {
+    if (!memory_warning.empty())
+      pcout << "Warning: " << memory_warning << "." << std::endl;
   }
 
   template <int dim>
@@ -1305,7 +1313,7 @@ namespace contact_fem
               << "Error: out of memory in cycle " << cycle << " (std::bad_alloc): the "
               << "mesh needs more memory than the run may use (RAM, cgroup or ulimit -v). "
               << "summary.json keeps the finished cycles; refine "
-              << "less (" << refinement_keys() << ", Refinement/Maximum cells)."
+              << "less (" << input_checks().refinement_keys() << ", Refinement/Maximum cells)."
               << std::endl;
         write_summary(cycles, total_timer.wall_time(),
                       "failed: out of memory; results of the finished cycles only");
@@ -1343,7 +1351,7 @@ namespace contact_fem
             break;
           }
         if (const std::string shortage =
-              cycle > 0 ? memory_shortage(old_dofs, dof_handler.n_dofs()) : "";
+              cycle > 0 ? input_checks().memory_shortage(cycle, old_dofs, dof_handler.n_dofs()) : "";
             !shortage.empty())
           {
             pcout << "Error: " << shortage << std::endl;

@@ -25,6 +25,7 @@
 #include <contact_fem/core/warning_log.h>
 #include <contact_fem/material/material.h>
 #include <contact_fem/postprocess/output_files.h>
+#include <contact_fem/simulator/input_checks.h>
 #include <contact_fem/simulator/scene_parameters.h>
 #include <contact_fem/contact/contact_parameters.h>
 #include <contact_fem/core/parameters.h>
@@ -345,52 +346,13 @@ namespace contact_fem
     /// and restoring the last converged state; records the steps.
     LoadPath
     step_the_load(const unsigned int cycle, Json &cycle_record);
-    // --- checks of the input on the scene's mesh (contact_setup_checks.cc)
-    /// Builds the scene without its global and box refinements, and checks
-    /// on that mesh the contact pairs and the memory the full mesh will
-    /// need: input errors found before any work.
-    void
-    check_scene_before_meshing();
-    /// Refuses a boundary id named by a boundary condition or a contact pair
-    /// that no face of @p coarse carries, naming the key and the id.
-    void
-    check_boundary_ids(const Triangulation<dim> &coarse) const;
-    /// Refuses a contact pair whose two surfaces belong to the same body.
-    void
-    check_contact_pairs(const Triangulation<dim> &tria) const;
-    /// The parameters that set the size of the mesh, for messages.
-    std::string
-    refinement_keys() const;
-    /// Refuses a mesh whose estimated memory exceeds what the machine has
-    /// available, and keeps a warning in memory_warning when it takes more
-    /// than half.
-    void
-    check_memory_estimate(const parallel::distributed::Triangulation<dim> &coarse);
-    // --- value ranges (input_range_checks.cc)
-    /// "Geometry/Mesh file 'name'" or the subsection of a built-in scene.
-    std::string
-    geometry_key() const;
-    /// Builds the mesh of @p coarse_scene (the scene itself, or its coarse
-    /// mesh for the early checks); a library exception becomes a message
-    /// naming geometry_key() (and the distance from the origin where that
-    /// is the likely cause).
-    void
-    create_scene_mesh(const Scene<dim>                          &coarse_scene,
-                       parallel::distributed::Triangulation<dim> &coarse) const;
-    /// Refuses coordinates, moduli and loads whose products overflow
-    /// double precision, naming the key or mesh file.
-    void
-    check_value_ranges(const Triangulation<dim> &coarse) const;
-    /// Refuses a load or prescribed displacement that is not a finite number
-    /// (or a load whose force over @p area overflows) at a vertex of its
-    /// boundary at a time of the load path, naming the key.
-    void
-    check_load_path(const Triangulation<dim> &coarse, const double area) const;
-    /// Why the next adaptive cycle, with @p new_dofs DoFs after a cycle
-    /// with @p old_dofs, would exhaust the memory the run may use (RAM,
-    /// cgroup, ulimit -v), or an empty string if it fits.
-    std::string
-    memory_shortage(const double old_dofs, const double new_dofs) const;
+    /// The checks of the parsed input (input_checks.h).
+    InputChecks<dim>
+    input_checks() const
+    {
+      return {scene, materials, boundary_conditions, load_stepping, contact_parameters, degree,
+              comm};
+    }
     // --- diagnoses (contact_diagnosis.cc)
     /// The resultant of the applied pressures and tractions on each body. Collective.
     std::map<types::material_id, Tensor<1, dim>>
@@ -620,7 +582,7 @@ namespace contact_fem
     std::vector<unsigned int> newton_iterations_of_cycle; ///< per load step
     double strain_energy = 0., external_work = 0.; ///< at the last residual
     std::ofstream                                  convergence_csv;
-    /// Set by check_memory_estimate(), printed by run().
+    /// Of InputChecks::check_scene_before_meshing(), printed by run().
     std::string memory_warning;
     /// Set by the first solve_load_step() (started_solving()).
     bool solving = false;
