@@ -23,7 +23,7 @@ namespace contact_fem
   ContactProblem<dim>::applied_load(const double time) const
   {
     Tensor<1, dim> force;
-    for (const auto &[id, load] : body_loads(time))
+    for (const auto &[id, load] : diagnosis().body_loads(time))
       force += load;
     return force;
   }
@@ -124,7 +124,7 @@ namespace contact_fem
     // opposite forces) have a net of round-off: their scale is the largest
     // load on one body.
     double largest_body_load = 0.;
-    for (const auto &[id, body_load] : body_loads(current_time))
+    for (const auto &[id, body_load] : diagnosis().body_loads(current_time))
       largest_body_load = std::max(largest_body_load, body_load.norm());
     const double scale = std::max({load.norm(), largest_body_load, 0.5 * absolute_sum});
     Json                 result = Json::object();

@@ -275,22 +275,10 @@ namespace contact_fem
   void
   ContactProblem<dim>::select_linear_solver()
   {
-    const ProblemTraits traits = problem_traits();
+    const ProblemTraits traits = diagnosis().problem_traits();
     linear_solver->set_problem(traits);
     if (linear_solver->select(dof_handler.n_dofs()))
       linear_solver->set_near_null_space(rigid_body_modes(*mapping, dof_handler));
-  }
-
-  template <int dim>
-  double
-  ContactProblem<dim>::slave_stiffness_ratio(const unsigned int pair) const
-  {
-    double slave_E = 0., master_E = 0.;
-    for (const auto &face : interface->faces)
-      if (face.pair == pair)
-        (face.slave ? slave_E : master_E) =
-          std::max(face.slave ? slave_E : master_E, face.youngs_modulus);
-    return master_E > 0. ? slave_E / master_E : 0.;
   }
 
   template <int dim>
@@ -963,7 +951,7 @@ namespace contact_fem
     // Stiffness ratios beyond ~1e10 (measured: 1e12 fails with either body
     // as the slave) and nearly incompressible bodies leave the direct solve
     // with too few digits: then that is the likely cause of any failure.
-    const std::string cause = precision_limits();
+    const std::string cause = diagnosis().precision_limits();
     return cause.empty() ? cause : " Likely cause: " + cause + ".";
   }
 
@@ -982,7 +970,7 @@ namespace contact_fem
     catch (const LinearSolverFailure &e)
       {
         throw NewtonFailure(where + ": " + e.what() + "." +
-                              (e.singular ? singular_system_hint() : precision_hint()),
+                              (e.singular ? diagnosis().singular_system_hint() : precision_hint()),
                             false);
       }
     catch (const std::exception &e)
@@ -993,7 +981,7 @@ namespace contact_fem
                               (pos != std::string::npos ?
                                  what.substr(pos, what.find(')', pos) - pos + 1) :
                                  std::string("the linear solver failed")) +
-                              "." + singular_system_hint(),
+                              "." + diagnosis().singular_system_hint(),
                             false);
       }
     // Both iterates satisfy the hanging-node and Dirichlet constraints, and
@@ -1092,7 +1080,7 @@ namespace contact_fem
         stop_if_interrupted(comm);
         if (iteration > 0 && contact && contact->n_active() == 0 &&
             !contact_parameters.allow_loss_of_contact)
-          throw NewtonFailure(no_contact_message(at, true, iteration == 1), false);
+          throw NewtonFailure(diagnosis().no_contact_message(at, current_time, true, iteration == 1), false);
         if (iteration > 0)
           newton_update(at, monitor.displacement_target());
         compute_residual();
@@ -1103,7 +1091,7 @@ namespace contact_fem
           throw NewtonFailure(at + ": the residual is not a number (|r_u| = " + scientific(r_u) +
                               ", |r_lambda| = " + scientific(r_lambda) +
                               "). The linear system is singular or the input is "
-                              "extreme." + singular_system_hint());
+                              "extreme." + diagnosis().singular_system_hint());
         assessment =
           monitor.assess(iteration, r_u, r_lambda, update.changes, update.searched_again);
         std::optional<unsigned int> linear_iterations;
@@ -1128,12 +1116,12 @@ namespace contact_fem
       }
     if (assessment.converged && contact && contact->n_active() == 0 &&
         !contact_parameters.allow_loss_of_contact)
-      throw NewtonFailure(no_contact_message(where, false, false), false);
+      throw NewtonFailure(diagnosis().no_contact_message(where, current_time, false, false), false);
     if (!assessment.converged)
       throw NewtonFailure(where + " did not converge in " +
                             std::to_string(newton_parameters.max_iterations) + " iterations " +
                             monitor.last_residuals() + "." +
-                            non_convergence_hint(assessment.stalled, monitor.last_r_u(),
+                            diagnosis().non_convergence_hint(assessment.stalled, monitor.last_r_u(),
                                                  monitor.last_r_lambda()) +
                             precision_hint(),
                           !assessment.stalled);
@@ -1433,6 +1421,71 @@ namespace contact_fem
 
   template <int dim>
   void
+  ContactProblem<dim>::check_reaction_balance(const Json &reaction, Json &cycle_record)
+  {
+    // The stability study's verdict tolerance (doc/stability.md): converged
+    // runs of the shipped scenes balance to 1e-10 or better, damped ones
+    // with tightened tolerances to about 2e-8.
+    constexpr double tolerance               = 1e-6;
+    constexpr double contrast_costing_digits = 1e6;
+    const double     imbalance = reaction["relative_imbalance"].number_value();
+    if (!(imbalance > tolerance))
+      return;
+    const ContactDiagnosis<dim> diagnosis = this->diagnosis();
+    std::string                 cause     = diagnosis.precision_limits();
+    if (cause.empty())
+      cause = diagnosis.load_at_round_off(current_time);
+    // Below the 1e10 limit a large contrast still costs the direct solve
+    // about log10(ratio) of its 16 digits (stiffness/cyl-1e8-swapped: 1.5e-6
+    // with the Newton residuals at their absolute tolerance, and smaller
+    // Newton tolerances do not lower it).
+    const auto [youngs_min, youngs_max] = materials.youngs_modulus_range();
+    if (cause.empty() && youngs_max > contrast_costing_digits * youngs_min)
+      cause = "the stiffness ratio between the bodies, " + significant(youngs_max / youngs_min, 2) +
+              ", costs the solve about " +
+              std::to_string(static_cast<int>(std::log10(youngs_max / youngs_min))) +
+              " of the 16 digits of double precision, and the reactions balance only "
+              "that well (smaller Newton tolerances do not help; a stiff body modelled "
+              "as rigid does)";
+    if (cause.empty())
+      cause = "the Newton tolerances leave that much out of balance (Newton/Displacement "
+              "relative tolerance = " +
+              significant(newton_parameters.displacement_relative_tolerance, 2) +
+              "); tighten them";
+    const std::string text = "the applied load and the support reactions are out of "
+                             "balance by " +
+                             scientific(imbalance, 1) + " of the forces (tolerance " +
+                             significant(tolerance, 2) + "): " + cause;
+    warn("balance_warning", text, cycle_record);
+    balance_failed = true;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::warn_about_precision_limits() const
+  {
+    for (const auto &[id, constants] : materials.bodies)
+      if (lambda_over_mu(constants.poisson_ratio) > warn_lambda_over_mu())
+        pcout << "  Warning: body " << static_cast<unsigned int>(id) << " has Poisson's ratio "
+              << std::setprecision(16) << constants.poisson_ratio << std::setprecision(6)
+              << ": lambda/mu = " << significant(lambda_over_mu(constants.poisson_ratio), 2)
+              << ", beyond " << significant(warn_lambda_over_mu(), 2)
+              << ", where double precision resolves the shear stiffness next to the "
+                 "volumetric one only to about 1e-14 lambda/mu: expect the reactions to "
+                 "balance the load to about that, or the solver to fail."
+              << std::endl;
+    const ContactDiagnosis<dim> diagnosis = this->diagnosis();
+    if (const std::string contrast = diagnosis.stiffness_contrast_limit(); !contrast.empty())
+      pcout << "  Warning: " << contrast << "." << std::endl;
+    if (const std::string auxetic = diagnosis.auxetic_limit(); !auxetic.empty())
+      pcout << "  Warning: " << auxetic << "." << std::endl;
+    const std::string round_off = diagnosis.load_at_round_off(load_stepping.end_time);
+    if (!round_off.empty())
+      pcout << "  Warning: " << round_off << "." << std::endl;
+  }
+
+  template <int dim>
+  void
   ContactProblem<dim>::warn_about_modelling_choices() const
   {
     warn_about_precision_limits();
@@ -1452,7 +1505,7 @@ namespace contact_fem
     if (interface)
       for (unsigned int p = 0; p < contact_parameters.pairs.size(); ++p)
         {
-          const double ratio = slave_stiffness_ratio(p);
+          const double ratio = diagnosis().slave_stiffness_ratio(p);
           if (ratio > 10.)
             pcout << "  Warning: contact pair "
                   << static_cast<unsigned int>(contact_parameters.pairs[p].slave) << ": "
@@ -1498,7 +1551,7 @@ namespace contact_fem
          << " Newton solve(s) of this cycle (up to " << most_null_pivots << " zero pivot(s))";
     // Zero pivots also come from stiffness lost in round-off: then that is
     // the cause, not a free rigid-body mode.
-    if (const std::string cause = precision_limits(); !cause.empty())
+    if (const std::string cause = diagnosis().precision_limits(); !cause.empty())
       text << ": " << cause;
     else
       text << ": a rigid-body mode that neither the supports nor the "
@@ -1724,7 +1777,7 @@ namespace contact_fem
     start_cycle(cycle, cycle_record);
     // A load at the round-off of the geometry leaves the gaps, the active
     // set and the pressures rounding noise: nothing to report as a result.
-    if (const std::string cause = contact ? load_at_round_off(load_stepping.end_time) : "";
+    if (const std::string cause = contact ? diagnosis().load_at_round_off(load_stepping.end_time) : "";
         !cause.empty())
       {
         pcout << std::endl << "Error: nothing is solved: " << cause << "." << std::endl;
@@ -1753,7 +1806,7 @@ namespace contact_fem
         converged && p_min < 0.)
       {
         // An active node in tension: the active set was decided by rounding.
-        const std::string cause = precision_limits();
+        const std::string cause = diagnosis().precision_limits();
         const std::string text =
           "the converged state has an active slave node in tension (contact pressure " +
           scientific(p_min, 2) + ", largest " +

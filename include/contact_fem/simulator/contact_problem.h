@@ -25,6 +25,7 @@
 #include <contact_fem/core/warning_log.h>
 #include <contact_fem/material/material.h>
 #include <contact_fem/postprocess/output_files.h>
+#include <contact_fem/simulator/contact_diagnosis.h>
 #include <contact_fem/simulator/input_checks.h>
 #include <contact_fem/simulator/scene_parameters.h>
 #include <contact_fem/contact/contact_parameters.h>
@@ -305,10 +306,6 @@ namespace contact_fem
     /// asks.
     void
     select_linear_solver();
-    /// Young's modulus of the slave side of contact pair @p pair over that
-    /// of its master side (the largest of each); 0 without master faces.
-    double
-    slave_stiffness_ratio(const unsigned int pair) const;
     void
     compute_residual();
     double
@@ -353,68 +350,21 @@ namespace contact_fem
       return {scene, materials, boundary_conditions, load_stepping, contact_parameters, degree,
               comm};
     }
-    // --- diagnoses (contact_diagnosis.cc)
-    /// The resultant of the applied pressures and tractions on each body. Collective.
-    std::map<types::material_id, Tensor<1, dim>>
-    body_loads(const double time) const;
-    /// The integral of the outward normal over boundary @p id. Collective.
-    Tensor<1, dim>
-    surface_normal(const types::boundary_id id) const;
-    /// The largest distance of a vertex from the origin. Collective.
-    double
-    model_size() const;
-    /// The displacement the load at @p time causes: applied force over the
-    /// smallest Young's modulus, or the largest prescribed displacement.
-    double
-    load_displacement_scale(const double time) const;
-    /// Why the load at @p time is at the round-off of the geometry, or "".
-    std::string
-    load_at_round_off(const double time) const;
-    /// Why double precision cannot resolve this model (stiffness ratio,
-    /// nearly incompressible body), or "".
-    std::string
-    precision_limits() const;
-    /// The stiffness ratio part of precision_limits().
-    std::string
-    stiffness_contrast_limit() const;
-    /// The nearly incompressible part of precision_limits().
-    std::string
-    incompressibility_limit() const;
-    /// The part of precision_limits() of a Poisson's ratio near -1.
-    std::string
-    auxetic_limit() const;
-    /// The applied loads along the outward normals of the contact surfaces
-    /// of their bodies: > 0 pushes the bodies together. Collective.
-    double
-    load_toward_contact(const double time) const;
-    /// The diagnosis of a step without active slave nodes at @p where:
-    /// the separating load, or the real cause if the load does not
-    /// separate the bodies. @p none_started: no node started the step in
-    /// contact (before any solve of the step). Collective.
-    std::string
-    no_contact_message(const std::string &where,
-                       const bool         in_iteration,
-                       const bool         none_started) const;
-    /// The hint of a Newton failure; @p stalled: the residuals stopped
-    /// decreasing without active-set changes.
-    std::string
-    non_convergence_hint(const bool stalled, const double r_u, const double r_lambda) const;
+    // --- diagnoses
+    /// The diagnoses of the run's present state (contact_diagnosis.h).
+    ContactDiagnosis<dim>
+    diagnosis() const
+    {
+      return ContactDiagnosis<dim>({scene, materials, boundary_conditions, contact_parameters,
+                                    newton_parameters, dof_handler, *mapping, interface.get(),
+                                    contact.get(), most_null_pivots});
+    }
     /// Warns and records when the reactions do not balance the load.
     void
     check_reaction_balance(const Json &reaction, Json &cycle_record);
     /// Warns about Poisson's ratios and loads beyond double precision.
     void
     warn_about_precision_limits() const;
-    /// What decides the linear solver: materials, cell shapes, supports.
-    /// Collective.
-    ProblemTraits
-    problem_traits() const;
-    /// The likely cause of a singular linear system (a penalty far above
-    /// its automatic value, the precision limits, a body without supports)
-    /// as a sentence for a failure message, or the question whether every
-    /// body is held. Collective.
-    std::string
-    singular_system_hint() const;
     // --- results (contact_output.cc)
     Json
     contact_results() const;
