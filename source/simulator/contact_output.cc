@@ -339,55 +339,6 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactProblem<dim>::write_convergence_row(const Json &r, const double cumulative)
-  {
-    const std::string path = output.directory + "/convergence.csv";
-    if (Utilities::MPI::this_mpi_process(comm) != 0)
-      {
-        check_written(path, true);
-        return;
-      }
-    unsigned int iterations = 0;
-    // Unknown values (no reference, no analytical solution) stay empty.
-    auto number = [](const Json &j) {
-      std::ostringstream s;
-      if (std::isfinite(j.number_value()))
-        s << std::setprecision(8) << j.number_value();
-      return s.str();
-    };
-    for (const auto &step : newton_iterations_of_cycle)
-      iterations += step;
-    convergence_csv << cycle << ',' << number(r["n_cells"]) << ',' << number(r["n_dofs"])
-                    << ',' << number(r["contact"]["active_slave_nodes"]) << ','
-                    << refinement.estimator << ',' << number(r["estimated_error"]) << ','
-                    << number(r["relative_estimated_error"]) << ','
-                    << number(r["effectivity_index"]) << ','
-                    << number(r["analytical"]["p_max_relative_error"]) << ','
-                    << number(r["analytical"]["a_error"]) << ','
-                    << number(r["pressure_l2_relative_error"]) << ','
-                    << number(r["energy_error"]) << ',' << iterations << ','
-                    << number(r["wall_time"]) << ',' << cumulative << ','
-                    << number(r["contact"]["max_contact_pressure"]) << ','
-                    << number(r["pressure_reference_l2_relative_error"]);
-    // Per contact pair, from the cycle's last load step: the magnitude of
-    // the normal force and the contact length (2D) or area (3D).
-    const Json &steps = r["load_steps"];
-    const Json &pairs = steps[steps.size() - 1]["forces"]["pairs"];
-    for (unsigned int p = 0; p < contact_parameters.pairs.size(); ++p)
-      {
-        const Json &force = pairs[p]["normal_force"];
-        double      squared = 0.;
-        for (unsigned int d = 0; d < dim; ++d)
-          squared += force[d].number_value() * force[d].number_value();
-        convergence_csv << ',' << number(Json(std::sqrt(squared))) << ','
-                        << number(pairs[p][dim == 2 ? "contact_length" : "contact_area"]);
-      }
-    convergence_csv << std::endl;
-    check_written(path, convergence_csv.good());
-  }
-
-  template <int dim>
-  void
   ContactProblem<dim>::write_summary(const Json        &cycles,
                                      const double       wall_time,
                                      const std::string &status) const
@@ -485,7 +436,6 @@ namespace contact_fem
   template std::vector<double> ContactProblem<dim>::probe_displacements() const; \
   template double ContactProblem<dim>::reference_pressure_error(                  \
     const std::vector<double> &) const;                                           \
-  template void ContactProblem<dim>::write_convergence_row(const Json &, const double); \
   template void ContactProblem<dim>::print_results(const Json &, const Json &,           \
                                                    const Json &) const;                \
   template void ContactProblem<dim>::write_summary(const Json &,                  \

@@ -1229,7 +1229,6 @@ namespace contact_fem
     // checked: an earlier run's files go (they would pass for this run's),
     // and a directory that cannot take the new ones stops the run before
     // any work.
-    const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
     const OutputDirectoryReport earlier_outputs = open_output_directory();
     pcout << "contact_fem: scene '" << scene_name << "', " << dim << "D, "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI process(es)" << std::endl
@@ -1250,24 +1249,8 @@ namespace contact_fem
 
     create_checked_mesh();
 
-    if (root)
-      {
-        convergence_csv.open(output.directory + "/convergence.csv");
-        convergence_csv << "cycle,cells,dofs,active_slave_nodes,estimator,estimated_error,"
-                           "relative_estimated_error,effectivity_index,p_max_relative_error,"
-                           "a_error,pressure_l2_relative_error,energy_error,"
-                           "newton_iterations,wall_time,cumulative_wall_time,"
-                           "max_contact_pressure,pressure_reference_l2_relative_error";
-        for (const auto &pair : contact_parameters.pairs)
-          {
-            const std::string name =
-              "pair_" + std::to_string(pair.slave) + "_" + std::to_string(pair.master);
-            convergence_csv << ',' << name << "_normal_force," << name
-                            << (dim == 2 ? "_contact_length" : "_contact_area");
-          }
-        convergence_csv << '\n';
-      }
-    check_written(output.directory + "/convergence.csv", !root || convergence_csv.good());
+    convergence_table = std::make_unique<ConvergenceTable<dim>>(
+      output.directory + "/convergence.csv", contact_parameters.pairs, comm);
     Json cycles    = Json::array();
     int  exit_code = 0;
     try
@@ -1364,7 +1347,10 @@ namespace contact_fem
           timing.set(multigrid_setup_section, multigrid_setup_seconds);
         record.set("timing", timing);
         cycles.push(record);
-        write_convergence_row(record, cumulative);
+        unsigned int newton_iterations = 0;
+        for (const unsigned int n : newton_iterations_of_cycle)
+          newton_iterations += n;
+        convergence_table->add_row(record, refinement.estimator, newton_iterations, cumulative);
         // Written after every cycle, so an interrupted study keeps its data;
         // the status says whether the run is complete.
         // Refining does not bring a state beyond the model back into it.

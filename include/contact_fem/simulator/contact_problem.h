@@ -24,6 +24,7 @@
 #include <contact_fem/core/json.h>
 #include <contact_fem/core/warning_log.h>
 #include <contact_fem/material/material.h>
+#include <contact_fem/postprocess/convergence_table.h>
 #include <contact_fem/postprocess/output_files.h>
 #include <contact_fem/simulator/contact_diagnosis.h>
 #include <contact_fem/simulator/input_checks.h>
@@ -395,8 +396,6 @@ namespace contact_fem
               contact_state};
     }
     void
-    write_convergence_row(const Json &cycle_record, const double cumulative_time);
-    void
     write_pressure_profile() const;
     /// The reactions and pair forces of the converged load step @p step
     /// (postprocess/forces.h): printed, into @p step_record and as a row
@@ -531,7 +530,8 @@ namespace contact_fem
     unsigned int                                   cycle = 0;
     std::vector<unsigned int> newton_iterations_of_cycle; ///< per load step
     double strain_energy = 0., external_work = 0.; ///< at the last residual
-    std::ofstream                                  convergence_csv;
+    /// convergence.csv, made with the output directory.
+    std::unique_ptr<ConvergenceTable<dim>>         convergence_table;
     /// Of InputChecks::check_scene_before_meshing(), printed by run().
     std::string memory_warning;
     /// Set by the first solve_load_step() (started_solving()).
