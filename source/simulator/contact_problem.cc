@@ -26,6 +26,42 @@
 
 namespace contact_fem
 {
+  namespace
+  {
+    /// Records and prints the energy-norm error of a solution of
+    /// @p potential_energy against @p reference_energy (Analytical
+    /// solution/Reference potential energy).
+    void
+    record_energy_error(const double              potential_energy,
+                        const double              chord_work,
+                        const double              reference_energy,
+                        const ConditionalOStream &pcout,
+                        Json                     &cycle_record)
+    {
+      // A conforming discrete solution minimises the energy over a subset:
+      // its energy lies above the exact one, and 2 (Pi_h - Pi) is the
+      // squared energy-norm error (plus the contact work, see the
+      // parameter).
+      // Degree-1 Hertz: the work of the contact force on the chord gap
+      // (HertzCylinder::compare()) is a geometry error of the polygonal arc, not
+      // part of the discretisation error the estimate is compared with.
+      const double chord_gap_work = std::isfinite(chord_work) ? chord_work : 0.;
+      const double excess = potential_energy + chord_gap_work - reference_energy;
+      const double energy_error = std::sqrt(2. * std::abs(excess));
+      cycle_record.set("energy_error", energy_error);
+      pcout << "    energy-norm error:            " << energy_error << " (from Pi_h "
+            << (chord_gap_work > 0. ? "+ W_chord " : "") << "- Pi_ref = " << excess << ")"
+            << std::endl;
+      if (excess < 0.)
+        pcout << "  Warning: the potential energy is below the reference: the "
+                 "discrete problem is softer than the exact one (a polygonal "
+                 "curved boundary, the weak mortar gap) or the reference is not "
+                 "accurate enough; sqrt(2 |Pi_h - Pi_ref|) is then not a bound "
+                 "of the error."
+              << std::endl;
+    }
+  } // namespace
+
   TeeStream::TeeStream(std::ostream &console)
     : std::ostream(&buffer)
   {
@@ -1763,20 +1799,19 @@ namespace contact_fem
     start_cycle(cycle, cycle_record);
     // A load at the round-off of the geometry leaves the gaps, the active
     // set and the pressures rounding noise: nothing to report as a result.
-    if (const std::string cause = contact ? diagnosis().load_at_round_off(load_stepping.end_time) : "";
+    if (const std::string cause =
+          contact ? diagnosis().load_at_round_off(load_stepping.end_time) : "";
         !cause.empty())
       {
         pcout << std::endl << "Error: nothing is solved: " << cause << "." << std::endl;
         cycle_record.set("failure", cause);
         return false;
       }
-    const LoadPath path      = step_the_load(cycle, cycle_record);
-    const unsigned int n_solved  = path.n_solved;
-    const bool         converged = path.converged;
-    check_converged_solution(n_solved > 0, cycle_record);
-    if (n_solved == 0)
+    const LoadPath path = step_the_load(cycle, cycle_record);
+    check_converged_solution(path.n_solved > 0, cycle_record);
+    if (path.n_solved == 0)
       return false;
-    if (!converged && contact)
+    if (!path.converged && contact)
       {
         // Results of the last converged state: its residual and gaps.
         make_dirichlet_constraints(current_time);
@@ -1784,7 +1819,21 @@ namespace contact_fem
         compute_residual();
         interface_displacement = interface->gather(solution);
       }
+    if (!record_results(path.converged, cycle_record) || !path.converged)
+      return false;
+    if (refinement.n_cycles > 1)
+      {
+        estimate_error(cycle_record);
+        if (vtu_output)
+          vtu_output->write_error_indicators(solution_view(nullptr), indicators, cycle);
+      }
+    return true;
+  }
 
+  template <int dim>
+  bool
+  ContactProblem<dim>::record_results(const bool converged, Json &cycle_record)
+  {
     const Json contact_json  = contact_results();
     const Json reaction_json = reaction_results();
     cycle_record.set("contact", contact_json).set("reaction", reaction_json);
@@ -1829,60 +1878,11 @@ namespace contact_fem
         pcout << "    pressure, L2 error against the reference: " << value_or_ok(error, 1e-10)
               << std::endl;
       }
-    double energy_error = std::numeric_limits<double>::quiet_NaN();
     if (std::isfinite(analytical.reference_potential_energy))
-      {
-        // A conforming discrete solution minimises the energy over a subset:
-        // its energy lies above the exact one, and 2 (Pi_h - Pi) is the
-        // squared energy-norm error (plus the contact work, see the
-        // parameter).
-        // Degree-1 Hertz: the work of the contact force on the chord gap
-        // (HertzCylinder::compare()) is a geometry error of the polygonal arc, not
-        // part of the discretisation error the estimate is compared with.
-        const double chord_work = hertz_json["chord_gap_work"].number_value();
-        const double chord_gap_work = std::isfinite(chord_work) ? chord_work : 0.;
-        const double excess =
-          potential_energy + chord_gap_work - analytical.reference_potential_energy;
-        energy_error = std::sqrt(2. * std::abs(excess));
-        cycle_record.set("energy_error", energy_error);
-        pcout << "    energy-norm error:            " << energy_error << " (from Pi_h "
-              << (chord_gap_work > 0. ? "+ W_chord " : "") << "- Pi_ref = " << excess << ")"
-              << std::endl;
-        if (excess < 0.)
-          pcout << "  Warning: the potential energy is below the reference: the "
-                   "discrete problem is softer than the exact one (a polygonal "
-                   "curved boundary, the weak mortar gap) or the reference is not "
-                   "accurate enough; sqrt(2 |Pi_h - Pi_ref|) is then not a bound "
-                   "of the error."
-                << std::endl;
-      }
+      record_energy_error(potential_energy, hertz_json["chord_gap_work"].number_value(),
+                          analytical.reference_potential_energy, pcout, cycle_record);
     if (output.write_pressure_profile && contact)
       write_pressure_profile();
-    if (!converged)
-      return false;
-    if (refinement.n_cycles > 1)
-      {
-        estimate_error(cycle_record);
-        if (energy_error > 0.)
-          {
-            const double effectivity =
-              cycle_record["estimated_error"].number_value() / energy_error;
-            cycle_record.set("effectivity_index", effectivity);
-            pcout << "    effectivity index eta / error: " << std::setprecision(3)
-                  << effectivity << std::setprecision(6) << std::endl;
-            pcout << "    effectivity in [0.8, 1.25]:   "
-                  << (effectivity >= 0.8 && effectivity <= 1.25 ? "yes" : "no") << std::endl;
-            const double plain = cycle_record["plain_spr_estimated_error"].number_value();
-            if (std::isfinite(plain))
-              {
-                cycle_record.set("plain_spr_effectivity_index", plain / energy_error);
-                pcout << "    effectivity of plain SPR:     " << std::setprecision(3)
-                      << plain / energy_error << std::setprecision(6) << std::endl;
-              }
-          }
-        if (vtu_output)
-          vtu_output->write_error_indicators(solution_view(nullptr), indicators, cycle);
-      }
     return true;
   }
 

@@ -330,6 +330,11 @@ namespace contact_fem
     /// Solves one cycle on the current mesh; returns false if Newton failed.
     bool
     run_cycle(const unsigned int cycle, Json &cycle_record);
+    /// Records and prints the results of the cycle's last converged state
+    /// (@p converged: the whole load path); false if that state is no
+    /// result (an active node in tension).
+    bool
+    record_results(const bool converged, Json &cycle_record);
     /// A new mesh: DoFs, the transferred solution, cell matrices, the
     /// cycle's first line and record entries.
     void
