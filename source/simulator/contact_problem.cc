@@ -1257,10 +1257,9 @@ namespace contact_fem
   }
 
   template <int dim>
-  int
-  ContactProblem<dim>::run()
+  void
+  ContactProblem<dim>::start_run()
   {
-    Timer total_timer;
     // The output directory is prepared only now, after all input was
     // checked: an earlier run's files go (they would pass for this run's),
     // and a directory that cannot take the new ones stops the run before
@@ -1287,6 +1286,14 @@ namespace contact_fem
 
     convergence_table = std::make_unique<ConvergenceTable<dim>>(
       output.directory + "/convergence.csv", contact_parameters.pairs, comm);
+  }
+
+  template <int dim>
+  int
+  ContactProblem<dim>::run()
+  {
+    Timer total_timer;
+    start_run();
     Json cycles    = Json::array();
     int  exit_code = 0;
     try
@@ -1375,13 +1382,7 @@ namespace contact_fem
         const double wall    = cycle_timer.wall_time() - uncounted_wall_time;
         cumulative += wall;
         record.set("wall_time", wall).set("cumulative_wall_time", cumulative);
-        Json timing = Json::object();
-        for (const auto &[name, seconds] :
-             timer->get_summary_data(TimerOutput::total_wall_time))
-          timing.set(name, seconds);
-        if (linear_solver->iterative())
-          timing.set(multigrid_setup_section, multigrid_setup_seconds);
-        record.set("timing", timing);
+        record.set("timing", cycle_timing());
         cycles.push(record);
         unsigned int newton_iterations = 0;
         for (const unsigned int n : newton_iterations_of_cycle)
@@ -1397,19 +1398,7 @@ namespace contact_fem
                       !last      ? "running" :
                                    converged_status());
         if (output.print_timing)
-          {
-            pcout << "  Wall time of cycle " << cycle << ": " << wall << " s (cumulative "
-                  << cumulative << " s), of which" << std::endl;
-            for (const auto &[name, seconds] :
-                 timer->get_summary_data(TimerOutput::total_wall_time))
-              pcout << "    " << std::left << std::setw(22) << name << std::right
-                    << std::setw(10) << std::fixed << std::setprecision(4) << seconds
-                    << " s" << std::defaultfloat << std::setprecision(6) << std::endl;
-            if (linear_solver->iterative())
-              pcout << "    (" << multigrid_setup_section << ": " << std::fixed
-                    << std::setprecision(4) << multigrid_setup_seconds << " s)"
-                    << std::defaultfloat << std::setprecision(6) << std::endl;
-          }
+          print_cycle_timing(wall, cumulative);
         if (!converged)
           return 2;
         if (beyond_model)
@@ -1427,6 +1416,34 @@ namespace contact_fem
           }
       }
     return 0;
+  }
+
+  template <int dim>
+  Json
+  ContactProblem<dim>::cycle_timing() const
+  {
+    Json timing = Json::object();
+    for (const auto &[name, seconds] : timer->get_summary_data(TimerOutput::total_wall_time))
+      timing.set(name, seconds);
+    if (linear_solver->iterative())
+      timing.set(multigrid_setup_section, multigrid_setup_seconds);
+    return timing;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::print_cycle_timing(const double wall, const double cumulative) const
+  {
+    pcout << "  Wall time of cycle " << cycle << ": " << wall << " s (cumulative " << cumulative
+          << " s), of which" << std::endl;
+    for (const auto &[name, seconds] : timer->get_summary_data(TimerOutput::total_wall_time))
+      pcout << "    " << std::left << std::setw(22) << name << std::right << std::setw(10)
+            << std::fixed << std::setprecision(4) << seconds << " s" << std::defaultfloat
+            << std::setprecision(6) << std::endl;
+    if (linear_solver->iterative())
+      pcout << "    (" << multigrid_setup_section << ": " << std::fixed << std::setprecision(4)
+            << multigrid_setup_seconds << " s)" << std::defaultfloat << std::setprecision(6)
+            << std::endl;
   }
 
   template <int dim>

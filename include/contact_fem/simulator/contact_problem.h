@@ -144,6 +144,10 @@ namespace contact_fem
     /// Builds the scene's mesh and checks it (materials, cell shapes).
     void
     create_checked_mesh();
+    /// The start of run(): the output directory, the first lines of the
+    /// console, the mesh and convergence.csv.
+    void
+    start_run();
     /// The adaptive cycles of run(), recorded in @p cycles; returns the
     /// exit code.
     int
@@ -173,6 +177,12 @@ namespace contact_fem
     /// side much stiffer than its master.
     void
     warn_about_modelling_choices() const;
+    /// The wall time of each timer section of the cycle (summary.json).
+    Json
+    cycle_timing() const;
+    /// Prints the wall time of the cycle and of its timer sections.
+    void
+    print_cycle_timing(const double wall, const double cumulative) const;
     /// The summary status of a run whose last cycle converged.
     std::string
     converged_status() const;
