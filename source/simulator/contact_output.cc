@@ -64,7 +64,7 @@ namespace contact_fem
       .set("total_contact_force", contact_state().contact_force().norm())
       .set("slave_element_size", n_active > 0 ? size_sum / n_active : 0.);
     contact->add_results(*interface, result);
-    result.set("largest_unexplained_penetration_over_h", last_penetration_excess);
+    result.set("largest_unexplained_penetration_over_h", search->last_penetration_excess());
     Json slave_split = Json::array(), master_split = Json::array();
     for (const unsigned int n : interface->slave_faces_per_rank)
       slave_split.push(n);

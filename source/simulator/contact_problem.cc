@@ -8,6 +8,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <contact_fem/simulator/contact_problem.h>
+#include <contact_fem/simulator/search_control.h>
 #include <contact_fem/simulator/solution_checks.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/core/interruption.h>
@@ -273,6 +274,8 @@ namespace contact_fem
         interface->initialize(*mapping, dof_handler, contact_parameters.pairs,
                               dirichlet_constraints, hanging_constraints, materials, comm);
         contact->initialize(*interface);
+        search = std::make_unique<SearchControl<dim>>(*interface, *contact, contact_parameters,
+                                                      *timer, pcout);
       }
     // Contact constraints couple slave DoFs to master DoFs anywhere: every
     // rank may write to the rows and entries of all interface DoFs.
@@ -784,185 +787,6 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactProblem<dim>::search_for_step(const double prescribed,
-                                       const double step_size,
-                                       const bool   first_step)
-  {
-    TimerOutput::Scope t(*timer, "Contact: search");
-    interface_fixed_values = interface->gather([this](const types::global_dof_index i) {
-      return dirichlet_constraints.is_constrained(i) ?
-               dirichlet_constraints.get_inhomogeneity(i) :
-               0.;
-    });
-    interface_displacement  = interface->gather(solution);
-    step_start_displacement = interface_displacement;
-    // The configuration the operators are built on: zero with small
-    // kinematics, the step's start with updated.
-    const std::vector<double> search_configuration =
-      contact_parameters.updated_kinematics ?
-        interface_displacement :
-        std::vector<double>(interface_displacement.size(), 0.);
-    // The step moves the surfaces at least as far as the prescribed
-    // displacements change, and about as far as the last step did per unit
-    // of load; with small kinematics the operators must also reach as far as
-    // the surfaces have moved from the reference configuration.
-    const std::vector<double> moved =
-      interface->relative_motion(search_configuration, interface_displacement);
-    motion_allowance.assign(interface->pairs.size(), 0.);
-    for (unsigned int p = 0; p < motion_allowance.size(); ++p)
-      {
-        double predicted = prescribed;
-        if (p < last_step_motion.size() && last_step_size > 0.)
-          predicted = std::max(predicted, last_step_motion[p] * step_size / last_step_size);
-        motion_allowance[p] = search_growth * (moved[p] + predicted);
-      }
-    interface->update(search_configuration, contact_parameters.search_factor, motion_allowance);
-    contact->start_load_step(*interface, interface_displacement, first_step);
-  }
-
-  template <int dim>
-  bool
-  ContactProblem<dim>::extend_search_if_outrun()
-  {
-    const std::vector<double> motion = interface->motion_since_search(interface_displacement);
-    bool                      outrun = false;
-    for (unsigned int p = 0; p < motion.size(); ++p)
-      if (motion[p] > interface->search_reach()[p])
-        {
-          motion_allowance[p] = std::max(motion_allowance[p], search_growth * motion[p]);
-          outrun              = true;
-        }
-    if (outrun)
-      {
-        pcout << "    the surfaces moved beyond the search reach: ";
-        search_again();
-      }
-    return outrun;
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::widen_search(const unsigned int pair, const double depth)
-  {
-    const double motion = interface->motion_since_search(interface_displacement)[pair];
-    motion_allowance[pair] =
-      std::max(2. * motion_allowance[pair], search_growth * motion) + depth;
-    pcout << "    a slave node penetrates the master where no master face is paired with "
-             "it: ";
-    search_again();
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::search_again()
-  {
-    pcout << "searching again with room for "
-          << scientific(*std::max_element(motion_allowance.begin(), motion_allowance.end()), 2)
-          << std::endl;
-    {
-      TimerOutput::Scope t(*timer, "Contact: search");
-      // The same configuration as the step's search (a copy: update()
-      // replaces the interface's own).
-      const std::vector<double> configuration = interface->search_configuration();
-      interface->update(configuration, contact_parameters.search_factor, motion_allowance);
-      contact->start_load_step(*interface, interface_displacement, false);
-    }
-    make_sparsity_pattern();
-  }
-
-  template <int dim>
-  typename ContactProblem<dim>::PenetrationCheck
-  ContactProblem<dim>::check_penetration() const
-  {
-    TimerOutput::Scope t(*timer, "Contact: check");
-    // What a node's own mortar gap says (with a penalty, or at the nodal
-    // value of a curved face's weighted gap, a node may lie inside), and
-    // the error of a gap linearised in the motion: a slip s along a surface
-    // whose normal turns by theta on the way moves the node off the
-    // linearised surface by about s theta, which small sliding bounds by
-    // theta < max_sliding_angle.
-    const auto allowed_at = [&](const typename ContactInterface<dim>::SlaveNode &s) {
-      return s.paired ? std::max(0., -interface->nodal_gap(s, interface_displacement)) +
-                          max_sliding_angle *
-                            interface->slip_since_search(s, interface_displacement) :
-                        0.;
-    };
-    PenetrationCheck check;
-    const auto       consider = [&](const typename ContactInterface<dim>::SlaveNode &s,
-                              const double distance,
-                              const double allowed,
-                              const bool   hanging) {
-      const double penetration = std::max(0., -distance);
-      if ((penetration - allowed) / s.size > check.excess)
-        {
-          check.excess      = (penetration - allowed) / s.size;
-          check.node        = s;
-          check.hanging     = hanging;
-          check.penetration = penetration;
-          check.allowed     = allowed;
-        }
-    };
-    const auto &slave_nodes = interface->slave_nodes;
-    std::map<unsigned int, double> allowed_of_node;
-    const std::vector<double> distance =
-      interface->surface_distances(slave_nodes, interface_displacement);
-    for (unsigned int i = 0; i < slave_nodes.size(); ++i)
-      {
-        const double allowed = allowed_at(slave_nodes[i]);
-        allowed_of_node[slave_nodes[i].node] = allowed;
-        consider(slave_nodes[i], distance[i], allowed, false);
-      }
-    // A hanging vertex moves with its parents: it may lie inside by what
-    // their gaps allow, in proportion to its weights.
-    const auto &hanging = interface->hanging_slave_vertices;
-    const std::vector<double> hanging_distance =
-      interface->surface_distances(hanging, interface_displacement);
-    for (unsigned int i = 0; i < hanging.size(); ++i)
-      {
-        double allowed = 0.;
-        for (const auto &[parent, weight] : interface->nodes[hanging[i].node].parents)
-          allowed += std::abs(weight) * allowed_of_node.at(parent);
-        consider(hanging[i], hanging_distance[i], allowed, true);
-      }
-    return check;
-  }
-
-  template <int dim>
-  NewtonFailure
-  ContactProblem<dim>::penetration_failure(const PenetrationCheck &check,
-                                           const unsigned int      step,
-                                           const double            time) const
-  {
-    const auto        &s = check.node;
-    const std::string configuration = contact_parameters.updated_kinematics ?
-                                        "configuration of the step's start" :
-                                        "reference configuration";
-    std::ostringstream message;
-    message << "load step " << step + 1 << " (t = " << time
-            << "): the converged solution is not a contact solution. The "
-            << (check.hanging ? "hanging slave vertex" : "slave node") << " at ("
-            << interface->nodes[s.node].reference << ") penetrates the master surface by "
-            << scientific(check.penetration, 3) << " (h = " << scientific(s.size, 3) << "), ";
-    if (s.paired)
-      message << (check.hanging ? "of which its parents' mortar gaps and their linearisation allow " :
-                                  "of which its mortar gap and its linearisation allow ")
-              << scientific(check.allowed, 3)
-              << ": the surfaces slid or turned farther than the operators built on the "
-              << configuration << " can follow";
-    else
-      message << "and no master face is paired with it, also after a wider search (its "
-                 "normal does not meet the master surface in the "
-              << configuration << ")";
-    message << " (Contact/Penetration tolerance = " << contact_parameters.penetration_tolerance
-            << " h).";
-    if (!contact_parameters.updated_kinematics)
-      message << " This motion is beyond small sliding, so smaller load steps cannot help: "
-                 "use Contact/Kinematics = updated with enough load steps.";
-    return NewtonFailure(message.str(), contact_parameters.updated_kinematics);
-  }
-
-  template <int dim>
-  void
   ContactProblem<dim>::prepare_load_step(const double time,
                                          const double step_size,
                                          const bool   first_step)
@@ -975,7 +799,15 @@ namespace contact_fem
     dirichlet_constraints.distribute(solution);
     ghosted_solution = solution;
     if (contact)
-      search_for_step(prescribed, step_size, first_step);
+      {
+        interface_fixed_values = interface->gather([this](const types::global_dof_index i) {
+          return dirichlet_constraints.is_constrained(i) ?
+                   dirichlet_constraints.get_inhomogeneity(i) :
+                   0.;
+        });
+        interface_displacement = interface->gather(solution);
+        search->start_step(interface_displacement, prescribed, step_size, first_step);
+      }
     make_sparsity_pattern();
     factorisation_current = false;
   }
@@ -1041,8 +873,11 @@ namespace contact_fem
         return update;
       }
     interface_displacement = interface->gather(solution);
-    if (iteration > 0)
-      update.searched_again = extend_search_if_outrun();
+    if (iteration > 0 && search->extend_if_outrun(interface_displacement))
+      {
+        update.searched_again = true;
+        make_sparsity_pattern();
+      }
     TimerOutput::Scope t(*timer, "Contact: active set");
     interface_residual = interface->gather(residual);
     if (iteration > 0)
@@ -1052,31 +887,6 @@ namespace contact_fem
       }
     update.residuals = contact->residuals(*interface, interface_displacement);
     return update;
-  }
-
-  template <int dim>
-  bool
-  ContactProblem<dim>::accept_contact_state(const unsigned int step,
-                                            const double       time,
-                                            const double       step_size,
-                                            unsigned int      &searches_after_check)
-  {
-    // The promise behind "converged": no slave node inside the master
-    // beyond what its gap accounts for. A node no master face is paired
-    // with gets a few wider searches.
-    const PenetrationCheck check = check_penetration();
-    if (check.excess > contact_parameters.penetration_tolerance)
-      {
-        if (check.node.paired || searches_after_check == max_searches_after_check)
-          throw penetration_failure(check, step, time);
-        ++searches_after_check;
-        widen_search(check.node.pair, check.penetration);
-        return false;
-      }
-    last_penetration_excess = check.excess;
-    last_step_motion = interface->relative_motion(step_start_displacement, interface_displacement);
-    last_step_size   = step_size;
-    return true;
   }
 
   template <int dim>
@@ -1109,7 +919,7 @@ namespace contact_fem
     // The contact sets after each iteration: a set that comes back after
     // changes means the iteration cycles and would never settle.
     std::vector<std::vector<int>> sets_of_iteration;
-    unsigned int              iteration = 0, searches_after_check = 0;
+    unsigned int              iteration = 0;
     for (; iteration <= newton_parameters.max_iterations; ++iteration)
       {
         const std::string at = where + ", iteration " + std::to_string(iteration);
@@ -1142,8 +952,10 @@ namespace contact_fem
         if (contact)
           check_for_cycling(at, iteration, update.changes, sets_of_iteration);
         if (assessment.converged && contact &&
-            !accept_contact_state(step, time, step_size, searches_after_check))
+            !search->accept(interface_displacement, step, time, step_size))
           {
+            // A wider search paired other faces: Newton goes on.
+            make_sparsity_pattern();
             assessment.converged = false;
             continue;
           }
@@ -1645,9 +1457,6 @@ namespace contact_fem
   ContactProblem<dim>::start_cycle(const unsigned int cycle, Json &cycle_record)
   {
     newton_iterations_of_cycle.clear();
-    last_step_motion.clear();
-    last_step_size          = 0.;
-    last_penetration_excess = 0.;
     singular_solves         = 0;
     most_null_pivots        = 0;
     multigrid_setup_seconds = 0.;

@@ -28,6 +28,8 @@
 #include <contact_fem/postprocess/output_files.h>
 #include <contact_fem/simulator/contact_diagnosis.h>
 #include <contact_fem/simulator/input_checks.h>
+#include <contact_fem/simulator/newton_failure.h>
+#include <contact_fem/simulator/search_control.h>
 #include <contact_fem/simulator/scene_parameters.h>
 #include <contact_fem/contact/contact_parameters.h>
 #include <contact_fem/core/parameters.h>
@@ -82,17 +84,6 @@ namespace contact_fem
       void
       drop_file();
     } buffer;
-  };
-
-  /// Thrown when a load step cannot be solved; carries the diagnosis.
-  struct NewtonFailure : public std::runtime_error
-  {
-    explicit NewtonFailure(const std::string &what, const bool splittable = true)
-      : std::runtime_error(what)
-      , splittable(splittable)
-    {}
-    /// false if a smaller step cannot help (e.g. the bodies separate).
-    bool splittable;
   };
 
   /**
@@ -203,45 +194,6 @@ namespace contact_fem
     /// distributed): a lower bound of the motion of the step. Collective.
     double
     prescribed_increment() const;
-    /// Searches the interface with the motion the step may bring (per pair,
-    /// predicted from @p prescribed and the last step) and starts the
-    /// load step of the formulation.
-    void
-    search_for_step(const double prescribed, const double step_size, const bool first_step);
-    /// During Newton: if the iterate moved the surfaces farther than the
-    /// search reaches, makes room for 1.5 times that motion and searches
-    /// again; returns whether it did.
-    bool
-    extend_search_if_outrun();
-    /// Makes room for twice the motion allowance of @p pair plus @p depth
-    /// and searches again.
-    void
-    widen_search(const unsigned int pair, const double depth);
-    /// Searches the same configuration with the present motion_allowance,
-    /// restarts the formulation's active set from the current iterate and
-    /// rebuilds the sparsity pattern.
-    void
-    search_again();
-    /// The slave node that penetrates the master most beyond what its own
-    /// mortar gap (and a small-sliding linearisation) accounts for.
-    struct PenetrationCheck
-    {
-      double excess = 0.; ///< over the node's element size
-      /// The worst slave node or hanging slave vertex.
-      typename ContactInterface<dim>::SlaveNode node;
-      bool   hanging     = false;
-      double penetration = 0., allowed = 0.;
-    };
-    /// After convergence: every slave node and hanging slave vertex against
-    /// the whole master surface (ContactInterface::surface_distances()).
-    PenetrationCheck
-    check_penetration() const;
-    /// The diagnosis of a failed check_penetration(); splittable with
-    /// updated kinematics only.
-    NewtonFailure
-    penetration_failure(const PenetrationCheck &check,
-                        const unsigned int      step,
-                        const double            time) const;
     void
     make_sparsity_pattern();
     void
@@ -273,14 +225,6 @@ namespace contact_fem
     /// outran it, recovers the multipliers and updates the active set.
     ContactUpdate
     update_contact(const unsigned int iteration);
-    /// The penetration check of a converged iterate: true if it holds
-    /// (and the step's motion is recorded), false after a wider search
-    /// (Newton goes on); throws if it fails for good.
-    bool
-    accept_contact_state(const unsigned int step,
-                         const double       time,
-                         const double       step_size,
-                         unsigned int      &searches_after_check);
     /// " Likely cause: ..." when a precision limit applies, else empty.
     std::string
     precision_hint() const;
@@ -504,10 +448,8 @@ namespace contact_fem
     std::vector<double>                    interface_fixed_values;
     std::vector<double>                    interface_residual;
     std::vector<bool>                      interface_dof_fixed;
-    /// Interface displacement at the start of the current load step.
-    std::vector<double>                    step_start_displacement;
-    /// The search reaches this many times the motion it is sized for.
-    static constexpr double                search_growth = 1.5;
+    /// The search of the interface over the load steps (with contact).
+    std::unique_ptr<SearchControl<dim>>    search;
     /// A point names a vertex closer than this times the cell's diameter
     /// (far above the digits a user types, far below the distance of two
     /// vertices of a valid cell).
@@ -515,19 +457,6 @@ namespace contact_fem
     /// A direct solve whose residual exceeds this fraction of the
     /// right-hand side has met a singular matrix.
     static constexpr double                singular_residual_ratio = 1e-3;
-    /// Wider searches for an unpaired penetrating node before giving up.
-    static constexpr unsigned int          max_searches_after_check = 3;
-    /// Small sliding: the normal turns by less than this (radians) along
-    /// the slip of a node, so a linearised gap errs by less than this times
-    /// the slip (check_penetration()).
-    static constexpr double                max_sliding_angle = 0.1;
-    /// Per pair: the motion allowance of the current search, and the
-    /// relative surface motion of the last converged step (with its size),
-    /// from which the next step's is predicted.
-    std::vector<double>                    motion_allowance, last_step_motion;
-    double                                 last_step_size = 0.;
-    /// Of the last converged step: the largest unexplained penetration / h.
-    double                                 last_penetration_excess = 0.;
 
     std::unique_ptr<TimerOutput>       timer; ///< made once the input is valid
     double                             current_time = 0.;
