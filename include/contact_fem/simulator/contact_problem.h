@@ -90,8 +90,12 @@ namespace contact_fem
    * Solves one scene: builds the mesh, steps the load, solves each step with
    * the semi-smooth Newton method, and writes the results.
    *
-   * Declared here, implemented in source/contact_problem.cc (set-up, Newton)
-   * and source/contact_output.cc (results, VTU, summary).
+   * Implemented in source/simulator/contact_problem.cc (set-up, load
+   * steps, Newton, cycles), contact_problem_refinement.cc (estimate and
+   * refinement) and contact_output.cc (results, summary); it hands the input
+   * checks to InputChecks, the diagnoses to ContactDiagnosis, the checks of
+   * a converged solution to SolutionChecks and the contact search to
+   * SearchControl.
    */
   template <int dim>
   class ContactProblem
@@ -265,7 +269,7 @@ namespace contact_fem
     compute_residual();
     double
     equilibrium_residual_norm(const std::vector<double> &contact_force_at_interface) const;
-    // --- adaptivity (refinement.cc)
+    // --- adaptivity (contact_problem_refinement.cc)
     void
     estimate_error(Json &cycle_record);
     /// Records and prints how far the traction of the recovered stress at
