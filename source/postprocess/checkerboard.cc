@@ -87,12 +87,11 @@ namespace contact_fem
   }
 
   template <int dim>
-  std::string
-  CheckerboardWarning::check(const ContactInterface<dim>   &interface,
-                             const ContactFormulation<dim> &contact,
-                             Json                          &record)
+  std::vector<std::string>
+  checkerboard_warnings(const ContactInterface<dim>   &interface,
+                        const ContactFormulation<dim> &contact)
   {
-    std::string text;
+    std::vector<std::string> warnings;
     for (const auto &finding : find_checkerboards(interface, contact))
       {
         const auto &pair  = interface.pairs[finding.pair];
@@ -123,20 +122,17 @@ namespace contact_fem
                      "the slave's resolution at the contact (Geometry/Local refinements), "
                      "make the coarser surface the slave (" << swapped
                   << "), or use Q2 (Finite element/Degree)";
-        record.set("checkerboard_warning", message.str());
-        if (!printed)
-          text += "  Warning: " + message.str() + ".\n";
+        warnings.push_back(message.str());
       }
-    printed = printed || !text.empty();
-    return text;
+    return warnings;
   }
 
   template std::vector<CheckerboardFinding>
   find_checkerboards(const ContactInterface<2> &, const ContactFormulation<2> &);
   template std::vector<CheckerboardFinding>
   find_checkerboards(const ContactInterface<3> &, const ContactFormulation<3> &);
-  template std::string
-  CheckerboardWarning::check(const ContactInterface<2> &, const ContactFormulation<2> &, Json &);
-  template std::string
-  CheckerboardWarning::check(const ContactInterface<3> &, const ContactFormulation<3> &, Json &);
+  template std::vector<std::string>
+  checkerboard_warnings(const ContactInterface<2> &, const ContactFormulation<2> &);
+  template std::vector<std::string>
+  checkerboard_warnings(const ContactInterface<3> &, const ContactFormulation<3> &);
 } // namespace contact_fem

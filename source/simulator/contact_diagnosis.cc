@@ -6,7 +6,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
-#include <contact_fem/simulator/contact_problem.h>
+#include <contact_fem/simulator/contact_diagnosis.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/geometry/mesh_queries.h>
 
@@ -37,21 +37,27 @@ namespace contact_fem
   } // namespace
 
   template <int dim>
+  ContactDiagnosis<dim>::ContactDiagnosis(const Run &run)
+    : run(run)
+    , comm(run.dof_handler.get_communicator())
+  {}
+
+  template <int dim>
   std::map<types::material_id, Tensor<1, dim>>
-  ContactProblem<dim>::body_loads(const double time) const
+  ContactDiagnosis<dim>::body_loads(const double time) const
   {
     // The resultant of the applied pressures and tractions on each body
     // (their sum is applied_load()).
-    const QGauss<dim - 1> quadrature(degree + 1);
-    FEFaceValues<dim>     fe_face(*mapping, fe, quadrature,
+    const QGauss<dim - 1> quadrature(run.dof_handler.get_fe().degree + 1);
+    FEFaceValues<dim>     fe_face(run.mapping, run.dof_handler.get_fe(), quadrature,
                               update_normal_vectors | update_quadrature_points |
                                 update_JxW_values);
     std::map<types::material_id, Tensor<1, dim>> loads;
-    for (const auto &[id, constants] : materials.bodies)
+    for (const auto &[id, constants] : run.materials.bodies)
       loads[id] = Tensor<1, dim>();
     // Adds int force ds over the faces of boundary @p id to each body's load.
     const auto integrate = [&](const types::boundary_id id, const auto &force_at) {
-      for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const auto &cell : run.dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           for (const auto f : cell->face_indices())
             if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
@@ -61,17 +67,17 @@ namespace contact_fem
                   loads[cell->material_id()] += force_at(q) * fe_face.JxW(q);
               }
     };
-    for (const auto &condition : boundary_conditions.pressures)
+    for (const auto &condition : run.boundary_conditions.pressures)
       {
-        UserFunction<dim> pressure({condition.expression}, scene.frame);
+        UserFunction<dim> pressure({condition.expression}, run.scene.frame);
         pressure.set_time(time);
         integrate(condition.boundary_id, [&](const unsigned int q) {
           return -pressure.value(fe_face.quadrature_point(q)) * fe_face.normal_vector(q);
         });
       }
-    for (const auto &condition : boundary_conditions.tractions)
+    for (const auto &condition : run.boundary_conditions.tractions)
       {
-        UserFunction<dim> traction(condition.expressions, scene.frame);
+        UserFunction<dim> traction(condition.expressions, run.scene.frame);
         traction.set_time(time);
         integrate(condition.boundary_id, [&](const unsigned int q) {
           Tensor<1, dim> t;
@@ -87,12 +93,12 @@ namespace contact_fem
 
   template <int dim>
   Tensor<1, dim>
-  ContactProblem<dim>::surface_normal(const types::boundary_id id) const
+  ContactDiagnosis<dim>::surface_normal(const types::boundary_id id) const
   {
-    const QGauss<dim - 1> quadrature(degree + 1);
-    FEFaceValues<dim> fe_face(*mapping, fe, quadrature, update_normal_vectors | update_JxW_values);
+    const QGauss<dim - 1> quadrature(run.dof_handler.get_fe().degree + 1);
+    FEFaceValues<dim> fe_face(run.mapping, run.dof_handler.get_fe(), quadrature, update_normal_vectors | update_JxW_values);
     Tensor<1, dim>    normal;
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    for (const auto &cell : run.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const auto f : cell->face_indices())
           if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
@@ -106,10 +112,10 @@ namespace contact_fem
 
   template <int dim>
   double
-  ContactProblem<dim>::model_size() const
+  ContactDiagnosis<dim>::model_size() const
   {
     double size = 0.;
-    for (const auto &cell : triangulation.active_cell_iterators())
+    for (const auto &cell : run.dof_handler.get_triangulation().active_cell_iterators())
       if (cell->is_locally_owned())
         for (const auto v : cell->vertex_indices())
           size = std::max(size, cell->vertex(v).norm());
@@ -118,14 +124,14 @@ namespace contact_fem
 
   template <int dim>
   double
-  ContactProblem<dim>::load_displacement_scale(const double time) const
+  ContactDiagnosis<dim>::load_displacement_scale(const double time) const
   {
     // A force F per unit thickness (2D) moves a body of modulus E by about
     // F / E: the softest body is the one that moves.
     // The largest load on one body, not the net load: loads that balance
     // each other (two bodies pressed together by opposite forces, held by
     // points that carry nothing) still move the bodies.
-    const double youngs_min = materials.youngs_modulus_range().first;
+    const double youngs_min = run.materials.youngs_modulus_range().first;
     double       largest    = 0.;
     for (const auto &[id, load] : body_loads(time))
       {
@@ -138,13 +144,13 @@ namespace contact_fem
       }
     const double by_force = largest / (youngs_min * std::pow(model_size(), dim - 2.));
     double prescribed = 0.;
-    for (const auto &condition : boundary_conditions.displacements)
+    for (const auto &condition : run.boundary_conditions.displacements)
       {
         if (condition.expression == "0")
           continue;
-        UserFunction<dim> function({condition.expression}, scene.frame);
+        UserFunction<dim> function({condition.expression}, run.scene.frame);
         function.set_time(time);
-        for (const auto &cell : triangulation.active_cell_iterators())
+        for (const auto &cell : run.dof_handler.get_triangulation().active_cell_iterators())
           if (cell->is_locally_owned())
             for (const auto f : cell->face_indices())
               if (cell->face(f)->at_boundary() &&
@@ -158,7 +164,7 @@ namespace contact_fem
 
   template <int dim>
   std::string
-  ContactProblem<dim>::load_at_round_off(const double time) const
+  ContactDiagnosis<dim>::load_at_round_off(const double time) const
   {
     const double displacement = load_displacement_scale(time);
     const double resolution   = std::numeric_limits<double>::epsilon() * model_size();
@@ -173,7 +179,7 @@ namespace contact_fem
 
   template <int dim>
   std::string
-  ContactProblem<dim>::precision_limits() const
+  ContactDiagnosis<dim>::precision_limits() const
   {
     if (const std::string contrast = stiffness_contrast_limit(); !contrast.empty())
       return contrast;
@@ -184,15 +190,15 @@ namespace contact_fem
 
   template <int dim>
   std::string
-  ContactProblem<dim>::stiffness_contrast_limit() const
+  ContactDiagnosis<dim>::stiffness_contrast_limit() const
   {
-    const auto [youngs_min, youngs_max] = materials.youngs_modulus_range();
+    const auto [youngs_min, youngs_max] = run.materials.youngs_modulus_range();
     if (!(youngs_max > 1e10 * youngs_min))
       return "";
     return "the stiffness ratio between the bodies, " + format(youngs_max / youngs_min) +
              ", is beyond what a direct solve in double precision resolves (about 1e10)" +
-             (most_null_pivots > 0 ? ": the factorisation found " +
-                                       std::to_string(most_null_pivots) +
+             (run.most_null_pivots > 0 ? ": the factorisation found " +
+                                       std::to_string(run.most_null_pivots) +
                                        " zero pivot(s), i.e. the softer body's stiffness "
                                        "vanished in round-off" :
                                      std::string()) +
@@ -201,17 +207,17 @@ namespace contact_fem
 
   template <int dim>
   std::string
-  ContactProblem<dim>::incompressibility_limit() const
+  ContactDiagnosis<dim>::incompressibility_limit() const
   {
-    for (const auto &[id, constants] : materials.bodies)
+    for (const auto &[id, constants] : run.materials.bodies)
       if (lambda_over_mu(constants.poisson_ratio) > warn_lambda_over_mu())
         return "body " + std::to_string(static_cast<unsigned int>(id)) +
                " is nearly incompressible: lambda/mu = " +
                format(lambda_over_mu(constants.poisson_ratio)) +
                ", and double precision resolves its shear stiffness next to its volumetric "
                "one only to about 1e-14 lambda/mu" +
-               (most_null_pivots > 0 ? " (the factorisation found " +
-                                         std::to_string(most_null_pivots) + " zero pivot(s))" :
+               (run.most_null_pivots > 0 ? " (the factorisation found " +
+                                         std::to_string(run.most_null_pivots) + " zero pivot(s))" :
                                        std::string()) +
                "; use a Poisson's ratio of at most 0.49999999 (lambda/mu = 5e7)";
     return "";
@@ -219,9 +225,9 @@ namespace contact_fem
 
   template <int dim>
   std::string
-  ContactProblem<dim>::auxetic_limit() const
+  ContactDiagnosis<dim>::auxetic_limit() const
   {
-    for (const auto &[id, constants] : materials.bodies)
+    for (const auto &[id, constants] : run.materials.bodies)
       if (shear_over_bulk(constants.poisson_ratio) > warn_shear_over_bulk())
         return "body " + std::to_string(static_cast<unsigned int>(id)) +
                " has Poisson's ratio " + format(constants.poisson_ratio, 17) +
@@ -238,20 +244,20 @@ namespace contact_fem
 
   template <int dim>
   double
-  ContactProblem<dim>::load_toward_contact(const double time) const
+  ContactDiagnosis<dim>::load_toward_contact(const double time) const
   {
     // Per pair: the load on the slave bodies along the slave surface's
     // outward normal, plus the load on the master bodies along the master
     // surface's: positive pushes the bodies together.
     const auto loads = body_loads(time);
     double     push  = 0.;
-    for (const auto &pair : contact_parameters.pairs)
+    for (const auto &pair : run.contact_parameters.pairs)
       for (const types::boundary_id id : {pair.slave, pair.master})
         {
           const Tensor<1, dim> normal = surface_normal(id);
           if (normal.norm() == 0.)
             continue;
-          for (const auto body : bodies_of_surface(triangulation, id))
+          for (const auto body : bodies_of_surface(run.dof_handler.get_triangulation(), id))
             push += loads.at(body) * normal / normal.norm();
         }
     return push;
@@ -259,9 +265,10 @@ namespace contact_fem
 
   template <int dim>
   std::string
-  ContactProblem<dim>::no_contact_message(const std::string &where,
-                                          const bool         in_iteration,
-                                          const bool         none_started) const
+  ContactDiagnosis<dim>::no_contact_message(const std::string &where,
+                                             const double       time,
+                                             const bool         in_iteration,
+                                             const bool         none_started) const
   {
     const std::string separation =
       where + ": no contact. No slave node is active" +
@@ -271,15 +278,15 @@ namespace contact_fem
     // Causes other than a separating load, most specific first.
     std::string cause = precision_limits();
     if (cause.empty())
-      cause = load_at_round_off(current_time);
+      cause = load_at_round_off(time);
     if (!cause.empty())
       return where + ": no contact. No slave node is active, but not because the load "
                      "separates the bodies: " +
              cause + ".";
     double total = 0.;
-    for (const auto &[id, load] : body_loads(current_time))
+    for (const auto &[id, load] : body_loads(time))
       total += load.norm();
-    const double push = load_toward_contact(current_time);
+    const double push = load_toward_contact(time);
     if (total > 0. && push > 1e-3 * total)
       {
         const std::string pushing =
@@ -306,7 +313,7 @@ namespace contact_fem
 
   template <int dim>
   std::string
-  ContactProblem<dim>::non_convergence_hint(const bool   stalled,
+  ContactDiagnosis<dim>::non_convergence_hint(const bool   stalled,
                                             const double r_u,
                                             const double r_lambda) const
   {
@@ -320,97 +327,33 @@ namespace contact_fem
     // the round-off of this system, and more iterations or smaller steps do
     // not lower it.
     std::string keys;
-    if (r_u > newton_parameters.displacement_absolute_tolerance)
+    if (r_u > run.newton_parameters.displacement_absolute_tolerance)
       keys = "Newton/Displacement absolute tolerance (" +
-             format(newton_parameters.displacement_absolute_tolerance) + ")";
-    if (r_lambda > newton_parameters.multiplier_absolute_tolerance)
+             format(run.newton_parameters.displacement_absolute_tolerance) + ")";
+    if (r_lambda > run.newton_parameters.multiplier_absolute_tolerance)
       keys += std::string(keys.empty() ? "" : " or ") + "Newton/Multiplier absolute tolerance (" +
-              format(newton_parameters.multiplier_absolute_tolerance) + ")";
+              format(run.newton_parameters.multiplier_absolute_tolerance) + ")";
     return " The residuals stalled at the round-off of this system (no active-set change, "
            "no decrease): the tolerances lie below what double precision reaches here. Raise " +
            keys + " above the last residuals.";
   }
 
   template <int dim>
-  void
-  ContactProblem<dim>::check_reaction_balance(const Json &reaction, Json &cycle_record)
-  {
-    // The stability study's verdict tolerance (doc/stability.md): converged
-    // runs of the shipped scenes balance to 1e-10 or better, damped ones
-    // with tightened tolerances to about 2e-8.
-    constexpr double tolerance               = 1e-6;
-    constexpr double contrast_costing_digits = 1e6;
-    const double     imbalance = reaction["relative_imbalance"].number_value();
-    if (!(imbalance > tolerance))
-      return;
-    std::string cause = precision_limits();
-    if (cause.empty())
-      cause = load_at_round_off(current_time);
-    // Below the 1e10 limit a large contrast still costs the direct solve
-    // about log10(ratio) of its 16 digits (stiffness/cyl-1e8-swapped: 1.5e-6
-    // with the Newton residuals at their absolute tolerance, and smaller
-    // Newton tolerances do not lower it).
-    const auto [youngs_min, youngs_max] = materials.youngs_modulus_range();
-    if (cause.empty() && youngs_max > contrast_costing_digits * youngs_min)
-      cause = "the stiffness ratio between the bodies, " + format(youngs_max / youngs_min) +
-              ", costs the solve about " +
-              std::to_string(static_cast<int>(std::log10(youngs_max / youngs_min))) +
-              " of the 16 digits of double precision, and the reactions balance only "
-              "that well (smaller Newton tolerances do not help; a stiff body modelled "
-              "as rigid does)";
-    if (cause.empty())
-      cause = "the Newton tolerances leave that much out of balance (Newton/Displacement "
-              "relative tolerance = " +
-              format(newton_parameters.displacement_relative_tolerance) +
-              "); tighten them";
-    const std::string text = "the applied load and the support reactions are out of "
-                             "balance by " +
-                             scientific(imbalance, 1) + " of the forces (tolerance " +
-                             format(tolerance) + "): " + cause;
-    pcout << "  Warning: " << text << "." << std::endl;
-    cycle_record.set("balance_warning", text);
-    balance_failed = true;
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::warn_about_precision_limits() const
-  {
-    for (const auto &[id, constants] : materials.bodies)
-      if (lambda_over_mu(constants.poisson_ratio) > warn_lambda_over_mu())
-        pcout << "  Warning: body " << static_cast<unsigned int>(id) << " has Poisson's ratio "
-              << std::setprecision(16) << constants.poisson_ratio << std::setprecision(6)
-              << ": lambda/mu = " << format(lambda_over_mu(constants.poisson_ratio))
-              << ", beyond " << format(warn_lambda_over_mu())
-              << ", where double precision resolves the shear stiffness next to the "
-                 "volumetric one only to about 1e-14 lambda/mu: expect the reactions to "
-                 "balance the load to about that, or the solver to fail."
-              << std::endl;
-    if (const std::string contrast = stiffness_contrast_limit(); !contrast.empty())
-      pcout << "  Warning: " << contrast << "." << std::endl;
-    if (const std::string auxetic = auxetic_limit(); !auxetic.empty())
-      pcout << "  Warning: " << auxetic << "." << std::endl;
-    const std::string round_off = load_at_round_off(load_stepping.end_time);
-    if (!round_off.empty())
-      pcout << "  Warning: " << round_off << "." << std::endl;
-  }
-
-  template <int dim>
   ProblemTraits
-  ContactProblem<dim>::problem_traits() const
+  ContactDiagnosis<dim>::problem_traits() const
   {
     ProblemTraits traits;
     traits.dim = dim;
-    if (interface)
-      for (unsigned int p = 0; p < contact_parameters.pairs.size(); ++p)
+    if (run.interface)
+      for (unsigned int p = 0; p < run.contact_parameters.pairs.size(); ++p)
         traits.slave_stiffness_ratio =
           std::max(traits.slave_stiffness_ratio, slave_stiffness_ratio(p));
-    for (const auto &[id, constants] : materials.bodies)
+    for (const auto &[id, constants] : run.materials.bodies)
       traits.largest_lambda_over_mu =
         std::max(traits.largest_lambda_over_mu, lambda_over_mu(constants.poisson_ratio));
-    const auto [youngs_min, youngs_max] = materials.youngs_modulus_range();
+    const auto [youngs_min, youngs_max] = run.materials.youngs_modulus_range();
     traits.youngs_modulus_contrast      = youngs_max / youngs_min;
-    for (const auto &cell : triangulation.active_cell_iterators())
+    for (const auto &cell : run.dof_handler.get_triangulation().active_cell_iterators())
       if (cell->is_locally_owned())
         {
           double shortest = std::numeric_limits<double>::max(), longest = 0.;
@@ -426,12 +369,12 @@ namespace contact_fem
     // A body is supported if a Dirichlet condition holds a face or a
     // vertex of it (the coarse mesh knows every body on every rank).
     std::set<types::material_id> supported;
-    for (const auto &condition : boundary_conditions.displacements)
-      for (const auto body : bodies_of_surface(triangulation, condition.boundary_id))
+    for (const auto &condition : run.boundary_conditions.displacements)
+      for (const auto body : bodies_of_surface(run.dof_handler.get_triangulation(), condition.boundary_id))
         supported.insert(body);
-    for (const auto &condition : boundary_conditions.points)
+    for (const auto &condition : run.boundary_conditions.points)
       supported.insert(condition.point.material_id);
-    for (const auto &[id, constants] : materials.bodies)
+    for (const auto &[id, constants] : run.materials.bodies)
       if (supported.count(id) == 0)
         traits.unsupported_bodies.push_back(id);
     return traits;
@@ -439,12 +382,12 @@ namespace contact_fem
 
   template <int dim>
   std::string
-  ContactProblem<dim>::singular_system_hint() const
+  ContactDiagnosis<dim>::singular_system_hint() const
   {
     // Most specific first: what the input says, before the question.
     constexpr double penalty_digits = 1e6;
-    if (contact && contact->penalty_over_automatic() > penalty_digits)
-      return " Likely cause: Contact/Penalty is " + format(contact->penalty_over_automatic()) +
+    if (run.contact && run.contact->penalty_over_automatic() > penalty_digits)
+      return " Likely cause: Contact/Penalty is " + format(run.contact->penalty_over_automatic()) +
              " times its automatic value (Contact/Penalty = auto): the contact stiffness "
              "swamps the bodies' stiffness, and each factor of 10 above the automatic "
              "value costs the factorisation about one of the 16 digits of double "
@@ -467,26 +410,18 @@ namespace contact_fem
     return " Hint: is every body held by supports or by at least one active contact node?";
   }
 
-  // The class is instantiated in contact_problem.cc; here only the members
-  // defined in this file.
-#define INSTANTIATE(dim) \
-  template std::map<types::material_id, Tensor<1, dim>> ContactProblem<dim>::body_loads( const double) const; \
-  template Tensor<1, dim> ContactProblem<dim>::surface_normal(const types::boundary_id) const; \
-  template double ContactProblem<dim>::model_size() const; \
-  template double ContactProblem<dim>::load_displacement_scale(const double) const; \
-  template std::string ContactProblem<dim>::load_at_round_off(const double) const; \
-  template std::string ContactProblem<dim>::precision_limits() const; \
-  template std::string ContactProblem<dim>::stiffness_contrast_limit() const; \
-  template std::string ContactProblem<dim>::incompressibility_limit() const; \
-  template double      ContactProblem<dim>::load_toward_contact(const double) const; \
-  template std::string ContactProblem<dim>::no_contact_message(const std::string &, const bool, const bool) const; \
-  template std::string ContactProblem<dim>::non_convergence_hint(const bool, const double, const double) const; \
-  template void ContactProblem<dim>::check_reaction_balance(const Json &, Json &); \
-  template void ContactProblem<dim>::warn_about_precision_limits() const; \
-  template ProblemTraits ContactProblem<dim>::problem_traits() const; \
-  template std::string   ContactProblem<dim>::singular_system_hint() const; \
-  template std::string   ContactProblem<dim>::auxetic_limit() const;
-  INSTANTIATE(2)
-  INSTANTIATE(3)
-#undef INSTANTIATE
+  template <int dim>
+  double
+  ContactDiagnosis<dim>::slave_stiffness_ratio(const unsigned int pair) const
+  {
+    double slave_E = 0., master_E = 0.;
+    for (const auto &face : run.interface->faces)
+      if (face.pair == pair)
+        (face.slave ? slave_E : master_E) =
+          std::max(face.slave ? slave_E : master_E, face.youngs_modulus);
+    return master_E > 0. ? slave_E / master_E : 0.;
+  }
+
+  template class ContactDiagnosis<2>;
+  template class ContactDiagnosis<3>;
 } // namespace contact_fem

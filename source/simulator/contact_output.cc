@@ -23,7 +23,7 @@ namespace contact_fem
   ContactProblem<dim>::applied_load(const double time) const
   {
     Tensor<1, dim> force;
-    for (const auto &[id, load] : body_loads(time))
+    for (const auto &[id, load] : diagnosis().body_loads(time))
       force += load;
     return force;
   }
@@ -64,7 +64,7 @@ namespace contact_fem
       .set("total_contact_force", contact_state().contact_force().norm())
       .set("slave_element_size", n_active > 0 ? size_sum / n_active : 0.);
     contact->add_results(*interface, result);
-    result.set("largest_unexplained_penetration_over_h", last_penetration_excess);
+    result.set("largest_unexplained_penetration_over_h", search->last_penetration_excess());
     Json slave_split = Json::array(), master_split = Json::array();
     for (const unsigned int n : interface->slave_faces_per_rank)
       slave_split.push(n);
@@ -125,7 +125,7 @@ namespace contact_fem
     // opposite forces) have a net of round-off: their scale is the largest
     // load on one body.
     double largest_body_load = 0.;
-    for (const auto &[id, body_load] : body_loads(current_time))
+    for (const auto &[id, body_load] : diagnosis().body_loads(current_time))
       largest_body_load = std::max(largest_body_load, body_load.norm());
     const double scale = std::max({load.norm(), largest_body_load, 0.5 * absolute_sum});
     Json                 result = Json::object();
@@ -340,55 +340,6 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactProblem<dim>::write_convergence_row(const Json &r, const double cumulative)
-  {
-    const std::string path = output.directory + "/convergence.csv";
-    if (Utilities::MPI::this_mpi_process(comm) != 0)
-      {
-        check_written(path, true);
-        return;
-      }
-    unsigned int iterations = 0;
-    // Unknown values (no reference, no analytical solution) stay empty.
-    auto number = [](const Json &j) {
-      std::ostringstream s;
-      if (std::isfinite(j.number_value()))
-        s << std::setprecision(8) << j.number_value();
-      return s.str();
-    };
-    for (const auto &step : newton_iterations_of_cycle)
-      iterations += step;
-    convergence_csv << cycle << ',' << number(r["n_cells"]) << ',' << number(r["n_dofs"])
-                    << ',' << number(r["contact"]["active_slave_nodes"]) << ','
-                    << refinement.estimator << ',' << number(r["estimated_error"]) << ','
-                    << number(r["relative_estimated_error"]) << ','
-                    << number(r["effectivity_index"]) << ','
-                    << number(r["analytical"]["p_max_relative_error"]) << ','
-                    << number(r["analytical"]["a_error"]) << ','
-                    << number(r["pressure_l2_relative_error"]) << ','
-                    << number(r["energy_error"]) << ',' << iterations << ','
-                    << number(r["wall_time"]) << ',' << cumulative << ','
-                    << number(r["contact"]["max_contact_pressure"]) << ','
-                    << number(r["pressure_reference_l2_relative_error"]);
-    // Per contact pair, from the cycle's last load step: the magnitude of
-    // the normal force and the contact length (2D) or area (3D).
-    const Json &steps = r["load_steps"];
-    const Json &pairs = steps[steps.size() - 1]["forces"]["pairs"];
-    for (unsigned int p = 0; p < contact_parameters.pairs.size(); ++p)
-      {
-        const Json &force = pairs[p]["normal_force"];
-        double      squared = 0.;
-        for (unsigned int d = 0; d < dim; ++d)
-          squared += force[d].number_value() * force[d].number_value();
-        convergence_csv << ',' << number(Json(std::sqrt(squared))) << ','
-                        << number(pairs[p][dim == 2 ? "contact_length" : "contact_area"]);
-      }
-    convergence_csv << std::endl;
-    check_written(path, convergence_csv.good());
-  }
-
-  template <int dim>
-  void
   ContactProblem<dim>::write_summary(const Json        &cycles,
                                      const double       wall_time,
                                      const std::string &status) const
@@ -416,6 +367,8 @@ namespace contact_fem
           origin.push(scene.frame.origin[d]);
         summary.set("coordinate_origin", origin);
       }
+    if (!warnings.empty())
+      summary.set("warnings", warnings.to_json());
     summary.set("cycles", cycles);
     std::ostringstream out;
     summary.write(out);
@@ -484,7 +437,6 @@ namespace contact_fem
   template std::vector<double> ContactProblem<dim>::probe_displacements() const; \
   template double ContactProblem<dim>::reference_pressure_error(                  \
     const std::vector<double> &) const;                                           \
-  template void ContactProblem<dim>::write_convergence_row(const Json &, const double); \
   template void ContactProblem<dim>::print_results(const Json &, const Json &,           \
                                                    const Json &) const;                \
   template void ContactProblem<dim>::write_summary(const Json &,                  \

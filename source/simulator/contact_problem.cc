@@ -9,6 +9,8 @@
 
 #include <contact_fem/simulator/contact_problem.h>
 #include <contact_fem/contact/friction/friction_capacity.h>
+#include <contact_fem/simulator/search_control.h>
+#include <contact_fem/simulator/solution_checks.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/core/interruption.h>
 #include <contact_fem/core/parameters.h>
@@ -26,6 +28,42 @@
 
 namespace contact_fem
 {
+  namespace
+  {
+    /// Records and prints the energy-norm error of a solution of
+    /// @p potential_energy against @p reference_energy (Analytical
+    /// solution/Reference potential energy).
+    void
+    record_energy_error(const double              potential_energy,
+                        const double              chord_work,
+                        const double              reference_energy,
+                        const ConditionalOStream &pcout,
+                        Json                     &cycle_record)
+    {
+      // A conforming discrete solution minimises the energy over a subset:
+      // its energy lies above the exact one, and 2 (Pi_h - Pi) is the
+      // squared energy-norm error (plus the contact work, see the
+      // parameter).
+      // Degree-1 Hertz: the work of the contact force on the chord gap
+      // (HertzCylinder::compare()) is a geometry error of the polygonal arc, not
+      // part of the discretisation error the estimate is compared with.
+      const double chord_gap_work = std::isfinite(chord_work) ? chord_work : 0.;
+      const double excess = potential_energy + chord_gap_work - reference_energy;
+      const double energy_error = std::sqrt(2. * std::abs(excess));
+      cycle_record.set("energy_error", energy_error);
+      pcout << "    energy-norm error:            " << energy_error << " (from Pi_h "
+            << (chord_gap_work > 0. ? "+ W_chord " : "") << "- Pi_ref = " << excess << ")"
+            << std::endl;
+      if (excess < 0.)
+        pcout << "  Warning: the potential energy is below the reference: the "
+                 "discrete problem is softer than the exact one (a polygonal "
+                 "curved boundary, the weak mortar gap) or the reference is not "
+                 "accurate enough; sqrt(2 |Pi_h - Pi_ref|) is then not a bound "
+                 "of the error."
+              << std::endl;
+    }
+  } // namespace
+
   TeeStream::TeeStream(std::ostream &console)
     : std::ostream(&buffer)
   {
@@ -198,7 +236,7 @@ namespace contact_fem
     comparison = AnalyticalComparison<dim>::create(analytical);
     output.parse_parameters(prm, dim);
     model_range.parse_parameters(prm);
-    check_scene_before_meshing();
+    memory_warning = input_checks().check_scene_before_meshing(inclined_supports);
 
     timer = std::make_unique<TimerOutput>(comm, pcout, TimerOutput::never,
                                           TimerOutput::wall_times);
@@ -237,6 +275,8 @@ namespace contact_fem
         interface->initialize(*mapping, dof_handler, contact_parameters.pairs,
                               dirichlet_constraints, hanging_constraints, materials, comm);
         contact->initialize(*interface);
+        search = std::make_unique<SearchControl<dim>>(*interface, *contact, contact_parameters,
+                                                      *timer, pcout);
       }
     // Contact constraints couple slave DoFs to master DoFs anywhere: every
     // rank may write to the rows and entries of all interface DoFs.
@@ -275,22 +315,10 @@ namespace contact_fem
   void
   ContactProblem<dim>::select_linear_solver()
   {
-    const ProblemTraits traits = problem_traits();
+    const ProblemTraits traits = diagnosis().problem_traits();
     linear_solver->set_problem(traits);
     if (linear_solver->select(dof_handler.n_dofs()))
       linear_solver->set_near_null_space(rigid_body_modes(*mapping, dof_handler));
-  }
-
-  template <int dim>
-  double
-  ContactProblem<dim>::slave_stiffness_ratio(const unsigned int pair) const
-  {
-    double slave_E = 0., master_E = 0.;
-    for (const auto &face : interface->faces)
-      if (face.pair == pair)
-        (face.slave ? slave_E : master_E) =
-          std::max(face.slave ? slave_E : master_E, face.youngs_modulus);
-    return master_E > 0. ? slave_E / master_E : 0.;
   }
 
   template <int dim>
@@ -763,185 +791,6 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactProblem<dim>::search_for_step(const double prescribed,
-                                       const double step_size,
-                                       const bool   first_step)
-  {
-    TimerOutput::Scope t(*timer, "Contact: search");
-    interface_fixed_values = interface->gather([this](const types::global_dof_index i) {
-      return dirichlet_constraints.is_constrained(i) ?
-               dirichlet_constraints.get_inhomogeneity(i) :
-               0.;
-    });
-    interface_displacement  = interface->gather(solution);
-    step_start_displacement = interface_displacement;
-    // The configuration the operators are built on: zero with small
-    // kinematics, the step's start with updated.
-    const std::vector<double> search_configuration =
-      contact_parameters.updated_kinematics ?
-        interface_displacement :
-        std::vector<double>(interface_displacement.size(), 0.);
-    // The step moves the surfaces at least as far as the prescribed
-    // displacements change, and about as far as the last step did per unit
-    // of load; with small kinematics the operators must also reach as far as
-    // the surfaces have moved from the reference configuration.
-    const std::vector<double> moved =
-      interface->relative_motion(search_configuration, interface_displacement);
-    motion_allowance.assign(interface->pairs.size(), 0.);
-    for (unsigned int p = 0; p < motion_allowance.size(); ++p)
-      {
-        double predicted = prescribed;
-        if (p < last_step_motion.size() && last_step_size > 0.)
-          predicted = std::max(predicted, last_step_motion[p] * step_size / last_step_size);
-        motion_allowance[p] = search_growth * (moved[p] + predicted);
-      }
-    interface->update(search_configuration, contact_parameters.search_factor, motion_allowance);
-    contact->start_load_step(*interface, interface_displacement, first_step);
-  }
-
-  template <int dim>
-  bool
-  ContactProblem<dim>::extend_search_if_outrun()
-  {
-    const std::vector<double> motion = interface->motion_since_search(interface_displacement);
-    bool                      outrun = false;
-    for (unsigned int p = 0; p < motion.size(); ++p)
-      if (motion[p] > interface->search_reach()[p])
-        {
-          motion_allowance[p] = std::max(motion_allowance[p], search_growth * motion[p]);
-          outrun              = true;
-        }
-    if (outrun)
-      {
-        pcout << "    the surfaces moved beyond the search reach: ";
-        search_again();
-      }
-    return outrun;
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::widen_search(const unsigned int pair, const double depth)
-  {
-    const double motion = interface->motion_since_search(interface_displacement)[pair];
-    motion_allowance[pair] =
-      std::max(2. * motion_allowance[pair], search_growth * motion) + depth;
-    pcout << "    a slave node penetrates the master where no master face is paired with "
-             "it: ";
-    search_again();
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::search_again()
-  {
-    pcout << "searching again with room for "
-          << scientific(*std::max_element(motion_allowance.begin(), motion_allowance.end()), 2)
-          << std::endl;
-    {
-      TimerOutput::Scope t(*timer, "Contact: search");
-      // The same configuration as the step's search (a copy: update()
-      // replaces the interface's own).
-      const std::vector<double> configuration = interface->search_configuration();
-      interface->update(configuration, contact_parameters.search_factor, motion_allowance);
-      contact->start_load_step(*interface, interface_displacement, false);
-    }
-    make_sparsity_pattern();
-  }
-
-  template <int dim>
-  typename ContactProblem<dim>::PenetrationCheck
-  ContactProblem<dim>::check_penetration() const
-  {
-    TimerOutput::Scope t(*timer, "Contact: check");
-    // What a node's own mortar gap says (with a penalty, or at the nodal
-    // value of a curved face's weighted gap, a node may lie inside), and
-    // the error of a gap linearised in the motion: a slip s along a surface
-    // whose normal turns by theta on the way moves the node off the
-    // linearised surface by about s theta, which small sliding bounds by
-    // theta < max_sliding_angle.
-    const auto allowed_at = [&](const typename ContactInterface<dim>::SlaveNode &s) {
-      return s.paired ? std::max(0., -interface->nodal_gap(s, interface_displacement)) +
-                          max_sliding_angle *
-                            interface->slip_since_search(s, interface_displacement) :
-                        0.;
-    };
-    PenetrationCheck check;
-    const auto       consider = [&](const typename ContactInterface<dim>::SlaveNode &s,
-                              const double distance,
-                              const double allowed,
-                              const bool   hanging) {
-      const double penetration = std::max(0., -distance);
-      if ((penetration - allowed) / s.size > check.excess)
-        {
-          check.excess      = (penetration - allowed) / s.size;
-          check.node        = s;
-          check.hanging     = hanging;
-          check.penetration = penetration;
-          check.allowed     = allowed;
-        }
-    };
-    const auto &slave_nodes = interface->slave_nodes;
-    std::map<unsigned int, double> allowed_of_node;
-    const std::vector<double> distance =
-      interface->surface_distances(slave_nodes, interface_displacement);
-    for (unsigned int i = 0; i < slave_nodes.size(); ++i)
-      {
-        const double allowed = allowed_at(slave_nodes[i]);
-        allowed_of_node[slave_nodes[i].node] = allowed;
-        consider(slave_nodes[i], distance[i], allowed, false);
-      }
-    // A hanging vertex moves with its parents: it may lie inside by what
-    // their gaps allow, in proportion to its weights.
-    const auto &hanging = interface->hanging_slave_vertices;
-    const std::vector<double> hanging_distance =
-      interface->surface_distances(hanging, interface_displacement);
-    for (unsigned int i = 0; i < hanging.size(); ++i)
-      {
-        double allowed = 0.;
-        for (const auto &[parent, weight] : interface->nodes[hanging[i].node].parents)
-          allowed += std::abs(weight) * allowed_of_node.at(parent);
-        consider(hanging[i], hanging_distance[i], allowed, true);
-      }
-    return check;
-  }
-
-  template <int dim>
-  NewtonFailure
-  ContactProblem<dim>::penetration_failure(const PenetrationCheck &check,
-                                           const unsigned int      step,
-                                           const double            time) const
-  {
-    const auto        &s = check.node;
-    const std::string configuration = contact_parameters.updated_kinematics ?
-                                        "configuration of the step's start" :
-                                        "reference configuration";
-    std::ostringstream message;
-    message << "load step " << step + 1 << " (t = " << time
-            << "): the converged solution is not a contact solution. The "
-            << (check.hanging ? "hanging slave vertex" : "slave node") << " at ("
-            << interface->nodes[s.node].reference << ") penetrates the master surface by "
-            << scientific(check.penetration, 3) << " (h = " << scientific(s.size, 3) << "), ";
-    if (s.paired)
-      message << (check.hanging ? "of which its parents' mortar gaps and their linearisation allow " :
-                                  "of which its mortar gap and its linearisation allow ")
-              << scientific(check.allowed, 3)
-              << ": the surfaces slid or turned farther than the operators built on the "
-              << configuration << " can follow";
-    else
-      message << "and no master face is paired with it, also after a wider search (its "
-                 "normal does not meet the master surface in the "
-              << configuration << ")";
-    message << " (Contact/Penetration tolerance = " << contact_parameters.penetration_tolerance
-            << " h).";
-    if (!contact_parameters.updated_kinematics)
-      message << " This motion is beyond small sliding, so smaller load steps cannot help: "
-                 "use Contact/Kinematics = updated with enough load steps.";
-    return NewtonFailure(message.str(), contact_parameters.updated_kinematics);
-  }
-
-  template <int dim>
-  void
   ContactProblem<dim>::prepare_load_step(const double time,
                                          const double step_size,
                                          const bool   first_step)
@@ -954,7 +803,15 @@ namespace contact_fem
     dirichlet_constraints.distribute(solution);
     ghosted_solution = solution;
     if (contact)
-      search_for_step(prescribed, step_size, first_step);
+      {
+        interface_fixed_values = interface->gather([this](const types::global_dof_index i) {
+          return dirichlet_constraints.is_constrained(i) ?
+                   dirichlet_constraints.get_inhomogeneity(i) :
+                   0.;
+        });
+        interface_displacement = interface->gather(solution);
+        search->start_step(interface_displacement, prescribed, step_size, first_step);
+      }
     make_sparsity_pattern();
     factorisation_current = false;
   }
@@ -966,7 +823,7 @@ namespace contact_fem
     // Stiffness ratios beyond ~1e10 (measured: 1e12 fails with either body
     // as the slave) and nearly incompressible bodies leave the direct solve
     // with too few digits: then that is the likely cause of any failure.
-    const std::string cause = precision_limits();
+    const std::string cause = diagnosis().precision_limits();
     return cause.empty() ? cause : " Likely cause: " + cause + ".";
   }
 
@@ -987,7 +844,7 @@ namespace contact_fem
         if (e.singular && contact && contact->slides_everywhere())
           throw NewtonFailure(where + ": " + e.what() + ": " + exceeded_friction_capacity({}));
         throw NewtonFailure(where + ": " + e.what() + "." +
-                              (e.singular ? singular_system_hint() : precision_hint()),
+                              (e.singular ? diagnosis().singular_system_hint() : precision_hint()),
                             false);
       }
     catch (const std::exception &e)
@@ -1000,7 +857,7 @@ namespace contact_fem
         // Split: an overshooting iterate near a load reversal slips everywhere.
         if (pos != std::string::npos && contact && contact->slides_everywhere())
           throw NewtonFailure(where + ": " + cause + ": " + exceeded_friction_capacity({}));
-        throw NewtonFailure(where + ": " + cause + "." + singular_system_hint(), false);
+        throw NewtonFailure(where + ": " + cause + "." + diagnosis().singular_system_hint(), false);
       }
     // Both iterates satisfy the hanging-node and Dirichlet constraints, and
     // so does their combination.
@@ -1023,8 +880,11 @@ namespace contact_fem
         return update;
       }
     interface_displacement = interface->gather(solution);
-    if (iteration > 0)
-      update.searched_again = extend_search_if_outrun();
+    if (iteration > 0 && search->extend_if_outrun(interface_displacement))
+      {
+        update.searched_again = true;
+        make_sparsity_pattern();
+      }
     TimerOutput::Scope t(*timer, "Contact: active set");
     interface_residual = interface->gather(residual);
     if (iteration > 0)
@@ -1034,31 +894,6 @@ namespace contact_fem
       }
     update.residuals = contact->residuals(*interface, interface_displacement);
     return update;
-  }
-
-  template <int dim>
-  bool
-  ContactProblem<dim>::accept_contact_state(const unsigned int step,
-                                            const double       time,
-                                            const double       step_size,
-                                            unsigned int      &searches_after_check)
-  {
-    // The promise behind "converged": no slave node inside the master
-    // beyond what its gap accounts for. A node no master face is paired
-    // with gets a few wider searches.
-    const PenetrationCheck check = check_penetration();
-    if (check.excess > contact_parameters.penetration_tolerance)
-      {
-        if (check.node.paired || searches_after_check == max_searches_after_check)
-          throw penetration_failure(check, step, time);
-        ++searches_after_check;
-        widen_search(check.node.pair, check.penetration);
-        return false;
-      }
-    last_penetration_excess = check.excess;
-    last_step_motion = interface->relative_motion(step_start_displacement, interface_displacement);
-    last_step_size   = step_size;
-    return true;
   }
 
   template <int dim>
@@ -1091,18 +926,19 @@ namespace contact_fem
     // The contact sets after each iteration: a set that comes back after
     // changes means the iteration cycles and would never settle.
     std::vector<std::vector<int>> sets_of_iteration;
-    unsigned int              iteration = 0, searches_after_check = 0;
+    unsigned int              iteration = 0;
     for (; iteration <= newton_parameters.max_iterations; ++iteration)
       {
         const std::string at = where + ", iteration " + std::to_string(iteration);
         stop_if_interrupted(comm);
         if (iteration > 0 && contact && contact->n_active() == 0 &&
             !contact_parameters.allow_loss_of_contact)
-          throw NewtonFailure(no_contact_message(at, true, iteration == 1), false);
+          throw NewtonFailure(diagnosis().no_contact_message(at, current_time, true, iteration == 1),
+                              false);
         // With every node slipping, a body that only friction holds is free
         // to slide: the next solve would be (nearly) singular.
         if (iteration > 0 && contact && contact->slides_everywhere())
-          if (const auto free = problem_traits().unsupported_bodies; !free.empty())
+          if (const auto free = diagnosis().problem_traits().unsupported_bodies; !free.empty())
             throw NewtonFailure(at + ": " + exceeded_friction_capacity(free));
         if (iteration > 0)
           newton_update(at, monitor.displacement_target());
@@ -1114,7 +950,7 @@ namespace contact_fem
           throw NewtonFailure(at + ": the residual is not a number (|r_u| = " + scientific(r_u) +
                               ", |r_lambda| = " + scientific(r_lambda) +
                               "). The linear system is singular or the input is "
-                              "extreme." + singular_system_hint());
+                              "extreme." + diagnosis().singular_system_hint());
         assessment =
           monitor.assess(iteration, r_u, r_lambda, update.changes, update.searched_again);
         std::optional<unsigned int> linear_iterations;
@@ -1129,8 +965,10 @@ namespace contact_fem
         if (contact)
           check_for_cycling(at, iteration, update.changes, sets_of_iteration);
         if (assessment.converged && contact &&
-            !accept_contact_state(step, time, step_size, searches_after_check))
+            !search->accept(interface_displacement, step, time, step_size))
           {
+            // A wider search paired other faces: Newton goes on.
+            make_sparsity_pattern();
             assessment.converged = false;
             continue;
           }
@@ -1139,12 +977,12 @@ namespace contact_fem
       }
     if (assessment.converged && contact && contact->n_active() == 0 &&
         !contact_parameters.allow_loss_of_contact)
-      throw NewtonFailure(no_contact_message(where, false, false), false);
+      throw NewtonFailure(diagnosis().no_contact_message(where, current_time, false, false), false);
     if (!assessment.converged)
       throw NewtonFailure(where + " did not converge in " +
                             std::to_string(newton_parameters.max_iterations) + " iterations " +
                             monitor.last_residuals() + "." +
-                            non_convergence_hint(assessment.stalled, monitor.last_r_u(),
+                            diagnosis().non_convergence_hint(assessment.stalled, monitor.last_r_u(),
                                                  monitor.last_r_lambda()) +
                             precision_hint(),
                           !assessment.stalled);
@@ -1201,7 +1039,7 @@ namespace contact_fem
   {
     {
       TimerOutput::Scope t(*timer, "Setup: mesh");
-      create_scene_mesh(scene, triangulation);
+      input_checks().create_scene_mesh(scene, triangulation);
       std::set<types::material_id> material_ids;
       for (const auto &[id, constants] : materials.bodies)
         material_ids.insert(id);
@@ -1222,6 +1060,14 @@ namespace contact_fem
 
   template <int dim>
   void
+  ContactProblem<dim>::print_input_warnings() const
+  {
+    if (!memory_warning.empty())
+      pcout << "Warning: " << memory_warning << "." << std::endl;
+  }
+
+  template <int dim>
+  void
   ContactProblem<dim>::validate()
   {
     print_input_warnings();
@@ -1236,15 +1082,13 @@ namespace contact_fem
   }
 
   template <int dim>
-  int
-  ContactProblem<dim>::run()
+  void
+  ContactProblem<dim>::start_run()
   {
-    Timer total_timer;
     // The output directory is prepared only now, after all input was
     // checked: an earlier run's files go (they would pass for this run's),
     // and a directory that cannot take the new ones stops the run before
     // any work.
-    const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
     const OutputDirectoryReport earlier_outputs = open_output_directory();
     pcout << "contact_fem: scene '" << scene_name << "', " << dim << "D, "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI process(es)" << std::endl
@@ -1265,24 +1109,16 @@ namespace contact_fem
 
     create_checked_mesh();
 
-    if (root)
-      {
-        convergence_csv.open(output.directory + "/convergence.csv");
-        convergence_csv << "cycle,cells,dofs,active_slave_nodes,estimator,estimated_error,"
-                           "relative_estimated_error,effectivity_index,p_max_relative_error,"
-                           "a_error,pressure_l2_relative_error,energy_error,"
-                           "newton_iterations,wall_time,cumulative_wall_time,"
-                           "max_contact_pressure,pressure_reference_l2_relative_error";
-        for (const auto &pair : contact_parameters.pairs)
-          {
-            const std::string name =
-              "pair_" + std::to_string(pair.slave) + "_" + std::to_string(pair.master);
-            convergence_csv << ',' << name << "_normal_force," << name
-                            << (dim == 2 ? "_contact_length" : "_contact_area");
-          }
-        convergence_csv << '\n';
-      }
-    check_written(output.directory + "/convergence.csv", !root || convergence_csv.good());
+    convergence_table = std::make_unique<ConvergenceTable<dim>>(
+      output.directory + "/convergence.csv", contact_parameters.pairs, comm);
+  }
+
+  template <int dim>
+  int
+  ContactProblem<dim>::run()
+  {
+    Timer total_timer;
+    start_run();
     Json cycles    = Json::array();
     int  exit_code = 0;
     try
@@ -1316,7 +1152,7 @@ namespace contact_fem
               << "Error: out of memory in cycle " << cycle << " (std::bad_alloc): the "
               << "mesh needs more memory than the run may use (RAM, cgroup or ulimit -v). "
               << "summary.json keeps the finished cycles; refine "
-              << "less (" << refinement_keys() << ", Refinement/Maximum cells)."
+              << "less (" << input_checks().refinement_keys() << ", Refinement/Maximum cells)."
               << std::endl;
         write_summary(cycles, total_timer.wall_time(),
                       "failed: out of memory; results of the finished cycles only");
@@ -1330,6 +1166,7 @@ namespace contact_fem
           write_summary(cycles, total_timer.wall_time(), "failed: " + user_message(e));
         throw;
       }
+    pcout << warnings.repeats();
     if (console.file_failed())
       pcout << "Warning: writing '" << output.directory
             << "/log.txt' failed during the run: the log is incomplete (the console has "
@@ -1353,7 +1190,7 @@ namespace contact_fem
             break;
           }
         if (const std::string shortage =
-              cycle > 0 ? memory_shortage(old_dofs, dof_handler.n_dofs()) : "";
+              cycle > 0 ? input_checks().memory_shortage(cycle, old_dofs, dof_handler.n_dofs()) : "";
             !shortage.empty())
           {
             pcout << "Error: " << shortage << std::endl;
@@ -1370,15 +1207,12 @@ namespace contact_fem
         const double wall    = cycle_timer.wall_time() - uncounted_wall_time;
         cumulative += wall;
         record.set("wall_time", wall).set("cumulative_wall_time", cumulative);
-        Json timing = Json::object();
-        for (const auto &[name, seconds] :
-             timer->get_summary_data(TimerOutput::total_wall_time))
-          timing.set(name, seconds);
-        if (linear_solver->iterative())
-          timing.set(multigrid_setup_section, multigrid_setup_seconds);
-        record.set("timing", timing);
+        record.set("timing", cycle_timing());
         cycles.push(record);
-        write_convergence_row(record, cumulative);
+        unsigned int newton_iterations = 0;
+        for (const unsigned int n : newton_iterations_of_cycle)
+          newton_iterations += n;
+        convergence_table->add_row(record, refinement.estimator, newton_iterations, cumulative);
         // Written after every cycle, so an interrupted study keeps its data;
         // the status says whether the run is complete.
         // Refining does not bring a state beyond the model back into it.
@@ -1389,19 +1223,7 @@ namespace contact_fem
                       !last      ? "running" :
                                    converged_status());
         if (output.print_timing)
-          {
-            pcout << "  Wall time of cycle " << cycle << ": " << wall << " s (cumulative "
-                  << cumulative << " s), of which" << std::endl;
-            for (const auto &[name, seconds] :
-                 timer->get_summary_data(TimerOutput::total_wall_time))
-              pcout << "    " << std::left << std::setw(22) << name << std::right
-                    << std::setw(10) << std::fixed << std::setprecision(4) << seconds
-                    << " s" << std::defaultfloat << std::setprecision(6) << std::endl;
-            if (linear_solver->iterative())
-              pcout << "    (" << multigrid_setup_section << ": " << std::fixed
-                    << std::setprecision(4) << multigrid_setup_seconds << " s)"
-                    << std::defaultfloat << std::setprecision(6) << std::endl;
-          }
+          print_cycle_timing(wall, cumulative);
         if (!converged)
           return 2;
         if (beyond_model)
@@ -1422,6 +1244,34 @@ namespace contact_fem
   }
 
   template <int dim>
+  Json
+  ContactProblem<dim>::cycle_timing() const
+  {
+    Json timing = Json::object();
+    for (const auto &[name, seconds] : timer->get_summary_data(TimerOutput::total_wall_time))
+      timing.set(name, seconds);
+    if (linear_solver->iterative())
+      timing.set(multigrid_setup_section, multigrid_setup_seconds);
+    return timing;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::print_cycle_timing(const double wall, const double cumulative) const
+  {
+    pcout << "  Wall time of cycle " << cycle << ": " << wall << " s (cumulative " << cumulative
+          << " s), of which" << std::endl;
+    for (const auto &[name, seconds] : timer->get_summary_data(TimerOutput::total_wall_time))
+      pcout << "    " << std::left << std::setw(22) << name << std::right << std::setw(10)
+            << std::fixed << std::setprecision(4) << seconds << " s" << std::defaultfloat
+            << std::setprecision(6) << std::endl;
+    if (linear_solver->iterative())
+      pcout << "    (" << multigrid_setup_section << ": " << std::fixed << std::setprecision(4)
+            << multigrid_setup_seconds << " s)" << std::defaultfloat << std::setprecision(6)
+            << std::endl;
+  }
+
+  template <int dim>
   std::string
   ContactProblem<dim>::converged_status() const
   {
@@ -1431,6 +1281,71 @@ namespace contact_fem
     return balance_failed ? "converged, but the reactions do not balance the load "
                             "(cycles[].balance_warning)" :
                             "converged";
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::check_reaction_balance(const Json &reaction, Json &cycle_record)
+  {
+    // The stability study's verdict tolerance (doc/stability.md): converged
+    // runs of the shipped scenes balance to 1e-10 or better, damped ones
+    // with tightened tolerances to about 2e-8.
+    constexpr double tolerance               = 1e-6;
+    constexpr double contrast_costing_digits = 1e6;
+    const double     imbalance = reaction["relative_imbalance"].number_value();
+    if (!(imbalance > tolerance))
+      return;
+    const ContactDiagnosis<dim> diagnosis = this->diagnosis();
+    std::string                 cause     = diagnosis.precision_limits();
+    if (cause.empty())
+      cause = diagnosis.load_at_round_off(current_time);
+    // Below the 1e10 limit a large contrast still costs the direct solve
+    // about log10(ratio) of its 16 digits (stiffness/cyl-1e8-swapped: 1.5e-6
+    // with the Newton residuals at their absolute tolerance, and smaller
+    // Newton tolerances do not lower it).
+    const auto [youngs_min, youngs_max] = materials.youngs_modulus_range();
+    if (cause.empty() && youngs_max > contrast_costing_digits * youngs_min)
+      cause = "the stiffness ratio between the bodies, " + significant(youngs_max / youngs_min, 2) +
+              ", costs the solve about " +
+              std::to_string(static_cast<int>(std::log10(youngs_max / youngs_min))) +
+              " of the 16 digits of double precision, and the reactions balance only "
+              "that well (smaller Newton tolerances do not help; a stiff body modelled "
+              "as rigid does)";
+    if (cause.empty())
+      cause = "the Newton tolerances leave that much out of balance (Newton/Displacement "
+              "relative tolerance = " +
+              significant(newton_parameters.displacement_relative_tolerance, 2) +
+              "); tighten them";
+    const std::string text = "the applied load and the support reactions are out of "
+                             "balance by " +
+                             scientific(imbalance, 1) + " of the forces (tolerance " +
+                             significant(tolerance, 2) + "): " + cause;
+    warn("balance_warning", text, cycle_record);
+    balance_failed = true;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::warn_about_precision_limits() const
+  {
+    for (const auto &[id, constants] : materials.bodies)
+      if (lambda_over_mu(constants.poisson_ratio) > warn_lambda_over_mu())
+        pcout << "  Warning: body " << static_cast<unsigned int>(id) << " has Poisson's ratio "
+              << std::setprecision(16) << constants.poisson_ratio << std::setprecision(6)
+              << ": lambda/mu = " << significant(lambda_over_mu(constants.poisson_ratio), 2)
+              << ", beyond " << significant(warn_lambda_over_mu(), 2)
+              << ", where double precision resolves the shear stiffness next to the "
+                 "volumetric one only to about 1e-14 lambda/mu: expect the reactions to "
+                 "balance the load to about that, or the solver to fail."
+              << std::endl;
+    const ContactDiagnosis<dim> diagnosis = this->diagnosis();
+    if (const std::string contrast = diagnosis.stiffness_contrast_limit(); !contrast.empty())
+      pcout << "  Warning: " << contrast << "." << std::endl;
+    if (const std::string auxetic = diagnosis.auxetic_limit(); !auxetic.empty())
+      pcout << "  Warning: " << auxetic << "." << std::endl;
+    const std::string round_off = diagnosis.load_at_round_off(load_stepping.end_time);
+    if (!round_off.empty())
+      pcout << "  Warning: " << round_off << "." << std::endl;
   }
 
   template <int dim>
@@ -1454,7 +1369,7 @@ namespace contact_fem
     if (interface)
       for (unsigned int p = 0; p < contact_parameters.pairs.size(); ++p)
         {
-          const double ratio = slave_stiffness_ratio(p);
+          const double ratio = diagnosis().slave_stiffness_ratio(p);
           if (ratio > 10.)
             pcout << "  Warning: contact pair "
                   << static_cast<unsigned int>(contact_parameters.pairs[p].slave) << ": "
@@ -1468,292 +1383,51 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactProblem<dim>::warn_about_large_displacements(Json &cycle_record)
+  ContactProblem<dim>::warn(const std::string &kind, const std::string &text, Json &cycle_record)
   {
-    // Linear elasticity is a small-displacement theory: displacements of
-    // half the model size mean a rigid-body mode that the supports (and
-    // frictionless contact) leave free, or a load far beyond the model.
-    // (A tenth would flag prescribed rigid shifts, e.g. a deep initial
-    // overlap pushed apart.)
-    Point<dim> low, high;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        low[d]  = std::numeric_limits<double>::max();
-        high[d] = -std::numeric_limits<double>::max();
-      }
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto v : cell->vertex_indices())
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              low[d]  = std::min(low[d], cell->vertex(v)[d]);
-              high[d] = std::max(high[d], cell->vertex(v)[d]);
-            }
-    double size = 0.;
-    for (unsigned int d = 0; d < dim; ++d)
-      size = std::max(size, Utilities::MPI::max(high[d], comm) + Utilities::MPI::max(-low[d], comm));
-    const double u_max = solution.linfty_norm();
-    if (u_max > ModelRange::displacement_limit * size)
+    cycle_record.set(kind, text);
+    if (warnings.add(kind, cycle))
+      pcout << "  Warning: " << text << "." << std::endl;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::check_converged_solution(const bool solved, Json &cycle_record)
+  {
+    const SolutionChecks<dim> checks({dof_handler, *mapping, constraints, dirichlet_constraints,
+                                      owned_dofs, relevant_dofs, solution, ghosted_solution});
+    if (const std::string text = checks.large_displacement(); !text.empty())
       {
         outside_model_range = true;
-        std::ostringstream text;
-        text << "the largest displacement, " << u_max << ", exceeds half the model size ("
-             << size << "): a rigid-body mode that the supports leave free (e.g. a rotation; "
-             << "see Boundary conditions/Fixed points) or a load beyond small-strain theory";
-        pcout << "  Warning: " << text.str() << "." << std::endl;
-        cycle_record.set("warning", text.str());
+        warn("warning", text, cycle_record);
       }
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::warn_about_large_strains(Json &cycle_record)
-  {
-    // Linear elasticity and a contact gap linear in u assume small strains
-    // and rotations: beyond a few percent the answer is that of a model the
-    // bodies no longer follow (and the step count would matter to any
-    // geometry update).
-    constexpr double   strain_limit = ModelRange::strain_limit;
-    constexpr double   rotation_limit = ModelRange::rotation_limit;
-    const QGauss<dim>  quadrature(fe.degree + 1);
-    FEValues<dim>      fe_values(*mapping, fe, quadrature, update_gradients);
-    const FEValuesExtractors::Vector                 displacement(0);
-    std::vector<Tensor<2, dim>>                      gradients(quadrature.size());
-    double                                           strain = 0., rotation = 0.;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
+    if (solved)
+      if (const std::string text = checks.large_strain(cycle_record); !text.empty())
         {
-          fe_values.reinit(cell);
-          fe_values[displacement].get_function_gradients(ghosted_solution, gradients);
-          for (const auto &grad : gradients)
-            {
-              const auto eigenvalues = dealii::eigenvalues(symmetrize(grad));
-              for (const double e : eigenvalues)
-                strain = std::max(strain, std::abs(e));
-              // The infinitesimal rotation: the skew part's largest entry.
-              for (unsigned int i = 0; i < dim; ++i)
-                for (unsigned int j = 0; j < i; ++j)
-                  rotation = std::max(rotation, 0.5 * std::abs(grad[i][j] - grad[j][i]));
-            }
+          outside_model_range = true;
+          warn("small_strain_warning", text, cycle_record);
         }
-    strain   = Utilities::MPI::max(strain, comm);
-    rotation = Utilities::MPI::max(rotation, comm);
-    cycle_record.set("largest_strain", strain).set("largest_rotation", rotation);
-    if (strain <= strain_limit && rotation <= rotation_limit)
+    check_held_rotation(cycle_record);
+    if (singular_solves == 0)
       return;
-    outside_model_range = true;
     std::ostringstream text;
-    text << "the solution leaves the small-strain range (largest principal strain "
-         << scientific(strain, 2) << ", largest rotation " << scientific(rotation, 2)
-         << " rad; linear elasticity and the contact gap assume below " << strain_limit
-         << " and " << rotation_limit << "): the load is beyond what this model describes";
-    pcout << "  Warning: " << text.str() << "." << std::endl;
-    cycle_record.set("small_strain_warning", text.str());
-  }
-
-  template <int dim>
-  double
-  ContactProblem<dim>::rotation_under_couple(const types::material_id body,
-                                             const Point<dim>        &centre,
-                                             const double             volume,
-                                             const double             polar,
-                                             const Tensor<1, dim>    &omega_axis,
-                                             const unsigned int       axis)
-  {
-    const QGauss<dim>                    quadrature(degree + 1);
-    FEValues<dim>                        fe_values(*mapping, fe, quadrature,
-                                update_values | update_gradients | update_quadrature_points |
-                                  update_JxW_values);
-    const FEValuesExtractors::Vector     displacement(0);
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    Vector<double>                       cell_load(fe.n_dofs_per_cell());
-    std::vector<Tensor<2, dim>>          gradients(quadrature.size());
-    // A body force f = omega x (x - c) / J: no net force, and with J = int
-    // |x - c|^2 minus the part along the axis, unit moment about the axis.
-    const auto couple = [&](const Point<dim> &x) {
-      const Tensor<1, dim> r = x - centre;
-      Tensor<1, dim>       f;
-      if constexpr (dim == 2)
-        {
-          f[0] = -r[1];
-          f[1] = r[0];
-        }
-      else
-        f = cross_product_3d(omega_axis, r);
-      return f / polar;
-    };
-    TrilinosWrappers::MPI::Vector probe_load(owned_dofs, comm);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->material_id() == body)
-        {
-          fe_values.reinit(cell);
-          cell_load = 0.;
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
-            {
-              const Tensor<1, dim> f = couple(fe_values.quadrature_point(q));
-              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                cell_load(i) += fe_values[displacement].value(i, q) * f * fe_values.JxW(q);
-            }
-          cell->get_dof_indices(dofs);
-          // The vector form condenses without inhomogeneities.
-          constraints.distribute_local_to_global(cell_load, dofs, probe_load);
-        }
-    probe_load.compress(VectorOperation::add);
-
-    // Response: solution + K^-1 probe, distributed, minus solution
-    // (the inhomogeneities cancel).
-    TrilinosWrappers::MPI::Vector response(owned_dofs, comm);
-    linear_solver->solve_again(response, probe_load);
-    response += solution;
-    constraints.distribute(response);
-    response -= solution;
-    TrilinosWrappers::MPI::Vector ghosted_response(owned_dofs, relevant_dofs, comm);
-    ghosted_response = response;
-
-    // Mean rotation of the body about the axis.
-    double rotation = 0.;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->material_id() == body)
-        {
-          fe_values.reinit(cell);
-          fe_values[displacement].get_function_gradients(ghosted_response, gradients);
-          const unsigned int i = (axis + 1) % 3, j = (axis + 2) % 3;
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
-            {
-              const Tensor<2, dim> &G = gradients[q];
-              rotation += (dim == 2 ? 0.5 * (G[1][0] - G[0][1]) :
-                                      0.5 * (G[j % dim][i % dim] - G[i % dim][j % dim])) *
-                          fe_values.JxW(q);
-            }
-        }
-    return std::abs(Utilities::MPI::sum(rotation, comm)) / volume;
-  }
-
-  template <int dim>
-  std::vector<bool>
-  ContactProblem<dim>::supporting_dofs(
-    const typename DoFHandler<dim>::active_cell_iterator &cell,
-    const std::vector<types::global_dof_index>           &dofs) const
-  {
-    std::vector<bool> fixed(dofs.size());
-    for (unsigned int i = 0; i < dofs.size(); ++i)
-      fixed[i] = dirichlet_constraints.is_constrained(dofs[i]) &&
-                 dirichlet_constraints.get_constraint_entries(dofs[i])->empty();
-    // A fixed point in 2D stiffens only logarithmically as the mesh around
-    // it is refined (the Hertz disc on its two fixed points: theta G V 2.9
-    // with 4 contact refinements, 3.4 with 6); in 3D its stiffness falls
-    // with the element size (the upper body of two_cylinders_3d, turned
-    // about z against four fixed points: 9.0 at 12.5k DoFs, 14.8 refined
-    // once), so there only fixed faces count as supports.
-    if (dim == 2 || std::find(fixed.begin(), fixed.end(), true) == fixed.end())
-      return fixed;
-    std::vector<bool> supporting(dofs.size(), false);
-    for (const auto f : cell->face_indices())
-      if (cell->face(f)->at_boundary())
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            const auto on_face = [&](const unsigned int i) {
-              return fe.has_support_on_face(i, f) && fe.system_to_component_index(i).first == d;
-            };
-            bool whole_face = true;
-            for (unsigned int i = 0; i < dofs.size(); ++i)
-              whole_face = whole_face && (!on_face(i) || fixed[i]);
-            for (unsigned int i = 0; i < dofs.size(); ++i)
-              supporting[i] = supporting[i] || (whole_face && on_face(i));
-          }
-    return supporting;
-  }
-
-  template <int dim>
-  std::map<types::material_id, std::vector<FixedDof<dim>>>
-  ContactProblem<dim>::fixed_dofs_by_body() const
-  {
-    // The support points of every DoF of a cell, mapped (Q2 has DoFs off
-    // the vertices); only cells with a fixed DoF are mapped.
-    FEValues<dim> fe_values(*mapping, fe, Quadrature<dim>(fe.get_unit_support_points()),
-                            update_quadrature_points);
-    std::map<types::material_id, std::vector<FixedDof<dim>>> fixed;
-    // A DoF is shared by the cells around it: take it once, on its owner;
-    // from ghost cells too, whose fixed face may be the one it is on.
-    std::vector<bool>                    taken(owned_dofs.n_elements(), false);
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (!cell->is_artificial())
-        {
-          cell->get_dof_indices(dofs);
-          const std::vector<bool> supporting = supporting_dofs(cell, dofs);
-          bool                    mapped     = false;
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (supporting[i] && owned_dofs.is_element(dofs[i]) &&
-                !taken[owned_dofs.index_within_set(dofs[i])])
-              {
-                taken[owned_dofs.index_within_set(dofs[i])] = true;
-                if (!mapped)
-                  fe_values.reinit(cell);
-                mapped = true;
-                fixed[cell->material_id()].push_back(
-                  {fe_values.quadrature_point(i), fe.system_to_component_index(i).first});
-              }
-        }
-    return fixed;
-  }
-
-  template <int dim>
-  typename ContactProblem<dim>::BodyMoments
-  ContactProblem<dim>::body_moments(const types::material_id body) const
-  {
-    const QGauss<dim> quadrature(degree + 1);
-    FEValues<dim>     fe_values(*mapping, fe, quadrature,
-                            update_quadrature_points | update_JxW_values);
-    double            volume = 0.;
-    Tensor<1, dim>    first_moment, second_moments; // int x_i, int x_i^2
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->material_id() == body)
-        {
-          fe_values.reinit(cell);
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
-            {
-              const Point<dim> &x = fe_values.quadrature_point(q);
-              volume += fe_values.JxW(q);
-              first_moment += x * fe_values.JxW(q);
-              for (unsigned int i = 0; i < dim; ++i)
-                second_moments[i] += x[i] * x[i] * fe_values.JxW(q);
-            }
-        }
-    BodyMoments moments;
-    moments.volume = Utilities::MPI::sum(volume, comm);
-    moments.centre = Point<dim>(Utilities::MPI::sum(first_moment, comm) / moments.volume);
-    second_moments = Utilities::MPI::sum(second_moments, comm);
-    for (unsigned int i = 0; i < dim; ++i)
-      moments.central[i] =
-        second_moments[i] - moments.volume * moments.centre[i] * moments.centre[i];
-    return moments;
+    text << "the stiffness matrix was singular in " << singular_solves
+         << " Newton solve(s) of this cycle (up to " << most_null_pivots << " zero pivot(s))";
+    // Zero pivots also come from stiffness lost in round-off: then that is
+    // the cause, not a free rigid-body mode.
+    if (const std::string cause = diagnosis().precision_limits(); !cause.empty())
+      text << ": " << cause;
+    else
+      text << ": a rigid-body mode that neither the supports nor the "
+           << "active contact hold (see Boundary conditions/Fixed points). The solver "
+           << "held it at one DoF; results along that mode are not determined by the model";
+    warn("singular_stiffness_warning", text.str(), cycle_record);
   }
 
   template <int dim>
   void
-  ContactProblem<dim>::warn_about_weakly_held_rotation(Json &cycle_record)
+  ContactProblem<dim>::check_held_rotation(Json &cycle_record)
   {
-    // Frictionless contact on a curved surface resists a rotation about its
-    // centre of curvature only through the discretisation (a polygon or a
-    // piecewise-quadratic arc is not quite a circle): that rigid-body mode
-    // has a stiffness far below the elastic ones, the solver finds no zero
-    // pivot, and the solution carries a rotation set by the mesh. Probe:
-    // load every body that touches a contact surface with a unit couple and
-    // solve with the factors of the converged system (one back
-    // substitution). An elastically held body of volume V turns by about
-    // 1 / (G V), G a shear modulus; the softest one of the model is taken,
-    // since a stiff body may rest on a soft one. Measured on the Hertz disc
-    // (theta G V): 3.4 with its fixed points, 300-500 without them.
-    constexpr double compliance_limit = 50.;
-    // A rotation that the body's own supports hold with a lever arm (see
-    // support_lever_arms()) of at least this fraction of the body's radius
-    // of gyration is held elastically: its probe (with the iterative
-    // solver a full Krylov solve) is skipped. Held by two fixed points on
-    // its axis, the Hertz disc gives theta G V 2.9, 9.9, 35, 54 and 146 at
-    // lever arms 0.88, 0.44, 0.22, 0.17 and 0.055 (about 2 / arm^2): at 0.5
-    // about 8, well below the limit; closer supports are probed.
-    constexpr double held_lever_arm = 0.5;
     if (!contact || !factorisation_current || !linear_solver->can_solve_again() ||
         linear_solver->n_null_pivots() > 0)
       return;
@@ -1764,7 +1438,7 @@ namespace contact_fem
     for (unsigned int n = 0; n < interface->nodes.size(); ++n)
       if (contact->held_tangentially(n))
         return;
-    TimerOutput::Scope t(*timer, "Check: held rotation");
+    TimerOutput::Scope              t(*timer, "Check: held rotation");
     double                          softest = std::numeric_limits<double>::max();
     std::vector<types::material_id> bodies;
     for (const auto &[id, constants] : materials.bodies)
@@ -1772,123 +1446,23 @@ namespace contact_fem
         softest = std::min(softest, constants.mu());
         bodies.push_back(id);
       }
-    std::set<types::boundary_id> contact_ids;
+    std::set<types::boundary_id> contact_surfaces;
     for (const auto &pair : contact_parameters.pairs)
-      contact_ids.insert({pair.slave, pair.master});
-    std::vector<unsigned int> touches(bodies.size(), 0);
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary() && contact_ids.count(cell->face(f)->boundary_id()))
-            touches[std::lower_bound(bodies.begin(), bodies.end(), cell->material_id()) -
-                    bodies.begin()] = 1;
-    Utilities::MPI::max(touches, comm, touches);
-
-    constexpr unsigned int n_axes = dim == 2 ? 1 : 3;
-    const auto             fixed  = fixed_dofs_by_body();
-    Json                   check  = Json::array();
-    for (unsigned int b = 0; b < bodies.size(); ++b)
+      contact_surfaces.insert({pair.slave, pair.master});
+    const SolutionChecks<dim> checks({dof_handler, *mapping, constraints, dirichlet_constraints,
+                                      owned_dofs, relevant_dofs, solution, ghosted_solution});
+    const auto probe =
+      checks.weakly_held_rotation(bodies, softest, contact_surfaces, *linear_solver);
+    for (const std::string &text : probe.warnings)
+      warn("rotation_warning", text, cycle_record);
+    if (!probe.skipped.empty())
       {
-        if (touches[b] == 0)
-          continue;
-        const BodyMoments         moments   = body_moments(bodies[b]);
-        const auto                own_fixed = fixed.find(bodies[b]);
-        const std::vector<double> lever_arms =
-          support_lever_arms(own_fixed == fixed.end() ? std::vector<FixedDof<dim>>() :
-                                                        own_fixed->second,
-                             moments.centre, moments.radius_of_gyration(), comm);
-
-        // Per axis: held by the supports, probed (with theta G V), or not
-        // probed because an earlier axis of the body warned already.
-        Json held = Json::array(), probed = Json::array(), unprobed = Json::array();
-        Json levers = Json::object(), compliances = Json::object();
-        bool warned = false;
-        for (unsigned int axis = 0; axis < n_axes; ++axis)
-          {
-            // In 2D the rotation of the plane, about z.
-            const std::string name(1, "xyz"[dim == 2 ? 2 : axis]);
-            levers.set(name, lever_arms[axis]);
-            if (lever_arms[axis] >= held_lever_arm)
-              {
-                held.push(name);
-                continue;
-              }
-            if (warned)
-              {
-                unprobed.push(name);
-                continue;
-              }
-            Tensor<1, dim> omega_axis;
-            if constexpr (dim == 3)
-              omega_axis[axis] = 1.;
-            double polar = 0.;
-            for (unsigned int i = 0; i < dim; ++i)
-              if (dim == 2 || i != axis)
-                polar += moments.central[i];
-            double rotation = 0.;
-            try
-              {
-                rotation = rotation_under_couple(
-                  bodies[b], moments.centre, moments.volume, polar, omega_axis, axis);
-              }
-            catch (const LinearSolverFailure &e)
-              {
-                // An iterative solver may not converge on the probe of a
-                // nearly free rotation: say that the check did not run.
-                pcout << "  Note: the check for a weakly held rotation was skipped: "
-                      << e.what() << "." << std::endl;
-                cycle_record.set("held_rotation_check_skipped", e.what());
-                return;
-              }
-            const double compliance = rotation * softest * moments.volume;
-            probed.push(name);
-            compliances.set(name, compliance);
-            if (!(compliance > compliance_limit))
-              continue;
-            std::ostringstream text;
-            text << "body " << static_cast<unsigned int>(bodies[b])
-                 << " is held only weakly against rotation: a couple turns it "
-                 << std::setprecision(3) << compliance << std::setprecision(6)
-                 << " times more than elasticity would (theta G V, G the smallest shear "
-                 << "modulus); frictionless contact on a curved surface resists a rotation "
-                 << "about its centre only through the discretisation, so the results along "
-                 << "that rotation depend on the mesh; hold it (see Boundary "
-                 << "conditions/Fixed points)";
-            pcout << "  Warning: " << text.str() << "." << std::endl;
-            cycle_record.set("rotation_warning", text.str());
-            warned = true;
-          }
-        // Lever arms over the radius of gyration.
-        check.push(Json::object()
-                     .set("body", static_cast<unsigned int>(bodies[b]))
-                     .set("held_by_supports", held)
-                     .set("probed", probed)
-                     .set("not_probed_after_warning", unprobed)
-                     .set("support_lever_arms", levers)
-                     .set("probe_compliances", compliances));
+        pcout << "  Note: the check for a weakly held rotation was skipped: " << probe.skipped
+              << "." << std::endl;
+        cycle_record.set("held_rotation_check_skipped", probe.skipped);
+        return;
       }
-    cycle_record.set("held_rotation_check", check);
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::warn_about_singular_stiffness(Json &cycle_record) const
-  {
-    if (singular_solves == 0)
-      return;
-    std::ostringstream text;
-    text << "the stiffness matrix was singular in " << singular_solves
-         << " Newton solve(s) of this cycle (up to " << most_null_pivots << " zero pivot(s))";
-    // Zero pivots also come from stiffness lost in round-off: then that is
-    // the cause, not a free rigid-body mode.
-    if (const std::string cause = precision_limits(); !cause.empty())
-      text << ": " << cause;
-    else
-      text << ": a rigid-body mode that neither the supports nor the "
-           << "active contact hold (see Boundary conditions/Fixed points). The solver "
-           << "held it at one DoF; results along that mode are not determined by the model";
-    pcout << "  Warning: " << text.str() << "." << std::endl;
-    cycle_record.set("singular_stiffness_warning", text.str());
+    cycle_record.set("held_rotation_check", probe.check);
   }
 
   template <int dim>
@@ -1896,9 +1470,6 @@ namespace contact_fem
   ContactProblem<dim>::start_cycle(const unsigned int cycle, Json &cycle_record)
   {
     newton_iterations_of_cycle.clear();
-    last_step_motion.clear();
-    last_step_size          = 0.;
-    last_penetration_excess = 0.;
     singular_solves         = 0;
     most_null_pivots        = 0;
     multigrid_setup_seconds = 0.;
@@ -2067,24 +1638,19 @@ namespace contact_fem
     start_cycle(cycle, cycle_record);
     // A load at the round-off of the geometry leaves the gaps, the active
     // set and the pressures rounding noise: nothing to report as a result.
-    if (const std::string cause = contact ? load_at_round_off(load_stepping.end_time) : "";
+    if (const std::string cause =
+          contact ? diagnosis().load_at_round_off(load_stepping.end_time) : "";
         !cause.empty())
       {
         pcout << std::endl << "Error: nothing is solved: " << cause << "." << std::endl;
         cycle_record.set("failure", cause);
         return false;
       }
-    const LoadPath path      = step_the_load(cycle, cycle_record);
-    const unsigned int n_solved  = path.n_solved;
-    const bool         converged = path.converged;
-    warn_about_large_displacements(cycle_record);
-    if (n_solved > 0)
-      warn_about_large_strains(cycle_record);
-    warn_about_weakly_held_rotation(cycle_record);
-    warn_about_singular_stiffness(cycle_record);
-    if (n_solved == 0)
+    const LoadPath path = step_the_load(cycle, cycle_record);
+    check_converged_solution(path.n_solved > 0, cycle_record);
+    if (path.n_solved == 0)
       return false;
-    if (!converged && contact)
+    if (!path.converged && contact)
       {
         // Results of the last converged state: its residual and gaps.
         make_dirichlet_constraints(current_time);
@@ -2092,7 +1658,21 @@ namespace contact_fem
         compute_residual();
         interface_displacement = interface->gather(solution);
       }
+    if (!record_results(path.converged, cycle_record) || !path.converged)
+      return false;
+    if (refinement.n_cycles > 1)
+      {
+        estimate_error(cycle_record);
+        if (vtu_output)
+          vtu_output->write_error_indicators(solution_view(nullptr), indicators, cycle);
+      }
+    return true;
+  }
 
+  template <int dim>
+  bool
+  ContactProblem<dim>::record_results(const bool converged, Json &cycle_record)
+  {
     const Json contact_json  = contact_results();
     const Json reaction_json = reaction_results();
     cycle_record.set("contact", contact_json).set("reaction", reaction_json);
@@ -2100,7 +1680,7 @@ namespace contact_fem
         converged && p_min < 0.)
       {
         // An active node in tension: the active set was decided by rounding.
-        const std::string cause = precision_limits();
+        const std::string cause = diagnosis().precision_limits();
         const std::string text =
           "the converged state has an active slave node in tension (contact pressure " +
           scientific(p_min, 2) + ", largest " +
@@ -2129,7 +1709,8 @@ namespace contact_fem
     cycle_record.set("strain_energy", strain_energy).set("potential_energy", potential_energy);
     print_results(contact_json, reaction_json, hertz_json);
     if (contact)
-      pcout << checkerboard_warning.check(*interface, *contact, cycle_record);
+      for (const std::string &text : checkerboard_warnings(*interface, *contact))
+        warn("checkerboard_warning", text, cycle_record);
     if (!probe_dofs.empty())
       cycle_record.set("displacement_probes", probe_results());
     if (contact && !analytical.reference_pressure_profile.empty())
@@ -2139,60 +1720,11 @@ namespace contact_fem
         pcout << "    pressure, L2 error against the reference: " << value_or_ok(error, 1e-10)
               << std::endl;
       }
-    double energy_error = std::numeric_limits<double>::quiet_NaN();
     if (std::isfinite(analytical.reference_potential_energy))
-      {
-        // A conforming discrete solution minimises the energy over a subset:
-        // its energy lies above the exact one, and 2 (Pi_h - Pi) is the
-        // squared energy-norm error (plus the contact work, see the
-        // parameter).
-        // Degree-1 Hertz: the work of the contact force on the chord gap
-        // (HertzCylinder::compare()) is a geometry error of the polygonal arc, not
-        // part of the discretisation error the estimate is compared with.
-        const double chord_work = hertz_json["chord_gap_work"].number_value();
-        const double chord_gap_work = std::isfinite(chord_work) ? chord_work : 0.;
-        const double excess =
-          potential_energy + chord_gap_work - analytical.reference_potential_energy;
-        energy_error = std::sqrt(2. * std::abs(excess));
-        cycle_record.set("energy_error", energy_error);
-        pcout << "    energy-norm error:            " << energy_error << " (from Pi_h "
-              << (chord_gap_work > 0. ? "+ W_chord " : "") << "- Pi_ref = " << excess << ")"
-              << std::endl;
-        if (excess < 0.)
-          pcout << "  Warning: the potential energy is below the reference: the "
-                   "discrete problem is softer than the exact one (a polygonal "
-                   "curved boundary, the weak mortar gap) or the reference is not "
-                   "accurate enough; sqrt(2 |Pi_h - Pi_ref|) is then not a bound "
-                   "of the error."
-                << std::endl;
-      }
+      record_energy_error(potential_energy, hertz_json["chord_gap_work"].number_value(),
+                          analytical.reference_potential_energy, pcout, cycle_record);
     if (output.write_pressure_profile && contact)
       write_pressure_profile();
-    if (!converged)
-      return false;
-    if (refinement.n_cycles > 1)
-      {
-        estimate_error(cycle_record);
-        if (energy_error > 0.)
-          {
-            const double effectivity =
-              cycle_record["estimated_error"].number_value() / energy_error;
-            cycle_record.set("effectivity_index", effectivity);
-            pcout << "    effectivity index eta / error: " << std::setprecision(3)
-                  << effectivity << std::setprecision(6) << std::endl;
-            pcout << "    effectivity in [0.8, 1.25]:   "
-                  << (effectivity >= 0.8 && effectivity <= 1.25 ? "yes" : "no") << std::endl;
-            const double plain = cycle_record["plain_spr_estimated_error"].number_value();
-            if (std::isfinite(plain))
-              {
-                cycle_record.set("plain_spr_effectivity_index", plain / energy_error);
-                pcout << "    effectivity of plain SPR:     " << std::setprecision(3)
-                      << plain / energy_error << std::setprecision(6) << std::endl;
-              }
-          }
-        if (vtu_output)
-          vtu_output->write_error_indicators(solution_view(nullptr), indicators, cycle);
-      }
     return true;
   }
 

@@ -83,6 +83,61 @@ namespace contact_fem
         }
       return samples;
     }
+    /// The contact tractions that SPR imposes at the paired slave nodes of
+    /// @p interface: those of the active nodes of @p contact, and with
+    /// @p all_paired (a known pressure is compared) the inactive ones too,
+    /// not imposed, in the order report_recovered_tractions() expects.
+    template <int dim>
+    std::vector<ContactNodeTraction<dim>>
+    recovery_tractions(const ContactInterface<dim>   &interface,
+                       const ContactFormulation<dim> &contact,
+                       const bool                     all_paired)
+    {
+      std::vector<ContactNodeTraction<dim>> tractions;
+      const auto support = slave_support_samples(interface);
+      for (const auto &s : interface.slave_nodes)
+        if (s.paired && (all_paired || contact.is_active(s.node)))
+          {
+            const auto &samples   = support.at(s.node);
+            double      reference = 0.;
+            for (const auto &q : samples)
+              reference += q.weight;
+            const bool active = contact.is_active(s.node);
+            // With friction the whole traction vector (normal and
+            // tangential) is imposed, not the pressure alone.
+            Tensor<1, dim> traction;
+            if (active && contact.transmits_shear())
+              traction = (s.D / reference) * contact.traction(s);
+            else if (active)
+              traction = -contact.normal_pressure(s.node) * s.D / reference * s.normal;
+            tractions.push_back(
+              {interface.nodes[s.node].reference, s.normal, traction, samples, active});
+          }
+      return tractions;
+    }
+
+    /// Prints and records the effectivity index eta / error where the
+    /// cycle record holds an energy-norm error (and that of plain SPR).
+    void
+    report_effectivity(const ConditionalOStream &pcout, Json &cycle_record)
+    {
+      const double energy_error = cycle_record["energy_error"].number_value();
+      if (!(energy_error > 0.))
+        return;
+      const double effectivity = cycle_record["estimated_error"].number_value() / energy_error;
+      cycle_record.set("effectivity_index", effectivity);
+      pcout << "    effectivity index eta / error: " << std::setprecision(3) << effectivity
+            << std::setprecision(6) << std::endl;
+      pcout << "    effectivity in [0.8, 1.25]:   "
+            << (effectivity >= 0.8 && effectivity <= 1.25 ? "yes" : "no") << std::endl;
+      const double plain = cycle_record["plain_spr_estimated_error"].number_value();
+      if (std::isfinite(plain))
+        {
+          cycle_record.set("plain_spr_effectivity_index", plain / energy_error);
+          pcout << "    effectivity of plain SPR:     " << std::setprecision(3)
+                << plain / energy_error << std::setprecision(6) << std::endl;
+        }
+    }
   } // namespace
 
   template <int dim>
@@ -203,29 +258,10 @@ namespace contact_fem
     // expects.
     const bool pressure_known =
       contact && (comparison || !analytical.reference_pressure_profile.empty());
-    std::vector<ContactNodeTraction<dim>> tractions;
-    if (contact && (settings.contact_terms || pressure_known))
-      {
-        const auto support = slave_support_samples(*interface);
-        for (const auto &s : interface->slave_nodes)
-          if (s.paired && (pressure_known || contact->is_active(s.node)))
-            {
-              const auto &samples   = support.at(s.node);
-              double      reference = 0.;
-              for (const auto &q : samples)
-                reference += q.weight;
-              const bool active = contact->is_active(s.node);
-              // With friction the whole traction vector (normal and
-              // tangential) is imposed, not the pressure alone.
-              Tensor<1, dim> traction;
-              if (active && contact->transmits_shear())
-                traction = (s.D / reference) * contact->traction(s);
-              else if (active)
-                traction = -contact->normal_pressure(s.node) * s.D / reference * s.normal;
-              tractions.push_back(
-                {interface->nodes[s.node].reference, s.normal, traction, samples, active});
-            }
-      }
+    const std::vector<ContactNodeTraction<dim>> tractions =
+      contact && (settings.contact_terms || pressure_known) ?
+        recovery_tractions(*interface, *contact, pressure_known) :
+        std::vector<ContactNodeTraction<dim>>();
     const auto spr = StressRecovery<dim>::estimate(*mapping, dof_handler, ghosted_solution,
                                                    materials, tractions, settings,
                                                    volumetric_projection.get());
@@ -263,6 +299,7 @@ namespace contact_fem
                                      cycle_record);
         uncounted_wall_time += comparison.wall_time();
       }
+    report_effectivity(pcout, cycle_record);
   }
 
   template <int dim>

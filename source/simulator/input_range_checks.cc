@@ -7,7 +7,7 @@
 #include <contact_fem/core/format.h>
 #include <contact_fem/core/value_range.h>
 #include <contact_fem/geometry/mesh_file.h>
-#include <contact_fem/simulator/contact_problem.h>
+#include <contact_fem/simulator/input_checks.h>
 
 #include <cctype>
 #include <cmath>
@@ -33,7 +33,7 @@ namespace contact_fem
 
   template <int dim>
   std::string
-  ContactProblem<dim>::geometry_key() const
+  InputChecks<dim>::geometry_key() const
   {
     if (scene.type == "mesh file")
       return "Geometry/Mesh file '" + scene.mesh_file + "'";
@@ -45,7 +45,7 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactProblem<dim>::create_scene_mesh(const Scene<dim>                          &coarse_scene,
+  InputChecks<dim>::create_scene_mesh(const Scene<dim>                          &coarse_scene,
                                           parallel::distributed::Triangulation<dim> &coarse) const
   {
     try
@@ -76,7 +76,7 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactProblem<dim>::check_value_ranges(const Triangulation<dim> &coarse) const
+  InputChecks<dim>::check_value_ranges(const Triangulation<dim> &coarse) const
   {
     const std::string key = geometry_key();
     double extent = 0.;
@@ -112,7 +112,7 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactProblem<dim>::check_load_path(const Triangulation<dim> &coarse, const double area) const
+  InputChecks<dim>::check_load_path(const Triangulation<dim> &coarse, const double area) const
   {
     // Each load and prescribed displacement at the vertices of its boundary
     // at the start and at the end of every load step: a value that is not
@@ -159,13 +159,14 @@ namespace contact_fem
       check(condition.key, condition.boundary_id, {condition.expression}, false);
   }
 
-  // The class is instantiated in contact_problem.cc; here only the members
+  // The class is instantiated in input_checks.cc; here the members
   // defined in this file.
-#define INSTANTIATE(dim) \
-  template void ContactProblem<dim>::check_value_ranges(const Triangulation<dim> &) const; \
-  template std::string ContactProblem<dim>::geometry_key() const; \
-  template void ContactProblem<dim>::create_scene_mesh(const Scene<dim> &, parallel::distributed::Triangulation<dim> &) const; \
-  template void ContactProblem<dim>::check_load_path(const Triangulation<dim> &, const double) const;
+#define INSTANTIATE(dim)                                                                      \
+  template std::string InputChecks<dim>::geometry_key() const;                                \
+  template void        InputChecks<dim>::create_scene_mesh(                                   \
+    const Scene<dim> &, parallel::distributed::Triangulation<dim> &) const;            \
+  template void InputChecks<dim>::check_value_ranges(const Triangulation<dim> &) const; \
+  template void InputChecks<dim>::check_load_path(const Triangulation<dim> &, const double) const;
   INSTANTIATE(2)
   INSTANTIATE(3)
 #undef INSTANTIATE

@@ -41,22 +41,12 @@ namespace contact_fem
   std::vector<CheckerboardFinding>
   find_checkerboards(const ContactInterface<dim> &interface, const ContactFormulation<dim> &contact);
 
-  /// Returns (once per run, else empty) the warning lines naming each
-  /// flagged pair, how strong the alternation is and what to change, and
-  /// records the warning in @p record ("checkerboard_warning") at every
-  /// cycle that finds one.
-  class CheckerboardWarning
-  {
-  public:
-    template <int dim>
-    std::string
-    check(const ContactInterface<dim>   &interface,
-          const ContactFormulation<dim> &contact,
-          Json                          &record);
-
-  private:
-    bool printed = false;
-  };
+  /// The warnings naming each flagged pair, how strong the alternation is
+  /// and what to change (the driver prints them once per run).
+  template <int dim>
+  std::vector<std::string>
+  checkerboard_warnings(const ContactInterface<dim>   &interface,
+                        const ContactFormulation<dim> &contact);
 } // namespace contact_fem
 
 #endif

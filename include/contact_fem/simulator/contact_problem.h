@@ -22,8 +22,14 @@
 #include <contact_fem/contact/formulations/contact_formulation.h>
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/core/json.h>
+#include <contact_fem/core/warning_log.h>
 #include <contact_fem/material/material.h>
+#include <contact_fem/postprocess/convergence_table.h>
 #include <contact_fem/postprocess/output_files.h>
+#include <contact_fem/simulator/contact_diagnosis.h>
+#include <contact_fem/simulator/input_checks.h>
+#include <contact_fem/simulator/newton_failure.h>
+#include <contact_fem/simulator/search_control.h>
 #include <contact_fem/simulator/inclined_supports.h>
 #include <contact_fem/simulator/scene_parameters.h>
 #include <contact_fem/contact/contact_parameters.h>
@@ -82,23 +88,16 @@ namespace contact_fem
     } buffer;
   };
 
-  /// Thrown when a load step cannot be solved; carries the diagnosis.
-  struct NewtonFailure : public std::runtime_error
-  {
-    explicit NewtonFailure(const std::string &what, const bool splittable = true)
-      : std::runtime_error(what)
-      , splittable(splittable)
-    {}
-    /// false if a smaller step cannot help (e.g. the bodies separate).
-    bool splittable;
-  };
-
   /**
    * Solves one scene: builds the mesh, steps the load, solves each step with
    * the semi-smooth Newton method, and writes the results.
    *
-   * Declared here, implemented in source/contact_problem.cc (set-up, Newton)
-   * and source/contact_output.cc (results, VTU, summary).
+   * Implemented in source/simulator/contact_problem.cc (set-up, load
+   * steps, Newton, cycles), contact_problem_refinement.cc (estimate and
+   * refinement) and contact_output.cc (results, summary); it hands the input
+   * checks to InputChecks, the diagnoses to ContactDiagnosis, the checks of
+   * a converged solution to SolutionChecks and the contact search to
+   * SearchControl.
    */
   template <int dim>
   class ContactProblem
@@ -142,6 +141,10 @@ namespace contact_fem
     /// Builds the scene's mesh and checks it (materials, cell shapes).
     void
     create_checked_mesh();
+    /// The start of run(): the output directory, the first lines of the
+    /// console, the mesh and convergence.csv.
+    void
+    start_run();
     /// The adaptive cycles of run(), recorded in @p cycles; returns the
     /// exit code.
     int
@@ -171,109 +174,32 @@ namespace contact_fem
     /// side much stiffer than its master.
     void
     warn_about_modelling_choices() const;
+    /// The wall time of each timer section of the cycle (summary.json).
+    Json
+    cycle_timing() const;
+    /// Prints the wall time of the cycle and of its timer sections.
+    void
+    print_cycle_timing(const double wall, const double cumulative) const;
     /// The summary status of a run whose last cycle converged.
     std::string
     converged_status() const;
-    /// Prints and records a warning when |u|_max exceeds half the model
-    /// size.
+    /// The checks of a converged solution against the model's range
+    /// (SolutionChecks) and the singular-stiffness warning; @p solved:
+    /// whether a load step converged on this mesh.
     void
-    warn_about_large_displacements(Json &cycle_record);
-    /// Records the largest strain and rotation, and prints and records a
-    /// warning when they leave the small-strain range.
+    check_converged_solution(const bool solved, Json &cycle_record);
+    /// The weakly held rotation probe of check_converged_solution().
     void
-    warn_about_large_strains(Json &cycle_record);
-    /// Prints and records a warning when a unit couple on a body in contact
-    /// turns it by theta with theta G V > 50 (a weakly held rotation); uses
-    /// the factors of the converged system. Rotations that the body's
-    /// supports hold are not probed; the record says which were.
+    check_held_rotation(Json &cycle_record);
+    /// Records warning @p text under @p kind in @p cycle_record and prints
+    /// it in the first cycle that gives the kind (WarningLog).
     void
-    warn_about_weakly_held_rotation(Json &cycle_record);
-    /// Volume, centroid and central second moments of a body.
-    struct BodyMoments
-    {
-      double         volume = 0.;
-      Point<dim>     centre;
-      Tensor<1, dim> central; ///< int (x_i - c_i)^2
-      /// The root mean square distance of the body from its centroid.
-      double
-      radius_of_gyration() const
-      {
-        double sum = 0.;
-        for (unsigned int i = 0; i < dim; ++i)
-          sum += central[i];
-        return std::sqrt(sum / volume);
-      }
-    };
-    /// The moments of body @p body (material id). Collective.
-    BodyMoments
-    body_moments(const types::material_id body) const;
-    /// Which DoFs @p dofs of @p cell hold the body as supports: fixed ones
-    /// (lines of dirichlet_constraints without entries: Fixed, Fixed
-    /// points, prescribed displacements); in 3D only those on a boundary
-    /// face whose DoFs of that component are all fixed.
-    std::vector<bool>
-    supporting_dofs(const typename DoFHandler<dim>::active_cell_iterator &cell,
-                    const std::vector<types::global_dof_index>           &dofs) const;
-    /// This rank's supporting DoFs (supporting_dofs()) of each body, each
-    /// once, at their support points.
-    std::map<types::material_id, std::vector<FixedDof<dim>>>
-    fixed_dofs_by_body() const;
-    /// The mean rotation about @p axis (3D; the plane's in 2D) of @p body
-    /// under a unit couple (body force omega x (x - centre) / polar), solved
-    /// with the kept factors of the converged system.
-    double
-    rotation_under_couple(const types::material_id body,
-                          const Point<dim>        &centre,
-                          const double             volume,
-                          const double             polar,
-                          const Tensor<1, dim>    &omega_axis,
-                          const unsigned int       axis);
-    void
-    warn_about_singular_stiffness(Json &cycle_record) const;
+    warn(const std::string &kind, const std::string &text, Json &cycle_record);
     /// The largest change of a prescribed displacement from the current
     /// solution to the values at the present time (before they are
     /// distributed): a lower bound of the motion of the step. Collective.
     double
     prescribed_increment() const;
-    /// Searches the interface with the motion the step may bring (per pair,
-    /// predicted from @p prescribed and the last step) and starts the
-    /// load step of the formulation.
-    void
-    search_for_step(const double prescribed, const double step_size, const bool first_step);
-    /// During Newton: if the iterate moved the surfaces farther than the
-    /// search reaches, makes room for 1.5 times that motion and searches
-    /// again; returns whether it did.
-    bool
-    extend_search_if_outrun();
-    /// Makes room for twice the motion allowance of @p pair plus @p depth
-    /// and searches again.
-    void
-    widen_search(const unsigned int pair, const double depth);
-    /// Searches the same configuration with the present motion_allowance,
-    /// restarts the formulation's active set from the current iterate and
-    /// rebuilds the sparsity pattern.
-    void
-    search_again();
-    /// The slave node that penetrates the master most beyond what its own
-    /// mortar gap (and a small-sliding linearisation) accounts for.
-    struct PenetrationCheck
-    {
-      double excess = 0.; ///< over the node's element size
-      /// The worst slave node or hanging slave vertex.
-      typename ContactInterface<dim>::SlaveNode node;
-      bool   hanging     = false;
-      double penetration = 0., allowed = 0.;
-    };
-    /// After convergence: every slave node and hanging slave vertex against
-    /// the whole master surface (ContactInterface::surface_distances()).
-    PenetrationCheck
-    check_penetration() const;
-    /// The diagnosis of a failed check_penetration(); splittable with
-    /// updated kinematics only.
-    NewtonFailure
-    penetration_failure(const PenetrationCheck &check,
-                        const unsigned int      step,
-                        const double            time) const;
     void
     make_sparsity_pattern();
     void
@@ -305,14 +231,6 @@ namespace contact_fem
     /// outran it, recovers the multipliers and updates the active set.
     ContactUpdate
     update_contact(const unsigned int iteration);
-    /// The penetration check of a converged iterate: true if it holds
-    /// (and the step's motion is recorded), false after a wider search
-    /// (Newton goes on); throws if it fails for good.
-    bool
-    accept_contact_state(const unsigned int step,
-                         const double       time,
-                         const double       step_size,
-                         unsigned int      &searches_after_check);
     /// " Likely cause: ..." when a precision limit applies, else empty.
     std::string
     precision_hint() const;
@@ -349,15 +267,11 @@ namespace contact_fem
     /// asks.
     void
     select_linear_solver();
-    /// Young's modulus of the slave side of contact pair @p pair over that
-    /// of its master side (the largest of each); 0 without master faces.
-    double
-    slave_stiffness_ratio(const unsigned int pair) const;
     void
     compute_residual();
     double
     equilibrium_residual_norm(const std::vector<double> &contact_force_at_interface) const;
-    // --- adaptivity (refinement.cc)
+    // --- adaptivity (contact_problem_refinement.cc)
     void
     estimate_error(Json &cycle_record);
     /// Records and prints how far the traction of the recovered stress at
@@ -376,6 +290,11 @@ namespace contact_fem
     /// Solves one cycle on the current mesh; returns false if Newton failed.
     bool
     run_cycle(const unsigned int cycle, Json &cycle_record);
+    /// Records and prints the results of the cycle's last converged state
+    /// (@p converged: the whole load path); false if that state is no
+    /// result (an active node in tension).
+    bool
+    record_results(const bool converged, Json &cycle_record);
     /// A new mesh: DoFs, the transferred solution, cell matrices, the
     /// cycle's first line and record entries.
     void
@@ -390,114 +309,28 @@ namespace contact_fem
     /// and restoring the last converged state; records the steps.
     LoadPath
     step_the_load(const unsigned int cycle, Json &cycle_record);
-    // --- checks of the input on the scene's mesh (contact_setup_checks.cc)
-    /// Builds the scene without its global and box refinements, and checks
-    /// on that mesh the contact pairs and the memory the full mesh will
-    /// need: input errors found before any work.
-    void
-    check_scene_before_meshing();
-    /// Refuses a boundary id named by a boundary condition or a contact pair
-    /// that no face of @p coarse carries, naming the key and the id.
-    void
-    check_boundary_ids(const Triangulation<dim> &coarse) const;
-    /// Refuses a contact pair whose two surfaces belong to the same body.
-    void
-    check_contact_pairs(const Triangulation<dim> &tria) const;
-    /// The parameters that set the size of the mesh, for messages.
-    std::string
-    refinement_keys() const;
-    /// Refuses a mesh whose estimated memory exceeds what the machine has
-    /// available, and keeps a warning in memory_warning when it takes more
-    /// than half.
-    void
-    check_memory_estimate(const parallel::distributed::Triangulation<dim> &coarse);
-    // --- value ranges (input_range_checks.cc)
-    /// "Geometry/Mesh file 'name'" or the subsection of a built-in scene.
-    std::string
-    geometry_key() const;
-    /// Builds the mesh of @p coarse_scene (the scene itself, or its coarse
-    /// mesh for the early checks); a library exception becomes a message
-    /// naming geometry_key() (and the distance from the origin where that
-    /// is the likely cause).
-    void
-    create_scene_mesh(const Scene<dim>                          &coarse_scene,
-                       parallel::distributed::Triangulation<dim> &coarse) const;
-    /// Refuses coordinates, moduli and loads whose products overflow
-    /// double precision, naming the key or mesh file.
-    void
-    check_value_ranges(const Triangulation<dim> &coarse) const;
-    /// Refuses a load or prescribed displacement that is not a finite number
-    /// (or a load whose force over @p area overflows) at a vertex of its
-    /// boundary at a time of the load path, naming the key.
-    void
-    check_load_path(const Triangulation<dim> &coarse, const double area) const;
-    /// Why the next adaptive cycle, with @p new_dofs DoFs after a cycle
-    /// with @p old_dofs, would exhaust the memory the run may use (RAM,
-    /// cgroup, ulimit -v), or an empty string if it fits.
-    std::string
-    memory_shortage(const double old_dofs, const double new_dofs) const;
-    // --- diagnoses (contact_diagnosis.cc)
-    /// The resultant of the applied pressures and tractions on each body. Collective.
-    std::map<types::material_id, Tensor<1, dim>>
-    body_loads(const double time) const;
-    /// The integral of the outward normal over boundary @p id. Collective.
-    Tensor<1, dim>
-    surface_normal(const types::boundary_id id) const;
-    /// The largest distance of a vertex from the origin. Collective.
-    double
-    model_size() const;
-    /// The displacement the load at @p time causes: applied force over the
-    /// smallest Young's modulus, or the largest prescribed displacement.
-    double
-    load_displacement_scale(const double time) const;
-    /// Why the load at @p time is at the round-off of the geometry, or "".
-    std::string
-    load_at_round_off(const double time) const;
-    /// Why double precision cannot resolve this model (stiffness ratio,
-    /// nearly incompressible body), or "".
-    std::string
-    precision_limits() const;
-    /// The stiffness ratio part of precision_limits().
-    std::string
-    stiffness_contrast_limit() const;
-    /// The nearly incompressible part of precision_limits().
-    std::string
-    incompressibility_limit() const;
-    /// The part of precision_limits() of a Poisson's ratio near -1.
-    std::string
-    auxetic_limit() const;
-    /// The applied loads along the outward normals of the contact surfaces
-    /// of their bodies: > 0 pushes the bodies together. Collective.
-    double
-    load_toward_contact(const double time) const;
-    /// The diagnosis of a step without active slave nodes at @p where:
-    /// the separating load, or the real cause if the load does not
-    /// separate the bodies. @p none_started: no node started the step in
-    /// contact (before any solve of the step). Collective.
-    std::string
-    no_contact_message(const std::string &where,
-                       const bool         in_iteration,
-                       const bool         none_started) const;
-    /// The hint of a Newton failure; @p stalled: the residuals stopped
-    /// decreasing without active-set changes.
-    std::string
-    non_convergence_hint(const bool stalled, const double r_u, const double r_lambda) const;
+    /// The checks of the parsed input (input_checks.h).
+    InputChecks<dim>
+    input_checks() const
+    {
+      return {scene, materials, boundary_conditions, load_stepping, contact_parameters, degree,
+              comm};
+    }
+    // --- diagnoses
+    /// The diagnoses of the run's present state (contact_diagnosis.h).
+    ContactDiagnosis<dim>
+    diagnosis() const
+    {
+      return ContactDiagnosis<dim>({scene, materials, boundary_conditions, contact_parameters,
+                                    newton_parameters, dof_handler, *mapping, interface.get(),
+                                    contact.get(), most_null_pivots});
+    }
     /// Warns and records when the reactions do not balance the load.
     void
     check_reaction_balance(const Json &reaction, Json &cycle_record);
     /// Warns about Poisson's ratios and loads beyond double precision.
     void
     warn_about_precision_limits() const;
-    /// What decides the linear solver: materials, cell shapes, supports.
-    /// Collective.
-    ProblemTraits
-    problem_traits() const;
-    /// The likely cause of a singular linear system (a penalty far above
-    /// its automatic value, the precision limits, a body without supports)
-    /// as a sentence for a failure message, or the question whether every
-    /// body is held. Collective.
-    std::string
-    singular_system_hint() const;
     // --- results (contact_output.cc)
     Json
     contact_results() const;
@@ -527,8 +360,6 @@ namespace contact_fem
       return {dof_handler, *mapping, ghosted_solution, materials, volumetric_projection.get(),
               contact_state};
     }
-    void
-    write_convergence_row(const Json &cycle_record, const double cumulative_time);
     void
     write_pressure_profile() const;
     /// The reactions and pair forces of the converged load step @p step
@@ -589,7 +420,6 @@ namespace contact_fem
     AffineConstraints<double> hanging_constraints;
     AffineConstraints<double> dirichlet_constraints;
     InclinedSupports<dim>     inclined_supports; ///< Boundary conditions/Rollers
-    CheckerboardWarning       checkerboard_warning;
     std::vector<types::global_dof_index> fixed_point_dofs; ///< locally relevant
     /// Per Output/Displacement probes entry: its vertex DoFs (see
     /// vertex_dofs()).
@@ -625,10 +455,8 @@ namespace contact_fem
     std::vector<double>                    interface_fixed_values;
     std::vector<double>                    interface_residual;
     std::vector<bool>                      interface_dof_fixed;
-    /// Interface displacement at the start of the current load step.
-    std::vector<double>                    step_start_displacement;
-    /// The search reaches this many times the motion it is sized for.
-    static constexpr double                search_growth = 1.5;
+    /// The search of the interface over the load steps (with contact).
+    std::unique_ptr<SearchControl<dim>>    search;
     /// A point names a vertex closer than this times the cell's diameter
     /// (far above the digits a user types, far below the distance of two
     /// vertices of a valid cell).
@@ -636,19 +464,6 @@ namespace contact_fem
     /// A direct solve whose residual exceeds this fraction of the
     /// right-hand side has met a singular matrix.
     static constexpr double                singular_residual_ratio = 1e-3;
-    /// Wider searches for an unpaired penetrating node before giving up.
-    static constexpr unsigned int          max_searches_after_check = 3;
-    /// Small sliding: the normal turns by less than this (radians) along
-    /// the slip of a node, so a linearised gap errs by less than this times
-    /// the slip (check_penetration()).
-    static constexpr double                max_sliding_angle = 0.1;
-    /// Per pair: the motion allowance of the current search, and the
-    /// relative surface motion of the last converged step (with its size),
-    /// from which the next step's is predicted.
-    std::vector<double>                    motion_allowance, last_step_motion;
-    double                                 last_step_size = 0.;
-    /// Of the last converged step: the largest unexplained penetration / h.
-    double                                 last_penetration_excess = 0.;
 
     std::unique_ptr<TimerOutput>       timer; ///< made once the input is valid
     double                             current_time = 0.;
@@ -666,16 +481,18 @@ namespace contact_fem
     unsigned int                                   cycle = 0;
     std::vector<unsigned int> newton_iterations_of_cycle; ///< per load step
     double strain_energy = 0., external_work = 0.; ///< at the last residual
-    std::ofstream                                  convergence_csv;
-    /// Set by check_memory_estimate(), printed by run().
+    /// convergence.csv, made with the output directory.
+    std::unique_ptr<ConvergenceTable<dim>>         convergence_table;
+    /// Of InputChecks::check_scene_before_meshing(), printed by run().
     std::string memory_warning;
     /// Set by the first solve_load_step() (started_solving()).
     bool solving = false;
     /// A cycle's reactions did not balance its load (check_reaction_balance()).
     bool balance_failed = false;
-    /// A cycle converged beyond ModelRange (warn_about_large_strains(),
-    /// warn_about_large_displacements()).
+    /// A cycle converged beyond ModelRange (check_converged_solution()).
     bool outside_model_range = false;
+    /// The per-cycle warnings of the run, each printed once.
+    WarningLog warnings;
     /// The comparison with Analytical solution/Type; null for none.
     std::unique_ptr<AnalyticalComparison<dim>> comparison;
     /// forces.csv: its header and the rows of the run so far.

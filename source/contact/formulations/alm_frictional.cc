@@ -718,4 +718,6 @@ namespace contact_fem
 
   template class AlmFrictional<2>;
   template class AlmFrictional<3>;
+
+  CONTACT_FEM_REGISTER_FORMULATION(AlmFrictional, "alm frictional", true, false, false)
 } // namespace contact_fem

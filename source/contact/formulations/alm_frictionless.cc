@@ -129,4 +129,6 @@ namespace contact_fem
 
   template class AlmFrictionless<2>;
   template class AlmFrictionless<3>;
+
+  CONTACT_FEM_REGISTER_FORMULATION(AlmFrictionless, "alm frictionless", false, false, false)
 } // namespace contact_fem

@@ -1,65 +1,39 @@
-#include <contact_fem/contact/formulations/alm_frictional.h>
-#include <contact_fem/contact/formulations/alm_frictionless.h>
 #include <contact_fem/contact/formulations/contact_formulation.h>
-#include <contact_fem/contact/formulations/penalty_frictional.h>
-#include <contact_fem/contact/formulations/penalty_frictionless.h>
+// The keys of the normal part, which every formulation shares.
+#include <contact_fem/contact/formulations/frictionless_formulation.h>
 #include <contact_fem/contact/friction/frictional_law.h>
 
 #include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <utility>
 
 namespace contact_fem
 {
   namespace
   {
-    /// The registry: a formulation's .prm name, the shared keys it reads
-    /// besides its own, how to declare its own keys, and how to make it. A
-    /// new formulation adds one entry.
+    /// The registered formulations, frictionless ones first, each group
+    /// in alphabetical order (the order of the names in the parameter
+    /// documentation, whatever order the library's files are loaded in).
     template <int dim>
-    struct Registered
-    {
-      std::string name;
-      bool        takes_friction;           ///< Contact/Friction, Pure slip
-      bool        takes_tangential_penalty; ///< Contact/Tangential penalty
-      std::function<void(ParameterHandler &)> declare;
-      std::function<std::unique_ptr<ContactFormulation<dim>>(ParameterHandler &,
-                                                             const FrictionParameters &)>
-        create;
-    };
-
-    template <int dim>
-    std::vector<Registered<dim>>
+    std::vector<typename ContactFormulation<dim>::Registration> &
     registry()
     {
-      return {{"alm frictionless",
-               false,
-               false,
-               [](ParameterHandler &) {},
-               [](ParameterHandler &prm, const FrictionParameters &) {
-                 return std::make_unique<AlmFrictionless<dim>>(prm);
-               }},
-              {"penalty frictionless",
-               false,
-               false,
-               PenaltyFrictionless<dim>::declare_parameters,
-               [](ParameterHandler &prm, const FrictionParameters &) {
-                 return std::make_unique<PenaltyFrictionless<dim>>(prm);
-               }},
-              {"alm frictional",
-               true,
-               false,
-               [](ParameterHandler &) {},
-               [](ParameterHandler &prm, const FrictionParameters &friction) {
-                 return std::make_unique<AlmFrictional<dim>>(prm, friction);
-               }},
-              {"penalty frictional",
-               true,
-               true,
-               PenaltyFrictional<dim>::declare_parameters,
-               [](ParameterHandler &prm, const FrictionParameters &friction) {
-                 return std::make_unique<PenaltyFrictional<dim>>(prm, friction);
-               }}};
+      static std::vector<typename ContactFormulation<dim>::Registration> entries;
+      return entries;
     }
   } // namespace
+
+  template <int dim>
+  void
+  ContactFormulation<dim>::register_formulation(const Registration &registration)
+  {
+    auto &entries = registry<dim>();
+    entries.push_back(registration);
+    std::stable_sort(entries.begin(), entries.end(), [](const auto &a, const auto &b) {
+      return std::make_pair(a.takes_friction, a.name) < std::make_pair(b.takes_friction, b.name);
+    });
+  }
 
   template <int dim>
   void
@@ -159,7 +133,8 @@ namespace contact_fem
     FrictionlessFormulation<dim>::Parameters::declare_parameters(prm);
     FrictionParameters::declare_parameters(prm);
     for (const auto &entry : registry<dim>())
-      entry.declare(prm);
+      if (entry.declare)
+        entry.declare(prm);
   }
 
   template <int dim>
@@ -196,8 +171,7 @@ namespace contact_fem
           AssertThrow(entry.takes_friction || !friction_given,
                       ExcMessage("Contact/Friction is set, but Contact/Formulation = " + name +
                                  " has no friction: use a frictional formulation (" +
-                                 "alm frictional, penalty frictional), or leave " +
-                                 "Contact/Friction empty."));
+                                 frictional_names() + "), or leave Contact/Friction empty."));
           return formulation;
         }
     AssertThrow(false, ExcMessage("Contact/Formulation: unknown formulation '" + name + "'."));
@@ -211,6 +185,17 @@ namespace contact_fem
     std::string result;
     for (const auto &entry : registry<dim>())
       result += (result.empty() ? "" : "|") + entry.name;
+    return result;
+  }
+
+  template <int dim>
+  std::string
+  ContactFormulation<dim>::frictional_names()
+  {
+    std::string result;
+    for (const auto &entry : registry<dim>())
+      if (entry.takes_friction)
+        result += (result.empty() ? "" : ", ") + entry.name;
     return result;
   }
 

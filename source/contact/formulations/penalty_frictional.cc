@@ -513,4 +513,6 @@ namespace contact_fem
 
   template class PenaltyFrictional<2>;
   template class PenaltyFrictional<3>;
+
+  CONTACT_FEM_REGISTER_FORMULATION(PenaltyFrictional, "penalty frictional", true, true, true)
 } // namespace contact_fem

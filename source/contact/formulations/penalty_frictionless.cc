@@ -290,4 +290,6 @@ namespace contact_fem
 
   template class PenaltyFrictionless<2>;
   template class PenaltyFrictionless<3>;
+
+  CONTACT_FEM_REGISTER_FORMULATION(PenaltyFrictionless, "penalty frictionless", false, false, true)
 } // namespace contact_fem

@@ -23,6 +23,8 @@
 
 namespace contact_fem
 {
+  struct FrictionParameters;
+
   using namespace dealii;
 
   /**
@@ -290,6 +292,26 @@ namespace contact_fem
                   const Json                  &reaction,
                   std::ostream                &out) const;
 
+    /// What the registry knows of a formulation.
+    struct Registration
+    {
+      /// Its value of Contact/Formulation.
+      std::string name;
+      /// It reads Contact/Friction and Pure slip (parsed once, by create()).
+      bool takes_friction;
+      /// It reads Contact/Tangential penalty.
+      bool takes_tangential_penalty;
+      /// Declares its own keys (empty: it has none).
+      std::function<void(ParameterHandler &)> declare;
+      std::function<std::unique_ptr<ContactFormulation<dim>>(ParameterHandler &,
+                                                             const FrictionParameters &)>
+        create;
+    };
+
+    /// Adds a formulation; see CONTACT_FEM_REGISTER_FORMULATION.
+    static void
+    register_formulation(const Registration &registration);
+
     /// Declares the parameters of every registered formulation.
     static void
     declare_parameters(ParameterHandler &prm);
@@ -302,7 +324,47 @@ namespace contact_fem
     /// The names Contact/Formulation accepts, separated by '|'.
     static std::string
     names();
+
+    /// The names of the formulations with friction, separated by ", ".
+    static std::string
+    frictional_names();
   };
+
+  /// Registers class template @p classname (a ContactFormulation<dim> for
+  /// dim 2 and 3) under @p formulation_name when the library is loaded.
+  /// @p friction_keys: it reads the shared friction keys and is made from
+  /// (prm, friction), else from (prm); @p tangential_penalty_key: it reads
+  /// Contact/Tangential penalty; @p own_keys: classname<dim>::
+  /// declare_parameters() declares keys of its own.
+#define CONTACT_FEM_REGISTER_FORMULATION(                                                 \
+  classname, formulation_name, friction_keys, tangential_penalty_key, own_keys)                     \
+  namespace                                                                              \
+  {                                                                                      \
+    template <int dim>                                                                   \
+    typename ContactFormulation<dim>::Registration classname##_registration()           \
+    {                                                                                    \
+      typename ContactFormulation<dim>::Registration r;                                  \
+      r.name                     = formulation_name;                                                 \
+      r.takes_friction           = friction_keys;                                       \
+      r.takes_tangential_penalty = tangential_penalty_key;                             \
+      if constexpr (own_keys)                                                            \
+        r.declare = classname<dim>::declare_parameters;                                  \
+      r.create = [](ParameterHandler &prm, const auto &friction) {                       \
+        std::unique_ptr<ContactFormulation<dim>> formulation;                            \
+        if constexpr (friction_keys)                                                     \
+          formulation = std::make_unique<classname<dim>>(prm, friction);                 \
+        else                                                                             \
+          formulation = std::make_unique<classname<dim>>(prm);                           \
+        return formulation;                                                              \
+      };                                                                                 \
+      return r;                                                                          \
+    }                                                                                    \
+    const bool classname##_registered = [] {                                             \
+      ContactFormulation<2>::register_formulation(classname##_registration<2>());        \
+      ContactFormulation<3>::register_formulation(classname##_registration<3>());        \
+      return true;                                                                       \
+    }();                                                                                 \
+  }
 } // namespace contact_fem
 
 #endif

@@ -1,6 +1,6 @@
-// Checks of the input that need the scene's mesh, done before any work:
-// the contact pairs and the memory the mesh will need.
-#include <contact_fem/simulator/contact_problem.h>
+// The input checks of a scene on its coarse mesh (InputChecks): the contact
+// pairs, the boundary ids and the memory the mesh will need.
+#include <contact_fem/simulator/input_checks.h>
 #include <contact_fem/geometry/mesh_queries.h>
 #include <contact_fem/core/resources.h>
 
@@ -43,8 +43,25 @@ namespace contact_fem
   } // namespace
 
   template <int dim>
-  void
-  ContactProblem<dim>::check_scene_before_meshing()
+  InputChecks<dim>::InputChecks(const Scene<dim>         &scene,
+                                const Materials<dim>     &materials,
+                                const BoundaryConditions &boundary_conditions,
+                                const LoadStepping       &load_stepping,
+                                const ContactParameters  &contact_parameters,
+                                const unsigned int        degree,
+                                const MPI_Comm            comm)
+    : scene(scene)
+    , materials(materials)
+    , boundary_conditions(boundary_conditions)
+    , load_stepping(load_stepping)
+    , contact_parameters(contact_parameters)
+    , degree(degree)
+    , comm(comm)
+  {}
+
+  template <int dim>
+  std::string
+  InputChecks<dim>::check_scene_before_meshing(InclinedSupports<dim> &inclined_supports) const
   {
     // The scene without its global refinements, refinement boxes and
     // distortion: cheap to build, and the mesh those refinements multiply.
@@ -58,12 +75,12 @@ namespace contact_fem
     check_boundary_ids(coarse);
     inclined_supports.initialize(coarse, boundary_conditions.rollers, contact_parameters.pairs);
     check_contact_pairs(coarse);
-    check_memory_estimate(coarse);
+    return check_memory_estimate(coarse);
   }
 
   template <int dim>
   void
-  ContactProblem<dim>::check_boundary_ids(const Triangulation<dim> &coarse) const
+  InputChecks<dim>::check_boundary_ids(const Triangulation<dim> &coarse) const
   {
     // A boundary id that no face carries would hold, load or couple nothing,
     // silently: the whole body free, a load lost, a contact pair without
@@ -118,15 +135,7 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactProblem<dim>::print_input_warnings() const
-  {
-    if (!memory_warning.empty())
-      pcout << "Warning: " << memory_warning << "." << std::endl;
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::check_contact_pairs(const Triangulation<dim> &tria) const
+  InputChecks<dim>::check_contact_pairs(const Triangulation<dim> &tria) const
   {
     // Mortar contact needs two bodies: a surface in contact with another
     // surface of its own body would be self-contact, which the mortar
@@ -146,7 +155,7 @@ namespace contact_fem
 
   template <int dim>
   std::string
-  ContactProblem<dim>::refinement_keys() const
+  InputChecks<dim>::refinement_keys() const
   {
     std::vector<std::string> keys;
     if (scene.global_refinements > 0)
@@ -169,9 +178,9 @@ namespace contact_fem
   }
 
   template <int dim>
-  void
-  ContactProblem<dim>::check_memory_estimate(
-    const parallel::distributed::Triangulation<dim> &coarse)
+  std::string
+  InputChecks<dim>::check_memory_estimate(
+    const parallel::distributed::Triangulation<dim> &coarse) const
   {
     // Uniform refinement multiplies the cells by 2^dim; a box multiplies the
     // cells inside it by 2^dim per round (its 2:1 balance adds a few more).
@@ -196,7 +205,7 @@ namespace contact_fem
     available.bytes  = Utilities::MPI::broadcast(comm, available.bytes, 0);
     available.source = Utilities::MPI::broadcast(comm, available.source, 0);
     if (!(available.bytes > 0.))
-      return;
+      return "";
 
     std::ostringstream estimate;
     estimate << refinement_keys() << ": the mesh will have about " << format(cells)
@@ -208,13 +217,16 @@ namespace contact_fem
                            "). Refine less: each refinement multiplies the cells by " +
                            format(per_refinement) + "."));
     if (bytes > 0.5 * available.bytes)
-      memory_warning = estimate.str() + "more than half of the " +
-                       format_bytes(available.bytes) + " available (" + available.source + ")";
+      return estimate.str() + "more than half of the " + format_bytes(available.bytes) +
+             " available (" + available.source + ")";
+    return "";
   }
 
   template <int dim>
   std::string
-  ContactProblem<dim>::memory_shortage(const double old_dofs, const double new_dofs) const
+  InputChecks<dim>::memory_shortage(const unsigned int cycle,
+                                    const double       old_dofs,
+                                    const double       new_dofs) const
   {
     AvailableMemory available;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
@@ -242,17 +254,6 @@ namespace contact_fem
            " are kept. Allow fewer cells (Refinement/Maximum cells) or more memory.";
   }
 
-  // The class is instantiated in contact_problem.cc; here only the members
-  // defined in this file.
-#define INSTANTIATE(dim) \
-  template void ContactProblem<dim>::check_scene_before_meshing(); \
-  template void ContactProblem<dim>::print_input_warnings() const; \
-  template void ContactProblem<dim>::check_boundary_ids(const Triangulation<dim> &) const; \
-  template void ContactProblem<dim>::check_contact_pairs(const Triangulation<dim> &) const; \
-  template std::string ContactProblem<dim>::refinement_keys() const; \
-  template void        ContactProblem<dim>::check_memory_estimate( const parallel::distributed::Triangulation<dim> &); \
-  template std::string ContactProblem<dim>::memory_shortage(const double, const double) const;
-  INSTANTIATE(2)
-  INSTANTIATE(3)
-#undef INSTANTIATE
+  template class InputChecks<2>;
+  template class InputChecks<3>;
 } // namespace contact_fem

@@ -1,3 +1,7 @@
+// The choice of the linear solver: LinearSolver::create() makes the direct,
+// the iterative or the automatic one (which picks one of the two per mesh,
+// by measured crossovers and the multigrid's limits). This file knows the
+// implementations; the interface (linear_solver.h) does not.
 #include <contact_fem/core/format.h>
 #include <contact_fem/solvers/direct_solver.h>
 #include <contact_fem/solvers/iterative_solver.h>

@@ -1,0 +1,124 @@
+// The diagnoses of what goes wrong in a run: a lost contact, a stalled
+// Newton iteration, a singular system, a model beyond double precision.
+#ifndef contact_fem_contact_diagnosis_h
+#define contact_fem_contact_diagnosis_h
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+
+#include <contact_fem/contact/contact_interface.h>
+#include <contact_fem/contact/contact_parameters.h>
+#include <contact_fem/contact/formulations/contact_formulation.h>
+#include <contact_fem/geometry/scene.h>
+#include <contact_fem/material/material.h>
+#include <contact_fem/simulator/scene_parameters.h>
+#include <contact_fem/solvers/linear_solver.h>
+#include <contact_fem/solvers/solver_parameters.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace contact_fem
+{
+  using namespace dealii;
+
+  /**
+   * Reads the scene, its mesh and the contact state of a run and names the
+   * real cause of a failure or a doubtful result, most specific first.
+   * Made where it is needed; everything it refers to outlives it.
+   */
+  template <int dim>
+  class ContactDiagnosis
+  {
+  public:
+    /// What the diagnoses read of the run.
+    struct Run
+    {
+      const Scene<dim>         &scene;
+      const Materials<dim>     &materials;
+      const BoundaryConditions &boundary_conditions;
+      const ContactParameters  &contact_parameters;
+      const NewtonParameters   &newton_parameters;
+      const DoFHandler<dim>    &dof_handler;
+      const Mapping<dim>       &mapping;
+      /// Null without contact pairs.
+      const ContactInterface<dim>   *interface;
+      const ContactFormulation<dim> *contact;
+      /// The most zero pivots of a Newton solve of this cycle.
+      unsigned int most_null_pivots;
+    };
+
+    explicit ContactDiagnosis(const Run &run);
+
+    /// The resultant of the applied pressures and tractions on each body at
+    /// @p time. Collective.
+    std::map<types::material_id, Tensor<1, dim>>
+    body_loads(const double time) const;
+    /// Why the load at @p time is at the round-off of the geometry, or "".
+    std::string
+    load_at_round_off(const double time) const;
+    /// Why double precision cannot resolve this model (stiffness ratio,
+    /// a Poisson's ratio near -1 or 0.5), or "".
+    std::string
+    precision_limits() const;
+    /// The stiffness ratio part of precision_limits().
+    std::string
+    stiffness_contrast_limit() const;
+    /// The part of precision_limits() of a Poisson's ratio near -1.
+    std::string
+    auxetic_limit() const;
+    /// The diagnosis of a step without active slave nodes at @p where at
+    /// @p time: the separating load, or the real cause if the load does not
+    /// separate the bodies. @p none_started: no node started the step in
+    /// contact (before any solve of the step). Collective.
+    std::string
+    no_contact_message(const std::string &where,
+                       const double       time,
+                       const bool         in_iteration,
+                       const bool         none_started) const;
+    /// The hint of a Newton failure; @p stalled: the residuals stopped
+    /// decreasing without active-set changes.
+    std::string
+    non_convergence_hint(const bool stalled, const double r_u, const double r_lambda) const;
+    /// What decides the linear solver: materials, cell shapes, supports.
+    /// Collective.
+    ProblemTraits
+    problem_traits() const;
+    /// The likely cause of a singular linear system (a penalty far above
+    /// its automatic value, the precision limits, a body without supports)
+    /// as a sentence for a failure message, or the question whether every
+    /// body is held. Collective.
+    std::string
+    singular_system_hint() const;
+    /// Young's modulus of the slave side of contact pair @p pair over that
+    /// of its master side (the largest of each); 0 without master faces.
+    double
+    slave_stiffness_ratio(const unsigned int pair) const;
+
+  private:
+    /// The integral of the outward normal over boundary @p id. Collective.
+    Tensor<1, dim>
+    surface_normal(const types::boundary_id id) const;
+    /// The largest distance of a vertex from the origin. Collective.
+    double
+    model_size() const;
+    /// The displacement the load at @p time causes: applied force over the
+    /// smallest Young's modulus, or the largest prescribed displacement.
+    double
+    load_displacement_scale(const double time) const;
+    /// The nearly incompressible part of precision_limits().
+    std::string
+    incompressibility_limit() const;
+    /// The applied loads along the outward normals of the contact surfaces
+    /// of their bodies: > 0 pushes the bodies together. Collective.
+    double
+    load_toward_contact(const double time) const;
+
+    Run      run;
+    MPI_Comm comm;
+  };
+} // namespace contact_fem
+
+#endif

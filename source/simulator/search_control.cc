@@ -1,0 +1,223 @@
+#include <contact_fem/core/format.h>
+#include <contact_fem/simulator/search_control.h>
+
+#include <algorithm>
+#include <map>
+#include <sstream>
+
+namespace contact_fem
+{
+  template <int dim>
+  SearchControl<dim>::SearchControl(ContactInterface<dim>    &interface,
+                                    ContactFormulation<dim>  &contact,
+                                    const ContactParameters  &parameters,
+                                    TimerOutput              &timer,
+                                    const ConditionalOStream &pcout)
+    : interface(interface)
+    , contact(contact)
+    , parameters(parameters)
+    , timer(timer)
+    , pcout(pcout)
+  {}
+
+  template <int dim>
+  void
+  SearchControl<dim>::start_step(const std::vector<double> &displacement,
+                                 const double               prescribed,
+                                 const double               step_size,
+                                 const bool                 first_step)
+  {
+    TimerOutput::Scope t(timer, "Contact: search");
+    step_start_displacement = displacement;
+    searches_after_check    = 0;
+    // The configuration the operators are built on: zero with small
+    // kinematics, the step's start with updated.
+    const std::vector<double> search_configuration =
+      parameters.updated_kinematics ? displacement :
+                                      std::vector<double>(displacement.size(), 0.);
+    // The step moves the surfaces at least as far as the prescribed
+    // displacements change, and about as far as the last step did per unit
+    // of load; with small kinematics the operators must also reach as far as
+    // the surfaces have moved from the reference configuration.
+    const std::vector<double> moved =
+      interface.relative_motion(search_configuration, displacement);
+    motion_allowance.assign(interface.pairs.size(), 0.);
+    for (unsigned int p = 0; p < motion_allowance.size(); ++p)
+      {
+        double predicted = prescribed;
+        if (p < last_step_motion.size() && last_step_size > 0.)
+          predicted = std::max(predicted, last_step_motion[p] * step_size / last_step_size);
+        motion_allowance[p] = search_growth * (moved[p] + predicted);
+      }
+    interface.update(search_configuration, parameters.search_factor, motion_allowance);
+    contact.start_load_step(interface, displacement, first_step);
+  }
+
+  template <int dim>
+  bool
+  SearchControl<dim>::extend_if_outrun(const std::vector<double> &displacement)
+  {
+    const std::vector<double> motion = interface.motion_since_search(displacement);
+    bool                      outrun = false;
+    for (unsigned int p = 0; p < motion.size(); ++p)
+      if (motion[p] > interface.search_reach()[p])
+        {
+          motion_allowance[p] = std::max(motion_allowance[p], search_growth * motion[p]);
+          outrun              = true;
+        }
+    if (outrun)
+      {
+        pcout << "    the surfaces moved beyond the search reach: ";
+        search_again(displacement);
+      }
+    return outrun;
+  }
+
+  template <int dim>
+  bool
+  SearchControl<dim>::accept(const std::vector<double> &displacement,
+                             const unsigned int         step,
+                             const double               time,
+                             const double               step_size)
+  {
+    // The promise behind "converged": no slave node inside the master
+    // beyond what its gap accounts for. A node no master face is paired
+    // with gets a few wider searches.
+    const PenetrationCheck check = check_penetration(displacement);
+    if (check.excess > parameters.penetration_tolerance)
+      {
+        if (check.node.paired || searches_after_check == max_searches_after_check)
+          throw penetration_failure(check, step, time);
+        ++searches_after_check;
+        widen(displacement, check.node.pair, check.penetration);
+        return false;
+      }
+    penetration_excess = check.excess;
+    last_step_motion   = interface.relative_motion(step_start_displacement, displacement);
+    last_step_size     = step_size;
+    return true;
+  }
+
+  template <int dim>
+  void
+  SearchControl<dim>::widen(const std::vector<double> &displacement,
+                            const unsigned int         pair,
+                            const double               depth)
+  {
+    const double motion = interface.motion_since_search(displacement)[pair];
+    motion_allowance[pair] =
+      std::max(2. * motion_allowance[pair], search_growth * motion) + depth;
+    pcout << "    a slave node penetrates the master where no master face is paired with "
+             "it: ";
+    search_again(displacement);
+  }
+
+  template <int dim>
+  void
+  SearchControl<dim>::search_again(const std::vector<double> &displacement)
+  {
+    pcout << "searching again with room for "
+          << scientific(*std::max_element(motion_allowance.begin(), motion_allowance.end()), 2)
+          << std::endl;
+    TimerOutput::Scope t(timer, "Contact: search");
+    // The same configuration as the step's search (a copy: update()
+    // replaces the interface's own).
+    const std::vector<double> configuration = interface.search_configuration();
+    interface.update(configuration, parameters.search_factor, motion_allowance);
+    contact.start_load_step(interface, displacement, false);
+  }
+
+  template <int dim>
+  typename SearchControl<dim>::PenetrationCheck
+  SearchControl<dim>::check_penetration(const std::vector<double> &displacement) const
+  {
+    TimerOutput::Scope t(timer, "Contact: check");
+    // What a node's own mortar gap says (with a penalty, or at the nodal
+    // value of a curved face's weighted gap, a node may lie inside), and
+    // the error of a gap linearised in the motion: a slip s along a surface
+    // whose normal turns by theta on the way moves the node off the
+    // linearised surface by about s theta, which small sliding bounds by
+    // theta < max_sliding_angle.
+    const auto allowed_at = [&](const typename ContactInterface<dim>::SlaveNode &s) {
+      return s.paired ? std::max(0., -interface.nodal_gap(s, displacement)) +
+                          max_sliding_angle *
+                            interface.slip_since_search(s, displacement) :
+                        0.;
+    };
+    PenetrationCheck check;
+    const auto       consider = [&](const typename ContactInterface<dim>::SlaveNode &s,
+                              const double distance,
+                              const double allowed,
+                              const bool   hanging) {
+      const double penetration = std::max(0., -distance);
+      if ((penetration - allowed) / s.size > check.excess)
+        {
+          check.excess      = (penetration - allowed) / s.size;
+          check.node        = s;
+          check.hanging     = hanging;
+          check.penetration = penetration;
+          check.allowed     = allowed;
+        }
+    };
+    const auto &slave_nodes = interface.slave_nodes;
+    std::map<unsigned int, double> allowed_of_node;
+    const std::vector<double> distance =
+      interface.surface_distances(slave_nodes, displacement);
+    for (unsigned int i = 0; i < slave_nodes.size(); ++i)
+      {
+        const double allowed = allowed_at(slave_nodes[i]);
+        allowed_of_node[slave_nodes[i].node] = allowed;
+        consider(slave_nodes[i], distance[i], allowed, false);
+      }
+    // A hanging vertex moves with its parents: it may lie inside by what
+    // their gaps allow, in proportion to its weights.
+    const auto &hanging = interface.hanging_slave_vertices;
+    const std::vector<double> hanging_distance =
+      interface.surface_distances(hanging, displacement);
+    for (unsigned int i = 0; i < hanging.size(); ++i)
+      {
+        double allowed = 0.;
+        for (const auto &[parent, weight] : interface.nodes[hanging[i].node].parents)
+          allowed += std::abs(weight) * allowed_of_node.at(parent);
+        consider(hanging[i], hanging_distance[i], allowed, true);
+      }
+    return check;
+  }
+
+  template <int dim>
+  NewtonFailure
+  SearchControl<dim>::penetration_failure(const PenetrationCheck &check,
+                                           const unsigned int      step,
+                                           const double            time) const
+  {
+    const auto        &s = check.node;
+    const std::string configuration = parameters.updated_kinematics ?
+                                        "configuration of the step's start" :
+                                        "reference configuration";
+    std::ostringstream message;
+    message << "load step " << step + 1 << " (t = " << time
+            << "): the converged solution is not a contact solution. The "
+            << (check.hanging ? "hanging slave vertex" : "slave node") << " at ("
+            << interface.nodes[s.node].reference << ") penetrates the master surface by "
+            << scientific(check.penetration, 3) << " (h = " << scientific(s.size, 3) << "), ";
+    if (s.paired)
+      message << (check.hanging ? "of which its parents' mortar gaps and their linearisation allow " :
+                                  "of which its mortar gap and its linearisation allow ")
+              << scientific(check.allowed, 3)
+              << ": the surfaces slid or turned farther than the operators built on the "
+              << configuration << " can follow";
+    else
+      message << "and no master face is paired with it, also after a wider search (its "
+                 "normal does not meet the master surface in the "
+              << configuration << ")";
+    message << " (Contact/Penetration tolerance = " << parameters.penetration_tolerance
+            << " h).";
+    if (!parameters.updated_kinematics)
+      message << " This motion is beyond small sliding, so smaller load steps cannot help: "
+                 "use Contact/Kinematics = updated with enough load steps.";
+    return NewtonFailure(message.str(), parameters.updated_kinematics);
+  }
+
+  template class SearchControl<2>;
+  template class SearchControl<3>;
+} // namespace contact_fem
