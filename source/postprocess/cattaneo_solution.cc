@@ -14,14 +14,27 @@ namespace contact_fem
                                      const double Q,
                                      const double mu,
                                      const double radius,
-                                     const double E_star)
+                                     const double E_star,
+                                     const bool   sphere)
     : P(P)
     , Q(Q)
     , mu(mu)
+    , sphere(sphere)
   {
-    a     = std::sqrt(4. * P * radius / (dealii::numbers::PI * E_star));
-    p_max = 2. * P / (dealii::numbers::PI * a);
-    c     = Q < mu * P ? a * std::sqrt(1. - Q / (mu * P)) : 0.;
+    constexpr double pi = dealii::numbers::PI;
+    a     = sphere ? std::cbrt(3. * P * radius / (4. * E_star)) :
+                     std::sqrt(4. * P * radius / (pi * E_star));
+    p_max = sphere ? 3. * P / (2. * pi * a * a) : 2. * P / (pi * a);
+    c     = stick_size(Q);
+  }
+
+  double
+  CattaneoSolution::stick_size(const double load) const
+  {
+    if (load >= mu * P)
+      return 0.;
+    const double ratio = 1. - load / (mu * P);
+    return a * (sphere ? std::cbrt(ratio) : std::sqrt(ratio));
   }
 
   CattaneoSolution::CattaneoSolution(const double P,
@@ -29,16 +42,16 @@ namespace contact_fem
                                      const double Q_star,
                                      const double mu,
                                      const double radius,
-                                     const double E_star)
-    : CattaneoSolution(P, Q_star, mu, radius, E_star)
+                                     const double E_star,
+                                     const bool   sphere)
+    : CattaneoSolution(P, Q_star, mu, radius, E_star, sphere)
   {
     this->Q      = Q;
     unloading    = true;
     this->Q_star = Q_star;
     c_star       = c;
     // The second term is a monotone solution for (Q_star - Q) / 2.
-    const double half_change = 0.5 * (Q_star - Q);
-    c = half_change < mu * P ? a * std::sqrt(1. - half_change / (mu * P)) : 0.;
+    c = stick_size(0.5 * (Q_star - Q));
   }
 
   double
@@ -96,10 +109,41 @@ namespace contact_fem
     return path;
   }
 
+  namespace
+  {
+    /// The stick zone of Mindlin's spheres: the radius of the stick nodes'
+    /// area, and its centre along the load.
+    void
+    measure_stick_disc(const std::vector<CattaneoNode> &nodes,
+                       const double                     symmetry_fraction,
+                       CattaneoComparison              &result)
+    {
+      double area = 0., moment = 0., size = 0.;
+      unsigned int n_active = 0;
+      for (const auto &node : nodes)
+        {
+          if (node.stick)
+            {
+              area += node.weight;
+              moment += node.weight * node.along;
+            }
+          if (node.active)
+            {
+              size += node.size;
+              ++n_active;
+            }
+        }
+      result.c_h          = std::sqrt(area / (dealii::numbers::PI * symmetry_fraction));
+      result.stick_center = area > 0. ? moment / area : 0.;
+      result.end_spacing  = n_active > 0 ? size / n_active : 0.;
+    }
+  } // namespace
+
   CattaneoComparison
   compare_with_cattaneo(std::vector<CattaneoNode> nodes,
                         const CattaneoSolution   &exact,
-                        const double              direction)
+                        const double              direction,
+                        const double              symmetry_fraction)
   {
     CattaneoComparison result;
     result.exact = exact;
@@ -118,7 +162,9 @@ namespace contact_fem
             last = i;
           }
       }
-    if (first < n)
+    if (exact.sphere)
+      measure_stick_disc(nodes, symmetry_fraction, result);
+    else if (first < n)
       {
         for (unsigned int i = first; i <= last; ++i)
           if (!nodes[i].stick)
@@ -146,7 +192,7 @@ namespace contact_fem
     for (const auto &node : nodes)
       {
         const double t = sign * exact.tangential(node.x);
-        error += node.weight * (node.t - t) * (node.t - t);
+        error += node.weight * ((node.t - t) * (node.t - t) + node.t_across * node.t_across);
         norm += node.weight * t * t;
         weights += node.weight;
       }
@@ -181,7 +227,10 @@ namespace contact_fem
       .set("c_over_a", a > 0. ? exact.c / a : 0.)
       .set("stick_nodes", comparison.n_stick)
       .set("slip_nodes", comparison.n_slip)
-      .set("stick_zone_contiguous", comparison.stick_contiguous)
+      .set("geometry", exact.sphere ? "spheres" : "cylinders");
+    if (!exact.sphere)
+      result.set("stick_zone_contiguous", comparison.stick_contiguous);
+    result
       .set("c_h", comparison.c_h)
       .set("c_h_over_a", a > 0. ? comparison.c_h / a : 0.)
       .set("stick_zone_center", comparison.stick_center)
@@ -230,4 +279,24 @@ namespace contact_fem
     return out.str();
   }
 
+  std::string
+  cattaneo_steps_report(const Json &steps)
+  {
+    std::ostringstream out;
+    out << "    load steps: Q/(mu P), c/a, c_h/a, |c_h - c| / slave h, tangential L2 error"
+        << std::endl;
+    for (std::size_t k = 0; k < steps.size(); ++k)
+      {
+        const auto value = [&](const char *key) { return steps[k][key].number_value(); };
+        // Steps without a tangential load or a solution compare nothing.
+        if (std::isnan(value("c")) || value("Q_over_mu_P") < 1e-6)
+          continue;
+        out << std::fixed << std::setprecision(4) << "      step " << std::setw(2) << k + 1
+            << ":  " << value("Q_over_mu_P") << "  " << value("c_over_a") << "  "
+            << value("c_h_over_a") << "  " << std::setprecision(3)
+            << value("c_error_in_slave_elements") << "  " << value("tangential_l2_relative_error")
+            << std::endl;
+      }
+    return out.str();
+  }
 } // namespace contact_fem
