@@ -196,10 +196,11 @@ namespace contact_fem
         norm += node.weight * t * t;
         weights += node.weight;
       }
-    // Without a tangential load (Q = 0 up to the round-off of an
-    // antisymmetric sum, the normal phase) q vanishes: the error is then
-    // relative to the slip bound mu p_max instead.
-    constexpr double no_tangential_load = 1e-6;
+    // Without a tangential load (Q below 1e-3 mu P, the normal phase: zero
+    // up to the round-off of an antisymmetric sum in 2D, up to the Newton
+    // tolerance in 3D) q vanishes: the error is then relative to the slip
+    // bound mu p_max instead.
+    constexpr double no_tangential_load = 1e-3;
     const double bound = exact.mu * exact.p_max;
     if (!exact.unloading && exact.Q <= no_tangential_load * exact.mu * exact.P)
       norm = bound * bound * weights;
@@ -289,7 +290,7 @@ namespace contact_fem
       {
         const auto value = [&](const char *key) { return steps[k][key].number_value(); };
         // Steps without a tangential load or a solution compare nothing.
-        if (std::isnan(value("c")) || value("Q_over_mu_P") < 1e-6)
+        if (std::isnan(value("c")) || value("Q_over_mu_P") < 1e-3)
           continue;
         out << std::fixed << std::setprecision(4) << "      step " << std::setw(2) << k + 1
             << ":  " << value("Q_over_mu_P") << "  " << value("c_over_a") << "  "
