@@ -25,34 +25,22 @@ Usage:
 """
 import argparse
 import csv
-import json
 import math
-import subprocess
 import sys
 from pathlib import Path
 
+import cattaneo_study
+
 REPO = Path(__file__).resolve().parent.parent
-FIXED = ["Output/Write VTU=false", "Output/Write pressure profile=true",
-         "Output/Print timing=false", "Load stepping/End time=0.8",
-         "Load stepping/Number of load steps=4"]
+# Up to Q/(mu P) = 0.75 (cattaneo_study.run() adds the quiet outputs).
+STEPS = ["Load stepping/End time=0.8", "Load stepping/Number of load steps=4"]
 
 
 def run(binary, level, degree, directory, reuse):
-    if reuse and (directory / "summary.json").exists():
-        return json.load(open(directory / "summary.json"))
-    directory.mkdir(parents=True, exist_ok=True)
-    sets = FIXED + [f"Geometry/Hertz sphere/Contact refinements={level}",
+    sets = STEPS + [f"Geometry/Hertz sphere/Contact refinements={level}",
                     f"Geometry/Local refinements={level}: -1.2, 0, 1.5, 1.2, 1.2, 2.1",
                     f"Finite element/Degree={degree}"]
-    cmd = [str(binary), str(REPO / "prm/cattaneo_3d.prm")]
-    for s in sets:
-        cmd += ["--set", s]
-    cmd += ["--output-directory", str(directory)]
-    with open(directory / "stdout.txt", "w") as out:
-        rc = subprocess.call(cmd, stdout=out, stderr=subprocess.STDOUT, cwd=REPO)
-    if rc != 0:
-        sys.exit(f"{' '.join(cmd)} failed ({rc}), see {directory}/stdout.txt")
-    return json.load(open(directory / "summary.json"))
+    return cattaneo_study.run(binary, sets, directory, reuse, "prm/cattaneo_3d.prm")
 
 
 def profile(directory):
@@ -104,7 +92,7 @@ def main():
         text = "; ".join(
             f"{s['Q_over_mu_P']:.2f}: {s['c_h_over_a']:.3f} ({s['c_over_a']:.3f}), "
             f"{s['c_error_in_slave_elements']:.2f}, {s['tangential_l2_relative_error']:.3f}"
-            for s in steps if s.get("Q_over_mu_P", 0.) > 1e-6)
+            for s in steps if s.get("Q_over_mu_P", 0.) > 1e-3)
         against = ("-" if level == args.reference_level else
                    f"{error_against(rows, reference, a):.4f}")
         print(f"| {level} | {cycle['n_dofs']} | {cycle['contact']['slave_element_size']:.4f} | "
