@@ -230,7 +230,9 @@ namespace contact_fem
                       "x = 0 (boundary 5) and y = 0 (boundary 6); 'half': the "
                       "part y >= 0 (the plate spans [-w, w] in x), with the "
                       "symmetry plane y = 0 (boundary 6) only, for loads along x "
-                      "(a tangential load: the Cattaneo-Mindlin sphere).");
+                      "(a tangential load: the Cattaneo-Mindlin sphere). The "
+                      "built-in Boundary conditions/Fixed names boundary 5: a "
+                      "half model sets its own (e.g. '2: xyz; 6: y').");
     prm.leave_subsection();
     prm.enter_subsection("Contact blocks");
     prm.declare_entry("Width", "1", Patterns::Double(0.), "Width W of both blocks.");
