@@ -40,11 +40,11 @@ QUIET = ["Output/Write VTU=false", "Output/Write pressure profile=true",
          "Output/Print timing=false"]
 
 
-def run(binary, sets, directory, reuse=False):
+def run(binary, sets, directory, reuse=False, prm="prm/cattaneo.prm"):
     if reuse and (directory / "summary.json").exists():
         return json.load(open(directory / "summary.json"))
     directory.mkdir(parents=True, exist_ok=True)
-    cmd = [str(binary), str(REPO / "prm/cattaneo.prm")]
+    cmd = [str(binary), str(REPO / prm)]
     for s in sets + QUIET:
         cmd += ["--set", s]
     cmd += ["--output-directory", str(directory)]

@@ -25,17 +25,30 @@ check, results, untimed).
             and the two fixed points of prm/two_cylinders.prm, because
             frictionless contact holds neither the shift nor the rotation of
             the upper body; with the tangential load it would slide away).
+  hertz3d   prm/hertz_3d.prm as tests/scenes/frictional_hertz_3d_01 runs it
+            (Q1, Sphere refinements 3, Contact refinements 0; and Sphere
+            refinements 4): the same four variants as hertz.
+  cattaneo3d prm/cattaneo_3d.prm (Mindlin's sphere, alm frictional mu =
+            0.5): the scene as shipped (the normal step, then four
+            tangential ones) / its normal step only (End time = 0.2, 1 step)
+            / the normal step with alm frictionless (no friction law,
+            Analytical solution/Type = none, u_x held at the pole and the
+            centre of the flat face, on the axis, where it vanishes anyway).
   overhead  "a frictionless scene pays nothing": prm/hertz.prm (as shipped
             and at Global refinements 2) and prm/two_cylinders.prm with the
             binary before friction (--old-binary, a Release build of 2c19b61;
             --old-label names it, e.g. "before 3D (755e6be)" for what a 2D
             scene pays for 3D)
             and the current one: iterations and results must be identical,
-            times within noise, peak memory alike.
+            times within noise, peak memory alike; with the 3D Hertz
+            (frictional_hertz_3d_01's mesh, frictionless) for what a 3D
+            frictionless scene pays for 3D friction (--old-binary: a build
+            from before 3D friction).
 
 Usage:
   python3 bench/friction_cost.py [--binary B] [--old-binary OLD] [--old-label L]
-          [--reps N] [--groups hertz,cattaneo,overhead] [--results DIR]
+          [--reps N] [--groups hertz,cattaneo,hertz3d,cattaneo3d,overhead]
+          [--results DIR]
 
 Prints Markdown tables (also written to DIR/report.md) and every run to
 DIR/runs.csv. Threads are pinned to one (OMP_NUM_THREADS=1,
@@ -61,21 +74,48 @@ CATTANEO_FRICTIONLESS = CATTANEO_NORMAL + [
     "Boundary conditions/Fixed points=1 @ 0, 0: x; 1 @ 0, 8: x"]
 
 
+HERTZ_3D_Q1 = ["Finite element/Degree=1", "Geometry/Hertz sphere/Contact refinements=0",
+               "Output/Write VTU=false"]
+CATTANEO_3D_NORMAL = ["Load stepping/End time=0.2", "Load stepping/Number of load steps=1"]
+CATTANEO_3D_FRICTIONLESS = CATTANEO_3D_NORMAL + [
+    "Contact/Formulation=alm frictionless", "Contact/Friction=",
+    "Analytical solution/Type=none", "Analytical solution/Symmetry fraction=1",
+    "Boundary conditions/Fixed points=1 @ 0, 0, 2: x; 1 @ 0, 0, 8.1237: x"]
+
+
+def friction_variants(group, scene, new, prm, base):
+    """The frictionless run and the three frictional ones of one scene."""
+    return [
+        (group, scene, "alm frictionless", new, prm, base),
+        (group, scene, "alm frictional mu=0.2", new, prm, base + FRICTIONAL),
+        (group, scene, "alm frictional mu=0", new, prm,
+         base + ["Contact/Formulation=alm frictional", "Contact/Friction=coulomb 0"]),
+        (group, scene, "penalty frictional mu=0.2", new, prm,
+         base + ["Contact/Formulation=penalty frictional", "Contact/Friction=coulomb 0.2"]),
+    ]
+
+
 def variants(groups, new, old, old_label="before friction (2c19b61)"):
     """(group, scene label, variant label, binary, prm, --set list)."""
     out = []
     if "hertz" in groups:
         for cr in (6, 8):
             base = [f"Geometry/Hertz cylinder/Contact refinements={cr}"]
-            scene = f"hertz, CR {cr}"
-            out += [
-                ("hertz", scene, "alm frictionless", new, "prm/hertz.prm", base),
-                ("hertz", scene, "alm frictional mu=0.2", new, "prm/hertz.prm", base + FRICTIONAL),
-                ("hertz", scene, "alm frictional mu=0", new, "prm/hertz.prm",
-                 base + ["Contact/Formulation=alm frictional", "Contact/Friction=coulomb 0"]),
-                ("hertz", scene, "penalty frictional mu=0.2", new, "prm/hertz.prm",
-                 base + ["Contact/Formulation=penalty frictional", "Contact/Friction=coulomb 0.2"]),
-            ]
+            out += friction_variants("hertz", f"hertz, CR {cr}", new, "prm/hertz.prm", base)
+    if "hertz3d" in groups:
+        for sr in (3, 4):
+            base = HERTZ_3D_Q1 + [f"Geometry/Hertz sphere/Sphere refinements={sr}"]
+            out += friction_variants("hertz3d", f"hertz_3d Q1, SR {sr}", new,
+                                     "prm/hertz_3d.prm", base)
+    if "cattaneo3d" in groups:
+        scene, prm, base = "cattaneo_3d", "prm/cattaneo_3d.prm", ["Output/Write VTU=false"]
+        out += [
+            ("cattaneo3d", scene, "alm frictional mu=0.5, 5 steps (shipped)", new, prm, base),
+            ("cattaneo3d", scene, "alm frictional mu=0.5, normal step", new, prm,
+             base + CATTANEO_3D_NORMAL),
+            ("cattaneo3d", scene, "alm frictionless, normal step", new, prm,
+             base + CATTANEO_3D_FRICTIONLESS),
+        ]
     if "cattaneo" in groups:
         for gr in (2, 3):
             base = [f"Geometry/Global refinements={gr}"]
@@ -92,7 +132,9 @@ def variants(groups, new, old, old_label="before friction (2c19b61)"):
         for scene, prm, sets in (
                 ("hertz.prm", "prm/hertz.prm", []),
                 ("hertz.prm, GR 2", "prm/hertz.prm", ["Geometry/Global refinements=2"]),
-                ("two_cylinders.prm", "prm/two_cylinders.prm", [])):
+                ("two_cylinders.prm", "prm/two_cylinders.prm", []),
+                ("hertz_3d.prm, Q1 SR 3", "prm/hertz_3d.prm",
+                 HERTZ_3D_Q1 + ["Geometry/Hertz sphere/Sphere refinements=3"])):
             out += [("overhead", scene, old_label, old, prm, sets),
                     ("overhead", scene, "current", new, prm, sets)]
     return out
@@ -160,7 +202,7 @@ def main():
     ap.add_argument("--old-binary", default="")
     ap.add_argument("--old-label", default="before friction (2c19b61)")
     ap.add_argument("--reps", type=int, default=5)
-    ap.add_argument("--groups", default="hertz,cattaneo,overhead")
+    ap.add_argument("--groups", default="hertz,cattaneo,hertz3d,cattaneo3d,overhead")
     ap.add_argument("--results", default="")
     a = ap.parse_args()
     groups = a.groups.split(",")

@@ -87,7 +87,8 @@ namespace contact_fem
                       "The mesh: 'hertz cylinder' (half-disc on a plate, built in "
                       "code and graded toward the contact zone; 2D), 'hertz "
                       "sphere' (a quarter of a hemisphere on a quarter plate, "
-                      "with the symmetry planes x = 0 and y = 0; 3D), 'contact blocks' "
+                      "with the symmetry planes x = 0 and y = 0, or a half: Hertz "
+                      "sphere/Model; 3D), 'contact blocks' "
                       "(two stacked blocks with non-matching meshes), or 'mesh "
                       "file' (a Gmsh .msh file named by 'Mesh file')." +
                         builtin_scene_help());
@@ -224,6 +225,14 @@ namespace contact_fem
     prm.declare_entry("Grading factor", "4", Patterns::Double(1.),
                       "A cell is refined in a graded round when its distance to "
                       "that disc is below this factor times its diameter.");
+    prm.declare_entry("Model", "quarter", Patterns::Selection("quarter|half"),
+                      "'quarter': the part x, y >= 0, with the symmetry planes "
+                      "x = 0 (boundary 5) and y = 0 (boundary 6); 'half': the "
+                      "part y >= 0 (the plate spans [-w, w] in x), with the "
+                      "symmetry plane y = 0 (boundary 6) only, for loads along x "
+                      "(a tangential load: the Cattaneo-Mindlin sphere). The "
+                      "built-in Boundary conditions/Fixed names boundary 5: a "
+                      "half model sets its own (e.g. '2: xyz; 6: y').");
     prm.leave_subsection();
     prm.enter_subsection("Contact blocks");
     prm.declare_entry("Width", "1", Patterns::Double(0.), "Width W of both blocks.");
@@ -317,6 +326,7 @@ namespace contact_fem
     hertz_sphere.refinement_radius   = prm.get_double("Refinement radius");
     hertz_sphere.grading_factor      = prm.get_double("Grading factor");
     hertz_sphere.gap                 = prm.get_double("Initial gap");
+    hertz_sphere.half                = prm.get("Model") == "half";
     prm.leave_subsection();
     prm.enter_subsection("Contact blocks");
     blocks.width       = prm.get_double("Width");
@@ -700,8 +710,9 @@ namespace contact_fem
     /// one cell under each of the three patches of the curved surface. The
     /// patch around the pole reaches @p pole_patch_angle (radians) from it
     /// along the planes x = 0 and y = 0; pi / 4 makes the three alike.
+    /// @p half adds its mirror image about x = 0 (the quarter y >= 0).
     void
-    unit_ball_octant(const double pole_patch_angle, Triangulation<3> &octant)
+    unit_ball_octant(const double pole_patch_angle, const bool half, Triangulation<3> &octant)
     {
       const double s = std::sin(pole_patch_angle), c = std::cos(pole_patch_angle);
       // The surface points: the three poles, the ends of the patch edges on
@@ -738,6 +749,29 @@ namespace contact_fem
         for (unsigned int v = 0; v < 8; ++v)
           cells[i].vertices[v] = cell_vertices[i][v];
       GridTools::invert_all_negative_measure_cells(vertices, cells);
+      if (half)
+        {
+          // The mirror image x -> -x, with each cell's vertex order
+          // mirrored too (positive volume); the vertices on x = 0 (exactly
+          // 0 by construction) are shared.
+          std::vector<unsigned int> mirror(vertices.size());
+          for (unsigned int k = 0; k < mirror.size(); ++k)
+            {
+              mirror[k] = k;
+              if (vertices[k][0] != 0.)
+                {
+                  mirror[k] = vertices.size();
+                  vertices.emplace_back(-vertices[k][0], vertices[k][1], vertices[k][2]);
+                }
+            }
+          for (unsigned int i = 0; i < 4; ++i)
+            {
+              CellData<3> cell(8);
+              for (unsigned int v = 0; v < 8; ++v)
+                cell.vertices[v] = mirror[cells[i].vertices[v ^ 1]];
+              cells.push_back(cell);
+            }
+        }
       GridTools::consistently_order_cells(cells);
       octant.create_triangulation(vertices, cells, SubCellData());
     }
@@ -751,12 +785,16 @@ namespace contact_fem
                  w = hertz_sphere.plate_width, g = hertz_sphere.gap;
     const Point<3> centre(0., 0., t + g + R);
     Triangulation<3> sphere;
-    unit_ball_octant(hertz_sphere.pole_patch_angle * numbers::PI / 180., sphere);
+    unit_ball_octant(hertz_sphere.pole_patch_angle * numbers::PI / 180., hertz_sphere.half,
+                     sphere);
     GridTools::transform([&](const Point<3> &p) { return Point<3>(centre + R * p); }, sphere);
 
     Triangulation<3>   plate;
     const unsigned int n = std::max(1, static_cast<int>(std::round(w / t)));
-    GridGenerator::subdivided_hyper_rectangle(plate, {n, n, 1}, Point<3>(), Point<3>(w, w, t));
+    GridGenerator::subdivided_hyper_rectangle(plate,
+                                              {hertz_sphere.half ? 2 * n : n, n, 1},
+                                              Point<3>(hertz_sphere.half ? -w : 0., 0., 0.),
+                                              Point<3>(w, w, t));
     // The pole touches the plate at (0, 0, t) unless lifted by g: joined
     // without merging.
     Triangulation<3> coarse;

@@ -1,4 +1,5 @@
-// 'cattaneo': the Cattaneo-Mindlin problem of two cylinders (plane strain)
+// 'cattaneo': the Cattaneo-Mindlin problem of two cylinders (plane strain),
+// or in 3D of two spheres (a sphere on a flat, loaded along x; Mindlin),
 // pressed together by P and sheared by Q at constant P, and its
 // Mindlin-Deresiewicz unloading: Hertz' comparison for the normal load P,
 // plus the stick zone and the tangential traction (cattaneo_solution.h).
@@ -15,18 +16,35 @@ namespace contact_fem
 {
   namespace
   {
+    /// The unit vector along which the tangential load is measured: the
+    /// tangent of the 2D frame (ContactFormulation::tangent(n0)), x in 3D
+    /// (the load of the spheres is along x).
+    template <int dim>
+    Tensor<1, dim>
+    load_direction(const Tensor<1, dim> &n0)
+    {
+      if constexpr (dim == 2)
+        return ContactFormulation<dim>::tangent(n0);
+      Tensor<1, dim> x;
+      x[0] = 1.;
+      return x;
+    }
+
     /**
      * The transmitted normal load P >= 0 and signed tangential load Q of the
      * converged state: the resultant of the contact tractions on the slave
      * (equal to the load applied to a slave body without supports) in the
-     * frame of the analytical solution, whose contact plane is normal to y:
-     * n0 = (0, +-1) on the side of the mean slave normal, Q along
-     * ContactFormulation::tangent(n0) (the nodes' tangential tractions are
-     * measured along the same orientation).
+     * frame of the analytical solution, whose contact plane is normal to y
+     * (z in 3D): n0 = +-e_y (e_z) on the side of the mean slave normal, Q
+     * along load_direction(n0) (the nodes' tangential tractions are
+     * measured along the same orientation). Both for the whole model: over
+     * Analytical solution/Symmetry fraction.
      */
     template <int dim>
     std::pair<double, double>
-    cattaneo_loads(const ContactInterface<dim> &interface, const ContactFormulation<dim> &contact)
+    cattaneo_loads(const ContactInterface<dim>   &interface,
+                   const ContactFormulation<dim> &contact,
+                   const double                   symmetry_fraction)
     {
       Tensor<1, dim> force, mean_normal;
       for (const auto &s : interface.slave_nodes)
@@ -39,8 +57,9 @@ namespace contact_fem
       // node off the symmetric one tilts that by ~1e-3 rad, which takes 1 %
       // off Q, and a sliding body tilts it to the resultant itself.
       Tensor<1, dim> n0;
-      n0[1] = mean_normal[1] < 0. ? -1. : 1.;
-      return {-(force * n0), force * ContactFormulation<dim>::tangent(n0)};
+      n0[dim - 1] = mean_normal[dim - 1] < 0. ? -1. : 1.;
+      return {-(force * n0) / symmetry_fraction,
+              force * load_direction(n0) / symmetry_fraction};
     }
 
     /**
@@ -50,10 +69,11 @@ namespace contact_fem
      * the materials of the first pair, R* = Analytical solution/Radius, x of
      * each node in the configuration the mortar operators were built on (the
      * reference one with Contact/Kinematics = small) less Analytical
-     * solution/Center. With @p tangential (per interface node) those
-     * tangential tractions are compared instead of the formulation's (e.g.
-     * the recovered stress's). A path without an analytical solution gives
-     * no comparison (the key "no_solution" says why).
+     * solution/Center (in 3D its distance from the axis, Analytical
+     * solution/Center, Center y). With @p tangential (per interface node, 2D)
+     * those tangential tractions are compared instead of the formulation's
+     * (e.g. the recovered stress's). A path without an analytical solution
+     * gives no comparison (the key "no_solution" says why).
      */
     template <int dim>
     Json
@@ -65,33 +85,54 @@ namespace contact_fem
     {
       const double E_star = interface.contact_modulus(0);
       const double mu     = analytical.friction_coefficient; // Tresca: the bound g
-      const bool   tresca = analytical.tresca;
+      const CattaneoProblem problem = dim == 3          ? CattaneoProblem::spheres :
+                                      analytical.tresca ? CattaneoProblem::cylinders_tresca :
+                                                          CattaneoProblem::cylinders;
       std::vector<CattaneoNode> nodes;
       for (const auto &s : interface.slave_nodes)
         if (s.paired)
           {
-            CattaneoNode node;
-            const bool   active = contact.is_active(s.node);
-            node.x = interface.nodes[s.node].reference[0] +
-                     interface.displacement(s.node, interface.search_configuration())[0] -
-                     analytical.center;
-            node.t = !active ? 0. :
-                     tangential ?
-                                (*tangential)[s.node] :
-                                contact.traction(s) *
-                                  ContactFormulation<dim>::tangent(contact.frame_normal(s));
+            CattaneoNode     node;
+            const bool       active = contact.is_active(s.node);
+            const Point<dim> x      = interface.nodes[s.node].reference +
+                                 interface.displacement(s.node, interface.search_configuration());
             node.weight = s.D;
             node.active = active;
             node.stick  = contact.held_tangentially(s.node);
+            node.size   = s.size;
+            if constexpr (dim == 2)
+              {
+                node.x = x[0] - analytical.center;
+                node.t = !active ? 0. :
+                         tangential ?
+                                    (*tangential)[s.node] :
+                                    contact.traction(s) *
+                                      ContactFormulation<dim>::tangent(contact.frame_normal(s));
+              }
+            else
+              {
+                // The tangential traction in the node's frame, its
+                // components along the load (x) and across it (y).
+                node.x     = analytical.axis_distance(x[0], x[1]);
+                node.along = x[0] - analytical.center;
+                const Tensor<1, dim> n = contact.frame_normal(s);
+                Tensor<1, dim>       t = contact.traction(s);
+                t -= (t * n) * n;
+                node.t        = active ? t[0] : 0.;
+                node.t_across = active ? t[1] : 0.;
+              }
             nodes.push_back(node);
           }
-      const auto [P, Q] = cattaneo_loads(interface, contact);
-      // The same tolerance as for "no tangential load" in the comparison.
+      const double fraction = analytical.symmetry_fraction;
+      const auto [P, Q]     = cattaneo_loads(interface, contact, fraction);
+      // The same tolerance as for "no tangential load" in the comparison:
+      // far above the Newton tolerance's noise in Q (a normal step of the
+      // 3D scene leaves 4e-6 mu P), far below any load step of a path.
       std::vector<double> path = load_path;
       path.push_back(Q);
       const double capacity =
-        CattaneoSolution(P, 0., mu, analytical.radius, E_star, tresca).capacity();
-      const TangentialPath history = classify_tangential_path(path, 1e-6 * capacity);
+        CattaneoSolution(P, 0., mu, analytical.radius, E_star, problem).capacity();
+      const TangentialPath history = classify_tangential_path(path, 1e-3 * capacity);
       if (history.kind == TangentialPath::Kind::none)
         return Json::object()
           .set("mu", mu)
@@ -103,10 +144,11 @@ namespace contact_fem
       if (history.kind == TangentialPath::Kind::unloading)
         return to_json(compare_with_cattaneo(nodes,
                                              CattaneoSolution(P, history.Q, history.Q_star, mu,
-                                                              analytical.radius, E_star, tresca),
-                                             history.direction));
+                                                              analytical.radius, E_star, problem),
+                                             history.direction, fraction));
       return to_json(compare_with_cattaneo(
-        nodes, CattaneoSolution(P, std::abs(Q), mu, analytical.radius, E_star, tresca)));
+        nodes, CattaneoSolution(P, std::abs(Q), mu, analytical.radius, E_star, problem), 0.,
+        fraction));
     }
 
     template <int dim>
@@ -119,12 +161,20 @@ namespace contact_fem
       start_load_path() override
       {
         load_path.clear();
+        steps = Json::array();
       }
 
+      /// Q of the step for the load path, and the comparison of the step
+      /// (the tests check c/a at several Q of one run).
       void
       record_load_step(const ContactState<dim> &state) override
       {
-        load_path.push_back(cattaneo_loads(state.interface, state.contact).second);
+        const Json step =
+          cattaneo_results(state.interface, state.contact, this->analytical, load_path);
+        steps.push(step);
+        load_path.push_back(
+          cattaneo_loads(state.interface, state.contact, this->analytical.symmetry_fraction)
+            .second);
       }
 
       Json
@@ -133,15 +183,20 @@ namespace contact_fem
               const Json              &reaction) const override
       {
         Json result = HertzCylinder<dim>::compare(state, contact, reaction);
-        result.set("cattaneo",
-                   cattaneo_results(state.interface, state.contact, this->analytical, load_path));
+        Json cattaneo =
+          cattaneo_results(state.interface, state.contact, this->analytical, load_path);
+        cattaneo.set("load_steps", steps);
+        result.set("cattaneo", cattaneo);
         return result;
       }
 
       void
       print(const Json &record, std::ostream &out) const override
       {
-        out << cattaneo_report(record["cattaneo"]);
+        const Json &cattaneo = record["cattaneo"];
+        if (dim == 3)
+          out << cattaneo_steps_report(cattaneo["load_steps"]);
+        out << cattaneo_report(cattaneo);
       }
 
       void
@@ -153,6 +208,10 @@ namespace contact_fem
                        Json                      &record,
                        std::ostream              &out) const override
       {
+        // In 3D the recovered shear is compared with the mortar traction
+        // only (report_recovered_tractions()).
+        if (dim == 3)
+          return;
         const Json cattaneo = cattaneo_results(state.interface, state.contact, this->analytical,
                                                load_path, &tangential);
         const double error = cattaneo["tangential_l2_relative_error"].number_value();
@@ -162,17 +221,39 @@ namespace contact_fem
       }
 
     protected:
-      /// The normal load P, not the resultant with Q.
+      /// The normal load P (of the whole sphere in 3D), not the resultant
+      /// with Q.
       double
       load(const ContactState<dim> &state) const override
       {
-        return cattaneo_loads(state.interface, state.contact).first;
+        return cattaneo_loads(state.interface, state.contact, this->analytical.symmetry_fraction)
+          .first;
+      }
+
+      HertzContact
+      solution(const ContactState<dim> &state) const override
+      {
+        if (dim == 3)
+          return HertzContact::sphere(load(state), this->analytical.radius,
+                                      state.interface.contact_modulus(0));
+        return HertzCylinder<dim>::solution(state);
+      }
+
+      /// In 3D the distance from the axis.
+      double
+      coordinate(const Point<dim> &x) const override
+      {
+        if (dim == 3)
+          return this->analytical.axis_distance(x[0], x[1]);
+        return HertzCylinder<dim>::coordinate(x);
       }
 
     private:
       /// The signed tangential load of every converged load step of the
       /// cycle so far.
       std::vector<double> load_path;
+      /// The comparison of every converged load step of the cycle so far.
+      Json steps = Json::array();
     };
   } // namespace
 

@@ -16,23 +16,29 @@ namespace contact_fem
                                      const double mu,
                                      const double radius,
                                      const double E_star,
-                                     const bool   tresca)
+                                     const CattaneoProblem problem)
     : P(P)
     , Q(Q)
-    , mu(tresca ? 0. : mu)
-    , g(tresca ? mu : 0.)
+    , mu(problem == CattaneoProblem::cylinders_tresca ? 0. : mu)
+    , g(problem == CattaneoProblem::cylinders_tresca ? mu : 0.)
+    , sphere(problem == CattaneoProblem::spheres)
   {
-    a     = std::sqrt(4. * P * radius / (dealii::numbers::PI * E_star));
-    p_max = 2. * P / (dealii::numbers::PI * a);
-    c     = stick_half_width(Q);
+    constexpr double pi = dealii::numbers::PI;
+    a     = sphere ? std::cbrt(3. * P * radius / (4. * E_star)) :
+                     std::sqrt(4. * P * radius / (pi * E_star));
+    p_max = sphere ? 3. * P / (2. * pi * a * a) : 2. * P / (pi * a);
+    c     = stick_size(Q);
   }
 
   double
-  CattaneoSolution::stick_half_width(const double load) const
+  CattaneoSolution::stick_size(const double load) const
   {
     if (g > 0.)
       return tresca_stick_half_width(a, load, g);
-    return load < mu * P ? a * std::sqrt(1. - load / (mu * P)) : 0.;
+    if (load >= mu * P)
+      return 0.;
+    const double ratio = 1. - load / (mu * P);
+    return a * (sphere ? std::cbrt(ratio) : std::sqrt(ratio));
   }
 
   CattaneoSolution::CattaneoSolution(const double P,
@@ -41,15 +47,15 @@ namespace contact_fem
                                      const double mu,
                                      const double radius,
                                      const double E_star,
-                                     const bool   tresca)
-    : CattaneoSolution(P, Q_star, mu, radius, E_star, tresca)
+                                     const CattaneoProblem problem)
+    : CattaneoSolution(P, Q_star, mu, radius, E_star, problem)
   {
     this->Q      = Q;
     unloading    = true;
     this->Q_star = Q_star;
     c_star       = c;
     // The second term is a monotone solution for (Q_star - Q) / 2.
-    c = stick_half_width(0.5 * (Q_star - Q));
+    c = stick_size(0.5 * (Q_star - Q));
   }
 
   double
@@ -109,10 +115,41 @@ namespace contact_fem
     return path;
   }
 
+  namespace
+  {
+    /// The stick zone of Mindlin's spheres: the radius of the stick nodes'
+    /// area, and its centre along the load.
+    void
+    measure_stick_disc(const std::vector<CattaneoNode> &nodes,
+                       const double                     symmetry_fraction,
+                       CattaneoComparison              &result)
+    {
+      double area = 0., moment = 0., size = 0.;
+      unsigned int n_active = 0;
+      for (const auto &node : nodes)
+        {
+          if (node.stick)
+            {
+              area += node.weight;
+              moment += node.weight * node.along;
+            }
+          if (node.active)
+            {
+              size += node.size;
+              ++n_active;
+            }
+        }
+      result.c_h          = std::sqrt(area / (dealii::numbers::PI * symmetry_fraction));
+      result.stick_center = area > 0. ? moment / area : 0.;
+      result.end_spacing  = n_active > 0 ? size / n_active : 0.;
+    }
+  } // namespace
+
   CattaneoComparison
   compare_with_cattaneo(std::vector<CattaneoNode> nodes,
                         const CattaneoSolution   &exact,
-                        const double              direction)
+                        const double              direction,
+                        const double              symmetry_fraction)
   {
     CattaneoComparison result;
     result.exact = exact;
@@ -131,7 +168,9 @@ namespace contact_fem
             last = i;
           }
       }
-    if (first < n)
+    if (exact.sphere)
+      measure_stick_disc(nodes, symmetry_fraction, result);
+    else if (first < n)
       {
         for (unsigned int i = first; i <= last; ++i)
           if (!nodes[i].stick)
@@ -159,14 +198,15 @@ namespace contact_fem
     for (const auto &node : nodes)
       {
         const double t = sign * exact.tangential(node.x);
-        error += node.weight * (node.t - t) * (node.t - t);
+        error += node.weight * ((node.t - t) * (node.t - t) + node.t_across * node.t_across);
         norm += node.weight * t * t;
         weights += node.weight;
       }
-    // Without a tangential load (Q = 0 up to the round-off of an
-    // antisymmetric sum, the normal phase) q vanishes: the error is then
-    // relative to the slip bound mu p_max instead.
-    constexpr double no_tangential_load = 1e-6;
+    // Without a tangential load (Q below 1e-3 of the capacity, the normal
+    // phase: zero up to the round-off of an antisymmetric sum in 2D, up to
+    // the Newton tolerance in 3D) q vanishes: the error is then relative to
+    // the largest slip bound instead.
+    constexpr double no_tangential_load = 1e-3;
     const double bound = exact.largest_bound();
     if (!exact.unloading && exact.Q <= no_tangential_load * exact.capacity())
       norm = bound * bound * weights;
@@ -197,7 +237,10 @@ namespace contact_fem
       .set("c_over_a", a > 0. ? exact.c / a : 0.)
       .set("stick_nodes", comparison.n_stick)
       .set("slip_nodes", comparison.n_slip)
-      .set("stick_zone_contiguous", comparison.stick_contiguous)
+      .set("geometry", exact.sphere ? "spheres" : "cylinders");
+    if (!exact.sphere)
+      result.set("stick_zone_contiguous", comparison.stick_contiguous);
+    result
       .set("c_h", comparison.c_h)
       .set("c_h_over_a", a > 0. ? comparison.c_h / a : 0.)
       .set("stick_zone_center", comparison.stick_center)
@@ -248,4 +291,24 @@ namespace contact_fem
     return out.str();
   }
 
+  std::string
+  cattaneo_steps_report(const Json &steps)
+  {
+    std::ostringstream out;
+    out << "    load steps: Q/(mu P), c/a, c_h/a, |c_h - c| / slave h, tangential L2 error"
+        << std::endl;
+    for (std::size_t k = 0; k < steps.size(); ++k)
+      {
+        const auto value = [&](const char *key) { return steps[k][key].number_value(); };
+        // Steps without a tangential load or a solution compare nothing.
+        if (std::isnan(value("c")) || value("Q_over_mu_P") < 1e-3)
+          continue;
+        out << std::fixed << std::setprecision(4) << "      step " << std::setw(2) << k + 1
+            << ":  " << value("Q_over_mu_P") << "  " << value("c_over_a") << "  "
+            << value("c_h_over_a") << "  " << std::setprecision(3)
+            << value("c_error_in_slave_elements") << "  " << value("tangential_l2_relative_error")
+            << std::endl;
+      }
+    return out.str();
+  }
 } // namespace contact_fem

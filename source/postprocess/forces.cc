@@ -90,6 +90,8 @@ namespace contact_fem
           .set("normal_force", vector_json(p.normal))
           .set("tangential_force", vector_json(p.tangential))
           .set(dim == 2 ? "contact_length" : "contact_area", p.area);
+        if (p.n_stick >= 0)
+          entry.set("stick_nodes", p.n_stick).set("slip_nodes", p.n_slip);
         pair_list.push(entry);
       }
     Json result = Json::object();
@@ -234,8 +236,22 @@ namespace contact_fem
       {
         report.pairs.resize(in.pairs.size());
         std::vector<Tensor<1, dim>> total(in.pairs.size());
+        // Stick and slip by the formulation's set codes (1 stick, 2 and 3
+        // slip), as the VTU's contact_state.
+        const std::vector<int> sets     = in.contact->contact_sets();
+        const bool             friction = in.contact->transmits_shear();
         for (unsigned int p = 0; p < in.pairs.size(); ++p)
-          report.pairs[p].pair = in.pairs[p];
+          {
+            report.pairs[p].pair = in.pairs[p];
+            if (friction)
+              report.pairs[p].n_stick = report.pairs[p].n_slip = 0;
+          }
+        for (const auto &s : in.interface->slave_nodes)
+          if (friction && s.paired && s.node < sets.size())
+            {
+              report.pairs[s.pair].n_stick += sets[s.node] == 1;
+              report.pairs[s.pair].n_slip += sets[s.node] >= 2;
+            }
         for (const auto &s : in.interface->slave_nodes)
           if (s.paired && in.contact->is_active(s.node))
             {

@@ -301,9 +301,12 @@ namespace contact_fem
                       "and tangential contact forces and mu the Coulomb "
                       "coefficient of Contact/Friction (which must then be one "
                       "'coulomb MU' law, or give the first pair such a law; "
-                      "under a 'tresca G' law instead, c/a = sqrt(1 - (Q/(2 a "
-                      "G))^2) and the slip zones carry G); "
-                      "compares the stick zone and the tangential traction. "
+                      "under a 'tresca G' law instead (2D only), c/a = sqrt(1 - "
+                      "(Q/(2 a G))^2) and the slip zones carry G); "
+                      "compares the stick zone and the tangential traction. In "
+                      "3D (Mindlin): a sphere on a flat loaded along x, axis and "
+                      "Symmetry fraction as for 'hertz sphere', c/a = (1 - Q/(mu "
+                      "P))^(1/3), compared at every load step. "
                       "'hertz sphere' = 3D Hertz contact of a sphere of radius R "
                       "on a half-space, axis parallel to z through (Center, "
                       "Center y): a = (3 F R / (4 E*))^(1/3), p0 = 3 F / (2 pi "
@@ -317,10 +320,10 @@ namespace contact_fem
     prm.declare_entry("Center", "0", Patterns::Double(),
                       "x coordinate of the centre of the contact zone.");
     prm.declare_entry("Center y", "0", Patterns::Double(),
-                      "Type = hertz sphere: y coordinate of the centre of the "
+                      "Type = hertz sphere, cattaneo (3D): y coordinate of the centre of the "
                       "contact zone (the axis is parallel to z).");
     prm.declare_entry("Symmetry fraction", "1", Patterns::Double(0., 1.),
-                      "Type = hertz sphere: the part of the whole sphere and "
+                      "Type = hertz sphere, cattaneo (3D): the part of the whole sphere and "
                       "plate that the model holds, e.g. 0.25 for a quarter cut "
                       "by two symmetry planes through the axis. The Hertz load F "
                       "of the whole sphere is the model's contact force over "
@@ -455,9 +458,10 @@ namespace contact_fem
     AssertThrow(dim == 3 || type != "hertz sphere",
                 ExcMessage("Analytical solution/Type = hertz sphere: a 3D solution (set "
                            "Dimension = 3; in 2D, 'hertz cylinder')."));
-    AssertThrow(dim == 2 || type == "none" || type == "hertz sphere",
+    AssertThrow(dim == 2 || type == "none" || type == "hertz sphere" || type == "cattaneo",
                 ExcMessage("Analytical solution/Type = " + type +
-                           ": a 2D solution (of x); in 3D, use 'hertz sphere' or 'none'."));
+                           ": a 2D solution (of x); in 3D, use 'hertz sphere', 'cattaneo' "
+                           "or 'none'."));
     AssertThrow(dim == 2 || profile.empty() || type == "hertz sphere",
                 ExcMessage("Analytical solution/Reference pressure profile: in 3D only "
                            "with Type = hertz sphere (the profile is then taken as "
@@ -465,9 +469,11 @@ namespace contact_fem
                            "leave the profile empty."));
     std::ostringstream fraction_text;
     fraction_text << symmetry_fraction;
-    AssertThrow(symmetry_fraction > 0. && (symmetry_fraction == 1. || type == "hertz sphere"),
+    AssertThrow(symmetry_fraction > 0. &&
+                  (symmetry_fraction == 1. || type == "hertz sphere" ||
+                   (dim == 3 && type == "cattaneo")),
                 ExcMessage("Analytical solution/Symmetry fraction: expected a value in "
-                           "(0, 1], and 1 unless Type = hertz sphere (got " +
+                           "(0, 1], and 1 unless Type = hertz sphere or (3D) cattaneo (got " +
                            fraction_text.str() + ")."));
     reference_pressure_profile.clear();
     if (!profile.empty())
@@ -507,6 +513,12 @@ namespace contact_fem
                                "."));
         friction_coefficient = laws.front()->parameter();
         tresca               = laws.front()->kind() == FrictionalLaw::Kind::tresca;
+        AssertThrow(!tresca || dim == 2,
+                    ExcMessage("Analytical solution/Type = cattaneo: the closed form of a "
+                               "Tresca law (Contact/Friction = '" +
+                               laws.front()->description() +
+                               "') is that of cylinders (2D); in 3D the comparison "
+                               "needs a Coulomb law."));
       }
   }
 

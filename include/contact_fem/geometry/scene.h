@@ -224,6 +224,7 @@ namespace contact_fem
       double       refinement_radius     = 2.;
       double       grading_factor        = 4.;
       double       gap                   = 0.; ///< of the lowest point above the plate
+      bool         half                  = false; ///< y >= 0 only (else x, y >= 0)
     } hertz_sphere;
 
     struct Blocks

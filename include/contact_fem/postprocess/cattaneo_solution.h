@@ -1,5 +1,6 @@
-// The Cattaneo-Mindlin solution of two elastic cylinders (plane strain)
-// pressed together by P and then sheared by Q < mu P at constant P, and its
+// The Cattaneo-Mindlin solution of two elastic cylinders (plane strain), or
+// of two spheres (3D, Mindlin), pressed together by P and then sheared by
+// Q < mu P at constant P, and its
 // comparison with the stick zone and tangential traction of a frictional run
 // (nodal values in, numbers out: the run's side is cattaneo_comparison.cc).
 #ifndef contact_fem_cattaneo_solution_h
@@ -13,6 +14,16 @@
 
 namespace contact_fem
 {
+  /// Which closed form: Cattaneo's cylinders (2D) under Coulomb friction
+  /// or under Tresca friction (its bound g given as the friction
+  /// parameter), or Mindlin's spheres (3D) under Coulomb friction.
+  enum class CattaneoProblem
+  {
+    cylinders,
+    cylinders_tresca,
+    spheres
+  };
+
   /**
    * Hertz contact (half-width a, peak p_max from the load P per unit
    * thickness, R* and E*) plus the Cattaneo-Mindlin tangential traction of
@@ -23,11 +34,15 @@ namespace contact_fem
    *   q(x) = mu p(x)                                                 c <= |x| < a (slip).
    * Under Tresca friction (bound g) the same with cattaneo_tresca.h:
    * c/a = sqrt(1 - (Q / (2 a g))^2), q = g in the slip zones.
+   * With @p sphere (Mindlin, 3D) x is the distance r from the axis, a and
+   * p_max = p0 those of Hertz' spheres from the load P on the whole sphere,
+   * c/a = (1 - Q / (mu P))^(1/3), and q the same formula, along the load.
    */
   struct CattaneoSolution
   {
     double P = 0., Q = 0., mu = 0.;  ///< loads per unit thickness (Q >= 0), Coulomb mu
     double g = 0.;                   ///< > 0: the Tresca bound instead of mu (then 0)
+    bool   sphere = false;           ///< Mindlin's spheres (3D), else cylinders
     double a = 0., p_max = 0., c = 0.;
     /// Mindlin-Deresiewicz unloading from the peak Q_star (> 0) to Q (in
     /// [-Q_star, Q_star], along the peak's direction): the traction is
@@ -46,7 +61,7 @@ namespace contact_fem
                      const double mu,
                      const double radius,
                      const double E_star,
-                     const bool   tresca = false);
+                     const CattaneoProblem problem = CattaneoProblem::cylinders);
     /// Unloading from @p Q_star to @p Q (Mindlin-Deresiewicz).
     CattaneoSolution(const double P,
                      const double Q,
@@ -54,7 +69,7 @@ namespace contact_fem
                      const double mu,
                      const double radius,
                      const double E_star,
-                     const bool   tresca = false);
+                     const CattaneoProblem problem = CattaneoProblem::cylinders);
 
     /// The largest tangential load: mu P, or 2 a g under Tresca.
     double
@@ -79,13 +94,14 @@ namespace contact_fem
     tangential(const double x) const;
 
   private:
+    /// The stick half-width (radius) c of a monotone load @p load.
+    double
+    stick_size(const double load) const;
+
+
     /// q_C(x) of a monotone load whose stick zone is |x| < @p stick.
     double
     monotone_traction(const double x, const double stick) const;
-
-    /// The stick half-width of a monotone load @p load.
-    double
-    stick_half_width(const double load) const;
   };
 
   /**
@@ -116,11 +132,15 @@ namespace contact_fem
 
   /// One slave node of the run: its position along the contact (relative
   /// to the contact centre), tangential traction t (on the slave, along the
-  /// node's tangent), its nodal weight D, and its contact state.
+  /// node's tangent), its nodal weight D, and its contact state. In 3D x is
+  /// the distance from the axis, t the component along the load, and also:
+  /// the in-plane component across the load, the coordinate along the load
+  /// and the node's slave element size.
   struct CattaneoNode
   {
     double x = 0., t = 0., weight = 0.;
     bool   active = false, stick = false;
+    double t_across = 0., along = 0., size = 0.;
   };
 
   /**
@@ -142,6 +162,14 @@ namespace contact_fem
    *   sqrt(sum D (t_h - t)^2 / sum D t^2),
    * or relative to the slip bound mu p_max (sum D (mu p_max)^2 below) when
    * there is no tangential load (Q = 0, where t = 0).
+   *
+   * Spheres (3D): the stick radius c_h is that of the disc of the stick
+   * nodes' area, c_h = sqrt(sum_stick D / (pi f)) (f the fraction of the
+   * sphere modelled: its symmetry planes halve the D of their nodes), and
+   * |c_h - c| is measured in the mean slave element size of the active
+   * nodes; the stick zone's centre is the D-weighted mean of the stick
+   * nodes' coordinate along the load; the traction error takes the
+   * component across the load as error too.
    */
   struct CattaneoComparison
   {
@@ -159,7 +187,8 @@ namespace contact_fem
   CattaneoComparison
   compare_with_cattaneo(std::vector<CattaneoNode> nodes,
                         const CattaneoSolution   &exact,
-                        const double              direction = 0.);
+                        const double              direction         = 0.,
+                        const double              symmetry_fraction = 1.);
 
   Json
   to_json(const CattaneoComparison &comparison);
@@ -167,6 +196,11 @@ namespace contact_fem
   /// The lines printed for a Cattaneo scene, from to_json().
   std::string
   cattaneo_report(const Json &cattaneo);
+
+  /// A table of the load steps' comparisons (an array of to_json()):
+  /// Q/(mu P), c/a, c_h/a, |c_h - c| / h and the traction's L2 error.
+  std::string
+  cattaneo_steps_report(const Json &steps);
 } // namespace contact_fem
 
 #endif

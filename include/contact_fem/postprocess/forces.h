@@ -50,6 +50,9 @@ namespace contact_fem
       /// The contact area (2D: length per unit thickness): the sum of the
       /// mortar weights D_j of the active slave nodes.
       double area = 0.;
+      /// With friction: the active slave nodes that stick and that slip
+      /// (-1 without friction: not reported).
+      int n_stick = -1, n_slip = -1;
     };
     std::vector<Support> supports;
     std::vector<Pair>    pairs;

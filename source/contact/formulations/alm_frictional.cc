@@ -635,6 +635,7 @@ namespace contact_fem
     for (const auto &s : interface.slave_nodes)
       if (s.paired)
         last_step_slip[s.node] = slip_increment(interface, s, u);
+    slip_history.add(interface, *this, last_step_slip);
     converged_displacement = u;
   }
 
@@ -688,6 +689,7 @@ namespace contact_fem
     state->normal                 = FrictionlessFormulation<dim>::save_state();
     state->tangential             = tangential;
     state->converged_displacement = converged_displacement;
+    state->slip_history           = slip_history;
     state->last_step_slip         = last_step_slip;
     state->sets                   = sets;
     return state;
@@ -701,6 +703,7 @@ namespace contact_fem
     FrictionlessFormulation<dim>::restore_state(*saved.normal);
     tangential             = saved.tangential;
     converged_displacement = saved.converged_displacement;
+    slip_history           = saved.slip_history;
     last_step_slip         = saved.last_step_slip;
     sets                   = saved.sets;
   }
@@ -713,7 +716,7 @@ namespace contact_fem
     contact.set("friction", this->law_names())
       .set("stick_nodes", n_stick())
       .set("slip_nodes", n_slip());
-    add_friction_totals(interface, *this, last_step_slip, contact);
+    add_friction_totals(interface, *this, last_step_slip, slip_history, contact);
   }
 
   template class AlmFrictional<2>;

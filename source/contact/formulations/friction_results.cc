@@ -11,6 +11,7 @@ namespace contact_fem
   add_friction_totals(const ContactInterface<dim>   &interface,
                       const ContactFormulation<dim> &contact,
                       const std::vector<TangentialVector<dim>> &accepted_slip,
+                      const SlipHistory<dim>                   &history,
                       Json                          &result)
   {
     // Totals over the active slave nodes of the force the slave exerts on
@@ -34,6 +35,11 @@ namespace contact_fem
           t_max    = std::max(t_max, std::abs(t));
           slip_max = std::max(slip_max, magnitude<dim>(accepted_slip[s.node]));
         }
+    // Over every paired node: one that slid out of contact keeps its slip.
+    double accumulated_max = 0.;
+    for (const auto &s : interface.slave_nodes)
+      if (s.paired)
+        accumulated_max = std::max(accumulated_max, history.length[s.node]);
     Json components = Json::array();
     for (unsigned int d = 0; d < dim; ++d)
       components.push(force[d]);
@@ -51,7 +57,8 @@ namespace contact_fem
       .set("contact_force_components", components)
       .set("active_contact_length", length)
       .set("max_tangential_traction", t_max)
-      .set("max_slip_increment", slip_max);
+      .set("max_slip_increment", slip_max)
+      .set("max_accumulated_slip", accumulated_max);
   }
 
   void
@@ -90,20 +97,28 @@ namespace contact_fem
   std::vector<typename ContactFormulation<dim>::NodalField>
   friction_nodal_fields(const ContactInterface<dim>   &interface,
                         const ContactFormulation<dim> &contact,
-                        const std::vector<TangentialVector<dim>> &accepted_slip)
+                        const std::vector<TangentialVector<dim>> &accepted_slip,
+                        const SlipHistory<dim>                   &history)
   {
     const unsigned int  n_nodes = interface.nodes.size();
     std::vector<double> stick(n_nodes, 0.);
     std::vector<typename ContactFormulation<dim>::NodalField> fields;
     if constexpr (dim == 2)
       {
-        std::vector<double> tangential(n_nodes, 0.), slip(n_nodes, 0.);
+        std::vector<double> tangential(n_nodes, 0.), slip(n_nodes, 0.), accumulated(n_nodes, 0.);
         for (const auto &s : interface.slave_nodes)
           if (s.paired)
-            tangential[s.node] = frame_tangential_traction(contact, s);
+            {
+              tangential[s.node] = frame_tangential_traction(contact, s);
+              accumulated[s.node] =
+                history.displacement[s.node] *
+                ContactFormulation<dim>::tangent(contact.frame_normal(s));
+            }
         for (unsigned int n = 0; n < n_nodes; ++n)
           slip[n] = accepted_slip[n][0];
-        fields = {{"tangential_traction", tangential}, {"slip_increment", slip}};
+        fields = {{"tangential_traction", tangential},
+                  {"slip_increment", slip},
+                  {"accumulated_tangential_displacement", accumulated}};
       }
     else
       {
@@ -115,8 +130,11 @@ namespace contact_fem
               tangential[s.node] = tangential_traction_vector(contact, s);
               slip[s.node]       = to_global(accepted_slip[s.node], contact.frame_normal(s));
             }
-        for (const auto &[name, values] : {std::make_pair("tangential_traction_", &tangential),
-                                           std::make_pair("slip_increment_", &slip)})
+        using Vectors = const std::vector<Tensor<1, dim>> *;
+        for (const auto &[name, values] :
+             {std::make_pair("tangential_traction_", Vectors(&tangential)),
+              std::make_pair("slip_increment_", Vectors(&slip)),
+              std::make_pair("accumulated_tangential_displacement_", &history.displacement)})
           for (unsigned int d = 0; d < dim; ++d)
             {
               fields.push_back({name + std::string(1, "xyz"[d]), std::vector<double>(n_nodes)});
@@ -124,6 +142,7 @@ namespace contact_fem
                 fields.back().values[n] = (*values)[n][d];
             }
       }
+    fields.push_back({"accumulated_slip", history.length});
     for (unsigned int n = 0; n < n_nodes; ++n)
       stick[n] = contact.held_tangentially(n) ? 1. : 0.;
     fields.push_back({"stick", stick});
@@ -152,18 +171,22 @@ namespace contact_fem
   add_friction_totals(const ContactInterface<2> &,
                       const ContactFormulation<2> &,
                       const std::vector<TangentialVector<2>> &,
+                      const SlipHistory<2> &,
                       Json &);
   template void
   add_friction_totals(const ContactInterface<3> &,
                       const ContactFormulation<3> &,
                       const std::vector<TangentialVector<3>> &,
+                      const SlipHistory<3> &,
                       Json &);
   template std::vector<ContactFormulation<2>::NodalField>
   friction_nodal_fields(const ContactInterface<2> &,
                         const ContactFormulation<2> &,
-                        const std::vector<TangentialVector<2>> &);
+                        const std::vector<TangentialVector<2>> &,
+                        const SlipHistory<2> &);
   template std::vector<ContactFormulation<3>::NodalField>
   friction_nodal_fields(const ContactInterface<3> &,
                         const ContactFormulation<3> &,
-                        const std::vector<TangentialVector<3>> &);
+                        const std::vector<TangentialVector<3>> &,
+                        const SlipHistory<3> &);
 } // namespace contact_fem

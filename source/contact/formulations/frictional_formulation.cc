@@ -14,6 +14,7 @@ namespace contact_fem
     tangential.assign(n, TangentialVector<dim>());
     sets.initialize(interface);
     last_step_slip.assign(n, TangentialVector<dim>());
+    slip_history.initialize(n);
     converged_displacement.assign(interface.dofs().size(), 0.);
     last_stick_slip_changes = 0;
   }
@@ -48,7 +49,7 @@ namespace contact_fem
   FrictionalFormulation<dim, NormalPart>::nodal_fields(
     const ContactInterface<dim> &interface) const
   {
-    return friction_nodal_fields(interface, *this, last_step_slip);
+    return friction_nodal_fields(interface, *this, last_step_slip, slip_history);
   }
 
   template <int dim, class NormalPart>

@@ -379,6 +379,7 @@ namespace contact_fem
     for (const auto &s : interface.slave_nodes)
       if (s.paired)
         last_step_slip[s.node] = slip_increment(interface, s, u);
+    slip_history.add(interface, *this, last_step_slip);
     converged_displacement = u;
     accepted_tangential    = tangential;
   }
@@ -391,6 +392,7 @@ namespace contact_fem
     state->normal                 = PenaltyFrictionless<dim>::save_state();
     state->tangential             = tangential;
     state->converged_displacement = converged_displacement;
+    state->slip_history           = slip_history;
     state->accepted_tangential    = accepted_tangential;
     state->sets                   = sets;
     state->last_step_slip         = last_step_slip;
@@ -405,6 +407,7 @@ namespace contact_fem
     PenaltyFrictionless<dim>::restore_state(*saved.normal);
     tangential             = saved.tangential;
     converged_displacement = saved.converged_displacement;
+    slip_history           = saved.slip_history;
     accepted_tangential    = saved.accepted_tangential;
     sets                   = saved.sets;
     last_step_slip         = saved.last_step_slip;
@@ -420,7 +423,7 @@ namespace contact_fem
       .set("tangential_penalty", tangent_penalty.empty() ? 0. : tangent_penalty[0])
       .set("stick_nodes", n_stick())
       .set("slip_nodes", this->n_active() - n_stick());
-    add_friction_totals(interface, *this, last_step_slip, contact);
+    add_friction_totals(interface, *this, last_step_slip, slip_history, contact);
   }
 
   template <int dim>

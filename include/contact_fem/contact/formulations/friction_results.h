@@ -30,6 +30,39 @@ namespace contact_fem
     return lambda - (lambda * n) * n;
   }
 
+  /// The slip of every interface node summed over the accepted load steps
+  /// of the load path: its length (sum of the |slip increments|) and the
+  /// accumulated tangential relative displacement (sum of the increments,
+  /// as global vectors, so that a turning frame does not mix them up).
+  template <int dim>
+  struct SlipHistory
+  {
+    std::vector<double>         length;
+    std::vector<Tensor<1, dim>> displacement;
+
+    void
+    initialize(const unsigned int n_nodes)
+    {
+      length.assign(n_nodes, 0.);
+      displacement.assign(n_nodes, Tensor<1, dim>());
+    }
+
+    /// Adds @p step_slip (per interface node, in the frame of the node's
+    /// normal in @p contact) to the sums.
+    void
+    add(const ContactInterface<dim>               &interface,
+        const ContactFormulation<dim>             &contact,
+        const std::vector<TangentialVector<dim>> &step_slip)
+    {
+      for (const auto &s : interface.slave_nodes)
+        if (s.paired)
+          {
+            length[s.node] += magnitude<dim>(step_slip[s.node]);
+            displacement[s.node] += to_global(step_slip[s.node], contact.frame_normal(s));
+          }
+    }
+  };
+
   /// Adds the totals over the active slave nodes (normal and tangential
   /// contact force, their ratio, the force components, the active length,
   /// the largest tangential traction and the largest slip of the last
@@ -39,6 +72,7 @@ namespace contact_fem
   add_friction_totals(const ContactInterface<dim>   &interface,
                       const ContactFormulation<dim> &contact,
                       const std::vector<TangentialVector<dim>> &accepted_slip,
+                      const SlipHistory<dim>                   &history,
                       Json                          &result);
 
   /// Prints the stick/slip counts and the totals of add_friction_totals()
@@ -50,13 +84,15 @@ namespace contact_fem
                         std::ostream      &out);
 
   /// The nodal fields tangential_traction, slip_increment (of the last
-  /// accepted step; in 3D their global components, tangential_traction_x
-  /// ...) and stick.
+  /// accepted step), accumulated_tangential_displacement (in 3D their
+  /// global components, tangential_traction_x ...), accumulated_slip (the
+  /// path length) and stick.
   template <int dim>
   std::vector<typename ContactFormulation<dim>::NodalField>
   friction_nodal_fields(const ContactInterface<dim>   &interface,
                         const ContactFormulation<dim> &contact,
-                        const std::vector<TangentialVector<dim>> &accepted_slip);
+                        const std::vector<TangentialVector<dim>> &accepted_slip,
+                        const SlipHistory<dim>                   &history);
 
   /// The stick / slip / stick-slip-change cells of the Newton table.
   std::string

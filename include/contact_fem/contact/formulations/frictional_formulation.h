@@ -72,8 +72,8 @@ namespace contact_fem
     std::string
     iteration_cells(const unsigned int iteration) const override;
 
-    /// tangential_traction, slip_increment (of the last accepted step) and
-    /// stick.
+    /// tangential_traction, slip_increment (of the last accepted step),
+    /// the accumulated slip and tangential displacement, and stick.
     std::vector<typename ContactFormulation<dim>::NodalField>
     nodal_fields(const ContactInterface<dim> &interface) const override;
 
@@ -110,6 +110,8 @@ namespace contact_fem
     StickSlipSets<dim>                 sets;
     /// Slip of every interface node in the last accepted load step.
     std::vector<TangentialVector<dim>> last_step_slip;
+    /// Slip of every interface node summed over the load path.
+    SlipHistory<dim> slip_history;
     /// Interface displacement of the last accepted load step.
     std::vector<double> converged_displacement;
     /// Stick/slip changes of the last update_active_set().

@@ -192,6 +192,7 @@ namespace contact_fem
     using Base::converged_displacement;
     using Base::frictionless_law;
     using Base::last_step_slip;
+    using Base::slip_history;
     using Base::last_stick_slip_changes;
     using Base::laws;
     using Base::n_slip;
@@ -212,6 +213,7 @@ namespace contact_fem
       std::unique_ptr<State> normal;
       std::vector<TangentialVector<dim>> tangential, accepted_tangential;
       std::vector<double>                converged_displacement;
+      SlipHistory<dim>                   slip_history;
       StickSlipSets<dim>          sets;
       std::vector<TangentialVector<dim>> last_step_slip;
     };
