@@ -62,6 +62,24 @@ namespace contact_fem
                  "of the error."
               << std::endl;
     }
+
+    /// "Progress: load step k of N of cycle c done, ..." after @p n_solved
+    /// load steps with @p left to go, @p elapsed seconds into the cycle; the
+    /// remainder is estimated from the mean time per load step so far.
+    std::string
+    progress_line(const unsigned int cycle,
+                  const unsigned int n_solved,
+                  const unsigned int left,
+                  const double       elapsed)
+    {
+      std::string line = "  Progress: load step " + std::to_string(n_solved) + " of " +
+                         std::to_string(n_solved + left) + " of cycle " +
+                         std::to_string(cycle) + " done, " + significant(elapsed, 3) +
+                         " s in this cycle";
+      if (left > 0)
+        line += ", about " + significant(elapsed / n_solved * left, 2) + " s to go";
+      return line;
+    }
   } // namespace
 
   TeeStream::TeeStream(std::ostream &console)
@@ -916,6 +934,29 @@ namespace contact_fem
     const std::string where =
       "load step " + std::to_string(step + 1) + " (t = " + std::to_string(time) + ")";
 
+    const unsigned int iterations = newton_iterations(where, step, time, step_size);
+    newton_iterations_of_cycle.push_back(iterations);
+    record.set("time", time)
+      .set("newton_iterations", iterations)
+      .set("converged", true)
+      .set("active_slave_nodes", contact ? contact->n_active() : 0u)
+      .set("wall_time", step_timer.wall_time());
+    if (linear_solver->iterative())
+      {
+        Json counts = Json::array();
+        for (const unsigned int n : linear_iterations_of_step)
+          counts.push(n);
+        record.set("linear_iterations", counts);
+      }
+  }
+
+  template <int dim>
+  unsigned int
+  ContactProblem<dim>::newton_iterations(const std::string &where,
+                                         const unsigned int step,
+                                         const double       time,
+                                         const double       step_size)
+  {
     // Per iteration: the equilibrium residual of the free DoFs with the
     // multipliers of the current active set, and the complementarity
     // residual (gap of active nodes, multiplier / k of the others). With
@@ -931,17 +972,11 @@ namespace contact_fem
       {
         const std::string at = where + ", iteration " + std::to_string(iteration);
         stop_if_interrupted(comm);
-        if (iteration > 0 && contact && contact->n_active() == 0 &&
-            !contact_parameters.allow_loss_of_contact)
-          throw NewtonFailure(diagnosis().no_contact_message(at, current_time, true, iteration == 1),
-                              false);
-        // With every node slipping, a body that only friction holds is free
-        // to slide: the next solve would be (nearly) singular.
-        if (iteration > 0 && contact && contact->slides_everywhere())
-          if (const auto free = diagnosis().problem_traits().unsupported_bodies; !free.empty())
-            throw NewtonFailure(at + ": " + exceeded_friction_capacity(free));
         if (iteration > 0)
-          newton_update(at, monitor.displacement_target());
+          {
+            check_before_solve(at, iteration);
+            newton_update(at, monitor.displacement_target());
+          }
         compute_residual();
         const ContactUpdate update   = update_contact(iteration);
         const double        r_u      = equilibrium_residual_norm(update.residuals.contact_force);
@@ -987,19 +1022,22 @@ namespace contact_fem
                             precision_hint(),
                           !assessment.stalled);
 
-    newton_iterations_of_cycle.push_back(iteration);
-    record.set("time", time)
-      .set("newton_iterations", iteration)
-      .set("converged", assessment.converged)
-      .set("active_slave_nodes", contact ? contact->n_active() : 0u)
-      .set("wall_time", step_timer.wall_time());
-    if (linear_solver->iterative())
-      {
-        Json counts = Json::array();
-        for (const unsigned int n : linear_iterations_of_step)
-          counts.push(n);
-        record.set("linear_iterations", counts);
-      }
+    return iteration;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::check_before_solve(const std::string &at,
+                                          const unsigned int iteration) const
+  {
+    if (contact && contact->n_active() == 0 && !contact_parameters.allow_loss_of_contact)
+      throw NewtonFailure(diagnosis().no_contact_message(at, current_time, true, iteration == 1),
+                          false);
+    // With every node slipping, a body that only friction holds is free
+    // to slide: the next solve would be (nearly) singular.
+    if (contact && contact->slides_everywhere())
+      if (const auto free = diagnosis().problem_traits().unsupported_bodies; !free.empty())
+        throw NewtonFailure(at + ": " + exceeded_friction_capacity(free));
   }
 
   template <int dim>
@@ -1537,22 +1575,12 @@ namespace contact_fem
                             whole_path ? 0. :
                                          load_stepping.end_time * (n_steps - 1) / n_steps,
                             n_steps);
-    LoadPath           path;
-    Json               steps = Json::array();
-    Timer              path_timer;
+    LoadPath path;
+    Json     steps = Json::array();
+    Timer    path_timer;
     if (comparison)
       comparison->start_load_path();
-    TrilinosWrappers::MPI::Vector saved_solution = solution;
-    std::unique_ptr<typename ContactFormulation<dim>::State> saved_state;
-    // The mortar operators of the last converged state: a failed step has
-    // searched again, and the results reported after giving up must be
-    // those of the converged state with its own operators.
-    std::unique_ptr<ContactInterface<dim>> saved_interface;
-    if (contact)
-      {
-        saved_state     = contact->save_state();
-        saved_interface = std::make_unique<ContactInterface<dim>>(*interface);
-      }
+    ConvergedState saved(solution, contact.get(), interface.get());
     while (!control.finished())
       {
         stop_if_interrupted(comm);
@@ -1566,13 +1594,8 @@ namespace contact_fem
         catch (const NewtonFailure &failure)
           {
             pcout << "  Newton failed at " << failure.what() << std::endl;
-            solution         = saved_solution;
+            saved.restore(solution, contact.get(), interface.get());
             ghosted_solution = solution;
-            if (contact)
-              {
-                contact->restore_state(*saved_state);
-                *interface = *saved_interface;
-              }
             if (failure.splittable && control.split())
               {
                 pcout << "  Splitting the step: retrying from t = " << control.converged_time()
@@ -1589,35 +1612,16 @@ namespace contact_fem
             break;
           }
         ++path.n_solved;
-        record_forces(path.n_solved, time, step_record);
+        finish_load_step(path.n_solved, time, step_record);
         steps.push(step_record);
-        // The load history a comparison may need (Cattaneo unloading).
-        if (comparison && contact)
-          comparison->record_load_step(contact_state());
-        if (contact)
-          contact->accept_load_step(*interface, interface_displacement);
         if (control.accept())
           pcout << "  Growing the step to " << control.step_size() << std::endl;
-        // Progress, with the wall times (which tests leave out): the
-        // remainder is estimated from the mean time per load step so far.
+        // Progress, with the wall times (which tests leave out).
         if (output.print_timing)
-          {
-            const unsigned int left    = control.n_steps_left();
-            const double       elapsed = path_timer.wall_time();
-            pcout << "  Progress: load step " << path.n_solved << " of " << path.n_solved + left
-                  << " of cycle " << cycle << " done, " << significant(elapsed, 3)
-                  << " s in this cycle";
-            if (left > 0)
-              pcout << ", about " << significant(elapsed / path.n_solved * left, 2)
-                    << " s to go";
-            pcout << std::endl;
-          }
-        saved_solution = solution;
-        if (contact)
-          {
-            saved_state      = contact->save_state();
-            *saved_interface = *interface;
-          }
+          pcout << progress_line(cycle, path.n_solved, control.n_steps_left(),
+                                 path_timer.wall_time())
+                << std::endl;
+        saved = ConvergedState(solution, contact.get(), interface.get());
         if (vtu_output)
           {
             TimerOutput::Scope t(*timer, "Output: VTU");
@@ -1629,6 +1633,44 @@ namespace contact_fem
     current_time = control.converged_time();
     cycle_record.set("load_steps", steps);
     return path;
+  }
+
+  template <int dim>
+  ContactProblem<dim>::ConvergedState::ConvergedState(
+    const TrilinosWrappers::MPI::Vector &solution,
+    const ContactFormulation<dim>       *contact,
+    const ContactInterface<dim>         *interface)
+    : solution(solution)
+    , contact_state(contact ? contact->save_state() : nullptr)
+    , interface(interface ? std::make_unique<ContactInterface<dim>>(*interface) : nullptr)
+  {}
+
+  template <int dim>
+  void
+  ContactProblem<dim>::ConvergedState::restore(TrilinosWrappers::MPI::Vector &solution,
+                                               ContactFormulation<dim>       *contact,
+                                               ContactInterface<dim>         *interface) const
+  {
+    solution = this->solution;
+    if (contact)
+      {
+        contact->restore_state(*contact_state);
+        *interface = *this->interface;
+      }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::finish_load_step(const unsigned int n_solved,
+                                        const double       time,
+                                        Json              &step_record)
+  {
+    record_forces(n_solved, time, step_record);
+    // The load history a comparison may need (Cattaneo unloading).
+    if (comparison && contact)
+      comparison->record_load_step(contact_state());
+    if (contact)
+      contact->accept_load_step(*interface, interface_displacement);
   }
 
   template <int dim>

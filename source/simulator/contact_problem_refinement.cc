@@ -138,6 +138,83 @@ namespace contact_fem
                 << plain / energy_error << std::setprecision(6) << std::endl;
         }
     }
+
+    /// The traction of a recovered stress at the paired slave nodes
+    /// (@p node_stresses at @p nodes, the paired interface.slave_nodes in
+    /// their order), by interface node, in the convention of the imposed
+    /// contact condition.
+    template <int dim>
+    struct RecoveredTractions
+    {
+      RecoveredTractions(const ContactInterface<dim>                 &interface,
+                         const ContactFormulation<dim>               &contact,
+                         const std::vector<ContactNodeTraction<dim>> &nodes,
+                         const std::vector<SymmetricTensor<2, dim>>  &node_stresses)
+      {
+      // How well the recovered stress carries the contact traction, in the
+      // convention of the imposed condition: the traction sigma* n0 on the
+      // reference surface (n0 = the node's N_j-weighted mean reference normal)
+      // against -p n (n = the deformed normal the force acts along). Its
+      // normal part, scaled from the reference to the deformed surface by
+      // int N_j ds / D_j (the mortar pressure is a force per deformed area;
+      // the scenes' surface strains reach 1 %), is compared with the exact
+      // pressure by the same L2 measure as the mortar pressure; its shear
+      // part, which a frictionless contact makes zero, is reported as the
+      // largest over the active nodes.
+      // With friction the shear part is compared with the mortar tangential
+      // traction instead (it is no longer zero), and with Cattaneo.
+      const bool with_shear = contact.transmits_shear();
+      pressure.assign(interface.nodes.size(), 0.);
+      tangential.assign(interface.nodes.size(), 0.);
+      std::size_t         i = 0; // @p nodes are the paired slave nodes in order
+      for (const auto &s : interface.slave_nodes)
+        if (s.paired)
+          {
+            Tensor<1, dim> n0;
+            double         reference_length = 0.;
+            for (const auto &q : nodes[i].samples)
+              {
+                n0 += q.weight * q.normal;
+                reference_length += q.weight;
+              }
+            n0 /= n0.norm();
+            const Tensor<1, dim> n        = nodes[i].normal / nodes[i].normal.norm();
+            const Tensor<1, dim> traction = node_stresses[i] * n0;
+            const double         normal   = -(traction * n);
+            pressure[s.node]              = s.D > 0. ? normal * reference_length / s.D : normal;
+            if (contact.is_active(s.node))
+              {
+                Tensor<1, dim> shear = traction + normal * n;
+                if (with_shear && dim == 2)
+                  {
+                    const Tensor<1, dim> tau =
+                      ContactFormulation<dim>::tangent(contact.frame_normal(s));
+                    tangential[s.node] = (s.D > 0. ? reference_length / s.D : 1.) * (traction * tau);
+                    shear = (tangential[s.node] - contact.traction(s) * tau) * tau;
+                  }
+                else if (with_shear)
+                  {
+                    // 3D: the tangential parts as vectors (frame normal nf).
+                    const Tensor<1, dim> nf     = contact.frame_normal(s);
+                    const Tensor<1, dim> lambda = contact.traction(s);
+                    shear = (s.D > 0. ? reference_length / s.D : 1.) * (traction - (traction * nf) * nf) -
+                            (lambda - (lambda * nf) * nf);
+                  }
+                largest_shear = std::max(largest_shear, shear.norm());
+                p_max         = std::max(p_max, contact.normal_pressure(s.node));
+              }
+            ++i;
+          }
+      AssertThrow(i == nodes.size() && i == node_stresses.size(), ExcInternalError());
+      }
+
+      /// The normal part scaled to the deformed surface, and in 2D with
+      /// friction the tangential part.
+      std::vector<double> pressure, tangential;
+      /// Over the active nodes: the largest shear (or deviation from the
+      /// mortar tangential traction) and the largest mortar pressure.
+      double largest_shear = 0., p_max = 0.;
+    };
   } // namespace
 
   template <int dim>
@@ -148,62 +225,12 @@ namespace contact_fem
     const std::string                           &prefix,
     Json                                        &cycle_record) const
   {
-    // How well the recovered stress carries the contact traction, in the
-    // convention of the imposed condition: the traction sigma* n0 on the
-    // reference surface (n0 = the node's N_j-weighted mean reference normal)
-    // against -p n (n = the deformed normal the force acts along). Its
-    // normal part, scaled from the reference to the deformed surface by
-    // int N_j ds / D_j (the mortar pressure is a force per deformed area;
-    // the scenes' surface strains reach 1 %), is compared with the exact
-    // pressure by the same L2 measure as the mortar pressure; its shear
-    // part, which a frictionless contact makes zero, is reported as the
-    // largest over the active nodes.
-    // With friction the shear part is compared with the mortar tangential
-    // traction instead (it is no longer zero), and with Cattaneo.
-    const bool          with_shear = contact->transmits_shear();
-    std::vector<double> pressure(interface->nodes.size(), 0.);
-    std::vector<double> tangential(interface->nodes.size(), 0.);
-    double              largest_shear = 0., p_max = 0.;
-    std::size_t         i = 0; // @p nodes are the paired slave nodes in order
-    for (const auto &s : interface->slave_nodes)
-      if (s.paired)
-        {
-          Tensor<1, dim> n0;
-          double         reference_length = 0.;
-          for (const auto &q : nodes[i].samples)
-            {
-              n0 += q.weight * q.normal;
-              reference_length += q.weight;
-            }
-          n0 /= n0.norm();
-          const Tensor<1, dim> n        = nodes[i].normal / nodes[i].normal.norm();
-          const Tensor<1, dim> traction = node_stresses[i] * n0;
-          const double         normal   = -(traction * n);
-          pressure[s.node]              = s.D > 0. ? normal * reference_length / s.D : normal;
-          if (contact->is_active(s.node))
-            {
-              Tensor<1, dim> shear = traction + normal * n;
-              if (with_shear && dim == 2)
-                {
-                  const Tensor<1, dim> tau =
-                    ContactFormulation<dim>::tangent(contact->frame_normal(s));
-                  tangential[s.node] = (s.D > 0. ? reference_length / s.D : 1.) * (traction * tau);
-                  shear = (tangential[s.node] - contact->traction(s) * tau) * tau;
-                }
-              else if (with_shear)
-                {
-                  // 3D: the tangential parts as vectors (frame normal nf).
-                  const Tensor<1, dim> nf     = contact->frame_normal(s);
-                  const Tensor<1, dim> lambda = contact->traction(s);
-                  shear = (s.D > 0. ? reference_length / s.D : 1.) * (traction - (traction * nf) * nf) -
-                          (lambda - (lambda * nf) * nf);
-                }
-              largest_shear = std::max(largest_shear, shear.norm());
-              p_max         = std::max(p_max, contact->normal_pressure(s.node));
-            }
-          ++i;
-        }
-    AssertThrow(i == nodes.size() && i == node_stresses.size(), ExcInternalError());
+    const bool                    with_shear = contact->transmits_shear();
+    const RecoveredTractions<dim> recovered(*interface, *contact, nodes, node_stresses);
+    const std::vector<double>    &pressure   = recovered.pressure;
+    const std::vector<double>    &tangential = recovered.tangential;
+    const double                  largest_shear = recovered.largest_shear;
+    const double                  p_max         = recovered.p_max;
     const double      shear = p_max > 0. ? largest_shear / p_max : 0.;
     const std::string label = prefix.empty() ? "    recovered" : "    plain SPR recovered";
     if (with_shear)

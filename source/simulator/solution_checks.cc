@@ -313,19 +313,7 @@ namespace contact_fem
     // pivot, and the solution carries a rotation set by the mesh. Probe:
     // load every body that touches a contact surface with a unit couple and
     // solve with the factors of the converged system (one back
-    // substitution). An elastically held body of volume V turns by about
-    // 1 / (G V), G a shear modulus; the softest one of the model is taken,
-    // since a stiff body may rest on a soft one. Measured on the Hertz disc
-    // (theta G V): 3.4 with its fixed points, 300-500 without them.
-    constexpr double compliance_limit = 50.;
-    // A rotation that the body's own supports hold with a lever arm (see
-    // support_lever_arms()) of at least this fraction of the body's radius
-    // of gyration is held elastically: its probe (with the iterative
-    // solver a full Krylov solve) is skipped. Held by two fixed points on
-    // its axis, the Hertz disc gives theta G V 2.9, 9.9, 35, 54 and 146 at
-    // lever arms 0.88, 0.44, 0.22, 0.17 and 0.055 (about 2 / arm^2): at 0.5
-    // about 8, well below the limit; closer supports are probed.
-    constexpr double held_lever_arm = 0.5;
+    // substitution).
     std::vector<unsigned int> touches(bodies.size(), 0);
     for (const auto &cell : system.dof_handler.get_triangulation().active_cell_iterators())
       if (cell->is_locally_owned())
@@ -335,79 +323,97 @@ namespace contact_fem
                     bodies.begin()] = 1;
     Utilities::MPI::max(touches, comm, touches);
 
-    constexpr unsigned int n_axes = dim == 2 ? 1 : 3;
-    const auto             fixed  = fixed_dofs_by_body();
-    HeldRotation           result;
+    const auto   fixed = fixed_dofs_by_body();
+    HeldRotation result;
     for (unsigned int b = 0; b < bodies.size(); ++b)
-      {
-        if (touches[b] == 0)
-          continue;
-        const BodyMoments         moments   = body_moments(bodies[b]);
-        const auto                own_fixed = fixed.find(bodies[b]);
-        const std::vector<double> lever_arms =
-          support_lever_arms(own_fixed == fixed.end() ? std::vector<FixedDof<dim>>() :
-                                                        own_fixed->second,
-                             moments.centre, moments.radius_of_gyration(), comm);
-
-        // Per axis: held by the supports, probed (with theta G V), or not
-        // probed because an earlier axis of the body warned already.
-        Json held = Json::array(), probed = Json::array(), unprobed = Json::array();
-        Json levers = Json::object(), compliances = Json::object();
-        bool warned = false;
-        for (unsigned int axis = 0; axis < n_axes; ++axis)
-          {
-            // In 2D the rotation of the plane, about z.
-            const std::string name(1, "xyz"[dim == 2 ? 2 : axis]);
-            levers.set(name, lever_arms[axis]);
-            if (lever_arms[axis] >= held_lever_arm)
-              {
-                held.push(name);
-                continue;
-              }
-            if (warned)
-              {
-                unprobed.push(name);
-                continue;
-              }
-            double rotation = 0.;
-            try
-              {
-                rotation = rotation_under_couple(bodies[b], moments, axis, solver);
-              }
-            catch (const LinearSolverFailure &e)
-              {
-                // An iterative solver may not converge on the probe of a
-                // nearly free rotation: say that the check did not run.
-                result.skipped = e.what();
-                return result;
-              }
-            const double compliance = rotation * softest_shear_modulus * moments.volume;
-            probed.push(name);
-            compliances.set(name, compliance);
-            if (!(compliance > compliance_limit))
-              continue;
-            std::ostringstream text;
-            text << "body " << static_cast<unsigned int>(bodies[b])
-                 << " is held only weakly against rotation: a couple turns it "
-                 << std::setprecision(3) << compliance << std::setprecision(6)
-                 << " times more than elasticity would (theta G V, G the smallest shear "
-                 << "modulus); frictionless contact on a curved surface resists a rotation "
-                 << "about its centre only through the discretisation, so the results along "
-                 << "that rotation depend on the mesh; hold it (see Boundary "
-                 << "conditions/Fixed points)";
-            result.warnings.push_back(text.str());
-            warned = true;
-          }
-        // Lever arms over the radius of gyration.
-        result.check.push(Json::object()
-                            .set("body", static_cast<unsigned int>(bodies[b]))
-                            .set("held_by_supports", held)
-                            .set("probed", probed)
-                            .set("not_probed_after_warning", unprobed)
-                            .set("support_lever_arms", levers)
-                            .set("probe_compliances", compliances));
-      }
+      if (touches[b] != 0)
+        {
+          const auto own_fixed = fixed.find(bodies[b]);
+          try
+            {
+              probe_body(bodies[b],
+                         own_fixed == fixed.end() ? std::vector<FixedDof<dim>>() :
+                                                    own_fixed->second,
+                         softest_shear_modulus, solver, result);
+            }
+          catch (const LinearSolverFailure &e)
+            {
+              // An iterative solver may not converge on the probe of a
+              // nearly free rotation: say that the check did not run.
+              result.skipped = e.what();
+              return result;
+            }
+        }
     return result;
+  }
+
+  template <int dim>
+  void
+  SolutionChecks<dim>::probe_body(const types::material_id          body,
+                                  const std::vector<FixedDof<dim>> &fixed,
+                                  const double                      softest_shear_modulus,
+                                  LinearSolver                     &solver,
+                                  HeldRotation                     &result) const
+  {
+    // An elastically held body of volume V turns by about 1 / (G V), G a
+    // shear modulus; the softest one of the model is taken, since a stiff
+    // body may rest on a soft one. Measured on the Hertz disc (theta G V):
+    // 3.4 with its fixed points, 300-500 without them.
+    constexpr double compliance_limit = 50.;
+    // A rotation that the body's own supports hold with a lever arm (see
+    // support_lever_arms()) of at least this fraction of the body's radius
+    // of gyration is held elastically: its probe (with the iterative
+    // solver a full Krylov solve) is skipped. Held by two fixed points on
+    // its axis, the Hertz disc gives theta G V 2.9, 9.9, 35, 54 and 146 at
+    // lever arms 0.88, 0.44, 0.22, 0.17 and 0.055 (about 2 / arm^2): at 0.5
+    // about 8, well below the limit; closer supports are probed.
+    constexpr double          held_lever_arm = 0.5;
+    const BodyMoments         moments        = body_moments(body);
+    const std::vector<double> lever_arms =
+      support_lever_arms(fixed, moments.centre, moments.radius_of_gyration(), comm);
+
+    // Per axis: held by the supports, probed (with theta G V), or not
+    // probed because an earlier axis of the body warned already.
+    Json held = Json::array(), probed = Json::array(), unprobed = Json::array();
+    Json levers = Json::object(), compliances = Json::object();
+    bool warned = false;
+    for (unsigned int axis = 0; axis < (dim == 2 ? 1 : 3); ++axis)
+      {
+        // In 2D the rotation of the plane, about z.
+        const std::string name(1, "xyz"[dim == 2 ? 2 : axis]);
+        levers.set(name, lever_arms[axis]);
+        if (lever_arms[axis] >= held_lever_arm || warned)
+          {
+            (lever_arms[axis] >= held_lever_arm ? held : unprobed).push(name);
+            continue;
+          }
+        const double compliance =
+          rotation_under_couple(body, moments, axis, solver) * softest_shear_modulus *
+          moments.volume;
+        probed.push(name);
+        compliances.set(name, compliance);
+        if (!(compliance > compliance_limit))
+          continue;
+        std::ostringstream text;
+        text << "body " << static_cast<unsigned int>(body)
+             << " is held only weakly against rotation: a couple turns it "
+             << std::setprecision(3) << compliance << std::setprecision(6)
+             << " times more than elasticity would (theta G V, G the smallest shear "
+             << "modulus); frictionless contact on a curved surface resists a rotation "
+             << "about its centre only through the discretisation, so the results along "
+             << "that rotation depend on the mesh; hold it (see Boundary "
+             << "conditions/Fixed points)";
+        result.warnings.push_back(text.str());
+        warned = true;
+      }
+    // Lever arms over the radius of gyration.
+    result.check.push(Json::object()
+                        .set("body", static_cast<unsigned int>(body))
+                        .set("held_by_supports", held)
+                        .set("probed", probed)
+                        .set("not_probed_after_warning", unprobed)
+                        .set("support_lever_arms", levers)
+                        .set("probe_compliances", compliances));
   }
 
   template class SolutionChecks<2>;

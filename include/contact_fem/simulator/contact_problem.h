@@ -211,6 +211,19 @@ namespace contact_fem
                     const double       step_size,
                     const bool         first_step,
                     Json              &step_record);
+    /// The Newton iterations of load step @p step (@p where names it in
+    /// messages) until it converges; returns their number, throws a
+    /// NewtonFailure with the diagnosis if it does not converge.
+    unsigned int
+    newton_iterations(const std::string &where,
+                      const unsigned int step,
+                      const double       time,
+                      const double       step_size);
+    /// Throws a NewtonFailure before the solve of @p iteration (at @p at)
+    /// where it cannot help: no node in contact (unless allowed), or every
+    /// node slipping while a body is held by friction alone.
+    void
+    check_before_solve(const std::string &at, const unsigned int iteration) const;
     /// Dirichlet values and loads at @p time, the contact search and the
     /// sparsity pattern of the step.
     void
@@ -305,6 +318,31 @@ namespace contact_fem
       unsigned int n_solved  = 0;    ///< converged load steps
       bool         converged = true; ///< false: gave up after splitting
     };
+    /// The last converged state of the load path, taken back when a step
+    /// fails: the solution, the formulation's state and the mortar
+    /// operators (a failed step may have searched again, and results
+    /// reported after giving up are those of the converged state with its
+    /// own operators).
+    struct ConvergedState
+    {
+      /// Copies the state (@p contact and @p interface null without contact).
+      ConvergedState(const TrilinosWrappers::MPI::Vector &solution,
+                     const ContactFormulation<dim>       *contact,
+                     const ContactInterface<dim>         *interface);
+      void
+      restore(TrilinosWrappers::MPI::Vector &solution,
+              ContactFormulation<dim>       *contact,
+              ContactInterface<dim>         *interface) const;
+
+      TrilinosWrappers::MPI::Vector                            solution;
+      std::unique_ptr<typename ContactFormulation<dim>::State> contact_state;
+      std::unique_ptr<ContactInterface<dim>>                   interface;
+    };
+    /// After the @p n_solved th converged load step (at @p time): its
+    /// forces, the comparison's load history and the formulation's accepted
+    /// state.
+    void
+    finish_load_step(const unsigned int n_solved, const double time, Json &step_record);
     /// Steps the load of the cycle (LoadStepControl), splitting failed steps
     /// and restoring the last converged state; records the steps.
     LoadPath

@@ -107,6 +107,15 @@ namespace contact_fem
     /// support points.
     std::map<types::material_id, std::vector<FixedDof<dim>>>
     fixed_dofs_by_body() const;
+    /// The probe of one body with the supporting DoFs @p fixed: its
+    /// entry of HeldRotation::check, and a warning if it turns too easily.
+    /// Throws LinearSolverFailure if a probe's solve fails.
+    void
+    probe_body(const types::material_id          body,
+               const std::vector<FixedDof<dim>> &fixed,
+               const double                      softest_shear_modulus,
+               LinearSolver                     &solver,
+               HeldRotation                     &result) const;
     /// The mean rotation about @p axis (3D; the plane's in 2D) of @p body
     /// under a unit couple (body force omega x (x - centre) / polar),
     /// solved with the kept factors of @p solver.
