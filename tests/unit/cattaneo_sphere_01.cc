@@ -1,4 +1,4 @@
-// Mindlin's sphere in postprocess/cattaneo_solution.h (sphere = true) on the
+// Mindlin's sphere in postprocess/cattaneo_solution.h (CattaneoProblem::spheres) on the
 // values of prm/cattaneo_3d.prm (P = 4e4 pi R^2, R = 6.1237, mu = 0.5, E* =
 // 1 / (0.91 / 1e8 + 1 / 1.9230769e8)): a, p0 and c/a = (1 - Q/(mu P))^(1/3)
 // at Q/(mu P) = 0.25, 0.5, 0.75, 0.875; the pressure integrates to P and the
@@ -27,7 +27,7 @@ main()
   std::cout << std::setprecision(6);
   for (const double ratio : {0.25, 0.5, 0.75, 0.875})
     {
-      const CattaneoSolution exact(P, ratio * mu * P, mu, R, E_star, true);
+      const CattaneoSolution exact(P, ratio * mu * P, mu, R, E_star, CattaneoProblem::spheres);
       // Midpoint rule in r on [0, a] with 2 pi r dr.
       const unsigned int n = 100000;
       double             p_int = 0., q_int = 0.;
@@ -57,7 +57,7 @@ main()
 
   // A half disc of nodes at spacing h, y >= 0 (the y = 0 row with half
   // weight, as a symmetry plane gives it), the exact traction along x.
-  const CattaneoSolution    exact(P, 0.5 * mu * P, mu, R, E_star, true);
+  const CattaneoSolution    exact(P, 0.5 * mu * P, mu, R, E_star, CattaneoProblem::spheres);
   const double              h = exact.a / 20.;
   std::vector<CattaneoNode> nodes;
   for (int i = -25; i <= 25; ++i)

@@ -1,5 +1,5 @@
 // The Cattaneo solution under Tresca friction (postprocess/cattaneo_tresca.h
-// through CattaneoSolution with tresca = true) on the loads of
+// through CattaneoSolution with CattaneoProblem::cylinders_tresca) on the loads of
 // scenes/cattaneo_tresca_01 (P = 10, Q = 1.2256, g = 1, R* = 4, E* = 200 /
 // (2 (1 - 0.3^2))): c/a = sqrt(1 - (Q/(2 a g))^2); q integrates to Q; q is
 // continuous at +-c, g in the slip zones and below g in the stick zone;
@@ -44,7 +44,7 @@ int
 main()
 {
   const double           E_star = 200. / (2. * (1. - 0.09));
-  const CattaneoSolution exact(10., 1.2256, 1., 4., E_star, true);
+  const CattaneoSolution exact(10., 1.2256, 1., 4., E_star, CattaneoProblem::cylinders_tresca);
   std::cout << std::setprecision(6) << "a = " << exact.a << ", c/a = " << exact.c / exact.a
             << ", Q/(2 a g) = " << exact.Q / exact.capacity() << ", largest bound "
             << exact.largest_bound() << std::endl;
@@ -63,7 +63,7 @@ main()
   std::cout << std::setprecision(4) << "strain at the middle of the slip zone: "
             << strain(exact, 0.5 * (exact.c + exact.a)) << std::endl;
 
-  const CattaneoSolution unloaded(10., 0., 1.2256, 1., 4., E_star, true);
+  const CattaneoSolution unloaded(10., 0., 1.2256, 1., 4., E_star, CattaneoProblem::cylinders_tresca);
   std::cout << "unloaded to 0: b/a = " << unloaded.c / unloaded.a
             << ", |int q| < 1e-6: "
             << (std::abs(integral([&](const double x) { return unloaded.tangential(x); },
@@ -71,6 +71,6 @@ main()
                   "yes" :
                   "no")
             << std::endl;
-  const CattaneoSolution full(10., 2. * exact.a, 1., 4., E_star, true);
+  const CattaneoSolution full(10., 2. * exact.a, 1., 4., E_star, CattaneoProblem::cylinders_tresca);
   std::cout << "at the capacity: c = " << full.c << std::endl;
 }

@@ -62,6 +62,9 @@ namespace contact_fem
                      const double radius,
                      const double E_star,
                      const CattaneoProblem problem = CattaneoProblem::cylinders);
+    /// A flag where the problem belongs would be taken for E* of the
+    /// unloading constructor: refused at compile time.
+    CattaneoSolution(double, double, double, double, double, bool) = delete;
     /// Unloading from @p Q_star to @p Q (Mindlin-Deresiewicz).
     CattaneoSolution(const double P,
                      const double Q,
