@@ -712,7 +712,7 @@ namespace contact_fem
   {
     TimerOutput::Scope  t(*timer, "Solve: linear");
     LinearSystemRequest request;
-    request.symmetric              = !contact || contact->symmetric();
+    request.symmetric              = !contact || contact->matrix_symmetric();
     request.newton_residual_target = newton_residual_target;
     const double linear_residual =
       linear_solver->solve(system_matrix, solution, system_rhs, request);

@@ -38,6 +38,7 @@ namespace contact_fem
       select(const types::global_dof_index n_dofs) override
       {
         LinearSolver *const before = current;
+        selected_dofs              = n_dofs;
         reason = iterative_reason(n_dofs);
         current = reason.empty() ? static_cast<LinearSolver *>(direct.get()) :
                                    static_cast<LinearSolver *>(krylov.get());
@@ -76,7 +77,32 @@ namespace contact_fem
             const TrilinosWrappers::MPI::Vector &rhs,
             const LinearSystemRequest           &request) override
       {
-        return current->solve(matrix, x, rhs, request);
+        if (current != krylov.get())
+          return current->solve(matrix, x, rhs, request);
+        try
+          {
+            return krylov->solve(matrix, x, rhs, request);
+          }
+        catch (const LinearSolverFailure &e)
+          {
+            // A system inside the multigrid's measured limits that it still
+            // does not solve (measured: penalty friction in 3D, whose
+            // tangential penalty of 1e4 E/h leaves GMRES far from its
+            // target): the direct solver takes over for this mesh. A
+            // singular system is not the multigrid's fault.
+            if (e.singular)
+              throw;
+            krylov->clear();
+            current    = direct.get();
+            why_direct = "the iterative solver did not converge on this mesh";
+            reason.clear();
+            // Its first line: the second one advises what auto now does.
+            const std::string what = e.what();
+            fallback_note          = what.substr(0, what.find('\n')) +
+                            " The direct solver takes over for this mesh";
+            direct->select(selected_dofs);
+            return direct->solve(matrix, x, rhs, request);
+          }
       }
 
       unsigned int
@@ -119,7 +145,11 @@ namespace contact_fem
       std::string
       take_note() override
       {
-        return current->take_note();
+        std::string note = current->take_note();
+        if (!fallback_note.empty())
+          note = fallback_note + (note.empty() ? "" : "; " + note);
+        fallback_note.clear();
+        return note;
       }
 
     private:
@@ -127,6 +157,10 @@ namespace contact_fem
       std::unique_ptr<IterativeSolver> krylov;
       LinearSolver                    *current;
       ProblemTraits                    traits;
+      /// The DoFs of the current mesh (select()).
+      types::global_dof_index selected_dofs = 0;
+      /// Said once by take_note() after the iterative solver gave way.
+      std::string fallback_note;
       /// Why the iterative solver serves this mesh; empty: the direct one.
       std::string reason;
       std::string why_direct;

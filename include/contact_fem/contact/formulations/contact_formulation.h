@@ -251,6 +251,15 @@ namespace contact_fem
       return true;
     }
 
+    /// Whether the Newton matrix is symmetric, so that CG may solve it.
+    /// Default: symmetric(); a formulation tested with its trial space may
+    /// still assemble unsymmetric terms (the penalty's Coulomb slip).
+    virtual bool
+    matrix_symmetric() const
+    {
+      return symmetric();
+    }
+
     /// The constraints of the test space when !symmetric(): the same DoFs
     /// as add_constraints() constrains, other coefficients. Default: those
     /// of add_constraints().

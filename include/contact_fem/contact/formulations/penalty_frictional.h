@@ -38,7 +38,8 @@ namespace contact_fem
    * tangent in 3D, sigma -> d). In 3D the slip direction d(t*) is
    * linearised too: T d(t*(u)) ~ T d + (T / |t*|) P t*(u), P = I - d d^T,
    * which adds (T / |t*|) eps_t D P grad xi grad xi^T and its load. The
-   * driver's direct solver takes the unsymmetric matrix; no test-space
+   * matrix is unsymmetric while a node slips (matrix_symmetric(): the
+   * iterative solver then takes GMRES instead of CG); no test-space
    * constraints are used (symmetric() stays true: it concerns constraints
    * only).
    *
@@ -73,6 +74,13 @@ namespace contact_fem
     /// Reads the penalty keys and Tangential penalty; @p friction: the laws
     /// and Pure slip.
     PenaltyFrictional(ParameterHandler &prm, const FrictionParameters &friction);
+
+    /// False while a node slips: the slip terms are unsymmetric.
+    bool
+    matrix_symmetric() const override
+    {
+      return this->n_slip() == 0;
+    }
 
     void
     initialize(const ContactInterface<dim> &interface) override;
