@@ -60,8 +60,8 @@ namespace
     CommandLine cl;
     for (int i = 1; i < argc; ++i)
       {
-        const std::string arg = argv[i];
-        auto next = [&](const std::string &option) {
+        const std::string arg  = argv[i];
+        auto              next = [&](const std::string &option) {
           if (i + 1 >= argc)
             throw std::runtime_error("option " + option + " needs a value.");
           return std::string(argv[++i]);
@@ -193,8 +193,9 @@ namespace
     catch (const boost::property_tree::file_parser_error &e)
       {
         throw std::runtime_error("the parameter file '" + file + "', line " +
-                                 std::to_string(e.line()) + ": " + e.message() + "; expected a parameter file in " +
-                                 (json ? "JSON" : "XML") + " (deal.II's ParameterHandler format).");
+                                 std::to_string(e.line()) + ": " + e.message() +
+                                 "; expected a parameter file in " + (json ? "JSON" : "XML") +
+                                 " (deal.II's ParameterHandler format).");
       }
     if (count_values(tree) == 0)
       throw std::runtime_error("the parameter file '" + file +
@@ -263,13 +264,14 @@ namespace
                  const std::string                 &path,
                  const std::string                 &value)
   {
-    const std::string option = "--set \"" + contact_fem::excerpt(path + "=" + value) + "\"";
-    std::vector<std::string> parts = Utilities::split_string_list(path, '/');
-    if (parts.empty() || std::any_of(parts.begin(), parts.end(),
-                                     [](const std::string &p) { return p.empty(); }))
+    const std::string        option = "--set \"" + contact_fem::excerpt(path + "=" + value) + "\"";
+    std::vector<std::string> parts  = Utilities::split_string_list(path, '/');
+    if (parts.empty() || std::any_of(parts.begin(), parts.end(), [](const std::string &p) {
+          return p.empty();
+        }))
       throw std::runtime_error(option + ": expected \"Subsection/Key=value\" (a key before "
                                         "'=', subsections separated by single '/').");
-    const boost::property_tree::ptree *node = &declared;
+    const boost::property_tree::ptree *node  = &declared;
     std::string                        where = "at the top level";
     for (unsigned int i = 0; i < parts.size(); ++i)
       {
@@ -282,10 +284,10 @@ namespace
         if (!found || is_key != last)
           throw std::runtime_error(
             option + ": " +
-            (found ? "'" + parts[i] + "' is " + (is_key ? "a key, not a subsection" :
-                                                           "a subsection, not a key") :
-                     "no " + std::string(last ? "key" : "subsection") + " '" + parts[i] +
-                       "' " + where) +
+            (found ?
+               "'" + parts[i] + "' is " +
+                 (is_key ? "a key, not a subsection" : "a subsection, not a key") :
+               "no " + std::string(last ? "key" : "subsection") + " '" + parts[i] + "' " + where) +
             " (--print-parameters lists every subsection and key).");
         node  = found;
         where = "in subsection '";
@@ -336,10 +338,9 @@ namespace
       if (child.count("value") && child.count("default_value"))
         {
           out << pad << "# " << child.get<std::string>("documentation") << "\n"
-              << pad << "# Allowed: " << child.get<std::string>("pattern_description")
-              << "\n"
-              << pad << "set " << demangle(key) << " = "
-              << child.get<std::string>("default_value") << "\n\n";
+              << pad << "# Allowed: " << child.get<std::string>("pattern_description") << "\n"
+              << pad << "set " << demangle(key) << " = " << child.get<std::string>("default_value")
+              << "\n\n";
         }
     for (const auto &[key, child] : tree)
       if (!(child.count("value") && child.count("default_value")) && !child.empty())
@@ -352,8 +353,10 @@ namespace
 
   template <int dim>
   int
-  run(ParameterHandler &prm, const std::string &name, const std::string &directory,
-      const bool validate_only)
+  run(ParameterHandler  &prm,
+      const std::string &name,
+      const std::string &directory,
+      const bool         validate_only)
   {
     // The problem is destroyed before an error is reported, so that its
     // MPI-aware members shut down normally.
@@ -397,7 +400,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const bool                       root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   contact_fem::install_interrupt_handlers();
   try
     {
@@ -431,8 +434,8 @@ main(int argc, char **argv)
         prm.set("Output directory", cl.output_directory);
 
       // The scene name is the file name without directory and extension.
-      std::string       name = cl.prm_file.substr(cl.prm_file.find_last_of('/') + 1);
-      name                   = name.substr(0, name.find_last_of('.'));
+      std::string name        = cl.prm_file.substr(cl.prm_file.find_last_of('/') + 1);
+      name                    = name.substr(0, name.find_last_of('.'));
       const auto        slash = cl.prm_file.find_last_of('/');
       const std::string directory =
         slash == std::string::npos ? std::string(".") : cl.prm_file.substr(0, slash);

@@ -73,7 +73,7 @@ namespace
     std::vector<std::string>                         read_only, listed;
     std::vector<std::pair<std::string, std::string>> shown;
     std::string                                      keep, mask, signal_pattern;
-    int                                              signal = 0;
+    int                                              signal          = 0;
     long                                             file_size_limit = -1;
   };
 
@@ -96,9 +96,9 @@ namespace
   {
     make_writable("results");
     fs::remove_all("results");
-    Case          c;
-    std::ifstream in(prm);
-    std::string   line;
+    Case              c;
+    std::ifstream     in(prm);
+    std::string       line;
     const std::string marker = "# driver: ";
     while (std::getline(in, line))
       {
@@ -222,7 +222,7 @@ namespace
     std::string            text;
     std::array<char, 4096> buffer;
     ssize_t                n;
-    bool signalled = c.signal == 0;
+    bool                   signalled = c.signal == 0;
     while ((n = read(channel[0], buffer.data(), buffer.size())) > 0)
       {
         text.append(buffer.data(), n);
@@ -259,13 +259,13 @@ main(int argc, char **argv)
     }
   // With a signal to send, the shell is replaced by the run (exec), so
   // that the signal reaches the run itself.
-  const std::string command = std::string(c.signal != 0 ? "exec " : "") + CONTACT_FEM_EXECUTABLE + " '" + parameter_file +
-                              "' --output-directory results" + c.arguments + " 2>&1";
+  const std::string command = std::string(c.signal != 0 ? "exec " : "") + CONTACT_FEM_EXECUTABLE +
+                              " '" + parameter_file + "' --output-directory results" + c.arguments +
+                              " 2>&1";
   int         status = 0;
   std::string text   = run(command, c, status);
 
-  for (std::size_t pos = text.find(directory); pos != std::string::npos;
-       pos             = text.find(directory))
+  for (std::size_t pos = text.find(directory); pos != std::string::npos; pos = text.find(directory))
     text.replace(pos, directory.size(), "<dir>");
   if (!c.mask.empty())
     text = std::regex_replace(text, std::regex(c.mask), "...");

@@ -108,7 +108,7 @@ namespace contact_fem::Marking
   {
     // An interface face is known by the DoFs of the first component of its
     // nodes, which the cell faces of every rank can name.
-    const FiniteElement<dim> &fe = dof_handler.get_fe();
+    const FiniteElement<dim>                                    &fe = dof_handler.get_fe();
     std::map<std::vector<types::global_dof_index>, unsigned int> face_of_dofs;
     for (unsigned int i = 0; i < interface.faces.size(); ++i)
       {
@@ -145,7 +145,7 @@ namespace contact_fem::Marking
     // Refinement halves a face, so a master face is "comparable" to the
     // children of its slave face unless it is nearer (on the log scale)
     // to twice their length than to their length.
-    const double largest_ratio = std::sqrt(2.);
+    const double      largest_ratio = std::sqrt(2.);
     std::vector<bool> refine_master(interface.faces.size(), false);
     for (const auto &[slave, master] : interface.coupled_faces)
       if (slave_flagged[slave] &&
@@ -165,21 +165,23 @@ namespace contact_fem::Marking
   }
 
   template void
-  flag_cells(parallel::distributed::Triangulation<2> &, const Vector<float> &,
+  flag_cells(parallel::distributed::Triangulation<2> &,
+             const Vector<float> &,
              const RefinementParameters &);
   template void
-  flag_cells(parallel::distributed::Triangulation<3> &, const Vector<float> &,
+  flag_cells(parallel::distributed::Triangulation<3> &,
+             const Vector<float> &,
              const RefinementParameters &);
   template void
   flag_layers_behind_faces(parallel::distributed::Triangulation<2> &,
-                           const std::set<types::boundary_id> &, const unsigned int);
+                           const std::set<types::boundary_id> &,
+                           const unsigned int);
   template void
   flag_layers_behind_faces(parallel::distributed::Triangulation<3> &,
-                           const std::set<types::boundary_id> &, const unsigned int);
+                           const std::set<types::boundary_id> &,
+                           const unsigned int);
   template void
-  flag_master_faces_opposite_flagged_slave_faces(DoFHandler<2> &,
-                                                 const ContactInterface<2> &);
+  flag_master_faces_opposite_flagged_slave_faces(DoFHandler<2> &, const ContactInterface<2> &);
   template void
-  flag_master_faces_opposite_flagged_slave_faces(DoFHandler<3> &,
-                                                 const ContactInterface<3> &);
+  flag_master_faces_opposite_flagged_slave_faces(DoFHandler<3> &, const ContactInterface<3> &);
 } // namespace contact_fem::Marking

@@ -58,15 +58,15 @@ namespace contact_fem
   RefinementParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Refinement");
-    n_cycles           = prm.get_integer("Number of cycles");
-    estimator          = prm.get("Estimator");
-    strategy           = prm.get("Strategy");
-    refine_fraction    = prm.get_double("Refine fraction");
-    coarsen_fraction   = prm.get_double("Coarsen fraction");
-    contact_layers     = prm.get_integer("Contact layers");
-    max_level          = prm.get_integer("Maximum level");
-    max_cells          = prm.get_integer("Maximum cells");
-    compare_plain_spr  = prm.get_bool("Compare with plain SPR");
+    n_cycles          = prm.get_integer("Number of cycles");
+    estimator         = prm.get("Estimator");
+    strategy          = prm.get("Strategy");
+    refine_fraction   = prm.get_double("Refine fraction");
+    coarsen_fraction  = prm.get_double("Coarsen fraction");
+    contact_layers    = prm.get_integer("Contact layers");
+    max_level         = prm.get_integer("Maximum level");
+    max_cells         = prm.get_integer("Maximum cells");
+    compare_plain_spr = prm.get_bool("Compare with plain SPR");
     prm.leave_subsection();
     AssertThrow(refine_fraction + coarsen_fraction <= 1.,
                 ExcMessage("Refinement: Refine fraction + Coarsen fraction must "

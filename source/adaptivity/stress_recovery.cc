@@ -227,7 +227,7 @@ namespace contact_fem
             if (std::abs(n[i]) < std::abs(n[a]))
               a = i;
           Tensor<1, dim> e;
-          e[a] = 1.;
+          e[a]              = 1.;
           Tensor<1, dim> t0 = cross_product_3d(n, e);
           t0 /= t0.norm();
           t.push_back(t0);
@@ -242,18 +242,18 @@ namespace contact_fem
     class SPREstimator
     {
     public:
-      using Result     = typename StressRecovery<dim>::Result;
-      using Settings   = typename StressRecovery<dim>::Settings;
-      using CellIt     = typename Triangulation<dim>::active_cell_iterator;
-      using DoFCellIt  = typename DoFHandler<dim>::active_cell_iterator;
+      using Result    = typename StressRecovery<dim>::Result;
+      using Settings  = typename StressRecovery<dim>::Settings;
+      using CellIt    = typename Triangulation<dim>::active_cell_iterator;
+      using DoFCellIt = typename DoFHandler<dim>::active_cell_iterator;
 
-      SPREstimator(const Mapping<dim>                           &mapping,
-                   const DoFHandler<dim>                        &dof_handler,
-                   const TrilinosWrappers::MPI::Vector          &solution,
-                   const Materials<dim>                         &materials,
+      SPREstimator(const Mapping<dim>                          &mapping,
+                   const DoFHandler<dim>                       &dof_handler,
+                   const TrilinosWrappers::MPI::Vector         &solution,
+                   const Materials<dim>                        &materials,
                    const std::vector<ContactNodeTraction<dim>> &contact_nodes,
-                   const Settings                               &settings,
-                   VolumetricProjection<dim>                    *volumetric);
+                   const Settings                              &settings,
+                   VolumetricProjection<dim>                   *volumetric);
 
       Result
       run();
@@ -325,31 +325,31 @@ namespace contact_fem
 
       /// Stage 1: per-vertex fits in an FE_Q(1) system (layout per slot:
       /// coefficients, h, kind).
-      std::unique_ptr<FESystem<dim>>                 fe_fits;
-      DoFHandler<dim>                                dof_fits;
-      TrilinosWrappers::MPI::Vector                  fits;
+      std::unique_ptr<FESystem<dim>>                  fe_fits;
+      DoFHandler<dim>                                 dof_fits;
+      TrilinosWrappers::MPI::Vector                   fits;
       std::vector<std::pair<DoFCellIt, unsigned int>> vertex_ref;
-      unsigned int                                   fit_stride = 0;
+      unsigned int                                    fit_stride = 0;
       std::map<std::pair<unsigned int, types::material_id>, std::vector<PatchFit<dim>>>
         effective_cache;
 
       /// Stage 2: the recovered stress, FE_Q(p)^(n_slots * n_stress).
-      FE_Q<dim>                     fe_q;
+      FE_Q<dim>                      fe_q;
       std::unique_ptr<FESystem<dim>> fe_recovered;
-      DoFHandler<dim>               dof_recovered;
-      TrilinosWrappers::MPI::Vector recovered;
+      DoFHandler<dim>                dof_recovered;
+      TrilinosWrappers::MPI::Vector  recovered;
       /// See Result::node_stresses.
       std::vector<SymmetricTensor<2, dim>> node_stresses;
     };
 
     template <int dim>
-    SPREstimator<dim>::SPREstimator(const Mapping<dim>                           &mapping,
-                                    const DoFHandler<dim>                        &dof_handler,
-                                    const TrilinosWrappers::MPI::Vector          &solution,
-                                    const Materials<dim>                         &materials,
+    SPREstimator<dim>::SPREstimator(const Mapping<dim>                          &mapping,
+                                    const DoFHandler<dim>                       &dof_handler,
+                                    const TrilinosWrappers::MPI::Vector         &solution,
+                                    const Materials<dim>                        &materials,
                                     const std::vector<ContactNodeTraction<dim>> &contact_nodes,
-                                    const Settings                               &settings,
-                                    VolumetricProjection<dim>                    *volumetric)
+                                    const Settings                              &settings,
+                                    VolumetricProjection<dim>                   *volumetric)
       : mapping(mapping)
       , dof_handler(dof_handler)
       , solution(solution)
@@ -430,7 +430,7 @@ namespace contact_fem
             for (const auto &other : vertex_cells[cell->vertex_index(v)])
               if (other->material_id() != cell->material_id())
                 shared = 1;
-      shared = Utilities::MPI::max(shared, comm);
+      shared  = Utilities::MPI::max(shared, comm);
       n_slots = (shared != 0 ? bodies.size() : 1);
     }
 
@@ -455,8 +455,7 @@ namespace contact_fem
       volumetric->reinit(cell);
       for (unsigned int q = 0; q < strains.size(); ++q)
         stresses[q] =
-          materials.stress(cell->material_id(),
-                           strains[q],
+          materials.stress(cell->material_id(), strains[q],
                            volumetric->value(local_values, fe_values.get_quadrature().point(q)));
     }
 
@@ -471,11 +470,9 @@ namespace contact_fem
       // give better-determined patch fits (also on boundary patches) and
       // measured effectivities of 1.1-1.2 instead of 1.4-1.8 on the Hertz
       // scene (doc/convergence.md).
-      const QGauss<dim>                quadrature(degree == 1 ? 1 : degree + 1);
-      FEValues<dim>                    fe_values(mapping,
-                              dof_handler.get_fe(),
-                              quadrature,
-                              update_gradients | update_quadrature_points);
+      const QGauss<dim>                    quadrature(degree == 1 ? 1 : degree + 1);
+      FEValues<dim>                        fe_values(mapping, dof_handler.get_fe(), quadrature,
+                                                     update_gradients | update_quadrature_points);
       std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
 
       sample_points.assign(tria.n_active_cells(), {});
@@ -526,7 +523,7 @@ namespace contact_fem
                   {
                     if (!fe_q.has_support_on_face(k, f))
                       continue;
-                    const Point<dim> x     = mapping.transform_unit_to_real_cell(cell, unit_points[k]);
+                    const Point<dim> x = mapping.transform_unit_to_real_cell(cell, unit_points[k]);
                     Point<dim>       lower = x, upper = x;
                     for (unsigned int d = 0; d < dim; ++d)
                       {
@@ -576,7 +573,7 @@ namespace contact_fem
           fit.h = std::max(fit.h, x.distance(fit.centre));
       Assert(fit.h > 0, ExcInternalError());
 
-      const unsigned int  m = basis.size();
+      const unsigned int  m  = basis.size();
       const unsigned int  ns = n_stress<dim>;
       FullMatrix<double>  A(m, m), B(m, ns);
       std::vector<double> phi;
@@ -593,8 +590,10 @@ namespace contact_fem
                   for (unsigned int l = 0; l < m; ++l)
                     A(k, l) += phi[k] * phi[l];
                   for (unsigned int c = 0; c < ns; ++c)
-                    B(k, c) += phi[k] * sample_stress[index][q][SymmetricTensor<2, dim>::
-                                                                  unrolled_to_component_indices(c)];
+                    B(k, c) +=
+                      phi[k] *
+                      sample_stress[index][q]
+                                   [SymmetricTensor<2, dim>::unrolled_to_component_indices(c)];
                 }
               sample_phi.push_back(phi);
             }
@@ -679,7 +678,7 @@ namespace contact_fem
           if (lebesgue <= stability_limit)
             break;
         }
-      fit.kind             = (d == degree ? full_fit : reduced_fit);
+      fit.kind              = (d == degree ? full_fit : reduced_fit);
       const unsigned int md = basis.size(d);
       if (d == 0)
         {
@@ -893,11 +892,12 @@ namespace contact_fem
             {
               const unsigned int line = (k - fe_q.get_first_line_index()) / fe_q.n_dofs_per_line();
               object_vertices[k]      = {GeometryInfo<dim>::line_to_cell_vertices(line, 0),
-                                    GeometryInfo<dim>::line_to_cell_vertices(line, 1)};
+                                         GeometryInfo<dim>::line_to_cell_vertices(line, 1)};
             }
           else if (dim == 3 && k < fe_q.get_first_hex_index())
             {
-              const unsigned int face = (k - fe_q.get_first_quad_index(0)) / fe_q.n_dofs_per_quad(0);
+              const unsigned int face =
+                (k - fe_q.get_first_quad_index(0)) / fe_q.n_dofs_per_quad(0);
               for (unsigned int i = 0; i < GeometryInfo<dim>::vertices_per_face; ++i)
                 object_vertices[k].push_back(GeometryInfo<dim>::face_to_cell_vertices(face, i));
             }
@@ -912,7 +912,7 @@ namespace contact_fem
       // reached from a cell without the slave face, so the match found on
       // the cells with it is recorded per DoF).
       std::map<types::global_dof_index, std::size_t> contact_of_dof;
-      std::vector<types::global_dof_index> dof_indices(fe_recovered->n_dofs_per_cell());
+      std::vector<types::global_dof_index>           dof_indices(fe_recovered->n_dofs_per_cell());
       for (const auto &dof_cell : dof_recovered.active_cell_iterators())
         if (!dof_cell->is_artificial() && !cell_contacts[dof_cell->active_cell_index()].empty())
           {
@@ -928,8 +928,8 @@ namespace contact_fem
       node_stresses.assign(contact_nodes.size(), SymmetricTensor<2, dim>());
       std::vector<double> node_hits(contact_nodes.size(), 0.);
 
-      TrilinosWrappers::MPI::Vector        owned_values(owned, comm);
-      std::vector<bool>                    done(owned.n_elements(), false);
+      TrilinosWrappers::MPI::Vector owned_values(owned, comm);
+      std::vector<bool>             done(owned.n_elements(), false);
       for (const auto &dof_cell : dof_recovered.active_cell_iterators())
         if (dof_cell->is_locally_owned())
           {
@@ -950,10 +950,10 @@ namespace contact_fem
                   continue;
 
                 const auto [component, k] = fe_recovered->system_to_component_index(i);
-                const unsigned int slot    = component / n_stress<dim>;
-                const unsigned int c       = component % n_stress<dim>;
-                const auto         key     = std::make_pair(k, slot);
-                auto               found   = values.find(key);
+                const unsigned int slot   = component / n_stress<dim>;
+                const unsigned int c      = component % n_stress<dim>;
+                const auto         key    = std::make_pair(k, slot);
+                auto               found  = values.find(key);
                 if (found == values.end())
                   {
                     const types::material_id body =
@@ -983,9 +983,10 @@ namespace contact_fem
                           (k < GeometryInfo<dim>::vertices_per_cell ?
                              vertex_point[cell->vertex_index(k)] :
                              mapping.transform_unit_to_real_cell(cell, unit_points[k]));
-                        value = fitted(x);
+                        value              = fitted(x);
                         const auto contact = contact_of_dof.find(
-                          dof_indices[fe_recovered->component_to_system_index(slot * n_stress<dim>, k)]);
+                          dof_indices[fe_recovered->component_to_system_index(slot * n_stress<dim>,
+                                                                              k)]);
                         if (contact != contact_of_dof.end())
                           {
                             const ContactNodeTraction<dim> &node = contact_nodes[contact->second];
@@ -1035,18 +1036,13 @@ namespace contact_fem
       Result result;
       result.cell_indicators.reinit(tria.n_active_cells());
 
-      const QGauss<dim>                quadrature(degree + 2);
-      FEValues<dim>                    fe_values(mapping,
-                              dof_handler.get_fe(),
-                              quadrature,
-                              update_gradients | update_JxW_values);
-      FEValues<dim>                    fe_values_recovered(mapping,
-                                        *fe_recovered,
-                                        quadrature,
-                                        update_values);
+      const QGauss<dim> quadrature(degree + 2);
+      FEValues<dim>     fe_values(mapping, dof_handler.get_fe(), quadrature,
+                                  update_gradients | update_JxW_values);
+      FEValues<dim>     fe_values_recovered(mapping, *fe_recovered, quadrature, update_values);
       std::vector<SymmetricTensor<2, dim>> strains(quadrature.size()), stresses;
-      std::vector<Vector<double>> recovered_values(quadrature.size(),
-                                                   Vector<double>(fe_recovered->n_components()));
+      std::vector<Vector<double>>          recovered_values(quadrature.size(),
+                                                            Vector<double>(fe_recovered->n_components()));
 
       double error_squared = 0, energy = 0;
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -1058,8 +1054,8 @@ namespace contact_fem
             fe_stresses(cell, fe_values, strains, stresses);
             fe_values_recovered.get_function_values(recovered, recovered_values);
 
-            const types::material_id body = cell->material_id();
-            const unsigned int       base = slot_of(body) * n_stress<dim>;
+            const types::material_id body        = cell->material_id();
+            const unsigned int       base        = slot_of(body) * n_stress<dim>;
             double                   eta_squared = 0;
             for (unsigned int q = 0; q < quadrature.size(); ++q)
               {
@@ -1077,10 +1073,10 @@ namespace contact_fem
             error_squared += eta_squared;
           }
 
-      error_squared                = Utilities::MPI::sum(error_squared, comm);
-      energy                       = Utilities::MPI::sum(energy, comm);
-      result.estimated_error       = std::sqrt(error_squared);
-      result.solution_energy_norm  = std::sqrt(std::max(energy, 0.));
+      error_squared               = Utilities::MPI::sum(error_squared, comm);
+      energy                      = Utilities::MPI::sum(energy, comm);
+      result.estimated_error      = std::sqrt(error_squared);
+      result.solution_energy_norm = std::sqrt(std::max(energy, 0.));
       if (result.solution_energy_norm > 0)
         result.relative_error = result.estimated_error / result.solution_energy_norm;
       else
@@ -1106,16 +1102,16 @@ namespace contact_fem
 
   template <int dim>
   typename StressRecovery<dim>::Result
-  StressRecovery<dim>::estimate(const Mapping<dim>                           &mapping,
-                                const DoFHandler<dim>                        &dof_handler,
-                                const TrilinosWrappers::MPI::Vector          &solution,
-                                const Materials<dim>                         &materials,
+  StressRecovery<dim>::estimate(const Mapping<dim>                          &mapping,
+                                const DoFHandler<dim>                       &dof_handler,
+                                const TrilinosWrappers::MPI::Vector         &solution,
+                                const Materials<dim>                        &materials,
                                 const std::vector<ContactNodeTraction<dim>> &contact_nodes,
-                                const Settings                               &settings,
-                                VolumetricProjection<dim>                    *volumetric)
+                                const Settings                              &settings,
+                                VolumetricProjection<dim>                   *volumetric)
   {
-    SPREstimator<dim> estimator(
-      mapping, dof_handler, solution, materials, contact_nodes, settings, volumetric);
+    SPREstimator<dim> estimator(mapping, dof_handler, solution, materials, contact_nodes, settings,
+                                volumetric);
     return estimator.run();
   }
 

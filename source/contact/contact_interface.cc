@@ -53,10 +53,10 @@ namespace contact_fem
                 for (unsigned int d = 0; d < dim; ++d)
                   {
                     node.reference[d] = data[d];
-                    node.dofs[d] = static_cast<types::global_dof_index>(data[dim + d]);
-                    node.fixed[d] = data[2 * dim + d] > 0.5;
+                    node.dofs[d]      = static_cast<types::global_dof_index>(data[dim + d]);
+                    node.fixed[d]     = data[2 * dim + d] > 0.5;
                   }
-                const auto it = node_of_dof.find(node.dofs[0]);
+                const auto   it = node_of_dof.find(node.dofs[0]);
                 unsigned int index;
                 if (it == node_of_dof.end())
                   {
@@ -122,9 +122,9 @@ namespace contact_fem
                                     const Materials<dim>            &materials,
                                     const MPI_Comm                   comm)
   {
-    pairs        = contact_pairs;
-    communicator = comm;
-    owned_dofs   = dof_handler.locally_owned_dofs();
+    pairs                        = contact_pairs;
+    communicator                 = comm;
+    owned_dofs                   = dof_handler.locally_owned_dofs();
     const FiniteElement<dim> &fe = dof_handler.get_fe();
     degree                       = fe.degree;
     geometry_degree              = std::max(degree, mapping.get_degree());
@@ -133,8 +133,11 @@ namespace contact_fem
     // mapping.
     AssertThrow(geometry_degree == degree || (degree == 1 && geometry_degree == 2),
                 ExcMessage("Contact: the geometry of the contact faces (degree " +
-                           std::to_string(geometry_degree) + ") may exceed the element "
-                           "degree (" + std::to_string(degree) + ") only for degree-1 "
+                           std::to_string(geometry_degree) +
+                           ") may exceed the element "
+                           "degree (" +
+                           std::to_string(degree) +
+                           ") only for degree-1 "
                            "elements on a quadratic mapping (Finite element/Mapping "
                            "degree = 2 or auto)."));
     const unsigned int nodes_per_face = fe.n_dofs_per_face() / dim;
@@ -147,7 +150,7 @@ namespace contact_fem
     // Support points of the base element on a face, in face DoF order.
     const Quadrature<dim - 1> support(fe.base_element(0).get_unit_face_support_points());
     FEFaceValues<dim>         fe_face(mapping, fe, support,
-                              update_quadrature_points | update_normal_vectors);
+                                      update_quadrature_points | update_normal_vectors);
     // The geometry points in the kernels' node order, in 3D after the
     // vertices, to check that they follow the orientation of the face as
     // its support points do (a midpoint of a line has no orientation).
@@ -161,8 +164,9 @@ namespace contact_fem
         }
     std::unique_ptr<FEFaceValues<dim>> fe_face_geometry;
     if (n_geometry_points > 0)
-      fe_face_geometry = std::make_unique<FEFaceValues<dim>>(
-        mapping, fe, Quadrature<dim - 1>(geometry_nodes), update_quadrature_points);
+      fe_face_geometry =
+        std::make_unique<FEFaceValues<dim>>(mapping, fe, Quadrature<dim - 1>(geometry_nodes),
+                                            update_quadrature_points);
 
     // Pack the local faces: [pair, slave, E, nu, orientation, then per node:
     // coordinates, dofs, fixed flags].
@@ -180,11 +184,10 @@ namespace contact_fem
                     continue;
                   fe_face.reinit(cell, f);
                   cell->face(f)->get_dof_indices(face_dofs);
-                  std::vector<std::array<types::global_dof_index, dim>> node_dofs(
-                    nodes_per_face);
+                  std::vector<std::array<types::global_dof_index, dim>> node_dofs(nodes_per_face);
                   for (unsigned int i = 0; i < face_dofs.size(); ++i)
                     {
-                      const auto ci = fe.face_system_to_component_index(i, f);
+                      const auto ci                  = fe.face_system_to_component_index(i, f);
                       node_dofs[ci.second][ci.first] = face_dofs[i];
                     }
                   const double dot = outward_orientation(fe_face, cell->face(f), nodes_per_face);
@@ -202,10 +205,9 @@ namespace contact_fem
                         packed.push_back(static_cast<double>(node_dofs[k][d]));
                       for (unsigned int d = 0; d < dim; ++d)
                         {
-                          const auto dof = node_dofs[k][d];
-                          const bool fixed =
-                            dirichlet.is_constrained(dof) &&
-                            dirichlet.get_constraint_entries(dof)->empty();
+                          const auto dof   = node_dofs[k][d];
+                          const bool fixed = dirichlet.is_constrained(dof) &&
+                                             dirichlet.get_constraint_entries(dof)->empty();
                           packed.push_back(fixed ? 1. : 0.);
                         }
                     }
@@ -218,8 +220,7 @@ namespace contact_fem
                                       1e-10 * cell->face(f)->diameter(),
                                     ExcMessage("Contact: the geometry points of a contact "
                                                "face are not in the order of its nodes."));
-                      for (unsigned int k = nodes_per_face;
-                           k < nodes_per_face + n_geometry_points;
+                      for (unsigned int k = nodes_per_face; k < nodes_per_face + n_geometry_points;
                            ++k)
                         for (unsigned int d = 0; d < dim; ++d)
                           packed.push_back(
@@ -280,8 +281,7 @@ namespace contact_fem
           if (parent == node_of_dof.end())
             {
               std::ostringstream message;
-              message << "Contact: a hanging vertex of a contact surface at ("
-                      << nodes[n].reference
+              message << "Contact: a hanging vertex of a contact surface at (" << nodes[n].reference
                       << ") depends on a node that is not on a contact surface: the coarser "
                          "neighbour face lies outside the contact boundary. Refine so that the "
                          "rim of the contact boundary has no hanging vertices, or extend the "
@@ -348,7 +348,9 @@ namespace contact_fem
   std::vector<double>
   ContactInterface<dim>::gather(const TrilinosWrappers::MPI::Vector &v) const
   {
-    return gather([&v](const types::global_dof_index i) { return v(i); });
+    return gather([&v](const types::global_dof_index i) {
+      return v(i);
+    });
   }
 
   template <int dim>
@@ -362,15 +364,13 @@ namespace contact_fem
         values[i] = value_on_owner(interface_dofs[i]);
     // Each value has exactly one owner, so the sum is exact.
     std::vector<double> result(values.size());
-    Utilities::MPI::sum(ArrayView<const double>(values), communicator,
-                        ArrayView<double>(result));
+    Utilities::MPI::sum(ArrayView<const double>(values), communicator, ArrayView<double>(result));
     return result;
   }
 
   template <int dim>
   Tensor<1, dim>
-  ContactInterface<dim>::displacement(const unsigned int         n,
-                                      const std::vector<double> &u) const
+  ContactInterface<dim>::displacement(const unsigned int n, const std::vector<double> &u) const
   {
     Tensor<1, dim> result;
     for (unsigned int d = 0; d < dim; ++d)
@@ -390,8 +390,7 @@ namespace contact_fem
 
   template <int dim>
   typename ContactInterface<dim>::FaceGeometry
-  ContactInterface<dim>::face_geometry(const Face                        &face,
-                                       const std::vector<Tensor<1, dim>> &u) const
+  ContactInterface<dim>::face_geometry(const Face &face, const std::vector<Tensor<1, dim>> &u) const
   {
     using Kernel = Mortar::Kernel<dim>;
     FaceGeometry result;
@@ -454,12 +453,11 @@ namespace contact_fem
   template <int dim>
   bool
   ContactInterface<dim>::add_constrained_face(
-    const unsigned int f,
-    const std::vector<std::pair<unsigned int, typename Mortar::Kernel<dim>::Operators>>
-                                                           &segments,
-    std::map<unsigned int, SlaveNode>                      &slave_data,
-    std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
-    std::map<unsigned int, Tensor<1, dim>>                 &weighted_gap_of_node)
+    const unsigned int                                                                   f,
+    const std::vector<std::pair<unsigned int, typename Mortar::Kernel<dim>::Operators>> &segments,
+    std::map<unsigned int, SlaveNode>                                                   &slave_data,
+    std::map<unsigned int, std::map<unsigned int, double>>                              &M_of_node,
+    std::map<unsigned int, Tensor<1, dim>> &weighted_gap_of_node)
   {
     const std::vector<unsigned int> &local = faces[f].nodes;
     const bool has_hanging_vertex          = std::any_of(local.begin(), local.end(), [&](auto n) {
@@ -503,8 +501,9 @@ namespace contact_fem
     for (const double d : D)
       D_sum += std::abs(d);
     constexpr double least_nodal_weight = 1e-12;
-    if (std::any_of(D.begin(), D.end(),
-                    [&](const double d) { return std::abs(d) <= least_nodal_weight * D_sum; }))
+    if (std::any_of(D.begin(), D.end(), [&](const double d) {
+          return std::abs(d) <= least_nodal_weight * D_sum;
+        }))
       return false;
 
     // The dual functions of the owners, Psi~_q = sum_a S(q, a) Psi_a, are
@@ -611,10 +610,9 @@ namespace contact_fem
     for (const auto &face : faces)
       for (const unsigned int n : face.nodes)
         {
-          const double change =
-            (displacement(n, to) - displacement(n, from)).norm();
-          double &largest = face.slave ? slave_motion[face.pair] : master_motion[face.pair];
-          largest         = std::max(largest, change);
+          const double change  = (displacement(n, to) - displacement(n, from)).norm();
+          double      &largest = face.slave ? slave_motion[face.pair] : master_motion[face.pair];
+          largest              = std::max(largest, change);
         }
     for (unsigned int p = 0; p < pairs.size(); ++p)
       slave_motion[p] += master_motion[p];
@@ -630,8 +628,7 @@ namespace contact_fem
 
   template <int dim>
   double
-  ContactInterface<dim>::slip_since_search(const SlaveNode           &s,
-                                           const std::vector<double> &u) const
+  ContactInterface<dim>::slip_since_search(const SlaveNode &s, const std::vector<double> &u) const
   {
     const auto change = [&](const unsigned int n) {
       return displacement(n, u) - displacement(n, search_displacement);

@@ -39,9 +39,9 @@ namespace contact_fem
           {
             const unsigned int n    = faces[f].nodes[k];
             auto &[normal, modulus] = result[n];
-            normal += measures[f] * Mortar::face_normal(geometries[f],
-                                                        Kernel::node_parameter(degree, k),
-                                                        faces[f].orientation);
+            normal +=
+              measures[f] * Mortar::face_normal(geometries[f], Kernel::node_parameter(degree, k),
+                                                faces[f].orientation);
             modulus += measures[f] * faces[f].youngs_modulus /
                        (1. - faces[f].poisson_ratio * faces[f].poisson_ratio);
             measure_of_node[n] += measures[f];
@@ -145,7 +145,7 @@ namespace contact_fem
     using Kernel = Mortar::Kernel<dim>;
     // Broad phase: an R-tree of the master face boxes, with a margin so
     // that touching boxes of flat faces meet.
-    constexpr double master_box_margin = 1e-2;
+    constexpr double                                       master_box_margin = 1e-2;
     std::vector<std::pair<BoundingBox<dim>, unsigned int>> master_boxes;
     for (unsigned int f = 0; f < faces.size(); ++f)
       if (!faces[f].slave && faces[f].pair == p)
@@ -169,8 +169,9 @@ namespace contact_fem
         reach_of_search[p] = std::min(reach_of_search[p], reach);
         std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
         tree.query(boost::geometry::index::intersects(box), std::back_inserter(hits));
-        std::sort(hits.begin(), hits.end(),
-                  [](const auto &a, const auto &b) { return a.second < b.second; });
+        std::sort(hits.begin(), hits.end(), [](const auto &a, const auto &b) {
+          return a.second < b.second;
+        });
 
         // Narrow phase: opposing normals, then the overlaps, on which the
         // dual basis of the slave face is built (the part the masters
@@ -180,13 +181,13 @@ namespace contact_fem
           normals.push_back(slave_data.at(n).normal);
         const Tensor<1, dim> n_slave =
           Mortar::face_normal(geometries[f], Kernel::centre(), faces[f].orientation);
-        std::vector<unsigned int>   masters, facing;
-        typename Kernel::Overlaps   overlaps;
+        std::vector<unsigned int> masters, facing;
+        typename Kernel::Overlaps overlaps;
         for (const auto &hit : hits)
           {
             const unsigned int m = hit.second;
-            if (!(n_slave * Mortar::face_normal(geometries[m], Kernel::centre(),
-                                                faces[m].orientation) <
+            if (!(n_slave *
+                    Mortar::face_normal(geometries[m], Kernel::centre(), faces[m].orientation) <
                   0.))
               continue;
             facing.push_back(m);
@@ -202,8 +203,7 @@ namespace contact_fem
           {
             typename Kernel::Operators ops;
             if (!Mortar::integrate_pair(geometries[f], normals, A, geometries[m],
-                                        Mortar::n_quadrature_points(geometries[f],
-                                                                    geometries[m]),
+                                        Mortar::n_quadrature_points(geometries[f], geometries[m]),
                                         ops))
               continue;
             master_is_candidate[m] = true;
@@ -253,15 +253,15 @@ namespace contact_fem
      */
     template <int dim, class Tree>
     std::tuple<unsigned int, typename Mortar::Kernel<dim>::Parameter, double>
-    closest_point(const Tree                                              &tree,
+    closest_point(const Tree                                            &tree,
                   const std::vector<typename Mortar::Kernel<dim>::Face> &geometries,
-                  const Point<dim>                                        &x)
+                  const Point<dim>                                      &x)
     {
       std::vector<std::pair<BoundingBox<dim>, unsigned int>> nearest;
       tree.query(boost::geometry::index::nearest(x, 1), std::back_inserter(nearest));
-      const auto  &first    = geometries[nearest[0].second];
-      const auto   first_xi = Mortar::closest_parameter(first, x);
-      const double bound    = x.distance(first.point(first_xi));
+      const auto      &first    = geometries[nearest[0].second];
+      const auto       first_xi = Mortar::closest_parameter(first, x);
+      const double     bound    = x.distance(first.point(first_xi));
       BoundingBox<dim> around(std::make_pair(x, x));
       around.extend(bound * (1. + 1e-12) + 1e-300);
       std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
@@ -294,7 +294,7 @@ namespace contact_fem
                                            const std::vector<double>    &u_at_dofs) const
   {
     using Kernel = Mortar::Kernel<dim>;
-    std::vector<double> distances(points.size(), std::numeric_limits<double>::infinity());
+    std::vector<double>         distances(points.size(), std::numeric_limits<double>::infinity());
     std::vector<Tensor<1, dim>> u(nodes.size());
     for (unsigned int n = 0; n < nodes.size(); ++n)
       u[n] = displacement(n, u_at_dofs);
@@ -302,7 +302,7 @@ namespace contact_fem
     // nodes; in 2D an edge is a vertex): a closest point on an edge with
     // one face, or on a vertex of such an edge, lies on the rim of the
     // master surface.
-    std::vector<std::vector<unsigned int>>                        master_faces_of_node(nodes.size());
+    std::vector<std::vector<unsigned int>> master_faces_of_node(nodes.size());
     std::map<std::pair<unsigned int, unsigned int>, unsigned int> faces_of_edge;
     std::vector<FaceGeometry>                                     geometries(faces.size());
     for (unsigned int f = 0; f < faces.size(); ++f)
@@ -334,10 +334,10 @@ namespace contact_fem
             const SlaveNode &s = points[i];
             if (s.pair != p)
               continue;
-            const Point<dim> x = nodes[s.node].reference + u[s.node];
+            const Point<dim> x                    = nodes[s.node].reference + u[s.node];
             const auto [best_face, best_xi, best] = closest_point<dim>(tree, geometries, x);
-            const FaceGeometry  &face = geometries[best_face];
-            const Tensor<1, dim> r    = x - face.point(best_xi);
+            const FaceGeometry  &face             = geometries[best_face];
+            const Tensor<1, dim> r                = x - face.point(best_xi);
             Tensor<1, dim>       normal;
             if (Kernel::inside(best_xi))
               normal = Mortar::face_normal(face, best_xi, faces[best_face].orientation);
@@ -347,8 +347,9 @@ namespace contact_fem
                 std::vector<unsigned int> vertices;
                 for (const unsigned int k : Kernel::boundary_vertices(best_xi))
                   vertices.push_back(faces[best_face].nodes[k]);
-                if (std::any_of(vertices.begin(), vertices.end(),
-                                [&](const unsigned int v) { return rim_vertices.count(v); }))
+                if (std::any_of(vertices.begin(), vertices.end(), [&](const unsigned int v) {
+                      return rim_vertices.count(v);
+                    }))
                   {
                     // On the rim of the master surface: beyond it in 2D (a
                     // rim vertex); in 3D a distance only if the node lies

@@ -51,16 +51,15 @@ namespace contact_fem
         return;
       const unsigned int node = faces[masters[k]].nodes[end];
       for (const unsigned int m : facing)
-        AssertThrow(m == masters[k] ||
-                      std::find(faces[m].nodes.begin(), faces[m].nodes.begin() + 2, node) ==
-                        faces[m].nodes.begin() + 2,
-                    ExcMessage("Contact pair " + std::to_string(faces[f].pair) +
-                               ": the master faces leave a hole under the slave face from " +
-                               coordinates_text(lines[f].nodes[0]) + " to " +
-                               coordinates_text(lines[f].nodes[1]) +
-                               " at the master node " + coordinates_text(x) +
-                               ", inside the master surface. The mortar segmentation "
-                               "lost a face; the contact pressures would be wrong."));
+        AssertThrow(m == masters[k] || std::find(faces[m].nodes.begin(), faces[m].nodes.begin() + 2,
+                                                      node) == faces[m].nodes.begin() + 2,
+                         ExcMessage("Contact pair " + std::to_string(faces[f].pair) +
+                                    ": the master faces leave a hole under the slave face from " +
+                                    coordinates_text(lines[f].nodes[0]) + " to " +
+                                    coordinates_text(lines[f].nodes[1]) + " at the master node " +
+                                    coordinates_text(x) +
+                                    ", inside the master surface. The mortar segmentation "
+                                         "lost a face; the contact pressures would be wrong."));
     };
     // Overlaps meet at the slave image of their shared master node up to
     // the precision of that image.
@@ -97,7 +96,8 @@ namespace contact_fem
       };
       const auto point_to_segment = [](const Point<2> &x, const Point<2> &p, const Point<2> &q) {
         const Tensor<1, 2> d = q - p;
-        const double t = d.norm_square() > 0. ? std::clamp((x - p) * d / d.norm_square(), 0., 1.) : 0.;
+        const double       t =
+          d.norm_square() > 0. ? std::clamp((x - p) * d / d.norm_square(), 0., 1.) : 0.;
         return x.distance(p + t * d);
       };
       // Inside: on the same side of every edge.
@@ -127,11 +127,11 @@ namespace contact_fem
 
   template <>
   void
-  ContactInterface<3>::check_tiling(const unsigned int                           f,
-                                    const std::vector<Mortar::QuadFace>         &quads,
-                                    const std::vector<unsigned int>             &masters,
-                                    const Mortar::Kernel<3>::Overlaps           &polygons,
-                                    const std::vector<unsigned int>             &facing) const
+  ContactInterface<3>::check_tiling(const unsigned int                   f,
+                                    const std::vector<Mortar::QuadFace> &quads,
+                                    const std::vector<unsigned int>     &masters,
+                                    const Mortar::Kernel<3>::Overlaps   &polygons,
+                                    const std::vector<unsigned int>     &facing) const
   {
     // Neighbouring overlap polygons share their vertices (the slave images
     // of the same clipped points), so where the facing master faces cover
@@ -140,20 +140,21 @@ namespace contact_fem
     // than its diameter: the master is a graph over it) and no rim edge of
     // the facing master faces (an edge only one of them has; also where
     // they meet a hanging vertex) comes within its diameter.
-    const Mortar::QuadFace &slave    = quads[f];
+    const Mortar::QuadFace &slave = quads[f];
     const Point<2>          centre;
-    const Point<3>          middle   = slave.point(centre);
-    const double            diameter = std::max(slave.nodes[0].distance(slave.nodes[3]),
-                                     slave.nodes[1].distance(slave.nodes[2]));
+    const Point<3>          middle = slave.point(centre);
+    const double            diameter =
+      std::max(slave.nodes[0].distance(slave.nodes[3]), slave.nodes[1].distance(slave.nodes[2]));
     bool near = false;
     for (const unsigned int m : masters)
       {
         Point<2> eta;
-        near = near || (Mortar::project_along(quads[m], middle,
-                                              Mortar::face_normal(slave, centre, faces[f].orientation),
-                                              eta) &&
-                        std::abs(eta[0]) <= 1. && std::abs(eta[1]) <= 1. &&
-                        quads[m].point(eta).distance(middle) < diameter);
+        near =
+          near ||
+          (Mortar::project_along(quads[m], middle,
+                                 Mortar::face_normal(slave, centre, faces[f].orientation), eta) &&
+           std::abs(eta[0]) <= 1. && std::abs(eta[1]) <= 1. &&
+           quads[m].point(eta).distance(middle) < diameter);
       }
     if (!near)
       return;
@@ -163,18 +164,20 @@ namespace contact_fem
     Tensor<1, 3>       e1 = slave.tangents(centre)[0];
     e1 -= (e1 * n) * n;
     e1 /= e1.norm();
-    const Tensor<1, 3> e2 = cross_product_3d(n, e1);
-    const auto in_plane = [&](const Point<3> &x) {
+    const Tensor<1, 3> e2       = cross_product_3d(n, e1);
+    const auto         in_plane = [&](const Point<3> &x) {
       return Point<2>((x - middle) * e1, (x - middle) * e2);
     };
     std::vector<Point<2>> ring;
     for (const unsigned int v : {0, 1, 3, 2})
       ring.push_back(in_plane(slave.nodes[v]));
     // Per vertex edge of the facing faces: how many of them have it.
-    std::map<std::pair<unsigned int, unsigned int>, std::pair<unsigned int, std::array<Point<3>, 2>>>
+    std::map<std::pair<unsigned int, unsigned int>,
+             std::pair<unsigned int, std::array<Point<3>, 2>>>
       edges;
     for (const unsigned int m : facing)
-      for (const auto &[a, b] : {std::pair(0, 1), std::pair(2, 3), std::pair(0, 2), std::pair(1, 3)})
+      for (const auto &[a, b] :
+           {std::pair(0, 1), std::pair(2, 3), std::pair(0, 2), std::pair(1, 3)})
         {
           auto &edge = edges[std::minmax(faces[m].nodes[a], faces[m].nodes[b])];
           ++edge.first;
@@ -184,9 +187,8 @@ namespace contact_fem
     // face (curved faces bulge beyond their vertices) may bound a part that
     // is rightly uncovered.
     for (const auto &[key, edge] : edges)
-      if (edge.first == 1 &&
-          planar_distance(in_plane(edge.second[0]), in_plane(edge.second[1]), ring) <
-            0.1 * diameter)
+      if (edge.first == 1 && planar_distance(in_plane(edge.second[0]), in_plane(edge.second[1]),
+                                             ring) < 0.1 * diameter)
         return;
 
     double area = 0.;

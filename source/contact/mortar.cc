@@ -124,9 +124,7 @@ namespace contact_fem
 
       /// Gauss rule on [-1, 1] (weights sum to 2).
       void
-      gauss_rule(const unsigned int   n,
-                 std::vector<double> &points,
-                 std::vector<double> &weights)
+      gauss_rule(const unsigned int n, std::vector<double> &points, std::vector<double> &weights)
       {
         const QGauss<1> q(n);
         points.resize(n);
@@ -140,10 +138,10 @@ namespace contact_fem
     } // namespace
 
     FullMatrix<double>
-    dual_basis_coefficients(const LineFace                                &slave,
+    dual_basis_coefficients(const LineFace                               &slave,
                             const std::vector<std::pair<double, double>> &intervals)
     {
-      const unsigned int  p = slave.shape_degree(), n = p + 1;
+      const unsigned int p = slave.shape_degree(), n = p + 1;
       // Exact for straight faces; curved faces have a non-polynomial
       // Jacobian, hence the generous rule.
       std::vector<double> xg, wg;
@@ -204,7 +202,7 @@ namespace contact_fem
         if (fa == 0.)
           return a;
         constexpr double epsilon = std::numeric_limits<double>::epsilon();
-        double x = 0.5 * (a + b), step = std::abs(b - a), step_before = step;
+        double           x = 0.5 * (a + b), step = std::abs(b - a), step_before = step;
         for (unsigned int it = 0; it < 200; ++it)
           {
             const auto [fx, dfx] = f(x);
@@ -259,8 +257,7 @@ namespace contact_fem
               return std::make_pair(line_offset(face, x, direction, e),
                                     cross(face.tangent(e), direction));
             },
-            -1.,
-            1.);
+            -1., 1.);
           return true;
         }
       // No crossing (a curved face may also be crossed twice, which the
@@ -276,7 +273,7 @@ namespace contact_fem
       /// (x - s(xi)) x n(xi), s the slave face, n its interpolated nodal
       /// normal, and its derivative; differences formed as in line_offset().
       std::pair<double, double>
-      normal_line_offset(const LineFace                   &slave,
+      normal_line_offset(const LineFace                  &slave,
                          const std::vector<Tensor<1, 2>> &normals,
                          const Point<2>                  &x,
                          const double                     xi)
@@ -299,9 +296,13 @@ namespace contact_fem
       /// (a master end inside the slave's shadow). At round-off distance of
       /// an end line the nearer end is the answer.
       double
-      slave_image(const LineFace &slave, const std::vector<Tensor<1, 2>> &normals, const Point<2> &x)
+      slave_image(const LineFace                  &slave,
+                  const std::vector<Tensor<1, 2>> &normals,
+                  const Point<2>                  &x)
       {
-        const auto f = [&](const double xi) { return normal_line_offset(slave, normals, x, xi); };
+        const auto f = [&](const double xi) {
+          return normal_line_offset(slave, normals, x, xi);
+        };
         const double g_begin = f(-1.).first, g_end = f(1.).first;
         if ((g_begin < 0.) == (g_end < 0.) && g_begin != 0. && g_end != 0.)
           return std::abs(g_begin) < std::abs(g_end) ? -1. : 1.;
@@ -310,11 +311,11 @@ namespace contact_fem
     } // namespace
 
     bool
-    overlap(const LineFace                   &slave,
+    overlap(const LineFace                  &slave,
             const std::vector<Tensor<1, 2>> &slave_normals,
-            const LineFace                   &master,
-            double                           &lower,
-            double                           &upper,
+            const LineFace                  &master,
+            double                          &lower,
+            double                          &upper,
             std::array<int, 2>              *bounding_master_ends)
     {
       // Where do the slave ends land on the master? The map xi -> eta is
@@ -326,11 +327,10 @@ namespace contact_fem
       if (!project_along(master, slave.nodes[0], slave_normals[0], eta_a) ||
           !project_along(master, slave.nodes[1], slave_normals[1], eta_b))
         return false;
-      if (std::max(eta_a, eta_b) <= -1. || std::min(eta_a, eta_b) >= 1. ||
-          eta_a == eta_b)
+      if (std::max(eta_a, eta_b) <= -1. || std::min(eta_a, eta_b) >= 1. || eta_a == eta_b)
         return false;
-      lower = -1.;
-      upper = 1.;
+      lower                   = -1.;
+      upper                   = 1.;
       std::array<int, 2> ends = {{-1, -1}};
       for (const int end : {0, 1})
         {
@@ -359,12 +359,12 @@ namespace contact_fem
     }
 
     bool
-    integrate_pair(const LineFace                   &slave,
+    integrate_pair(const LineFace                  &slave,
                    const std::vector<Tensor<1, 2>> &slave_normals,
                    const FullMatrix<double>        &dual_coefficients,
-                   const LineFace                   &master,
-                   const unsigned int                n_quadrature_points,
-                   SegmentOperators                 &result)
+                   const LineFace                  &master,
+                   const unsigned int               n_quadrature_points,
+                   SegmentOperators                &result)
     {
       const unsigned int ps = slave.shape_degree(), pm = master.shape_degree();
       double             lower = -1., upper = 1.;
@@ -403,12 +403,11 @@ namespace contact_fem
                                  "project onto the master face from " +
                                  coordinates_text(master.nodes[0]) + " to " +
                                  coordinates_text(master.nodes[1]) + "."));
-          eta = std::max(-1., std::min(1., eta));
+          eta                           = std::max(-1., std::min(1., eta));
           const Tensor<1, 2> separation = master.point(eta) - x_slave;
 
           result.overlap_length += jxw;
-          add_quadrature_point<2>(dual_coefficients, ps, pm, xi, eta, jxw, separation, phi,
-                                  result);
+          add_quadrature_point<2>(dual_coefficients, ps, pm, xi, eta, jxw, separation, phi, result);
         }
       return result.overlap_length > 0.;
     }
@@ -417,18 +416,18 @@ namespace contact_fem
     closest_parameter(const LineFace &face, const Point<2> &x)
     {
       const Tensor<1, 2> chord = face.nodes[1] - face.nodes[0];
-      double xi = std::clamp(2. * ((x - face.nodes[0]) * chord) / chord.norm_square() - 1.,
-                             -1., 1.);
+      double             xi =
+        std::clamp(2. * ((x - face.nodes[0]) * chord) / chord.norm_square() - 1., -1., 1.);
       if (face.degree() == 1)
         return xi;
       for (unsigned int it = 0; it < 20; ++it)
         {
-          const Tensor<1, 2> t    = face.tangent(xi);
-          const double       step = ((x - face.point(xi)) * t) / t.norm_square();
-          const double       next = std::clamp(xi + step, -1., 1.);
+          const Tensor<1, 2> t                   = face.tangent(xi);
+          const double       step                = ((x - face.point(xi)) * t) / t.norm_square();
+          const double       next                = std::clamp(xi + step, -1., 1.);
           constexpr double   parameter_tolerance = 1e-12;
-          const bool         done = std::abs(next - xi) < parameter_tolerance;
-          xi                      = next;
+          const bool         done                = std::abs(next - xi) < parameter_tolerance;
+          xi                                     = next;
           if (done)
             break;
         }

@@ -24,8 +24,8 @@ namespace contact_fem
         if (p == 1)
           return {{i % 2, i / 2}};
         // Vertices, the lines x = -1, x = 1, y = -1, y = 1, the centre.
-        static const unsigned int q2[9][2] = {
-          {0, 0}, {1, 0}, {0, 1}, {1, 1}, {0, 2}, {1, 2}, {2, 0}, {2, 1}, {2, 2}};
+        static const unsigned int q2[9][2] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {0, 2},
+                                              {1, 2}, {2, 0}, {2, 1}, {2, 2}};
         return {{q2[i][0], q2[i][1]}};
       }
 
@@ -231,8 +231,7 @@ namespace contact_fem
         for (unsigned int k = 0; k < ring.size(); ++k)
           {
             const unsigned int i = ring[k], j = ring[(k + 1) % ring.size()];
-            chords.push_back({plane.coordinates(slave.nodes[i]),
-                              plane.coordinates(slave.nodes[j]),
+            chords.push_back({plane.coordinates(slave.nodes[i]), plane.coordinates(slave.nodes[j]),
                               quad_node_parameter(slave.degree(), i),
                               quad_node_parameter(slave.degree(), j)});
           }
@@ -265,7 +264,7 @@ namespace contact_fem
                     Point<2>             &xi)
       {
         const Tensor<1, 2> c = chord.b - chord.a, d = other - u, dxi = chord.xi_b - chord.xi_a;
-        const auto fraction = [&](const Point<2> &x) {
+        const auto         fraction = [&](const Point<2> &x) {
           return ((x - chord.a) * c) / c.norm_square();
         };
         const auto side = [&](const double s) {
@@ -276,7 +275,7 @@ namespace contact_fem
         if (side(end) == inner)
           return false;
         constexpr unsigned int n_scan = 32;
-        double                 lower  = start, upper = end;
+        double                 lower = start, upper = end;
         for (unsigned int i = 1; i <= n_scan; ++i)
           {
             const double s = start + (end - start) * i / n_scan;
@@ -289,7 +288,7 @@ namespace contact_fem
           }
         while (std::abs(upper - lower) > 1e-15)
           {
-            const double middle = 0.5 * (lower + upper);
+            const double middle                     = 0.5 * (lower + upper);
             (side(middle) == inner ? lower : upper) = middle;
           }
         // dxi is zero in the edge's fixed parameter, which stays exactly +-1.
@@ -381,9 +380,8 @@ namespace contact_fem
                         // Plane area to slave area: |t_xi x t_eta| / |n0 . (t_xi x t_eta)|.
                         const auto         t  = slave.tangents(xi);
                         const Tensor<1, 3> nt = cross_product_3d(t[0], t[1]);
-                        f(xi,
-                          gauss.weight(i) * gauss.weight(j) * u * det * nt.norm() /
-                            std::abs(nt * plane.normal));
+                        f(xi, gauss.weight(i) * gauss.weight(j) * u * det * nt.norm() /
+                                std::abs(nt * plane.normal));
                       }
                   }
               }
@@ -538,9 +536,9 @@ namespace contact_fem
       std::vector<Tensor<1, 3>> offsets(face.nodes.size());
       for (unsigned int i = 0; i < face.nodes.size(); ++i)
         offsets[i] = face.nodes[i] - x;
-      eta               = Point<2>();
-      double t          = 0.;
-      double last_step  = std::numeric_limits<double>::max();
+      eta              = Point<2>();
+      double t         = 0.;
+      double last_step = std::numeric_limits<double>::max();
       for (unsigned int it = 0; it < 30; ++it)
         {
           const auto   tangents = face.tangents(eta);
@@ -565,7 +563,7 @@ namespace contact_fem
             return false;
           // Converged at a step of round-off size, or where the step stops
           // shrinking at a size that only round-off explains.
-          const double size = std::abs(step[0]) + std::abs(step[1]);
+          const double     size      = std::abs(step[0]) + std::abs(step[1]);
           constexpr double round_off = 64. * std::numeric_limits<double>::epsilon();
           if (size < 1e-13 ||
               (size < round_off * (1. + std::abs(eta[0]) + std::abs(eta[1])) * 1e3 &&
@@ -646,9 +644,8 @@ namespace contact_fem
                   if (!on_line(u) || !(fraction > 1e-10 && fraction < 1. - 1e-10) ||
                       on_line(prev) == on_line(next))
                     continue;
-                  on_edge = on_line(prev) ?
-                              edge_crossing(slave, plane, chord, u, prev, next, xi) :
-                              edge_crossing(slave, plane, chord, u, next, prev, xi);
+                  on_edge = on_line(prev) ? edge_crossing(slave, plane, chord, u, prev, next, xi) :
+                                            edge_crossing(slave, plane, chord, u, next, prev, xi);
                   break;
                 }
               if (!on_edge && !project_along(slave, plane.point(u), plane.normal, xi))
@@ -700,18 +697,20 @@ namespace contact_fem
       result.M.reinit(ns, nm);
       result.overlap_area = 0.;
 
-      std::vector<double> phi(ns);
-      const AuxiliaryPlane plane = auxiliary_plane(slave, slave_normals);
-      const auto add_point = [&](const Point<2> &xi, const double jxw) {
+      std::vector<double>  phi(ns);
+      const AuxiliaryPlane plane     = auxiliary_plane(slave, slave_normals);
+      const auto           add_point = [&](const Point<2> &xi, const double jxw) {
         const Point<3> x_slave = slave.point(xi);
         Point<2>       eta;
         // The overlap's points project onto the master: a failure here is
         // not a geometric fact, and skipping the point would shrink D.
-        AssertThrow(project_along(master, x_slave, interpolated_normal(slave, slave_normals, xi), eta),
-                    ExcMessage("Mortar integration: a quadrature point of the slave face "
-                               "centred at " + coordinates_text(slave.point(Point<2>())) +
-                               " does not project onto the master face centred at " +
-                               coordinates_text(master.point(Point<2>())) + "."));
+        AssertThrow(project_along(master, x_slave, interpolated_normal(slave, slave_normals, xi),
+                                            eta),
+                              ExcMessage("Mortar integration: a quadrature point of the slave face "
+                                                   "centred at " +
+                                         coordinates_text(slave.point(Point<2>())) +
+                                         " does not project onto the master face centred at " +
+                                         coordinates_text(master.point(Point<2>())) + "."));
         // The segmentation projected along n0, the normal field may differ
         // slightly: stay on the master face (partition of unity kept).
         eta                           = Point<2>(clamp(eta[0]), clamp(eta[1]));
@@ -736,7 +735,7 @@ namespace contact_fem
           const double       a = t[0] * t[0], b = t[0] * t[1], c = t[1] * t[1];
           const double       det = a * c - b * b;
           Point<2>           next(xi[0] + (c * (r * t[0]) - b * (r * t[1])) / det,
-                        xi[1] + (a * (r * t[1]) - b * (r * t[0])) / det);
+                                  xi[1] + (a * (r * t[1]) - b * (r * t[0])) / det);
           for (unsigned int held = 0; held < 2; ++held)
             if (std::abs(next[held]) > 1.)
               {
@@ -746,9 +745,8 @@ namespace contact_fem
                 for (unsigned int k = 0; k < 20; ++k)
                   {
                     const Tensor<1, 3> tangent = quad.tangents(next)[along];
-                    const double       step =
-                      ((x - quad.point(next)) * tangent) / tangent.norm_square();
-                    next[along] = std::clamp(next[along] + step, -1., 1.);
+                    const double step = ((x - quad.point(next)) * tangent) / tangent.norm_square();
+                    next[along]       = std::clamp(next[along] + step, -1., 1.);
                     if (std::abs(step) < parameter_tolerance)
                       break;
                   }
@@ -784,7 +782,7 @@ namespace contact_fem
     std::vector<unsigned int>
     boundary_vertices(const Point<2> &xi)
     {
-      const bool on_xi = std::abs(xi[0]) == 1., on_eta = std::abs(xi[1]) == 1.;
+      const bool         on_xi = std::abs(xi[0]) == 1., on_eta = std::abs(xi[1]) == 1.;
       const unsigned int i = xi[0] > 0. ? 1 : 0, j = xi[1] > 0. ? 2 : 0;
       if (on_xi && on_eta)
         return {i + j};

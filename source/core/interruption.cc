@@ -39,8 +39,9 @@ namespace contact_fem
   }
 
   Interrupted::Interrupted(const int signal)
-    : std::runtime_error(std::string("interrupted by ") +
-                         (signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal"))
+    : std::runtime_error(std::string("interrupted by ") + (signal == SIGINT  ? "SIGINT" :
+                                                           signal == SIGTERM ? "SIGTERM" :
+                                                                               "a signal"))
     , signal(signal)
   {}
 

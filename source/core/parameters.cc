@@ -51,7 +51,6 @@ namespace contact_fem
   }
 
 
-
   std::string
   user_message(const std::exception &e)
   {
@@ -64,10 +63,11 @@ namespace contact_fem
     const auto        at        = text.find(condition);
     const bool        generic   = text.find("which is used in many places") != std::string::npos;
     if (generic && at != std::string::npos && pos != std::string::npos && at < pos)
-      text = "violated condition: " + text.substr(at + condition.size(), pos - at - condition.size());
+      text =
+        "violated condition: " + text.substr(at + condition.size(), pos - at - condition.size());
     else if (pos != std::string::npos)
       {
-        text = text.substr(pos + key.size());
+        text           = text.substr(pos + key.size());
         const auto end = text.find("Stacktrace:");
         if (end != std::string::npos)
           text = text.substr(0, end);
@@ -150,9 +150,9 @@ namespace contact_fem
     const auto        start  = text.find("Message:");
     const auto        open   = text.find('<', start);
     const auto        close  = text.find('>', open);
-    std::string reason = start != std::string::npos && close != std::string::npos ?
-                           text.substr(open + 1, close - open - 1) :
-                           "";
+    std::string       reason = start != std::string::npos && close != std::string::npos ?
+                                 text.substr(open + 1, close - open - 1) :
+                                 "";
     while (!reason.empty() && (reason.back() == '.' || reason.back() == ' '))
       reason.pop_back();
     reason = reason.empty() ? reason : " (" + excerpt(reason) + ")";
@@ -169,9 +169,9 @@ namespace contact_fem
       {
         double            value   = 0.;
         const std::string problem = number_problem(entries[i], value);
-        AssertThrow(problem.empty(),
-                    ExcMessage(key + ": entry " + std::to_string(i + 1) + ", '" + excerpt(entries[i]) +
-                               "', " + problem + "; expected " + expected + "."));
+        AssertThrow(problem.empty(), ExcMessage(key + ": entry " + std::to_string(i + 1) + ", '" +
+                                                excerpt(entries[i]) + "', " + problem +
+                                                "; expected " + expected + "."));
         values.push_back(value);
       }
     return values;
@@ -186,9 +186,8 @@ namespace contact_fem
         if (trim(item).empty())
           continue;
         const auto colon = item.find(':');
-        AssertThrow(colon != std::string::npos,
-                    ExcMessage(key + ": entry '" + excerpt(item) +
-                               "' is not of the form 'id: value'."));
+        AssertThrow(colon != std::string::npos, ExcMessage(key + ": entry '" + excerpt(item) +
+                                                           "' is not of the form 'id: value'."));
         result.emplace_back(trim(item.substr(0, colon)), trim(item.substr(colon + 1)));
       }
     return result;
@@ -237,7 +236,7 @@ namespace contact_fem
               valid = valid && problem.empty();
               point.coordinates.push_back(value);
             }
-          valid = valid && id >= 0 && id < 255 && point.coordinates.size() == dim;
+          valid             = valid && id >= 0 && id < 255 && point.coordinates.size() == dim;
           point.material_id = static_cast<types::material_id>(id);
         }
       catch (const ExcMessage &)

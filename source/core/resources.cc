@@ -81,7 +81,7 @@ namespace contact_fem
     AvailableMemory result;
     if (const char *given = std::getenv("CONTACT_FEM_AVAILABLE_MEMORY"))
       {
-        result.bytes  = std::atof(given);
+        result.bytes     = std::atof(given);
         result.source    = "CONTACT_FEM_AVAILABLE_MEMORY";
         result.whole_run = true;
         return result;
@@ -93,8 +93,10 @@ namespace contact_fem
       result = {cgroup, "the memory limit of this process' cgroup", false};
     const double address_space = address_space_available();
     if (address_space >= 0. && (result.bytes <= 0. || address_space < result.bytes))
-      result = {address_space, "the address-space limit (ulimit -v) beside this process' "
-                               "address space", false};
+      result = {address_space,
+                "the address-space limit (ulimit -v) beside this process' "
+                "address space",
+                false};
     return result;
   }
 
@@ -112,7 +114,9 @@ namespace contact_fem
     const double       value = bytes / unit;
     std::ostringstream text;
     text << std::fixed << std::setprecision(value >= 10. ? 0 : 1) << value
-         << (unit == 1e12 ? " TB" : unit == 1e9 ? " GB" : " MB");
+         << (unit == 1e12 ? " TB" :
+             unit == 1e9  ? " GB" :
+                            " MB");
     return text.str();
   }
 } // namespace contact_fem

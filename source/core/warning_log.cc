@@ -49,10 +49,9 @@ namespace contact_fem
         Json cycles = Json::array();
         for (const unsigned int cycle : entry.cycles)
           cycles.push(cycle);
-        all.set(entry.kind,
-                Json::object()
-                  .set("count", static_cast<unsigned int>(entry.cycles.size()))
-                  .set("cycles", cycles));
+        all.set(entry.kind, Json::object()
+                              .set("count", static_cast<unsigned int>(entry.cycles.size()))
+                              .set("cycles", cycles));
       }
     return all;
   }

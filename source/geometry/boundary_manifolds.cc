@@ -89,7 +89,8 @@ namespace contact_fem
       double     radius = 0., deviation = 0.;
       if (!fit_sphere(points, centre, radius, deviation) ||
           deviation > on_surface_tolerance * radius)
-        return " Its vertices do not lie on one " + m.kind + " (a flat boundary, or several "
+        return " Its vertices do not lie on one " + m.kind +
+               " (a flat boundary, or several "
                "arcs: give each its own boundary id).";
       std::string text = std::to_string(m.boundary_id) + ": " + m.kind + " ";
       // In the user's coordinates (the mesh may be computed moved).
@@ -144,17 +145,18 @@ namespace contact_fem
     for (const auto &[id, surface] : split_key_value_list(text, key))
       {
         BoundaryManifold<dim> m;
-        m.boundary_id = parse_boundary_id(id, key);
-        m.entry       = id + ": " + surface;
+        m.boundary_id    = parse_boundary_id(id, key);
+        m.entry          = id + ": " + surface;
         const auto space = surface.find_first_of(" \t");
         m.kind           = surface.substr(0, space);
         std::vector<double> v;
         const bool          numbers_ok =
           space != std::string::npos && parse_numbers(surface.substr(space + 1), v);
-        const std::size_t n = (dim == 2 && m.kind == "circle") ? 3 :
-                              (dim == 3 && m.kind == "sphere") ? 4 :
-                              (dim == 3 && m.kind == "cylinder") ? 7 : 0;
-        bool valid = n > 0 && numbers_ok && v.size() == n && v.back() > 0.;
+        const std::size_t n     = (dim == 2 && m.kind == "circle")   ? 3 :
+                                  (dim == 3 && m.kind == "sphere")   ? 4 :
+                                  (dim == 3 && m.kind == "cylinder") ? 7 :
+                                                                       0;
+        bool              valid = n > 0 && numbers_ok && v.size() == n && v.back() > 0.;
         if (valid)
           {
             for (unsigned int d = 0; d < dim; ++d)
@@ -169,13 +171,12 @@ namespace contact_fem
                   m.axis /= m.axis.norm();
               }
           }
-        AssertThrow(valid,
-                    ExcMessage(key + ": entry '" + m.entry + "' is not of the form " +
-                               expected_forms(dim) + "."));
+        AssertThrow(valid, ExcMessage(key + ": entry '" + m.entry + "' is not of the form " +
+                                      expected_forms(dim) + "."));
         for (const auto &other : result)
           AssertThrow(other.boundary_id != m.boundary_id,
-                      ExcMessage(key + ": boundary " + id + " has two entries ('" +
-                                 other.entry + "' and '" + m.entry + "')."));
+                      ExcMessage(key + ": boundary " + id + " has two entries ('" + other.entry +
+                                 "' and '" + m.entry + "')."));
         result.push_back(m);
       }
     return result;
@@ -190,22 +191,25 @@ namespace contact_fem
     for (const auto &m : manifolds)
       {
         const std::vector<Point<dim>> points = boundary_vertices(coarse, m.boundary_id);
-        AssertThrow(!points.empty(),
-                    ExcMessage(key + ": entry '" + m.entry + "': the mesh has no boundary "
-                               "faces with id " + std::to_string(m.boundary_id) + "."));
+        AssertThrow(!points.empty(), ExcMessage(key + ": entry '" + m.entry +
+                                                "': the mesh has no boundary "
+                                                "faces with id " +
+                                                std::to_string(m.boundary_id) + "."));
         const Point<dim> *worst = &points[0];
         for (const auto &p : points)
           if (std::abs(m.distance_from_surface(p)) > std::abs(m.distance_from_surface(*worst)))
             worst = &p;
         const double off = m.distance_from_surface(*worst);
         AssertThrow(std::abs(off) <= on_surface_tolerance * m.radius,
-                    ExcMessage(key + ": entry '" + m.entry + "': vertex " + coordinates_text(*worst) +
-                               " of boundary " + std::to_string(m.boundary_id) + " lies " +
-                               number(std::abs(off), 3) + (off > 0. ? " outside" : " inside") +
-                               " the " + m.kind + " (allowed: " + number(on_surface_tolerance) +
+                    ExcMessage(key + ": entry '" + m.entry + "': vertex " +
+                               coordinates_text(*worst) + " of boundary " +
+                               std::to_string(m.boundary_id) + " lies " + number(std::abs(off), 3) +
+                               (off > 0. ? " outside" : " inside") + " the " + m.kind +
+                               " (allowed: " + number(on_surface_tolerance) +
                                " R = " + number(on_surface_tolerance * m.radius, 3) +
                                "); a wrong centre or radius would move the boundary "
-                               "under refinement." + fitted_surface(m, points)));
+                               "under refinement." +
+                               fitted_surface(m, points)));
       }
   }
 
@@ -298,7 +302,8 @@ namespace contact_fem
       }
     catch (...)
       {
-        AssertThrow(false, ExcMessage(key + ": refining the mesh on these manifolds failed" + what));
+        AssertThrow(false,
+                    ExcMessage(key + ": refining the mesh on these manifolds failed" + what));
       }
     unsigned int n_inverted = 0;
     Point<dim>   first;
@@ -317,24 +322,38 @@ namespace contact_fem
   parse_boundary_manifolds<2>(const std::string &, const std::string &);
   template std::vector<BoundaryManifold<3>>
   parse_boundary_manifolds<3>(const std::string &, const std::string &);
-  template void check_boundary_manifolds<2>(const std::vector<BoundaryManifold<2>> &,
-                                            const Triangulation<2> &, const std::string &);
-  template void check_boundary_manifolds<3>(const std::vector<BoundaryManifold<3>> &,
-                                            const Triangulation<3> &, const std::string &);
-  template void place_new_vertices_on_manifolds<2>(const std::vector<BoundaryManifold<2>> &,
-                                                   unsigned int, Triangulation<2> &);
-  template void place_new_vertices_on_manifolds<3>(const std::vector<BoundaryManifold<3>> &,
-                                                   unsigned int, Triangulation<3> &);
-  template void set_manifold_ids<2>(const std::vector<BoundaryManifold<2>> &, bool,
-                                    Triangulation<2> &);
-  template void set_manifold_ids<3>(const std::vector<BoundaryManifold<3>> &, bool,
-                                    Triangulation<3> &);
-  template void attach_manifolds<2>(const std::vector<BoundaryManifold<2>> &, bool,
-                                    Triangulation<2> &);
-  template void attach_manifolds<3>(const std::vector<BoundaryManifold<3>> &, bool,
-                                    Triangulation<3> &);
-  template void check_refinement_on_manifolds<2>(const std::vector<BoundaryManifold<2>> &, bool,
-                                                 const Triangulation<2> &, const std::string &);
-  template void check_refinement_on_manifolds<3>(const std::vector<BoundaryManifold<3>> &, bool,
-                                                 const Triangulation<3> &, const std::string &);
+  template void
+  check_boundary_manifolds<2>(const std::vector<BoundaryManifold<2>> &,
+                              const Triangulation<2> &,
+                              const std::string &);
+  template void
+  check_boundary_manifolds<3>(const std::vector<BoundaryManifold<3>> &,
+                              const Triangulation<3> &,
+                              const std::string &);
+  template void
+  place_new_vertices_on_manifolds<2>(const std::vector<BoundaryManifold<2>> &,
+                                     unsigned int,
+                                     Triangulation<2> &);
+  template void
+  place_new_vertices_on_manifolds<3>(const std::vector<BoundaryManifold<3>> &,
+                                     unsigned int,
+                                     Triangulation<3> &);
+  template void
+  set_manifold_ids<2>(const std::vector<BoundaryManifold<2>> &, bool, Triangulation<2> &);
+  template void
+  set_manifold_ids<3>(const std::vector<BoundaryManifold<3>> &, bool, Triangulation<3> &);
+  template void
+  attach_manifolds<2>(const std::vector<BoundaryManifold<2>> &, bool, Triangulation<2> &);
+  template void
+  attach_manifolds<3>(const std::vector<BoundaryManifold<3>> &, bool, Triangulation<3> &);
+  template void
+  check_refinement_on_manifolds<2>(const std::vector<BoundaryManifold<2>> &,
+                                   bool,
+                                   const Triangulation<2> &,
+                                   const std::string &);
+  template void
+  check_refinement_on_manifolds<3>(const std::vector<BoundaryManifold<3>> &,
+                                   bool,
+                                   const Triangulation<3> &,
+                                   const std::string &);
 } // namespace contact_fem

@@ -67,7 +67,7 @@ namespace contact_fem
     check.max_corner = *std::max_element(corner.begin(), corner.end());
 
     constexpr double flat = 1e-8;
-    const auto smallest = std::min_element(corner.begin(), corner.end(), [](double a, double b) {
+    const auto smallest   = std::min_element(corner.begin(), corner.end(), [](double a, double b) {
       return std::abs(a) < std::abs(b);
     });
     if (std::abs(*smallest) <= flat)
@@ -76,8 +76,10 @@ namespace contact_fem
         check.first = check.second = static_cast<unsigned int>(smallest - corner.begin());
         return check;
       }
-    check.n_negative = static_cast<unsigned int>(
-      std::count_if(corner.begin(), corner.end(), [](const double c) { return c < 0.; }));
+    check.n_negative =
+      static_cast<unsigned int>(std::count_if(corner.begin(), corner.end(), [](const double c) {
+        return c < 0.;
+      }));
     if (check.n_negative == 0)
       return check;
     if (check.n_negative == 8)
@@ -86,9 +88,12 @@ namespace contact_fem
         return check;
       }
     check.shape = HexahedronShape::twisted;
-    check.first = check.second = static_cast<unsigned int>(
-      std::find_if(corner.begin(), corner.end(), [](const double c) { return c < 0.; }) -
-      corner.begin());
+    check.first = check.second =
+      static_cast<unsigned int>(std::find_if(corner.begin(), corner.end(),
+                                             [](const double c) {
+                                               return c < 0.;
+                                             }) -
+                                corner.begin());
     return check;
   }
 } // namespace contact_fem

@@ -95,14 +95,14 @@ namespace contact_fem
     struct Contents
     {
       std::map<int, std::size_t> elements; ///< Gmsh type -> count
-      std::size_t                n_nodes = 0;
+      std::size_t                n_nodes    = 0;
       bool                       have_nodes = false, have_elements = false;
-      double z_min = std::numeric_limits<double>::max(), z_max = -z_min;
-      double extent = 0.; ///< largest |x|, |y| or |z| of a node
+      double                     z_min = std::numeric_limits<double>::max(), z_max = -z_min;
+      double                     extent = 0.; ///< largest |x|, |y| or |z| of a node
       /// Kept only when asked for (3D): deal.II's reader reorders inverted
       /// cells and forgets element numbers and lines, so the hexahedra are
       /// checked here, where a message can name them.
-      bool                               keep_hexahedra = false;
+      bool keep_hexahedra = false;
       /// Every node, for the check that elements name listed nodes only.
       std::unordered_map<long, Point<3>> node_coordinates;
       std::vector<GmshHexahedron>        hexahedra;
@@ -123,10 +123,10 @@ namespace contact_fem
       std::string first_pyramid;
       /// MSH 4.x $Entities: the physical tag of (dimension, entity tag).
       std::map<std::pair<int, int>, int> entity_physical;
-      Point<3> lower = Point<3>(std::numeric_limits<double>::max(),
+      Point<3>                           lower = Point<3>(std::numeric_limits<double>::max(),
                                 std::numeric_limits<double>::max(),
                                 std::numeric_limits<double>::max());
-      Point<3> upper = -lower;
+      Point<3>                           upper = -lower;
     };
 
     /// Reads a text file line by line and knows the line number, so that
@@ -164,8 +164,10 @@ namespace contact_fem
 
       /// The numbers of the next line; at least @p n_min of them.
       std::vector<double>
-      numbers(const std::string &section, const std::string &progress, const std::string &form,
-              const std::size_t n_min)
+      numbers(const std::string &section,
+              const std::string &progress,
+              const std::string &form,
+              const std::size_t  n_min)
       {
         const std::string   line = require(section, progress);
         std::istringstream  text(line);
@@ -174,8 +176,8 @@ namespace contact_fem
         while (text >> v)
           values.push_back(v);
         if (values.size() < n_min || !(text.eof() || Utilities::trim(line).empty()))
-          fail("expected " + form + " in " + section + ", found '" + Utilities::trim(line) +
-               "'" + (values.size() < n_min ? " (a line cut short: truncated file?)." : "."));
+          fail("expected " + form + " in " + section + ", found '" + Utilities::trim(line) + "'" +
+               (values.size() < n_min ? " (a line cut short: truncated file?)." : "."));
         return values;
       }
 
@@ -192,9 +194,8 @@ namespace contact_fem
       [[noreturn]] void
       fail(const std::string &what) const
       {
-        AssertThrow(false,
-                    ExcMessage(mesh_key + ": '" + file + "', line " +
-                               std::to_string(line_number) + ": " + what));
+        AssertThrow(false, ExcMessage(mesh_key + ": '" + file + "', line " +
+                                      std::to_string(line_number) + ": " + what));
         std::abort();
       }
 
@@ -227,8 +228,11 @@ namespace contact_fem
     }
 
     void
-    record_node(LineReader &reader, const long tag, const std::vector<double> &xyz,
-                const unsigned int x_column, Contents &contents)
+    record_node(LineReader                &reader,
+                const long                 tag,
+                const std::vector<double> &xyz,
+                const unsigned int         x_column,
+                Contents                  &contents)
     {
       for (const double x : xyz)
         if (!(std::abs(x) <= largest_input_magnitude))
@@ -256,8 +260,8 @@ namespace contact_fem
     void
     scan_nodes_v2(LineReader &reader, const std::string &section, Contents &contents)
     {
-      const auto n = static_cast<std::size_t>(
-        reader.numbers(section, "", "the number of nodes", 1)[0]);
+      const auto n =
+        static_cast<std::size_t>(reader.numbers(section, "", "the number of nodes", 1)[0]);
       for (std::size_t i = 0; i < n; ++i)
         {
           const auto v = reader.numbers(section, count_of(i, n, "nodes"), "'tag x y z'", 4);
@@ -271,16 +275,16 @@ namespace contact_fem
     void
     scan_nodes_v4(LineReader &reader, const double version, Contents &contents)
     {
-      const std::string section = "$Nodes";
-      const auto header = reader.numbers(section, "", "'blocks nodes ...'", 2);
-      const auto n_blocks = static_cast<std::size_t>(header[0]);
-      const auto n_nodes  = static_cast<std::size_t>(header[1]);
-      std::size_t seen = 0;
+      const std::string section  = "$Nodes";
+      const auto        header   = reader.numbers(section, "", "'blocks nodes ...'", 2);
+      const auto        n_blocks = static_cast<std::size_t>(header[0]);
+      const auto        n_nodes  = static_cast<std::size_t>(header[1]);
+      std::size_t       seen     = 0;
       for (std::size_t b = 0; b < n_blocks; ++b)
         {
-          const auto block = reader.numbers(section, count_of(seen, n_nodes, "nodes"),
-                                            "an entity block header", 4);
-          const auto n = static_cast<std::size_t>(block[3]);
+          const auto block =
+            reader.numbers(section, count_of(seen, n_nodes, "nodes"), "an entity block header", 4);
+          const auto        n = static_cast<std::size_t>(block[3]);
           std::vector<long> tags;
           if (version >= 4.1)
             for (std::size_t i = 0; i < n; ++i)
@@ -288,9 +292,9 @@ namespace contact_fem
                 reader.numbers(section, count_of(seen, n_nodes, "nodes"), "a node tag", 1)[0]));
           for (std::size_t i = 0; i < n; ++i, ++seen)
             {
-              const auto v = reader.numbers(section, count_of(seen, n_nodes, "nodes"),
-                                            version >= 4.1 ? "'x y z'" : "'tag x y z'",
-                                            version >= 4.1 ? 3 : 4);
+              const auto v =
+                reader.numbers(section, count_of(seen, n_nodes, "nodes"),
+                               version >= 4.1 ? "'x y z'" : "'tag x y z'", version >= 4.1 ? 3 : 4);
               const std::size_t o = version >= 4.1 ? 0 : 1;
               record_node(reader, version >= 4.1 ? tags[i] : static_cast<long>(v[0]),
                           {v[o], v[o + 1], v[o + 2]}, o, contents);
@@ -314,8 +318,10 @@ namespace contact_fem
     /// Keeps the hexahedron of the element line @p v whose eight nodes
     /// start at @p first_node.
     void
-    record_hexahedron(const std::vector<double> &v, const std::size_t first_node,
-                      const unsigned int line, Contents &contents)
+    record_hexahedron(const std::vector<double> &v,
+                      const std::size_t          first_node,
+                      const unsigned int         line,
+                      Contents                  &contents)
     {
       if (!contents.keep_hexahedra)
         return;
@@ -328,8 +334,10 @@ namespace contact_fem
     /// Keeps the quadrilateral of the element line @p v whose four nodes
     /// start at @p first_node.
     void
-    record_quadrilateral(const std::vector<double> &v, const std::size_t first_node,
-                         const unsigned int line, Contents &contents)
+    record_quadrilateral(const std::vector<double> &v,
+                         const std::size_t          first_node,
+                         const unsigned int         line,
+                         Contents                  &contents)
     {
       GmshQuadrilateral quadrilateral{static_cast<long>(v[0]), line, {}};
       for (unsigned int i = 0; i < 4; ++i)
@@ -340,14 +348,17 @@ namespace contact_fem
     /// Keeps the element of line @p v (nodes from @p first_node on) with
     /// its physical tag, for the split (mesh_split.h).
     void
-    record_element(const std::vector<double> &v, const int type, const std::size_t first_node,
-                   const int physical, const unsigned int line, Contents &contents)
+    record_element(const std::vector<double> &v,
+                   const int                  type,
+                   const std::size_t          first_node,
+                   const int                  physical,
+                   const unsigned int         line,
+                   Contents                  &contents)
     {
       const ElementType *t = find_element_type(type);
       if (t != nullptr && t->dim == 3 && t->n_nodes == 5 && contents.first_pyramid.empty())
-        contents.first_pyramid =
-          "the first: element " + std::to_string(static_cast<long>(v[0])) + ", line " +
-          std::to_string(line);
+        contents.first_pyramid = "the first: element " + std::to_string(static_cast<long>(v[0])) +
+                                 ", line " + std::to_string(line);
       if (t == nullptr || !contents.keep_elements)
         return;
       GmshElement element{type, static_cast<long>(v[0]), line, physical, {}};
@@ -360,16 +371,17 @@ namespace contact_fem
     /// names a node $Nodes does not list (deal.II's reader says only
     /// "vertex not found").
     void
-    check_nodes_listed(const std::vector<double> &v, const std::size_t first_node,
-                       const LineReader &reader, const Contents &contents)
+    check_nodes_listed(const std::vector<double> &v,
+                       const std::size_t          first_node,
+                       const LineReader          &reader,
+                       const Contents            &contents)
     {
       if (!contents.have_nodes)
         return;
       for (std::size_t i = first_node; i < v.size(); ++i)
         if (contents.node_coordinates.count(static_cast<long>(v[i])) == 0)
           reader.fail("element " + std::to_string(static_cast<long>(v[0])) + " uses node " +
-                      std::to_string(static_cast<long>(v[i])) +
-                      ", which $Nodes does not list.");
+                      std::to_string(static_cast<long>(v[i])) + ", which $Nodes does not list.");
     }
 
     /// $Elements (2.x: 'tag type n_tags tags... nodes...') or $ELM (1:
@@ -377,19 +389,18 @@ namespace contact_fem
     void
     scan_elements_v2(LineReader &reader, const std::string &section, Contents &contents)
     {
-      const auto n = static_cast<std::size_t>(
-        reader.numbers(section, "", "the number of elements", 1)[0]);
+      const auto n =
+        static_cast<std::size_t>(reader.numbers(section, "", "the number of elements", 1)[0]);
       for (std::size_t i = 0; i < n; ++i)
         {
-          const auto v = reader.numbers(section, count_of(i, n, "elements"),
-                                        "an element line", 3);
-          const int         type   = static_cast<int>(v[1]);
+          const auto v = reader.numbers(section, count_of(i, n, "elements"), "an element line", 3);
+          const int  type          = static_cast<int>(v[1]);
           const std::size_t before = section == "$ELM" ? 5 : 3 + static_cast<std::size_t>(v[2]);
           const std::size_t length = element_line_length(type, before);
           if (v.size() < length)
             reader.fail("element " + std::to_string(static_cast<long>(v[0])) + " has " +
-                        std::to_string(v.size()) + " numbers, expected " +
-                        std::to_string(length) + " (a line cut short: truncated file?).");
+                        std::to_string(v.size()) + " numbers, expected " + std::to_string(length) +
+                        " (a line cut short: truncated file?).");
           if (length > 0)
             check_nodes_listed(v, before, reader, contents);
           if (type == gmsh_hexahedron)
@@ -409,20 +420,20 @@ namespace contact_fem
     void
     scan_elements_v4(LineReader &reader, const double version, Contents &contents)
     {
-      const std::string section = "$Elements";
-      const auto header = reader.numbers(section, "", "'blocks elements ...'", 2);
-      const auto n_blocks   = static_cast<std::size_t>(header[0]);
-      const auto n_elements = static_cast<std::size_t>(header[1]);
-      std::size_t seen = 0;
+      const std::string section    = "$Elements";
+      const auto        header     = reader.numbers(section, "", "'blocks elements ...'", 2);
+      const auto        n_blocks   = static_cast<std::size_t>(header[0]);
+      const auto        n_elements = static_cast<std::size_t>(header[1]);
+      std::size_t       seen       = 0;
       for (std::size_t b = 0; b < n_blocks; ++b)
         {
           const auto block = reader.numbers(section, count_of(seen, n_elements, "elements"),
                                             "an entity block header", 4);
-          const int  type = static_cast<int>(block[2]);
-          const auto n    = static_cast<std::size_t>(block[3]);
+          const int  type  = static_cast<int>(block[2]);
+          const auto n     = static_cast<std::size_t>(block[3]);
           // 4.1: 'dim tag type count'; 4.0: 'tag dim type count'.
-          const auto entity = version >= 4.1 ? std::make_pair(int(block[0]), int(block[1])) :
-                                               std::make_pair(int(block[1]), int(block[0]));
+          const auto entity   = version >= 4.1 ? std::make_pair(int(block[0]), int(block[1])) :
+                                                 std::make_pair(int(block[1]), int(block[0]));
           const auto found    = contents.entity_physical.find(entity);
           const int  physical = found == contents.entity_physical.end() ? 0 : found->second;
           for (std::size_t i = 0; i < n; ++i, ++seen)
@@ -466,18 +477,22 @@ namespace contact_fem
     scan_entities(LineReader &reader, const double version, Contents &contents)
     {
       const std::string section = "$Entities";
-      const auto n = reader.numbers(section, "", "'points curves surfaces volumes'", 4);
+      const auto        n = reader.numbers(section, "", "'points curves surfaces volumes'", 4);
       for (int dim = 0; dim < 4; ++dim)
         for (std::size_t i = 0; i < static_cast<std::size_t>(n[dim]); ++i)
           {
-            const std::size_t at = dim == 0 && version >= 4.1 ? 4 : 7;
-            const auto v = reader.numbers(section, "", "an entity line", at + 1);
-            const auto n_physical = static_cast<std::size_t>(v[at]);
+            const std::size_t at         = dim == 0 && version >= 4.1 ? 4 : 7;
+            const auto        v          = reader.numbers(section, "", "an entity line", at + 1);
+            const auto        n_physical = static_cast<std::size_t>(v[at]);
             if (n_physical > 1)
-              reader.fail("the " + std::string(dim == 0 ? "point" : dim == 1 ? "curve" :
-                                               dim == 2 ? "surface" : "volume") + " " +
-                          std::to_string(static_cast<long>(v[0])) + " belongs to " +
-                          std::to_string(n_physical) + " physical groups; contact_fem takes "
+              reader.fail("the " +
+                          std::string(dim == 0 ? "point" :
+                                      dim == 1 ? "curve" :
+                                      dim == 2 ? "surface" :
+                                                 "volume") +
+                          " " + std::to_string(static_cast<long>(v[0])) + " belongs to " +
+                          std::to_string(n_physical) +
+                          " physical groups; contact_fem takes "
                           "one boundary or material id per entity: put it into one "
                           "physical group only.");
             if (v.size() < at + 1 + n_physical)
@@ -493,13 +508,13 @@ namespace contact_fem
     scan_physical_names(LineReader &reader, Contents &contents)
     {
       const std::string section = "$PhysicalNames";
-      const auto        n = static_cast<std::size_t>(
-        reader.numbers(section, "", "the number of names", 1)[0]);
+      const auto        n =
+        static_cast<std::size_t>(reader.numbers(section, "", "the number of names", 1)[0]);
       for (std::size_t i = 0; i < n; ++i)
         {
-          const std::string line  = reader.require(section, count_of(i, n, "names"));
-          const auto        open  = line.find('"');
-          const auto        close = line.rfind('"');
+          const std::string  line  = reader.require(section, count_of(i, n, "names"));
+          const auto         open  = line.find('"');
+          const auto         close = line.rfind('"');
           std::istringstream numbers(line.substr(0, open));
           PhysicalName       name;
           if (open == std::string::npos || close == open ||
@@ -552,7 +567,7 @@ namespace contact_fem
       Contents     contents;
       contents.keep_hexahedra = keep_hexahedra;
       contents.keep_elements  = keep_elements;
-      std::string  line;
+      std::string line;
       while (!section.empty() || reader.next(line))
         {
           if (section.empty())
@@ -585,8 +600,9 @@ namespace contact_fem
       for (const auto &[have, name] : {std::make_pair(contents.have_nodes, "$Nodes"),
                                        std::make_pair(contents.have_elements, "$Elements")})
         if (!have)
-          reader.fail_file("ends at line " + std::to_string(reader.line_number) +
-                           " without a " + name + " section: the file is truncated or not "
+          reader.fail_file("ends at line " + std::to_string(reader.line_number) + " without a " +
+                           name +
+                           " section: the file is truncated or not "
                            "a mesh (a .geo file? run gmsh -2 on it).");
       return contents;
     }
@@ -627,20 +643,26 @@ namespace contact_fem
           top = std::max(top, t->dim);
         }
       // deal.II's reader names only an unknown element type for these.
-      AssertThrow(top <= dim,
-                  ExcMessage(prefix + "holds " + std::to_string(top) + "D cells (" +
-                             describe(contents, [&](const ElementType &t) { return t.dim == top; }) +
-                             ") but Dimension = " + std::to_string(dim) + "."));
+      AssertThrow(top <= dim, ExcMessage(prefix + "holds " + std::to_string(top) + "D cells (" +
+                                         describe(contents,
+                                                  [&](const ElementType &t) {
+                                                    return t.dim == top;
+                                                  }) +
+                                         ") but Dimension = " + std::to_string(dim) + "."));
       AssertThrow(top == dim,
                   ExcMessage(prefix + "holds no " + Dd + " cells, only " +
-                             describe(contents, [](const ElementType &) { return true; }) +
+                             describe(contents,
+                                      [](const ElementType &) {
+                                        return true;
+                                      }) +
                              " (Dimension = " + std::to_string(dim) + "; mesh the " +
                              (dim == 2 ? "surfaces: gmsh -2)." :
                               top == 2 ? "volumes: gmsh -3; or, if this is a 2D (plane strain) "
                                          "mesh, run it with Dimension = 2)." :
                                          "volumes: gmsh -3).")));
-      const std::string pyramids =
-        describe(contents, [](const ElementType &t) { return t.n_nodes == 5 && t.dim == 3; });
+      const std::string pyramids = describe(contents, [](const ElementType &t) {
+        return t.n_nodes == 5 && t.dim == 3;
+      });
       AssertThrow(pyramids.empty(),
                   ExcMessage(prefix + "holds " + pyramids + " (" + contents.first_pyramid +
                              "): pyramids are not supported. contact_fem splits "
@@ -654,8 +676,9 @@ namespace contact_fem
                              "Mesh.RecombineAll = 0, Mesh.Recombine3DAll = 0), or the whole "
                              "model with hexahedra and prisms (Extrude with Layers and "
                              "Recombine, transfinite volumes)."));
-      const std::string high_order =
-        describe(contents, [](const ElementType &t) { return !t.first_order; });
+      const std::string high_order = describe(contents, [](const ElementType &t) {
+        return !t.first_order;
+      });
       AssertThrow(high_order.empty(),
                   ExcMessage(prefix + "holds second-order elements (" + high_order +
                              "); contact_fem reads first-order meshes (Gmsh: "
@@ -681,15 +704,17 @@ namespace contact_fem
     /// Throws if @p n_bad cells are degenerate or inverted: the first
     /// (@p first) named, the others counted, then what is needed.
     void
-    refuse_bad_cells(const std::string &file, const std::size_t n_bad, const std::string &first,
-                     const std::string &cells, const std::string &need)
+    refuse_bad_cells(const std::string &file,
+                     const std::size_t  n_bad,
+                     const std::string &first,
+                     const std::string &cells,
+                     const std::string &need)
     {
-      AssertThrow(n_bad == 0,
-                  ExcMessage(mesh_key + ": '" + file + "', " + first +
-                             (n_bad > 1 ? "; " + std::to_string(n_bad - 1) + " more " + cells +
-                                            " are degenerate or inverted" :
-                                          "") +
-                             ". " + need));
+      AssertThrow(n_bad == 0, ExcMessage(mesh_key + ": '" + file + "', " + first +
+                                         (n_bad > 1 ? "; " + std::to_string(n_bad - 1) + " more " +
+                                                        cells + " are degenerate or inverted" :
+                                                      "") +
+                                         ". " + need));
     }
 
     /// Refuses hexahedra that are no valid cells: deal.II's reader would
@@ -709,11 +734,10 @@ namespace contact_fem
             {
               const auto node = contents.node_coordinates.find(hexahedron.nodes[i]);
               AssertThrow(node != contents.node_coordinates.end(),
-                          ExcMessage(mesh_key + ": '" + file + "', line " +
-                                     std::to_string(hexahedron.line) + ": hexahedron " +
-                                     std::to_string(hexahedron.tag) + " uses node " +
-                                     std::to_string(hexahedron.nodes[i]) +
-                                     ", which $Nodes does not list."));
+                          ExcMessage(
+                            mesh_key + ": '" + file + "', line " + std::to_string(hexahedron.line) +
+                            ": hexahedron " + std::to_string(hexahedron.tag) + " uses node " +
+                            std::to_string(hexahedron.nodes[i]) + ", which $Nodes does not list."));
               x[i] = node->second;
             }
           const HexahedronCheck check = check_hexahedron(x);
@@ -755,8 +779,8 @@ namespace contact_fem
     {
       const auto node = [&](const unsigned int i) {
         std::ostringstream text;
-        text << "node " << nodes[i] << " (" << std::setprecision(8) << x[i][0] << ", "
-             << x[i][1] << ")";
+        text << "node " << nodes[i] << " (" << std::setprecision(8) << x[i][0] << ", " << x[i][1]
+             << ")";
         return text.str();
       };
       double h = 0.;
@@ -810,7 +834,9 @@ namespace contact_fem
     /// valid element are valid (those of a triangle or tetrahedron are its
     /// affine images), so this finds flat simplices and twisted prisms.
     void
-    check_split_cells(const SplitMesh &split, const Contents &contents, const std::string &file,
+    check_split_cells(const SplitMesh   &split,
+                      const Contents    &contents,
+                      const std::string &file,
                       const unsigned int dim)
     {
       std::size_t n_bad = 0;
@@ -841,10 +867,9 @@ namespace contact_fem
             continue;
           const GmshElement &e    = contents.element_list[piece.parent];
           const long         node = e.nodes[piece.corner];
-          first = "line " + std::to_string(e.line) + ": " +
-                  find_element_type(e.type)->singular + " " + std::to_string(e.tag) + " " +
-                  problem + " at its node " + std::to_string(node) + " " +
-                  coordinates_3d(contents.node_coordinates.at(node)) +
+          first = "line " + std::to_string(e.line) + ": " + find_element_type(e.type)->singular +
+                  " " + std::to_string(e.tag) + " " + problem + " at its node " +
+                  std::to_string(node) + " " + coordinates_3d(contents.node_coordinates.at(node)) +
                   " (its corner piece of the split into " +
                   (dim == 2 ? "quadrilaterals" : "hexahedra") + ")";
         }
@@ -913,7 +938,7 @@ namespace contact_fem
       check_hexahedra(contents, file);
     else
       check_quadrilaterals(contents, file);
-    MeshFileInfo   info;
+    MeshFileInfo info;
     info.physical_names   = contents.physical_names;
     const Point<3> origin = info.frame_origin =
       choose_frame_origin(contents.lower, contents.upper, dim);
@@ -928,7 +953,7 @@ namespace contact_fem
         info.split_note       = split_summary(split, dim);
         split_text            = msh22_text(split);
       }
-    GridIn<dim>    grid_in;
+    GridIn<dim> grid_in;
     grid_in.attach_triangulation(coarse);
     try
       {
@@ -955,8 +980,6 @@ namespace contact_fem
       }
     return info;
   }
-
-
 
 
   namespace
@@ -991,8 +1014,8 @@ namespace contact_fem
     template <int dim>
     struct BoundaryFace
     {
-      types::material_id body;
-      types::boundary_id id;
+      types::material_id                                             body;
+      types::boundary_id                                             id;
       std::array<unsigned int, GeometryInfo<dim>::vertices_per_face> vertices;
     };
 
@@ -1000,7 +1023,8 @@ namespace contact_fem
     /// each other: an R-tree query per vertex, O(n log n).
     template <int dim>
     Clusters
-    coincident_vertices(const Triangulation<dim> &coarse, const std::vector<BoundaryFace<dim>> &faces)
+    coincident_vertices(const Triangulation<dim>             &coarse,
+                        const std::vector<BoundaryFace<dim>> &faces)
     {
       std::vector<unsigned int> indices;
       double                    shortest = std::numeric_limits<double>::max();
@@ -1019,9 +1043,9 @@ namespace contact_fem
       for (const unsigned int v : indices)
         points.push_back(coarse.get_vertices()[v]);
       // Far below any edge of the mesh, far above round-off of coordinates.
-      const double tolerance = 1e-6 * shortest;
-      const auto   tree      = pack_rtree_of_indices(points);
-      Clusters     clusters(coarse.n_vertices());
+      const double             tolerance = 1e-6 * shortest;
+      const auto               tree      = pack_rtree_of_indices(points);
+      Clusters                 clusters(coarse.n_vertices());
       std::vector<std::size_t> hits;
       for (std::size_t i = 0; i < points.size(); ++i)
         {
@@ -1060,7 +1084,8 @@ namespace contact_fem
     Clusters clusters = coincident_vertices(coarse, faces);
 
     // Two boundary faces of one body on the same places are a crack.
-    using Key = std::pair<types::material_id, std::array<unsigned int, GeometryInfo<dim>::vertices_per_face>>;
+    using Key =
+      std::pair<types::material_id, std::array<unsigned int, GeometryInfo<dim>::vertices_per_face>>;
     std::vector<std::pair<Key, unsigned int>> keys;
     for (unsigned int i = 0; i < faces.size(); ++i)
       {
@@ -1083,14 +1108,15 @@ namespace contact_fem
       return;
 
     // A node of the first face that the second one does not share.
-    const auto &a = faces[first].vertices, &b = faces[second].vertices;
+    const auto  &a = faces[first].vertices, &b = faces[second].vertices;
     unsigned int loose = a[0];
     for (const unsigned int v : a)
       if (std::find(b.begin(), b.end(), v) == b.end())
         loose = v;
     AssertThrow(false,
                 ExcMessage(mesh_key + ": '" + file + "': the body of material id " +
-                           std::to_string(faces[first].body) + " is cut inside: its cells on "
+                           std::to_string(faces[first].body) +
+                           " is cut inside: its cells on "
                            "either side of the node at " +
                            coordinates_text(coarse.get_vertices()[loose]) +
                            " use two coincident copies of it, so " + std::to_string(n_cracked) +
@@ -1116,7 +1142,7 @@ namespace contact_fem
     Point<dim> mean;
     for (const auto &p : points)
       mean += p / static_cast<double>(points.size());
-    constexpr unsigned int n = dim + 1;
+    constexpr unsigned int n           = dim + 1;
     double                 A[n][n + 1] = {};
     for (const auto &p : points)
       {
@@ -1225,14 +1251,14 @@ namespace contact_fem
      * projected along it, lie on a circle (within 1e-4 R).
      */
     void
-    fit_extruded_cylinder(const SymmetricTensor<2, 3>  &moments,
+    fit_extruded_cylinder(const SymmetricTensor<2, 3> &moments,
                           const std::vector<Point<3>> &points,
                           PolygonalBoundary<3>        &b)
     {
       const auto eigen = eigenvectors(moments); // descending eigenvalues
       if (!(eigen[2].first <= 1e-8 * trace(moments)))
         return;
-      Tensor<1, 3> d = eigen[2].second / eigen[2].second.norm();
+      Tensor<1, 3> d       = eigen[2].second / eigen[2].second.norm();
       unsigned int largest = 0;
       for (unsigned int i = 1; i < 3; ++i)
         if (std::abs(d[i]) > std::abs(d[largest]))
@@ -1260,7 +1286,7 @@ namespace contact_fem
 
   template <int dim>
   std::vector<PolygonalBoundary<dim>>
-  find_polygonal_boundaries(const Triangulation<dim>            &coarse,
+  find_polygonal_boundaries(const Triangulation<dim>              &coarse,
                             const std::vector<types::boundary_id> &skip)
   {
     // A polygonal circle of n sides turns by 2 pi / n at each vertex: 30
@@ -1273,7 +1299,7 @@ namespace contact_fem
       types::boundary_id id;
       Tensor<1, dim>     normal;
     };
-    std::vector<Side>                                         sides;
+    std::vector<Side>                                       sides;
     std::map<types::boundary_id, std::vector<unsigned int>> vertices;
     // Per id: the sum of n n^T over its faces, whose smallest eigenvalue
     // vanishes iff every normal is perpendicular to one direction.
@@ -1332,8 +1358,8 @@ namespace contact_fem
           for (const unsigned int v : ids)
             points.push_back(coarse.get_vertices()[v]);
           double deviation = 0.;
-          b.fits_sphere    = fit_sphere(points, b.centre, b.radius, deviation) &&
-                          deviation <= 1e-4 * b.radius;
+          b.fits_sphere =
+            fit_sphere(points, b.centre, b.radius, deviation) && deviation <= 1e-4 * b.radius;
           if constexpr (dim == 3)
             fit_extruded_cylinder(normal_moments[id], points, b);
           result.push_back(b);
@@ -1360,16 +1386,24 @@ namespace contact_fem
     return false;
   }
 
-  template MeshFileInfo read_gmsh<2>(const std::string &, Triangulation<2> &);
-  template MeshFileInfo read_gmsh<3>(const std::string &, Triangulation<3> &);
-  template void check_unmerged_vertices<2>(const Triangulation<2> &, const std::string &);
-  template void check_unmerged_vertices<3>(const Triangulation<3> &, const std::string &);
+  template MeshFileInfo
+  read_gmsh<2>(const std::string &, Triangulation<2> &);
+  template MeshFileInfo
+  read_gmsh<3>(const std::string &, Triangulation<3> &);
+  template void
+  check_unmerged_vertices<2>(const Triangulation<2> &, const std::string &);
+  template void
+  check_unmerged_vertices<3>(const Triangulation<3> &, const std::string &);
   template std::vector<PolygonalBoundary<2>>
   find_polygonal_boundaries<2>(const Triangulation<2> &, const std::vector<types::boundary_id> &);
   template std::vector<PolygonalBoundary<3>>
   find_polygonal_boundaries<3>(const Triangulation<3> &, const std::vector<types::boundary_id> &);
-  template bool fit_sphere<2>(const std::vector<Point<2>> &, Point<2> &, double &, double &);
-  template bool fit_sphere<3>(const std::vector<Point<3>> &, Point<3> &, double &, double &);
-  template bool is_inverted<2>(const Triangulation<2>::cell_iterator &);
-  template bool is_inverted<3>(const Triangulation<3>::cell_iterator &);
+  template bool
+  fit_sphere<2>(const std::vector<Point<2>> &, Point<2> &, double &, double &);
+  template bool
+  fit_sphere<3>(const std::vector<Point<3>> &, Point<3> &, double &, double &);
+  template bool
+  is_inverted<2>(const Triangulation<2>::cell_iterator &);
+  template bool
+  is_inverted<3>(const Triangulation<3>::cell_iterator &);
 } // namespace contact_fem

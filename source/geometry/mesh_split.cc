@@ -32,15 +32,28 @@ namespace contact_fem
       static const std::vector<Shape> list = {
         {1, 1, "line", "lines", {{0, 0, 0}, {1, 0, 0}}, {{0, 1}}},
         {2, 2, "triangle", "triangles", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}},
-        {3, 2, "quadrilateral", "quadrilaterals",
-         {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2, 3}}},
-        {4, 3, "tetrahedron", "tetrahedra",
+        {3,
+         2,
+         "quadrilateral",
+         "quadrilaterals",
+         {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}},
+         {{0, 1, 2, 3}}},
+        {4,
+         3,
+         "tetrahedron",
+         "tetrahedra",
          {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
          {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}},
-        {5, 3, "hexahedron", "hexahedra",
+        {5,
+         3,
+         "hexahedron",
+         "hexahedra",
          {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
          {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}},
-        {6, 3, "prism", "prisms",
+        {6,
+         3,
+         "prism",
+         "prisms",
          {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}},
          {{0, 2, 1}, {3, 4, 5}, {0, 1, 4, 3}, {1, 2, 5, 4}, {2, 0, 3, 5}}}};
       return list;
@@ -69,7 +82,7 @@ namespace contact_fem
               found.insert(face[(i + face.size() - 1) % face.size()]);
             }
       std::vector<unsigned int> n(found.begin(), found.end());
-      const auto edge = [&](const unsigned int k) {
+      const auto                edge = [&](const unsigned int k) {
         return shape.corners[n[k]] - shape.corners[v];
       };
       if (n.size() == 2 && cross_product_3d(edge(0), edge(1))[2] < 0.)
@@ -85,7 +98,8 @@ namespace contact_fem
     {
       for (const auto &face : shape.faces)
         if (std::count(face.begin(), face.end(), a) + std::count(face.begin(), face.end(), b) +
-              std::count(face.begin(), face.end(), c) == 3)
+              std::count(face.begin(), face.end(), c) ==
+            3)
           return face;
       AssertThrow(false, ExcInternalError());
       return shape.faces[0];
@@ -160,16 +174,18 @@ namespace contact_fem
         return mesh.points.size() - 1;
       }
 
-      SplitMesh                                       &mesh;
-      const std::map<long, unsigned int>               file_index;
-      std::map<std::pair<long, long>, unsigned int>    edges;
-      std::map<std::vector<long>, unsigned int>        faces;
+      SplitMesh                                    &mesh;
+      const std::map<long, unsigned int>            file_index;
+      std::map<std::pair<long, long>, unsigned int> edges;
+      std::map<std::vector<long>, unsigned int>     faces;
     };
 
     /// The pieces of @p element (of @p shape), one per corner.
     std::vector<SplitMesh::Piece>
-    split_element(const GmshElement &element, const Shape &shape, const std::size_t parent,
-                  PointMaker &points)
+    split_element(const GmshElement &element,
+                  const Shape       &shape,
+                  const std::size_t  parent,
+                  PointMaker        &points)
     {
       const auto &t     = element.nodes;
       const auto  nodes = [&](const std::vector<unsigned int> &local) {
@@ -181,22 +197,24 @@ namespace contact_fem
       std::vector<unsigned int> all(t.size());
       for (unsigned int i = 0; i < all.size(); ++i)
         all[i] = i;
-      const unsigned int centre = shape.dim == 3 ? points.cell_centre(t) :
-                                  shape.dim == 2 ? points.face_centre(t) :
-                                                   0;
+      const unsigned int            centre = shape.dim == 3 ? points.cell_centre(t) :
+                                             shape.dim == 2 ? points.face_centre(t) :
+                                                              0;
       std::vector<SplitMesh::Piece> pieces;
       for (unsigned int v = 0; v < t.size(); ++v)
         {
           const auto n = neighbours(shape, v);
-          const auto m = [&](const unsigned int k) { return points.midpoint(t[v], t[n[k]]); };
+          const auto m = [&](const unsigned int k) {
+            return points.midpoint(t[v], t[n[k]]);
+          };
           const auto f = [&](const unsigned int j, const unsigned int k) {
             return points.face_centre(nodes(face_with(shape, v, n[j], n[k])));
           };
           SplitMesh::Piece piece;
-          piece.physical = element.physical;
-          piece.parent   = parent;
-          piece.corner   = v;
-          piece.type     = shape.dim == 1 ? 1 : shape.dim == 2 ? 3 : 5;
+          piece.physical       = element.physical;
+          piece.parent         = parent;
+          piece.corner         = v;
+          piece.type           = shape.dim == 1 ? 1 : shape.dim == 2 ? 3 : 5;
           const unsigned int x = points.node(t[v]);
           if (shape.dim == 1)
             piece.vertices = {x, m(0)};
@@ -214,20 +232,20 @@ namespace contact_fem
   needs_split(const std::map<int, std::size_t> &element_counts, const unsigned int dim)
   {
     for (const auto &[type, count] : element_counts)
-      if (const Shape *s = find_shape(type); s && s->dim == dim && count > 0 &&
-                                             (type == 2 || type == 4 || type == 6))
+      if (const Shape *s = find_shape(type);
+          s && s->dim == dim && count > 0 && (type == 2 || type == 4 || type == 6))
         return true;
     return false;
   }
 
   SplitMesh
-  split_mesh(const std::vector<GmshElement>            &elements,
+  split_mesh(const std::vector<GmshElement>           &elements,
              const std::unordered_map<long, Point<3>> &coordinates,
              const Point<3>                           &origin,
              const unsigned int                        dim)
   {
-    SplitMesh         mesh;
-    std::set<long>    used;
+    SplitMesh      mesh;
+    std::set<long> used;
     for (const GmshElement &e : elements)
       if (const Shape *s = find_shape(e.type); s && s->dim <= dim)
         used.insert(e.nodes.begin(), e.nodes.end());
@@ -285,10 +303,10 @@ namespace contact_fem
     for (const auto &[type, count] : mesh.n_split)
       {
         const Shape *s = find_shape(type);
-        text += (text.empty() ? "" : ", ") + std::to_string(count) + " " +
-                (count == 1 ? s->singular : s->plural) + (text.empty() ? " split into " : " into ") +
-                std::to_string(count * s->corners.size()) +
-                (dim == 2 ? " quadrilaterals" : " hexahedra");
+        text +=
+          (text.empty() ? "" : ", ") + std::to_string(count) + " " +
+          (count == 1 ? s->singular : s->plural) + (text.empty() ? " split into " : " into ") +
+          std::to_string(count * s->corners.size()) + (dim == 2 ? " quadrilaterals" : " hexahedra");
       }
     return text;
   }

@@ -8,7 +8,7 @@ namespace contact_fem
   Point<3>
   choose_frame_origin(const Point<3> &lower, const Point<3> &upper, const unsigned int dim)
   {
-    double extent = 0., distance = 0.;
+    double   extent = 0., distance = 0.;
     Point<3> centre;
     for (unsigned int d = 0; d < dim; ++d)
       {

@@ -12,10 +12,9 @@ namespace contact_fem
     bool
     is_number(const std::string &word)
     {
-      return !word.empty() &&
-             std::all_of(word.begin(), word.end(), [](const unsigned char c) {
-               return std::isdigit(c) != 0;
-             });
+      return !word.empty() && std::all_of(word.begin(), word.end(), [](const unsigned char c) {
+        return std::isdigit(c) != 0;
+      });
     }
 
     std::string
@@ -54,13 +53,11 @@ namespace contact_fem
       return word;
     const auto &ids   = bodies ? body_ids : surface_ids;
     const auto  found = ids.find(word);
-    AssertThrow(found != ids.end(),
-                ExcMessage(key + ": '" + word + "' is neither a " +
-                           (bodies ? "material id" : "boundary id") +
-                           " nor a physical name of the " +
-                           (bodies ? "bodies (cells)" : "surfaces (faces)") +
-                           " of the mesh file '" + file + "' (its names: " + listed(ids) +
-                           ")."));
+    AssertThrow(
+      found != ids.end(),
+      ExcMessage(key + ": '" + word + "' is neither a " + (bodies ? "material id" : "boundary id") +
+                 " nor a physical name of the " + (bodies ? "bodies (cells)" : "surfaces (faces)") +
+                 " of the mesh file '" + file + "' (its names: " + listed(ids) + ")."));
     return std::to_string(found->second);
   }
 
@@ -95,13 +92,12 @@ namespace contact_fem
   {
     // Also without names: a word in an id's place then says that the file
     // has none.
-    const auto replace = [&](const std::string &section, const std::string &name,
-                             const bool bodies, const char separator, const bool both_sides) {
+    const auto replace = [&](const std::string &section, const std::string &name, const bool bodies,
+                             const char separator, const bool both_sides) {
       prm.enter_subsection(section);
       const std::string text = prm.get(name);
       if (!Utilities::trim(text).empty())
-        prm.set(name,
-                replace_ids(text, section + "/" + name, bodies, separator, both_sides));
+        prm.set(name, replace_ids(text, section + "/" + name, bodies, separator, both_sides));
       prm.leave_subsection();
     };
     for (const std::string name : {"Fixed", "Prescribed displacement", "Pressure", "Traction"})

@@ -30,8 +30,7 @@ namespace contact_fem
         {"hertz cylinder", {"2: xy; 1: x", "1: 0.2*t", "3: 4", "1, 2", "200, 2e12", "0.3, 0.3"}},
         {"hertz sphere",
          {"2: xyz; 5: x; 6: y", "1: 5e5 * t", "3: 4", "1, 2", "1e8, 1e12", "0.29, 0.29"}},
-        {"contact blocks",
-         {"2: y; 5: x; 6: x", "1: 2", "3: 4", "1, 2", "100, 200", "0.3, 0.3"}}};
+        {"contact blocks", {"2: y; 5: x; 6: x", "1: 2", "3: 4", "1, 2", "100, 200", "0.3, 0.3"}}};
       return table;
     }
   } // namespace
@@ -81,8 +80,7 @@ namespace contact_fem
   Scene<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Geometry");
-    prm.declare_entry("Type",
-                      "hertz cylinder",
+    prm.declare_entry("Type", "hertz cylinder",
                       Patterns::Selection("hertz cylinder|hertz sphere|contact blocks|mesh file"),
                       "The mesh: 'hertz cylinder' (half-disc on a plate, built in "
                       "code and graded toward the contact zone; 2D), 'hertz "
@@ -92,9 +90,7 @@ namespace contact_fem
                       "(two stacked blocks with non-matching meshes), or 'mesh "
                       "file' (a Gmsh .msh file named by 'Mesh file')." +
                         builtin_scene_help());
-    prm.declare_entry("Mesh file",
-                      "",
-                      Patterns::Anything(),
+    prm.declare_entry("Mesh file", "", Patterns::Anything(),
                       "Gmsh file (ASCII, format 2.2 or 4) for Type = mesh file; a "
                       "relative name is taken relative to the .prm file. Bodies "
                       "are the cells' physical tags (material ids), surfaces the "
@@ -113,23 +109,17 @@ namespace contact_fem
                       "cut by unmerged nodes are refused with a message; "
                       "bodies in contact keep their own nodes (different "
                       "material ids).");
-    prm.declare_entry("Distortion",
-                      "0",
-                      Patterns::Double(0., 0.45),
+    prm.declare_entry("Distortion", "0", Patterns::Double(0., 0.45),
                       "Moves every interior vertex in a random direction by this "
                       "fraction of its shortest adjacent edge (fixed seed, so "
                       "runs repeat exactly); boundary vertices stay. For "
                       "robustness studies on distorted meshes. The Hertz disc "
                       "then has straight interior cell edges (only its arc is "
                       "curved).");
-    prm.declare_entry("Global refinements",
-                      "0",
-                      Patterns::Integer(0, 8),
+    prm.declare_entry("Global refinements", "0", Patterns::Integer(0, 8),
                       "Uniform refinements applied to the mesh after it is "
                       "built (each one halves every cell).");
-    prm.declare_entry("Local refinements",
-                      "",
-                      Patterns::Anything(),
+    prm.declare_entry("Local refinements", "", Patterns::Anything(),
                       "Boxes refined after the global refinements, as "
                       "'rounds: x_min, y_min, (z_min,) x_max, y_max(, z_max); "
                       "...': 'rounds' times, the cells whose centre lies in the "
@@ -137,9 +127,7 @@ namespace contact_fem
                       "as needed to keep one level difference). E.g. "
                       "'2: -1, 0.5, 1, 1.5' refines a band around y = 1 twice. "
                       "Empty: none. Distortion acts before these refinements.");
-    prm.declare_entry("Manifolds",
-                      "",
-                      Patterns::Anything(),
+    prm.declare_entry("Manifolds", "", Patterns::Anything(),
                       "Type = mesh file: the curved surfaces of the mesh, as 'boundary "
                       "id: surface; ...' with the surface 'circle cx, cy, R' in 2D, "
                       "'sphere cx, cy, cz, R' or 'cylinder px, py, pz, dx, dy, dz, R' "
@@ -195,10 +183,11 @@ namespace contact_fem
     prm.declare_entry("Plate width", "4", Patterns::Double(0.),
                       "The quarter plate spans [0, w] x [0, w] in x and y; it "
                       "should exceed the expected contact radius.");
-    prm.declare_entry("Plate thickness", "1", Patterns::Double(0.),
-                      "The plate spans [0, t] in z; the hemisphere touches it at "
-                      "(0, 0, t) (unless Initial gap is set). The plate has about w / t coarse cells per "
-                      "direction in x and y, one in z.");
+    prm.declare_entry(
+      "Plate thickness", "1", Patterns::Double(0.),
+      "The plate spans [0, t] in z; the hemisphere touches it at "
+      "(0, 0, t) (unless Initial gap is set). The plate has about w / t coarse cells per "
+      "direction in x and y, one in z.");
     prm.declare_entry("Pole patch angle", "45", Patterns::Double(5., 60.),
                       "Angle in degrees from the lowest point at which the coarse "
                       "patch of the curved surface around it ends (the other "
@@ -253,8 +242,8 @@ namespace contact_fem
   Scene<dim>::parse_parameters(ParameterHandler &prm, const std::string &prm_directory)
   {
     prm.enter_subsection("Geometry");
-    frame              = ModelFrame<dim>();
-    message_origin     = {};
+    frame          = ModelFrame<dim>();
+    message_origin = {};
     mesh_note.clear();
     type               = prm.get("Type");
     mesh_file          = prm.get("Mesh file");
@@ -262,17 +251,16 @@ namespace contact_fem
     distortion         = prm.get_double("Distortion");
     refinement_boxes.clear();
     const std::string boxes_key = "Geometry/Local refinements";
-    for (const auto &[rounds, box] :
-         split_key_value_list(prm.get("Local refinements"), boxes_key))
+    for (const auto &[rounds, box] : split_key_value_list(prm.get("Local refinements"), boxes_key))
       {
         RefinementBox       refinement_box;
         std::vector<double> bounds;
         bool                valid = true;
         try
           {
-            std::size_t end      = 0;
-            const int   n_rounds = std::stoi(rounds, &end);
-            valid                = end == rounds.size() && n_rounds >= 1 && n_rounds <= 8;
+            std::size_t end       = 0;
+            const int   n_rounds  = std::stoi(rounds, &end);
+            valid                 = end == rounds.size() && n_rounds >= 1 && n_rounds <= 8;
             refinement_box.rounds = valid ? n_rounds : 0;
             for (const std::string &entry : Utilities::split_string_list(box, ','))
               {
@@ -291,12 +279,11 @@ namespace contact_fem
             refinement_box.upper[d] = bounds[dim + d];
             valid                   = bounds[d] < bounds[dim + d];
           }
-        AssertThrow(valid,
-                    ExcMessage(boxes_key + ": entry '" + rounds + ": " + box +
-                               "' is not of the form 'rounds: lower corner, upper "
-                               "corner' with rounds in 1..8 and " +
-                               std::to_string(2 * dim) +
-                               " coordinates, each lower below its upper."));
+        AssertThrow(valid, ExcMessage(boxes_key + ": entry '" + rounds + ": " + box +
+                                      "' is not of the form 'rounds: lower corner, upper "
+                                      "corner' with rounds in 1..8 and " +
+                                      std::to_string(2 * dim) +
+                                      " coordinates, each lower below its upper."));
         refinement_boxes.push_back(refinement_box);
       }
     // Parsed once the mesh file is read (its physical names may stand for
@@ -337,20 +324,20 @@ namespace contact_fem
     prm.leave_subsection();
     prm.leave_subsection();
 
-    for (const double v : {hertz.radius, hertz.plate_half_width, hertz.plate_thickness,
-                           hertz_sphere.radius, hertz_sphere.plate_width,
-                           hertz_sphere.plate_thickness, blocks.width, blocks.height})
+    for (const double v :
+         {hertz.radius, hertz.plate_half_width, hertz.plate_thickness, hertz_sphere.radius,
+          hertz_sphere.plate_width, hertz_sphere.plate_thickness, blocks.width, blocks.height})
       AssertThrow(v > 0.,
-                  ExcMessage("Geometry: lengths must be > 0 (got " + std::to_string(v) +
-                             ")."));
+                  ExcMessage("Geometry: lengths must be > 0 (got " + std::to_string(v) + ")."));
     AssertThrow(std::abs(blocks.gap) < blocks.height,
                 ExcMessage("Geometry/Contact blocks/Initial gap: |gap| must be "
                            "smaller than the block height."));
     AssertThrow(hertz_sphere.gap > -hertz_sphere.plate_thickness,
-                ExcMessage("Geometry/Hertz sphere/Initial gap = " + significant(hertz_sphere.gap, 6) +
-                           ": an overlap must be smaller than the Plate thickness (" +
-                           significant(hertz_sphere.plate_thickness, 6) +
-                           "); deeper, the hemisphere would pass through the plate."));
+                ExcMessage(
+                  "Geometry/Hertz sphere/Initial gap = " + significant(hertz_sphere.gap, 6) +
+                  ": an overlap must be smaller than the Plate thickness (" +
+                  significant(hertz_sphere.plate_thickness, 6) +
+                  "); deeper, the hemisphere would pass through the plate."));
 
     if (type == "mesh file")
       {
@@ -359,9 +346,8 @@ namespace contact_fem
         if (mesh_file[0] != '/' && !prm_directory.empty())
           mesh_file = prm_directory + "/" + mesh_file;
         std::ifstream in(mesh_file);
-        AssertThrow(in.good(),
-                    ExcMessage("Geometry/Mesh file: cannot open '" + mesh_file +
-                               "' (no such file, or not readable)."));
+        AssertThrow(in.good(), ExcMessage("Geometry/Mesh file: cannot open '" + mesh_file +
+                                          "' (no such file, or not readable)."));
         in.seekg(0, std::ios::end);
         AssertThrow(in.tellg() > 0,
                     ExcMessage("Geometry/Mesh file: '" + mesh_file + "' is empty."));
@@ -369,15 +355,13 @@ namespace contact_fem
       }
     else if (type == "hertz sphere")
       {
-        AssertThrow(dim == 3,
-                    ExcMessage("Geometry/Type: 'hertz sphere' is a 3D geometry (set "
-                               "Dimension = 3; in 2D, 'hertz cylinder')."));
+        AssertThrow(dim == 3, ExcMessage("Geometry/Type: 'hertz sphere' is a 3D geometry (set "
+                                         "Dimension = 3; in 2D, 'hertz cylinder')."));
       }
     else
-      AssertThrow(dim == 2,
-                  ExcMessage("Geometry/Type: the built-in geometry '" + type +
-                             "' exists in 2D only so far; use 'hertz sphere' or a "
-                             "mesh file in 3D."));
+      AssertThrow(dim == 2, ExcMessage("Geometry/Type: the built-in geometry '" + type +
+                                       "' exists in 2D only so far; use 'hertz sphere' or a "
+                                       "mesh file in 3D."));
   }
 
   template <int dim>
@@ -449,15 +433,17 @@ namespace contact_fem
     for (unsigned int i = 0; i < polygonal_boundaries.size(); ++i)
       {
         const auto &b = polygonal_boundaries[i];
-        ids << (i == 0 ? "" : i + 1 == polygonal_boundaries.size() ? " and " : ", ")
+        ids << (i == 0                               ? "" :
+                i + 1 == polygonal_boundaries.size() ? " and " :
+                                                       ", ")
             << static_cast<unsigned int>(b.id)
             << (b.id == 0 ? " (the faces without a physical tag)" : "");
         details << (i == 0 ? "" : "; ")
                 << (one ? "its faces turn by " :
                           "boundary " + std::to_string(b.id) + ": faces turning by ")
-                << b.min_angle * 180. / numbers::PI << " to "
-                << b.max_angle * 180. / numbers::PI << " degrees at " << b.n_kinks << " of "
-                << b.n_joints << (dim == 2 ? " vertices" : " edges");
+                << b.min_angle * 180. / numbers::PI << " to " << b.max_angle * 180. / numbers::PI
+                << " degrees at " << b.n_kinks << " of " << b.n_joints
+                << (dim == 2 ? " vertices" : " edges");
         // A cylinder first: the vertices of an extrusion by one layer lie
         // on a sphere too (through its two end circles).
         const auto clean = [](const double x, const double scale) {
@@ -485,17 +471,16 @@ namespace contact_fem
     const std::string example =
       fitted.tellp() > 0 ? "'" + fitted.str() + "' (fitted to the vertices)" :
                            (dim == 2 ? "'id: circle cx, cy, R'" :
-                                        "'id: sphere cx, cy, cz, R' or 'id: cylinder px, py, pz, "
-                                        "dx, dy, dz, R'");
+                                       "'id: sphere cx, cy, cz, R' or 'id: cylinder px, py, pz, "
+                                       "dx, dy, dz, R'");
     return ids.str() + " of the mesh file " +
            (one ? "looks like a polygon standing for a curve (" :
                   "look like polygons standing for curves (") +
-           details.str() + ") but " +
-           (one ? "has" : "have") + " no manifold: refinement keeps the chords of the coarse "
+           details.str() + ") but " + (one ? "has" : "have") +
+           " no manifold: refinement keeps the chords of the coarse "
            "mesh (new vertices on the straight edges, a kink and a pressure spike at every "
-           "original vertex). Attach the true " + (one ? "surface" : "surfaces") +
-           " with Geometry/Manifolds, e.g. " +
-           example + ".";
+           "original vertex). Attach the true " +
+           (one ? "surface" : "surfaces") + " with Geometry/Manifolds, e.g. " + example + ".";
   }
 
   namespace
@@ -542,12 +527,12 @@ namespace contact_fem
   Scene<2>::create_hertz_mesh(parallel::distributed::Triangulation<2> &tria) const
   {
     Triangulation<2> coarse;
-    const double R = hertz.radius, t = hertz.plate_thickness;
-    const Point<2> c(0., t + R);
+    const double     R = hertz.radius, t = hertz.plate_thickness;
+    const Point<2>   c(0., t + R);
     // Coarse half-disc: a centre cell under the flat top and three cells
     // along the arc; the lowest point of the arc lies inside the bottom
     // cell, so the contact zone is free of coarse vertices.
-    const double             s = std::sqrt(0.5);
+    const double                s = std::sqrt(0.5);
     const std::vector<Point<2>> v = {c + Point<2>(-R, 0.),
                                      c + Point<2>(R, 0.),
                                      c + Point<2>(-R * s, -R * s),
@@ -556,11 +541,11 @@ namespace contact_fem
                                      c + Point<2>(0.4375 * R, 0.),
                                      c + Point<2>(-0.4375 * R, -0.5 * R),
                                      c + Point<2>(0.4375 * R, -0.5 * R)};
-    std::vector<CellData<2>>     cells(4, CellData<2>(4));
-    const unsigned int           cell_vertices[4][4] = {{6, 7, 4, 5},
-                                                        {2, 3, 6, 7},
-                                                        {2, 6, 0, 4},
-                                                        {7, 3, 5, 1}};
+    std::vector<CellData<2>>    cells(4, CellData<2>(4));
+    const unsigned int          cell_vertices[4][4] = {{6, 7, 4, 5},
+                                                       {2, 3, 6, 7},
+                                                       {2, 6, 0, 4},
+                                                       {7, 3, 5, 1}};
     for (unsigned int i = 0; i < 4; ++i)
       for (unsigned int j = 0; j < 4; ++j)
         cells[i].vertices[j] = cell_vertices[i][j];
@@ -571,9 +556,7 @@ namespace contact_fem
     Triangulation<2>   plate;
     const unsigned int nx =
       std::max(1, static_cast<int>(std::round(2. * hertz.plate_half_width / t)));
-    GridGenerator::subdivided_hyper_rectangle(plate,
-                                              {nx, 1},
-                                              Point<2>(-hertz.plate_half_width, 0.),
+    GridGenerator::subdivided_hyper_rectangle(plate, {nx, 1}, Point<2>(-hertz.plate_half_width, 0.),
                                               Point<2>(hertz.plate_half_width, t));
     join_bodies({&disc, &plate}, {1, 2}, coarse);
 
@@ -626,23 +609,20 @@ namespace contact_fem
         tria.execute_coarsening_and_refinement();
       }
     // Graded rounds toward the segment |x| < w_r of the plate top.
-    const unsigned int n_rounds =
-      std::max(hertz.contact_refinements, hertz.plate_refinements);
+    const unsigned int n_rounds = std::max(hertz.contact_refinements, hertz.plate_refinements);
     for (unsigned int round = 0; round < n_rounds; ++round)
       {
         for (const auto &cell : tria.active_cell_iterators())
           {
             if (!cell->is_locally_owned())
               continue;
-            const unsigned int rounds_of_body = cell->material_id() == 1 ?
-                                                  hertz.contact_refinements :
-                                                  hertz.plate_refinements;
+            const unsigned int rounds_of_body =
+              cell->material_id() == 1 ? hertz.contact_refinements : hertz.plate_refinements;
             if (round >= rounds_of_body)
               continue;
-            const Point<2> p = cell->center();
-            const double   dx =
-              std::max(0., std::abs(p[0]) - hertz.refinement_half_width);
-            const double distance = std::hypot(dx, p[1] - t);
+            const Point<2> p        = cell->center();
+            const double   dx       = std::max(0., std::abs(p[0]) - hertz.refinement_half_width);
+            const double   distance = std::hypot(dx, p[1] - t);
             if (distance < hertz.grading_factor * cell->diameter())
               cell->set_refine_flag();
           }
@@ -655,14 +635,11 @@ namespace contact_fem
   Scene<2>::create_contact_blocks(parallel::distributed::Triangulation<2> &tria) const
   {
     Triangulation<2> coarse;
-    const double W = blocks.width, H = blocks.height;
+    const double     W = blocks.width, H = blocks.height;
     Triangulation<2> lower, upper;
-    GridGenerator::subdivided_hyper_rectangle(lower,
-                                              {blocks.lower_cells, blocks.lower_cells},
-                                              Point<2>(0., 0.),
-                                              Point<2>(W, H));
-    GridGenerator::subdivided_hyper_rectangle(upper,
-                                              {blocks.upper_cells, blocks.upper_cells},
+    GridGenerator::subdivided_hyper_rectangle(lower, {blocks.lower_cells, blocks.lower_cells},
+                                              Point<2>(0., 0.), Point<2>(W, H));
+    GridGenerator::subdivided_hyper_rectangle(upper, {blocks.upper_cells, blocks.upper_cells},
                                               Point<2>(0., H + blocks.gap),
                                               Point<2>(W, 2. * H + blocks.gap));
     join_bodies({&upper, &lower}, {1, 2}, coarse);
@@ -670,10 +647,10 @@ namespace contact_fem
       for (const auto f : cell->face_indices())
         if (cell->face(f)->at_boundary())
           {
-            const Point<2> fc    = cell->face(f)->center();
-            const bool     upper_body = cell->material_id() == 1;
-            const double   y0 = upper_body ? H + blocks.gap : 0.;
-            types::boundary_id id = 0;
+            const Point<2>     fc         = cell->face(f)->center();
+            const bool         upper_body = cell->material_id() == 1;
+            const double       y0         = upper_body ? H + blocks.gap : 0.;
+            types::boundary_id id         = 0;
             if (close(fc[1], y0, H))
               id = upper_body ? 3 : 2;
             else if (close(fc[1], y0 + H, H))
@@ -717,19 +694,15 @@ namespace contact_fem
       const double s = std::sin(pole_patch_angle), c = std::cos(pole_patch_angle);
       // The surface points: the three poles, the ends of the patch edges on
       // the three arcs, and the corner the three patches share.
-      const std::array<Point<3>, 7> directions = {{Point<3>(1., 0., 0.),
-                                                   Point<3>(0., 1., 0.),
-                                                   Point<3>(1., 1., 0.),
-                                                   Point<3>(0., 0., -1.),
-                                                   Point<3>(s, 0., -c),
-                                                   Point<3>(0., s, -c),
-                                                   Point<3>(s, s, -c)}};
+      const std::array<Point<3>, 7> directions = {
+        {Point<3>(1., 0., 0.), Point<3>(0., 1., 0.), Point<3>(1., 1., 0.), Point<3>(0., 0., -1.),
+         Point<3>(s, 0., -c), Point<3>(0., s, -c), Point<3>(s, s, -c)}};
       // Inner block: each surface point pulled in along its direction to
       // the cube of half-width 0.4 (max norm), so the block's faces are
       // planar and the outer cells about as thick (0.6) as they are wide
       // at the pole.
-      const double            inner = 0.4;
-      std::vector<Point<3>>   vertices(1 + 2 * directions.size());
+      const double          inner = 0.4;
+      std::vector<Point<3>> vertices(1 + 2 * directions.size());
       for (unsigned int k = 0; k < directions.size(); ++k)
         {
           double max_norm = 0.;
@@ -740,10 +713,10 @@ namespace contact_fem
         }
       // Indices: 0 centre; inner 1..7 and outer 8..14 in the order of
       // directions (x pole, y pole, xy arc, lowest pole, xz, yz, shared).
-      const unsigned int cell_vertices[4][8] = {{4, 5, 6, 7, 0, 1, 2, 3},         // block
-                                                {11, 12, 13, 14, 4, 5, 6, 7},     // pole patch
-                                                {5, 12, 7, 14, 1, 8, 3, 10},      // x patch
-                                                {6, 7, 13, 14, 2, 3, 9, 10}};     // y patch
+      const unsigned int       cell_vertices[4][8] = {{4, 5, 6, 7, 0, 1, 2, 3},     // block
+                                                      {11, 12, 13, 14, 4, 5, 6, 7}, // pole patch
+                                                      {5, 12, 7, 14, 1, 8, 3, 10},  // x patch
+                                                      {6, 7, 13, 14, 2, 3, 9, 10}}; // y patch
       std::vector<CellData<3>> cells(4, CellData<3>(8));
       for (unsigned int i = 0; i < 4; ++i)
         for (unsigned int v = 0; v < 8; ++v)
@@ -781,18 +754,20 @@ namespace contact_fem
   void
   Scene<3>::create_hertz_sphere_mesh(parallel::distributed::Triangulation<3> &tria) const
   {
-    const double   R = hertz_sphere.radius, t = hertz_sphere.plate_thickness,
+    const double R = hertz_sphere.radius, t = hertz_sphere.plate_thickness,
                  w = hertz_sphere.plate_width, g = hertz_sphere.gap;
-    const Point<3> centre(0., 0., t + g + R);
+    const Point<3>   centre(0., 0., t + g + R);
     Triangulation<3> sphere;
-    unit_ball_octant(hertz_sphere.pole_patch_angle * numbers::PI / 180., hertz_sphere.half,
-                     sphere);
-    GridTools::transform([&](const Point<3> &p) { return Point<3>(centre + R * p); }, sphere);
+    unit_ball_octant(hertz_sphere.pole_patch_angle * numbers::PI / 180., hertz_sphere.half, sphere);
+    GridTools::transform(
+      [&](const Point<3> &p) {
+        return Point<3>(centre + R * p);
+      },
+      sphere);
 
     Triangulation<3>   plate;
     const unsigned int n = std::max(1, static_cast<int>(std::round(w / t)));
-    GridGenerator::subdivided_hyper_rectangle(plate,
-                                              {hertz_sphere.half ? 2 * n : n, n, 1},
+    GridGenerator::subdivided_hyper_rectangle(plate, {hertz_sphere.half ? 2 * n : n, n, 1},
                                               Point<3>(hertz_sphere.half ? -w : 0., 0., 0.),
                                               Point<3>(w, w, t));
     // The pole touches the plate at (0, 0, t) unless lifted by g: joined
@@ -903,10 +878,9 @@ namespace contact_fem
                     }
                 }
             AssertThrow(Utilities::MPI::sum(n_marked, tria.get_communicator()) > 0,
-                        ExcMessage("Geometry/Local refinements: box " +
-                                   std::to_string(b + 1) +
-                                   " holds no cell centre (round " +
-                                   std::to_string(round + 1) + ")."));
+                        ExcMessage("Geometry/Local refinements: box " + std::to_string(b + 1) +
+                                   " holds no cell centre (round " + std::to_string(round + 1) +
+                                   ")."));
             tria.execute_coarsening_and_refinement();
           }
       }
@@ -917,8 +891,7 @@ namespace contact_fem
   Scene<dim>::check_mesh(const parallel::distributed::Triangulation<dim> &tria,
                          const std::set<types::material_id>              &material_ids)
   {
-    AssertThrow(tria.n_global_active_cells() > 0,
-                ExcMessage("Geometry: the mesh has no cells."));
+    AssertThrow(tria.n_global_active_cells() > 0, ExcMessage("Geometry: the mesh has no cells."));
 
     // The coarse mesh is known on every rank: its ids are those of the mesh.
     std::set<types::material_id> mesh_materials;

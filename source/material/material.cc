@@ -26,7 +26,7 @@ namespace contact_fem
     void
     check_bulk_to_shear_ratio(const double nu, const unsigned int entry, const std::string &text)
     {
-      const double ratio = lambda_over_mu(nu);
+      const double       ratio = lambda_over_mu(nu);
       std::ostringstream message;
       message << "Materials/Poisson's ratios: entry " << entry + 1 << " is " << text
               << ": lambda/mu = 2 nu / (1 - 2 nu) = " << std::setprecision(2) << ratio
@@ -56,8 +56,7 @@ namespace contact_fem
   double
   ElasticConstants::lambda() const
   {
-    return youngs_modulus * poisson_ratio /
-           ((1. + poisson_ratio) * (1. - 2. * poisson_ratio));
+    return youngs_modulus * poisson_ratio / ((1. + poisson_ratio) * (1. - 2. * poisson_ratio));
   }
 
   double
@@ -71,22 +70,19 @@ namespace contact_fem
   Materials<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Materials");
-    prm.declare_entry("Material ids",
-                      "",
-                      Patterns::Anything(),
-                      "Material ids of the bodies (cell material ids of the mesh, "
-                      "or their Gmsh physical names), one entry per body. The lists below give the constants in "
-                      "the same order." + not_set_help(true),
-                      true);
-    prm.declare_entry("Young's moduli",
-                      "",
-                      Patterns::List(Patterns::Double()),
+    prm.declare_entry(
+      "Material ids", "", Patterns::Anything(),
+      "Material ids of the bodies (cell material ids of the mesh, "
+      "or their Gmsh physical names), one entry per body. The lists below give the constants in "
+      "the same order." +
+        not_set_help(true),
+      true);
+    prm.declare_entry("Young's moduli", "", Patterns::List(Patterns::Double()),
                       "Young's modulus of each body, a positive normal double "
-                      "(2.2e-308 to 1.8e308). Units: stress." + not_set_help(true),
+                      "(2.2e-308 to 1.8e308). Units: stress." +
+                        not_set_help(true),
                       true);
-    prm.declare_entry("Poisson's ratios",
-                      "",
-                      Patterns::List(Patterns::Double()),
+    prm.declare_entry("Poisson's ratios", "", Patterns::List(Patterns::Double()),
                       "Poisson's ratio of each body, in (-1, 0.5). 2D bodies are "
                       "in plane strain. Ratios whose lambda/mu = 2 nu / (1 - 2 "
                       "nu) exceeds 4.5e14 (nu > 0.499999999999999) are refused: "
@@ -116,10 +112,10 @@ namespace contact_fem
             id = std::stoi(entry, &end);
           }
         catch (...)
-          {
-          }
+          {}
         AssertThrow(end == entry.size() && id >= 0 && id <= 255,
-                    ExcMessage("Materials/Material ids: '" + entry + "' is not a material id "
+                    ExcMessage("Materials/Material ids: '" + entry +
+                               "' is not a material id "
                                "(an integer from 0 to 255) nor a physical name of the bodies "
                                "of a mesh file."));
         ids.push_back(id);
@@ -130,45 +126,41 @@ namespace contact_fem
                 ExcMessage("Materials/Material ids: empty; expected the material id of "
                            "every body (and its constants in Young's moduli and "
                            "Poisson's ratios)."));
-    const auto E  = parse_number_list(E_text, "Materials/Young's moduli",
+    const auto E = parse_number_list(E_text, "Materials/Young's moduli",
                                      "a positive normal double (2.2e-308 to 1.8e308)");
-    const auto nu = parse_number_list(nu_text, "Materials/Poisson's ratios",
-                                      "a value in (-1, 0.5)");
+    const auto nu =
+      parse_number_list(nu_text, "Materials/Poisson's ratios", "a value in (-1, 0.5)");
     const auto nu_entries = Utilities::split_string_list(nu_text, ',');
 
     AssertThrow(E.size() == ids.size() && nu.size() == ids.size(),
                 ExcMessage("Materials: 'Material ids', 'Young's moduli' and "
                            "'Poisson's ratios' must have the same number of "
                            "entries (got " +
-                           std::to_string(ids.size()) + ", " +
-                           std::to_string(E.size()) + ", " +
+                           std::to_string(ids.size()) + ", " + std::to_string(E.size()) + ", " +
                            std::to_string(nu.size()) + ")."));
     bodies.clear();
     for (unsigned int i = 0; i < ids.size(); ++i)
       {
         AssertThrow(std::isfinite(E[i]) && E[i] > 0.,
-                    ExcMessage("Materials/Young's moduli: entry " +
-                               std::to_string(i + 1) + " is " +
-                               format(E[i]) +
-                               "; expected a finite value > 0."));
+                    ExcMessage("Materials/Young's moduli: entry " + std::to_string(i + 1) + " is " +
+                               format(E[i]) + "; expected a finite value > 0."));
         AssertThrow(nu[i] > -1. && nu[i] < 0.5,
-                    ExcMessage("Materials/Poisson's ratios: entry " +
-                               std::to_string(i + 1) + " is " +
-                               format(nu[i]) +
-                               "; expected a value in (-1, 0.5)."));
+                    ExcMessage("Materials/Poisson's ratios: entry " + std::to_string(i + 1) +
+                               " is " + format(nu[i]) + "; expected a value in (-1, 0.5)."));
         check_bulk_to_shear_ratio(nu[i], i, nu_entries[i]);
         AssertThrow(!(shear_over_bulk(nu[i]) > max_shear_over_bulk()),
                     ExcMessage("Materials/Poisson's ratios: entry " + std::to_string(i + 1) +
                                " is " + nu_entries[i] +
                                ": 1 + nu is within ten units of round-off of 0, so the "
                                "ratio of the shear to the bulk modulus, mu/K = 3 (1 - 2 "
-                               "nu) / (2 (1 + nu)) = " + format(shear_over_bulk(nu[i])) +
+                               "nu) / (2 (1 + nu)) = " +
+                               format(shear_over_bulk(nu[i])) +
                                ", keeps at most one correct digit (as nu -> -1 the bulk "
                                "modulus vanishes next to the shear modulus); expected 1 + "
                                "nu of at least about 1e-14 (nu >= -0.99999999999999)."));
         AssertThrow(bodies.count(ids[i]) == 0,
-                    ExcMessage("Materials/Material ids: id " +
-                               std::to_string(ids[i]) + " is listed twice."));
+                    ExcMessage("Materials/Material ids: id " + std::to_string(ids[i]) +
+                               " is listed twice."));
         bodies[ids[i]] = ElasticConstants{E[i], nu[i]};
       }
   }
@@ -179,8 +171,7 @@ namespace contact_fem
   {
     const auto it = bodies.find(id);
     AssertThrow(it != bodies.end(),
-                ExcMessage("Materials: the mesh has cells with material id " +
-                           std::to_string(id) +
+                ExcMessage("Materials: the mesh has cells with material id " + std::to_string(id) +
                            ", which 'Materials/Material ids' does not list."));
     return it->second;
   }
@@ -202,27 +193,24 @@ namespace contact_fem
   SymmetricTensor<4, dim>
   Materials<dim>::stiffness_tensor(const types::material_id id) const
   {
-    const ElasticConstants &c = constants(id);
+    const ElasticConstants &c      = constants(id);
     const double            lambda = c.lambda(), mu = c.mu();
     SymmetricTensor<4, dim> C;
     for (unsigned int i = 0; i < dim; ++i)
       for (unsigned int j = 0; j < dim; ++j)
         for (unsigned int k = 0; k < dim; ++k)
           for (unsigned int l = 0; l < dim; ++l)
-            C[i][j][k][l] = ((i == k && j == l ? mu : 0.) +
-                             (i == l && j == k ? mu : 0.) +
+            C[i][j][k][l] = ((i == k && j == l ? mu : 0.) + (i == l && j == k ? mu : 0.) +
                              (i == j && k == l ? lambda : 0.));
     return C;
   }
 
   template <int dim>
   SymmetricTensor<2, dim>
-  Materials<dim>::stress(const types::material_id        id,
-                         const SymmetricTensor<2, dim> &strain) const
+  Materials<dim>::stress(const types::material_id id, const SymmetricTensor<2, dim> &strain) const
   {
     const ElasticConstants &c = constants(id);
-    return c.lambda() * trace(strain) * unit_symmetric_tensor<dim>() +
-           2. * c.mu() * strain;
+    return c.lambda() * trace(strain) * unit_symmetric_tensor<dim>() + 2. * c.mu() * strain;
   }
 
   template <int dim>
@@ -232,28 +220,26 @@ namespace contact_fem
                          const double                   volumetric_strain) const
   {
     const ElasticConstants &c = constants(id);
-    return c.lambda() * volumetric_strain * unit_symmetric_tensor<dim>() +
-           2. * c.mu() * strain;
+    return c.lambda() * volumetric_strain * unit_symmetric_tensor<dim>() + 2. * c.mu() * strain;
   }
 
   template <int dim>
   SymmetricTensor<2, dim>
-  Materials<dim>::compliance(const types::material_id        id,
+  Materials<dim>::compliance(const types::material_id       id,
                              const SymmetricTensor<2, dim> &sigma) const
   {
     // Inverse of the (plane strain) law: eps = (sigma - lambda/(2 mu + dim
     // lambda) tr(sigma) I) / (2 mu).
     const ElasticConstants &c      = constants(id);
     const double            lambda = c.lambda(), mu = c.mu();
-    return (sigma - lambda / (2. * mu + dim * lambda) * trace(sigma) *
-                      unit_symmetric_tensor<dim>()) /
+    return (sigma -
+            lambda / (2. * mu + dim * lambda) * trace(sigma) * unit_symmetric_tensor<dim>()) /
            (2. * mu);
   }
 
   template <int dim>
   double
-  Materials<dim>::von_mises(const types::material_id        id,
-                            const SymmetricTensor<2, dim> &sigma) const
+  Materials<dim>::von_mises(const types::material_id id, const SymmetricTensor<2, dim> &sigma) const
   {
     if (dim == 3)
       return std::sqrt(1.5) * deviator(sigma).norm();
@@ -261,9 +247,9 @@ namespace contact_fem
     const double nu  = constants(id).poisson_ratio;
     const double sxx = sigma[0][0], syy = sigma[1][1], sxy = sigma[0][1];
     const double szz = nu * (sxx + syy);
-    return std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) +
-                            (szz - sxx) * (szz - sxx)) +
-                     3. * sxy * sxy);
+    return std::sqrt(
+      0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
+      3. * sxy * sxy);
   }
 
   template class Materials<2>;

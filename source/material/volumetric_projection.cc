@@ -12,9 +12,8 @@ namespace contact_fem
     , fe_values(mapping, fe, QGauss<dim>(fe.degree + 1), update_gradients | update_JxW_values)
     , projection(n_basis, fe.n_dofs_per_cell())
   {
-    AssertThrow(fe.degree <= 2,
-                ExcMessage("Finite element/Volumetric strain: B-bar is implemented "
-                           "for degrees 1 and 2."));
+    AssertThrow(fe.degree <= 2, ExcMessage("Finite element/Volumetric strain: B-bar is implemented "
+                                           "for degrees 1 and 2."));
   }
 
   template <int dim>

@@ -46,8 +46,8 @@ namespace contact_fem
 
   template <int dim>
   double
-  pressure_l2_relative_error(const ContactState<dim>                        &state,
-                             const std::vector<double>                      &pressure,
+  pressure_l2_relative_error(const ContactState<dim>                         &state,
+                             const std::vector<double>                       &pressure,
                              const std::function<double(const Point<dim> &)> &exact)
   {
     double l2_error = 0., l2_norm = 0.;
@@ -63,8 +63,7 @@ namespace contact_fem
 
   template <int dim>
   void
-  AnalyticalComparison<dim>::register_comparison(const std::string &name,
-                                                 const Factory     &factory)
+  AnalyticalComparison<dim>::register_comparison(const std::string &name, const Factory &factory)
   {
     comparisons<dim>()[name] = factory;
   }
@@ -78,8 +77,8 @@ namespace contact_fem
     const auto entry = comparisons<dim>().find(analytical.type);
     // The parameter's pattern admits registered names only.
     AssertThrow(entry != comparisons<dim>().end(),
-                ExcMessage("Analytical solution/Type: no comparison called '" +
-                           analytical.type + "' is registered"));
+                ExcMessage("Analytical solution/Type: no comparison called '" + analytical.type +
+                           "' is registered"));
     return entry->second(analytical);
   }
 
@@ -88,9 +87,11 @@ namespace contact_fem
   template class AnalyticalComparison<2>;
   template class AnalyticalComparison<3>;
   template double
-  pressure_l2_relative_error(const ContactState<2> &, const std::vector<double> &,
+  pressure_l2_relative_error(const ContactState<2> &,
+                             const std::vector<double> &,
                              const std::function<double(const Point<2> &)> &);
   template double
-  pressure_l2_relative_error(const ContactState<3> &, const std::vector<double> &,
+  pressure_l2_relative_error(const ContactState<3> &,
+                             const std::vector<double> &,
                              const std::function<double(const Point<3> &)> &);
 } // namespace contact_fem

@@ -58,8 +58,7 @@ namespace contact_fem
       // off Q, and a sliding body tilts it to the resultant itself.
       Tensor<1, dim> n0;
       n0[dim - 1] = mean_normal[dim - 1] < 0. ? -1. : 1.;
-      return {-(force * n0) / symmetry_fraction,
-              force * load_direction(n0) / symmetry_fraction};
+      return {-(force * n0) / symmetry_fraction, force * load_direction(n0) / symmetry_fraction};
     }
 
     /**
@@ -83,11 +82,11 @@ namespace contact_fem
                      const std::vector<double>     &load_path,
                      const std::vector<double>     *tangential = nullptr)
     {
-      const double E_star = interface.contact_modulus(0);
-      const double mu     = analytical.friction_coefficient; // Tresca: the bound g
-      const CattaneoProblem problem = dim == 3          ? CattaneoProblem::spheres :
-                                      analytical.tresca ? CattaneoProblem::cylinders_tresca :
-                                                          CattaneoProblem::cylinders;
+      const double              E_star  = interface.contact_modulus(0);
+      const double              mu      = analytical.friction_coefficient; // Tresca: the bound g
+      const CattaneoProblem     problem = dim == 3          ? CattaneoProblem::spheres :
+                                          analytical.tresca ? CattaneoProblem::cylinders_tresca :
+                                                              CattaneoProblem::cylinders;
       std::vector<CattaneoNode> nodes;
       for (const auto &s : interface.slave_nodes)
         if (s.paired)
@@ -103,18 +102,17 @@ namespace contact_fem
             if constexpr (dim == 2)
               {
                 node.x = x[0] - analytical.center;
-                node.t = !active ? 0. :
-                         tangential ?
-                                    (*tangential)[s.node] :
-                                    contact.traction(s) *
-                                      ContactFormulation<dim>::tangent(contact.frame_normal(s));
+                node.t = !active    ? 0. :
+                         tangential ? (*tangential)[s.node] :
+                                      contact.traction(s) *
+                                        ContactFormulation<dim>::tangent(contact.frame_normal(s));
               }
             else
               {
                 // The tangential traction in the node's frame, its
                 // components along the load (x) and across it (y).
-                node.x     = analytical.axis_distance(x[0], x[1]);
-                node.along = x[0] - analytical.center;
+                node.x                 = analytical.axis_distance(x[0], x[1]);
+                node.along             = x[0] - analytical.center;
                 const Tensor<1, dim> n = contact.frame_normal(s);
                 Tensor<1, dim>       t = contact.traction(s);
                 t -= (t * n) * n;
@@ -146,9 +144,10 @@ namespace contact_fem
                                              CattaneoSolution(P, history.Q, history.Q_star, mu,
                                                               analytical.radius, E_star, problem),
                                              history.direction, fraction));
-      return to_json(compare_with_cattaneo(
-        nodes, CattaneoSolution(P, std::abs(Q), mu, analytical.radius, E_star, problem), 0.,
-        fraction));
+      return to_json(compare_with_cattaneo(nodes,
+                                           CattaneoSolution(P, std::abs(Q), mu, analytical.radius,
+                                                            E_star, problem),
+                                           0., fraction));
     }
 
     template <int dim>
@@ -200,7 +199,7 @@ namespace contact_fem
       }
 
       void
-      report_recovered(const ContactState<dim>   &state,
+      report_recovered(const ContactState<dim> &state,
                        const std::vector<double> &,
                        const std::vector<double> &tangential,
                        const std::string         &label,
@@ -212,12 +211,13 @@ namespace contact_fem
         // only (report_recovered_tractions()).
         if (dim == 3)
           return;
-        const Json cattaneo = cattaneo_results(state.interface, state.contact, this->analytical,
-                                               load_path, &tangential);
-        const double error = cattaneo["tangential_l2_relative_error"].number_value();
+        const Json   cattaneo = cattaneo_results(state.interface, state.contact, this->analytical,
+                                                 load_path, &tangential);
+        const double error    = cattaneo["tangential_l2_relative_error"].number_value();
         record.set(prefix + "recovered_tangential_l2_relative_error_cattaneo", error);
-        out << label << " tangential traction, L2 error against Cattaneo: "
-            << value_or_ok(error, 1e-10) << std::endl;
+        out << label
+            << " tangential traction, L2 error against Cattaneo: " << value_or_ok(error, 1e-10)
+            << std::endl;
       }
 
     protected:

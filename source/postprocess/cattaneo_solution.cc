@@ -11,11 +11,11 @@
 
 namespace contact_fem
 {
-  CattaneoSolution::CattaneoSolution(const double P,
-                                     const double Q,
-                                     const double mu,
-                                     const double radius,
-                                     const double E_star,
+  CattaneoSolution::CattaneoSolution(const double          P,
+                                     const double          Q,
+                                     const double          mu,
+                                     const double          radius,
+                                     const double          E_star,
                                      const CattaneoProblem problem)
     : P(P)
     , Q(Q)
@@ -24,10 +24,10 @@ namespace contact_fem
     , sphere(problem == CattaneoProblem::spheres)
   {
     constexpr double pi = dealii::numbers::PI;
-    a     = sphere ? std::cbrt(3. * P * radius / (4. * E_star)) :
-                     std::sqrt(4. * P * radius / (pi * E_star));
-    p_max = sphere ? 3. * P / (2. * pi * a * a) : 2. * P / (pi * a);
-    c     = stick_size(Q);
+    a                   = sphere ? std::cbrt(3. * P * radius / (4. * E_star)) :
+                                   std::sqrt(4. * P * radius / (pi * E_star));
+    p_max               = sphere ? 3. * P / (2. * pi * a * a) : 2. * P / (pi * a);
+    c                   = stick_size(Q);
   }
 
   double
@@ -41,12 +41,12 @@ namespace contact_fem
     return a * (sphere ? std::cbrt(ratio) : std::sqrt(ratio));
   }
 
-  CattaneoSolution::CattaneoSolution(const double P,
-                                     const double Q,
-                                     const double Q_star,
-                                     const double mu,
-                                     const double radius,
-                                     const double E_star,
+  CattaneoSolution::CattaneoSolution(const double          P,
+                                     const double          Q,
+                                     const double          Q_star,
+                                     const double          mu,
+                                     const double          radius,
+                                     const double          E_star,
                                      const CattaneoProblem problem)
     : CattaneoSolution(P, Q_star, mu, radius, E_star, problem)
   {
@@ -124,7 +124,7 @@ namespace contact_fem
                        const double                     symmetry_fraction,
                        CattaneoComparison              &result)
     {
-      double area = 0., moment = 0., size = 0.;
+      double       area = 0., moment = 0., size = 0.;
       unsigned int n_active = 0;
       for (const auto &node : nodes)
         {
@@ -153,8 +153,9 @@ namespace contact_fem
   {
     CattaneoComparison result;
     result.exact = exact;
-    std::sort(nodes.begin(), nodes.end(),
-              [](const CattaneoNode &m, const CattaneoNode &n) { return m.x < n.x; });
+    std::sort(nodes.begin(), nodes.end(), [](const CattaneoNode &m, const CattaneoNode &n) {
+      return m.x < n.x;
+    });
     const unsigned int n     = nodes.size();
     unsigned int       first = n, last = n;
     for (unsigned int i = 0; i < n; ++i)
@@ -177,12 +178,12 @@ namespace contact_fem
             result.stick_contiguous = false;
         // Each end halfway to the next node outward; a stick node with no
         // outer neighbour ends the zone at itself.
-        const double left  = first > 0 ? 0.5 * (nodes[first].x + nodes[first - 1].x) :
-                                         nodes[first].x;
-        const double right = last + 1 < n ? 0.5 * (nodes[last].x + nodes[last + 1].x) :
-                                            nodes[last].x;
-        result.c_h          = 0.5 * (right - left);
-        result.stick_center = 0.5 * (right + left);
+        const double left =
+          first > 0 ? 0.5 * (nodes[first].x + nodes[first - 1].x) : nodes[first].x;
+        const double right =
+          last + 1 < n ? 0.5 * (nodes[last].x + nodes[last + 1].x) : nodes[last].x;
+        result.c_h                 = 0.5 * (right - left);
+        result.stick_center        = 0.5 * (right + left);
         const double left_spacing  = first > 0 ? nodes[first].x - nodes[first - 1].x : 0.;
         const double right_spacing = last + 1 < n ? nodes[last + 1].x - nodes[last].x : 0.;
         result.end_spacing         = 0.5 * (left_spacing + right_spacing);
@@ -193,7 +194,7 @@ namespace contact_fem
     double resultant = 0.;
     for (const auto &node : nodes)
       resultant += node.weight * node.t;
-    const double sign = direction != 0. ? direction : resultant < 0. ? -1. : 1.;
+    const double sign  = direction != 0. ? direction : resultant < 0. ? -1. : 1.;
     double       error = 0., norm = 0., weights = 0.;
     for (const auto &node : nodes)
       {
@@ -207,7 +208,7 @@ namespace contact_fem
     // the Newton tolerance in 3D) q vanishes: the error is then relative to
     // the largest slip bound instead.
     constexpr double no_tangential_load = 1e-3;
-    const double bound = exact.largest_bound();
+    const double     bound              = exact.largest_bound();
     if (!exact.unloading && exact.Q <= no_tangential_load * exact.capacity())
       norm = bound * bound * weights;
     result.tangential_l2_relative_error = norm > 0. ? std::sqrt(error / norm) : 0.;
@@ -217,8 +218,8 @@ namespace contact_fem
   Json
   to_json(const CattaneoComparison &comparison)
   {
-    const CattaneoSolution &exact = comparison.exact;
-    const double            a     = exact.a;
+    const CattaneoSolution &exact  = comparison.exact;
+    const double            a      = exact.a;
     Json                    result = Json::object();
     // Under Tresca the bound g and Q over the capacity 2 a g instead.
     const bool tresca = exact.g > 0.;
@@ -240,8 +241,7 @@ namespace contact_fem
       .set("geometry", exact.sphere ? "spheres" : "cylinders");
     if (!exact.sphere)
       result.set("stick_zone_contiguous", comparison.stick_contiguous);
-    result
-      .set("c_h", comparison.c_h)
+    result.set("c_h", comparison.c_h)
       .set("c_h_over_a", a > 0. ? comparison.c_h / a : 0.)
       .set("stick_zone_center", comparison.stick_center)
       .set("stick_end_spacing", comparison.end_spacing)
@@ -253,9 +253,11 @@ namespace contact_fem
   std::string
   cattaneo_report(const Json &cattaneo)
   {
-    const auto value = [&](const char *key) { return cattaneo[key].number_value(); };
+    const auto value = [&](const char *key) {
+      return cattaneo[key].number_value();
+    };
     std::ostringstream out;
-    const bool tresca = !std::isnan(value("g"));
+    const bool         tresca = !std::isnan(value("g"));
     out << std::setprecision(6)
         << (tresca ? "    Cattaneo Tresca g, P, Q:      " : "    Cattaneo mu, P, Q:            ")
         << value(tresca ? "g" : "mu") << ", " << value("P") << ", " << value("Q") << std::endl;
@@ -270,21 +272,17 @@ namespace contact_fem
     if (!std::isnan(value("Q_star")))
       out << "    unloaded from the peak Q*:    " << value("Q_star")
           << " (Mindlin-Deresiewicz; c is the stick half-width b)" << std::endl;
-    out
-        << (tresca ? "    Cattaneo Q/(2 a g):           " : "    Cattaneo Q/(mu P):            ")
+    out << (tresca ? "    Cattaneo Q/(2 a g):           " : "    Cattaneo Q/(mu P):            ")
         << value_or_ok(value(tresca ? "Q_over_2_a_g" : "Q_over_mu_P"), 1e-6) << std::endl
-        << std::setprecision(4)
-        << "    stick zone c_h/a vs c/a:      " << value("c_h_over_a") << " vs "
-        << value("c_over_a") << std::endl
+        << std::setprecision(4) << "    stick zone c_h/a vs c/a:      " << value("c_h_over_a")
+        << " vs " << value("c_over_a") << std::endl
         << std::setprecision(3)
         << "    stick zone centre / a:        "
         // A centred zone leaves round-off here: not printed as a number.
         << value_or_ok(value("stick_zone_center") / value("a"), 1e-6) << std::endl
-        << "    |c_h - c| / slave h:          " << value("c_error_in_slave_elements")
-        << std::endl
+        << "    |c_h - c| / slave h:          " << value("c_error_in_slave_elements") << std::endl
         << "    c within one slave element:   "
-        << (value("stick_nodes") > 0 && value("c_error_in_slave_elements") <= 1. ? "yes" :
-                                                                                   "no")
+        << (value("stick_nodes") > 0 && value("c_error_in_slave_elements") <= 1. ? "yes" : "no")
         << std::endl
         << "    tangential traction, L2 relative error against Cattaneo: "
         << value("tangential_l2_relative_error") << std::endl;
@@ -299,15 +297,16 @@ namespace contact_fem
         << std::endl;
     for (std::size_t k = 0; k < steps.size(); ++k)
       {
-        const auto value = [&](const char *key) { return steps[k][key].number_value(); };
+        const auto value = [&](const char *key) {
+          return steps[k][key].number_value();
+        };
         // Steps without a tangential load or a solution compare nothing.
         if (std::isnan(value("c")) || value("Q_over_mu_P") < 1e-3)
           continue;
-        out << std::fixed << std::setprecision(4) << "      step " << std::setw(2) << k + 1
-            << ":  " << value("Q_over_mu_P") << "  " << value("c_over_a") << "  "
-            << value("c_h_over_a") << "  " << std::setprecision(3)
-            << value("c_error_in_slave_elements") << "  " << value("tangential_l2_relative_error")
-            << std::endl;
+        out << std::fixed << std::setprecision(4) << "      step " << std::setw(2) << k + 1 << ":  "
+            << value("Q_over_mu_P") << "  " << value("c_over_a") << "  " << value("c_h_over_a")
+            << "  " << std::setprecision(3) << value("c_error_in_slave_elements") << "  "
+            << value("tangential_l2_relative_error") << std::endl;
       }
     return out.str();
   }

@@ -16,9 +16,9 @@ namespace contact_fem
 {
   namespace
   {
-    constexpr double       relative_threshold = 0.01;
+    constexpr double       relative_threshold   = 0.01;
     constexpr double       alternating_fraction = 0.5;
-    constexpr unsigned int least_alternating  = 3;
+    constexpr unsigned int least_alternating    = 3;
   } // namespace
 
   template <int dim>
@@ -26,7 +26,7 @@ namespace contact_fem
   find_checkerboards(const ContactInterface<dim> &interface, const ContactFormulation<dim> &contact)
   {
     std::vector<CheckerboardFinding> findings;
-    const unsigned int q1_face_nodes = dim == 2 ? 2 : 4;
+    const unsigned int               q1_face_nodes = dim == 2 ? 2 : 4;
     for (unsigned int p = 0; p < interface.pairs.size(); ++p)
       {
         std::map<unsigned int, double> pressure; // active slave nodes of the pair
@@ -94,9 +94,9 @@ namespace contact_fem
     std::vector<std::string> warnings;
     for (const auto &finding : find_checkerboards(interface, contact))
       {
-        const auto &pair  = interface.pairs[finding.pair];
-        const auto &stats = interface.statistics[finding.pair];
-        const std::string name = std::to_string(static_cast<unsigned int>(pair.slave)) + ": " +
+        const auto       &pair  = interface.pairs[finding.pair];
+        const auto       &stats = interface.statistics[finding.pair];
+        const std::string name  = std::to_string(static_cast<unsigned int>(pair.slave)) + ": " +
                                  std::to_string(static_cast<unsigned int>(pair.master));
         std::ostringstream message;
         message << "contact pair " << name << ": the contact pressure alternates from slave "
@@ -105,10 +105,9 @@ namespace contact_fem
                 << significant(100. * finding.amplitude, 2)
                 << " % of the largest pressure), so nodal pressures and p_max are not "
                    "reliable; ";
-        const std::string swapped = "Contact/Pairs = " +
-                                    std::to_string(static_cast<unsigned int>(pair.master)) +
-                                    ": " +
-                                    std::to_string(static_cast<unsigned int>(pair.slave));
+        const std::string swapped =
+          "Contact/Pairs = " + std::to_string(static_cast<unsigned int>(pair.master)) + ": " +
+          std::to_string(static_cast<unsigned int>(pair.slave));
         if (stats.mean_slave_size > 1.5 * stats.mean_master_size)
           message << "the slave surface is the coarser one (mean element sizes "
                   << significant(stats.mean_slave_size, 3) << " slave, "
@@ -120,8 +119,8 @@ namespace contact_fem
                   << ", slave " << significant(stats.mean_slave_size, 3)
                   << ") cannot follow the slave's multipliers: refine the master surface to "
                      "the slave's resolution at the contact (Geometry/Local refinements), "
-                     "make the coarser surface the slave (" << swapped
-                  << "), or use Q2 (Finite element/Degree)";
+                     "make the coarser surface the slave ("
+                  << swapped << "), or use Q2 (Finite element/Degree)";
         warnings.push_back(message.str());
       }
     return warnings;

@@ -61,13 +61,13 @@ namespace contact_fem
       {
         file << number(r["cycle"]) << ',' << number(r["n_cells"]) << ',' << number(r["n_dofs"])
              << ',' << number(r["contact"]["active_slave_nodes"]) << ',' << estimator << ','
-             << number(r["estimated_error"]) << ',' << number(r["relative_estimated_error"])
-             << ',' << number(r["effectivity_index"]) << ','
+             << number(r["estimated_error"]) << ',' << number(r["relative_estimated_error"]) << ','
+             << number(r["effectivity_index"]) << ','
              << number(r["analytical"]["p_max_relative_error"]) << ','
-             << number(r["analytical"]["a_error"]) << ','
-             << number(r["pressure_l2_relative_error"]) << ',' << number(r["energy_error"])
-             << ',' << newton_iterations << ',' << number(r["wall_time"]) << ','
-             << cumulative_time << ',' << number(r["contact"]["max_contact_pressure"]) << ','
+             << number(r["analytical"]["a_error"]) << ',' << number(r["pressure_l2_relative_error"])
+             << ',' << number(r["energy_error"]) << ',' << newton_iterations << ','
+             << number(r["wall_time"]) << ',' << cumulative_time << ','
+             << number(r["contact"]["max_contact_pressure"]) << ','
              << number(r["pressure_reference_l2_relative_error"]);
         // Per contact pair, from the cycle's last load step: the magnitude
         // of the normal force and the contact length (2D) or area (3D).

@@ -30,7 +30,7 @@ namespace contact_fem
     std::string
     vector_text(const Tensor<1, dim> &force, const double scale)
     {
-      const Tensor<1, dim> f = snapped(force, scale);
+      const Tensor<1, dim> f    = snapped(force, scale);
       std::string          text = "(";
       for (unsigned int d = 0; d < dim; ++d)
         text += (d > 0 ? ", " : "") + significant(f[d], 6);
@@ -147,8 +147,7 @@ namespace contact_fem
                     const types::global_dof_index        dof)
   {
     double r = residual(dof);
-    if (interface &&
-        std::binary_search(interface->dofs().begin(), interface->dofs().end(), dof))
+    if (interface && std::binary_search(interface->dofs().begin(), interface->dofs().end(), dof))
       r -= contact_force[interface->position(dof)];
     return r;
   }
@@ -157,18 +156,18 @@ namespace contact_fem
   ForceReport<dim>
   compute_forces(const ForceInputs<dim> &in)
   {
-    const auto              &fe    = in.dof_handler.get_fe();
-    const IndexSet          &owned = in.dof_handler.locally_owned_dofs();
-    const MPI_Comm           comm  = in.dof_handler.get_communicator();
-    ForceReport<dim>         report;
+    const auto                       &fe    = in.dof_handler.get_fe();
+    const IndexSet                   &owned = in.dof_handler.locally_owned_dofs();
+    const MPI_Comm                    comm  = in.dof_handler.get_communicator();
+    ForceReport<dim>                  report;
     std::set<types::global_dof_index> seen;
-    const auto reaction_at = [&](const types::global_dof_index dof) {
+    const auto                        reaction_at = [&](const types::global_dof_index dof) {
       return held_dof_reaction(in.residual, in.interface, in.contact_force, dof);
     };
     // Boundaries in the order of the input; each held component of a DoF
     // counts once, for the first boundary that holds it.
-    std::vector<types::boundary_id>                   ids;
-    std::map<types::boundary_id, std::vector<bool>>   held;
+    std::vector<types::boundary_id>                 ids;
+    std::map<types::boundary_id, std::vector<bool>> held;
     for (const auto &condition : in.displacements)
       {
         if (!held.count(condition.boundary_id))
@@ -275,11 +274,15 @@ namespace contact_fem
   template struct ForceReport<2>;
   template struct ForceReport<3>;
   template double
-  held_dof_reaction(const TrilinosWrappers::MPI::Vector &, const ContactInterface<2> *,
-                    const std::vector<double> &, const types::global_dof_index);
+  held_dof_reaction(const TrilinosWrappers::MPI::Vector &,
+                    const ContactInterface<2> *,
+                    const std::vector<double> &,
+                    const types::global_dof_index);
   template double
-  held_dof_reaction(const TrilinosWrappers::MPI::Vector &, const ContactInterface<3> *,
-                    const std::vector<double> &, const types::global_dof_index);
+  held_dof_reaction(const TrilinosWrappers::MPI::Vector &,
+                    const ContactInterface<3> *,
+                    const std::vector<double> &,
+                    const types::global_dof_index);
   template ForceReport<2>
   compute_forces(const ForceInputs<2> &);
   template ForceReport<3>

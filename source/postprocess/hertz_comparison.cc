@@ -43,7 +43,9 @@ namespace contact_fem
   HertzCylinder<dim>::exact_pressure(const ContactState<dim> &state) const
   {
     const HertzContact h = solution(state);
-    return [this, h](const Point<dim> &x) { return h.pressure(coordinate(x)); };
+    return [this, h](const Point<dim> &x) {
+      return h.pressure(coordinate(x));
+    };
   }
 
   template <int dim>
@@ -52,10 +54,10 @@ namespace contact_fem
                               const Json              &contact,
                               const Json &) const
   {
-    const HertzContact h     = solution(state);
-    const double       p_num = contact["max_contact_pressure"].number_value();
-    const double       a_num = measured_size(state, contact);
-    const double       size  = contact["slave_element_size"].number_value();
+    const HertzContact h      = solution(state);
+    const double       p_num  = contact["max_contact_pressure"].number_value();
+    const double       a_num  = measured_size(state, contact);
+    const double       size   = contact["slave_element_size"].number_value();
     Json               result = Json::object();
     result.set("type", this->analytical.type)
       .set("load", load(state))
@@ -86,8 +88,9 @@ namespace contact_fem
               const unsigned int a = face.nodes[0], b = face.nodes[1];
               const double       h_face =
                 state.interface.nodes[a].reference.distance(state.interface.nodes[b].reference);
-              chord_gap_work += (state.contact.normal_pressure(a) + state.contact.normal_pressure(b)) *
-                                h_face * h_face * h_face / (24. * this->analytical.radius);
+              chord_gap_work +=
+                (state.contact.normal_pressure(a) + state.contact.normal_pressure(b)) * h_face *
+                h_face * h_face / (24. * this->analytical.radius);
             }
         result.set("chord_gap_work", chord_gap_work);
       }
@@ -98,13 +101,13 @@ namespace contact_fem
   void
   HertzCylinder<dim>::print(const Json &hertz, std::ostream &out) const
   {
-    out << std::setprecision(6) << "    Hertz a:                      "
-        << hertz["a"].number_value() << std::endl
+    out << std::setprecision(6) << "    Hertz a:                      " << hertz["a"].number_value()
+        << std::endl
         << "    Hertz p_max:                  " << hertz["p_max"].number_value() << std::endl
         << "    p_max relative error:         " << std::setprecision(3)
         << hertz["p_max_relative_error"].number_value() << std::endl
-        << "    |a - a_Hertz| / slave h:      "
-        << hertz["a_error_in_slave_elements"].number_value() << std::endl
+        << "    |a - a_Hertz| / slave h:      " << hertz["a_error_in_slave_elements"].number_value()
+        << std::endl
         << "    p_max within 2 % of Hertz:    "
         << (std::abs(hertz["p_max_relative_error"].number_value()) < 0.02 ? "yes" : "no")
         << std::endl
@@ -118,15 +121,14 @@ namespace contact_fem
   HertzCylinder<dim>::report_recovered(const ContactState<dim>   &state,
                                        const std::vector<double> &pressure,
                                        const std::vector<double> &,
-                                       const std::string         &label,
-                                       const std::string         &prefix,
-                                       Json                      &record,
-                                       std::ostream              &out) const
+                                       const std::string &label,
+                                       const std::string &prefix,
+                                       Json              &record,
+                                       std::ostream      &out) const
   {
     const double error = pressure_l2_relative_error(state, pressure, exact_pressure(state));
     record.set(prefix + "recovered_pressure_l2_relative_error", error);
-    out << label << " pressure, L2 error against Hertz: " << value_or_ok(error, 1e-10)
-        << std::endl;
+    out << label << " pressure, L2 error against Hertz: " << value_or_ok(error, 1e-10) << std::endl;
   }
 
   template class HertzCylinder<2>;

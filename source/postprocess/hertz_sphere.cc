@@ -27,7 +27,7 @@ namespace contact_fem
               const Json              &contact,
               const Json              &reaction) const override
       {
-        Json         result = HertzCylinder<dim>::compare(state, contact, reaction);
+        Json result = HertzCylinder<dim>::compare(state, contact, reaction);
         // F of the model against the pressure resultant applied to it.
         const double applied        = reaction["applied_load"].number_value();
         const double modelled_force = std::abs(state.contact_force()[dim - 1]);
@@ -45,10 +45,11 @@ namespace contact_fem
       {
         const double first_inactive = hertz["first_inactive_radius"].number_value();
         // The errors are printed to 3 digits: the tests compare them.
-        out << std::setprecision(6) << "    Hertz load F (whole sphere):  "
-            << hertz["load"].number_value() << " (contact force along z "
-            << hertz["contact_force_along_axis"].number_value() << " over symmetry fraction "
-            << hertz["symmetry_fraction"].number_value() << ")" << std::endl
+        out << std::setprecision(6)
+            << "    Hertz load F (whole sphere):  " << hertz["load"].number_value()
+            << " (contact force along z " << hertz["contact_force_along_axis"].number_value()
+            << " over symmetry fraction " << hertz["symmetry_fraction"].number_value() << ")"
+            << std::endl
             << "    contact force / applied load: "
             << hertz["contact_force_over_applied_load"].number_value() << std::endl
             << "    Hertz a:                      " << hertz["a"].number_value() << std::endl
@@ -57,8 +58,9 @@ namespace contact_fem
             << " (farthest active node; first inactive node beyond: "
             << (std::isfinite(first_inactive) ? significant(first_inactive, 6) : "none") << ")"
             << std::endl
-            << std::setprecision(3) << "    p_max relative error:         "
-            << hertz["p_max_relative_error"].number_value() << std::endl
+            << std::setprecision(3)
+            << "    p_max relative error:         " << hertz["p_max_relative_error"].number_value()
+            << std::endl
             << "    |a - a_Hertz| / slave h:      "
             << hertz["a_error_in_slave_elements"].number_value() << std::endl
             << "    pressure L2 error vs Hertz:   "
@@ -67,8 +69,7 @@ namespace contact_fem
             << (std::abs(hertz["p_max_relative_error"].number_value()) < 0.03 ? "yes" : "no")
             << std::endl
             << "    a within one slave element:   "
-            << (hertz["a_error_in_slave_elements"].number_value() <= 1. ? "yes" : "no")
-            << std::endl
+            << (hertz["a_error_in_slave_elements"].number_value() <= 1. ? "yes" : "no") << std::endl
             << std::setprecision(6);
       }
 

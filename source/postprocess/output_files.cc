@@ -88,9 +88,8 @@ namespace contact_fem
                     (fs::is_directory(status) ? "a directory" : "not a file") +
                     "); remove or rename it.");
           fs::remove(path, error);
-          require(!error,
-                  "Output directory: cannot remove '" + path.string() +
-                    "', a file of an earlier run: " + error.message() + ".");
+          require(!error, "Output directory: cannot remove '" + path.string() +
+                            "', a file of an earlier run: " + error.message() + ".");
           ++removed;
         }
       return removed;
@@ -107,9 +106,9 @@ namespace contact_fem
       const bool written     = file && std::fputs("x", file) >= 0;
       const bool closed      = file && std::fclose(file) == 0;
       std::remove(path.c_str());
-      require(file && written && closed,
-              "Output directory: '" + directory + "' is not writable: cannot create '" +
-                path + "' (" + std::strerror(file ? EIO : open_error) + ").");
+      require(file && written && closed, "Output directory: '" + directory +
+                                           "' is not writable: cannot create '" + path + "' (" +
+                                           std::strerror(file ? EIO : open_error) + ").");
     }
 
     /// The lock file that marks a directory as taken by a live run.
@@ -131,9 +130,9 @@ namespace contact_fem
                          std::strerror(errno) + ").");
       if (::flock(fd, LOCK_EX | LOCK_NB) != 0)
         {
-          const int error = errno;
-          char      pid[32] = {};
-          const auto n     = ::pread(fd, pid, sizeof(pid) - 1, 0);
+          const int  error   = errno;
+          char       pid[32] = {};
+          const auto n       = ::pread(fd, pid, sizeof(pid) - 1, 0);
           ::close(fd);
           require(false, "Output directory: '" + directory + "' is in use by another " +
                            "contact_fem run" +
@@ -143,8 +142,8 @@ namespace contact_fem
                            "this run another --output-directory.");
         }
       const std::string pid = std::to_string(::getpid());
-      const bool written = ::ftruncate(fd, 0) == 0 &&
-                           ::pwrite(fd, pid.c_str(), pid.size(), 0) == ssize_t(pid.size());
+      const bool        written =
+        ::ftruncate(fd, 0) == 0 && ::pwrite(fd, pid.c_str(), pid.size(), 0) == ssize_t(pid.size());
       (void)written; // the pid only improves a message
       locked = path; // fd stays open: the lock lasts as long as the process
     }
@@ -156,8 +155,8 @@ namespace contact_fem
       std::error_code error;
       fs::create_directories(directory, error);
       require(!error && fs::is_directory(directory),
-              "Output directory: cannot create '" + directory + "': " +
-                (error ? error.message() : "it exists and is not a directory") + ".");
+              "Output directory: cannot create '" + directory +
+                "': " + (error ? error.message() : "it exists and is not a directory") + ".");
       check_writable(directory);
       lock_directory(directory);
       OutputDirectoryReport report;
@@ -215,14 +214,14 @@ namespace contact_fem
   {
     const std::string partial = path + partial_suffix;
     std::string       problem;
-    errno            = 0;
-    std::FILE *file  = std::fopen(partial.c_str(), "wb");
+    errno           = 0;
+    std::FILE *file = std::fopen(partial.c_str(), "wb");
     if (!file)
       return std::strerror(errno);
-    const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size() &&
-                         std::fflush(file) == 0;
-    const int  error   = errno;
-    const bool closed  = std::fclose(file) == 0;
+    const bool written =
+      std::fwrite(text.data(), 1, text.size(), file) == text.size() && std::fflush(file) == 0;
+    const int  error  = errno;
+    const bool closed = std::fclose(file) == 0;
     if (!written || !closed)
       problem = std::strerror(error != 0 ? error : errno != 0 ? errno : EIO);
     else if (std::rename(partial.c_str(), path.c_str()) != 0)
@@ -253,9 +252,9 @@ namespace contact_fem
                    const unsigned int                n_digits,
                    const MPI_Comm                    comm)
   {
-    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
-    const unsigned int n    = Utilities::MPI::n_mpi_processes(comm);
-    const std::string  stem = base + "_" + Utilities::int_to_string(counter, n_digits);
+    const unsigned int rank       = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n          = Utilities::MPI::n_mpi_processes(comm);
+    const std::string  stem       = base + "_" + Utilities::int_to_string(counter, n_digits);
     const auto         piece_name = [&](const unsigned int r) {
       return stem + "." + Utilities::int_to_string(r, Utilities::needed_digits(n - 1)) + ".vtu";
     };
@@ -280,9 +279,17 @@ namespace contact_fem
   }
 
   template std::string
-  write_vtu_pieces<2>(const DataOutInterface<2, 2> &, const std::string &, const std::string &,
-                      const unsigned int, const unsigned int, const MPI_Comm);
+  write_vtu_pieces<2>(const DataOutInterface<2, 2> &,
+                      const std::string &,
+                      const std::string &,
+                      const unsigned int,
+                      const unsigned int,
+                      const MPI_Comm);
   template std::string
-  write_vtu_pieces<3>(const DataOutInterface<3, 3> &, const std::string &, const std::string &,
-                      const unsigned int, const unsigned int, const MPI_Comm);
+  write_vtu_pieces<3>(const DataOutInterface<3, 3> &,
+                      const std::string &,
+                      const std::string &,
+                      const unsigned int,
+                      const unsigned int,
+                      const MPI_Comm);
 } // namespace contact_fem

@@ -26,16 +26,15 @@ namespace contact_fem
     for (const auto &s : interface.slave_nodes)
       if (s.paired)
         {
-          const Point<dim> position  = state.position(s.node);
-          const Point<dim> current   = frame.to_user(position);
-          const Point<dim> reference = frame.to_user(interface.nodes[s.node].reference);
+          const Point<dim>    position  = state.position(s.node);
+          const Point<dim>    current   = frame.to_user(position);
+          const Point<dim>    reference = frame.to_user(interface.nodes[s.node].reference);
           std::vector<double> row;
           for (unsigned int d = 0; d < (dim == 2 ? 1 : dim); ++d)
             row.push_back(current[d]);
           row.insert(row.end(),
                      {contact.normal_pressure(s.node), exact ? exact(position) : 0.,
-                      interface.gap(s, state.displacement),
-                      contact.is_active(s.node) ? 1. : 0.});
+                      interface.gap(s, state.displacement), contact.is_active(s.node) ? 1. : 0.});
           for (const auto &field : fields)
             row.push_back(field.values[s.node]);
           row.push_back(s.pair);
@@ -60,9 +59,11 @@ namespace contact_fem
   }
 
   template std::string
-  pressure_profile_csv(const ContactState<2> &, const ModelFrame<2> &,
+  pressure_profile_csv(const ContactState<2> &,
+                       const ModelFrame<2> &,
                        const std::function<double(const Point<2> &)> &);
   template std::string
-  pressure_profile_csv(const ContactState<3> &, const ModelFrame<3> &,
+  pressure_profile_csv(const ContactState<3> &,
+                       const ModelFrame<3> &,
                        const std::function<double(const Point<3> &)> &);
 } // namespace contact_fem

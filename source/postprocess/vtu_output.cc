@@ -60,19 +60,17 @@ namespace contact_fem
 
       void
       evaluate_vector_field(const DataPostprocessorInputs::Vector<dim> &inputs,
-                            std::vector<Vector<double>> &computed) const override
+                            std::vector<Vector<double>>                &computed) const override
       {
-        const typename DoFHandler<dim>::active_cell_iterator cell =
-          inputs.template get_cell<dim>();
-        const auto id = cell->material_id();
+        const typename DoFHandler<dim>::active_cell_iterator cell = inputs.template get_cell<dim>();
+        const auto                                           id   = cell->material_id();
         // Patches are built on several threads: each call has its own
         // projection (output only, so its set-up cost does not matter).
         std::unique_ptr<VolumetricProjection<dim>> projection;
-        Vector<double>                              local_values;
+        Vector<double>                             local_values;
         if (b_bar)
           {
-            projection =
-              std::make_unique<VolumetricProjection<dim>>(mapping, cell->get_fe());
+            projection = std::make_unique<VolumetricProjection<dim>>(mapping, cell->get_fe());
             projection->reinit(cell);
             local_values.reinit(cell->get_fe().n_dofs_per_cell());
             cell->get_dof_values(solution, local_values);
@@ -85,8 +83,7 @@ namespace contact_fem
                 strain[i][j] =
                   0.5 * (inputs.solution_gradients[q][i][j] + inputs.solution_gradients[q][j][i]);
             const SymmetricTensor<2, dim> stress =
-              b_bar ? materials.stress(id,
-                                       strain,
+              b_bar ? materials.stress(id, strain,
                                        projection->value(local_values,
                                                          mapping.transform_real_to_unit_cell(
                                                            cell, inputs.evaluation_points[q]))) :
@@ -127,14 +124,14 @@ namespace contact_fem
                    const DoFHandler<dim>    &scalar_dofs,
                    std::vector<std::string> &names)
     {
-      const ContactInterface<dim>   &interface = view.contact->interface;
-      const ContactFormulation<dim> &contact   = view.contact->contact;
-      const MPI_Comm comm = view.dof_handler.get_communicator();
-      const IndexSet scalar_owned = scalar_dofs.locally_owned_dofs();
-      IndexSet       scalar_relevant;
+      const ContactInterface<dim>   &interface    = view.contact->interface;
+      const ContactFormulation<dim> &contact      = view.contact->contact;
+      const MPI_Comm                 comm         = view.dof_handler.get_communicator();
+      const IndexSet                 scalar_owned = scalar_dofs.locally_owned_dofs();
+      IndexSet                       scalar_relevant;
       DoFTools::extract_locally_relevant_dofs(scalar_dofs, scalar_relevant);
 
-      names = {"contact_pressure", "weighted_gap", "active", "slave", "master"};
+      names                 = {"contact_pressure", "weighted_gap", "active", "slave", "master"};
       const auto own_fields = contact.nodal_fields(interface);
       for (const auto &field : own_fields)
         names.push_back(field.name);
@@ -173,9 +170,9 @@ namespace contact_fem
                   // A hanging vertex has no multiplier of its own: it shows
                   // the interpolation of its parents, as its displacement.
                   const std::vector<std::pair<unsigned int, double>> itself = {{n, 1.}};
-                  const auto &parents = interface.nodes[n].parents;
+                  const auto &parents  = interface.nodes[n].parents;
                   double      pressure = 0., interpolated_gap = 0.;
-                  bool        active   = true;
+                  bool        active = true;
                   for (const auto &[source, weight] : parents.empty() ? itself : parents)
                     {
                       pressure += weight * contact.normal_pressure(source);
@@ -234,8 +231,8 @@ namespace contact_fem
     {
       const ContactInterface<dim>   &interface = state.interface;
       const ContactFormulation<dim> &contact   = state.contact;
-      std::vector<int> point_of_node(interface.nodes.size(), -1);
-      std::vector<unsigned int> points, connectivity, offsets, types;
+      std::vector<int>               point_of_node(interface.nodes.size(), -1);
+      std::vector<unsigned int>      points, connectivity, offsets, types;
       for (const auto &face : interface.faces)
         if (face.slave)
           {
@@ -254,7 +251,7 @@ namespace contact_fem
           }
       // Per interface node: the slave node's values, interpolated at a
       // hanging vertex.
-      const unsigned int n_nodes = interface.nodes.size();
+      const unsigned int  n_nodes = interface.nodes.size();
       std::vector<double> pressure(n_nodes, 0.), gap(n_nodes, 0.), active(n_nodes, 0.),
         pair(n_nodes, -1.);
       std::vector<Tensor<1, dim>> traction(n_nodes);
@@ -316,7 +313,8 @@ namespace contact_fem
       scalar("pair", pair);
       for (const auto &field : own_fields)
         scalar(field.name, field.values);
-      auto vector = [&](const std::string &name, const std::function<Tensor<1, dim>(unsigned int)> &at) {
+      auto vector = [&](const std::string                                 &name,
+                        const std::function<Tensor<1, dim>(unsigned int)> &at) {
         out << "<DataArray type=\"Float64\" Name=\"" << name
             << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
         for (const unsigned int n : points)
@@ -327,7 +325,9 @@ namespace contact_fem
           }
         out << "</DataArray>\n";
       };
-      vector("traction", [&](const unsigned int n) { return value(traction, n); });
+      vector("traction", [&](const unsigned int n) {
+        return value(traction, n);
+      });
       // The points less this are the reference positions.
       vector("displacement", [&](const unsigned int n) {
         return interface.displacement(n, state.displacement);
@@ -340,8 +340,8 @@ namespace contact_fem
     void
     add_displacement(DataOut<dim> &data_out, const SolutionView<dim> &view)
     {
-      const std::vector<DataComponentInterpretation::DataComponentInterpretation>
-        vector_field(dim, DataComponentInterpretation::component_is_part_of_vector);
+      const std::vector<DataComponentInterpretation::DataComponentInterpretation> vector_field(
+        dim, DataComponentInterpretation::component_is_part_of_vector);
       data_out.add_data_vector(view.dof_handler, view.solution,
                                std::vector<std::string>(dim, "displacement"), vector_field);
     }
@@ -359,8 +359,8 @@ namespace contact_fem
                                  const unsigned int       cycle,
                                  const double             time)
   {
-    const auto &triangulation = view.dof_handler.get_triangulation();
-    const unsigned int degree = view.dof_handler.get_fe().degree;
+    const auto        &triangulation = view.dof_handler.get_triangulation();
+    const unsigned int degree        = view.dof_handler.get_fe().degree;
     // Nodal contact fields live on a scalar Q_p space on the same mesh.
     const FE_Q<dim> scalar_fe(degree);
     DoFHandler<dim> scalar_dofs(triangulation);
@@ -403,8 +403,9 @@ namespace contact_fem
     if (view.contact)
       {
         // The interface is known on every rank: rank 0 writes it whole.
-        const std::string surface = "contact_surface_" + Utilities::int_to_string(n_solutions, 3) + ".vtu";
-        const std::string path    = directory + "/" + surface;
+        const std::string surface =
+          "contact_surface_" + Utilities::int_to_string(n_solutions, 3) + ".vtu";
+        const std::string path = directory + "/" + surface;
         throw_if_unwritten(path,
                            Utilities::MPI::this_mpi_process(comm) != 0 ?
                              std::string() :
@@ -437,9 +438,8 @@ namespace contact_fem
 
   template <int dim>
   void
-  VtuOutput<dim>::write_collection(
-    const std::string                                  &name,
-    const std::vector<std::pair<double, std::string>> &records) const
+  VtuOutput<dim>::write_collection(const std::string                                 &name,
+                                   const std::vector<std::pair<double, std::string>> &records) const
   {
     std::ostringstream pvd;
     DataOutBase::write_pvd_record(pvd, records);

@@ -50,8 +50,7 @@ namespace contact_fem
     // (their sum is applied_load()).
     const QGauss<dim - 1> quadrature(run.dof_handler.get_fe().degree + 1);
     FEFaceValues<dim>     fe_face(run.mapping, run.dof_handler.get_fe(), quadrature,
-                              update_normal_vectors | update_quadrature_points |
-                                update_JxW_values);
+                                  update_normal_vectors | update_quadrature_points | update_JxW_values);
     std::map<types::material_id, Tensor<1, dim>> loads;
     for (const auto &[id, constants] : run.materials.bodies)
       loads[id] = Tensor<1, dim>();
@@ -96,8 +95,9 @@ namespace contact_fem
   ContactDiagnosis<dim>::surface_normal(const types::boundary_id id) const
   {
     const QGauss<dim - 1> quadrature(run.dof_handler.get_fe().degree + 1);
-    FEFaceValues<dim> fe_face(run.mapping, run.dof_handler.get_fe(), quadrature, update_normal_vectors | update_JxW_values);
-    Tensor<1, dim>    normal;
+    FEFaceValues<dim>     fe_face(run.mapping, run.dof_handler.get_fe(), quadrature,
+                                  update_normal_vectors | update_JxW_values);
+    Tensor<1, dim>        normal;
     for (const auto &cell : run.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const auto f : cell->face_indices())
@@ -142,8 +142,8 @@ namespace contact_fem
         if (component > 0.)
           largest = std::max(largest, component * (load / component).norm());
       }
-    const double by_force = largest / (youngs_min * std::pow(model_size(), dim - 2.));
-    double prescribed = 0.;
+    const double by_force   = largest / (youngs_min * std::pow(model_size(), dim - 2.));
+    double       prescribed = 0.;
     for (const auto &condition : run.boundary_conditions.displacements)
       {
         if (condition.expression == "0")
@@ -196,13 +196,13 @@ namespace contact_fem
     if (!(youngs_max > 1e10 * youngs_min))
       return "";
     return "the stiffness ratio between the bodies, " + format(youngs_max / youngs_min) +
-             ", is beyond what a direct solve in double precision resolves (about 1e10)" +
-             (run.most_null_pivots > 0 ? ": the factorisation found " +
-                                       std::to_string(run.most_null_pivots) +
-                                       " zero pivot(s), i.e. the softer body's stiffness "
-                                       "vanished in round-off" :
-                                     std::string()) +
-             "; model the stiff body as rigid (fixed) instead";
+           ", is beyond what a direct solve in double precision resolves (about 1e10)" +
+           (run.most_null_pivots > 0 ?
+              ": the factorisation found " + std::to_string(run.most_null_pivots) +
+                " zero pivot(s), i.e. the softer body's stiffness "
+                "vanished in round-off" :
+              std::string()) +
+           "; model the stiff body as rigid (fixed) instead";
   }
 
   template <int dim>
@@ -216,9 +216,10 @@ namespace contact_fem
                format(lambda_over_mu(constants.poisson_ratio)) +
                ", and double precision resolves its shear stiffness next to its volumetric "
                "one only to about 1e-14 lambda/mu" +
-               (run.most_null_pivots > 0 ? " (the factorisation found " +
-                                         std::to_string(run.most_null_pivots) + " zero pivot(s))" :
-                                       std::string()) +
+               (run.most_null_pivots > 0 ?
+                  " (the factorisation found " + std::to_string(run.most_null_pivots) +
+                    " zero pivot(s))" :
+                  std::string()) +
                "; use a Poisson's ratio of at most 0.49999999 (lambda/mu = 5e7)";
     return "";
   }
@@ -229,8 +230,8 @@ namespace contact_fem
   {
     for (const auto &[id, constants] : run.materials.bodies)
       if (shear_over_bulk(constants.poisson_ratio) > warn_shear_over_bulk())
-        return "body " + std::to_string(static_cast<unsigned int>(id)) +
-               " has Poisson's ratio " + format(constants.poisson_ratio, 17) +
+        return "body " + std::to_string(static_cast<unsigned int>(id)) + " has Poisson's ratio " +
+               format(constants.poisson_ratio, 17) +
                " near -1: its bulk modulus K = E / (3 (1 - 2 nu)) vanishes next to its "
                "shear modulus mu = E / (2 (1 + nu)) (mu/K = " +
                format(shear_over_bulk(constants.poisson_ratio)) +
@@ -266,9 +267,9 @@ namespace contact_fem
   template <int dim>
   std::string
   ContactDiagnosis<dim>::no_contact_message(const std::string &where,
-                                             const double       time,
-                                             const bool         in_iteration,
-                                             const bool         none_started) const
+                                            const double       time,
+                                            const bool         in_iteration,
+                                            const bool         none_started) const
   {
     const std::string separation =
       where + ": no contact. No slave node is active" +
@@ -280,8 +281,9 @@ namespace contact_fem
     if (cause.empty())
       cause = load_at_round_off(time);
     if (!cause.empty())
-      return where + ": no contact. No slave node is active, but not because the load "
-                     "separates the bodies: " +
+      return where +
+             ": no contact. No slave node is active, but not because the load "
+             "separates the bodies: " +
              cause + ".";
     double total = 0.;
     for (const auto &[id, load] : body_loads(time))
@@ -290,21 +292,21 @@ namespace contact_fem
     if (total > 0. && push > 1e-3 * total)
       {
         const std::string pushing =
-          where + ": no contact. No slave node is active, although the applied load "
-                  "pushes the bodies together (its resultant along the outward normals "
-                  "of the contact surfaces is " +
+          where +
+          ": no contact. No slave node is active, although the applied load "
+          "pushes the bodies together (its resultant along the outward normals "
+          "of the contact surfaces is " +
           format(push, 3) + ")";
         // Nothing was solved yet: the start rule, not the iteration, left
         // the loaded body without support.
         if (none_started)
-          return pushing +
-                 ": no slave node started the step in contact, so nothing held the "
-                 "loaded body. A node starts in contact when it carried pressure at "
-                 "the end of the previous step, or, on the first step of a mesh, when "
-                 "its gap is below Contact/Active check factor times its size (at 0, "
-                 "round-off decides whether a touching node does). Hint: raise "
-                 "Contact/Active check factor, or close the gap by a prescribed "
-                 "displacement.";
+          return pushing + ": no slave node started the step in contact, so nothing held the "
+                           "loaded body. A node starts in contact when it carried pressure at "
+                           "the end of the previous step, or, on the first step of a mesh, when "
+                           "its gap is below Contact/Active check factor times its size (at 0, "
+                           "round-off decides whether a touching node does). Hint: raise "
+                           "Contact/Active check factor, or close the gap by a prescribed "
+                           "displacement.";
         return pushing + ": the contact was lost numerically, not by the load. Hint: more "
                          "load steps, or a different Contact/Penalty.";
       }
@@ -314,8 +316,8 @@ namespace contact_fem
   template <int dim>
   std::string
   ContactDiagnosis<dim>::non_convergence_hint(const bool   stalled,
-                                            const double r_u,
-                                            const double r_lambda) const
+                                              const double r_u,
+                                              const double r_lambda) const
   {
     // (The caller adds the precision limits of the model, if any.)
     if (!stalled)
@@ -370,7 +372,8 @@ namespace contact_fem
     // vertex of it (the coarse mesh knows every body on every rank).
     std::set<types::material_id> supported;
     for (const auto &condition : run.boundary_conditions.displacements)
-      for (const auto body : bodies_of_surface(run.dof_handler.get_triangulation(), condition.boundary_id))
+      for (const auto body :
+           bodies_of_surface(run.dof_handler.get_triangulation(), condition.boundary_id))
         supported.insert(body);
     for (const auto &condition : run.boundary_conditions.points)
       supported.insert(condition.point.material_id);

@@ -36,18 +36,17 @@ namespace contact_fem
     if (!contact)
       return result;
     const auto [n_slave, n_hanging] = interface->count_slave_nodes();
-    unsigned int n_active = 0;
-    double         p_max = 0., p_min = std::numeric_limits<double>::max(), size_sum = 0.;
-    double         gap_max = 0.;
-    double         x_min = std::numeric_limits<double>::max(), x_max = -x_min;
+    unsigned int n_active           = 0;
+    double       p_max = 0., p_min = std::numeric_limits<double>::max(), size_sum = 0.;
+    double       gap_max = 0.;
+    double       x_min = std::numeric_limits<double>::max(), x_max = -x_min;
     for (const auto &s : interface->slave_nodes)
       if (s.paired && contact->is_active(s.node))
         {
           ++n_active;
-          p_max = std::max(p_max, contact->normal_pressure(s.node));
-          p_min = std::min(p_min, contact->normal_pressure(s.node));
-          gap_max =
-            std::max(gap_max, std::abs(interface->gap(s, interface_displacement)) / s.size);
+          p_max   = std::max(p_max, contact->normal_pressure(s.node));
+          p_min   = std::min(p_min, contact->normal_pressure(s.node));
+          gap_max = std::max(gap_max, std::abs(interface->gap(s, interface_displacement)) / s.size);
           size_sum += s.size;
           const double x = interface->nodes[s.node].reference[0] +
                            interface->displacement(s.node, interface_displacement)[0];
@@ -84,8 +83,8 @@ namespace contact_fem
     std::vector<double> contact_force;
     if (contact)
       contact_force = contact->residuals(*interface, interface_displacement).contact_force;
-    Tensor<1, dim>            reaction;
-    double                    absolute_sum = 0.;
+    Tensor<1, dim>                       reaction;
+    double                               absolute_sum = 0.;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     std::set<types::global_dof_index>    seen;
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -112,24 +111,23 @@ namespace contact_fem
     // reaction magnitudes. When even that is below 1e-10 E_min |u|_max
     // h^(dim-2), no force acts (bodies pulled apart, rigid motion): the
     // forces are round-off and there is no balance to check.
-    const Tensor<1, dim> load = applied_load(current_time);
-    const double youngs_min = materials.youngs_modulus_range().first;
-    double       h_max      = 0.;
+    const Tensor<1, dim> load       = applied_load(current_time);
+    const double         youngs_min = materials.youngs_modulus_range().first;
+    double               h_max      = 0.;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         h_max = std::max(h_max, cell->diameter());
-    h_max = Utilities::MPI::max(h_max, comm);
-    const double no_force =
-      1e-10 * youngs_min * solution.linfty_norm() * std::pow(h_max, dim - 2.);
+    h_max                 = Utilities::MPI::max(h_max, comm);
+    const double no_force = 1e-10 * youngs_min * solution.linfty_norm() * std::pow(h_max, dim - 2.);
     // Loads that balance each other (two bodies pressed together by
     // opposite forces) have a net of round-off: their scale is the largest
     // load on one body.
     double largest_body_load = 0.;
     for (const auto &[id, body_load] : diagnosis().body_loads(current_time))
       largest_body_load = std::max(largest_body_load, body_load.norm());
-    const double scale = std::max({load.norm(), largest_body_load, 0.5 * absolute_sum});
-    Json                 result = Json::object();
-    Json load_components = Json::array(), reaction_components = Json::array(),
+    const double scale           = std::max({load.norm(), largest_body_load, 0.5 * absolute_sum});
+    Json         result          = Json::object();
+    Json         load_components = Json::array(), reaction_components = Json::array(),
          imbalance_components = Json::array();
     for (unsigned int d = 0; d < dim; ++d)
       {
@@ -150,8 +148,7 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactProblem<dim>::record_forces(const unsigned int step, const double time,
-                                     Json &step_record)
+  ContactProblem<dim>::record_forces(const unsigned int step, const double time, Json &step_record)
   {
     std::vector<double> contact_force;
     if (contact)
@@ -242,7 +239,8 @@ namespace contact_fem
         for (unsigned int d = 0; d < dim; ++d)
           {
             displacement.push(values[i * dim + d]);
-            pcout << "  u" << "xyz"[d] << " = " << values[i * dim + d];
+            pcout << "  u"
+                  << "xyz"[d] << " = " << values[i * dim + d];
           }
         pcout << std::defaultfloat << std::setprecision(6) << std::endl;
         probes.push(Json::object()
@@ -258,13 +256,11 @@ namespace contact_fem
                                      const Json &reaction,
                                      const Json &hertz) const
   {
-    pcout << "  Results at t = " << current_time << ":" << std::endl
-          << std::setprecision(6);
+    pcout << "  Results at t = " << current_time << ":" << std::endl << std::setprecision(6);
     if (contact)
       {
         // Printed from contact_results(), which computed them.
-        const auto n_slave =
-          static_cast<unsigned int>(contact_json["slave_nodes"].number_value());
+        const auto n_slave = static_cast<unsigned int>(contact_json["slave_nodes"].number_value());
         const auto n_active =
           static_cast<unsigned int>(contact_json["active_slave_nodes"].number_value());
         const double p_max   = contact_json["max_contact_pressure"].number_value();
@@ -275,19 +271,17 @@ namespace contact_fem
         if (n_active > 0)
           pcout << "    max contact pressure:         " << p_max << std::endl
                 << "    min active contact pressure:  " << p_min << std::endl
-                << "    pressure spread (max-min)/max: " << value_or_ok((p_max - p_min) / p_max, 1e-8)
-                << std::endl
+                << "    pressure spread (max-min)/max: "
+                << value_or_ok((p_max - p_min) / p_max, 1e-8) << std::endl
                 << "    max |gap|/h on active nodes:  " << value_or_ok(gap_max, 1e-10) << std::endl;
         // Round-off-free: at or below 1e-6 h the excess is not printed as a
         // number (an exactly resolved contact gives noise there).
-        const double excess =
-          contact_json["largest_unexplained_penetration_over_h"].number_value();
+        const double excess = contact_json["largest_unexplained_penetration_over_h"].number_value();
         pcout << "    penetration check:            every slave node "
               << (interface->hanging_slave_vertices.empty() ? "" : "and hanging slave vertex ")
               << "against the whole master surface, unexplained penetration "
-              << (excess < 1e-6 ? std::string("< 1e-6") : scientific(excess, 1))
-              << " h (tolerance " << contact_parameters.penetration_tolerance << " h)"
-              << std::endl;
+              << (excess < 1e-6 ? std::string("< 1e-6") : scientific(excess, 1)) << " h (tolerance "
+              << contact_parameters.penetration_tolerance << " h)" << std::endl;
         std::ostringstream own_checks;
         contact->print_results(*interface, interface_displacement, contact_json, reaction,
                                own_checks);
@@ -304,7 +298,7 @@ namespace contact_fem
           << std::endl
           << "    support reaction:             "
           << force_text(reaction["support_reaction"].number_value(),
-                                   reaction["force_scale"].number_value())
+                        reaction["force_scale"].number_value())
           << std::endl
           << "    relative imbalance:           "
           << value_or_ok(reaction["relative_imbalance"].number_value(), 1e-10) << std::endl;
@@ -381,7 +375,7 @@ namespace contact_fem
   ContactProblem<dim>::open_output_directory()
   {
     const OutputDirectoryReport report = prepare_output_directory(output.directory, comm);
-    const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+    const bool                  root   = Utilities::MPI::this_mpi_process(comm) == 0;
     if (root)
       log_file.open(output.directory + "/log.txt");
     check_written(output.directory + "/log.txt", !root || static_cast<bool>(log_file));
@@ -427,23 +421,22 @@ namespace contact_fem
 
   // The class is instantiated in contact_problem.cc; here only the members
   // defined in this file.
-#define INSTANTIATE(dim)                                                        \
-  template Tensor<1, dim> ContactProblem<dim>::applied_load(const double) const; \
-  template Json           ContactProblem<dim>::contact_results() const;          \
-  template Json           ContactProblem<dim>::reaction_results() const;         \
-  template void ContactProblem<dim>::write_pressure_profile() const;             \
-  template void ContactProblem<dim>::record_forces(const unsigned int, const double, Json &); \
-  template Json ContactProblem<dim>::probe_results() const;                      \
-  template std::vector<double> ContactProblem<dim>::probe_displacements() const; \
-  template double ContactProblem<dim>::reference_pressure_error(                  \
-    const std::vector<double> &) const;                                           \
-  template void ContactProblem<dim>::print_results(const Json &, const Json &,           \
-                                                   const Json &) const;                \
-  template void ContactProblem<dim>::write_summary(const Json &,                  \
-                                                   const double,                  \
-                                                   const std::string &) const; \
-  template OutputDirectoryReport ContactProblem<dim>::open_output_directory(); \
-  template void ContactProblem<dim>::report_earlier_outputs(const OutputDirectoryReport &); \
+#define INSTANTIATE(dim)                                                                        \
+  template Tensor<1, dim> ContactProblem<dim>::applied_load(const double) const;                \
+  template Json           ContactProblem<dim>::contact_results() const;                         \
+  template Json           ContactProblem<dim>::reaction_results() const;                        \
+  template void           ContactProblem<dim>::write_pressure_profile() const;                  \
+  template void ContactProblem<dim>::record_forces(const unsigned int, const double, Json &);   \
+  template Json ContactProblem<dim>::probe_results() const;                                     \
+  template std::vector<double> ContactProblem<dim>::probe_displacements() const;                \
+  template double ContactProblem<dim>::reference_pressure_error(const std::vector<double> &)    \
+    const;                                                                                      \
+  template void ContactProblem<dim>::print_results(const Json &, const Json &, const Json &)    \
+    const;                                                                                      \
+  template void                  ContactProblem<dim>::write_summary(const Json &, const double, \
+                                                                    const std::string &) const; \
+  template OutputDirectoryReport ContactProblem<dim>::open_output_directory();                  \
+  template void ContactProblem<dim>::report_earlier_outputs(const OutputDirectoryReport &);     \
   template void ContactProblem<dim>::check_written(const std::string &, const bool) const;
   INSTANTIATE(2)
   INSTANTIATE(3)

@@ -48,8 +48,8 @@ namespace contact_fem
       // (HertzCylinder::compare()) is a geometry error of the polygonal arc, not
       // part of the discretisation error the estimate is compared with.
       const double chord_gap_work = std::isfinite(chord_work) ? chord_work : 0.;
-      const double excess = potential_energy + chord_gap_work - reference_energy;
-      const double energy_error = std::sqrt(2. * std::abs(excess));
+      const double excess         = potential_energy + chord_gap_work - reference_energy;
+      const double energy_error   = std::sqrt(2. * std::abs(excess));
       cycle_record.set("energy_error", energy_error);
       pcout << "    energy-norm error:            " << energy_error << " (from Pi_h "
             << (chord_gap_work > 0. ? "+ W_chord " : "") << "- Pi_ref = " << excess << ")"
@@ -73,9 +73,8 @@ namespace contact_fem
                   const double       elapsed)
     {
       std::string line = "  Progress: load step " + std::to_string(n_solved) + " of " +
-                         std::to_string(n_solved + left) + " of cycle " +
-                         std::to_string(cycle) + " done, " + significant(elapsed, 3) +
-                         " s in this cycle";
+                         std::to_string(n_solved + left) + " of cycle " + std::to_string(cycle) +
+                         " done, " + significant(elapsed, 3) + " s in this cycle";
       if (left > 0)
         line += ", about " + significant(elapsed / n_solved * left, 2) + " s to go";
       return line;
@@ -131,8 +130,7 @@ namespace contact_fem
   }
 
   namespace
-  {
-  } // namespace
+  {} // namespace
 
   template <int dim>
   void
@@ -155,8 +153,7 @@ namespace contact_fem
                       "the gap and disturbs the contact pressure by up to "
                       "0.5 % (doc/convergence.md). 1 keeps the chords (as "
                       "Kratos' linear elements do).");
-    prm.declare_entry("Volumetric strain", "standard",
-                      Patterns::Selection("standard|B-bar"),
+    prm.declare_entry("Volumetric strain", "standard", Patterns::Selection("standard|B-bar"),
                       "standard: the full strain in the elastic law. B-bar: the "
                       "volumetric strain div u is projected per cell onto "
                       "polynomials of degree p - 1 (selective, mean dilatation "
@@ -220,11 +217,10 @@ namespace contact_fem
     effective_input = apply_scene_settings(prm, scene.type);
     // "auto" depends on the scene: Q1 follows curved boundaries on a
     // quadratic mapping, in 2D and 3D.
-    const std::string  mapping_degree = read_entry(prm, "Finite element", "Mapping degree");
-    const unsigned int geometry_degree =
-      mapping_degree != "auto"    ? std::stoul(mapping_degree) :
-      scene.has_curved_boundary() ? std::max(degree, 2u) :
-                                    degree;
+    const std::string  mapping_degree  = read_entry(prm, "Finite element", "Mapping degree");
+    const unsigned int geometry_degree = mapping_degree != "auto"    ? std::stoul(mapping_degree) :
+                                         scene.has_curved_boundary() ? std::max(degree, 2u) :
+                                                                       degree;
     // A curved mapping takes its support points from the manifolds (the
     // transfinite interpolation of the Hertz disc is costly): cached once
     // per mesh, in setup_dofs().
@@ -256,8 +252,7 @@ namespace contact_fem
     model_range.parse_parameters(prm);
     memory_warning = input_checks().check_scene_before_meshing(inclined_supports);
 
-    timer = std::make_unique<TimerOutput>(comm, pcout, TimerOutput::never,
-                                          TimerOutput::wall_times);
+    timer = std::make_unique<TimerOutput>(comm, pcout, TimerOutput::never, TimerOutput::wall_times);
   }
 
   template <int dim>
@@ -322,7 +317,7 @@ namespace contact_fem
     // DoFHandler on several ranks does not accept (it takes the new numbers
     // of the owned DoFs only). refine_mesh() and setup_dofs() both call this
     // on one mesh and get the same order.
-    const IndexSet &owned = dof_handler.locally_owned_dofs();
+    const IndexSet                      &owned = dof_handler.locally_owned_dofs();
     std::vector<types::global_dof_index> new_numbers(owned.begin(), owned.end());
     std::mt19937 generator(dof_renumbering_seed + 7919 * Utilities::MPI::this_mpi_process(comm));
     std::shuffle(new_numbers.begin(), new_numbers.end(), generator);
@@ -385,14 +380,14 @@ namespace contact_fem
         const std::string text = to_string(point);
         AssertThrow(false,
                     ExcMessage(key + ": body " + std::to_string(point.material_id) +
-                               " has no mesh vertex at (" + text.substr(text.find('@') + 2) +
-                               ")" +
+                               " has no mesh vertex at (" + text.substr(text.find('@') + 2) + ")" +
                                (std::isfinite(nearest.first) ?
                                   "; its nearest vertex is " +
-                                    coordinates_text(scene.frame.to_model(nearest.second)) +
-                                    ", " + significant(nearest.first, 2) +
+                                    coordinates_text(scene.frame.to_model(nearest.second)) + ", " +
+                                    significant(nearest.first, 2) +
                                     " of its cell's diameter away (a point names a vertex "
-                                    "within " + significant(vertex_match_tolerance, 2) + ")" :
+                                    "within " +
+                                    significant(vertex_match_tolerance, 2) + ")" :
                                   "; the body has no cells") +
                                "."));
       }
@@ -432,9 +427,8 @@ namespace contact_fem
         function.set_time(time);
         ComponentMask mask(dim, false);
         mask.set(condition.component, true);
-        VectorTools::interpolate_boundary_values(*mapping, dof_handler,
-                                                 condition.boundary_id, function,
-                                                 dirichlet_constraints, mask);
+        VectorTools::interpolate_boundary_values(*mapping, dof_handler, condition.boundary_id,
+                                                 function, dirichlet_constraints, mask);
       }
     for (const auto dof : fixed_point_dofs)
       if (!dirichlet_constraints.is_constrained(dof))
@@ -449,10 +443,9 @@ namespace contact_fem
   {
     TimerOutput::Scope t(*timer, "Assembly: bulk");
     const QGauss<dim>  quadrature(degree + 1);
-    FEValues<dim>      fe_values(*mapping, fe, quadrature,
-                            update_gradients | update_JxW_values);
+    FEValues<dim>      fe_values(*mapping, fe, quadrature, update_gradients | update_JxW_values);
     const unsigned int n = fe.n_dofs_per_cell();
-    const FEValuesExtractors::Vector displacement(0);
+    const FEValuesExtractors::Vector     displacement(0);
     std::vector<SymmetricTensor<2, dim>> strains(n);
     std::vector<double>                  theta(n);
 
@@ -478,9 +471,9 @@ namespace contact_fem
                     }
                   for (unsigned int i = 0; i < n; ++i)
                     for (unsigned int j = 0; j <= i; ++j)
-                      K(i, j) += (2. * mu * (strains[i] * strains[j]) +
-                                  lambda * theta[i] * theta[j]) *
-                                 fe_values.JxW(q);
+                      K(i, j) +=
+                        (2. * mu * (strains[i] * strains[j]) + lambda * theta[i] * theta[j]) *
+                        fe_values.JxW(q);
                 }
             }
           else
@@ -508,16 +501,17 @@ namespace contact_fem
   void
   ContactProblem<dim>::compute_cell_loads(const double time)
   {
-    TimerOutput::Scope t(*timer, "Assembly: bulk");
-    const QGauss<dim - 1> quadrature(degree + 1);
-    FEFaceValues<dim>     fe_face(*mapping, fe, quadrature,
-                              update_values | update_normal_vectors |
-                                update_quadrature_points | update_JxW_values);
+    TimerOutput::Scope                              t(*timer, "Assembly: bulk");
+    const QGauss<dim - 1>                           quadrature(degree + 1);
+    FEFaceValues<dim>                               fe_face(*mapping, fe, quadrature,
+                                                            update_values | update_normal_vectors | update_quadrature_points |
+                                                              update_JxW_values);
     std::vector<std::unique_ptr<UserFunction<dim>>> pressures;
     for (const auto &condition : boundary_conditions.pressures)
       {
-        pressures.push_back(std::make_unique<UserFunction<dim>>(
-          std::vector<std::string>{condition.expression}, scene.frame));
+        pressures.push_back(
+          std::make_unique<UserFunction<dim>>(std::vector<std::string>{condition.expression},
+                                              scene.frame));
         pressures.back()->set_time(time);
       }
     cell_loads.assign(triangulation.n_active_cells(), Vector<double>());
@@ -586,8 +580,7 @@ namespace contact_fem
     DoFTools::make_hanging_node_constraints(dof_handler, candidates);
     if (contact)
       contact->add_constraints(*interface, interface_fixed_values, candidates, true);
-    candidates.merge(dirichlet_constraints,
-                     AffineConstraints<double>::left_object_wins, true);
+    candidates.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins, true);
     candidates.close();
 
     // Every DoF of a cell couples with every other one and with the masters
@@ -611,8 +604,7 @@ namespace contact_fem
               if (c->can_store_line(closure[k]))
                 if (const auto *entries = c->get_constraint_entries(closure[k]))
                   for (const auto &entry : *entries)
-                    if (std::find(closure.begin(), closure.end(), entry.first) ==
-                        closure.end())
+                    if (std::find(closure.begin(), closure.end(), entry.first) == closure.end())
                       closure.push_back(entry.first);
           std::sort(closure.begin(), closure.end());
           closure.erase(std::unique(closure.begin(), closure.end()), closure.end());
@@ -635,8 +627,7 @@ namespace contact_fem
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     if (contact)
       contact->add_constraints(*interface, interface_fixed_values, constraints, false);
-    constraints.merge(dirichlet_constraints,
-                      AffineConstraints<double>::left_object_wins, true);
+    constraints.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins, true);
     constraints.close();
     if (contact && !contact->symmetric())
       {
@@ -644,8 +635,8 @@ namespace contact_fem
         test_constraints.reinit(writable_dofs);
         DoFTools::make_hanging_node_constraints(dof_handler, test_constraints);
         contact->add_test_constraints(*interface, interface_fixed_values, test_constraints);
-        test_constraints.merge(dirichlet_constraints,
-                               AffineConstraints<double>::left_object_wins, true);
+        test_constraints.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins,
+                               true);
         test_constraints.close();
       }
   }
@@ -659,17 +650,16 @@ namespace contact_fem
     system_rhs    = 0.;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     const Vector<double>                 no_load(fe.n_dofs_per_cell());
-    const bool symmetric = !contact || contact->symmetric();
+    const bool                           symmetric = !contact || contact->symmetric();
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           cell->get_dof_indices(dofs);
-          const unsigned int index = cell->active_cell_index();
-          const Vector<double> &load =
-            cell_loads[index].size() > 0 ? cell_loads[index] : no_load;
+          const unsigned int    index = cell->active_cell_index();
+          const Vector<double> &load  = cell_loads[index].size() > 0 ? cell_loads[index] : no_load;
           if (symmetric)
-            constraints.distribute_local_to_global(cell_matrices[index], load, dofs,
-                                                   system_matrix, system_rhs);
+            constraints.distribute_local_to_global(cell_matrices[index], load, dofs, system_matrix,
+                                                   system_rhs);
           else
             distribute_unsymmetric(cell_matrices[index], load, dofs);
         }
@@ -770,8 +760,7 @@ namespace contact_fem
 
   template <int dim>
   double
-  ContactProblem<dim>::equilibrium_residual_norm(
-    const std::vector<double> &contact_force) const
+  ContactProblem<dim>::equilibrium_residual_norm(const std::vector<double> &contact_force) const
   {
     // Free DoFs: not Dirichlet, not hanging. Interface DoFs are added from
     // the replicated interface data, the others by their owners.
@@ -779,8 +768,7 @@ namespace contact_fem
     for (const auto i : owned_dofs)
       if (!dirichlet_constraints.is_constrained(i) && !hanging_constraints.is_constrained(i) &&
           !inclined_supports.holds(i) &&
-          !(interface && std::binary_search(interface->dofs().begin(),
-                                            interface->dofs().end(), i)))
+          !(interface && std::binary_search(interface->dofs().begin(), interface->dofs().end(), i)))
         local += residual(i) * residual(i);
     local += inclined_supports.free_residual_squared(residual);
     double sum = Utilities::MPI::sum(local, comm);
@@ -867,11 +855,11 @@ namespace contact_fem
       }
     catch (const std::exception &e)
       {
-        const std::string what = e.what();
-        const auto        pos  = what.find("the linear system is singular");
-        const std::string cause =
-          pos != std::string::npos ? what.substr(pos, what.find(')', pos) - pos + 1) :
-                                     std::string("the linear solver failed");
+        const std::string what  = e.what();
+        const auto        pos   = what.find("the linear system is singular");
+        const std::string cause = pos != std::string::npos ?
+                                    what.substr(pos, what.find(')', pos) - pos + 1) :
+                                    std::string("the linear solver failed");
         // Split: an overshooting iterate near a load reversal slips everywhere.
         if (pos != std::string::npos && contact && contact->slides_everywhere())
           throw NewtonFailure(where + ": " + cause + ": " + exceeded_friction_capacity({}));
@@ -881,8 +869,7 @@ namespace contact_fem
     // so does their combination.
     if (newton_parameters.damping < 1.)
       {
-        solution.sadd(newton_parameters.damping, 1. - newton_parameters.damping,
-                      previous_solution);
+        solution.sadd(newton_parameters.damping, 1. - newton_parameters.damping, previous_solution);
         ghosted_solution = solution;
       }
   }
@@ -967,7 +954,7 @@ namespace contact_fem
     // The contact sets after each iteration: a set that comes back after
     // changes means the iteration cycles and would never settle.
     std::vector<std::vector<int>> sets_of_iteration;
-    unsigned int              iteration = 0;
+    unsigned int                  iteration = 0;
     for (; iteration <= newton_parameters.max_iterations; ++iteration)
       {
         const std::string at = where + ", iteration " + std::to_string(iteration);
@@ -985,13 +972,13 @@ namespace contact_fem
           throw NewtonFailure(at + ": the residual is not a number (|r_u| = " + scientific(r_u) +
                               ", |r_lambda| = " + scientific(r_lambda) +
                               "). The linear system is singular or the input is "
-                              "extreme." + diagnosis().singular_system_hint());
+                              "extreme." +
+                              diagnosis().singular_system_hint());
         assessment =
           monitor.assess(iteration, r_u, r_lambda, update.changes, update.searched_again);
         std::optional<unsigned int> linear_iterations;
         if (linear_solver->iterative())
-          linear_iterations =
-            iteration > 0 ? linear_iterations_of_step.back() : 0u;
+          linear_iterations = iteration > 0 ? linear_iterations_of_step.back() : 0u;
         if (output.print_newton_iterations)
           pcout << monitor.row(iteration, update.changes, contact ? contact->n_active() : 0u,
                                assessment, contact ? contact->iteration_cells(iteration) : "",
@@ -1018,7 +1005,7 @@ namespace contact_fem
                             std::to_string(newton_parameters.max_iterations) + " iterations " +
                             monitor.last_residuals() + "." +
                             diagnosis().non_convergence_hint(assessment.stalled, monitor.last_r_u(),
-                                                 monitor.last_r_lambda()) +
+                                                             monitor.last_r_lambda()) +
                             precision_hint(),
                           !assessment.stalled);
 
@@ -1027,8 +1014,7 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactProblem<dim>::check_before_solve(const std::string &at,
-                                          const unsigned int iteration) const
+  ContactProblem<dim>::check_before_solve(const std::string &at, const unsigned int iteration) const
   {
     if (contact && contact->n_active() == 0 && !contact_parameters.allow_loss_of_contact)
       throw NewtonFailure(diagnosis().no_contact_message(at, current_time, true, iteration == 1),
@@ -1058,10 +1044,12 @@ namespace contact_fem
           for (unsigned int n = 0; n < sets_of_iteration.back().size(); ++n)
             differing += sets_of_iteration[iteration - 1][n] != sets_of_iteration.back()[n];
           throw NewtonFailure(at + ": the stick/slip set cycles: iteration " +
-                                std::to_string(iteration) + " brings back the contact sets "
-                                "of iteration " + std::to_string(k) + " (period " +
-                                std::to_string(iteration - k) + ", " +
-                                std::to_string(differing) + " node(s) switching), so the "
+                                std::to_string(iteration) +
+                                " brings back the contact sets "
+                                "of iteration " +
+                                std::to_string(k) + " (period " + std::to_string(iteration - k) +
+                                ", " + std::to_string(differing) +
+                                " node(s) switching), so the "
                                 "semi-smooth Newton iteration cannot settle. Smaller load "
                                 "steps usually break the cycle (the step is split). "
                                 "With Contact/Pure slip = true a scene that sticks "
@@ -1087,8 +1075,8 @@ namespace contact_fem
       pcout << "Mesh file: " << scene.mesh_note << std::endl;
     // Refining a polygon of a curve without its manifold moves p_max away
     // from the converged value with every level: say so once, up front.
-    const bool refines = scene.global_refinements > 0 || !scene.refinement_boxes.empty() ||
-                         refinement.n_cycles > 1;
+    const bool refines =
+      scene.global_refinements > 0 || !scene.refinement_boxes.empty() || refinement.n_cycles > 1;
     if (const std::string chords = scene.chord_warning(); refines && !chords.empty())
       pcout << "Warning: " << chords << std::endl;
     if (mapping->get_degree() > degree)
@@ -1137,18 +1125,21 @@ namespace contact_fem
         for (unsigned int d = 0; d < dim; ++d)
           origin += (d > 0 ? ", " : "") + significant(scene.frame.origin[d], 17);
         pcout << "  The mesh lies far from the origin: it is computed moved next to it by "
-                 "-(" << origin << ") (deal.II's geometry loses the digits of small cells far "
+                 "-("
+              << origin
+              << ") (deal.II's geometry loses the digits of small cells far "
                  "out). Inputs, messages and pressure_profile.csv use the mesh file's "
-                 "coordinates; the VTU files (32-bit points) the moved ones: add (" << origin
-              << ") (summary.json: coordinate_origin)." << std::endl;
+                 "coordinates; the VTU files (32-bit points) the moved ones: add ("
+              << origin << ") (summary.json: coordinate_origin)." << std::endl;
       }
     report_earlier_outputs(earlier_outputs);
     print_input_warnings();
 
     create_checked_mesh();
 
-    convergence_table = std::make_unique<ConvergenceTable<dim>>(
-      output.directory + "/convergence.csv", contact_parameters.pairs, comm);
+    convergence_table =
+      std::make_unique<ConvergenceTable<dim>>(output.directory + "/convergence.csv",
+                                              contact_parameters.pairs, comm);
   }
 
   template <int dim>
@@ -1228,7 +1219,8 @@ namespace contact_fem
             break;
           }
         if (const std::string shortage =
-              cycle > 0 ? input_checks().memory_shortage(cycle, old_dofs, dof_handler.n_dofs()) : "";
+              cycle > 0 ? input_checks().memory_shortage(cycle, old_dofs, dof_handler.n_dofs()) :
+                          "";
             !shortage.empty())
           {
             pcout << "Error: " << shortage << std::endl;
@@ -1239,10 +1231,10 @@ namespace contact_fem
           }
         timer->reset();
         uncounted_wall_time = 0.;
-        Timer      cycle_timer;
-        Json       record    = Json::object();
-        const bool converged = run_cycle(cycle, record);
-        const double wall    = cycle_timer.wall_time() - uncounted_wall_time;
+        Timer        cycle_timer;
+        Json         record    = Json::object();
+        const bool   converged = run_cycle(cycle, record);
+        const double wall      = cycle_timer.wall_time() - uncounted_wall_time;
         cumulative += wall;
         record.set("wall_time", wall).set("cumulative_wall_time", cumulative);
         record.set("timing", cycle_timing());
@@ -1255,7 +1247,7 @@ namespace contact_fem
         // the status says whether the run is complete.
         // Refining does not bring a state beyond the model back into it.
         const bool beyond_model = converged && outside_model_range && !model_range.accept_outside;
-        const bool last = !converged || beyond_model || cycle + 1 == refinement.n_cycles;
+        const bool last         = !converged || beyond_model || cycle + 1 == refinement.n_cycles;
         write_summary(cycles, total_timer.wall_time(),
                       !converged ? "failed: results of the last converged load step" :
                       !last      ? "running" :
@@ -1330,7 +1322,7 @@ namespace contact_fem
     // with tightened tolerances to about 2e-8.
     constexpr double tolerance               = 1e-6;
     constexpr double contrast_costing_digits = 1e6;
-    const double     imbalance = reaction["relative_imbalance"].number_value();
+    const double     imbalance               = reaction["relative_imbalance"].number_value();
     if (!(imbalance > tolerance))
       return;
     const ContactDiagnosis<dim> diagnosis = this->diagnosis();
@@ -1352,8 +1344,7 @@ namespace contact_fem
     if (cause.empty())
       cause = "the Newton tolerances leave that much out of balance (Newton/Displacement "
               "relative tolerance = " +
-              significant(newton_parameters.displacement_relative_tolerance, 2) +
-              "); tighten them";
+              significant(newton_parameters.displacement_relative_tolerance, 2) + "); tighten them";
     const std::string text = "the applied load and the support reactions are out of "
                              "balance by " +
                              scientific(imbalance, 1) + " of the forces (tolerance " +
@@ -1398,8 +1389,8 @@ namespace contact_fem
     if (!volumetric_projection)
       for (const auto &[id, constants] : materials.bodies)
         if (constants.poisson_ratio > locking_nu)
-          pcout << "  Warning: body " << static_cast<unsigned int>(id)
-                << " has Poisson's ratio " << constants.poisson_ratio << ": degree " << degree
+          pcout << "  Warning: body " << static_cast<unsigned int>(id) << " has Poisson's ratio "
+                << constants.poisson_ratio << ": degree " << degree
                 << " elements lock volumetrically beyond about " << locking_nu
                 << "; set Finite element/Volumetric strain = B-bar." << std::endl;
     // The mortar side should be the softer one (and the finer mesh): a stiff
@@ -1489,7 +1480,7 @@ namespace contact_fem
       contact_surfaces.insert({pair.slave, pair.master});
     const SolutionChecks<dim> checks({dof_handler, *mapping, constraints, dirichlet_constraints,
                                       owned_dofs, relevant_dofs, solution, ghosted_solution});
-    const auto probe =
+    const auto                probe =
       checks.weakly_held_rotation(bodies, softest, contact_surfaces, *linear_solver);
     for (const std::string &text : probe.warnings)
       warn("rotation_warning", text, cycle_record);
@@ -1529,8 +1520,8 @@ namespace contact_fem
             interface_dof_fixed[interface->position(node.dofs[d])] = node.fixed[d];
       }
     compute_cell_matrices();
-    pcout << "Cycle " << cycle << ": " << triangulation.n_global_active_cells()
-          << " cells, " << dof_handler.n_dofs() << " DoFs";
+    pcout << "Cycle " << cycle << ": " << triangulation.n_global_active_cells() << " cells, "
+          << dof_handler.n_dofs() << " DoFs";
     if (interface)
       {
         const auto [n_slave, n_hanging] = interface->count_slave_nodes();
@@ -1572,12 +1563,11 @@ namespace contact_fem
     const bool         whole_path = cycle == 0 || resolves_load_path();
     const unsigned int n_steps    = whole_path ? load_stepping.n_steps : 1;
     LoadStepControl    control(load_stepping,
-                            whole_path ? 0. :
-                                         load_stepping.end_time * (n_steps - 1) / n_steps,
-                            n_steps);
-    LoadPath path;
-    Json     steps = Json::array();
-    Timer    path_timer;
+                            whole_path ? 0. : load_stepping.end_time * (n_steps - 1) / n_steps,
+                               n_steps);
+    LoadPath           path;
+    Json               steps = Json::array();
+    Timer              path_timer;
     if (comparison)
       comparison->start_load_path();
     ConvergedState saved(solution, contact.get(), interface.get());
@@ -1599,9 +1589,8 @@ namespace contact_fem
             if (failure.splittable && control.split())
               {
                 pcout << "  Splitting the step: retrying from t = " << control.converged_time()
-                      << " with step " << control.step_size() << " (split "
-                      << control.n_splits() << " of at most " << load_stepping.max_splits
-                      << ")" << std::endl;
+                      << " with step " << control.step_size() << " (split " << control.n_splits()
+                      << " of at most " << load_stepping.max_splits << ")" << std::endl;
                 continue;
               }
             pcout << std::endl
@@ -1624,7 +1613,7 @@ namespace contact_fem
         saved = ConvergedState(solution, contact.get(), interface.get());
         if (vtu_output)
           {
-            TimerOutput::Scope t(*timer, "Output: VTU");
+            TimerOutput::Scope                       t(*timer, "Output: VTU");
             const std::unique_ptr<ContactState<dim>> state =
               contact ? std::make_unique<ContactState<dim>>(contact_state()) : nullptr;
             vtu_output->write_solution(solution_view(state.get()), cycle, time);
@@ -1636,10 +1625,9 @@ namespace contact_fem
   }
 
   template <int dim>
-  ContactProblem<dim>::ConvergedState::ConvergedState(
-    const TrilinosWrappers::MPI::Vector &solution,
-    const ContactFormulation<dim>       *contact,
-    const ContactInterface<dim>         *interface)
+  ContactProblem<dim>::ConvergedState::ConvergedState(const TrilinosWrappers::MPI::Vector &solution,
+                                                      const ContactFormulation<dim>       *contact,
+                                                      const ContactInterface<dim> *interface)
     : solution(solution)
     , contact_state(contact ? contact->save_state() : nullptr)
     , interface(interface ? std::make_unique<ContactInterface<dim>>(*interface) : nullptr)
@@ -1741,8 +1729,7 @@ namespace contact_fem
         if (contact)
           hertz_json = comparison->compare(contact_state(), contact_json, reaction_json);
         cycle_record.set("analytical", hertz_json);
-        cycle_record.set("pressure_l2_relative_error",
-                         hertz_json["pressure_l2_relative_error"]);
+        cycle_record.set("pressure_l2_relative_error", hertz_json["pressure_l2_relative_error"]);
       }
     // Total potential energy 1/2 u.K u - f.u of the bodies (from the last
     // residual evaluation): its difference to that of an overkill solution

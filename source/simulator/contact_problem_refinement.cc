@@ -37,9 +37,9 @@ namespace contact_fem
                 const Mortar::LineFace line = interface.face_geometry(face);
                 for (unsigned int q = 0; q < quadrature.size(); ++q)
                   {
-                    const double xi = 2. * quadrature.point(q)[0] - 1.;
-                    const double ds = 2. * quadrature.weight(q) * line.tangent(xi).norm();
-                    const Tensor<1, 2> n = Mortar::face_normal(line, xi, face.orientation);
+                    const double       xi = 2. * quadrature.point(q)[0] - 1.;
+                    const double       ds = 2. * quadrature.weight(q) * line.tangent(xi).norm();
+                    const Tensor<1, 2> n  = Mortar::face_normal(line, xi, face.orientation);
                     for (unsigned int k = 0; k < face.nodes.size(); ++k)
                       samples[face.nodes[k]].push_back(
                         {line.point(xi), n, ds * Mortar::shape_value(p, k, xi)});
@@ -58,9 +58,9 @@ namespace contact_fem
                   {
                     const Point<2> xi(2. * quadrature.point(q)[0] - 1.,
                                       2. * quadrature.point(q)[1] - 1.);
-                    const auto     t  = quad.tangents(xi);
-                    const double   dA = 4. * quadrature.weight(q) *
-                                      cross_product_3d(t[0], t[1]).norm();
+                    const auto     t = quad.tangents(xi);
+                    const double   dA =
+                      4. * quadrature.weight(q) * cross_product_3d(t[0], t[1]).norm();
                     const Tensor<1, 3> n = Mortar::face_normal(quad, xi, face.orientation);
                     // A hanging vertex carries no multiplier: its shape
                     // function goes to its parents with the hanging-node
@@ -70,7 +70,7 @@ namespace contact_fem
                     // dual.
                     for (unsigned int k = 0; k < face.nodes.size(); ++k)
                       {
-                        const double weight = dA * Mortar::quad_shape_value(p, k, xi);
+                        const double weight  = dA * Mortar::quad_shape_value(p, k, xi);
                         const auto  &parents = interface.nodes[face.nodes[k]].parents;
                         if (parents.empty())
                           samples[face.nodes[k]].push_back({quad.point(xi), n, weight});
@@ -94,7 +94,7 @@ namespace contact_fem
                        const bool                     all_paired)
     {
       std::vector<ContactNodeTraction<dim>> tractions;
-      const auto support = slave_support_samples(interface);
+      const auto                            support = slave_support_samples(interface);
       for (const auto &s : interface.slave_nodes)
         if (s.paired && (all_paired || contact.is_active(s.node)))
           {
@@ -151,61 +151,63 @@ namespace contact_fem
                          const std::vector<ContactNodeTraction<dim>> &nodes,
                          const std::vector<SymmetricTensor<2, dim>>  &node_stresses)
       {
-      // How well the recovered stress carries the contact traction, in the
-      // convention of the imposed condition: the traction sigma* n0 on the
-      // reference surface (n0 = the node's N_j-weighted mean reference normal)
-      // against -p n (n = the deformed normal the force acts along). Its
-      // normal part, scaled from the reference to the deformed surface by
-      // int N_j ds / D_j (the mortar pressure is a force per deformed area;
-      // the scenes' surface strains reach 1 %), is compared with the exact
-      // pressure by the same L2 measure as the mortar pressure; its shear
-      // part, which a frictionless contact makes zero, is reported as the
-      // largest over the active nodes.
-      // With friction the shear part is compared with the mortar tangential
-      // traction instead (it is no longer zero), and with Cattaneo.
-      const bool with_shear = contact.transmits_shear();
-      pressure.assign(interface.nodes.size(), 0.);
-      tangential.assign(interface.nodes.size(), 0.);
-      std::size_t         i = 0; // @p nodes are the paired slave nodes in order
-      for (const auto &s : interface.slave_nodes)
-        if (s.paired)
-          {
-            Tensor<1, dim> n0;
-            double         reference_length = 0.;
-            for (const auto &q : nodes[i].samples)
-              {
-                n0 += q.weight * q.normal;
-                reference_length += q.weight;
-              }
-            n0 /= n0.norm();
-            const Tensor<1, dim> n        = nodes[i].normal / nodes[i].normal.norm();
-            const Tensor<1, dim> traction = node_stresses[i] * n0;
-            const double         normal   = -(traction * n);
-            pressure[s.node]              = s.D > 0. ? normal * reference_length / s.D : normal;
-            if (contact.is_active(s.node))
-              {
-                Tensor<1, dim> shear = traction + normal * n;
-                if (with_shear && dim == 2)
-                  {
-                    const Tensor<1, dim> tau =
-                      ContactFormulation<dim>::tangent(contact.frame_normal(s));
-                    tangential[s.node] = (s.D > 0. ? reference_length / s.D : 1.) * (traction * tau);
-                    shear = (tangential[s.node] - contact.traction(s) * tau) * tau;
-                  }
-                else if (with_shear)
-                  {
-                    // 3D: the tangential parts as vectors (frame normal nf).
-                    const Tensor<1, dim> nf     = contact.frame_normal(s);
-                    const Tensor<1, dim> lambda = contact.traction(s);
-                    shear = (s.D > 0. ? reference_length / s.D : 1.) * (traction - (traction * nf) * nf) -
-                            (lambda - (lambda * nf) * nf);
-                  }
-                largest_shear = std::max(largest_shear, shear.norm());
-                p_max         = std::max(p_max, contact.normal_pressure(s.node));
-              }
-            ++i;
-          }
-      AssertThrow(i == nodes.size() && i == node_stresses.size(), ExcInternalError());
+        // How well the recovered stress carries the contact traction, in the
+        // convention of the imposed condition: the traction sigma* n0 on the
+        // reference surface (n0 = the node's N_j-weighted mean reference normal)
+        // against -p n (n = the deformed normal the force acts along). Its
+        // normal part, scaled from the reference to the deformed surface by
+        // int N_j ds / D_j (the mortar pressure is a force per deformed area;
+        // the scenes' surface strains reach 1 %), is compared with the exact
+        // pressure by the same L2 measure as the mortar pressure; its shear
+        // part, which a frictionless contact makes zero, is reported as the
+        // largest over the active nodes.
+        // With friction the shear part is compared with the mortar tangential
+        // traction instead (it is no longer zero), and with Cattaneo.
+        const bool with_shear = contact.transmits_shear();
+        pressure.assign(interface.nodes.size(), 0.);
+        tangential.assign(interface.nodes.size(), 0.);
+        std::size_t i = 0; // @p nodes are the paired slave nodes in order
+        for (const auto &s : interface.slave_nodes)
+          if (s.paired)
+            {
+              Tensor<1, dim> n0;
+              double         reference_length = 0.;
+              for (const auto &q : nodes[i].samples)
+                {
+                  n0 += q.weight * q.normal;
+                  reference_length += q.weight;
+                }
+              n0 /= n0.norm();
+              const Tensor<1, dim> n        = nodes[i].normal / nodes[i].normal.norm();
+              const Tensor<1, dim> traction = node_stresses[i] * n0;
+              const double         normal   = -(traction * n);
+              pressure[s.node]              = s.D > 0. ? normal * reference_length / s.D : normal;
+              if (contact.is_active(s.node))
+                {
+                  Tensor<1, dim> shear = traction + normal * n;
+                  if (with_shear && dim == 2)
+                    {
+                      const Tensor<1, dim> tau =
+                        ContactFormulation<dim>::tangent(contact.frame_normal(s));
+                      tangential[s.node] =
+                        (s.D > 0. ? reference_length / s.D : 1.) * (traction * tau);
+                      shear = (tangential[s.node] - contact.traction(s) * tau) * tau;
+                    }
+                  else if (with_shear)
+                    {
+                      // 3D: the tangential parts as vectors (frame normal nf).
+                      const Tensor<1, dim> nf     = contact.frame_normal(s);
+                      const Tensor<1, dim> lambda = contact.traction(s);
+                      shear                       = (s.D > 0. ? reference_length / s.D : 1.) *
+                                (traction - (traction * nf) * nf) -
+                              (lambda - (lambda * nf) * nf);
+                    }
+                  largest_shear = std::max(largest_shear, shear.norm());
+                  p_max         = std::max(p_max, contact.normal_pressure(s.node));
+                }
+              ++i;
+            }
+        AssertThrow(i == nodes.size() && i == node_stresses.size(), ExcInternalError());
       }
 
       /// The normal part scaled to the deformed surface, and in 2D with
@@ -220,24 +222,25 @@ namespace contact_fem
   template <int dim>
   void
   ContactProblem<dim>::report_recovered_tractions(
-    const std::vector<ContactNodeTraction<dim>>  &nodes,
-    const std::vector<SymmetricTensor<2, dim>> &node_stresses,
+    const std::vector<ContactNodeTraction<dim>> &nodes,
+    const std::vector<SymmetricTensor<2, dim>>  &node_stresses,
     const std::string                           &prefix,
     Json                                        &cycle_record) const
   {
     const bool                    with_shear = contact->transmits_shear();
     const RecoveredTractions<dim> recovered(*interface, *contact, nodes, node_stresses);
-    const std::vector<double>    &pressure   = recovered.pressure;
-    const std::vector<double>    &tangential = recovered.tangential;
+    const std::vector<double>    &pressure      = recovered.pressure;
+    const std::vector<double>    &tangential    = recovered.tangential;
     const double                  largest_shear = recovered.largest_shear;
     const double                  p_max         = recovered.p_max;
-    const double      shear = p_max > 0. ? largest_shear / p_max : 0.;
+    const double                  shear         = p_max > 0. ? largest_shear / p_max : 0.;
     const std::string label = prefix.empty() ? "    recovered" : "    plain SPR recovered";
     if (with_shear)
       {
         cycle_record.set(prefix + "recovered_tangential_traction_deviation_max_relative", shear);
-        pcout << label << " tangential traction - mortar one, largest / p_max: "
-              << value_or_ok(shear, 1e-6) << std::endl;
+        pcout << label
+              << " tangential traction - mortar one, largest / p_max: " << value_or_ok(shear, 1e-6)
+              << std::endl;
       }
     else
       {
@@ -255,8 +258,8 @@ namespace contact_fem
       {
         const double error = reference_pressure_error(pressure);
         cycle_record.set(prefix + "recovered_pressure_reference_l2_relative_error", error);
-        pcout << label << " pressure, L2 error against the reference: "
-              << value_or_ok(error, 1e-10) << std::endl;
+        pcout << label << " pressure, L2 error against the reference: " << value_or_ok(error, 1e-10)
+              << std::endl;
       }
   }
 
@@ -289,13 +292,13 @@ namespace contact_fem
       contact && (settings.contact_terms || pressure_known) ?
         recovery_tractions(*interface, *contact, pressure_known) :
         std::vector<ContactNodeTraction<dim>>();
-    const auto spr = StressRecovery<dim>::estimate(*mapping, dof_handler, ghosted_solution,
-                                                   materials, tractions, settings,
-                                                   volumetric_projection.get());
+    const auto spr =
+      StressRecovery<dim>::estimate(*mapping, dof_handler, ghosted_solution, materials, tractions,
+                                    settings, volumetric_projection.get());
     if (type == "kelly")
-      KellyErrorEstimator<dim>::estimate(*mapping, dof_handler, QGauss<dim - 1>(degree + 1),
-                                         {}, ghosted_solution, indicators, ComponentMask(),
-                                         nullptr, numbers::invalid_unsigned_int,
+      KellyErrorEstimator<dim>::estimate(*mapping, dof_handler, QGauss<dim - 1>(degree + 1), {},
+                                         ghosted_solution, indicators, ComponentMask(), nullptr,
+                                         numbers::invalid_unsigned_int,
                                          triangulation.locally_owned_subdomain());
     else
       indicators = spr.cell_indicators;
@@ -315,15 +318,14 @@ namespace contact_fem
       {
         Timer comparison;
         settings.contact_terms = false;
-        const auto plain       = StressRecovery<dim>::estimate(
-          *mapping, dof_handler, ghosted_solution, materials, tractions, settings,
-          volumetric_projection.get());
+        const auto plain =
+          StressRecovery<dim>::estimate(*mapping, dof_handler, ghosted_solution, materials,
+                                        tractions, settings, volumetric_projection.get());
         cycle_record.set("plain_spr_estimated_error", plain.estimated_error);
         pcout << "    plain SPR on the same mesh:   eta / |u|_E = "
               << value_or_ok(plain.relative_error, 1e-10) << std::endl;
         if (pressure_known)
-          report_recovered_tractions(tractions, plain.node_stresses, "plain_spr_",
-                                     cycle_record);
+          report_recovered_tractions(tractions, plain.node_stresses, "plain_spr_", cycle_record);
         uncounted_wall_time += comparison.wall_time();
       }
     report_effectivity(pcout, cycle_record);
@@ -380,8 +382,8 @@ namespace contact_fem
     return true;
   }
 
-#define INSTANTIATE(dim)                                           \
-  template void ContactProblem<dim>::estimate_error(Json &);       \
+#define INSTANTIATE(dim)                                     \
+  template void ContactProblem<dim>::estimate_error(Json &); \
   template bool ContactProblem<dim>::refine_mesh();
   INSTANTIATE(2)
   INSTANTIATE(3)

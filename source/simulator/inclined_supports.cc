@@ -33,8 +33,7 @@ namespace contact_fem
     Tensor<1, 3>
     scaled_normal(const Face &face, std::integral_constant<int, 3>)
     {
-      return cross_product_3d(face->vertex(3) - face->vertex(0),
-                              face->vertex(2) - face->vertex(1));
+      return cross_product_3d(face->vertex(3) - face->vertex(0), face->vertex(2) - face->vertex(1));
     }
 
     std::string
@@ -46,7 +45,7 @@ namespace contact_fem
 
   template <int dim>
   void
-  InclinedSupports<dim>::initialize(const Triangulation<dim>             &coarse,
+  InclinedSupports<dim>::initialize(const Triangulation<dim>              &coarse,
                                     const std::vector<types::boundary_id> &ids,
                                     const std::vector<ContactPair>        &pairs)
   {
@@ -55,8 +54,8 @@ namespace contact_fem
     for (const auto &pair : pairs)
       contact_ids.insert({pair.slave, pair.master});
     std::map<types::boundary_id, std::vector<Tensor<1, dim>>> face_normals;
-    std::map<types::boundary_id, std::set<unsigned int>>     vertices;
-    std::set<unsigned int>                                   contact_vertices;
+    std::map<types::boundary_id, std::set<unsigned int>>      vertices;
+    std::set<unsigned int>                                    contact_vertices;
     for (const auto &cell : coarse.cell_iterators_on_level(0))
       for (const auto f : cell->face_indices())
         {
@@ -70,7 +69,8 @@ namespace contact_fem
           if (std::find(ids.begin(), ids.end(), id) == ids.end())
             continue;
           Tensor<1, dim> n = scaled_normal(face, std::integral_constant<int, dim>());
-          AssertThrow(n.norm() > 0., ExcMessage(key + ": " + name(id) + " has a face of zero size."));
+          AssertThrow(n.norm() > 0.,
+                      ExcMessage(key + ": " + name(id) + " has a face of zero size."));
           const double size = face->diameter();
           // Its corners, and the point its manifold puts at its middle when
           // refining (a circle of Geometry/Manifolds bulges), on its plane.
@@ -79,7 +79,8 @@ namespace contact_fem
                         ExcMessage(key + ": " + name(id) + " has a warped face at " +
                                    coordinates_text(face->center()) +
                                    "; a roller needs a flat boundary."));
-          AssertThrow(std::abs((face->center(true) - face->vertex(0)) * n) <= 1e-6 * size * n.norm(),
+          AssertThrow(std::abs((face->center(true) - face->vertex(0)) * n) <=
+                        1e-6 * size * n.norm(),
                       ExcMessage(key + ": " + name(id) + " carries a curved manifold (at " +
                                  coordinates_text(face->center()) +
                                  "); a roller holds a flat boundary only: split a curved "
@@ -109,8 +110,7 @@ namespace contact_fem
           }
         for (const auto v : vertices[id])
           AssertThrow(contact_vertices.count(v) == 0,
-                      ExcMessage(key + ": " + name(id) +
-                                 " touches a contact surface (at " +
+                      ExcMessage(key + ": " + name(id) + " touches a contact surface (at " +
                                  coordinates_text(coarse.get_vertices()[v]) +
                                  "); rollers on or beside contact surfaces are not "
                                  "supported yet: hold such a boundary by Fixed components "
@@ -156,7 +156,7 @@ namespace contact_fem
   InclinedSupports<dim>::constrain_node(const std::vector<types::global_dof_index> &dofs,
                                         std::vector<Tensor<1, dim>>                 rows,
                                         const std::vector<bool>                    &fixed,
-                                        AffineConstraints<double> &dirichlet) const
+                                        AffineConstraints<double>                  &dirichlet) const
   {
     // Reduced row echelon form of the rows n^T on the free components: each
     // independent row expresses its pivot component by the others (fixed

@@ -32,10 +32,10 @@ namespace contact_fem
       double                 inside = 1.;
       for (unsigned int d = 0; d < dim; ++d)
         {
-          const double low   = std::max(bounds.get_boundary_points().first[d], box.lower[d]);
-          const double high  = std::min(bounds.get_boundary_points().second[d], box.upper[d]);
-          const double width = bounds.get_boundary_points().second[d] -
-                               bounds.get_boundary_points().first[d];
+          const double low  = std::max(bounds.get_boundary_points().first[d], box.lower[d]);
+          const double high = std::min(bounds.get_boundary_points().second[d], box.upper[d]);
+          const double width =
+            bounds.get_boundary_points().second[d] - bounds.get_boundary_points().first[d];
           inside *= width > 0. ? std::max(0., high - low) / width : 0.;
         }
       return inside;
@@ -110,23 +110,28 @@ namespace contact_fem
           continue;
         std::string carried;
         for (const auto other : ids)
-          carried += (carried.empty() ? "" : ", ") +
-                     std::to_string(static_cast<unsigned int>(other));
-        std::string message =
-          key + ": boundary id " + std::to_string(static_cast<unsigned int>(id)) +
-          " is on no face of the mesh; its boundary faces carry " +
-          (ids.size() == 1 ? "the id " : "the ids ") + carried +
-          (scene.type == "mesh file" && ids.front() == 0 ?
-             " (0: the faces without a physical tag)." :
-             ".");
+          carried +=
+            (carried.empty() ? "" : ", ") + std::to_string(static_cast<unsigned int>(other));
+        std::string message = key + ": boundary id " +
+                              std::to_string(static_cast<unsigned int>(id)) +
+                              " is on no face of the mesh; its boundary faces carry " +
+                              (ids.size() == 1 ? "the id " : "the ids ") + carried +
+                              (scene.type == "mesh file" && ids.front() == 0 ?
+                                 " (0: the faces without a physical tag)." :
+                                 ".");
         if (scene.type == "mesh file")
           {
             const std::string surface = dim == 3 ? "surface" : "curve";
             message += " In a Gmsh mesh a face gets a boundary id from the physical tag "
-                       "of its " + surface + " (Physical " +
-                       (dim == 3 ? "Surface" : "Curve") + "); a mesh saved without one, or "
-                       "whose tagged " + surface + "s are not those the cells were meshed "
-                       "on (a duplicate of a " + surface + ", e.g. with the built-in kernel "
+                       "of its " +
+                       surface + " (Physical " + (dim == 3 ? "Surface" : "Curve") +
+                       "); a mesh saved without one, or "
+                       "whose tagged " +
+                       surface +
+                       "s are not those the cells were meshed "
+                       "on (a duplicate of a " +
+                       surface +
+                       ", e.g. with the built-in kernel "
                        "and Geometry.AutoCoherence = 0: run Coherence;), has none.";
           }
         AssertThrow(false, ExcMessage(message));
@@ -159,8 +164,7 @@ namespace contact_fem
   {
     std::vector<std::string> keys;
     if (scene.global_refinements > 0)
-      keys.push_back("Geometry/Global refinements = " +
-                     std::to_string(scene.global_refinements));
+      keys.push_back("Geometry/Global refinements = " + std::to_string(scene.global_refinements));
     if (!scene.refinement_boxes.empty())
       keys.push_back("Geometry/Local refinements");
     if (keys.empty())
@@ -197,8 +201,8 @@ namespace contact_fem
         cells += inside * (std::pow(per_refinement, box.rounds) - 1.);
       }
     // dim DoFs per node, and about degree^dim nodes per cell.
-    const double dofs  = dim * std::pow(degree, dim) * cells;
-    const double bytes = estimated_memory(dofs, Utilities::MPI::n_mpi_processes(comm));
+    const double    dofs  = dim * std::pow(degree, dim) * cells;
+    const double    bytes = estimated_memory(dofs, Utilities::MPI::n_mpi_processes(comm));
     AvailableMemory available;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       available = available_memory();
@@ -208,8 +212,8 @@ namespace contact_fem
       return "";
 
     std::ostringstream estimate;
-    estimate << refinement_keys() << ": the mesh will have about " << format(cells)
-             << " cells and " << format(dofs) << " DoFs (Q" << degree << "), which need about "
+    estimate << refinement_keys() << ": the mesh will have about " << format(cells) << " cells and "
+             << format(dofs) << " DoFs (Q" << degree << "), which need about "
              << format_bytes(bytes) << " of memory (about 4 kB per DoF, measured), ";
     AssertThrow(bytes <= available.bytes,
                 ExcMessage(estimate.str() + "more than the " + format_bytes(available.bytes) +
@@ -231,8 +235,8 @@ namespace contact_fem
     AvailableMemory available;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       available = available_memory();
-    available.bytes  = Utilities::MPI::broadcast(comm, available.bytes, 0);
-    available.source = Utilities::MPI::broadcast(comm, available.source, 0);
+    available.bytes     = Utilities::MPI::broadcast(comm, available.bytes, 0);
+    available.source    = Utilities::MPI::broadcast(comm, available.source, 0);
     available.whole_run = Utilities::MPI::broadcast(comm, available.whole_run, 0);
     if (!(available.bytes > 0.))
       return "";
@@ -240,8 +244,8 @@ namespace contact_fem
     const double       needed    = estimated_memory(new_dofs, processes);
     // What the run may reach: the figure itself when it is the run's whole
     // budget, else what is still free beyond what the finished cycle holds.
-    const double budget =
-      available.whole_run ? available.bytes :
+    const double budget = available.whole_run ?
+                            available.bytes :
                             available.bytes + estimated_memory(old_dofs, processes);
     if (needed <= budget)
       return "";
@@ -250,7 +254,8 @@ namespace contact_fem
            " of memory (about 4 kB per DoF, measured), more than the " + format_bytes(budget) +
            " this run may use (" + available.source +
            "). The adaptive loop stops here, before the memory runs out; the results of "
-           "cycle " + std::to_string(cycle - 1) +
+           "cycle " +
+           std::to_string(cycle - 1) +
            " are kept. Allow fewer cells (Refinement/Maximum cells) or more memory.";
   }
 

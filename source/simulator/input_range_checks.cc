@@ -46,7 +46,7 @@ namespace contact_fem
   template <int dim>
   void
   InputChecks<dim>::create_scene_mesh(const Scene<dim>                          &coarse_scene,
-                                          parallel::distributed::Triangulation<dim> &coarse) const
+                                      parallel::distributed::Triangulation<dim> &coarse) const
   {
     try
       {
@@ -61,16 +61,16 @@ namespace contact_fem
         std::string what = e.what();
         if (what.find("Geometry/") != std::string::npos)
           throw;
-        const auto  info = what.find("Additional information:");
+        const auto info = what.find("Additional information:");
         if (info != std::string::npos)
           what = Utilities::trim(what.substr(info + 23));
         what = what.substr(0, what.find("\n\nStacktrace"));
-        AssertThrow(false,
-                    ExcMessage(geometry_key() + ": building the mesh failed in deal.II ('" +
-                               Utilities::trim(what) +
-                               "'); check the lengths and coordinates (finite, of magnitude "
-                               "at most " + format(largest_input_magnitude) +
-                               ", the parts of the scene of positive size)."));
+        AssertThrow(false, ExcMessage(geometry_key() + ": building the mesh failed in deal.II ('" +
+                                      Utilities::trim(what) +
+                                      "'); check the lengths and coordinates (finite, of magnitude "
+                                      "at most " +
+                                      format(largest_input_magnitude) +
+                                      ", the parts of the scene of positive size)."));
       }
   }
 
@@ -78,8 +78,8 @@ namespace contact_fem
   void
   InputChecks<dim>::check_value_ranges(const Triangulation<dim> &coarse) const
   {
-    const std::string key = geometry_key();
-    double extent = 0.;
+    const std::string key    = geometry_key();
+    double            extent = 0.;
     {
       const auto box = GridTools::compute_bounding_box(coarse).get_boundary_points();
       for (unsigned int d = 0; d < dim; ++d)
@@ -100,13 +100,12 @@ namespace contact_fem
     for (const auto &[id, constants] : materials.bodies)
       AssertThrow(constants.youngs_modulus * area <= largest_input_magnitude,
                   ExcMessage("Materials/Young's moduli: body " +
-                             std::to_string(static_cast<unsigned int>(id)) + " has E = " +
-                             format(constants.youngs_modulus) + ", and over the model size " +
-                             format(extent) + " it carries forces of E L^" +
-                             std::to_string(dim - 1) + " = " +
-                             format(constants.youngs_modulus * area) +
-                             "; expected at most " + format(largest_input_magnitude) + units_hint +
-                             "."));
+                             std::to_string(static_cast<unsigned int>(id)) +
+                             " has E = " + format(constants.youngs_modulus) +
+                             ", and over the model size " + format(extent) +
+                             " it carries forces of E L^" + std::to_string(dim - 1) + " = " +
+                             format(constants.youngs_modulus * area) + "; expected at most " +
+                             format(largest_input_magnitude) + units_hint + "."));
     check_load_path(coarse, area);
   }
 
@@ -129,12 +128,11 @@ namespace contact_fem
               for (const auto v : face->vertex_indices())
                 for (unsigned int c = 0; c < expressions.size(); ++c)
                   {
-                    const double value = function.value(face->vertex(v), c);
+                    const double       value = function.value(face->vertex(v), c);
                     std::ostringstream where;
                     where << key << ": '" << expressions[c] << "' on boundary "
                           << static_cast<unsigned int>(id) << " is "
-                          << (std::isnan(value) ? std::string("not a number") :
-                                                  format(value))
+                          << (std::isnan(value) ? std::string("not a number") : format(value))
                           << " at t = " << time << " at the point "
                           << coordinates_text(face->vertex(v));
                     AssertThrow(std::isfinite(value),
@@ -143,11 +141,11 @@ namespace contact_fem
                                            "time of the load path (t from 0 to Load "
                                            "stepping/End time)."));
                     AssertThrow(!force || std::abs(value) * area <= largest_input_magnitude,
-                                ExcMessage(where.str() + ", which over the model's size "
+                                ExcMessage(where.str() +
+                                           ", which over the model's size "
                                            "gives forces of " +
-                                           format(std::abs(value) * area) +
-                                           "; expected at most " + format(largest_input_magnitude) +
-                                           units_hint + "."));
+                                           format(std::abs(value) * area) + "; expected at most " +
+                                           format(largest_input_magnitude) + units_hint + "."));
                   }
         }
     };
@@ -161,11 +159,12 @@ namespace contact_fem
 
   // The class is instantiated in input_checks.cc; here the members
   // defined in this file.
-#define INSTANTIATE(dim)                                                                      \
-  template std::string InputChecks<dim>::geometry_key() const;                                \
-  template void        InputChecks<dim>::create_scene_mesh(                                   \
-    const Scene<dim> &, parallel::distributed::Triangulation<dim> &) const;            \
-  template void InputChecks<dim>::check_value_ranges(const Triangulation<dim> &) const; \
+#define INSTANTIATE(dim)                                                                                \
+  template std::string InputChecks<dim>::geometry_key() const;                                          \
+  template void        InputChecks<dim>::create_scene_mesh(const Scene<dim> &,                          \
+                                                           parallel::distributed::Triangulation<dim> &) \
+    const;                                                                                              \
+  template void InputChecks<dim>::check_value_ranges(const Triangulation<dim> &) const;                 \
   template void InputChecks<dim>::check_load_path(const Triangulation<dim> &, const double) const;
   INSTANTIATE(2)
   INSTANTIATE(3)

@@ -31,8 +31,7 @@ namespace contact_fem
           const auto d = axes.find(c);
           AssertThrow(d != std::string::npos,
                       ExcMessage(key + ": '" + std::string(1, c) +
-                                 "' is not a component; expected letters from '" + axes +
-                                 "'."));
+                                 "' is not a component; expected letters from '" + axes + "'."));
           result.push_back(static_cast<unsigned int>(d));
         }
       AssertThrow(!result.empty(), ExcMessage(key + ": " + what + " lists no components."));
@@ -50,8 +49,7 @@ namespace contact_fem
       for (const char c : text)
         {
           depth += c == '(' ? 1 : c == ')' ? -1 : 0;
-          AssertThrow(depth >= 0,
-                      ExcMessage(key + ": '" + text + "' has a ')' without its '('."));
+          AssertThrow(depth >= 0, ExcMessage(key + ": '" + text + "' has a ')' without its '('."));
           if (c == ',' && depth == 0)
             pieces.emplace_back();
           else
@@ -68,45 +66,34 @@ namespace contact_fem
   BoundaryConditions::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Boundary conditions");
-    prm.declare_entry("Fixed",
-                      "",
-                      Patterns::Anything(),
+    prm.declare_entry("Fixed", "", Patterns::Anything(),
                       "Boundaries whose displacement components are zero, as "
                       "'id: components; ...' with components from x, y, z, e.g. "
-                      "'2: xy; 1: x'." + not_set_help(false),
+                      "'2: xy; 1: x'." +
+                        not_set_help(false),
                       true);
-    prm.declare_entry("Fixed points",
-                      "",
-                      Patterns::Anything(),
+    prm.declare_entry("Fixed points", "", Patterns::Anything(),
                       "Mesh vertices whose displacement components are zero, as "
                       "'material id @ x, y: components; ...', e.g. '1 @ 0, 1: x' "
                       "(the vertex of body 1 at (0, 1)). For rigid-body modes that "
                       "the boundary conditions leave free; the vertex must exist.");
-    prm.declare_entry("Rollers",
-                      "",
-                      Patterns::Anything(),
+    prm.declare_entry("Rollers", "", Patterns::Anything(),
                       "Flat boundaries of any orientation whose displacement normal to "
                       "the boundary is zero (a roller or sliding support on a tilted "
                       "plane, a symmetry plane of a turned model), as 'id; id; ...'. "
                       "Curved or kinked boundaries and boundaries that touch a contact "
                       "surface are refused.");
-    prm.declare_entry("Prescribed displacement",
-                      "",
-                      Patterns::Anything(),
+    prm.declare_entry("Prescribed displacement", "", Patterns::Anything(),
                       "Boundaries with a prescribed displacement component, as "
                       "'id: component = expression; ...' with an expression of x, "
                       "y, (z,) t, e.g. '1: y = -0.01*t'.");
-    prm.declare_entry("Pressure",
-                      "",
-                      Patterns::Anything(),
+    prm.declare_entry("Pressure", "", Patterns::Anything(),
                       "Boundaries loaded by a normal pressure (positive pushes "
                       "into the body), as 'id: expression; ...' with an "
                       "expression of x, y, (z,) t. Units: stress." +
                         not_set_help(false),
                       true);
-    prm.declare_entry("Traction",
-                      "",
-                      Patterns::Anything(),
+    prm.declare_entry("Traction", "", Patterns::Anything(),
                       "Boundaries loaded by a traction vector (force per area, in "
                       "global components, e.g. a tangential load), as 'id: fx, fy; "
                       "...' ('id: fx, fy, fz' in 3D) with expressions of x, y, (z,) "
@@ -126,8 +113,7 @@ namespace contact_fem
     for (const auto &[id, components] : split_key_value_list(prm.get("Fixed"), fixed_key))
       {
         const types::boundary_id b = parse_boundary_id(id, fixed_key);
-        for (const unsigned int d :
-             parse_components(components, axes, fixed_key, "boundary " + id))
+        for (const unsigned int d : parse_components(components, axes, fixed_key, "boundary " + id))
           displacements.push_back({b, d, "0", fixed_key});
       }
     const std::string points_key = "Boundary conditions/Fixed points";
@@ -159,8 +145,7 @@ namespace contact_fem
         rollers.push_back(b);
       }
     const std::string disp_key = "Boundary conditions/Prescribed displacement";
-    for (const auto &[id, rhs] : split_key_value_list(prm.get("Prescribed displacement"),
-                                                      disp_key))
+    for (const auto &[id, rhs] : split_key_value_list(prm.get("Prescribed displacement"), disp_key))
       {
         const types::boundary_id b   = parse_boundary_id(id, disp_key);
         const auto               eq  = rhs.find('=');
@@ -177,8 +162,7 @@ namespace contact_fem
           {b, static_cast<unsigned int>(axes.find(cmp[0])), expression, disp_key});
       }
     const std::string pressure_key = "Boundary conditions/Pressure";
-    for (const auto &[id, expression] :
-         split_key_value_list(prm.get("Pressure"), pressure_key))
+    for (const auto &[id, expression] : split_key_value_list(prm.get("Pressure"), pressure_key))
       {
         check_expression(expression, dim, pressure_key);
         const types::boundary_id b = parse_boundary_id(id, pressure_key);
@@ -189,20 +173,20 @@ namespace contact_fem
       }
     const std::string traction_key = "Boundary conditions/Traction";
     tractions.clear();
-    for (const auto &[id, components] :
-         split_key_value_list(prm.get("Traction"), traction_key))
+    for (const auto &[id, components] : split_key_value_list(prm.get("Traction"), traction_key))
       {
-        const types::boundary_id       b           = parse_boundary_id(id, traction_key);
-        const std::vector<std::string> expressions = split_top_level_commas(components,
-                                                                            traction_key);
+        const types::boundary_id       b = parse_boundary_id(id, traction_key);
+        const std::vector<std::string> expressions =
+          split_top_level_commas(components, traction_key);
         AssertThrow(expressions.size() == dim &&
                       std::none_of(expressions.begin(), expressions.end(),
-                                   [](const std::string &e) { return e.empty(); }),
+                                   [](const std::string &e) {
+                                     return e.empty();
+                                   }),
                     ExcMessage(traction_key + ": entry '" + id + ": " + components +
                                "' is not of the form 'id: " +
                                (dim == 2 ? std::string("fx, fy") : std::string("fx, fy, fz")) +
-                               "' (" + std::to_string(dim) +
-                               " comma-separated expressions of " +
+                               "' (" + std::to_string(dim) + " comma-separated expressions of " +
                                (dim == 2 ? "x, y, t" : "x, y, z, t") + ")."));
         for (const auto &expression : expressions)
           check_expression(expression, dim, traction_key);
@@ -218,8 +202,7 @@ namespace contact_fem
         AssertThrow(displacements[i].boundary_id != displacements[j].boundary_id ||
                       displacements[i].component != displacements[j].component,
                     ExcMessage("Boundary conditions: component " +
-                               std::string(1, axes[displacements[i].component]) +
-                               " of boundary " +
+                               std::string(1, axes[displacements[i].component]) + " of boundary " +
                                std::to_string(displacements[i].boundary_id) +
                                " is prescribed twice."));
   }
@@ -233,14 +216,13 @@ namespace contact_fem
     {
       prm.enter_subsection("Materials");
       std::string text = "Bodies (Materials): ids " + prm.get("Material ids") +
-                         "; Young's moduli " + prm.get("Young's moduli") +
-                         "; Poisson's ratios " + prm.get("Poisson's ratios") + "\n";
+                         "; Young's moduli " + prm.get("Young's moduli") + "; Poisson's ratios " +
+                         prm.get("Poisson's ratios") + "\n";
       prm.leave_subsection();
       std::string conditions;
       prm.enter_subsection("Boundary conditions");
       for (const char *key :
-           {"Fixed", "Fixed points", "Rollers", "Prescribed displacement", "Pressure",
-            "Traction"})
+           {"Fixed", "Fixed points", "Rollers", "Prescribed displacement", "Pressure", "Traction"})
         if (const std::string value = Utilities::trim(prm.get(key)); !value.empty())
           conditions += (conditions.empty() ? "" : " | ") + std::string(key) + " = " + value;
       prm.leave_subsection();
@@ -260,7 +242,8 @@ namespace contact_fem
     std::string from_scene;
     for (const auto &[path, required] : builtin_scene_keys())
       AssertThrow(is_set(prm, path) || !required || type != "mesh file",
-                  ExcMessage(path + ": not set. A scene read from a mesh file (Geometry/"
+                  ExcMessage(path +
+                             ": not set. A scene read from a mesh file (Geometry/"
                              "Type = mesh file) gets no contact pair or material it does "
                              "not ask for: give " +
                              (path == "Contact/Pairs" ?
@@ -278,9 +261,9 @@ namespace contact_fem
           from_scene += (from_scene.empty() ? "" : ", ") + setting.path;
         }
     return effective_input(prm) +
-           (from_scene.empty() ? std::string() :
-                                 "  (not set in the input, the built-in scene's values: " +
-                                   from_scene + ")\n");
+           (from_scene.empty() ?
+              std::string() :
+              "  (not set in the input, the built-in scene's values: " + from_scene + ")\n");
   }
 
   void
@@ -328,8 +311,7 @@ namespace contact_fem
                       "by two symmetry planes through the axis. The Hertz load F "
                       "of the whole sphere is the model's contact force over "
                       "this fraction. Other types: 1.");
-    prm.declare_entry("Reference potential energy", "",
-                      Patterns::Anything(),
+    prm.declare_entry("Reference potential energy", "", Patterns::Anything(),
                       "Total potential energy 1/2 u.K u - f.u of the exact solution, "
                       "if known (e.g. from an overkill or extrapolated run: "
                       "summary.json, cycles[].potential_energy); empty if not. "
@@ -369,7 +351,7 @@ namespace contact_fem
     /// In 3D (@p axis_distance given) the rows also need a column y, and x
     /// is replaced by the distance from the axis.
     std::vector<std::pair<double, double>>
-    read_pressure_profile(const std::string                                &file_name,
+    read_pressure_profile(const std::string                           &file_name,
                           const std::function<double(double, double)> &axis_distance)
     {
       const std::string key = "Analytical solution/Reference pressure profile: ";
@@ -377,16 +359,16 @@ namespace contact_fem
       AssertThrow(in, ExcMessage(key + "cannot open '" + file_name + "'."));
       std::string line;
       AssertThrow(static_cast<bool>(std::getline(in, line)),
-                  ExcMessage(key + "'" + file_name + "' is empty (expected a header line "
+                  ExcMessage(key + "'" + file_name +
+                             "' is empty (expected a header line "
                              "naming the columns x and pressure)."));
       const std::vector<std::string> header = Utilities::split_string_list(line, ',');
-      const auto column = [&](const std::string &name) {
+      const auto                     column = [&](const std::string &name) {
         const auto found = std::find(header.begin(), header.end(), name);
         AssertThrow(found != header.end(),
-                    ExcMessage(key + "'" + file_name + "', line 1: no column '" + name +
-                               "' (expected a header line naming the columns " +
-                               (axis_distance ? "x, y and pressure" : "x and pressure") +
-                               ")."));
+                                        ExcMessage(key + "'" + file_name + "', line 1: no column '" + name +
+                                                   "' (expected a header line naming the columns " +
+                                                   (axis_distance ? "x, y and pressure" : "x and pressure") + ")."));
         return static_cast<std::size_t>(found - header.begin());
       };
       const std::size_t x_column = column("x"), p_column = column("pressure");
@@ -445,11 +427,11 @@ namespace contact_fem
                                        const unsigned int dim)
   {
     prm.enter_subsection("Analytical solution");
-    type              = prm.get("Type");
-    radius            = prm.get_double("Radius");
-    center            = prm.get_double("Center");
-    center_y          = prm.get_double("Center y");
-    symmetry_fraction = prm.get_double("Symmetry fraction");
+    type                        = prm.get("Type");
+    radius                      = prm.get_double("Radius");
+    center                      = prm.get_double("Center");
+    center_y                    = prm.get_double("Center y");
+    symmetry_fraction           = prm.get_double("Symmetry fraction");
     const std::string reference = Utilities::trim(prm.get("Reference potential energy"));
     std::string       profile   = Utilities::trim(prm.get("Reference pressure profile"));
     prm.leave_subsection();
@@ -469,9 +451,8 @@ namespace contact_fem
                            "leave the profile empty."));
     std::ostringstream fraction_text;
     fraction_text << symmetry_fraction;
-    AssertThrow(symmetry_fraction > 0. &&
-                  (symmetry_fraction == 1. || type == "hertz sphere" ||
-                   (dim == 3 && type == "cattaneo")),
+    AssertThrow(symmetry_fraction > 0. && (symmetry_fraction == 1. || type == "hertz sphere" ||
+                                           (dim == 3 && type == "cattaneo")),
                 ExcMessage("Analytical solution/Symmetry fraction: expected a value in "
                            "(0, 1], and 1 unless Type = hertz sphere or (3D) cattaneo (got " +
                            fraction_text.str() + ")."));
@@ -482,7 +463,9 @@ namespace contact_fem
           profile = prm_directory + "/" + profile;
         std::function<double(double, double)> distance;
         if (dim == 3)
-          distance = [this](const double x, const double y) { return axis_distance(x, y); };
+          distance = [this](const double x, const double y) {
+            return axis_distance(x, y);
+          };
         reference_pressure_profile = read_pressure_profile(profile, distance);
       }
     reference_potential_energy = std::numeric_limits<double>::quiet_NaN();
@@ -492,8 +475,8 @@ namespace contact_fem
         reference_potential_energy = std::strtod(reference.c_str(), &end);
         AssertThrow(end != reference.c_str() && *end == '\0' &&
                       std::isfinite(reference_potential_energy),
-                    ExcMessage("Analytical solution/Reference potential energy: '" +
-                               reference + "' is not a number (leave it empty if unknown)."));
+                    ExcMessage("Analytical solution/Reference potential energy: '" + reference +
+                               "' is not a number (leave it empty if unknown)."));
       }
     AssertThrow(radius > 0., ExcMessage("Analytical solution/Radius: expected > 0."));
     friction_coefficient = std::numeric_limits<double>::quiet_NaN();
@@ -502,7 +485,7 @@ namespace contact_fem
       {
         // mu of the law the run uses: one source, no second key to keep
         // consistent with it. The comparison is of the first pair.
-        const auto laws    = FrictionParameters::parse_laws(prm);
+        const auto laws     = FrictionParameters::parse_laws(prm);
         const bool friction = !laws.empty() && laws.front()->parameter() > 0.;
         AssertThrow(friction,
                     ExcMessage("Analytical solution/Type = cattaneo: needs a Coulomb law "
@@ -525,9 +508,7 @@ namespace contact_fem
   void
   OutputParameters::declare_parameters(ParameterHandler &prm)
   {
-    prm.declare_entry("Output directory",
-                      "results",
-                      Patterns::Anything(),
+    prm.declare_entry("Output directory", "results", Patterns::Anything(),
                       "Directory of every output file of the run (created if "
                       "needed): summary.json, log.txt, pressure profiles, VTU. "
                       "Before any work the run removes the files of an earlier "
@@ -571,13 +552,14 @@ namespace contact_fem
     AssertThrow(!Utilities::trim(directory).empty(),
                 ExcMessage("Output directory: must not be empty."));
     prm.enter_subsection("Output");
-    write_vtu              = prm.get_bool("Write VTU");
-    write_pressure_profile = prm.get_bool("Write pressure profile");
-    print_timing           = prm.get_bool("Print timing");
+    write_vtu               = prm.get_bool("Write VTU");
+    write_pressure_profile  = prm.get_bool("Write pressure profile");
+    print_timing            = prm.get_bool("Print timing");
     print_newton_iterations = prm.get_bool("Print Newton iterations");
     displacement_probes.clear();
     const std::string probes_key = "Output/Displacement probes";
-    for (const std::string &probe : Utilities::split_string_list(prm.get("Displacement probes"), ';'))
+    for (const std::string &probe :
+         Utilities::split_string_list(prm.get("Displacement probes"), ';'))
       if (!Utilities::trim(probe).empty())
         displacement_probes.push_back(parse_body_point(probe, dim, probes_key));
     prm.leave_subsection();
@@ -586,8 +568,7 @@ namespace contact_fem
   ModelRange::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Model range");
-    prm.declare_entry("Accept results outside the small-strain range", "false",
-                      Patterns::Bool(),
+    prm.declare_entry("Accept results outside the small-strain range", "false", Patterns::Bool(),
                       "The bodies are linear elastic with small strains and a "
                       "contact gap linear in the displacement. A converged state "
                       "whose largest principal strain exceeds 0.05, whose largest "

@@ -33,14 +33,12 @@ namespace contact_fem
     // The configuration the operators are built on: zero with small
     // kinematics, the step's start with updated.
     const std::vector<double> search_configuration =
-      parameters.updated_kinematics ? displacement :
-                                      std::vector<double>(displacement.size(), 0.);
+      parameters.updated_kinematics ? displacement : std::vector<double>(displacement.size(), 0.);
     // The step moves the surfaces at least as far as the prescribed
     // displacements change, and about as far as the last step did per unit
     // of load; with small kinematics the operators must also reach as far as
     // the surfaces have moved from the reference configuration.
-    const std::vector<double> moved =
-      interface.relative_motion(search_configuration, displacement);
+    const std::vector<double> moved = interface.relative_motion(search_configuration, displacement);
     motion_allowance.assign(interface.pairs.size(), 0.);
     for (unsigned int p = 0; p < motion_allowance.size(); ++p)
       {
@@ -104,9 +102,8 @@ namespace contact_fem
                             const unsigned int         pair,
                             const double               depth)
   {
-    const double motion = interface.motion_since_search(displacement)[pair];
-    motion_allowance[pair] =
-      std::max(2. * motion_allowance[pair], search_growth * motion) + depth;
+    const double motion    = interface.motion_since_search(displacement)[pair];
+    motion_allowance[pair] = std::max(2. * motion_allowance[pair], search_growth * motion) + depth;
     pcout << "    a slave node penetrates the master where no master face is paired with "
              "it: ";
     search_again(displacement);
@@ -140,15 +137,12 @@ namespace contact_fem
     // theta < max_sliding_angle.
     const auto allowed_at = [&](const typename ContactInterface<dim>::SlaveNode &s) {
       return s.paired ? std::max(0., -interface.nodal_gap(s, displacement)) +
-                          max_sliding_angle *
-                            interface.slip_since_search(s, displacement) :
+                          max_sliding_angle * interface.slip_since_search(s, displacement) :
                         0.;
     };
     PenetrationCheck check;
     const auto       consider = [&](const typename ContactInterface<dim>::SlaveNode &s,
-                              const double distance,
-                              const double allowed,
-                              const bool   hanging) {
+                              const double distance, const double allowed, const bool hanging) {
       const double penetration = std::max(0., -distance);
       if ((penetration - allowed) / s.size > check.excess)
         {
@@ -159,21 +153,19 @@ namespace contact_fem
           check.allowed     = allowed;
         }
     };
-    const auto &slave_nodes = interface.slave_nodes;
+    const auto                    &slave_nodes = interface.slave_nodes;
     std::map<unsigned int, double> allowed_of_node;
-    const std::vector<double> distance =
-      interface.surface_distances(slave_nodes, displacement);
+    const std::vector<double> distance = interface.surface_distances(slave_nodes, displacement);
     for (unsigned int i = 0; i < slave_nodes.size(); ++i)
       {
-        const double allowed = allowed_at(slave_nodes[i]);
+        const double allowed                 = allowed_at(slave_nodes[i]);
         allowed_of_node[slave_nodes[i].node] = allowed;
         consider(slave_nodes[i], distance[i], allowed, false);
       }
     // A hanging vertex moves with its parents: it may lie inside by what
     // their gaps allow, in proportion to its weights.
-    const auto &hanging = interface.hanging_slave_vertices;
-    const std::vector<double> hanging_distance =
-      interface.surface_distances(hanging, displacement);
+    const auto               &hanging          = interface.hanging_slave_vertices;
+    const std::vector<double> hanging_distance = interface.surface_distances(hanging, displacement);
     for (unsigned int i = 0; i < hanging.size(); ++i)
       {
         double allowed = 0.;
@@ -187,13 +179,13 @@ namespace contact_fem
   template <int dim>
   NewtonFailure
   SearchControl<dim>::penetration_failure(const PenetrationCheck &check,
-                                           const unsigned int      step,
-                                           const double            time) const
+                                          const unsigned int      step,
+                                          const double            time) const
   {
-    const auto        &s = check.node;
-    const std::string configuration = parameters.updated_kinematics ?
-                                        "configuration of the step's start" :
-                                        "reference configuration";
+    const auto        &s             = check.node;
+    const std::string  configuration = parameters.updated_kinematics ?
+                                         "configuration of the step's start" :
+                                         "reference configuration";
     std::ostringstream message;
     message << "load step " << step + 1 << " (t = " << time
             << "): the converged solution is not a contact solution. The "
@@ -201,8 +193,9 @@ namespace contact_fem
             << interface.nodes[s.node].reference << ") penetrates the master surface by "
             << scientific(check.penetration, 3) << " (h = " << scientific(s.size, 3) << "), ";
     if (s.paired)
-      message << (check.hanging ? "of which its parents' mortar gaps and their linearisation allow " :
-                                  "of which its mortar gap and its linearisation allow ")
+      message << (check.hanging ?
+                    "of which its parents' mortar gaps and their linearisation allow " :
+                    "of which its mortar gap and its linearisation allow ")
               << scientific(check.allowed, 3)
               << ": the surfaces slid or turned farther than the operators built on the "
               << configuration << " can follow";
@@ -210,8 +203,7 @@ namespace contact_fem
       message << "and no master face is paired with it, also after a wider search (its "
                  "normal does not meet the master surface in the "
               << configuration << ")";
-    message << " (Contact/Penetration tolerance = " << parameters.penetration_tolerance
-            << " h).";
+    message << " (Contact/Penetration tolerance = " << parameters.penetration_tolerance << " h).";
     if (!parameters.updated_kinematics)
       message << " This motion is beyond small sliding, so smaller load steps cannot help: "
                  "use Contact/Kinematics = updated with enough load steps.";

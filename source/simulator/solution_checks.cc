@@ -55,7 +55,8 @@ namespace contact_fem
             }
     double size = 0.;
     for (unsigned int d = 0; d < dim; ++d)
-      size = std::max(size, Utilities::MPI::max(high[d], comm) + Utilities::MPI::max(-low[d], comm));
+      size =
+        std::max(size, Utilities::MPI::max(high[d], comm) + Utilities::MPI::max(-low[d], comm));
     const double u_max = system.solution.linfty_norm();
     if (!(u_max > ModelRange::displacement_limit * size))
       return "";
@@ -106,8 +107,8 @@ namespace contact_fem
     std::ostringstream text;
     text << "the solution leaves the small-strain range (largest principal strain "
          << scientific(strain, 2) << ", largest rotation " << scientific(rotation, 2)
-         << " rad; linear elasticity and the contact gap assume below " << strain_limit
-         << " and " << rotation_limit << "): the load is beyond what this model describes";
+         << " rad; linear elasticity and the contact gap assume below " << strain_limit << " and "
+         << rotation_limit << "): the load is beyond what this model describes";
     return text.str();
   }
 
@@ -121,8 +122,8 @@ namespace contact_fem
     const FiniteElement<dim>            &fe = system.dof_handler.get_fe();
     const QGauss<dim>                    quadrature(fe.degree + 1);
     FEValues<dim>                        fe_values(system.mapping, fe, quadrature,
-                                update_values | update_gradients | update_quadrature_points |
-                                  update_JxW_values);
+                                                   update_values | update_gradients | update_quadrature_points |
+                                                     update_JxW_values);
     const FEValuesExtractors::Vector     displacement(0);
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     Vector<double>                       cell_load(fe.n_dofs_per_cell());
@@ -197,9 +198,8 @@ namespace contact_fem
 
   template <int dim>
   std::vector<bool>
-  SolutionChecks<dim>::supporting_dofs(
-    const typename DoFHandler<dim>::active_cell_iterator &cell,
-    const std::vector<types::global_dof_index>           &dofs) const
+  SolutionChecks<dim>::supporting_dofs(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                                       const std::vector<types::global_dof_index> &dofs) const
   {
     const FiniteElement<dim> &fe = system.dof_handler.get_fe();
     std::vector<bool>         fixed(dofs.size());
@@ -272,7 +272,7 @@ namespace contact_fem
   {
     const QGauss<dim> quadrature(system.dof_handler.get_fe().degree + 1);
     FEValues<dim>     fe_values(system.mapping, system.dof_handler.get_fe(), quadrature,
-                            update_quadrature_points | update_JxW_values);
+                                update_quadrature_points | update_JxW_values);
     double            volume = 0.;
     Tensor<1, dim>    first_moment, second_moments; // int x_i, int x_i^2
     for (const auto &cell : system.dof_handler.active_cell_iterators())
@@ -302,7 +302,7 @@ namespace contact_fem
   template <int dim>
   typename SolutionChecks<dim>::HeldRotation
   SolutionChecks<dim>::weakly_held_rotation(const std::vector<types::material_id> &bodies,
-                                            const double                 softest_shear_modulus,
+                                            const double softest_shear_modulus,
                                             const std::set<types::boundary_id> &contact_surfaces,
                                             LinearSolver                       &solver) const
   {
@@ -387,17 +387,16 @@ namespace contact_fem
             (lever_arms[axis] >= held_lever_arm ? held : unprobed).push(name);
             continue;
           }
-        const double compliance =
-          rotation_under_couple(body, moments, axis, solver) * softest_shear_modulus *
-          moments.volume;
+        const double compliance = rotation_under_couple(body, moments, axis, solver) *
+                                  softest_shear_modulus * moments.volume;
         probed.push(name);
         compliances.set(name, compliance);
         if (!(compliance > compliance_limit))
           continue;
         std::ostringstream text;
         text << "body " << static_cast<unsigned int>(body)
-             << " is held only weakly against rotation: a couple turns it "
-             << std::setprecision(3) << compliance << std::setprecision(6)
+             << " is held only weakly against rotation: a couple turns it " << std::setprecision(3)
+             << compliance << std::setprecision(6)
              << " times more than elasticity would (theta G V, G the smallest shear "
              << "modulus); frictionless contact on a curved surface resists a rotation "
              << "about its centre only through the discretisation, so the results along "

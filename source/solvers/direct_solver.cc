@@ -107,8 +107,9 @@ namespace contact_fem
     global_info(Amesos_Mumps &mumps, const MPI_Comm comm)
     {
       const int *infog = mumps.GetINFOG();
-      return dealii::Utilities::MPI::broadcast(comm, std::array<int, 3>{{infog[0], infog[1], infog[27]}},
-                                       0);
+      return dealii::Utilities::MPI::broadcast(comm,
+                                               std::array<int, 3>{{infog[0], infog[1], infog[27]}},
+                                               0);
     }
   } // namespace
 
@@ -136,9 +137,8 @@ namespace contact_fem
     problem->SetOperator(const_cast<Epetra_CrsMatrix *>(&matrix.trilinos_matrix()));
     Amesos factory;
     solver.reset(factory.Create(amesos_name.c_str(), *problem));
-    AssertThrow(solver != nullptr,
-                ExcMessage("the direct solver " + amesos_name +
-                           " is not available in this Trilinos build"));
+    AssertThrow(solver != nullptr, ExcMessage("the direct solver " + amesos_name +
+                                              " is not available in this Trilinos build"));
     if (auto *mumps = dynamic_cast<Amesos_Mumps *>(solver.get()))
       {
         mumps->SetICNTL(7, 5); // METIS ordering
@@ -156,8 +156,7 @@ namespace contact_fem
       }
     QuietCerr quiet;
     if (solver->SymbolicFactorization() != 0)
-      throw LinearSolverFailure("the symbolic factorisation of " + amesos_name + " failed",
-                                false);
+      throw LinearSolverFailure("the symbolic factorisation of " + amesos_name + " failed", false);
     factorised_matrix   = &matrix.trilinos_matrix();
     factorised_nonzeros = matrix.n_nonzero_elements();
   }
@@ -184,15 +183,14 @@ namespace contact_fem
                                     true);
         handle_mumps_failure(matrix);
       }
-    null_pivots =
-      mumps ? std::max(global_info(*mumps, matrix.get_mpi_communicator())[2], 0) : 0;
+    null_pivots = mumps ? std::max(global_info(*mumps, matrix.get_mpi_communicator())[2], 0) : 0;
   }
 
   void
   DirectSolver::handle_mumps_failure(const TrilinosWrappers::SparseMatrix &matrix)
   {
-    auto        &mumps = dynamic_cast<Amesos_Mumps &>(*solver);
-    const MPI_Comm comm = matrix.get_mpi_communicator();
+    auto              &mumps = dynamic_cast<Amesos_Mumps &>(*solver);
+    const MPI_Comm     comm  = matrix.get_mpi_communicator();
     std::array<int, 3> info  = global_info(mumps, comm);
     const bool         retry = is_workspace_error(info[0]) && workspace_percent == 0;
     if (retry)
@@ -256,18 +254,17 @@ namespace contact_fem
 
   double
   DirectSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
-                      TrilinosWrappers::MPI::Vector       &x,
-                      const TrilinosWrappers::MPI::Vector &rhs,
+                      TrilinosWrappers::MPI::Vector        &x,
+                      const TrilinosWrappers::MPI::Vector  &rhs,
                       const LinearSystemRequest & /*request*/)
   {
     factorise(matrix);
     solve_with_last_factors(x, rhs);
 
     TrilinosWrappers::MPI::Vector check(rhs), correction(rhs);
-    double residual = matrix.residual(check, x, rhs);
-    const double target = 1e-12 * rhs.l2_norm();
-    for (unsigned int step = 0; step < 3 && std::isfinite(residual) && residual > target;
-         ++step)
+    double                        residual = matrix.residual(check, x, rhs);
+    const double                  target   = 1e-12 * rhs.l2_norm();
+    for (unsigned int step = 0; step < 3 && std::isfinite(residual) && residual > target; ++step)
       {
         solve_with_last_factors(correction, check);
         TrilinosWrappers::MPI::Vector refined = x;

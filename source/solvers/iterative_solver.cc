@@ -54,8 +54,8 @@ namespace contact_fem
   IterativeSolver::build_preconditioner(const TrilinosWrappers::SparseMatrix &matrix)
   {
     Timer timer;
-    AssertThrow(n_modes > 0 && null_space.size() ==
-                                 n_modes * static_cast<std::size_t>(matrix.local_size()),
+    AssertThrow(n_modes > 0 &&
+                  null_space.size() == n_modes * static_cast<std::size_t>(matrix.local_size()),
                 ExcMessage("the iterative solver has no near-null space for this mesh"));
     Teuchos::ParameterList list;
     ML_Epetra::SetDefaults("SA", list);
@@ -77,10 +77,10 @@ namespace contact_fem
 
   unsigned int
   IterativeSolver::iterate(const TrilinosWrappers::SparseMatrix &matrix,
-                           TrilinosWrappers::MPI::Vector       &x,
-                           const TrilinosWrappers::MPI::Vector &rhs,
-                           const bool                           symmetric,
-                           const double                         target)
+                           TrilinosWrappers::MPI::Vector        &x,
+                           const TrilinosWrappers::MPI::Vector  &rhs,
+                           const bool                            symmetric,
+                           const double                          target)
   {
     SolverControl control(parameters.max_iterations, target, false, false);
     try
@@ -95,8 +95,7 @@ namespace contact_fem
             // Right preconditioning: the residual GMRES watches is the
             // residual of the system itself, which the target is about.
             SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
-              control,
-              SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(100, true));
+              control, SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(100, true));
             gmres.solve(matrix, x, rhs, *preconditioner);
           }
       }
@@ -105,14 +104,13 @@ namespace contact_fem
         const std::string limit = multigrid_limit_exceeded(traits);
         throw LinearSolverFailure(
           std::string(symmetric ? "CG" : "GMRES") +
-            " with algebraic multigrid did not reach its target residual " +
-            scientific(target) + " in " + std::to_string(e.last_step) +
+            " with algebraic multigrid did not reach its target residual " + scientific(target) +
+            " in " + std::to_string(e.last_step) +
             " iterations (Linear solver/Maximum iterations; reached " +
             scientific(e.last_residual) + ").\n    " +
             (limit.empty() ? "None of the multigrid's measured limits (doc/stability.md) "
                              "applies to this scene" :
-                             "The scene is beyond a measured limit of the multigrid: " +
-                               limit) +
+                             "The scene is beyond a measured limit of the multigrid: " + limit) +
             "; set Linear solver/Type = direct, or raise the iteration limit",
           false);
       }
@@ -121,9 +119,9 @@ namespace contact_fem
 
   double
   IterativeSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
-                         TrilinosWrappers::MPI::Vector       &x,
-                         const TrilinosWrappers::MPI::Vector &rhs,
-                         const LinearSystemRequest           &request)
+                         TrilinosWrappers::MPI::Vector        &x,
+                         const TrilinosWrappers::MPI::Vector  &rhs,
+                         const LinearSystemRequest            &request)
   {
     // Rebuilt for every solve. Measured on prm/hertz.prm at 292k DoFs:
     // keeping the multigrid of the step's first iteration doubled the
@@ -135,9 +133,9 @@ namespace contact_fem
     last_symmetric = request.symmetric;
     // Without a target (a caller that wants the exact answer), and never
     // below it: the accuracy an iteration in double precision can reach.
-    const double floor  = 1e-12 * rhs.l2_norm();
-    const double target = std::max(floor, parameters.tolerance_factor *
-                                            request.newton_residual_target);
+    const double floor = 1e-12 * rhs.l2_norm();
+    const double target =
+      std::max(floor, parameters.tolerance_factor * request.newton_residual_target);
     iterations = iterate(matrix, x, rhs, request.symmetric, target);
     TrilinosWrappers::MPI::Vector check(rhs);
     return matrix.residual(check, x, rhs);

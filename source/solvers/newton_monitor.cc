@@ -34,7 +34,8 @@ namespace contact_fem
     {
       std::ostringstream s;
       if (value <= tolerance)
-        s << std::setw(11) << "-" << " | " << std::setw(9) << ("< " + scientific(tolerance, 0));
+        s << std::setw(11) << "-"
+          << " | " << std::setw(9) << ("< " + scientific(tolerance, 0));
       else if (ratio < round_off_ratio)
         s << std::setw(11) << ("< " + scientific(round_off_ratio, 0)) << " | " << std::setw(9)
           << "round-off";
@@ -139,8 +140,7 @@ namespace contact_fem
     return "(last: |r_u| " +
            residual_text(last_u, parameters.displacement_absolute_tolerance, reference_u) +
            ", |r_lambda| " +
-           residual_text(last_lambda, parameters.multiplier_absolute_tolerance,
-                         reference_lambda) +
+           residual_text(last_lambda, parameters.multiplier_absolute_tolerance, reference_lambda) +
            ", " + std::to_string(last_changes) + " active-set changes)";
   }
 } // namespace contact_fem

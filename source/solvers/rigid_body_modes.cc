@@ -15,7 +15,7 @@ namespace contact_fem
   std::vector<std::vector<double>>
   rigid_body_modes(const Mapping<dim> &mapping, const DoFHandler<dim> &dof_handler)
   {
-    const IndexSet &owned = dof_handler.locally_owned_dofs();
+    const IndexSet                               &owned = dof_handler.locally_owned_dofs();
     std::map<types::global_dof_index, Point<dim>> points;
     DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
     std::vector<IndexSet> component_dofs;
@@ -32,17 +32,17 @@ namespace contact_fem
     if (owned.n_elements() > 0)
       centre /= owned.n_elements();
 
-    const unsigned int n_rotations = dim == 2 ? 1 : 3;
+    const unsigned int               n_rotations = dim == 2 ? 1 : 3;
     std::vector<std::vector<double>> modes(dim + n_rotations,
                                            std::vector<double>(owned.n_elements(), 0.));
-    unsigned int k = 0;
+    unsigned int                     k = 0;
     for (const auto i : owned)
       {
         unsigned int d = 0;
         while (!component_dofs[d].is_element(i))
           ++d;
         const Tensor<1, dim> x = points.at(i) - centre;
-        modes[d][k] = 1.;
+        modes[d][k]            = 1.;
         for (unsigned int r = 0; r < n_rotations; ++r)
           modes[dim + r][k] = rotation_displacement<dim>(r, d, x);
         ++k;
@@ -94,8 +94,10 @@ namespace contact_fem
         // N_oo m = -N_or, N_oo the normal matrix of the others. Directions
         // that no fixed DoF sees (singular values below 1e-12 of the
         // largest: round-off) are left out; they move nothing.
-        const unsigned int       k    = dim + r;
-        const auto               skip = [k](const unsigned int i) { return i < k ? i : i + 1; };
+        const unsigned int k    = dim + r;
+        const auto         skip = [k](const unsigned int i) {
+          return i < k ? i : i + 1;
+        };
         LAPACKFullMatrix<double> others(n - 1, n - 1);
         Vector<double>           coupling(n - 1), rest(n - 1);
         for (unsigned int i = 0; i + 1 < n; ++i)
@@ -111,8 +113,7 @@ namespace contact_fem
         for (unsigned int i = 0; i + 1 < n; ++i)
           motion[skip(i)] = rest[i];
         for (const auto &dof : fixed)
-          lever_arms[r] =
-            std::max(lever_arms[r], std::abs(motion_row(dof, centre, size) * motion));
+          lever_arms[r] = std::max(lever_arms[r], std::abs(motion_row(dof, centre, size) * motion));
       }
     // A maximum is exact: every rank gets the same values.
     Utilities::MPI::max(lever_arms, comm, lever_arms);
@@ -124,9 +125,13 @@ namespace contact_fem
   template std::vector<std::vector<double>>
   rigid_body_modes(const Mapping<3> &, const DoFHandler<3> &);
   template std::vector<double>
-  support_lever_arms(const std::vector<FixedDof<2>> &, const Point<2> &, const double,
+  support_lever_arms(const std::vector<FixedDof<2>> &,
+                     const Point<2> &,
+                     const double,
                      const MPI_Comm);
   template std::vector<double>
-  support_lever_arms(const std::vector<FixedDof<3>> &, const Point<3> &, const double,
+  support_lever_arms(const std::vector<FixedDof<3>> &,
+                     const Point<3> &,
+                     const double,
                      const MPI_Comm);
 } // namespace contact_fem

@@ -83,12 +83,15 @@ namespace contact_fem
     // tolerance of 0 makes such steps fail after their iterations, and
     // step splits do not help.
     const auto check_absolute = [](const double tolerance, const std::string &name) {
-      AssertThrow(tolerance > 0.,
-                  ExcMessage("Newton/" + name + " absolute tolerance is 0; expected a value > 0 (default 1e-9): a residual computed in "
-                             "double precision stalls at round-off and never reaches 0, and "
-                             "where it starts at round-off the relative test cannot pass "
-                             "either, so such a load step could not converge. To rely on "
-                             "the relative test, set it far below the residuals (e.g. 1e-30)."));
+      AssertThrow(
+        tolerance > 0.,
+        ExcMessage(
+          "Newton/" + name +
+          " absolute tolerance is 0; expected a value > 0 (default 1e-9): a residual computed in "
+          "double precision stalls at round-off and never reaches 0, and "
+          "where it starts at round-off the relative test cannot pass "
+          "either, so such a load step could not converge. To rely on "
+          "the relative test, set it far below the residuals (e.g. 1e-30)."));
     };
     check_absolute(displacement_absolute_tolerance, "Displacement");
     check_absolute(multiplier_absolute_tolerance, "Multiplier");

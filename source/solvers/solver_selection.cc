@@ -20,8 +20,7 @@ namespace contact_fem
     class AutomaticSolver : public LinearSolver
     {
     public:
-      AutomaticSolver(std::unique_ptr<DirectSolver>    direct,
-                      std::unique_ptr<IterativeSolver> krylov)
+      AutomaticSolver(std::unique_ptr<DirectSolver> direct, std::unique_ptr<IterativeSolver> krylov)
         : direct(std::move(direct))
         , krylov(std::move(krylov))
         , current(this->direct.get())
@@ -39,9 +38,9 @@ namespace contact_fem
       {
         LinearSolver *const before = current;
         selected_dofs              = n_dofs;
-        reason = iterative_reason(n_dofs);
-        current = reason.empty() ? static_cast<LinearSolver *>(direct.get()) :
-                                   static_cast<LinearSolver *>(krylov.get());
+        reason                     = iterative_reason(n_dofs);
+        current                    = reason.empty() ? static_cast<LinearSolver *>(direct.get()) :
+                                                      static_cast<LinearSolver *>(krylov.get());
         if (current != before)
           before->clear();
         return current->select(n_dofs);
@@ -73,9 +72,9 @@ namespace contact_fem
 
       double
       solve(const TrilinosWrappers::SparseMatrix &matrix,
-            TrilinosWrappers::MPI::Vector       &x,
-            const TrilinosWrappers::MPI::Vector &rhs,
-            const LinearSystemRequest           &request) override
+            TrilinosWrappers::MPI::Vector        &x,
+            const TrilinosWrappers::MPI::Vector  &rhs,
+            const LinearSystemRequest            &request) override
       {
         if (current != krylov.get())
           return current->solve(matrix, x, rhs, request);
@@ -98,8 +97,8 @@ namespace contact_fem
             reason.clear();
             // Its first line: the second one advises what auto now does.
             const std::string what = e.what();
-            fallback_note          = what.substr(0, what.find('\n')) +
-                            " The direct solver takes over for this mesh";
+            fallback_note =
+              what.substr(0, what.find('\n')) + " The direct solver takes over for this mesh";
             direct->select(selected_dofs);
             return direct->solve(matrix, x, rhs, request);
           }
@@ -170,20 +169,18 @@ namespace contact_fem
       std::string
       iterative_reason(const types::global_dof_index n_dofs)
       {
-        const types::global_dof_index crossover =
-          traits.dim == 2 ? crossover_2d : crossover_3d;
+        const types::global_dof_index crossover = traits.dim == 2 ? crossover_2d : crossover_3d;
         if (n_dofs < crossover)
           {
-            why_direct = std::to_string(n_dofs) + " DoFs, below the " +
-                         std::to_string(traits.dim) + "D crossover " +
-                         std::to_string(crossover);
+            why_direct = std::to_string(n_dofs) + " DoFs, below the " + std::to_string(traits.dim) +
+                         "D crossover " + std::to_string(crossover);
             return "";
           }
         why_direct = multigrid_limit_exceeded(traits);
         if (!why_direct.empty())
           return "";
-        return std::to_string(n_dofs) + " DoFs, at or above the " +
-               std::to_string(traits.dim) + "D crossover " + std::to_string(crossover);
+        return std::to_string(n_dofs) + " DoFs, at or above the " + std::to_string(traits.dim) +
+               "D crossover " + std::to_string(crossover);
       }
 
       // Measured on this machine (bench/solver_crossover.py,
@@ -294,8 +291,8 @@ namespace contact_fem
   LinearSolver::create(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    const std::string type = prm.get("Type");
-    const std::string name = prm.get("Direct solver");
+    const std::string           type = prm.get("Type");
+    const std::string           name = prm.get("Direct solver");
     IterativeSolver::Parameters parameters;
     parameters.max_iterations        = prm.get_integer("Maximum iterations");
     parameters.tolerance_factor      = prm.get_double("Tolerance factor");

@@ -33,12 +33,17 @@ main()
     }
   std::cout << std::setprecision(4) << "int p = " << P << ", int q = " << Q << std::endl;
   const double e = 1e-9 * exact.a;
-  std::cout << "q jump at c: " << std::abs(exact.tangential(exact.c - e) - exact.tangential(exact.c + e))
-            << " (< 1e-3: " << (std::abs(exact.tangential(exact.c - e) - exact.tangential(exact.c + e)) < 1e-3 ? "yes" : "no")
+  std::cout << "q jump at c: "
+            << std::abs(exact.tangential(exact.c - e) - exact.tangential(exact.c + e))
+            << " (< 1e-3: "
+            << (std::abs(exact.tangential(exact.c - e) - exact.tangential(exact.c + e)) < 1e-3 ?
+                  "yes" :
+                  "no")
             << ")" << std::endl;
   const double x_slip = 0.5 * (exact.c + exact.a);
   std::cout << "q = mu p in the slip zone: "
-            << (std::abs(exact.tangential(x_slip) - 0.2 * exact.pressure(x_slip)) < 1e-12 ? "yes" : "no")
+            << (std::abs(exact.tangential(x_slip) - 0.2 * exact.pressure(x_slip)) < 1e-12 ? "yes" :
+                                                                                            "no")
             << std::endl;
 
   // 41 nodes on [-1, 1], spacing 0.05: the exact traction (negative: on the
@@ -56,8 +61,8 @@ main()
     }
   const CattaneoComparison c = compare_with_cattaneo(nodes, exact);
   std::cout << std::setprecision(4) << "stick / slip nodes: " << c.n_stick << " / " << c.n_slip
-            << ", c_h = " << c.c_h << ", c = " << exact.c << ", |c_h - c| / h = "
-            << c.c_error_in_slave_elements << ", L2 error = " << c.tangential_l2_relative_error
-            << std::endl;
+            << ", c_h = " << c.c_h << ", c = " << exact.c
+            << ", |c_h - c| / h = " << c.c_error_in_slave_elements
+            << ", L2 error = " << c.tangential_l2_relative_error << std::endl;
   std::cout << cattaneo_report(to_json(c));
 }

@@ -29,7 +29,7 @@ main()
     {
       const CattaneoSolution exact(P, ratio * mu * P, mu, R, E_star, CattaneoProblem::spheres);
       // Midpoint rule in r on [0, a] with 2 pi r dr.
-      const unsigned int n = 100000;
+      const unsigned int n     = 100000;
       double             p_int = 0., q_int = 0.;
       for (unsigned int i = 0; i < n; ++i)
         {
@@ -39,10 +39,10 @@ main()
         }
       const double e = 1e-9 * exact.a, r_slip = 0.5 * (exact.c + exact.a);
       std::cout << "Q/(mu P) = " << ratio << ": a = " << exact.a << ", p0 = " << exact.p_max
-                << ", c/a = " << exact.c / exact.a << " (cbrt(1 - Q/(mu P)) = "
-                << std::cbrt(1. - ratio) << "), int p / P = " << std::setprecision(5)
-                << p_int / P << ", int q / Q = " << q_int / (ratio * mu * P)
-                << ", q continuous at c: "
+                << ", c/a = " << exact.c / exact.a
+                << " (cbrt(1 - Q/(mu P)) = " << std::cbrt(1. - ratio)
+                << "), int p / P = " << std::setprecision(5) << p_int / P
+                << ", int q / Q = " << q_int / (ratio * mu * P) << ", q continuous at c: "
                 << (std::abs(exact.tangential(exact.c - e) - exact.tangential(exact.c + e)) <
                         1e-3 * mu * exact.p_max ?
                       "yes" :

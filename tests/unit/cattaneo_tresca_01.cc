@@ -35,7 +35,11 @@ namespace
   {
     const double a  = exact.a;
     const double qx = exact.tangential(x);
-    return integral([&](const double s) { return (exact.tangential(s) - qx) / (x - s); }, a) +
+    return integral(
+             [&](const double s) {
+               return (exact.tangential(s) - qx) / (x - s);
+             },
+             a) +
            qx * std::log((a + x) / (a - x));
   }
 } // namespace
@@ -48,26 +52,33 @@ main()
   std::cout << std::setprecision(6) << "a = " << exact.a << ", c/a = " << exact.c / exact.a
             << ", Q/(2 a g) = " << exact.Q / exact.capacity() << ", largest bound "
             << exact.largest_bound() << std::endl;
-  std::cout << std::setprecision(4)
-            << "int q = " << integral([&](const double x) { return exact.tangential(x); }, exact.a)
+  std::cout << std::setprecision(4) << "int q = "
+            << integral(
+                 [&](const double x) {
+                   return exact.tangential(x);
+                 },
+                 exact.a)
             << std::endl;
   const double e = 1e-9 * exact.a;
   std::cout << "q at c-, c+: " << exact.tangential(exact.c - e) << ", "
-            << exact.tangential(exact.c + e)
-            << "; q(0) = " << exact.tangential(0.)
+            << exact.tangential(exact.c + e) << "; q(0) = " << exact.tangential(0.)
             << "; q in the slip zone: " << exact.tangential(0.5 * (exact.c + exact.a)) << std::endl;
   for (const double f : {0.3, 0.7})
     std::cout << "strain at x = " << f << " c (stick): "
               << (std::abs(strain(exact, f * exact.c)) < 1e-6 ? "0 (< 1e-6)" : "not 0")
               << std::endl;
-  std::cout << std::setprecision(4) << "strain at the middle of the slip zone: "
-            << strain(exact, 0.5 * (exact.c + exact.a)) << std::endl;
+  std::cout << std::setprecision(4)
+            << "strain at the middle of the slip zone: " << strain(exact, 0.5 * (exact.c + exact.a))
+            << std::endl;
 
-  const CattaneoSolution unloaded(10., 0., 1.2256, 1., 4., E_star, CattaneoProblem::cylinders_tresca);
-  std::cout << "unloaded to 0: b/a = " << unloaded.c / unloaded.a
-            << ", |int q| < 1e-6: "
-            << (std::abs(integral([&](const double x) { return unloaded.tangential(x); },
-                                  unloaded.a)) < 1e-6 ?
+  const CattaneoSolution unloaded(10., 0., 1.2256, 1., 4., E_star,
+                                  CattaneoProblem::cylinders_tresca);
+  std::cout << "unloaded to 0: b/a = " << unloaded.c / unloaded.a << ", |int q| < 1e-6: "
+            << (std::abs(integral(
+                  [&](const double x) {
+                    return unloaded.tangential(x);
+                  },
+                  unloaded.a)) < 1e-6 ?
                   "yes" :
                   "no")
             << std::endl;

@@ -52,15 +52,15 @@ namespace
 int
 main()
 {
-  const double E_star = 200. / (2. * (1. - 0.09)), P = 10., mu = 0.2, R = 4., Qs = 1.6;
+  const double           E_star = 200. / (2. * (1. - 0.09)), P = 10., mu = 0.2, R = 4., Qs = 1.6;
   const CattaneoSolution peak(P, Qs, mu, R, E_star);
   std::cout << std::setprecision(4);
   for (const double Q : {1.6, 0.8, 0., -0.4, -1.6})
     {
       const CattaneoSolution s(P, Q, Qs, mu, R, E_star);
       std::cout << "Q = " << Q << ": int q = Q (to 1e-5 Q*): "
-                << (std::abs(resultant(s) - Q) < 1e-5 * Qs ? "yes" : "no") << ", b/a = " << s.c / s.a
-                << ", c*/a = " << s.c_star / s.a << std::endl;
+                << (std::abs(resultant(s) - Q) < 1e-5 * Qs ? "yes" : "no")
+                << ", b/a = " << s.c / s.a << ", c*/a = " << s.c_star / s.a << std::endl;
     }
   std::cout << "at Q = Q*, |q - q_C(Q*)| < 1e-12: "
             << (largest_difference(CattaneoSolution(P, Qs, Qs, mu, R, E_star), peak, 1.) < 1e-12 ?
@@ -68,8 +68,7 @@ main()
                   "no")
             << std::endl;
   std::cout << "at Q = -Q*, |q + q_C(Q*)| < 1e-12: "
-            << (largest_difference(CattaneoSolution(P, -Qs, Qs, mu, R, E_star), peak, -1.) <
-                    1e-12 ?
+            << (largest_difference(CattaneoSolution(P, -Qs, Qs, mu, R, E_star), peak, -1.) < 1e-12 ?
                   "yes" :
                   "no")
             << std::endl;
@@ -90,8 +89,7 @@ main()
   for (const auto &path : paths)
     {
       const TangentialPath p = classify_tangential_path(path, 1e-6);
-      std::cout << "path ending at " << path.back() << ": " << name(p.kind)
-                << ", direction " << p.direction << ", Q " << p.Q << ", Q* " << p.Q_star
-                << std::endl;
+      std::cout << "path ending at " << path.back() << ": " << name(p.kind) << ", direction "
+                << p.direction << ", Q " << p.Q << ", Q* " << p.Q_star << std::endl;
     }
 }

@@ -91,10 +91,9 @@ namespace
   print_state(const ContactInterface<2> &interface, const ContactFormulation<2> &contact)
   {
     for (const auto &s : interface.slave_nodes)
-      std::cout << "    node x = " << interface.nodes[s.node].reference[0]
-                << ": active " << contact.is_active(s.node) << ", pressure "
-                << contact.normal_pressure(s.node) << ", traction_y "
-                << contact.traction(s)[1] << std::endl;
+      std::cout << "    node x = " << interface.nodes[s.node].reference[0] << ": active "
+                << contact.is_active(s.node) << ", pressure " << contact.normal_pressure(s.node)
+                << ", traction_y " << contact.traction(s)[1] << std::endl;
   }
 } // namespace
 
@@ -116,15 +115,14 @@ main(int argc, char **argv)
   AffineConstraints<double> no_dirichlet;
   no_dirichlet.close();
   ContactInterface<2> interface;
-  interface.initialize(mapping, dof_handler, {ContactPair{3, 4}}, no_dirichlet, no_dirichlet, materials,
-                       MPI_COMM_WORLD);
+  interface.initialize(mapping, dof_handler, {ContactPair{3, 4}}, no_dirichlet, no_dirichlet,
+                       materials, MPI_COMM_WORLD);
   interface.update(std::vector<double>(interface.dofs().size(), 0.), 3.);
   std::cout << "mortar: " << interface.slave_nodes.size() << " slave nodes" << std::endl;
   for (const auto &s : interface.slave_nodes)
-    std::cout << "  x = " << interface.nodes[s.node].reference[0] << ": D = " << s.D
-              << ", normal " << s.normal << ", gap "
-              << interface.gap(s, std::vector<double>(interface.dofs().size(), 0.))
-              << std::endl;
+    std::cout << "  x = " << interface.nodes[s.node].reference[0] << ": D = " << s.D << ", normal "
+              << s.normal << ", gap "
+              << interface.gap(s, std::vector<double>(interface.dofs().size(), 0.)) << std::endl;
 
   // --- alm frictionless, eps = 100 ------------------------------------------
   auto alm = make_formulation("alm frictionless", "100");
@@ -135,8 +133,8 @@ main(int argc, char **argv)
   std::cout << "alm, both nodes 0.02 inside: " << alm->n_active() << " active" << std::endl;
 
   AffineConstraints<double> constraints;
-  alm->add_constraints(interface, std::vector<double>(interface.dofs().size(), 0.),
-                       constraints, false);
+  alm->add_constraints(interface, std::vector<double>(interface.dofs().size(), 0.), constraints,
+                       false);
   constraints.close();
   for (const auto &s : interface.slave_nodes)
     {
@@ -147,8 +145,9 @@ main(int argc, char **argv)
         for (const auto &node : interface.nodes)
           for (unsigned int d = 0; d < 2; ++d)
             if (node.dofs[d] == master_dof)
-              std::cout << " (u" << "xy"[d] << " of the master node at x = "
-                        << node.reference[0] << ": " << coefficient << ")";
+              std::cout << " (u"
+                        << "xy"[d] << " of the master node at x = " << node.reference[0] << ": "
+                        << coefficient << ")";
       std::cout << std::endl;
     }
 
@@ -168,8 +167,8 @@ main(int argc, char **argv)
   const auto saved = alm->save_state();
 
   // At the converged gap 0 the node in tension is released.
-  const std::vector<double> touching = displacement(interface, {-0.1, -0.1});
-  const unsigned int        changes  = alm->update_active_set(interface, touching);
+  const std::vector<double> touching  = displacement(interface, {-0.1, -0.1});
+  const unsigned int        changes   = alm->update_active_set(interface, touching);
   const auto                residuals = alm->residuals(interface, touching);
   std::cout << "alm, active-set update at zero gap: " << changes << " change(s), "
             << alm->n_active() << " active, multiplier residual " << residuals.multiplier

@@ -46,8 +46,7 @@ namespace
     Triangulation<3> lower, upper;
     GridGenerator::subdivided_hyper_rectangle(lower, {2, 2, 1}, Point<3>(0., 0., 0.),
                                               Point<3>(1., 1., 1.));
-    GridGenerator::hyper_rectangle(upper, Point<3>(0., 0., 1. + gap0),
-                                   Point<3>(1., 1., 2. + gap0));
+    GridGenerator::hyper_rectangle(upper, Point<3>(0., 0., 1. + gap0), Point<3>(1., 1., 2. + gap0));
     GridGenerator::merge_triangulations(lower, upper, tria);
     label_stacked_blocks(tria, gap0);
   }
@@ -70,8 +69,8 @@ namespace
         const auto &X = interface.nodes[s.node].reference;
         std::cout << "  (" << X[0] << ", " << X[1] << "): paired " << s.paired
                   << ", D = " << clean(s.D) << ", int N = " << s.full_area << ", normal ("
-                  << clean(s.normal[0]) << ", " << clean(s.normal[1]) << ", "
-                  << clean(s.normal[2]) << ")";
+                  << clean(s.normal[0]) << ", " << clean(s.normal[1]) << ", " << clean(s.normal[2])
+                  << ")";
         if (s.paired)
           std::cout << ", gap - 0.1 = " << clean(interface.gap(s, u) - gap0);
         std::cout << ", distance " << distances[i] << std::endl;
@@ -106,8 +105,8 @@ main(int argc, char **argv)
   AffineConstraints<double> no_dirichlet;
   no_dirichlet.close();
   ContactInterface<3> interface;
-  interface.initialize(mapping, dof_handler, {ContactPair{3, 4}}, no_dirichlet, no_dirichlet, materials,
-                       MPI_COMM_WORLD);
+  interface.initialize(mapping, dof_handler, {ContactPair{3, 4}}, no_dirichlet, no_dirichlet,
+                       materials, MPI_COMM_WORLD);
   std::cout << "faces: " << interface.faces.size() << ", nodes: " << interface.nodes.size()
             << std::endl;
   // Every face's orientation turns t_xi x t_eta out of its body.

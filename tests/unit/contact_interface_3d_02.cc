@@ -93,8 +93,8 @@ main(int argc, char **argv)
   DoFTools::make_hanging_node_constraints(dof_handler, hanging);
   hanging.close();
   ContactInterface<3> interface;
-  interface.initialize(mapping, dof_handler, {ContactPair{3, 4}}, no_dirichlet, hanging,
-                       materials, MPI_COMM_WORLD);
+  interface.initialize(mapping, dof_handler, {ContactPair{3, 4}}, no_dirichlet, hanging, materials,
+                       MPI_COMM_WORLD);
 
   std::vector<double> u(interface.dofs().size(), 0.);
   for (const auto &node : interface.nodes)
@@ -127,10 +127,11 @@ main(int argc, char **argv)
       double best = std::numeric_limits<double>::infinity();
       for (unsigned int a = 0; a <= 800; ++a)
         for (unsigned int b = 0; b <= 800; ++b)
-          best = std::min(best, X.distance(master_point(X[0] - 0.4 + 0.001 * a,
-                                                        X[1] - 0.4 + 0.001 * b)));
+          best = std::min(best,
+                          X.distance(master_point(X[0] - 0.4 + 0.001 * a, X[1] - 0.4 + 0.001 * b)));
       const double side = master_point(X[0], X[1])[2] < X[2] ? -1. : 1.;
-      std::cout << ", brute force " << side * best << ", agree to 1e-5: "
-                << (std::abs(distances[i] - side * best) < 1e-5) << std::endl;
+      std::cout << ", brute force " << side * best
+                << ", agree to 1e-5: " << (std::abs(distances[i] - side * best) < 1e-5)
+                << std::endl;
     }
 }

@@ -85,7 +85,7 @@ main(int argc, char **argv)
   const FESystem<3> fe(FE_Q<3>(1), 3);
   DoFHandler<3>     dof_handler(tria);
   dof_handler.distribute_dofs(fe);
-  const Materials<3> materials = make_materials<3>("1", "100", "0.3");
+  const Materials<3>        materials = make_materials<3>("1", "100", "0.3");
   AffineConstraints<double> none;
   none.close();
   const std::vector<ContactPair> pairs = {ContactPair{3, 4}};
@@ -101,23 +101,21 @@ main(int argc, char **argv)
       const Mortar::QuadFace quad = interface.face_geometry(face);
       if (face.slave)
         for (unsigned int k = 4; k < 9; ++k)
-          off_cylinder = std::max(off_cylinder,
-                                  std::abs(std::hypot(quad.nodes[k][1], quad.nodes[k][2]) - 1.));
+          off_cylinder =
+            std::max(off_cylinder, std::abs(std::hypot(quad.nodes[k][1], quad.nodes[k][2]) - 1.));
       // Each geometry point is nearest to the midpoint of its own edge.
-      const auto       &x          = quad.nodes;
-      const Point<3>    midpoints[5] = {0.5 * (x[0] + x[2]), 0.5 * (x[1] + x[3]),
-                                     0.5 * (x[0] + x[1]), 0.5 * (x[2] + x[3]),
-                                     0.25 * (x[0] + x[1] + x[2] + x[3])};
-      bool in_order = true;
+      const auto    &x            = quad.nodes;
+      const Point<3> midpoints[5] = {0.5 * (x[0] + x[2]), 0.5 * (x[1] + x[3]), 0.5 * (x[0] + x[1]),
+                                     0.5 * (x[2] + x[3]), 0.25 * (x[0] + x[1] + x[2] + x[3])};
+      bool           in_order     = true;
       for (unsigned int k = 0; k < 5; ++k)
         for (unsigned int other = 0; other < 5; ++other)
-          if (other != k &&
-              x[4 + k].distance(midpoints[other]) <= x[4 + k].distance(midpoints[k]))
+          if (other != k && x[4 + k].distance(midpoints[other]) <= x[4 + k].distance(midpoints[k]))
             in_order = false;
       n_in_order += in_order;
     }
-  std::cout << "Q1 on MappingQ(2): " << n_slave << " slave and " << n_master
-            << " master faces, " << n_with_five << " with 5 geometry points, " << n_in_order
+  std::cout << "Q1 on MappingQ(2): " << n_slave << " slave and " << n_master << " master faces, "
+            << n_with_five << " with 5 geometry points, " << n_in_order
             << " in the node order of QuadFace" << std::endl;
   std::cout << "  geometry points off the cylinder: "
             << (off_cylinder < 1e-12 ? std::string("< 1e-12") : std::to_string(off_cylinder))
@@ -134,29 +132,27 @@ main(int argc, char **argv)
   double largest_error = 0.;
   for (const auto &face : interface.faces)
     {
-      const Mortar::QuadFace moved = interface.face_geometry(face, u);
-      const auto            &v     = face.nodes;
+      const Mortar::QuadFace moved       = interface.face_geometry(face, u);
+      const auto            &v           = face.nodes;
       const Tensor<1, 3>     expected[5] = {0.5 * (u[v[0]] + u[v[2]]), 0.5 * (u[v[1]] + u[v[3]]),
-                                        0.5 * (u[v[0]] + u[v[1]]), 0.5 * (u[v[2]] + u[v[3]]),
-                                        0.25 * (u[v[0]] + u[v[1]] + u[v[2]] + u[v[3]])};
+                                            0.5 * (u[v[0]] + u[v[1]]), 0.5 * (u[v[2]] + u[v[3]]),
+                                            0.25 * (u[v[0]] + u[v[1]] + u[v[2]] + u[v[3]])};
       for (unsigned int k = 0; k < 5; ++k)
         largest_error =
           std::max(largest_error,
                    (moved.nodes[4 + k] - face.geometry_points[k] - expected[k]).norm());
     }
   std::cout << "  geometry points moved by the bilinear vertex displacement: "
-            << (largest_error < 1e-14 ? std::string("ok (< 1e-14)") :
-                                        std::to_string(largest_error))
+            << (largest_error < 1e-14 ? std::string("ok (< 1e-14)") : std::to_string(largest_error))
             << std::endl;
 
   const double exact = 4. * numbers::PI;
-  std::cout << "  slave area / (2 pi R L) - 1: " << hull_area(interface) / exact - 1.
-            << std::endl;
+  std::cout << "  slave area / (2 pi R L) - 1: " << hull_area(interface) / exact - 1. << std::endl;
   ContactInterface<3> chords;
   chords.initialize(MappingQ<3>(1), dof_handler, pairs, none, none, materials, MPI_COMM_WORLD);
   std::cout << "Q1 on MappingQ(1) (chords): " << chords.faces.front().geometry_points.size()
-            << " geometry points, slave area / (2 pi R L) - 1: "
-            << hull_area(chords) / exact - 1. << std::endl;
+            << " geometry points, slave area / (2 pi R L) - 1: " << hull_area(chords) / exact - 1.
+            << std::endl;
 
   ContactInterface<3> cubic;
   try

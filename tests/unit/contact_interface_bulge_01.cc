@@ -74,7 +74,7 @@ namespace
     const FESystem<dim> fe(FE_Q<dim>(2), dim);
     DoFHandler<dim>     dof_handler(tria);
     dof_handler.distribute_dofs(fe);
-    const MappingQ<dim> mapping(2);
+    const MappingQ<dim>  mapping(2);
     const Materials<dim> materials = make_materials<dim>("1, 2", "100, 200", "0, 0");
 
     AffineConstraints<double> no_dirichlet, no_hanging;
@@ -103,14 +103,13 @@ namespace
         for (unsigned int a = 0; a <= 20000; ++a)
           {
             const double x = 0.00005 * a;
-            best = std::min(best, std::hypot(x - X[0], master_height(x) - X[dim - 1]));
+            best           = std::min(best, std::hypot(x - X[0], master_height(x) - X[dim - 1]));
           }
         all_agree = all_agree && std::abs(distances[i] - best) < 1e-6;
         if (std::abs(X[0] - 0.25) < 1e-12)
           at_dip = std::max(at_dip, std::abs(distances[i] - best));
       }
-    std::cout << "  every distance agrees with the brute force to 1e-6: " << all_agree
-              << std::endl
+    std::cout << "  every distance agrees with the brute force to 1e-6: " << all_agree << std::endl
               << "  slave nodes under the dip (x = 1/4, exact distance 0.05): "
               << (at_dip < 1e-6 ? "agree" : "differ") << std::endl;
   }

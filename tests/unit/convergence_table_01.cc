@@ -32,23 +32,23 @@ namespace
   {
     const std::string path = "convergence_" + std::to_string(dim) + "d.csv";
     const std::vector<contact_fem::ContactPair> pairs(1, contact_fem::ContactPair{3, 4});
-    contact_fem::ConvergenceTable<dim> table(path, pairs, MPI_COMM_WORLD);
+    contact_fem::ConvergenceTable<dim>          table(path, pairs, MPI_COMM_WORLD);
     Json pair   = Json::object().set("normal_force", vector(force)).set(extent_key, 0.75);
     Json forces = Json::object().set("pairs", Json::array().push(pair));
     // Two load steps: only the last one's forces count.
     Json steps = Json::array()
                    .push(Json::object().set("forces", Json::object()))
                    .push(Json::object().set("forces", forces));
-    Json record = Json::object()
-                    .set("cycle", 2u)
-                    .set("n_cells", 128u)
-                    .set("n_dofs", 1234u)
-                    .set("contact", Json::object()
-                                      .set("active_slave_nodes", 17u)
-                                      .set("max_contact_pressure", 5.25))
-                    .set("estimated_error", 0.125)
-                    .set("wall_time", 1.5)
-                    .set("load_steps", steps);
+    Json record =
+      Json::object()
+        .set("cycle", 2u)
+        .set("n_cells", 128u)
+        .set("n_dofs", 1234u)
+        .set("contact",
+             Json::object().set("active_slave_nodes", 17u).set("max_contact_pressure", 5.25))
+        .set("estimated_error", 0.125)
+        .set("wall_time", 1.5)
+        .set("load_steps", steps);
     table.add_row(record, "spr contact", 9, 4.5);
     std::ifstream in(path);
     std::cout << in.rdbuf();

@@ -23,8 +23,8 @@ namespace
     const auto law = FrictionalLaw::create(text, "Test/Friction");
     std::cout << "'" << text << "': " << law->description() << ", kind "
               << (law->kind() == FrictionalLaw::Kind::coulomb ? "coulomb" : "tresca")
-              << ", parameter " << law->parameter() << ", frictionless "
-              << law->frictionless() << std::endl;
+              << ", parameter " << law->parameter() << ", frictionless " << law->frictionless()
+              << std::endl;
     for (const double p : {0., 0.5, 2.})
       std::cout << "  p = " << p << ": T = " << law->threshold(p)
                 << ", dT/dp = " << law->threshold_derivative(p) << std::endl;

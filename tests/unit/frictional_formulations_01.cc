@@ -104,7 +104,7 @@ namespace
 
   /// The x contact force on the slave and on the master nodes.
   void
-  print_tangential_forces(const ContactInterface<2>                       &interface,
+  print_tangential_forces(const ContactInterface<2>              &interface,
                           const ContactFormulation<2>::Residuals &residuals)
   {
     for (const auto &node : interface.nodes)
@@ -129,12 +129,11 @@ namespace
         print_tangential_forces(interface, contact->residuals(interface, u));
         Json results = Json::object();
         contact->add_results(interface, results);
-        std::cout << "    results: stick " << results["stick_nodes"].number_value()
-                  << ", slip " << results["slip_nodes"].number_value()
-                  << ", total tangential force "
+        std::cout << "    results: stick " << results["stick_nodes"].number_value() << ", slip "
+                  << results["slip_nodes"].number_value() << ", total tangential force "
                   << results["total_tangential_contact_force"].number_value()
-                  << ", total normal force "
-                  << results["total_normal_contact_force"].number_value() << std::endl;
+                  << ", total normal force " << results["total_normal_contact_force"].number_value()
+                  << std::endl;
       }
   }
 
@@ -153,8 +152,7 @@ namespace
         contact->add_constraints(interface, std::vector<double>(interface.dofs().size(), 0.),
                                  constraints, false);
         std::cout << "alm frictional, start: " << contact->n_active() << " active, "
-                  << constraints.n_constraints() << " constrained DoFs (stick: both)"
-                  << std::endl;
+                  << constraints.n_constraints() << " constrained DoFs (stick: both)" << std::endl;
         // r_j = D_j lambda_j with lambda_j = (t, p) = (-0.3, 1).
         std::vector<double> residual(interface.dofs().size(), 0.);
         for (const auto &s : interface.slave_nodes)

@@ -74,8 +74,7 @@ namespace
         // nearly singular system.
         for (const auto &[axis, compliance] : record.get_child("probe_compliances"))
           out << "    " << axis << ": theta G V "
-              << (compliance.get_value<double>() > 50. ? "above" : "below") << " 50"
-              << std::endl;
+              << (compliance.get_value<double>() > 50. ? "above" : "below") << " 50" << std::endl;
       }
     const auto warning = cycle.get_optional<std::string>("rotation_warning");
     out << "  rotation warning: "
@@ -124,8 +123,7 @@ main(int argc, char **argv)
                              "  set Fixed                   = 2: xyz\n"
                              "  set Pressure                =\n"
                              "  set Prescribed displacement = 1: z = -0.1*t\n";
-  check<3>("3d_free_vertical_axis",
-           sphere + "  set Fixed points = 1 @ 0, 0, 7.1237: xy\nend\n",
+  check<3>("3d_free_vertical_axis", sphere + "  set Fixed points = 1 @ 0, 0, 7.1237: xy\nend\n",
            out);
   check<3>("3d_vertical_axis_on_a_point",
            sphere + "  set Fixed points = 1 @ 0, 0, 7.1237: xy; 1 @ 6.1237, 0, 7.1237: y\nend\n",

@@ -17,11 +17,11 @@ int
 main()
 {
   using contact_fem::HertzContact;
-  const double E_star = 210e3 / (2. * (1. - 0.3 * 0.3));
-  const double pi     = std::acos(-1.);
-  const unsigned int n = 200000;
+  const double       E_star = 210e3 / (2. * (1. - 0.3 * 0.3));
+  const double       pi     = std::acos(-1.);
+  const unsigned int n      = 200000;
 
-  const HertzContact ball = HertzContact::sphere(100., 10., E_star);
+  const HertzContact ball  = HertzContact::sphere(100., 10., E_star);
   double             force = 0.;
   for (unsigned int i = 0; i < n; ++i)
     {

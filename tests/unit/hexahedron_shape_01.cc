@@ -28,15 +28,15 @@ namespace
   void
   report(const std::string &name, const std::array<Point<3>, 8> &x)
   {
-    static const char *names[] = {"valid", "mirrored", "collapsed edge", "flat", "twisted"};
-    const HexahedronCheck check = check_hexahedron(x);
+    static const char    *names[] = {"valid", "mirrored", "collapsed edge", "flat", "twisted"};
+    const HexahedronCheck check   = check_hexahedron(x);
     std::cout << name << ": " << names[static_cast<int>(check.shape)];
     if (check.shape != HexahedronShape::valid && check.shape != HexahedronShape::mirrored)
       std::cout << " at node " << check.first
                 << (check.second != check.first ? "-" + std::to_string(check.second) : "");
     if (check.shape != HexahedronShape::collapsed_edge)
-      std::cout << std::fixed << std::setprecision(4) << ", corners " << check.min_corner
-                << " to " << check.max_corner << ", " << check.n_negative << " negative";
+      std::cout << std::fixed << std::setprecision(4) << ", corners " << check.min_corner << " to "
+                << check.max_corner << ", " << check.n_negative << " negative";
     std::cout << std::endl;
   }
 } // namespace
@@ -57,11 +57,11 @@ main()
   report("cube listed from its top face", mirrored);
 
   auto collapsed = unit_cube();
-  collapsed[7] = collapsed[6];
+  collapsed[7]   = collapsed[6];
   report("nodes 6 and 7 at one point", collapsed);
 
   auto flat_corner = unit_cube();
-  flat_corner[7] = Point<3>(0.5, 0.5, 1);
+  flat_corner[7]   = Point<3>(0.5, 0.5, 1);
   report("node 7 in the plane of its neighbours", flat_corner);
 
   auto flat_cell = unit_cube();

@@ -68,9 +68,8 @@ end
   Answer
   solve(const std::string &kinematics, const unsigned int steps)
   {
-    const std::string directory =
-      "results-" + kinematics + "-" + std::to_string(steps);
-    ParameterHandler prm;
+    const std::string directory = "results-" + kinematics + "-" + std::to_string(steps);
+    ParameterHandler  prm;
     contact_fem::ContactProblem<2>::declare_parameters(prm);
     prm.parse_input_from_string(scene);
     prm.set("Output directory", directory);
@@ -119,17 +118,17 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const bool                       root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   for (const std::string kinematics : {"small", "updated"})
     {
-      const Answer one = solve(kinematics, 1);
+      const Answer one     = solve(kinematics, 1);
       double       largest = 0.;
       for (const unsigned int steps : {3u, 7u})
         largest = std::max(largest, relative_difference(solve(kinematics, steps), one));
       if (root)
         {
-          std::cout << kinematics << ": p_max with 1 step " << std::setprecision(6)
-                    << one.p_max << std::endl;
+          std::cout << kinematics << ": p_max with 1 step " << std::setprecision(6) << one.p_max
+                    << std::endl;
           if (kinematics == "small")
             std::cout << "  3 and 7 steps give the same answer (relative 1e-8): "
                       << (largest < 1e-8 ? "yes" : "no") << std::endl;

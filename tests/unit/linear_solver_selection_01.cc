@@ -26,8 +26,8 @@ namespace
               << traits.slave_stiffness_ratio << ", E contrast " << traits.youngs_modulus_contrast
               << ", lambda/mu " << traits.largest_lambda_over_mu << ", aspect ratio "
               << traits.largest_aspect_ratio << ", unsupported bodies "
-              << traits.unsupported_bodies.size()
-              << ": " << (solver.iterative() ? "iterative" : "direct")
+              << traits.unsupported_bodies.size() << ": "
+              << (solver.iterative() ? "iterative" : "direct")
               << (wants_modes ? " (asks for the rigid-body modes)" : "") << std::endl
               << "    " << solver.description() << std::endl;
   }
@@ -46,24 +46,24 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  ProblemTraits hertz;
-  hertz.slave_stiffness_ratio  = 1e-4; // soft cylinder on a stiff plate
-  hertz.youngs_modulus_contrast = 1e4;
-  hertz.largest_lambda_over_mu = 1.5;
-  hertz.largest_aspect_ratio   = 4.6;
-  ProblemTraits stiff_slave      = hertz;
-  stiff_slave.slave_stiffness_ratio = 1e3;
-  ProblemTraits incompressible        = hertz;
+  ProblemTraits                    hertz;
+  hertz.slave_stiffness_ratio           = 1e-4; // soft cylinder on a stiff plate
+  hertz.youngs_modulus_contrast         = 1e4;
+  hertz.largest_lambda_over_mu          = 1.5;
+  hertz.largest_aspect_ratio            = 4.6;
+  ProblemTraits stiff_slave             = hertz;
+  stiff_slave.slave_stiffness_ratio     = 1e3;
+  ProblemTraits incompressible          = hertz;
   incompressible.largest_lambda_over_mu = 499.;
   // Measured failures of the multigrid that auto must avoid (issue 26).
-  ProblemTraits stiff_master            = hertz;
-  stiff_master.youngs_modulus_contrast  = 1e10;
-  ProblemTraits flat_cells              = hertz;
-  flat_cells.largest_aspect_ratio       = 1e4;
-  ProblemTraits unsupported             = hertz;
-  unsupported.unsupported_bodies        = {1, 2};
-  ProblemTraits hertz_3d = hertz;
-  hertz_3d.dim           = 3;
+  ProblemTraits stiff_master           = hertz;
+  stiff_master.youngs_modulus_contrast = 1e10;
+  ProblemTraits flat_cells             = hertz;
+  flat_cells.largest_aspect_ratio      = 1e4;
+  ProblemTraits unsupported            = hertz;
+  unsupported.unsupported_bodies       = {1, 2};
+  ProblemTraits hertz_3d               = hertz;
+  hertz_3d.dim                         = 3;
 
   std::cout << "auto:" << std::endl;
   auto automatic = make("auto");

@@ -37,8 +37,8 @@ main()
       std::cout << "converged at " << control.converged_time()
                 << (grew ? ", step grows to " : ", step ") << control.step_size() << std::endl;
     }
-  std::cout << "finished at " << control.converged_time() << " after " << attempts
-            << " attempts" << std::endl;
+  std::cout << "finished at " << control.converged_time() << " after " << attempts << " attempts"
+            << std::endl;
 
   LoadStepControl stubborn(parameters, 0., parameters.n_steps);
   unsigned int    splits = 0;

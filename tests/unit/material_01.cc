@@ -37,17 +37,15 @@ main(int argc, char **argv)
   std::cout << "body 1: lambda " << materials.constants(1).lambda() << ", mu "
             << materials.constants(1).mu() << std::endl;
   SymmetricTensor<2, 2> strain;
-  strain[0][0] = 1e-3;
-  strain[1][1] = -5e-4;
-  strain[0][1] = 2e-4;
+  strain[0][0]                      = 1e-3;
+  strain[1][1]                      = -5e-4;
+  strain[0][1]                      = 2e-4;
   const SymmetricTensor<2, 2> sigma = materials.stress(1, strain);
-  std::cout << "stress: " << sigma[0][0] << " " << sigma[1][1] << " " << sigma[0][1]
-            << std::endl;
+  std::cout << "stress: " << sigma[0][0] << " " << sigma[1][1] << " " << sigma[0][1] << std::endl;
   const SymmetricTensor<2, 2> back = materials.compliance(1, sigma);
   std::cout << "compliance of the stress is the strain: "
             << ((back - strain).norm() < 1e-14 * strain.norm() ? "yes" : "no") << std::endl
-            << std::setprecision(6) << "von Mises: " << materials.von_mises(1, sigma)
-            << std::endl
+            << std::setprecision(6) << "von Mises: " << materials.von_mises(1, sigma) << std::endl
             << std::setprecision(9)
             << "stress xx with volumetric strain 1e-3: " << materials.stress(1, strain, 1e-3)[0][0]
             << std::endl;
@@ -56,10 +54,10 @@ main(int argc, char **argv)
 
   const Materials<3>    materials_3d = make_materials<3>("1, 2", "210, 70", "0.3, 0");
   SymmetricTensor<2, 3> uniaxial;
-  uniaxial[0][0] = 1.;
+  uniaxial[0][0]                        = 1.;
   const SymmetricTensor<2, 3> strain_3d = materials_3d.compliance(2, uniaxial);
-  std::cout << "3D body 2, uniaxial stress 1: strain xx " << strain_3d[0][0] << " (1/70 = "
-            << 1. / 70. << "), yy " << strain_3d[1][1] << ", von Mises "
+  std::cout << "3D body 2, uniaxial stress 1: strain xx " << strain_3d[0][0]
+            << " (1/70 = " << 1. / 70. << "), yy " << strain_3d[1][1] << ", von Mises "
             << materials_3d.von_mises(2, uniaxial) << std::endl;
 
   try

@@ -48,8 +48,8 @@ namespace
         std::cout << " boundary " << b.id << " (" << b.n_kinks << " of " << b.n_joints
                   << " joints)";
         if (b.fits_sphere)
-          std::cout << std::fixed << std::setprecision(6) << " on circle (" << b.centre[0]
-                    << ", " << b.centre[1] << "), R = " << b.radius << std::defaultfloat;
+          std::cout << std::fixed << std::setprecision(6) << " on circle (" << b.centre[0] << ", "
+                    << b.centre[1] << "), R = " << b.radius << std::defaultfloat;
       }
     std::cout << std::endl;
   }
@@ -101,7 +101,9 @@ namespace
     const auto found = find_polygonal_boundaries(tria, {});
     if (found.empty())
       std::cout << " no polygonal boundary";
-    const auto clean = [](const double x) { return std::abs(x) < 1e-9 ? 0. : x; };
+    const auto clean = [](const double x) {
+      return std::abs(x) < 1e-9 ? 0. : x;
+    };
     std::cout << std::fixed << std::setprecision(6);
     for (const auto &b : found)
       {
@@ -141,7 +143,8 @@ namespace
             if (cell->face(f)->at_boundary())
               {
                 const double z = cell->face(f)->center()[2];
-                cell->face(f)->set_boundary_id(std::abs(z) < 1e-12 || std::abs(z - 1.) < 1e-12 ? 5 : 0);
+                cell->face(f)->set_boundary_id(std::abs(z) < 1e-12 || std::abs(z - 1.) < 1e-12 ? 5 :
+                                                                                                 0);
               }
         report_polygons_3d("16-gon extruded in " + std::to_string(layers) + " layer(s)", extruded);
       }
@@ -157,7 +160,7 @@ namespace
   /// Two unit squares side by side, not merged: [0,1]^2 and [1,2] x [0,1],
   /// with the materials and the ids of the faces on x = 1 given.
   void
-  two_blocks(const std::string      &name,
+  two_blocks(const std::string       &name,
              const types::material_id left_body,
              const types::material_id right_body,
              const types::boundary_id interface_id,
@@ -189,7 +192,8 @@ namespace
       {
         const std::string what = e.what();
         std::cout << name << ": refused ("
-                  << (what.find("Coherence") != std::string::npos ? "crack, Coherence named" : "other")
+                  << (what.find("Coherence") != std::string::npos ? "crack, Coherence named" :
+                                                                    "other")
                   << ")" << std::endl;
       }
   }
@@ -203,19 +207,18 @@ namespace
       {
         const double theta = 0.3 * i, phi = 0.7 * i;
         points.push_back(centre + 2.5 * Point<3>(std::sin(theta) * std::cos(phi),
-                                                 std::sin(theta) * std::sin(phi),
-                                                 std::cos(theta)));
+                                                 std::sin(theta) * std::sin(phi), std::cos(theta)));
       }
-    Point<3> c;
-    double   r = 0., deviation = 0.;
+    Point<3>   c;
+    double     r = 0., deviation = 0.;
     const bool ok = fit_sphere(points, c, r, deviation);
     std::cout << "sphere fit: " << (ok ? "found" : "none") << ", centre error "
               << (c.distance(centre) < 1e-10 ? "< 1e-10" : "large") << ", radius error "
               << (std::abs(r - 2.5) < 1e-10 ? "< 1e-10" : "large") << std::endl;
     const std::vector<Point<2>> line = {{0., 0.}, {1., 1.}, {2., 2.}, {3., 3.}};
-    Point<2> c2;
-    std::cout << "collinear points: " << (fit_sphere(line, c2, r, deviation) ? "fitted" : "no circle")
-              << std::endl;
+    Point<2>                    c2;
+    std::cout << "collinear points: "
+              << (fit_sphere(line, c2, r, deviation) ? "fitted" : "no circle") << std::endl;
   }
 
   /// One cell [0,1] x [0,h] whose top face is the arc of the circle through
@@ -230,7 +233,7 @@ namespace
         if (cell->face(f)->center()[1] > 0.5 * h)
           cell->face(f)->set_boundary_id(3);
     // Centre (0.5, c) and radius c - y_low through (0, h) and (1, h).
-    const double c = (0.25 + h * h - y_low * y_low) / (2. * (h - y_low));
+    const double       c = (0.25 + h * h - y_low * y_low) / (2. * (h - y_low));
     std::ostringstream entry;
     entry << std::setprecision(15) << "3: circle 0.5, " << c << ", " << c - y_low;
     const auto manifolds = parse_boundary_manifolds<2>(entry.str(), "Geometry/Manifolds");
@@ -245,8 +248,8 @@ namespace
       {
         const std::string what = e.what();
         std::cout << name << ": refused ("
-                  << (what.find("inverts") != std::string::npos ? "inverted cells" : "other")
-                  << ")" << std::endl;
+                  << (what.find("inverts") != std::string::npos ? "inverted cells" : "other") << ")"
+                  << std::endl;
       }
   }
   void

@@ -44,10 +44,10 @@ namespace
   void
   report(const Triangulation<dim> &tria, const MeshFileInfo &info)
   {
-    double                             measure = 0.;
-    std::map<unsigned int, double>     boundary;
-    std::map<unsigned int, unsigned>   materials;
-    unsigned int                       n_inverted = 0;
+    double                           measure = 0.;
+    std::map<unsigned int, double>   boundary;
+    std::map<unsigned int, unsigned> materials;
+    unsigned int                     n_inverted = 0;
     for (const auto &cell : tria.active_cell_iterators())
       {
         measure += cell->measure();
@@ -128,7 +128,7 @@ $EndElements
                                                       {2, 0, 0.5},
                                                       {2, 1, 0.5},
                                                       {1.5, -1, 0.5}}};
-    std::ostringstream out;
+    std::ostringstream                          out;
     out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n11\n";
     for (unsigned int i = 0; i < 11; ++i)
       out << tag[i] << " " << x[i][0] << " " << x[i][1] << " " << x[i][2] << "\n";
@@ -142,8 +142,8 @@ $EndElements
     // element's nodes (the same cell, the same turn).
     std::vector<std::string> elements = {
       "3 2 2 2" + (reordered ? n({3, 2, 1, 4}) : n({1, 4, 3, 2})) + "\n", // base z = 0
-      "2 2 1 1" + (reordered ? n({9, 11, 2}) : n({2, 9, 11})) + "\n",    // a face of the tetrahedron
-      "2 2 3 3" + (reordered ? n({10, 7, 3}) : n({3, 10, 7})) + "\n",    // the prism's end y = 1
+      "2 2 1 1" + (reordered ? n({9, 11, 2}) : n({2, 9, 11})) + "\n", // a face of the tetrahedron
+      "2 2 3 3" + (reordered ? n({10, 7, 3}) : n({3, 10, 7})) + "\n", // the prism's end y = 1
       "5 2 1 1" + (reordered ? n({4, 3, 2, 1, 8, 7, 6, 5}) : n({1, 2, 3, 4, 5, 6, 7, 8})) + "\n",
       "6 2 1 1" + (reordered ? n({6, 9, 2, 7, 10, 3}) : n({2, 6, 9, 3, 7, 10})) + "\n",
       "4 2 2 2" + (reordered ? n({9, 6, 2, 11}) : n({2, 9, 6, 11})) + "\n"};
@@ -200,7 +200,7 @@ main()
   report(a, info);
 
   const std::vector<int> renumbered = {40, 7, 33, 2, 91, 15, 8, 60, 3, 12, 5};
-  const auto b = read<3>("mixed_3d_renumbered.msh", mixed_3d(renumbered, true), info);
+  const auto             b = read<3>("mixed_3d_renumbered.msh", mixed_3d(renumbered, true), info);
   std::cout << "  renumbered and reordered: the same cells bit for bit: "
             << (cells_of(a) == cells_of(b) ? "yes" : "no") << std::endl;
 

@@ -39,8 +39,8 @@ namespace
   check(const std::string &what, const double value, const double expected, const double tol)
   {
     const double error = std::abs(value - expected) / std::max(1e-300, std::abs(expected));
-    std::cout << "  " << what << ": " << (error < tol ? "ok" : "FAILED")
-              << " (relative tolerance " << tol << ")" << std::endl;
+    std::cout << "  " << what << ": " << (error < tol ? "ok" : "FAILED") << " (relative tolerance "
+              << tol << ")" << std::endl;
     if (!(error < tol))
       std::cout << "    got " << value << ", expected " << expected << std::endl;
   }
@@ -77,8 +77,8 @@ namespace
   Point<2>
   node(const unsigned int i)
   {
-    static const double q2[9][2] = {
-      {-1, -1}, {1, -1}, {-1, 1}, {1, 1}, {-1, 0}, {1, 0}, {0, -1}, {0, 1}, {0, 0}};
+    static const double q2[9][2] = {{-1, -1}, {1, -1}, {-1, 1}, {1, 1}, {-1, 0},
+                                    {1, 0},   {0, -1}, {0, 1},  {0, 0}};
     return Point<2>(q2[i][0], q2[i][1]);
   }
 
@@ -101,8 +101,8 @@ namespace
     normals.clear();
     for (unsigned int i = 0; i < 9; ++i)
       {
-        const Point<2>     xi = node(i);
-        Tensor<1, 3>       d({0.04 * (xi[0] + 1.), 0.04 * (xi[1] + 1.), -1.});
+        const Point<2> xi = node(i);
+        Tensor<1, 3>   d({0.04 * (xi[0] + 1.), 0.04 * (xi[1] + 1.), -1.});
         d /= d.norm();
         face.nodes.push_back(centre(g) + R * d);
         normals.push_back(d);
@@ -150,7 +150,7 @@ namespace
 
   struct Operators3D
   {
-    std::vector<double> D = std::vector<double>(9, 0.);
+    std::vector<double> D    = std::vector<double>(9, 0.);
     double              area = 0., sum_M = 0.;
   };
 
@@ -159,7 +159,7 @@ namespace
   /// direction, those of curved faces).
   Operators3D
   operators(const Mortar::QuadFace              &slave,
-            const std::vector<Tensor<1, 3>>    &normals,
+            const std::vector<Tensor<1, 3>>     &normals,
             const std::vector<Mortar::QuadFace> &masters)
   {
     std::vector<Mortar::ParameterPolygon> all;
@@ -218,8 +218,8 @@ namespace
         const Operators3D ops = operators(slave, normals, masters);
         check("sum of the overlap areas = face area", ops.area, area, 1e-9);
         check("sum M = face area", ops.sum_M, area, 1e-9);
-        check("max_j |D_j / int N_j dA - 1|", largest_relative_difference(ops.D, integral) + 1.,
-              1., 1e-9);
+        check("max_j |D_j / int N_j dA - 1|", largest_relative_difference(ops.D, integral) + 1., 1.,
+              1e-9);
       }
 
     // The pole corner at the corner of the plate [0, 1]^2 (the symmetry
@@ -230,10 +230,11 @@ namespace
         const Mortar::QuadFace face = pole_face(g, normals);
         const Operators3D      ops  = operators(face, normals, {plate(0., 1., 0., 1.)});
         check("D of the pole node = int N_pole dA of the whole face", ops.D[0], integral[0], 1e-5);
-        check("max_j |D_j / int N_j dA - 1|", largest_relative_difference(ops.D, integral) + 1.,
-              1., 1e-5);
-        check("sum M = sum D", ops.sum_M, ops.D[0] + ops.D[1] + ops.D[2] + ops.D[3] + ops.D[4] +
-                                            ops.D[5] + ops.D[6] + ops.D[7] + ops.D[8],
+        check("max_j |D_j / int N_j dA - 1|", largest_relative_difference(ops.D, integral) + 1., 1.,
+              1e-5);
+        check("sum M = sum D", ops.sum_M,
+              ops.D[0] + ops.D[1] + ops.D[2] + ops.D[3] + ops.D[4] + ops.D[5] + ops.D[6] +
+                ops.D[7] + ops.D[8],
               1e-12);
       }
   }

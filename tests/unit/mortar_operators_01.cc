@@ -81,8 +81,9 @@ namespace
               << master.degree() << ")" << std::endl;
     const std::vector<Tensor<1, 2>> normals(slave.nodes.size(), Tensor<1, 2>({0., 1.}));
     Mortar::SegmentOperators        ops;
-    const bool                      overlapping = Mortar::integrate_pair(
-      slave, normals, Mortar::dual_basis_coefficients(slave), master, 6, ops);
+    const bool                      overlapping =
+      Mortar::integrate_pair(slave, normals, Mortar::dual_basis_coefficients(slave), master, 6,
+                             ops);
     std::cout << "  overlapping: " << (overlapping ? "yes" : "no") << std::endl;
     if (!overlapping)
       return;
@@ -121,14 +122,14 @@ main()
           // Master above, reversed orientation (normal pointing down).
           pair("  master covering the whole face", slave,
                line(Point<2>(1.5, 0.1), Point<2>(-0.5, 0.1), pm), 1., 0.1);
-          pair("  master shifted by 0.3", slave,
-               line(Point<2>(1.3, 0.1), Point<2>(0.3, 0.1), pm), 0.7, 0.);
-          pair("  master inside the face", slave,
-               line(Point<2>(0.8, 0.2), Point<2>(0.25, 0.2), pm), 0.55, 0.);
+          pair("  master shifted by 0.3", slave, line(Point<2>(1.3, 0.1), Point<2>(0.3, 0.1), pm),
+               0.7, 0.);
+          pair("  master inside the face", slave, line(Point<2>(0.8, 0.2), Point<2>(0.25, 0.2), pm),
+               0.55, 0.);
           pair("  misaligned (tilted) master", slave,
                line(Point<2>(0.6, 0.15), Point<2>(-0.2, 0.05), pm), 0.6, 0.);
-          pair("  master beside the face", slave,
-               line(Point<2>(2.5, 0.1), Point<2>(1.5, 0.1), pm), 0., 0.);
+          pair("  master beside the face", slave, line(Point<2>(2.5, 0.1), Point<2>(1.5, 0.1), pm),
+               0., 0.);
         }
     }
   // A curved (degree 2) slave face: biorthogonality holds with its Jacobian.
@@ -142,8 +143,8 @@ main()
   arc.element_degree = 1;
   std::cout << "Curved slave face, degree-1 element" << std::endl;
   biorthogonality(arc);
-  const Mortar::LineFace   flat_master = line(Point<2>(1.5, 0.1), Point<2>(-0.5, 0.1), 1);
-  const FullMatrix<double> A           = Mortar::dual_basis_coefficients(arc);
+  const Mortar::LineFace          flat_master = line(Point<2>(1.5, 0.1), Point<2>(-0.5, 0.1), 1);
+  const FullMatrix<double>        A           = Mortar::dual_basis_coefficients(arc);
   const std::vector<Tensor<1, 2>> normals(2, Tensor<1, 2>({0., 1.}));
   Mortar::SegmentOperators        ops;
   Mortar::integrate_pair(arc, normals, A, flat_master, 6, ops);
@@ -155,14 +156,14 @@ main()
         {
           const double xi  = 2. * q.point(i)[0] - 1.;
           const double jxw = 2. * q.weight(i) * arc.tangent(xi).norm();
-          const double phi = A(j, 0) * Mortar::shape_value(1, 0, xi) +
-                             A(j, 1) * Mortar::shape_value(1, 1, xi);
+          const double phi =
+            A(j, 0) * Mortar::shape_value(1, 0, xi) + A(j, 1) * Mortar::shape_value(1, 1, xi);
           expected += phi * (0.1 - arc.point(xi)[1]) * jxw;
         }
       for (unsigned int l = 0; l < 2; ++l)
         nodal += ops.M(j, l) * flat_master.nodes[l][1];
-      check("weighted gap of node " + std::to_string(j) + " on the curve",
-            ops.weighted_gap[j][1], expected, 1e-6);
+      check("weighted gap of node " + std::to_string(j) + " on the curve", ops.weighted_gap[j][1],
+            expected, 1e-6);
       check("nodal form of node " + std::to_string(j) + " (chord: gap 0.1 D_j)", nodal,
             0.1 * ops.D[j], 1e-12);
       std::cout << "  curvature part of node " << j << ": "

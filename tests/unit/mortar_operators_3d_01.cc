@@ -66,8 +66,8 @@ namespace
   Point<2>
   node_parameter(const unsigned int p, const unsigned int i)
   {
-    static const double q2[9][2] = {
-      {-1, -1}, {1, -1}, {-1, 1}, {1, 1}, {-1, 0}, {1, 0}, {0, -1}, {0, 1}, {0, 0}};
+    static const double q2[9][2] = {{-1, -1}, {1, -1}, {-1, 1}, {1, 1}, {-1, 0},
+                                    {1, 0},   {0, -1}, {0, 1},  {0, 0}};
     return p == 1 ? Point<2>(i % 2 ? 1. : -1., i / 2 ? 1. : -1.) : Point<2>(q2[i][0], q2[i][1]);
   }
 
@@ -75,9 +75,9 @@ namespace
   double
   lagrange(const unsigned int p, const double a, const double x)
   {
-    const std::vector<double> nodes = p == 1 ? std::vector<double>{-1., 1.} :
-                                               std::vector<double>{-1., 0., 1.};
-    double                    value = 1.;
+    const std::vector<double> nodes =
+      p == 1 ? std::vector<double>{-1., 1.} : std::vector<double>{-1., 0., 1.};
+    double value = 1.;
     for (const double b : nodes)
       if (b != a)
         value *= (x - b) / (a - b);
@@ -122,7 +122,11 @@ namespace
   /// Square of side 2h, centre c at height z, turned by @p angle about z;
   /// its parameters run clockwise seen from above (normal -z: a master).
   Map
-  master_square(const double cx, const double cy, const double h, const double angle, const double z)
+  master_square(const double cx,
+                const double cy,
+                const double h,
+                const double angle,
+                const double z)
   {
     const Tensor<1, 3> a({std::cos(angle), std::sin(angle), 0.});
     const Tensor<1, 3> b({-std::sin(angle), std::cos(angle), 0.});
@@ -158,7 +162,9 @@ namespace
     for (unsigned int e = 0; e < clip.size() && !out.empty(); ++e)
       {
         const Point<2> a = clip[e], b = clip[(e + 1) % clip.size()];
-        const auto     side = [&](const Point<2> &x) { return cross(b - a, x - a); };
+        const auto     side = [&](const Point<2> &x) {
+          return cross(b - a, x - a);
+        };
         const std::vector<Point<2>> in = out;
         out.clear();
         for (unsigned int k = 0; k < in.size(); ++k)
@@ -186,7 +192,7 @@ namespace
   /// int over the polygons of f: fan from the first vertex, Witherden-Vincent
   /// rule of degree 9 on each triangle.
   double
-  integrate(const std::vector<std::vector<Point<2>>> &polygons,
+  integrate(const std::vector<std::vector<Point<2>>>      &polygons,
             const std::function<double(const Point<2> &)> &f)
   {
     const QWitherdenVincentSimplex<2> rule(5);
@@ -233,7 +239,7 @@ namespace
           const double value = integrate(polygons, [&](const Point<2> &xi) {
             return (phi(A, p, j, xi) - (j == k ? 1. : 0.)) * N(p, k, xi) * jacobian;
           });
-          worst = std::max(worst, std::abs(value));
+          worst              = std::max(worst, std::abs(value));
         }
     return worst;
   }
@@ -254,19 +260,22 @@ namespace
         for (unsigned int i = 0; i < n_nodes(p); ++i)
           {
             const Point<2> x = Mortar::quad_node_parameter(p, i);
-            order = std::max(order, (x - node_parameter(p, i)).norm());
-            order = std::max(order, (0.5 * (x + Point<2>(1., 1.)) - fe.get_unit_support_points()[i]).norm());
+            order            = std::max(order, (x - node_parameter(p, i)).norm());
+            order =
+              std::max(order,
+                       (0.5 * (x + Point<2>(1., 1.)) - fe.get_unit_support_points()[i]).norm());
             for (unsigned int k = 0; k < n_nodes(p); ++k)
-              kronecker = std::max(kronecker, std::abs(Mortar::quad_shape_value(p, k, x) - (i == k)));
+              kronecker =
+                std::max(kronecker, std::abs(Mortar::quad_shape_value(p, k, x) - (i == k)));
             // Gradient against central differences at an arbitrary point.
             const Point<2> y(0.3, -0.7);
             const double   h = 1e-6;
             for (unsigned int d = 0; d < 2; ++d)
               {
                 const Tensor<1, 2> e = h * Point<2>::unit_vector(d);
-                gradient         = std::max(gradient,
-                                    std::abs(Mortar::quad_shape_gradient(p, i, y)[d] -
-                                             (N(p, i, y + e) - N(p, i, y - e)) / (2. * h)));
+                gradient =
+                  std::max(gradient, std::abs(Mortar::quad_shape_gradient(p, i, y)[d] -
+                                              (N(p, i, y + e) - N(p, i, y - e)) / (2. * h)));
               }
           }
         std::cout << " degree " << p << std::endl;
@@ -275,7 +284,8 @@ namespace
         check("gradients against central differences", gradient, 0., 1e-8);
       }
     const Mortar::QuadFace face =
-      face_from(parallelogram(Point<3>(0, 0, 0), Tensor<1, 3>({2, 0, 0}), Tensor<1, 3>({0, 3, 0})), 2);
+      face_from(parallelogram(Point<3>(0, 0, 0), Tensor<1, 3>({2, 0, 0}), Tensor<1, 3>({0, 3, 0})),
+                2);
     const Point<3>     x = face.point(Point<2>(0.5, -0.5));
     const Tensor<1, 3> n = Mortar::face_normal(face, Point<2>(0.5, -0.5), -1.);
     check("point(0.5, -0.5) of [0,2]x[0,3]: x", x[0], 1.5, 1e-14);
@@ -287,16 +297,16 @@ namespace
   /// operators and returns them with the overlap polygons.
   struct Accumulated
   {
-    std::vector<double>                  D;
-    std::vector<Tensor<1, 3>>            nodal_gap, weighted_gap;
-    double                               sum_M = 0., area = 0.;
+    std::vector<double>                   D;
+    std::vector<Tensor<1, 3>>             nodal_gap, weighted_gap;
+    double                                sum_M = 0., area = 0.;
     std::vector<Mortar::ParameterPolygon> polygons;
-    unsigned int                         n_overlapping = 0;
+    unsigned int                          n_overlapping = 0;
   };
 
   Accumulated
   accumulate(const Mortar::QuadFace              &slave,
-             const std::vector<Tensor<1, 3>>    &normals,
+             const std::vector<Tensor<1, 3>>     &normals,
              const FullMatrix<double>            &A,
              const std::vector<Mortar::QuadFace> &masters,
              const unsigned int                   n_quadrature_points)
@@ -347,21 +357,23 @@ namespace
         std::cout << "Matching unit squares, degree " << ps << ", master at distance 0.1"
                   << std::endl;
         const Mortar::QuadFace slave =
-          face_from(parallelogram(Point<3>(), Tensor<1, 3>({1, 0, 0}), Tensor<1, 3>({0, 1, 0})), ps);
+          face_from(parallelogram(Point<3>(), Tensor<1, 3>({1, 0, 0}), Tensor<1, 3>({0, 1, 0})),
+                    ps);
         const Mortar::QuadFace master = face_from(master_square(0.5, 0.5, 0.5, 0., 0.1), ps);
         const std::vector<Tensor<1, 3>> normals(slave.n_shape_nodes(), Tensor<1, 3>({0, 0, 1}));
         Mortar::QuadSegmentOperators    ops;
-        const bool                      overlapping = Mortar::integrate_pair(
-          slave, normals, Mortar::dual_basis_coefficients(slave), master, 5, ops);
+        const bool                      overlapping =
+          Mortar::integrate_pair(slave, normals, Mortar::dual_basis_coefficients(slave), master, 5,
+                                 ops);
         std::cout << "  overlapping: " << (overlapping ? "yes" : "no") << std::endl;
         double diagonal = 0., off_diagonal = 0., D_error = 0., gap = 0.;
         for (unsigned int j = 0; j < slave.nodes.size(); ++j)
           {
-            const Point<2> a        = node_parameter(ps, j);
-            const double   integral = (ps == 1 ? 0.25 :
-                                                 (a[0] == 0. ? 2. / 3. : 1. / 6.) *
-                                                   (a[1] == 0. ? 2. / 3. : 1. / 6.));
-            D_error                 = std::max(D_error, std::abs(ops.D[j] - integral));
+            const Point<2> a = node_parameter(ps, j);
+            const double   integral =
+              (ps == 1 ? 0.25 :
+                         (a[0] == 0. ? 2. / 3. : 1. / 6.) * (a[1] == 0. ? 2. / 3. : 1. / 6.));
+            D_error = std::max(D_error, std::abs(ops.D[j] - integral));
             for (unsigned int l = 0; l < master.nodes.size(); ++l)
               {
                 const Tensor<1, 3> offset = master.nodes[l] - slave.nodes[j];
@@ -396,30 +408,33 @@ namespace
   /// is their projection along the slave normal): the overlap area from the
   /// own clipping, then the rim dual basis and the gaps.
   void
-  non_matching(const std::string                        &name,
-               const unsigned int                        ps,
-               const unsigned int                        pm,
-               const bool                                clockwise_slave,
+  non_matching(const std::string         &name,
+               const unsigned int         ps,
+               const unsigned int         pm,
+               const bool                 clockwise_slave,
                const std::vector<Square> &squares,
-               const double                              tilt = 0.)
+               const double               tilt = 0.)
   {
     std::cout << name << " (slave degree " << ps << ", master degree " << pm
               << (clockwise_slave ? ", slave parameters clockwise" : "") << ")" << std::endl;
-    const auto height = [tilt](const double y) { return 0.1 + tilt * (y - 0.5); };
+    const auto height = [tilt](const double y) {
+      return 0.1 + tilt * (y - 0.5);
+    };
     // A clockwise slave (normal +z against t_xi x t_eta = -z) runs x along eta.
-    const Mortar::QuadFace slave = face_from(
-      clockwise_slave ? parallelogram(Point<3>(), Tensor<1, 3>({0, 1, 0}), Tensor<1, 3>({1, 0, 0})) :
-                        parallelogram(Point<3>(), Tensor<1, 3>({1, 0, 0}), Tensor<1, 3>({0, 1, 0})),
-      ps);
+    const Mortar::QuadFace slave =
+      face_from(clockwise_slave ?
+                  parallelogram(Point<3>(), Tensor<1, 3>({0, 1, 0}), Tensor<1, 3>({1, 0, 0})) :
+                  parallelogram(Point<3>(), Tensor<1, 3>({1, 0, 0}), Tensor<1, 3>({0, 1, 0})),
+                ps);
     const auto to_parameters = [&](const Point<2> &x) {
       const Point<2> xi = to_slave_parameters(x);
       return clockwise_slave ? Point<2>(xi[1], xi[0]) : xi;
     };
-    const std::vector<Tensor<1, 3>> normals(slave.n_shape_nodes(), Tensor<1, 3>({0, 0, 1}));
-    std::vector<Mortar::QuadFace>          masters;
-    std::vector<std::vector<Point<2>>>     own_polygons;
-    double                                 own_area = 0.;
-    const std::vector<Point<2>>            slave_square = square_polygon(0.5, 0.5, 0.5, 0.);
+    const std::vector<Tensor<1, 3>>    normals(slave.n_shape_nodes(), Tensor<1, 3>({0, 0, 1}));
+    std::vector<Mortar::QuadFace>      masters;
+    std::vector<std::vector<Point<2>>> own_polygons;
+    double                             own_area     = 0.;
+    const std::vector<Point<2>>        slave_square = square_polygon(0.5, 0.5, 0.5, 0.);
     for (const auto &[cx, cy, h, angle] : squares)
       {
         const Map flat = master_square(cx, cy, h, angle, 0.);
@@ -462,12 +477,13 @@ namespace
           const double y = 0.5 * ((clockwise_slave ? xi[0] : xi[1]) + 1.);
           return 0.25 * phi(A, ps, j, xi) * height(y);
         });
-        gap = std::max(gap, (rim.nodal_gap[j] - expected * normals[j]).norm());
-        gap = std::max(gap, (rim.weighted_gap[j] - expected * normals[j]).norm());
+        gap                   = std::max(gap, (rim.nodal_gap[j] - expected * normals[j]).norm());
+        gap                   = std::max(gap, (rim.weighted_gap[j] - expected * normals[j]).norm());
         // Biorthogonality: D_j = int_overlap N_j.
-        D_error = std::max(D_error, std::abs(rim.D[j] - integrate(own_polygons, [&](const Point<2> &xi) {
-                                                      return 0.25 * N(ps, j, xi);
-                                                    })));
+        D_error =
+          std::max(D_error, std::abs(rim.D[j] - integrate(own_polygons, [&](const Point<2> &xi) {
+                                       return 0.25 * N(ps, j, xi);
+                                     })));
       }
     check("rim dual basis: max |D_j - int_overlap N_j|", D_error, 0., 1e-12);
     check("rim dual basis: nodal and weighted gap against own int Phi_j g", gap, 0., 1e-12);
@@ -491,10 +507,11 @@ namespace
       ps);
     const std::vector<Point<2>>     outline = {corners[0], corners[1], corners[3], corners[2]};
     const std::vector<Tensor<1, 3>> normals(slave.n_shape_nodes(), Tensor<1, 3>({0, 0, 1}));
-    for (const std::vector<Square> &squares :
-         {std::vector<Square>{{0.7, 0.4, 0.5, M_PI / 6.}},
-          std::vector<Square>{{0.5, 0.3, 0.25, 0.3}, {0.95, 0.52, 0.25, 0.3}, {0.28, 0.75, 0.25, 0.3},
-                              {0.73, 0.96, 0.25, 0.3}}})
+    for (const std::vector<Square> &squares : {std::vector<Square>{{0.7, 0.4, 0.5, M_PI / 6.}},
+                                               std::vector<Square>{{0.5, 0.3, 0.25, 0.3},
+                                                                   {0.95, 0.52, 0.25, 0.3},
+                                                                   {0.28, 0.75, 0.25, 0.3},
+                                                                   {0.73, 0.96, 0.25, 0.3}}})
       {
         std::vector<Mortar::QuadFace> masters;
         double                        own_area = 0.;
@@ -512,8 +529,9 @@ namespace
         // The rim dual basis is biorthogonal in its own rule (p + 5 points),
         // integrate_pair uses 8 here: the integrands hold the inverse of the
         // bilinear map, no rule is exact (5 points: 1.3e-8 for degree 2).
-        const Accumulated rim = accumulate(
-          slave, normals, Mortar::dual_basis_coefficients(slave, normals, whole.polygons), masters, 8);
+        const Accumulated rim =
+          accumulate(slave, normals,
+                     Mortar::dual_basis_coefficients(slave, normals, whole.polygons), masters, 8);
         double gap = 0.;
         for (unsigned int j = 0; j < slave.n_shape_nodes(); ++j)
           gap = std::max(gap, (rim.nodal_gap[j] - 0.1 * rim.D[j] * normals[j]).norm());
@@ -528,14 +546,16 @@ namespace
       {
         std::cout << "Biorthogonality on the whole face, degree " << p << std::endl;
         // A parallelogram: constant Jacobian |u x v| / 4.
-        const Mortar::QuadFace face = face_from(
-          parallelogram(Point<3>(0.1, 0.2, 0.3), Tensor<1, 3>({1, 0.2, 0.1}), Tensor<1, 3>({0.3, 0.8, -0.2})),
-          p);
+        const Mortar::QuadFace face =
+          face_from(parallelogram(Point<3>(0.1, 0.2, 0.3), Tensor<1, 3>({1, 0.2, 0.1}),
+                                  Tensor<1, 3>({0.3, 0.8, -0.2})),
+                    p);
         const double jacobian =
-          0.25 * cross_product_3d(Tensor<1, 3>({1, 0.2, 0.1}), Tensor<1, 3>({0.3, 0.8, -0.2})).norm();
+          0.25 *
+          cross_product_3d(Tensor<1, 3>({1, 0.2, 0.1}), Tensor<1, 3>({0.3, 0.8, -0.2})).norm();
         check("max |int Phi_j N_k - delta_jk int N_k|",
-              biorthogonality_error(Mortar::dual_basis_coefficients(face), p, whole_face, jacobian), 0.,
-              1e-11);
+              biorthogonality_error(Mortar::dual_basis_coefficients(face), p, whole_face, jacobian),
+              0., 1e-11);
       }
   }
 
@@ -547,17 +567,19 @@ namespace
       face_from(parallelogram(Point<3>(), Tensor<1, 3>({1, 0, 0}), Tensor<1, 3>({0, 1, 0})), 1);
     const std::vector<Tensor<1, 3>> normals(4, Tensor<1, 3>({0, 0, 1}));
     const FullMatrix<double>        A = Mortar::dual_basis_coefficients(slave);
-    using Case = std::tuple<std::string, double, double, double>;
+    using Case                        = std::tuple<std::string, double, double, double>;
     for (const auto &[name, cx, cy, angle] :
          std::vector<Case>{{"master beside", 1.7, 0.5, 0.},
                            {"master touching along an edge", 1.5, 0.5, 0.},
                            {"master touching at a corner", 1.5, 1.5, 0.},
-                           {"turned master touching at a corner", 1. + std::sqrt(0.5), 0.5, M_PI / 4.},
+                           {"turned master touching at a corner", 1. + std::sqrt(0.5), 0.5,
+                            M_PI / 4.},
                            {"master overlapping by 1e-6", 1.5 - 1e-6, 0.5, 0.}})
       {
         Mortar::QuadSegmentOperators ops;
-        const bool overlapping = Mortar::integrate_pair(
-          slave, normals, A, face_from(master_square(cx, cy, 0.5, angle, 0.1), 1), 3, ops);
+        const bool                   overlapping =
+          Mortar::integrate_pair(slave, normals, A,
+                                 face_from(master_square(cx, cy, 0.5, angle, 0.1), 1), 3, ops);
         std::cout << "  " << name << ": overlapping " << (overlapping ? "yes" : "no") << std::endl;
         if (overlapping)
           check("overlap area / 1e-6", ops.overlap_area / 1e-6, 1., 1e-8);
@@ -632,7 +654,9 @@ namespace
       const Point<2> x = gauss.point(q);
       return std::sqrt(1. + grad_s(x[0], x[1]).norm_square()) * gauss.weight(q);
     };
-    const auto xi_of = [&](const unsigned int q) { return to_slave_parameters(gauss.point(q)); };
+    const auto xi_of = [&](const unsigned int q) {
+      return to_slave_parameters(gauss.point(q));
+    };
     for (unsigned int q = 0; q < gauss.size(); ++q)
       for (unsigned int j = 0; j < n; ++j)
         {
@@ -642,7 +666,7 @@ namespace
         }
     Me_inverse.invert(Me);
     De.mmult(A_own, Me_inverse);
-    const FullMatrix<double> A = Mortar::dual_basis_coefficients(slave);
+    const FullMatrix<double> A       = Mortar::dual_basis_coefficients(slave);
     double                   A_error = 0.;
     for (unsigned int j = 0; j < n; ++j)
       for (unsigned int k = 0; k < n; ++k)
@@ -662,9 +686,9 @@ namespace
         double         t = 0.;
         for (unsigned int it = 0; it < 50; ++it)
           {
-            const Point<3> y  = x_s + t * normal;
-            const double   f  = y[2] - m(y[0], y[1]);
-            const double   df = normal[2] - grad_m(y[0], y[1]) * Tensor<1, 2>({normal[0], normal[1]});
+            const Point<3> y = x_s + t * normal;
+            const double   f = y[2] - m(y[0], y[1]);
+            const double df = normal[2] - grad_m(y[0], y[1]) * Tensor<1, 2>({normal[0], normal[1]});
             t -= f / df;
           }
         for (unsigned int j = 0; j < n; ++j)
@@ -702,7 +726,9 @@ namespace
     std::cout << "Cylinder faces meeting edge on edge, coordinates with 1e-14 noise" << std::endl;
     const double R = 8.;
     std::mt19937 random(20261122);
-    const auto noise = [&]() { return 1e-14 * (2. * (random() / 4294967295.) - 1.); };
+    const auto   noise = [&]() {
+      return 1e-14 * (2. * (random() / 4294967295.) - 1.);
+    };
     const auto face = [&](const double sign, const double t0, const double t1, const double z0,
                           const double z1, const bool perturb) {
       Mortar::QuadFace f;
@@ -719,7 +745,7 @@ namespace
         }
       return f;
     };
-    const double a = 0.0117, b0 = -0.01137, b1 = 0.0118;
+    const double              a = 0.0117, b0 = -0.01137, b1 = 0.0118;
     std::vector<Tensor<1, 3>> normals;
     for (unsigned int i = 0; i < n_nodes(2); ++i)
       {
@@ -727,17 +753,17 @@ namespace
         normals.push_back(Tensor<1, 3>({std::sin(t), -std::cos(t), 0.}));
       }
     // Unperturbed: the reference overlap of the same layer.
-    const Mortar::QuadFace   exact_slave = face(1., -a, a, 0., 0.5, false);
-    const FullMatrix<double> A0          = Mortar::dual_basis_coefficients(exact_slave);
+    const Mortar::QuadFace       exact_slave = face(1., -a, a, 0., 0.5, false);
+    const FullMatrix<double>     A0          = Mortar::dual_basis_coefficients(exact_slave);
     Mortar::QuadSegmentOperators reference;
     Mortar::integrate_pair(exact_slave, normals, A0, face(-1., b0, b1, 0., 0.5, false), 5,
                            reference);
-    double       worst = 0.;
+    double       worst        = 0.;
     unsigned int n_next_layer = 0, n_missed = 0;
     for (unsigned int trial = 0; trial < 200; ++trial)
       {
-        const Mortar::QuadFace   slave = face(1., -a, a, 0., 0.5, true);
-        const FullMatrix<double> A     = Mortar::dual_basis_coefficients(slave);
+        const Mortar::QuadFace       slave = face(1., -a, a, 0., 0.5, true);
+        const FullMatrix<double>     A     = Mortar::dual_basis_coefficients(slave);
         Mortar::QuadSegmentOperators same, next;
         if (Mortar::integrate_pair(slave, normals, A, face(-1., b0, b1, 0., 0.5, true), 5, same))
           worst = std::max(worst, std::abs(same.overlap_area - reference.overlap_area));
@@ -772,10 +798,13 @@ main(int argc, char **argv)
         non_matching("Master partly off the slave (rim)", ps, pm, false, {{1.0, 0.6, 0.6, 0.}});
         // Edges on the slave edges and midlines: collinear clipping.
         non_matching("2x2 patch tiling the slave exactly", ps, pm, false,
-                     {{0.25, 0.25, 0.25, 0.}, {0.75, 0.25, 0.25, 0.}, {0.25, 0.75, 0.25, 0.},
+                     {{0.25, 0.25, 0.25, 0.},
+                      {0.75, 0.25, 0.25, 0.},
+                      {0.25, 0.75, 0.25, 0.},
                       {0.75, 0.75, 0.25, 0.}});
-        non_matching("2x2 patch of smaller masters", ps, pm, false,
-                     {{0.6, 0.1, 0.3, 0.}, {1.2, 0.1, 0.3, 0.}, {0.6, 0.7, 0.3, 0.}, {1.2, 0.7, 0.3, 0.}});
+        non_matching(
+          "2x2 patch of smaller masters", ps, pm, false,
+          {{0.6, 0.1, 0.3, 0.}, {1.2, 0.1, 0.3, 0.}, {0.6, 0.7, 0.3, 0.}, {1.2, 0.7, 0.3, 0.}});
       }
   // The same patch turned by 20 degrees about its centre (0.9, 0.4).
   std::vector<Square> turned;
@@ -784,7 +813,7 @@ main(int argc, char **argv)
     {
       const double a = M_PI / 9.;
       turned.push_back(Square{0.9 + dx * std::cos(a) - dy * std::sin(a),
-                        0.4 + dx * std::sin(a) + dy * std::cos(a), 0.3, a});
+                              0.4 + dx * std::sin(a) + dy * std::cos(a), 0.3, a});
     }
   for (const unsigned int ps : {1u, 2u})
     non_matching("2x2 patch turned by 20 degrees", ps, ps, false, turned);

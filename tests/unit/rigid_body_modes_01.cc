@@ -38,7 +38,7 @@ namespace
 {
   template <int dim>
   void
-  check(const std::string &name,
+  check(const std::string  &name,
         Triangulation<dim> &tria,
         const unsigned int  degree,
         const unsigned int  mapping_degree)
@@ -55,10 +55,9 @@ namespace
     SparseMatrix<double> K(pattern);
 
     // Isotropic elasticity, lambda = 1.5, mu = 1.
-    const double                         lambda = 1.5, mu = 1.;
-    const QGauss<dim>                    quadrature(degree + 1);
-    FEValues<dim>                        fe_values(mapping, fe, quadrature,
-                                update_gradients | update_JxW_values);
+    const double      lambda = 1.5, mu = 1.;
+    const QGauss<dim> quadrature(degree + 1);
+    FEValues<dim>     fe_values(mapping, fe, quadrature, update_gradients | update_JxW_values);
     const FEValuesExtractors::Vector     u(0);
     FullMatrix<double>                   local(fe.n_dofs_per_cell(), fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
@@ -69,12 +68,12 @@ namespace
         for (unsigned int q = 0; q < quadrature.size(); ++q)
           for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
             for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
-              local(i, j) += (2. * mu *
-                                scalar_product(fe_values[u].symmetric_gradient(i, q),
-                                               fe_values[u].symmetric_gradient(j, q)) +
-                              lambda * fe_values[u].divergence(i, q) *
-                                fe_values[u].divergence(j, q)) *
-                             fe_values.JxW(q);
+              local(i, j) +=
+                (2. * mu *
+                   scalar_product(fe_values[u].symmetric_gradient(i, q),
+                                  fe_values[u].symmetric_gradient(j, q)) +
+                 lambda * fe_values[u].divergence(i, q) * fe_values[u].divergence(j, q)) *
+                fe_values.JxW(q);
         cell->get_dof_indices(dofs);
         for (unsigned int i = 0; i < dofs.size(); ++i)
           for (unsigned int j = 0; j < dofs.size(); ++j)
@@ -82,8 +81,8 @@ namespace
       }
 
     const auto modes = rigid_body_modes(mapping, dof_handler);
-    std::cout << name << ": " << dof_handler.n_dofs() << " DoFs, " << modes.size()
-              << " modes" << std::endl;
+    std::cout << name << ": " << dof_handler.n_dofs() << " DoFs, " << modes.size() << " modes"
+              << std::endl;
     double worst = 0.;
     for (const auto &mode : modes)
       {
@@ -119,11 +118,10 @@ namespace
     else
       std::cout << "  |K m| / (|K| |m|) below 0.1 of the arbitrary field's: "
                 << (worst < 0.1 * arbitrary ? "yes" : "NO") << std::endl;
-    std::cout
-              << "  arbitrary field above 1e-3:                   "
+    std::cout << "  arbitrary field above 1e-3:                   "
               << (arbitrary > 1e-3 ? "yes" : "NO") << std::endl
-              << "  modes linearly independent:                   "
-              << (independent ? "yes" : "NO") << std::endl;
+              << "  modes linearly independent:                   " << (independent ? "yes" : "NO")
+              << std::endl;
   }
 } // namespace
 

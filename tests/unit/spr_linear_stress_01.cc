@@ -74,7 +74,8 @@ namespace
   u_quadratic(const Point<2> &p)
   {
     const double x = p[0], y = p[1];
-    return Tensor<1, 2>({0.01 * (x * x + x * y + y - y * y / 2.), 0.01 * (-x * x / 2. + y * y + y)});
+    return Tensor<1, 2>(
+      {0.01 * (x * x + x * y + y - y * y / 2.), 0.01 * (-x * x / 2. + y * y + y)});
   }
   SymmetricTensor<2, 2>
   eps_quadratic(const Point<2> &p)
@@ -249,8 +250,7 @@ namespace
     std::sort(points.begin(), points.end(), [](const Point<2> &a, const Point<2> &b) {
       return a[0] < b[0];
     });
-    points.erase(std::unique(points.begin(),
-                             points.end(),
+    points.erase(std::unique(points.begin(), points.end(),
                              [](const Point<2> &a, const Point<2> &b) {
                                return a.distance(b) < 1e-12;
                              }),
@@ -307,14 +307,14 @@ namespace
     n[1] = 1.;
     // Node positions (x coordinate as the key) with their samples.
     std::map<double, ContactNodeTraction<2>> nodes;
-    const QGauss<1> quadrature(4);
+    const QGauss<1>                          quadrature(4);
     for (const auto &[a, b] : faces)
       {
         const double length = a.distance(b);
         for (unsigned int q = 0; q < quadrature.size(); ++q)
           {
-            const double     t = quadrature.point(q)[0];
-            const Point<2>   x = a + t * (b - a);
+            const double                             t = quadrature.point(q)[0];
+            const Point<2>                           x = a + t * (b - a);
             std::vector<std::pair<Point<2>, double>> shapes;
             if (degree == 1)
               shapes = {{a, 1. - t}, {b, t}};
@@ -328,8 +328,8 @@ namespace
                 entry.location = node;
                 entry.normal   = n;
                 entry.samples.push_back({x, n, quadrature.weight(q) * length * shape});
-                entry.traction += quadrature.weight(q) * length * shape *
-                                  (materials.stress(1, strain(x)) * n);
+                entry.traction +=
+                  quadrature.weight(q) * length * shape * (materials.stress(1, strain(x)) * n);
               }
           }
       }
@@ -372,8 +372,7 @@ namespace
     std::sort(points.begin(), points.end(), [](const Point<2> &a, const Point<2> &b) {
       return std::atan2(a[1], a[0]) < std::atan2(b[1], b[0]);
     });
-    points.erase(std::unique(points.begin(),
-                             points.end(),
+    points.erase(std::unique(points.begin(), points.end(),
                              [](const Point<2> &a, const Point<2> &b) {
                                return a.distance(b) < 1e-12;
                              }),
@@ -395,11 +394,9 @@ namespace
              const Materials<2>                  &materials,
              const Strain                        &strain)
   {
-    const QGauss<2> quadrature(dof_handler.get_fe().degree + 3);
-    FEValues<2>     fe_values(mapping,
-                          dof_handler.get_fe(),
-                          quadrature,
-                          update_gradients | update_quadrature_points | update_JxW_values);
+    const QGauss<2>                    quadrature(dof_handler.get_fe().degree + 3);
+    FEValues<2>                        fe_values(mapping, dof_handler.get_fe(), quadrature,
+                                                 update_gradients | update_quadrature_points | update_JxW_values);
     std::vector<SymmetricTensor<2, 2>> strains(quadrature.size());
     double                             sum = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -441,7 +438,7 @@ namespace
     double sum = 0;
     for (const float e : r.cell_indicators)
       sum += double(e) * double(e);
-    sum = Utilities::MPI::sum(sum, comm);
+    sum               = Utilities::MPI::sum(sum, comm);
     const double eta2 = r.estimated_error * r.estimated_error;
     return std::abs(sum - eta2) <= 1e-6 * eta2 + 1e-300 ? "yes" : "no";
   }
@@ -516,7 +513,8 @@ main(int argc, char **argv)
     out << "Q1 dofs: " << q1.dof_handler.n_dofs() << std::endl;
 
     const auto u_shear = q1.interpolate(mapping, u_linear_shear);
-    const auto r = StressRecovery<2>::estimate(mapping, q1.dof_handler, u_shear, materials, {}, plain);
+    const auto r =
+      StressRecovery<2>::estimate(mapping, q1.dof_handler, u_shear, materials, {}, plain);
     out << "Q1, constant stress, plain SPR: relative error " << zero(r.relative_error) << std::endl;
 
     const auto u     = q1.interpolate(mapping, u_linear);
@@ -534,8 +532,9 @@ main(int argc, char **argv)
     // Linear stress: the N_j-weighted means of the shear traction differ
     // from its nodal values where the two top faces of a node differ in
     // length, so only the weighted-mean form is exact.
-    const auto u_bi       = q1.interpolate(mapping, u_bilinear);
-    const auto r_bi_plain = StressRecovery<2>::estimate(mapping, q1.dof_handler, u_bi, materials, {}, plain);
+    const auto u_bi = q1.interpolate(mapping, u_bilinear);
+    const auto r_bi_plain =
+      StressRecovery<2>::estimate(mapping, q1.dof_handler, u_bi, materials, {}, plain);
     out << "Q1, linear stress, plain SPR: relative error " << zero(r_bi_plain.relative_error)
         << std::endl;
     const auto weighted = top_contact_nodes_weighted(tria, 1, materials, eps_bilinear, false);
@@ -561,7 +560,8 @@ main(int argc, char **argv)
           tria.refine_global(1);
         Problem    q1(tria, 1);
         const auto u = q1.interpolate(mapping, u_sin);
-        const auto r = StressRecovery<2>::estimate(mapping, q1.dof_handler, u, materials, {}, plain);
+        const auto r =
+          StressRecovery<2>::estimate(mapping, q1.dof_handler, u, materials, {}, plain);
         eta[cycle]      = r.estimated_error;
         relative[cycle] = r.relative_error;
         out << "Q1, sin field, cells " << tria.n_global_active_cells()
@@ -594,27 +594,24 @@ main(int argc, char **argv)
     disc_material.bodies[0] = ElasticConstants{200., 0.3};
     for (const unsigned int degree : {1u, 2u})
       {
-        Problem    problem(disc, degree);
-        const auto u     = problem.interpolate(quadratic, u_smooth);
-        const auto nodes = disc_contact_nodes(disc, quadratic, degree, disc_material);
+        Problem      problem(disc, degree);
+        const auto   u     = problem.interpolate(quadratic, u_smooth);
+        const auto   nodes = disc_contact_nodes(disc, quadratic, degree, disc_material);
         const double error =
           true_error(quadratic, problem.dof_handler, u, disc_material, eps_smooth);
-        const double plain_effectivity =
-          StressRecovery<2>::estimate(quadratic, problem.dof_handler, u, disc_material, nodes, plain)
+        const double plain_effectivity = StressRecovery<2>::estimate(quadratic, problem.dof_handler,
+                                                                     u, disc_material, nodes, plain)
+                                           .estimated_error /
+                                         error;
+        const double contact_effectivity =
+          StressRecovery<2>::estimate(quadratic, problem.dof_handler, u, disc_material, nodes,
+                                      with_contact)
             .estimated_error /
           error;
-        const double contact_effectivity = StressRecovery<2>::estimate(quadratic,
-                                                              problem.dof_handler,
-                                                              u,
-                                                              disc_material,
-                                                              nodes,
-                                                              with_contact)
-                                    .estimated_error /
-                                  error;
-        out << "Q" << degree << " disc, " << nodes.size()
-            << " boundary nodes: effectivity plain " << std::fixed << std::setprecision(3)
-            << plain_effectivity << ", with exact tractions " << contact_effectivity
-            << std::defaultfloat << "; both in [0.8, 1.25], within 5 % of each other: "
+        out << "Q" << degree << " disc, " << nodes.size() << " boundary nodes: effectivity plain "
+            << std::fixed << std::setprecision(3) << plain_effectivity << ", with exact tractions "
+            << contact_effectivity << std::defaultfloat
+            << "; both in [0.8, 1.25], within 5 % of each other: "
             << (std::min(plain_effectivity, contact_effectivity) >= 0.8 &&
                     std::max(plain_effectivity, contact_effectivity) <= 1.25 &&
                     std::abs(contact_effectivity / plain_effectivity - 1.) < 0.05 ?

@@ -32,9 +32,9 @@ namespace
                    const double                      size,
                    ConditionalOStream               &out)
   {
-    const MPI_Comm     comm    = MPI_COMM_WORLD;
-    const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    const MPI_Comm             comm    = MPI_COMM_WORLD;
+    const unsigned int         rank    = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int         n_ranks = Utilities::MPI::n_mpi_processes(comm);
     std::vector<FixedDof<dim>> mine;
     for (unsigned int i = rank; i < all.size(); i += n_ranks)
       mine.push_back(all[i]);
@@ -44,8 +44,8 @@ namespace
       {
         // Round-off of a free rotation prints as 0.
         const double lever = levers[r] < 1e-10 ? 0. : levers[r];
-        out << "  " << (dim == 2 ? 'z' : "xyz"[r]) << " " << std::fixed
-            << std::setprecision(4) << lever;
+        out << "  " << (dim == 2 ? 'z' : "xyz"[r]) << " " << std::fixed << std::setprecision(4)
+            << lever;
       }
     out << std::endl;
   }
@@ -108,8 +108,8 @@ main(int argc, char **argv)
           crowded.push_back(fixed(Point<2>(-1. + 2. * std::pow((s + 1.) / 2., 4), -1), d));
         }
     print_lever_arms<2>("2D clamped edge y = -1, x in [-1, 1]: 1", edge, 1., out);
-    print_lever_arms<2>("2D the same edge meshed densely at x = -1: of the edge's size",
-                        crowded, 1., out);
+    print_lever_arms<2>("2D the same edge meshed densely at x = -1: of the edge's size", crowded,
+                        1., out);
   }
 
   // 3D.
@@ -124,25 +124,23 @@ main(int argc, char **argv)
     for (const auto &p : square(0, 11, 4.))
       graded.push_back(fixed(p, 0));
     print_lever_arms<3>("3D u_x fixed on the plane x = 0: y 1, z 1, x free", plane, 1., out);
-    print_lever_arms<3>("3D the same plane meshed densely at its middle: y 1, z 1, x free",
-                        graded, 1., out);
-    print_lever_arms<3>("3D u_x on x = 0 and u_y on y = 0 (symmetry planes): all held",
-                        two_planes, 1., out);
+    print_lever_arms<3>("3D the same plane meshed densely at its middle: y 1, z 1, x free", graded,
+                        1., out);
+    print_lever_arms<3>("3D u_x on x = 0 and u_y on y = 0 (symmetry planes): all held", two_planes,
+                        1., out);
   }
   // The fixed points of prm/two_cylinders_3d.prm (the slices z = 0, 1 are
   // held by other supports): only the rotation about z is held by them.
   print_lever_arms<3>("3D u_x fixed at (0, +-4, 0), (0, +-4, 1): z 4, y 0.5, x free",
-                      {fixed(Point<3>(0, -4, 0), 0),
-                       fixed(Point<3>(0, 4, 0), 0),
-                       fixed(Point<3>(0, -4, 1), 0),
-                       fixed(Point<3>(0, 4, 1), 0)},
+                      {fixed(Point<3>(0, -4, 0), 0), fixed(Point<3>(0, 4, 0), 0),
+                       fixed(Point<3>(0, -4, 1), 0), fixed(Point<3>(0, 4, 1), 0)},
                       1., out);
   {
     std::vector<FixedDof<3>> line;
     for (unsigned int i = 0; i <= 4; ++i)
       for (const unsigned int d : {0u, 2u})
         line.push_back(fixed(Point<3>(0, -2. + i, 0), d));
-    print_lever_arms<3>("3D u_x, u_z fixed along the y axis, y in [-2, 2]: x 2, z 2, y free",
-                        line, 1., out);
+    print_lever_arms<3>("3D u_x, u_z fixed along the y axis, y in [-2, 2]: x 2, z 2, y free", line,
+                        1., out);
   }
 }

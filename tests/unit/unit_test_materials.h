@@ -11,7 +11,8 @@
 
 template <int dim>
 contact_fem::Materials<dim>
-make_materials(const std::string &ids, const std::string &youngs_moduli,
+make_materials(const std::string &ids,
+               const std::string &youngs_moduli,
                const std::string &poissons_ratios)
 {
   dealii::ParameterHandler prm;

@@ -12,9 +12,9 @@ namespace contact_fem
 
   struct RefinementParameters
   {
-    unsigned int n_cycles        = 1;
-    std::string  estimator       = "spr contact"; ///< spr contact|spr|kelly|global
-    std::string  strategy        = "fixed fraction";
+    unsigned int n_cycles         = 1;
+    std::string  estimator        = "spr contact"; ///< spr contact|spr|kelly|global
+    std::string  strategy         = "fixed fraction";
     double       refine_fraction  = 0.3;
     double       coarsen_fraction = 0.;
     unsigned int contact_layers   = 2; ///< cell layers refined below a contact face

@@ -168,13 +168,13 @@ namespace contact_fem
      * triangulation's communicator.
      */
     static Result
-    estimate(const Mapping<dim>                           &mapping,
-             const DoFHandler<dim>                        &dof_handler,
-             const TrilinosWrappers::MPI::Vector          &solution,
-             const Materials<dim>                         &materials,
+    estimate(const Mapping<dim>                          &mapping,
+             const DoFHandler<dim>                       &dof_handler,
+             const TrilinosWrappers::MPI::Vector         &solution,
+             const Materials<dim>                        &materials,
              const std::vector<ContactNodeTraction<dim>> &contact_nodes,
-             const Settings                               &settings,
-             VolumetricProjection<dim>                    *volumetric = nullptr);
+             const Settings                              &settings,
+             VolumetricProjection<dim>                   *volumetric = nullptr);
   };
 } // namespace contact_fem
 

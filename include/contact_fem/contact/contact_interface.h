@@ -73,11 +73,11 @@ namespace contact_fem
     /// A node (support point) of a contact surface.
     struct Node
     {
-      Point<dim>                                reference;
+      Point<dim>                               reference;
       std::array<types::global_dof_index, dim> dofs;
-      std::array<bool, dim>                     fixed; ///< Dirichlet component
-      bool                                      slave = false;
-      bool                                      master = false;
+      std::array<bool, dim>                    fixed; ///< Dirichlet component
+      bool                                     slave  = false;
+      bool                                     master = false;
       /// A hanging vertex of the surface (a node on the edge of a coarser
       /// neighbour face, 3D adaptive meshes): the nodes and weights its
       /// displacement is interpolated from. Empty for a regular node.
@@ -94,20 +94,20 @@ namespace contact_fem
       /// in 3D the four edge midpoints and the centre (nodes 4-8 of
       /// Mortar::QuadFace). They move with the (bi)linear interpolation of
       /// the vertex displacements (face_geometry()). Empty if isoparametric.
-      std::vector<Point<dim>>   geometry_points;
-      double                    orientation; ///< makes the rotated tangent point outward
-      unsigned int              pair;
-      bool                      slave;
-      double                    youngs_modulus;
-      double                    poisson_ratio;
+      std::vector<Point<dim>> geometry_points;
+      double                  orientation; ///< makes the rotated tangent point outward
+      unsigned int            pair;
+      bool                    slave;
+      double                  youngs_modulus;
+      double                  poisson_ratio;
     };
 
     /// Mortar data of one slave node at the current search.
     struct SlaveNode
     {
-      unsigned int  node;
-      unsigned int  pair;
-      Tensor<1, dim> normal;            ///< unit, out of the slave body
+      unsigned int   node;
+      unsigned int   pair;
+      Tensor<1, dim> normal; ///< unit, out of the slave body
       /// Unit normal of the interface the two surfaces share once pressed
       /// together, out of the slave: the mean of the slave normal and the
       /// reversed master normal at the projection, weighted by the
@@ -115,24 +115,24 @@ namespace contact_fem
       /// compliance, so a rigid master keeps its own normal and equal
       /// bodies meet half-way). The frame of the frictional conditions.
       Tensor<1, dim> interface_normal;
-      double        D         = 0.;     ///< int over the overlap of Phi_j
-      double        full_area = 0.;     ///< int of N_j over the adjacent slave faces
-      double        size      = 0.;     ///< nodal element size h_j
+      double         D         = 0.; ///< int over the overlap of Phi_j
+      double         full_area = 0.; ///< int of N_j over the adjacent slave faces
+      double         size      = 0.; ///< nodal element size h_j
       /// n_j . (int Phi_j (x_master - x_slave) ds - (sum_l M_jl x_l - D_j x_j))
       /// at the search configuration: the part of the weighted gap that the
       /// nodal form misses where the geometry is curved beyond the element
       /// degree (the sag of a Q1 face on a quadratic mapping); zero up to
       /// quadrature for isoparametric faces.
-      double        curvature_gap = 0.;
-      std::vector<std::pair<unsigned int, double>> M; ///< (master node, M_jl)
-      bool paired = false;              ///< has a master projection
+      double                                       curvature_gap = 0.;
+      std::vector<std::pair<unsigned int, double>> M;              ///< (master node, M_jl)
+      bool                                         paired = false; ///< has a master projection
     };
 
     /// Interface statistics of the last search, per pair.
     struct PairStatistics
     {
-      double       mean_slave_size = 0., mean_master_size = 0.;
-      double       slave_modulus = 0., master_modulus = 0.;
+      double mean_slave_size = 0., mean_master_size = 0.;
+      double slave_modulus = 0., master_modulus = 0.;
     };
 
     /**
@@ -141,13 +141,13 @@ namespace contact_fem
      * closed hanging-node constraints of the locally relevant DoFs.
      */
     void
-    initialize(const MappingQ<dim>                &mapping,
-               const DoFHandler<dim>              &dof_handler,
-               const std::vector<ContactPair>     &pairs,
-               const AffineConstraints<double>    &dirichlet,
-               const AffineConstraints<double>    &hanging,
-               const Materials<dim>               &materials,
-               const MPI_Comm                      comm);
+    initialize(const MappingQ<dim>             &mapping,
+               const DoFHandler<dim>           &dof_handler,
+               const std::vector<ContactPair>  &pairs,
+               const AffineConstraints<double> &dirichlet,
+               const AffineConstraints<double> &hanging,
+               const Materials<dim>            &materials,
+               const MPI_Comm                   comm);
 
     /// Sorted DoF indices of all interface nodes.
     const std::vector<types::global_dof_index> &
@@ -281,10 +281,10 @@ namespace contact_fem
     double
     gap(const SlaveNode &s, const std::vector<double> &u) const;
 
-    std::vector<ContactPair>    pairs;
-    std::vector<Node>           nodes;
-    std::vector<Face>           faces;
-    std::vector<SlaveNode>      slave_nodes;
+    std::vector<ContactPair> pairs;
+    std::vector<Node>        nodes;
+    std::vector<Face>        faces;
+    std::vector<SlaveNode>   slave_nodes;
     /// The hanging vertices of the slave surfaces at the last search (3D
     /// adaptive meshes): no multiplier, but checked against penetration like
     /// the slave nodes. Only node, pair, normal and size are set; paired
@@ -297,8 +297,8 @@ namespace contact_fem
     /// Length of every face (in 3D the side of a square of its area) at
     /// the configuration of the last search.
     std::vector<double> face_lengths;
-    unsigned int                degree = 1;          ///< of the elements
-    unsigned int                geometry_degree = 1; ///< of the face geometry
+    unsigned int        degree          = 1; ///< of the elements
+    unsigned int        geometry_degree = 1; ///< of the face geometry
     /// How the surfaces are split over the ranks (locally owned faces).
     std::vector<unsigned int> slave_faces_per_rank, master_faces_per_rank;
 
@@ -335,11 +335,11 @@ namespace contact_fem
      * polygons in 3D.
      */
     void
-    check_tiling(const unsigned int                               f,
-                 const std::vector<FaceGeometry>                 &geometries,
-                 const std::vector<unsigned int>                 &masters,
-                 const typename Mortar::Kernel<dim>::Overlaps    &overlaps,
-                 const std::vector<unsigned int>                 &facing) const;
+    check_tiling(const unsigned int                            f,
+                 const std::vector<FaceGeometry>              &geometries,
+                 const std::vector<unsigned int>              &masters,
+                 const typename Mortar::Kernel<dim>::Overlaps &overlaps,
+                 const std::vector<unsigned int>              &facing) const;
 
     /// Adds the operators @p ops of slave face @p f against master face
     /// @p m to the sums of the slave nodes of @p f (D, M, weighted gap) and
@@ -363,10 +363,9 @@ namespace contact_fem
     /// (its full area; D, M and weighted gap of faces that
     /// add_constrained_face() could not take, lumped) to its parents.
     void
-    condense_hanging_vertices(
-      std::map<unsigned int, SlaveNode>                      &slave_data,
-      std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
-      std::map<unsigned int, Tensor<1, dim>>                 &weighted_gap_of_node) const;
+    condense_hanging_vertices(std::map<unsigned int, SlaveNode>                      &slave_data,
+                              std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
+                              std::map<unsigned int, Tensor<1, dim>> &weighted_gap_of_node) const;
 
     /**
      * Adds the @p segments (master face, operators) of slave face @p f in
@@ -381,12 +380,11 @@ namespace contact_fem
      */
     bool
     add_constrained_face(
-      const unsigned int                                                        f,
-      const std::vector<std::pair<unsigned int, typename Mortar::Kernel<dim>::Operators>>
-                                                             &segments,
-      std::map<unsigned int, SlaveNode>                                        &slave_data,
-      std::map<unsigned int, std::map<unsigned int, double>>                   &M_of_node,
-      std::map<unsigned int, Tensor<1, dim>> &weighted_gap_of_node);
+      const unsigned int                                                                   f,
+      const std::vector<std::pair<unsigned int, typename Mortar::Kernel<dim>::Operators>> &segments,
+      std::map<unsigned int, SlaveNode>                      &slave_data,
+      std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
+      std::map<unsigned int, Tensor<1, dim>>                 &weighted_gap_of_node);
 
     /// Fills slave_nodes from the integrated operators: a node is paired
     /// when the master covers a fair part of its support; its M entries,
@@ -395,10 +393,10 @@ namespace contact_fem
     void
     store_slave_nodes(std::map<unsigned int, SlaveNode>                      &slave_data,
                       std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
-                      std::map<unsigned int, Tensor<1, dim>> &weighted_gap_of_node,
-                      const std::vector<double>              &u_at_dofs,
-                      const SurfaceNormals                   &slave_normals,
-                      const SurfaceNormals                   &master_normals);
+                      std::map<unsigned int, Tensor<1, dim>>                 &weighted_gap_of_node,
+                      const std::vector<double>                              &u_at_dofs,
+                      const SurfaceNormals                                   &slave_normals,
+                      const SurfaceNormals                                   &master_normals);
 
     /// Search and integration of pair @p p on the face @p geometries of
     /// @p measures: adds D, M and the weighted gap of the slave nodes of the
@@ -411,16 +409,16 @@ namespace contact_fem
                 const double                                            allowance,
                 std::map<unsigned int, SlaveNode>                      &slave_data,
                 std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
-                std::map<unsigned int, Tensor<1, dim>> &weighted_gap_of_node);
+                std::map<unsigned int, Tensor<1, dim>>                 &weighted_gap_of_node);
 
     /// Displacement at dofs() of the last search, and its reach per pair.
-    std::vector<double>                                 search_displacement;
-    std::vector<double>                                 reach_of_search;
-    std::vector<types::global_dof_index>               interface_dofs;
-    std::map<types::global_dof_index, unsigned int>     dof_position;
-    std::vector<bool>                                   fixed_positions; ///< by position in dofs()
-    IndexSet                                            owned_dofs;
-    MPI_Comm                                            communicator;
+    std::vector<double>                             search_displacement;
+    std::vector<double>                             reach_of_search;
+    std::vector<types::global_dof_index>            interface_dofs;
+    std::map<types::global_dof_index, unsigned int> dof_position;
+    std::vector<bool>                               fixed_positions; ///< by position in dofs()
+    IndexSet                                        owned_dofs;
+    MPI_Comm                                        communicator;
   };
   // The tiling checks differ by dimension (contact_interface_tiling.cc).
   template <>

@@ -22,10 +22,10 @@ namespace contact_fem
   struct ContactParameters
   {
     std::vector<ContactPair> pairs; ///< empty: no contact code runs
-    double search_factor       = 3.;
+    double                   search_factor = 3.;
     /// Mortar operators rebuilt at every load step (else once, on the
     /// reference configuration).
-    bool   updated_kinematics    = false;
+    bool updated_kinematics = false;
     /// Unexplained penetration allowed after convergence, over the element size.
     double penetration_tolerance = 0.05;
     bool   allow_loss_of_contact = false;

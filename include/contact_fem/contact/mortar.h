@@ -92,9 +92,8 @@ namespace contact_fem
      * gap and pressure, at the rim of the master surface (as Kratos does).
      */
     FullMatrix<double>
-    dual_basis_coefficients(const LineFace                                &slave,
-                            const std::vector<std::pair<double, double>> &intervals = {
-                              {-1., 1.}});
+    dual_basis_coefficients(const LineFace                               &slave,
+                            const std::vector<std::pair<double, double>> &intervals = {{-1., 1.}});
 
     /**
      * The slave parameter interval [lower, upper] whose points, moved along
@@ -104,11 +103,11 @@ namespace contact_fem
      * them, or -1 where a slave end does.
      */
     bool
-    overlap(const LineFace                   &slave,
+    overlap(const LineFace                  &slave,
             const std::vector<Tensor<1, 2>> &slave_normals,
-            const LineFace                   &master,
-            double                           &lower,
-            double                           &upper,
+            const LineFace                  &master,
+            double                          &lower,
+            double                          &upper,
             std::array<int, 2>              *bounding_master_ends = nullptr);
 
     /// The mortar blocks of one slave face against one master face.
@@ -160,12 +159,12 @@ namespace contact_fem
      * Returns false if the faces do not overlap.
      */
     bool
-    integrate_pair(const LineFace                   &slave,
+    integrate_pair(const LineFace                  &slave,
                    const std::vector<Tensor<1, 2>> &slave_normals,
                    const FullMatrix<double>        &dual_coefficients,
-                   const LineFace                   &master,
-                   const unsigned int                n_quadrature_points,
-                   SegmentOperators                 &result);
+                   const LineFace                  &master,
+                   const unsigned int               n_quadrature_points,
+                   SegmentOperators                &result);
 
     /// The point of @p face closest to @p x: its parameter in [-1, 1]
     /// (Gauss-Newton from the chord projection, exact for straight faces).

@@ -33,7 +33,7 @@ namespace contact_fem
       struct Overlaps
       {
         std::vector<std::pair<double, double>> intervals;
-        std::vector<std::array<int, 2>>         bounding_ends;
+        std::vector<std::array<int, 2>>        bounding_ends;
       };
       static constexpr unsigned int n_vertices = 2;
       /// The edges of a face (pairs of vertex positions): in 2D its
@@ -125,9 +125,9 @@ namespace contact_fem
       using Operators = QuadSegmentOperators;
       /// The overlap polygons of a slave face with all its masters.
       using Overlaps = std::vector<ParameterPolygon>;
-      static constexpr unsigned int n_vertices = 4;
-      static constexpr std::array<std::array<unsigned int, 2>, 4> edges = {
-        {{{0, 1}}, {{1, 3}}, {{3, 2}}, {{2, 0}}}};
+      static constexpr unsigned int                               n_vertices = 4;
+      static constexpr std::array<std::array<unsigned int, 2>, 4> edges      = {
+             {{{0, 1}}, {{1, 3}}, {{3, 2}}, {{2, 0}}}};
       static constexpr double reference_measure = 4.;
 
       static Parameter

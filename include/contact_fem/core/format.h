@@ -29,13 +29,12 @@ namespace contact_fem
     // Three guard digits beyond the last printed one.
     std::ostringstream guarded;
     guarded << std::scientific << std::setprecision(digits + 3) << value;
-    const std::string text      = guarded.str();
-    const auto        exponent  = text.find('e');
+    const std::string text     = guarded.str();
+    const auto        exponent = text.find('e');
     // inf and nan have no exponent: printed as they are.
-    const int guard = exponent != std::string::npos && exponent >= 3 ?
-                        std::stoi(text.substr(exponent - 3, 3)) :
-                        0;
-    const bool        near_tie  = std::abs(guard - 500) <= 2;
+    const int guard =
+      exponent != std::string::npos && exponent >= 3 ? std::stoi(text.substr(exponent - 3, 3)) : 0;
+    const bool         near_tie = std::abs(guard - 500) <= 2;
     std::ostringstream s;
     s << std::scientific << std::setprecision(digits + (near_tie ? 1 : 0)) << value;
     return s.str();

@@ -63,10 +63,10 @@ namespace contact_fem
       array,
       object
     } type;
-    double                                   number  = 0.;
-    bool                                     boolean = false;
-    std::string                              text;
-    std::vector<Json>                        items;
+    double                                    number  = 0.;
+    bool                                      boolean = false;
+    std::string                               text;
+    std::vector<Json>                         items;
     std::vector<std::pair<std::string, Json>> members;
   };
 } // namespace contact_fem

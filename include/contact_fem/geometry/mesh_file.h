@@ -27,7 +27,7 @@ namespace contact_fem
   {
     /// The origin of the computing frame in the file's coordinates
     /// (choose_frame_origin(); zero for a mesh near the origin).
-    Point<3> frame_origin;
+    Point<3>                  frame_origin;
     std::vector<PhysicalName> physical_names;
     /// A mesh with triangles, tetrahedra or prisms is split into
     /// quadrilaterals or hexahedra (mesh_split.h): what was split ("24
@@ -83,9 +83,9 @@ namespace contact_fem
   template <int dim>
   struct PolygonalBoundary
   {
-    types::boundary_id id = 0;
-    unsigned int       n_kinks  = 0; ///< joints turning by a small nonzero angle
-    unsigned int       n_joints = 0; ///< joints of two faces of this id
+    types::boundary_id id        = 0;
+    unsigned int       n_kinks   = 0;                  ///< joints turning by a small nonzero angle
+    unsigned int       n_joints  = 0;                  ///< joints of two faces of this id
     double             min_angle = 0., max_angle = 0.; ///< of the kinks, radians
     /// Whether the vertices fit one circle (sphere), with these:
     bool       fits_sphere = false;
@@ -113,7 +113,7 @@ namespace contact_fem
    */
   template <int dim>
   std::vector<PolygonalBoundary<dim>>
-  find_polygonal_boundaries(const Triangulation<dim>            &coarse,
+  find_polygonal_boundaries(const Triangulation<dim>              &coarse,
                             const std::vector<types::boundary_id> &skip);
 
   /**

@@ -49,7 +49,7 @@ namespace contact_fem
     /// corner of that element it holds.
     struct Piece
     {
-      int                       type = 0; ///< Gmsh type of the piece (1, 3 or 5)
+      int                       type     = 0; ///< Gmsh type of the piece (1, 3 or 5)
       int                       physical = 0;
       std::vector<unsigned int> vertices;
       std::size_t               parent = 0;
@@ -75,10 +75,10 @@ namespace contact_fem
    * (Gmsh type 15) are dropped: deal.II does not use them beyond 1D.
    */
   SplitMesh
-  split_mesh(const std::vector<GmshElement>              &elements,
+  split_mesh(const std::vector<GmshElement>           &elements,
              const std::unordered_map<long, Point<3>> &coordinates,
-             const Point<3>                             &origin,
-             unsigned int                                dim);
+             const Point<3>                           &origin,
+             unsigned int                              dim);
 
   /// @p mesh as the text of an ASCII MSH 2.2 file (coordinates to 17
   /// digits: read back exactly), for deal.II's reader.

@@ -43,11 +43,11 @@ namespace contact_fem
     /// @p text ('entry; entry; ...') with the id before @p separator in
     /// each entry replaced, and with @p both_sides also the one after it.
     std::string
-    replace_ids(const std::string                         &text,
-                const std::string                         &key,
-                const bool                                 bodies,
-                const char                                 separator,
-                const bool                                 both_sides) const;
+    replace_ids(const std::string &text,
+                const std::string &key,
+                const bool         bodies,
+                const char         separator,
+                const bool         both_sides) const;
 
     std::string
     id_of(const std::string &word, const std::string &key, const bool bodies) const;

@@ -82,7 +82,7 @@ namespace contact_fem
   /// One key that a built-in scene fills in when the input does not set it.
   struct BuiltinSetting
   {
-    std::string path;  ///< "Subsection/Key"
+    std::string path; ///< "Subsection/Key"
     std::string value;
   };
 
@@ -139,14 +139,14 @@ namespace contact_fem
       return type == "hertz cylinder" || type == "hertz sphere" || !manifolds.empty();
     }
 
-    std::string  type;
-    std::string  mesh_file;
+    std::string type;
+    std::string mesh_file;
     /// Where the mesh is computed (a mesh file far from the origin is moved
     /// next to it on reading); the keys of the input stay in the user's
     /// coordinates and go through it.
     ModelFrame<dim> frame;
-    unsigned int global_refinements = 0;
-    double       distortion         = 0.;
+    unsigned int    global_refinements = 0;
+    double          distortion         = 0.;
 
     /// Geometry/Local refinements: cells whose centre lies in the box are
     /// refined 'rounds' times (after the global refinements). In the user's
@@ -202,29 +202,29 @@ namespace contact_fem
 
     struct Hertz
     {
-      double       radius                 = 8.;
-      double       plate_half_width       = 10.;
-      double       plate_thickness        = 1.;
-      double       refinement_half_width  = 0.5;
-      unsigned int cylinder_refinements   = 2;
-      unsigned int contact_refinements    = 6;
-      double       grading_factor         = 4.;
-      unsigned int plate_refinements      = 3;
+      double       radius                = 8.;
+      double       plate_half_width      = 10.;
+      double       plate_thickness       = 1.;
+      double       refinement_half_width = 0.5;
+      unsigned int cylinder_refinements  = 2;
+      unsigned int contact_refinements   = 6;
+      double       grading_factor        = 4.;
+      unsigned int plate_refinements     = 3;
     } hertz;
 
     struct HertzSphere
     {
-      double       radius                = 6.1237;
-      double       plate_width           = 4.;
-      double       plate_thickness       = 1.;
-      double       pole_patch_angle      = 45.; ///< degrees
-      unsigned int sphere_refinements    = 3;
-      unsigned int plate_refinements     = 0;
-      unsigned int contact_refinements   = 0;
-      double       refinement_radius     = 2.;
-      double       grading_factor        = 4.;
-      double       gap                   = 0.; ///< of the lowest point above the plate
-      bool         half                  = false; ///< y >= 0 only (else x, y >= 0)
+      double       radius              = 6.1237;
+      double       plate_width         = 4.;
+      double       plate_thickness     = 1.;
+      double       pole_patch_angle    = 45.; ///< degrees
+      unsigned int sphere_refinements  = 3;
+      unsigned int plate_refinements   = 0;
+      unsigned int contact_refinements = 0;
+      double       refinement_radius   = 2.;
+      double       grading_factor      = 4.;
+      double       gap                 = 0.;    ///< of the lowest point above the plate
+      bool         half                = false; ///< y >= 0 only (else x, y >= 0)
     } hertz_sphere;
 
     struct Blocks

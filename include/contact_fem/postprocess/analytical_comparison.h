@@ -51,8 +51,8 @@ namespace contact_fem
    */
   template <int dim>
   double
-  pressure_l2_relative_error(const ContactState<dim>                        &state,
-                             const std::vector<double>                      &pressure,
+  pressure_l2_relative_error(const ContactState<dim>                         &state,
+                             const std::vector<double>                       &pressure,
                              const std::function<double(const Point<dim> &)> &exact);
 
   template <int dim>
@@ -124,16 +124,18 @@ namespace contact_fem
 
   /// Registers class template @p classname (an AnalyticalComparison<dim>
   /// for dim 2 and 3) under @p name when the library is loaded.
-#define CONTACT_FEM_REGISTER_ANALYTICAL_COMPARISON(classname, name)                      \
-  namespace                                                                           \
-  {                                                                                   \
-    const bool classname##_registered = [] {                                          \
-      AnalyticalComparison<2>::register_comparison(                                   \
-        name, [](const AnalyticalSolution &a) { return std::make_unique<classname<2>>(a); }); \
-      AnalyticalComparison<3>::register_comparison(                                   \
-        name, [](const AnalyticalSolution &a) { return std::make_unique<classname<3>>(a); }); \
-      return true;                                                                    \
-    }();                                                                              \
+#define CONTACT_FEM_REGISTER_ANALYTICAL_COMPARISON(classname, name)                        \
+  namespace                                                                                \
+  {                                                                                        \
+    const bool classname##_registered = [] {                                               \
+      AnalyticalComparison<2>::register_comparison(name, [](const AnalyticalSolution &a) { \
+        return std::make_unique<classname<2>>(a);                                          \
+      });                                                                                  \
+      AnalyticalComparison<3>::register_comparison(name, [](const AnalyticalSolution &a) { \
+        return std::make_unique<classname<3>>(a);                                          \
+      });                                                                                  \
+      return true;                                                                         \
+    }();                                                                                   \
   }
 } // namespace contact_fem
 

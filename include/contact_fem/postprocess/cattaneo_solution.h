@@ -40,9 +40,9 @@ namespace contact_fem
    */
   struct CattaneoSolution
   {
-    double P = 0., Q = 0., mu = 0.;  ///< loads per unit thickness (Q >= 0), Coulomb mu
-    double g = 0.;                   ///< > 0: the Tresca bound instead of mu (then 0)
-    bool   sphere = false;           ///< Mindlin's spheres (3D), else cylinders
+    double P = 0., Q = 0., mu = 0.; ///< loads per unit thickness (Q >= 0), Coulomb mu
+    double g      = 0.;             ///< > 0: the Tresca bound instead of mu (then 0)
+    bool   sphere = false;          ///< Mindlin's spheres (3D), else cylinders
     double a = 0., p_max = 0., c = 0.;
     /// Mindlin-Deresiewicz unloading from the peak Q_star (> 0) to Q (in
     /// [-Q_star, Q_star], along the peak's direction): the traction is
@@ -56,22 +56,22 @@ namespace contact_fem
     CattaneoSolution() = default;
     /// Monotone loading; Q >= mu P (full slip) gives c = 0. With @p tresca,
     /// @p mu is the Tresca bound g.
-    CattaneoSolution(const double P,
-                     const double Q,
-                     const double mu,
-                     const double radius,
-                     const double E_star,
+    CattaneoSolution(const double          P,
+                     const double          Q,
+                     const double          mu,
+                     const double          radius,
+                     const double          E_star,
                      const CattaneoProblem problem = CattaneoProblem::cylinders);
     /// A flag where the problem belongs would be taken for E* of the
     /// unloading constructor: refused at compile time.
     CattaneoSolution(double, double, double, double, double, bool) = delete;
     /// Unloading from @p Q_star to @p Q (Mindlin-Deresiewicz).
-    CattaneoSolution(const double P,
-                     const double Q,
-                     const double Q_star,
-                     const double mu,
-                     const double radius,
-                     const double E_star,
+    CattaneoSolution(const double          P,
+                     const double          Q,
+                     const double          Q_star,
+                     const double          mu,
+                     const double          radius,
+                     const double          E_star,
                      const CattaneoProblem problem = CattaneoProblem::cylinders);
 
     /// The largest tangential load: mu P, or 2 a g under Tresca.
@@ -124,7 +124,7 @@ namespace contact_fem
       monotone,
       unloading,
       none
-    } kind = Kind::monotone;
+    } kind           = Kind::monotone;
     double direction = 0.; ///< +-1: of the (peak) load; 0 while Q = 0
     double Q         = 0.; ///< the last load along direction
     double Q_star    = 0.; ///< unloading: the peak, along direction
@@ -180,8 +180,8 @@ namespace contact_fem
     unsigned int     n_stick = 0, n_slip = 0;
     bool             stick_contiguous = true; ///< no slip node between stick nodes
     double           c_h = 0., stick_center = 0.;
-    double           end_spacing = 0.; ///< mean node spacing at the two ends
-    double           c_error_in_slave_elements = 0.;
+    double           end_spacing                  = 0.; ///< mean node spacing at the two ends
+    double           c_error_in_slave_elements    = 0.;
     double           tangential_l2_relative_error = 0.;
   };
 

@@ -39,7 +39,8 @@ namespace contact_fem
    */
   template <int dim>
   std::vector<CheckerboardFinding>
-  find_checkerboards(const ContactInterface<dim> &interface, const ContactFormulation<dim> &contact);
+  find_checkerboards(const ContactInterface<dim>   &interface,
+                     const ContactFormulation<dim> &contact);
 
   /// The warnings naming each flagged pair, how strong the alternation is
   /// and what to change (the driver prints them once per run).

@@ -39,7 +39,7 @@ namespace contact_fem
     /// the input), or of the fixed points of one body.
     struct Support
     {
-      std::string    label; ///< "boundary 2", "fixed points of body 1"
+      std::string    label;  ///< "boundary 2", "fixed points of body 1"
       std::string    column; ///< "boundary_2", "fixed_points_1" (CSV)
       Tensor<1, dim> force;
     };
@@ -76,24 +76,24 @@ namespace contact_fem
   template <int dim>
   struct ForceInputs
   {
-    const DoFHandler<dim>                     &dof_handler;
+    const DoFHandler<dim> &dof_handler;
     /// K u - f (owned entries) and the Dirichlet constraints whose DoFs
     /// carry the reactions.
-    const TrilinosWrappers::MPI::Vector       &residual;
-    const AffineConstraints<double>           &dirichlet;
-    const std::vector<DisplacementCondition>  &displacements;
+    const TrilinosWrappers::MPI::Vector      &residual;
+    const AffineConstraints<double>          &dirichlet;
+    const std::vector<DisplacementCondition> &displacements;
     /// The fixed points: what else the Dirichlet constraints hold.
-    const std::vector<PointCondition>         &points;
+    const std::vector<PointCondition> &points;
     /// Null without contact.
-    const ContactInterface<dim>               *interface;
-    const ContactFormulation<dim>             *contact;
+    const ContactInterface<dim>   *interface;
+    const ContactFormulation<dim> *contact;
     /// The contact force at the interface DoFs (internal: taken out of the
     /// residual where a support holds a contact node).
-    const std::vector<double>                 &contact_force;
-    const std::vector<ContactPair>            &pairs;
+    const std::vector<double>      &contact_force;
+    const std::vector<ContactPair> &pairs;
     /// Boundary conditions/Rollers: every component of their nodes carries
     /// a part of the reaction (normal to the boundary).
-    const std::vector<types::boundary_id>     &rollers;
+    const std::vector<types::boundary_id> &rollers;
   };
 
   template <int dim>

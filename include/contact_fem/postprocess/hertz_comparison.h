@@ -18,7 +18,9 @@ namespace contact_fem
     using AnalyticalComparison<dim>::AnalyticalComparison;
 
     Json
-    compare(const ContactState<dim> &state, const Json &contact, const Json &reaction) const override;
+    compare(const ContactState<dim> &state,
+            const Json              &contact,
+            const Json              &reaction) const override;
     void
     print(const Json &record, std::ostream &out) const override;
     std::function<double(const Point<dim> &)>

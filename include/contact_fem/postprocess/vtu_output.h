@@ -62,13 +62,13 @@ namespace contact_fem
   private:
     /// Writes @p records as the collection @p name (rank 0), collectively.
     void
-    write_collection(const std::string                                  &name,
+    write_collection(const std::string                                 &name,
                      const std::vector<std::pair<double, std::string>> &records) const;
 
-    std::string  directory;
-    MPI_Comm     comm;
-    unsigned int n_solutions = 0;
-    unsigned int records_cycle = 0;
+    std::string                                 directory;
+    MPI_Comm                                    comm;
+    unsigned int                                n_solutions   = 0;
+    unsigned int                                records_cycle = 0;
     std::vector<std::pair<double, std::string>> cycle_records, surface_records, indicator_records;
   };
 } // namespace contact_fem

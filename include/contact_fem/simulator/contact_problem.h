@@ -107,7 +107,7 @@ namespace contact_fem
     declare_parameters(ParameterHandler &prm);
 
     /// @p prm_directory resolves relative file names of the scene.
-    ContactProblem(ParameterHandler &prm,
+    ContactProblem(ParameterHandler  &prm,
                    const std::string &scene_name,
                    const std::string &prm_directory);
     ~ContactProblem();
@@ -294,9 +294,9 @@ namespace contact_fem
     /// @p prefix.
     void
     report_recovered_tractions(const std::vector<ContactNodeTraction<dim>> &nodes,
-                               const std::vector<SymmetricTensor<2, dim>> &node_stresses,
-                               const std::string                 &prefix,
-                               Json                              &cycle_record) const;
+                               const std::vector<SymmetricTensor<2, dim>>  &node_stresses,
+                               const std::string                           &prefix,
+                               Json                                        &cycle_record) const;
     /// Marks and refines; false if the mesh is kept (nothing to refine).
     bool
     refine_mesh();
@@ -351,8 +351,8 @@ namespace contact_fem
     InputChecks<dim>
     input_checks() const
     {
-      return {scene, materials, boundary_conditions, load_stepping, contact_parameters, degree,
-              comm};
+      return {scene,  materials, boundary_conditions, load_stepping, contact_parameters,
+              degree, comm};
     }
     // --- diagnoses
     /// The diagnoses of the run's present state (contact_diagnosis.h).
@@ -395,7 +395,7 @@ namespace contact_fem
     SolutionView<dim>
     solution_view(const ContactState<dim> *contact_state) const
     {
-      return {dof_handler, *mapping, ghosted_solution, materials, volumetric_projection.get(),
+      return {dof_handler,  *mapping, ghosted_solution, materials, volumetric_projection.get(),
               contact_state};
     }
     void
@@ -428,41 +428,41 @@ namespace contact_fem
     TeeStream          console;
     ConditionalOStream pcout;
 
-    std::string        scene_name;
-    Scene<dim>         scene;
-    Materials<dim>     materials;
-    BoundaryConditions boundary_conditions;
-    LoadStepping       load_stepping;
-    ContactParameters  contact_parameters;
-    NewtonParameters   newton_parameters;
-    AnalyticalSolution analytical;
-    OutputParameters     output;
-    ModelRange           model_range;
-    RefinementParameters refinement;
+    std::string            scene_name;
+    Scene<dim>             scene;
+    Materials<dim>         materials;
+    BoundaryConditions     boundary_conditions;
+    LoadStepping           load_stepping;
+    ContactParameters      contact_parameters;
+    NewtonParameters       newton_parameters;
+    AnalyticalSolution     analytical;
+    OutputParameters       output;
+    ModelRange             model_range;
+    RefinementParameters   refinement;
     StressRecoverySettings spr_settings; ///< the contact-traction penalties of SPR
-    unsigned int       degree;
+    unsigned int           degree;
 
     parallel::distributed::Triangulation<dim> triangulation;
     FESystem<dim>                             fe;
     /// Element degree, or 2 for Q1 on curved boundaries (Finite
     /// element/Mapping degree); made once the scene is known. Degree 2 is a
     /// MappingQCache, filled per mesh.
-    std::unique_ptr<MappingQ<dim>>            mapping;
-    DoFHandler<dim>                           dof_handler;
-    unsigned int                              dof_renumbering_seed = 0;
+    std::unique_ptr<MappingQ<dim>> mapping;
+    DoFHandler<dim>                dof_handler;
+    unsigned int                   dof_renumbering_seed = 0;
     /// Present with Finite element/Volumetric strain = B-bar (after fe and
     /// mapping, which it refers to).
     std::unique_ptr<VolumetricProjection<dim>> volumetric_projection;
-    IndexSet                                  owned_dofs, relevant_dofs, writable_dofs;
+    IndexSet                                   owned_dofs, relevant_dofs, writable_dofs;
 
-    AffineConstraints<double> hanging_constraints;
-    AffineConstraints<double> dirichlet_constraints;
-    InclinedSupports<dim>     inclined_supports; ///< Boundary conditions/Rollers
-    std::vector<types::global_dof_index> fixed_point_dofs; ///< locally relevant
+    AffineConstraints<double>            hanging_constraints;
+    AffineConstraints<double>            dirichlet_constraints;
+    InclinedSupports<dim>                inclined_supports; ///< Boundary conditions/Rollers
+    std::vector<types::global_dof_index> fixed_point_dofs;  ///< locally relevant
     /// Per Output/Displacement probes entry: its vertex DoFs (see
     /// vertex_dofs()).
     std::vector<std::vector<types::global_dof_index>> probe_dofs;
-    AffineConstraints<double> constraints;
+    AffineConstraints<double>                         constraints;
     /// The constraints of the test space when the contact formulation's
     /// is not the trial space (Coulomb slip); else unused.
     AffineConstraints<double> test_constraints;
@@ -476,39 +476,39 @@ namespace contact_fem
     std::vector<unsigned int> linear_iterations_of_step;
     /// Wall time of the multigrid set-ups of this cycle, part of "Solve:
     /// linear".
-    double multigrid_setup_seconds = 0.;
-    static constexpr const char *multigrid_setup_section = "Solve: multigrid setup";
-    TrilinosWrappers::MPI::Vector  system_rhs;
-    TrilinosWrappers::MPI::Vector  solution;         ///< owned
-    TrilinosWrappers::MPI::Vector  ghosted_solution; ///< locally relevant
-    TrilinosWrappers::MPI::Vector  residual;         ///< C_h^T (K u - f), writable
+    double                        multigrid_setup_seconds = 0.;
+    static constexpr const char  *multigrid_setup_section = "Solve: multigrid setup";
+    TrilinosWrappers::MPI::Vector system_rhs;
+    TrilinosWrappers::MPI::Vector solution;         ///< owned
+    TrilinosWrappers::MPI::Vector ghosted_solution; ///< locally relevant
+    TrilinosWrappers::MPI::Vector residual;         ///< C_h^T (K u - f), writable
 
     std::vector<FullMatrix<double>> cell_matrices; ///< by active cell index
     std::vector<Vector<double>>     cell_loads;    ///< by active cell index, may be empty
 
     /// Present only when the scene has contact pairs.
-    std::unique_ptr<ContactInterface<dim>> interface;
+    std::unique_ptr<ContactInterface<dim>>   interface;
     std::unique_ptr<ContactFormulation<dim>> contact;
-    std::vector<double>                    interface_displacement;
-    std::vector<double>                    interface_fixed_values;
-    std::vector<double>                    interface_residual;
-    std::vector<bool>                      interface_dof_fixed;
+    std::vector<double>                      interface_displacement;
+    std::vector<double>                      interface_fixed_values;
+    std::vector<double>                      interface_residual;
+    std::vector<bool>                        interface_dof_fixed;
     /// The search of the interface over the load steps (with contact).
-    std::unique_ptr<SearchControl<dim>>    search;
+    std::unique_ptr<SearchControl<dim>> search;
     /// A point names a vertex closer than this times the cell's diameter
     /// (far above the digits a user types, far below the distance of two
     /// vertices of a valid cell).
-    static constexpr double                vertex_match_tolerance = 1e-3;
+    static constexpr double vertex_match_tolerance = 1e-3;
     /// A direct solve whose residual exceeds this fraction of the
     /// right-hand side has met a singular matrix.
-    static constexpr double                singular_residual_ratio = 1e-3;
+    static constexpr double singular_residual_ratio = 1e-3;
 
-    std::unique_ptr<TimerOutput>       timer; ///< made once the input is valid
-    double                             current_time = 0.;
+    std::unique_ptr<TimerOutput> timer; ///< made once the input is valid
+    double                       current_time = 0.;
     /// The VTU/PVD files (with Output/Write VTU), made with the output directory.
-    std::unique_ptr<VtuOutput<dim>>             vtu_output;
-    Vector<float>                               indicators; ///< of the last estimate
-    double relative_estimate = 0.; ///< eta / |u|_E of the last SPR estimate
+    std::unique_ptr<VtuOutput<dim>> vtu_output;
+    Vector<float>                   indicators; ///< of the last estimate
+    double relative_estimate = 0.;              ///< eta / |u|_E of the last SPR estimate
     /// The linear solver can still answer for the current load step's last
     /// Newton system (LinearSolver::solve_again()).
     bool factorisation_current = false;
@@ -517,10 +517,10 @@ namespace contact_fem
     /// Displacement interpolated from the previous mesh (owned entries).
     std::unique_ptr<TrilinosWrappers::MPI::Vector> transferred_solution;
     unsigned int                                   cycle = 0;
-    std::vector<unsigned int> newton_iterations_of_cycle; ///< per load step
+    std::vector<unsigned int>                      newton_iterations_of_cycle; ///< per load step
     double strain_energy = 0., external_work = 0.; ///< at the last residual
     /// convergence.csv, made with the output directory.
-    std::unique_ptr<ConvergenceTable<dim>>         convergence_table;
+    std::unique_ptr<ConvergenceTable<dim>> convergence_table;
     /// Of InputChecks::check_scene_before_meshing(), printed by run().
     std::string memory_warning;
     /// Set by the first solve_load_step() (started_solving()).

@@ -31,7 +31,7 @@ namespace contact_fem
     /// by more than 1e-6 rad, or a curved manifold is attached), or if it
     /// shares a vertex with a contact surface of @p pairs.
     void
-    initialize(const Triangulation<dim>             &coarse,
+    initialize(const Triangulation<dim>              &coarse,
                const std::vector<types::boundary_id> &ids,
                const std::vector<ContactPair>        &pairs);
 
@@ -85,8 +85,8 @@ namespace contact_fem
       std::vector<types::global_dof_index> dofs;
       std::vector<Tensor<1, dim>>          held_directions; ///< orthonormal
     };
-    std::vector<Node>                                  owned_nodes;
-    std::map<types::global_dof_index, unsigned int>    held;
+    std::vector<Node>                               owned_nodes;
+    std::map<types::global_dof_index, unsigned int> held;
   };
 } // namespace contact_fem
 

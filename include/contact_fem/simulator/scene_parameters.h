@@ -134,16 +134,17 @@ namespace contact_fem
     /// Relative file names are taken relative to @p prm_directory; the
     /// solutions that do not exist in @p dim dimensions are refused.
     void
-    parse_parameters(ParameterHandler &prm, const std::string &prm_directory,
+    parse_parameters(ParameterHandler  &prm,
+                     const std::string &prm_directory,
                      const unsigned int dim);
   };
 
   struct OutputParameters
   {
-    std::string directory = "results";
-    bool        write_vtu              = true;
-    bool        write_pressure_profile = true;
-    bool        print_timing           = true;
+    std::string directory               = "results";
+    bool        write_vtu               = true;
+    bool        write_pressure_profile  = true;
+    bool        print_timing            = true;
     bool        print_newton_iterations = true;
     /// Vertices whose displacement every cycle reports.
     std::vector<BodyPoint> displacement_probes;

@@ -77,8 +77,8 @@ namespace contact_fem
       double excess = 0.; ///< over the node's element size
       /// The worst slave node or hanging slave vertex.
       typename ContactInterface<dim>::SlaveNode node;
-      bool   hanging     = false;
-      double penetration = 0., allowed = 0.;
+      bool                                      hanging     = false;
+      double                                    penetration = 0., allowed = 0.;
     };
     /// Every slave node and hanging slave vertex against the whole master
     /// surface (ContactInterface::surface_distances()).

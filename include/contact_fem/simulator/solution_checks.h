@@ -36,8 +36,8 @@ namespace contact_fem
     /// What the checks read of the run; all of it outlives the checks.
     struct ConvergedSystem
     {
-      const DoFHandler<dim>               &dof_handler;
-      const Mapping<dim>                  &mapping;
+      const DoFHandler<dim> &dof_handler;
+      const Mapping<dim>    &mapping;
       /// All constraints of the last Newton system, and the supports among
       /// them (Fixed, Fixed points, prescribed displacements).
       const AffineConstraints<double>     &constraints;
@@ -65,10 +65,10 @@ namespace contact_fem
     {
       /// Per probed body: which axes its supports hold, which were probed
       /// (with theta G V), which not after a warning.
-      Json        check = Json::array();
+      Json check = Json::array();
       /// One per body that turns too easily.
       std::vector<std::string> warnings;
-      std::string skipped; ///< why the probe could not run, or ""
+      std::string              skipped; ///< why the probe could not run, or ""
     };
 
     /// Loads every body with a face in @p contact_surfaces with a unit

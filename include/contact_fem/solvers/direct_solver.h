@@ -59,9 +59,9 @@ namespace contact_fem
     /// residual.
     double
     solve(const TrilinosWrappers::SparseMatrix &matrix,
-          TrilinosWrappers::MPI::Vector       &x,
-          const TrilinosWrappers::MPI::Vector &rhs,
-          const LinearSystemRequest           &request) override;
+          TrilinosWrappers::MPI::Vector        &x,
+          const TrilinosWrappers::MPI::Vector  &rhs,
+          const LinearSystemRequest            &request) override;
 
     bool
     can_solve_again() const override
@@ -70,8 +70,7 @@ namespace contact_fem
     }
 
     void
-    solve_again(TrilinosWrappers::MPI::Vector       &x,
-                const TrilinosWrappers::MPI::Vector &rhs) override
+    solve_again(TrilinosWrappers::MPI::Vector &x, const TrilinosWrappers::MPI::Vector &rhs) override
     {
       solve_with_last_factors(x, rhs);
     }
@@ -110,11 +109,11 @@ namespace contact_fem
     take_note() override;
 
   private:
-    std::string                           amesos_name;
-    std::string                           note;
+    std::string amesos_name;
+    std::string note;
     /// MUMPS ICNTL(14) once a factorisation ran out of workspace; 0: the
     /// default.
-    int workspace_percent = 0;
+    int                                   workspace_percent = 0;
     std::unique_ptr<Epetra_LinearProblem> problem;
     std::unique_ptr<Amesos_BaseSolver>    solver;
     /// The matrix whose pattern the symbolic factorisation belongs to.

@@ -90,9 +90,9 @@ namespace contact_fem
 
     double
     solve(const TrilinosWrappers::SparseMatrix &matrix,
-          TrilinosWrappers::MPI::Vector       &x,
-          const TrilinosWrappers::MPI::Vector &rhs,
-          const LinearSystemRequest           &request) override;
+          TrilinosWrappers::MPI::Vector        &x,
+          const TrilinosWrappers::MPI::Vector  &rhs,
+          const LinearSystemRequest            &request) override;
 
     unsigned int
     last_iterations() const override
@@ -137,13 +137,13 @@ namespace contact_fem
     ProblemTraits traits;
     /// The modes, concatenated (ML's layout): mode k, owned DoF i at
     /// k * n_owned + i.
-    std::vector<double>                                 null_space;
-    unsigned int                                        n_modes = 0;
+    std::vector<double>                                null_space;
+    unsigned int                                       n_modes = 0;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> preconditioner;
-    const TrilinosWrappers::SparseMatrix               *last_matrix    = nullptr;
-    bool                                                last_symmetric = true;
-    unsigned int                                        iterations     = 0;
-    double                                              setup_seconds  = 0.;
+    const TrilinosWrappers::SparseMatrix              *last_matrix    = nullptr;
+    bool                                               last_symmetric = true;
+    unsigned int                                       iterations     = 0;
+    double                                             setup_seconds  = 0.;
 
     void
     build_preconditioner(const TrilinosWrappers::SparseMatrix &matrix);
@@ -152,10 +152,10 @@ namespace contact_fem
     /// LinearSolverFailure if the target is not reached.
     unsigned int
     iterate(const TrilinosWrappers::SparseMatrix &matrix,
-            TrilinosWrappers::MPI::Vector       &x,
-            const TrilinosWrappers::MPI::Vector &rhs,
-            const bool                           symmetric,
-            const double                         target);
+            TrilinosWrappers::MPI::Vector        &x,
+            const TrilinosWrappers::MPI::Vector  &rhs,
+            const bool                            symmetric,
+            const double                          target);
   };
 } // namespace contact_fem
 

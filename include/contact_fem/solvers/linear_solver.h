@@ -133,9 +133,9 @@ namespace contact_fem
     /// returns the l2 norm of the final residual.
     virtual double
     solve(const TrilinosWrappers::SparseMatrix &matrix,
-          TrilinosWrappers::MPI::Vector       &x,
-          const TrilinosWrappers::MPI::Vector &rhs,
-          const LinearSystemRequest           &request) = 0;
+          TrilinosWrappers::MPI::Vector        &x,
+          const TrilinosWrappers::MPI::Vector  &rhs,
+          const LinearSystemRequest            &request) = 0;
 
     /// Krylov iterations of the last solve(); 0 for a direct solver.
     virtual unsigned int

@@ -11,10 +11,10 @@ namespace contact_fem
 
   struct LoadStepping
   {
-    double       end_time = 1.;
-    unsigned int n_steps  = 1;
-    unsigned int max_splits   = 4;  ///< times a failing step may be split
-    unsigned int split_factor = 2;  ///< sub-steps a failing step is split into
+    double       end_time     = 1.;
+    unsigned int n_steps      = 1;
+    unsigned int max_splits   = 4; ///< times a failing step may be split
+    unsigned int split_factor = 2; ///< sub-steps a failing step is split into
 
     static void
     declare_parameters(ParameterHandler &prm);

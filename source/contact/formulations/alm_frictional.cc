@@ -79,8 +79,7 @@ namespace contact_fem
 
   template <int dim>
   double
-  AlmFrictional<dim>::slip_cone_stiffness(const SlaveNode             &s,
-                                          const TangentialVector<dim> &xi) const
+  AlmFrictional<dim>::slip_cone_stiffness(const SlaveNode &s, const TangentialVector<dim> &xi) const
   {
     if (dim == 2 || !sets.slips(s.node, this->active) || frictionless_law(s))
       return 0.;
@@ -254,7 +253,7 @@ namespace contact_fem
       {
         const Tensor<1, dim> &tau               = frame[0];
         const double          tangential_offset = old_relative * tau;
-        const double          det = s.normal[0] * tau[1] - s.normal[1] * tau[0];
+        const double          det               = s.normal[0] * tau[1] - s.normal[1] * tau[0];
         offset[0] = (normal_offset * tau[1] - s.normal[1] * tangential_offset) / det;
         offset[1] = (s.normal[0] * tangential_offset - tau[0] * normal_offset) / det;
       }
@@ -321,8 +320,8 @@ namespace contact_fem
         line.add(interface.nodes[master], c, value / s.D, interface, fixed_values, true);
         for (unsigned int d = 0; d < dim; ++d)
           if (d != c)
-            line.add(interface.nodes[master], d, -ratio[d] * value / s.D, interface,
-                     fixed_values, true);
+            line.add(interface.nodes[master], d, -ratio[d] * value / s.D, interface, fixed_values,
+                     true);
       }
     line.store(slave.dofs[c], constraints);
   }
@@ -361,8 +360,9 @@ namespace contact_fem
             add_slip_constraint(interface, s, fixed_values, constraints, false);
         }
     // The active nodes held by a support: frictionless gap lines.
-    this->add_gap_constraints(interface, fixed_values, constraints, true,
-                              [&](const SlaveNode &s) { return carries_friction(interface, s); });
+    this->add_gap_constraints(interface, fixed_values, constraints, true, [&](const SlaveNode &s) {
+      return carries_friction(interface, s);
+    });
   }
 
   template <int dim>
@@ -379,8 +379,9 @@ namespace contact_fem
           else
             add_slip_constraint(interface, s, fixed_values, constraints, true);
         }
-    this->add_gap_constraints(interface, fixed_values, constraints, true,
-                              [&](const SlaveNode &s) { return carries_friction(interface, s); });
+    this->add_gap_constraints(interface, fixed_values, constraints, true, [&](const SlaveNode &s) {
+      return carries_friction(interface, s);
+    });
   }
 
   template <int dim>
@@ -475,8 +476,8 @@ namespace contact_fem
             const auto &master = interface.nodes[m];
             if (master.fixed[d])
               {
-                fixed_slip -= value / s.D * e[d] *
-                              this->dirichlet_values[interface.position(master.dofs[d])];
+                fixed_slip -=
+                  value / s.D * e[d] * this->dirichlet_values[interface.position(master.dofs[d])];
                 continue;
               }
             dofs.push_back(master.dofs[d]);
@@ -484,8 +485,7 @@ namespace contact_fem
           }
     const std::vector<double> zero(interface.dofs().size(), 0.);
     const double              old_slip =
-      e * weighted_relative_displacement(interface, s, zero, converged_displacement) -
-      fixed_slip;
+      e * weighted_relative_displacement(interface, s, zero, converged_displacement) - fixed_slip;
     const double       factor = s.D * cone_stiffness[s.node];
     const unsigned int size   = dofs.size();
     FullMatrix<double> local_matrix(size, size);
@@ -513,7 +513,7 @@ namespace contact_fem
         if (!s.paired || !this->active[s.node])
           {
             this->pressure[s.node] = 0.;
-            tangential[s.node] = TangentialVector<dim>();
+            tangential[s.node]     = TangentialVector<dim>();
             continue;
           }
         const auto &slave = interface.nodes[s.node];
@@ -521,9 +521,9 @@ namespace contact_fem
           {
             // A support carries the tangential force: the pressure from the
             // eliminated component, as frictionless.
-            const unsigned int c   = this->eliminated_component(interface, s);
-            this->pressure[s.node] = -residual[interface.position(slave.dofs[c])] /
-                                     (s.D * s.normal[c]);
+            const unsigned int c = this->eliminated_component(interface, s);
+            this->pressure[s.node] =
+              -residual[interface.position(slave.dofs[c])] / (s.D * s.normal[c]);
             tangential[s.node] = TangentialVector<dim>();
             continue;
           }
@@ -608,8 +608,8 @@ namespace contact_fem
             const double p  = this->pressure[s.node];
             const double rt = !sets.slips(s.node, this->active) ?
                                 magnitude<dim>(slip_increment(interface, s, u)) :
-                                magnitude<dim>(tangential[s.node] -
-                                               laws[s.pair]->threshold(p) * sets.direction[s.node]) /
+                                magnitude<dim>(tangential[s.node] - laws[s.pair]->threshold(p) *
+                                                                      sets.direction[s.node]) /
                                   k;
             sum += rt * rt;
           }
@@ -664,8 +664,7 @@ namespace contact_fem
           const TangentialVector<dim> &t     = tangential[s.node];
           largest_bound                      = std::max(largest_bound, bound);
           if (sets.slips(s.node, this->active))
-            off_bound =
-              std::max(off_bound, magnitude<dim>(t - bound * sets.direction[s.node]));
+            off_bound = std::max(off_bound, magnitude<dim>(t - bound * sets.direction[s.node]));
           else
             outside = std::max(outside, magnitude<dim>(t) - bound);
         }

@@ -72,8 +72,8 @@ namespace contact_fem
             this->pressure[s.node] = 0.;
             continue;
           }
-        const unsigned int c = this->eliminated_component(interface, s);
-        const double       r = residual[interface.position(interface.nodes[s.node].dofs[c])];
+        const unsigned int c   = this->eliminated_component(interface, s);
+        const double       r   = residual[interface.position(interface.nodes[s.node].dofs[c])];
         this->pressure[s.node] = -r / (s.D * s.normal[c]);
       }
   }

@@ -110,9 +110,7 @@ namespace contact_fem
   ContactFormulation<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Contact");
-    prm.declare_entry("Formulation",
-                      "alm frictionless",
-                      Patterns::Selection(names()),
+    prm.declare_entry("Formulation", "alm frictionless", Patterns::Selection(names()),
                       "Contact formulation: 'alm frictionless' = augmented "
                       "Lagrangian, dual mortar, scalar normal multiplier, "
                       "semi-smooth Newton: the gap of an active node is an exact "

@@ -8,11 +8,11 @@ namespace contact_fem
 {
   template <int dim>
   void
-  add_friction_totals(const ContactInterface<dim>   &interface,
-                      const ContactFormulation<dim> &contact,
+  add_friction_totals(const ContactInterface<dim>              &interface,
+                      const ContactFormulation<dim>            &contact,
                       const std::vector<TangentialVector<dim>> &accepted_slip,
                       const SlipHistory<dim>                   &history,
-                      Json                          &result)
+                      Json                                     &result)
   {
     // Totals over the active slave nodes of the force the slave exerts on
     // the master, split along each node's own normal and tangent (2D); in
@@ -23,10 +23,9 @@ namespace contact_fem
     for (const auto &s : interface.slave_nodes)
       if (s.paired && contact.is_active(s.node))
         {
-          const Tensor<1, dim> lambda = contact.traction(s);
+          const Tensor<1, dim> lambda   = contact.traction(s);
           const Tensor<1, dim> t_vector = tangential_traction_vector(contact, s);
-          const double         t =
-            dim == 2 ? frame_tangential_traction(contact, s) : t_vector.norm();
+          const double t = dim == 2 ? frame_tangential_traction(contact, s) : t_vector.norm();
           normal += s.D * contact.normal_pressure(s.node);
           tangential += s.D * t;
           tangential_force += s.D * t_vector;
@@ -45,7 +44,7 @@ namespace contact_fem
       components.push(force[d]);
     if (dim == 3)
       {
-        tangential                = tangential_force.norm();
+        tangential                 = tangential_force.norm();
         Json tangential_components = Json::array();
         for (unsigned int d = 0; d < dim; ++d)
           tangential_components.push(tangential_force[d]);
@@ -70,12 +69,12 @@ namespace contact_fem
     const double normal     = contact["total_normal_contact_force"].number_value();
     const double tangential = contact["total_tangential_contact_force"].number_value();
     const double scale      = reaction["force_scale"].number_value();
-    out << "    stick / slip nodes:           " << contact["stick_nodes"].number_value()
-        << " / " << contact["slip_nodes"].number_value() << std::endl
+    out << "    stick / slip nodes:           " << contact["stick_nodes"].number_value() << " / "
+        << contact["slip_nodes"].number_value() << std::endl
         << "    normal contact force:         " << force_text(normal, scale) << std::endl
         << "    tangential contact force:     " << force_text(tangential, scale) << std::endl
-        << "    active contact length:        "
-        << contact["active_contact_length"].number_value() << std::endl
+        << "    active contact length:        " << contact["active_contact_length"].number_value()
+        << std::endl
         << "    tangential / normal force:    "
         << (std::abs(tangential) < 1e-10 * scale || normal <= 0. ?
               std::string("0 (no tangential force)") :
@@ -87,21 +86,22 @@ namespace contact_fem
     const Json &support   = reaction["support_reaction_components"];
     const Json &imbalance = reaction["relative_imbalance_components"];
     for (unsigned int d = 0; d < dim; ++d)
-      out << "    balance in " << "xyz"[d] << ": load "
-          << force_text(load[d].number_value(), scale) << ", support reaction "
-          << force_text(support[d].number_value(), scale) << ", relative imbalance "
-          << value_or_ok(imbalance[d].number_value(), 1e-10) << std::endl;
+      out << "    balance in "
+          << "xyz"[d] << ": load " << force_text(load[d].number_value(), scale)
+          << ", support reaction " << force_text(support[d].number_value(), scale)
+          << ", relative imbalance " << value_or_ok(imbalance[d].number_value(), 1e-10)
+          << std::endl;
   }
 
   template <int dim>
   std::vector<typename ContactFormulation<dim>::NodalField>
-  friction_nodal_fields(const ContactInterface<dim>   &interface,
-                        const ContactFormulation<dim> &contact,
+  friction_nodal_fields(const ContactInterface<dim>              &interface,
+                        const ContactFormulation<dim>            &contact,
                         const std::vector<TangentialVector<dim>> &accepted_slip,
                         const SlipHistory<dim>                   &history)
   {
-    const unsigned int  n_nodes = interface.nodes.size();
-    std::vector<double> stick(n_nodes, 0.);
+    const unsigned int                                        n_nodes = interface.nodes.size();
+    std::vector<double>                                       stick(n_nodes, 0.);
     std::vector<typename ContactFormulation<dim>::NodalField> fields;
     if constexpr (dim == 2)
       {
@@ -109,10 +109,9 @@ namespace contact_fem
         for (const auto &s : interface.slave_nodes)
           if (s.paired)
             {
-              tangential[s.node] = frame_tangential_traction(contact, s);
-              accumulated[s.node] =
-                history.displacement[s.node] *
-                ContactFormulation<dim>::tangent(contact.frame_normal(s));
+              tangential[s.node]  = frame_tangential_traction(contact, s);
+              accumulated[s.node] = history.displacement[s.node] *
+                                    ContactFormulation<dim>::tangent(contact.frame_normal(s));
             }
         for (unsigned int n = 0; n < n_nodes; ++n)
           slip[n] = accepted_slip[n][0];
@@ -162,8 +161,8 @@ namespace contact_fem
                            const unsigned int changes)
   {
     std::ostringstream s;
-    s << " " << std::setw(5) << n_stick << " | " << std::setw(5) << n_slip << " | "
-      << std::setw(7) << (iteration == 0 ? std::string("-") : std::to_string(changes)) << " |";
+    s << " " << std::setw(5) << n_stick << " | " << std::setw(5) << n_slip << " | " << std::setw(7)
+      << (iteration == 0 ? std::string("-") : std::to_string(changes)) << " |";
     return s.str();
   }
 

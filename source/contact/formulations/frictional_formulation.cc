@@ -46,8 +46,7 @@ namespace contact_fem
 
   template <int dim, class NormalPart>
   std::vector<typename ContactFormulation<dim>::NodalField>
-  FrictionalFormulation<dim, NormalPart>::nodal_fields(
-    const ContactInterface<dim> &interface) const
+  FrictionalFormulation<dim, NormalPart>::nodal_fields(const ContactInterface<dim> &interface) const
   {
     return friction_nodal_fields(interface, *this, last_step_slip, slip_history);
   }

@@ -36,9 +36,7 @@ namespace contact_fem
   FrictionlessFormulation<dim>::Parameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Contact");
-    prm.declare_entry("Penalty",
-                      "auto",
-                      Patterns::Anything(),
+    prm.declare_entry("Penalty", "auto", Patterns::Anything(),
                       "Penalty eps. 'alm frictionless': of the augmented pressure "
                       "lambda - eps * gap that decides the active set (it cannot "
                       "change the converged answer); 'auto' = stiffness factor * "
@@ -47,20 +45,14 @@ namespace contact_fem
                       "1e4 * stiffness factor * min(E/h) (penetrations ~1e-4 h * "
                       "pressure / E), or, with Adaptive penalty, the starting value "
                       "stiffness factor * min(E/h). Units: stress / length.");
-    prm.declare_entry("Scale factor",
-                      "auto",
-                      Patterns::Anything(),
+    prm.declare_entry("Scale factor", "auto", Patterns::Anything(),
                       "Scale factor k of the multipliers (the multiplier residual "
                       "is reported as (lambda - max(0, lambda - eps g)) / k, a "
                       "length). 'auto' = stiffness factor * min(E/h). Units: stress "
                       "/ length.");
-    prm.declare_entry("Stiffness factor",
-                      "1",
-                      Patterns::Double(0.),
+    prm.declare_entry("Stiffness factor", "1", Patterns::Double(0.),
                       "Multiplies the automatic penalty and scale factor.");
-    prm.declare_entry("Active check factor",
-                      "1e-2",
-                      Patterns::Double(0.),
+    prm.declare_entry("Active check factor", "1e-2", Patterns::Double(0.),
                       "At the first load step, slave nodes whose gap is below this "
                       "factor times their nodal size start in the active set.");
     prm.leave_subsection();
@@ -92,13 +84,12 @@ namespace contact_fem
     prm.enter_subsection("Contact");
     const bool adaptive = prm.get_bool("Adaptive penalty");
     prm.leave_subsection();
-    AssertThrow(!adaptive,
-                ExcMessage("Contact/Adaptive penalty = true needs a penalty formulation "
-                           "(penalty frictionless or penalty frictional): in '" +
-                           formulation +
-                           "' the gap of an active node is an exact constraint and the "
-                           "penalty only scales the active-set test, so adapting it "
-                           "changes nothing."));
+    AssertThrow(!adaptive, ExcMessage("Contact/Adaptive penalty = true needs a penalty formulation "
+                                      "(penalty frictionless or penalty frictional): in '" +
+                                      formulation +
+                                      "' the gap of an active node is an exact constraint and the "
+                                      "penalty only scales the active-set test, so adapting it "
+                                      "changes nothing."));
     return parameters;
   }
 
@@ -163,14 +154,14 @@ namespace contact_fem
         const auto &stat     = interface.statistics[p];
         double      E_over_h = 0.;
         if (stat.mean_slave_size > 0.)
-          E_over_h = parameters.stiffness_factor *
-                     std::min(stat.slave_modulus / stat.mean_slave_size,
-                              stat.master_modulus / stat.mean_master_size);
+          E_over_h =
+            parameters.stiffness_factor * std::min(stat.slave_modulus / stat.mean_slave_size,
+                                                   stat.master_modulus / stat.mean_master_size);
         const double automatic = penalty_factor * E_over_h;
-        penalty[p] = parameters.penalty > 0. ? parameters.penalty : automatic;
+        penalty[p]             = parameters.penalty > 0. ? parameters.penalty : automatic;
         if (parameters.penalty > 0. && automatic > 0.)
           penalty_ratio = std::max(penalty_ratio, parameters.penalty / automatic);
-        scale[p]   = parameters.scale_factor > 0. ? parameters.scale_factor : E_over_h;
+        scale[p] = parameters.scale_factor > 0. ? parameters.scale_factor : E_over_h;
         if (scale[p] <= 0.)
           scale[p] = 1.;
       }
@@ -178,11 +169,10 @@ namespace contact_fem
 
   template <int dim>
   void
-  FrictionlessFormulation<dim>::gap_gradient(
-    const ContactInterface<dim>                     &interface,
-    const typename ContactInterface<dim>::SlaveNode &s,
-    std::vector<types::global_dof_index>            &dofs,
-    std::vector<double>                             &gradient) const
+  FrictionlessFormulation<dim>::gap_gradient(const ContactInterface<dim> &interface,
+                                             const typename ContactInterface<dim>::SlaveNode &s,
+                                             std::vector<types::global_dof_index>            &dofs,
+                                             std::vector<double> &gradient) const
   {
     dofs.clear();
     gradient.clear();
@@ -252,10 +242,11 @@ namespace contact_fem
 
   template <int dim>
   void
-  FrictionlessFormulation<dim>::add_gap_constraints(const ContactInterface<dim> &interface,
-                                                    const std::vector<double>   &fixed_values,
-                                                    AffineConstraints<double>   &constraints,
-                                                    const bool only_active,
+  FrictionlessFormulation<dim>::add_gap_constraints(
+    const ContactInterface<dim>                                                  &interface,
+    const std::vector<double>                                                    &fixed_values,
+    AffineConstraints<double>                                                    &constraints,
+    const bool                                                                    only_active,
     const std::function<bool(const typename ContactInterface<dim>::SlaveNode &)> &skip) const
   {
     for (const auto &s : interface.slave_nodes)
@@ -271,12 +262,11 @@ namespace contact_fem
 
   template <int dim>
   void
-  FrictionlessFormulation<dim>::add_gap_line(
-    const ContactInterface<dim>                     &interface,
-    const typename ContactInterface<dim>::SlaveNode &s,
-    const unsigned int                               c,
-    const std::vector<double>                       &fixed_values,
-    AffineConstraints<double>                       &constraints) const
+  FrictionlessFormulation<dim>::add_gap_line(const ContactInterface<dim> &interface,
+                                             const typename ContactInterface<dim>::SlaveNode &s,
+                                             const unsigned int                               c,
+                                             const std::vector<double> &fixed_values,
+                                             AffineConstraints<double> &constraints) const
   {
     const auto &slave = interface.nodes[s.node];
     if (!constraints.can_store_line(slave.dofs[c]) || constraints.is_constrained(slave.dofs[c]))
@@ -312,8 +302,7 @@ namespace contact_fem
         if (!s.paired || lambda == 0.)
           continue;
         for (unsigned int d = 0; d < dim; ++d)
-          force[interface.position(interface.nodes[s.node].dofs[d])] -=
-            lambda * s.D * s.normal[d];
+          force[interface.position(interface.nodes[s.node].dofs[d])] -= lambda * s.D * s.normal[d];
         for (const auto &[m, value] : s.M)
           for (unsigned int d = 0; d < dim; ++d)
             force[interface.position(interface.nodes[m].dofs[d])] += lambda * value * s.normal[d];

@@ -35,9 +35,7 @@ namespace contact_fem
   PenaltyFrictional<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Contact");
-    prm.declare_entry("Tangential penalty",
-                      "auto",
-                      Patterns::Anything(),
+    prm.declare_entry("Tangential penalty", "auto", Patterns::Anything(),
                       "'penalty frictional' only: the tangential penalty eps_t of the "
                       "return mapping (trial traction t - eps_t * slip increment; a "
                       "sticking node slips elastically by t / eps_t). 'auto' = the "
@@ -57,8 +55,8 @@ namespace contact_fem
                            "0.2'); for frictionless contact use Contact/Formulation = "
                            "penalty frictionless."));
     prm.enter_subsection("Contact");
-    tangential_penalty = parse_auto_or_positive(prm.get("Tangential penalty"),
-                                                "Contact/Tangential penalty");
+    tangential_penalty =
+      parse_auto_or_positive(prm.get("Tangential penalty"), "Contact/Tangential penalty");
     prm.leave_subsection();
   }
 
@@ -110,8 +108,8 @@ namespace contact_fem
                                         const double                 p,
                                         const TangentialVector<dim> &xi) const
   {
-    const TangentialVector<dim> trial = trial_traction(s, xi);
-    const double                size  = magnitude<dim>(trial);
+    const TangentialVector<dim> trial     = trial_traction(s, xi);
+    const double                size      = magnitude<dim>(trial);
     const TangentialVector<dim> direction = unit_direction<dim>(trial, size);
     if (pure_slip || frictionless_law(s))
       return direction;
@@ -190,7 +188,7 @@ namespace contact_fem
 
   template <int dim>
   void
-  PenaltyFrictional<dim>::add_sparsity(const ContactInterface<dim>    &interface,
+  PenaltyFrictional<dim>::add_sparsity(const ContactInterface<dim>     &interface,
                                        const AffineConstraints<double> &constraints,
                                        const IndexSet                  &owned,
                                        DynamicSparsityPattern          &pattern) const
@@ -217,21 +215,21 @@ namespace contact_fem
 
   template <int dim>
   void
-  PenaltyFrictional<dim>::assemble(const ContactInterface<dim>    &interface,
+  PenaltyFrictional<dim>::assemble(const ContactInterface<dim>     &interface,
                                    const AffineConstraints<double> &constraints,
                                    const AffineConstraints<double> &,
-                                   const IndexSet                  &owned,
-                                   TrilinosWrappers::SparseMatrix  &matrix,
-                                   TrilinosWrappers::MPI::Vector   &rhs) const
+                                   const IndexSet                 &owned,
+                                   TrilinosWrappers::SparseMatrix &matrix,
+                                   TrilinosWrappers::MPI::Vector  &rhs) const
   {
     PenaltyFrictionless<dim>::assemble(interface, constraints, constraints, owned, matrix, rhs);
     // The tangential force D_j t_j grad xi_j with t_j linear in u:
     // stick: t = t_n - eps_t grad xi . (u - u_n);
     // slip:  t = sigma (T(p_k) + T'(p_k) (p(u) - p_k)), p(u) = -eps_n (g(0) +
     // grad g . u) (exact for Coulomb and Tresca).
-    const std::vector<double>            zero(interface.dofs().size(), 0.);
-    std::vector<types::global_dof_index> dofs;
-    std::vector<double>                  g_gradient;
+    const std::vector<double>                zero(interface.dofs().size(), 0.);
+    std::vector<types::global_dof_index>     dofs;
+    std::vector<double>                      g_gradient;
     std::array<std::vector<double>, dim - 1> xi_gradient;
     for (const auto &s : interface.slave_nodes)
       {
@@ -270,14 +268,14 @@ namespace contact_fem
             const double dT    = laws[s.pair]->threshold_derivative(p);
             const double g0    = interface.gap(s, zero);
             // 3D: T d(t*) linearised across d, (T / |t*|) P t*(u), P = I - d d^T.
-            const double                a          = cone_factor[s.node];
-            const TangentialVector<dim> history    = accepted_tangential[s.node] +
-                                                  eps_t * xi_reference;
+            const double                a = cone_factor[s.node];
+            const TangentialVector<dim> history =
+              accepted_tangential[s.node] + eps_t * xi_reference;
             const TangentialVector<dim> cone_trial = history - (direction * history) * direction;
             for (unsigned int k = 0; k < dim - 1; ++k)
               {
-                const double load   = s.D * direction[k] * (T - dT * p - dT * eps_n * g0) +
-                                    s.D * a * cone_trial[k];
+                const double load =
+                  s.D * direction[k] * (T - dT * p - dT * eps_n * g0) + s.D * a * cone_trial[k];
                 const double factor = s.D * direction[k] * dT * eps_n;
                 for (unsigned int a_ = 0; a_ < n; ++a_)
                   {
@@ -285,9 +283,9 @@ namespace contact_fem
                       {
                         local_matrix(a_, b) += factor * xi_gradient[k][a_] * g_gradient[b];
                         for (unsigned int l = 0; l < dim - 1 && a != 0.; ++l)
-                          local_matrix(a_, b) += s.D * a * eps_t *
-                                                 ((k == l ? 1. : 0.) - direction[k] * direction[l]) *
-                                                 xi_gradient[k][a_] * xi_gradient[l][b];
+                          local_matrix(a_, b) +=
+                            s.D * a * eps_t * ((k == l ? 1. : 0.) - direction[k] * direction[l]) *
+                            xi_gradient[k][a_] * xi_gradient[l][b];
                       }
                     local_rhs(a_) += load * xi_gradient[k][a_];
                   }
@@ -325,12 +323,11 @@ namespace contact_fem
         // through stick: its slip solve overshoots (with eps_t ~ 1e4 E/h a
         // node that should stick swings from one bound to the other, period
         // 2, if the direction may flip directly).
-        if (was_active[s.node] && old.norm_square() != 0. && direction * old < 0. &&
-            !pure_slip && !frictionless_law(s))
+        if (was_active[s.node] && old.norm_square() != 0. && direction * old < 0. && !pure_slip &&
+            !frictionless_law(s))
           direction = TangentialVector<dim>();
         // Under a law without friction the direction changes nothing.
-        if (was_active[s.node] && stick_slip_changed<dim>(old, direction) &&
-            !frictionless_law(s))
+        if (was_active[s.node] && stick_slip_changed<dim>(old, direction) && !frictionless_law(s))
           {
             ++changes;
             ++last_stick_slip_changes;
@@ -415,8 +412,7 @@ namespace contact_fem
 
   template <int dim>
   void
-  PenaltyFrictional<dim>::add_results(const ContactInterface<dim> &interface,
-                                      Json                        &contact) const
+  PenaltyFrictional<dim>::add_results(const ContactInterface<dim> &interface, Json &contact) const
   {
     PenaltyFrictionless<dim>::add_results(interface, contact);
     contact.set("friction", this->law_names())
@@ -490,8 +486,7 @@ namespace contact_fem
         << " (stick nodes, |t| / eps_t)" << std::endl;
     if (elastic_slip > allowed_elastic_slip)
       out << "  Warning: stick nodes move up to " << scientific(elastic_slip, 2)
-          << " h elastically under the tangential penalty (more than "
-          << allowed_elastic_slip
+          << " h elastically under the tangential penalty (more than " << allowed_elastic_slip
           << " h): the regularisation decides what sticks and what slips. Raise "
              "Contact/Tangential penalty (auto: that of the normal penalty) or use "
              "alm frictional."
@@ -499,12 +494,11 @@ namespace contact_fem
     // The forces themselves are printed by print_friction_totals().
     if (normal_force == 0.)
       return;
-    const double ratio = tangential_force / normal_force;
-    const bool one_coulomb_law =
-      std::all_of(laws.begin(), laws.end(), [&](const auto &law) {
-        return law->threshold(0.) == 0. &&
-               law->threshold_derivative(1.) == laws[0]->threshold_derivative(1.);
-      });
+    const double ratio           = tangential_force / normal_force;
+    const bool   one_coulomb_law = std::all_of(laws.begin(), laws.end(), [&](const auto &law) {
+      return law->threshold(0.) == 0. &&
+             law->threshold_derivative(1.) == laws[0]->threshold_derivative(1.);
+    });
     if (one_coulomb_law && all_slip && one_way && !first)
       {
         // Relative to mu (absolute for mu = 0).

@@ -13,17 +13,13 @@ namespace contact_fem
   PenaltyFrictionless<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Contact");
-    prm.declare_entry("Adaptive penalty",
-                      "false",
-                      Patterns::Bool(),
+    prm.declare_entry("Adaptive penalty", "false", Patterns::Bool(),
                       "'penalty frictionless' only: adapt the penalty of every "
                       "slave node in every Newton iteration from the change of its "
                       "penetration (Bussetta, Marceau and Ponthot's rule) until "
                       "each penetration is below Maximum penetration factor * h; a "
                       "node whose penalty changed counts as an active-set change.");
-    prm.declare_entry("Maximum penetration factor",
-                      "1e-3",
-                      Patterns::Double(0.),
+    prm.declare_entry("Maximum penetration factor", "1e-3", Patterns::Double(0.),
                       "Adaptive penalty: the allowed penetration of a slave node, "
                       "as a fraction of its element size h.");
     prm.leave_subsection();
@@ -108,7 +104,7 @@ namespace contact_fem
 
   template <int dim>
   void
-  PenaltyFrictionless<dim>::add_sparsity(const ContactInterface<dim>    &interface,
+  PenaltyFrictionless<dim>::add_sparsity(const ContactInterface<dim>     &interface,
                                          const AffineConstraints<double> &constraints,
                                          const IndexSet                  &owned,
                                          DynamicSparsityPattern          &pattern) const
@@ -125,12 +121,12 @@ namespace contact_fem
 
   template <int dim>
   void
-  PenaltyFrictionless<dim>::assemble(const ContactInterface<dim>    &interface,
+  PenaltyFrictionless<dim>::assemble(const ContactInterface<dim>     &interface,
                                      const AffineConstraints<double> &constraints,
                                      const AffineConstraints<double> &,
-                                     const IndexSet                  &owned,
-                                     TrilinosWrappers::SparseMatrix  &matrix,
-                                     TrilinosWrappers::MPI::Vector   &rhs) const
+                                     const IndexSet                 &owned,
+                                     TrilinosWrappers::SparseMatrix &matrix,
+                                     TrilinosWrappers::MPI::Vector  &rhs) const
   {
     // g_j is affine in u within a load step: g_j(u) = g_j(0) + grad g_j . u.
     const std::vector<double>            zero(interface.dofs().size(), 0.);
@@ -187,14 +183,13 @@ namespace contact_fem
             const double eps =
               std::clamp(adapted_penalty(node_penalty[s.node], -g, -previous_gap[s.node],
                                          penetration_factor * s.size),
-                         1e-6 * this->penalty[s.pair],
-                         1e12 * this->penalty[s.pair]);
+                         1e-6 * this->penalty[s.pair], 1e12 * this->penalty[s.pair]);
             if (eps != node_penalty[s.node])
               ++changes;
             node_penalty[s.node] = eps;
           }
-        previous_gap[s.node]   = g;
-        this->active[s.node]   = now_active;
+        previous_gap[s.node] = g;
+        this->active[s.node] = now_active;
       }
     return changes;
   }
@@ -220,8 +215,7 @@ namespace contact_fem
 
   template <int dim>
   void
-  PenaltyFrictionless<dim>::add_results(const ContactInterface<dim> &interface,
-                                        Json                        &contact) const
+  PenaltyFrictionless<dim>::add_results(const ContactInterface<dim> &interface, Json &contact) const
   {
     FrictionlessFormulation<dim>::add_results(interface, contact);
     if (!adaptive)
@@ -271,9 +265,8 @@ namespace contact_fem
     if (q > 0. && p < 0.)
       // Pushed out: soften by the ratio of the two penetrations (more
       // strongly if the previous one was within the limit).
-      result = std::abs(q) > allowed ?
-                 std::abs(eps * q / p * (std::abs(p) + allowed) / (p - q)) :
-                 std::abs(eps * q / (10. * p));
+      result = std::abs(q) > allowed ? std::abs(eps * q / p * (std::abs(p) + allowed) / (p - q)) :
+                                       std::abs(eps * q / (10. * p));
     else if (p > allowed)
       {
         if (std::abs(p - q) > std::max({p / 10., q / 10., 5. * allowed}))

@@ -50,16 +50,14 @@ namespace contact_fem
                 ExcMessage(key + ": '" + value_text + "' is not a number" + expected));
     if (name == "coulomb")
       {
-        AssertThrow(value >= 0.,
-                    ExcMessage(key + ": the friction coefficient must be >= 0, got " +
-                               value_text + "."));
+        AssertThrow(value >= 0., ExcMessage(key + ": the friction coefficient must be >= 0, got " +
+                                            value_text + "."));
         return std::make_unique<CoulombFriction>(value);
       }
     if (name == "tresca")
       {
         AssertThrow(value >= 0.,
-                    ExcMessage(key + ": the Tresca bound must be >= 0, got " + value_text +
-                               "."));
+                    ExcMessage(key + ": the Tresca bound must be >= 0, got " + value_text + "."));
         return std::make_unique<TrescaFriction>(value);
       }
     AssertThrow(false, ExcMessage(key + ": unknown frictional law '" + name + "'" + expected));
@@ -70,17 +68,13 @@ namespace contact_fem
   FrictionParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Contact");
-    prm.declare_entry("Friction",
-                      "",
-                      Patterns::Anything(),
+    prm.declare_entry("Friction", "", Patterns::Anything(),
                       "Frictional law of the pairs, for the frictional formulations: "
                       "'coulomb MU' (slip bound MU * p) or 'tresca BOUND' (a "
                       "constant slip bound, a stress) for every pair, or per pair by "
                       "its slave boundary id: '3: coulomb 0.2; 5: tresca 0.01'. Empty: "
                       "frictionless (the frictionless formulations take no law).");
-    prm.declare_entry("Pure slip",
-                      "false",
-                      Patterns::Bool(),
+    prm.declare_entry("Pure slip", "false", Patterns::Bool(),
                       "Frictional formulations: every active node slips (no stick "
                       "set), in the direction of its trial traction; for scenes "
                       "known to slip everywhere.");
@@ -117,26 +111,23 @@ namespace contact_fem
     laws.resize(contact.pairs.size());
     for (const auto &[id_text, law_text] : split_key_value_list(text, key))
       {
-        const types::boundary_id id = parse_boundary_id(id_text, key);
+        const types::boundary_id id    = parse_boundary_id(id_text, key);
         bool                     found = false;
         for (unsigned int p = 0; p < contact.pairs.size(); ++p)
           if (contact.pairs[p].slave == id)
             {
               AssertThrow(!laws[p],
-                          ExcMessage(key + ": slave surface " + id_text +
-                                     " is given two laws."));
+                          ExcMessage(key + ": slave surface " + id_text + " is given two laws."));
               laws[p] = FrictionalLaw::create(law_text, key);
               found   = true;
             }
-        AssertThrow(found,
-                    ExcMessage(key + ": " + id_text +
-                               " is not the slave surface of any pair of Contact/Pairs."));
+        AssertThrow(found, ExcMessage(key + ": " + id_text +
+                                      " is not the slave surface of any pair of Contact/Pairs."));
       }
     for (unsigned int p = 0; p < contact.pairs.size(); ++p)
-      AssertThrow(laws[p],
-                  ExcMessage(key + ": no law for the pair with slave surface " +
-                             std::to_string(contact.pairs[p].slave) +
-                             "; give one per pair, or one law for all pairs."));
+      AssertThrow(laws[p], ExcMessage(key + ": no law for the pair with slave surface " +
+                                      std::to_string(contact.pairs[p].slave) +
+                                      "; give one per pair, or one law for all pairs."));
     return laws;
   }
 } // namespace contact_fem

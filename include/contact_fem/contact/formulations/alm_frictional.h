@@ -109,8 +109,7 @@ namespace contact_fem
     /// |(g_A, lambda_I / k, xi_stick, (t - sigma T) / k of the slip
     /// nodes)|, a length.
     Residuals
-    residuals(const ContactInterface<dim> &interface,
-              const std::vector<double>   &u) const override;
+    residuals(const ContactInterface<dim> &interface, const std::vector<double> &u) const override;
 
     Tensor<1, dim>
     traction(const SlaveNode &s) const override
@@ -129,8 +128,7 @@ namespace contact_fem
     }
 
     void
-    accept_load_step(const ContactInterface<dim> &interface,
-                     const std::vector<double>   &u) override;
+    accept_load_step(const ContactInterface<dim> &interface, const std::vector<double> &u) override;
 
     bool
     symmetric() const override;
@@ -235,13 +233,13 @@ namespace contact_fem
     using Base::converged_displacement;
     using Base::frictionless_law;
     using Base::last_step_slip;
-    using Base::slip_history;
     using Base::last_stick_slip_changes;
     using Base::laws;
     using Base::n_slip;
     using Base::n_stick;
     using Base::pure_slip;
     using Base::sets;
+    using Base::slip_history;
     using Base::tangential;
 
     /// Whether any node slips under a law with friction: only then do its

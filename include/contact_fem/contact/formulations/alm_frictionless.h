@@ -60,8 +60,7 @@ namespace contact_fem
     /// |(g_A, lambda_I / k)|: the gap of the active nodes and the released
     /// multipliers of the others, a length.
     Residuals
-    residuals(const ContactInterface<dim> &interface,
-              const std::vector<double>   &u) const override;
+    residuals(const ContactInterface<dim> &interface, const std::vector<double> &u) const override;
 
   private:
     /// Multipliers of the nodes released in the last update (for the

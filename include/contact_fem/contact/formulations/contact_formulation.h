@@ -88,7 +88,7 @@ namespace contact_fem
     /// Adds the couplings assemble() may create, for the nodes whose first
     /// DoF is in @p owned. Default: none.
     virtual void
-    add_sparsity(const ContactInterface<dim>    &interface,
+    add_sparsity(const ContactInterface<dim>     &interface,
                  const AffineConstraints<double> &constraints,
                  const IndexSet                  &owned,
                  DynamicSparsityPattern          &pattern) const;
@@ -114,8 +114,7 @@ namespace contact_fem
     /// Updates the active (and stick/slip) sets at @p u; returns the number
     /// of changes (the iteration has converged only without any).
     virtual unsigned int
-    update_active_set(const ContactInterface<dim> &interface,
-                      const std::vector<double>   &u) = 0;
+    update_active_set(const ContactInterface<dim> &interface, const std::vector<double> &u) = 0;
 
     virtual Residuals
     residuals(const ContactInterface<dim> &interface, const std::vector<double> &u) const = 0;
@@ -345,34 +344,34 @@ namespace contact_fem
   /// (prm, friction), else from (prm); @p tangential_penalty_key: it reads
   /// Contact/Tangential penalty; @p own_keys: classname<dim>::
   /// declare_parameters() declares keys of its own.
-#define CONTACT_FEM_REGISTER_FORMULATION(                                                 \
-  classname, formulation_name, friction_keys, tangential_penalty_key, own_keys)                     \
-  namespace                                                                              \
-  {                                                                                      \
-    template <int dim>                                                                   \
-    typename ContactFormulation<dim>::Registration classname##_registration()           \
-    {                                                                                    \
-      typename ContactFormulation<dim>::Registration r;                                  \
-      r.name                     = formulation_name;                                                 \
-      r.takes_friction           = friction_keys;                                       \
-      r.takes_tangential_penalty = tangential_penalty_key;                             \
-      if constexpr (own_keys)                                                            \
-        r.declare = classname<dim>::declare_parameters;                                  \
-      r.create = [](ParameterHandler &prm, const auto &friction) {                       \
-        std::unique_ptr<ContactFormulation<dim>> formulation;                            \
-        if constexpr (friction_keys)                                                     \
-          formulation = std::make_unique<classname<dim>>(prm, friction);                 \
-        else                                                                             \
-          formulation = std::make_unique<classname<dim>>(prm);                           \
-        return formulation;                                                              \
-      };                                                                                 \
-      return r;                                                                          \
-    }                                                                                    \
-    const bool classname##_registered = [] {                                             \
-      ContactFormulation<2>::register_formulation(classname##_registration<2>());        \
-      ContactFormulation<3>::register_formulation(classname##_registration<3>());        \
-      return true;                                                                       \
-    }();                                                                                 \
+#define CONTACT_FEM_REGISTER_FORMULATION(classname, formulation_name, friction_keys, \
+                                         tangential_penalty_key, own_keys)           \
+  namespace                                                                          \
+  {                                                                                  \
+    template <int dim>                                                               \
+    typename ContactFormulation<dim>::Registration classname##_registration()        \
+    {                                                                                \
+      typename ContactFormulation<dim>::Registration r;                              \
+      r.name                     = formulation_name;                                 \
+      r.takes_friction           = friction_keys;                                    \
+      r.takes_tangential_penalty = tangential_penalty_key;                           \
+      if constexpr (own_keys)                                                        \
+        r.declare = classname<dim>::declare_parameters;                              \
+      r.create = [](ParameterHandler &prm, const auto &friction) {                   \
+        std::unique_ptr<ContactFormulation<dim>> formulation;                        \
+        if constexpr (friction_keys)                                                 \
+          formulation = std::make_unique<classname<dim>>(prm, friction);             \
+        else                                                                         \
+          formulation = std::make_unique<classname<dim>>(prm);                       \
+        return formulation;                                                          \
+      };                                                                             \
+      return r;                                                                      \
+    }                                                                                \
+    const bool classname##_registered = [] {                                         \
+      ContactFormulation<2>::register_formulation(classname##_registration<2>());    \
+      ContactFormulation<3>::register_formulation(classname##_registration<3>());    \
+      return true;                                                                   \
+    }();                                                                             \
   }
 } // namespace contact_fem
 

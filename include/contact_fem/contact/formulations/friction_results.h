@@ -12,8 +12,8 @@ namespace contact_fem
   /// formulation's frame (2D: one component).
   template <int dim>
   double
-  frame_tangential_traction(const ContactFormulation<dim>                 &contact,
-                      const typename ContactInterface<dim>::SlaveNode &s)
+  frame_tangential_traction(const ContactFormulation<dim>                   &contact,
+                            const typename ContactInterface<dim>::SlaveNode &s)
   {
     return contact.traction(s) * ContactFormulation<dim>::tangent(contact.frame_normal(s));
   }
@@ -50,8 +50,8 @@ namespace contact_fem
     /// Adds @p step_slip (per interface node, in the frame of the node's
     /// normal in @p contact) to the sums.
     void
-    add(const ContactInterface<dim>               &interface,
-        const ContactFormulation<dim>             &contact,
+    add(const ContactInterface<dim>              &interface,
+        const ContactFormulation<dim>            &contact,
         const std::vector<TangentialVector<dim>> &step_slip)
     {
       for (const auto &s : interface.slave_nodes)
@@ -69,11 +69,11 @@ namespace contact_fem
   /// accepted step, @p accepted_slip per interface node) to @p result.
   template <int dim>
   void
-  add_friction_totals(const ContactInterface<dim>   &interface,
-                      const ContactFormulation<dim> &contact,
+  add_friction_totals(const ContactInterface<dim>              &interface,
+                      const ContactFormulation<dim>            &contact,
                       const std::vector<TangentialVector<dim>> &accepted_slip,
                       const SlipHistory<dim>                   &history,
-                      Json                          &result);
+                      Json                                     &result);
 
   /// Prints the stick/slip counts and the totals of add_friction_totals()
   /// from @p contact, and the balance per component from @p reaction.
@@ -89,8 +89,8 @@ namespace contact_fem
   /// path length) and stick.
   template <int dim>
   std::vector<typename ContactFormulation<dim>::NodalField>
-  friction_nodal_fields(const ContactInterface<dim>   &interface,
-                        const ContactFormulation<dim> &contact,
+  friction_nodal_fields(const ContactInterface<dim>              &interface,
+                        const ContactFormulation<dim>            &contact,
                         const std::vector<TangentialVector<dim>> &accepted_slip,
                         const SlipHistory<dim>                   &history);
 

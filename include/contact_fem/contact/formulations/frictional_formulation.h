@@ -103,7 +103,7 @@ namespace contact_fem
     law_names() const;
 
     std::vector<std::shared_ptr<const FrictionalLaw>> laws; ///< per pair
-    bool pure_slip = false;
+    bool                                              pure_slip = false;
 
     /// t_j per interface node, in the formulation's frame.
     std::vector<TangentialVector<dim>> tangential;

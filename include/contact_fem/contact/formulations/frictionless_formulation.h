@@ -154,13 +154,12 @@ namespace contact_fem
     /// every paired node (only the active ones with @p only_active), except
     /// those @p skip selects.
     void
-    add_gap_constraints(
-      const ContactInterface<dim> &interface,
-      const std::vector<double>   &fixed_values,
-      AffineConstraints<double>   &constraints,
-      const bool                   only_active,
-      const std::function<bool(const typename ContactInterface<dim>::SlaveNode &)> &skip =
-        {}) const;
+    add_gap_constraints(const ContactInterface<dim> &interface,
+                        const std::vector<double>   &fixed_values,
+                        AffineConstraints<double>   &constraints,
+                        const bool                   only_active,
+                        const std::function<bool(const typename ContactInterface<dim>::SlaveNode &)>
+                          &skip = {}) const;
 
     /// Adds g_j(u) = 0 for slave node @p s, solved for its component @p c,
     /// unless that DoF is constrained already.
@@ -176,11 +175,11 @@ namespace contact_fem
     contact_forces(const ContactInterface<dim> &interface) const;
 
     Parameters          parameters;
-    std::vector<double> pressure; ///< lambda per interface node
-    std::vector<bool>   active;   ///< per interface node
-    std::vector<double> penalty;  ///< eps per pair
-    std::vector<double> scale;    ///< k per pair
-    double penalty_ratio = 1.;    ///< see penalty_over_automatic()
+    std::vector<double> pressure;           ///< lambda per interface node
+    std::vector<bool>   active;             ///< per interface node
+    std::vector<double> penalty;            ///< eps per pair
+    std::vector<double> scale;              ///< k per pair
+    double              penalty_ratio = 1.; ///< see penalty_over_automatic()
 
   private:
     struct PressureState : public State

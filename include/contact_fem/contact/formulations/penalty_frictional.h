@@ -95,7 +95,7 @@ namespace contact_fem
     /// gradient needs them); those of "penalty frictionless" when no pair
     /// has friction.
     void
-    add_sparsity(const ContactInterface<dim>    &interface,
+    add_sparsity(const ContactInterface<dim>     &interface,
                  const AffineConstraints<double> &constraints,
                  const IndexSet                  &owned,
                  DynamicSparsityPattern          &pattern) const override;
@@ -116,8 +116,7 @@ namespace contact_fem
                       const std::vector<double>   &u) override;
 
     Residuals
-    residuals(const ContactInterface<dim> &interface,
-              const std::vector<double>   &u) const override;
+    residuals(const ContactInterface<dim> &interface, const std::vector<double> &u) const override;
 
     Tensor<1, dim>
     traction(const SlaveNode &s) const override
@@ -128,8 +127,7 @@ namespace contact_fem
     /// The slip reference (interface displacement) and the tangential
     /// tractions of the accepted step become the history.
     void
-    accept_load_step(const ContactInterface<dim> &interface,
-                     const std::vector<double>   &u) override;
+    accept_load_step(const ContactInterface<dim> &interface, const std::vector<double> &u) override;
 
     std::unique_ptr<State>
     save_state() const override;
@@ -200,13 +198,13 @@ namespace contact_fem
     using Base::converged_displacement;
     using Base::frictionless_law;
     using Base::last_step_slip;
-    using Base::slip_history;
     using Base::last_stick_slip_changes;
     using Base::laws;
     using Base::n_slip;
     using Base::n_stick;
     using Base::pure_slip;
     using Base::sets;
+    using Base::slip_history;
     using Base::tangential;
 
     double              tangential_penalty = 0.; ///< given; 0: the pair's normal penalty
@@ -218,11 +216,11 @@ namespace contact_fem
 
     struct FrictionState : public State
     {
-      std::unique_ptr<State> normal;
+      std::unique_ptr<State>             normal;
       std::vector<TangentialVector<dim>> tangential, accepted_tangential;
       std::vector<double>                converged_displacement;
       SlipHistory<dim>                   slip_history;
-      StickSlipSets<dim>          sets;
+      StickSlipSets<dim>                 sets;
       std::vector<TangentialVector<dim>> last_step_slip;
     };
   };

@@ -49,7 +49,7 @@ namespace contact_fem
                     const bool                   all_candidates) const override;
 
     void
-    add_sparsity(const ContactInterface<dim>    &interface,
+    add_sparsity(const ContactInterface<dim>     &interface,
                  const AffineConstraints<double> &constraints,
                  const IndexSet                  &owned,
                  DynamicSparsityPattern          &pattern) const override;
@@ -77,8 +77,7 @@ namespace contact_fem
     /// Zero by construction; with adaptive penalties the penetration beyond
     /// the allowed one.
     Residuals
-    residuals(const ContactInterface<dim> &interface,
-              const std::vector<double>   &u) const override;
+    residuals(const ContactInterface<dim> &interface, const std::vector<double> &u) const override;
 
     void
     add_results(const ContactInterface<dim> &interface, Json &contact) const override;
@@ -99,8 +98,8 @@ namespace contact_fem
                     const double previous_penetration,
                     const double allowed) const;
 
-    bool   adaptive               = false;
-    double penetration_factor     = 1e-3;
+    bool   adaptive           = false;
+    double penetration_factor = 1e-3;
     /// eps_j per interface node (adapted or the pair's).
     std::vector<double> node_penalty;
     /// The gap of the previous iteration, per node.

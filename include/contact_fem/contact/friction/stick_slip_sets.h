@@ -41,8 +41,7 @@ namespace contact_fem
     Tensor<1, dim> relative =
       interface.displacement(s.node, to) - interface.displacement(s.node, from);
     for (const auto &[m, value] : s.M)
-      relative -=
-        (value / s.D) * (interface.displacement(m, to) - interface.displacement(m, from));
+      relative -= (value / s.D) * (interface.displacement(m, to) - interface.displacement(m, from));
     return relative;
   }
 
@@ -88,7 +87,7 @@ namespace contact_fem
       {
         Tensor<1, dim> axis;
         axis[std::abs(n[0]) > 0.8 ? 1 : 0] = 1.;
-        frame[0] = axis - (axis * n) * n;
+        frame[0]                           = axis - (axis * n) * n;
         frame[0] /= frame[0].norm();
         frame[1] = cross_product_3d(n, frame[0]);
       }
@@ -221,9 +220,8 @@ namespace contact_fem
       std::vector<int> result(direction.size(), 0);
       for (unsigned int n = 0; n < direction.size(); ++n)
         if (active[n])
-          result[n] = direction[n].norm_square() == 0. ?
-                        1 :
-                        (dim == 3 || direction[n][0] > 0 ? 2 : 3);
+          result[n] =
+            direction[n].norm_square() == 0. ? 1 : (dim == 3 || direction[n][0] > 0 ? 2 : 3);
       return result;
     }
   };
