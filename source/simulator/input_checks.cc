@@ -1,5 +1,6 @@
 // The input checks of a scene on its coarse mesh (InputChecks): the contact
 // pairs, the boundary ids and the memory the mesh will need.
+#include <contact_fem/core/format.h>
 #include <contact_fem/simulator/input_checks.h>
 #include <contact_fem/geometry/mesh_queries.h>
 #include <contact_fem/core/resources.h>
@@ -14,14 +15,6 @@ namespace contact_fem
 {
   namespace
   {
-    std::string
-    format(const double x)
-    {
-      std::ostringstream s;
-      s << std::setprecision(2) << x;
-      return s.str();
-    }
-
     /// Fraction of the bounding box of @p cell inside @p box: how much of
     /// the cell a box refines, after enough refinements.
     template <int dim, typename Cell, typename Box>
@@ -212,14 +205,15 @@ namespace contact_fem
       return "";
 
     std::ostringstream estimate;
-    estimate << refinement_keys() << ": the mesh will have about " << format(cells) << " cells and "
-             << format(dofs) << " DoFs (Q" << degree << "), which need about "
-             << format_bytes(bytes) << " of memory (about 4 kB per DoF, measured), ";
+    estimate << refinement_keys() << ": the mesh will have about " << significant(cells, 2)
+             << " cells and " << significant(dofs, 2) << " DoFs (Q" << degree
+             << "), which need about " << format_bytes(bytes)
+             << " of memory (about 4 kB per DoF, measured), ";
     AssertThrow(bytes <= available.bytes,
                 ExcMessage(estimate.str() + "more than the " + format_bytes(available.bytes) +
                            " available (" + available.source +
                            "). Refine less: each refinement multiplies the cells by " +
-                           format(per_refinement) + "."));
+                           significant(per_refinement, 2) + "."));
     if (bytes > 0.5 * available.bytes)
       return estimate.str() + "more than half of the " + format_bytes(available.bytes) +
              " available (" + available.source + ")";
@@ -249,7 +243,7 @@ namespace contact_fem
                             available.bytes + estimated_memory(old_dofs, processes);
     if (needed <= budget)
       return "";
-    return "the mesh of cycle " + std::to_string(cycle) + " has " + format(new_dofs) +
+    return "the mesh of cycle " + std::to_string(cycle) + " has " + significant(new_dofs, 2) +
            " DoFs, which need about " + format_bytes(needed) +
            " of memory (about 4 kB per DoF, measured), more than the " + format_bytes(budget) +
            " this run may use (" + available.source +

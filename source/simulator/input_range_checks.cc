@@ -18,14 +18,6 @@ namespace contact_fem
 {
   namespace
   {
-    std::string
-    format(const double x)
-    {
-      std::ostringstream s;
-      s << std::setprecision(3) << x;
-      return s.str();
-    }
-
     const std::string units_hint =
       "; the residual norms square forces and overflow double precision (1.8e308) from "
       "about 1.3e154: express lengths, moduli and loads in other units";
@@ -69,7 +61,7 @@ namespace contact_fem
                                       Utilities::trim(what) +
                                       "'); check the lengths and coordinates (finite, of magnitude "
                                       "at most " +
-                                      format(largest_input_magnitude) +
+                                      significant(largest_input_magnitude, 3) +
                                       ", the parts of the scene of positive size)."));
       }
   }
@@ -86,9 +78,9 @@ namespace contact_fem
         {
           for (const double x : {box.first[d], box.second[d]})
             AssertThrow(std::abs(x) <= largest_input_magnitude,
-                        ExcMessage(key + ": a vertex coordinate is " + format(x) +
+                        ExcMessage(key + ": a vertex coordinate is " + significant(x, 3) +
                                    "; expected coordinates of magnitude at most " +
-                                   format(largest_input_magnitude) +
+                                   significant(largest_input_magnitude, 3) +
                                    ": lengths multiply into areas, volumes and forces that "
                                    "overflow double precision (1.8e308) beyond it; express "
                                    "the lengths in larger units."));
@@ -101,11 +93,12 @@ namespace contact_fem
       AssertThrow(constants.youngs_modulus * area <= largest_input_magnitude,
                   ExcMessage("Materials/Young's moduli: body " +
                              std::to_string(static_cast<unsigned int>(id)) +
-                             " has E = " + format(constants.youngs_modulus) +
-                             ", and over the model size " + format(extent) +
+                             " has E = " + significant(constants.youngs_modulus, 3) +
+                             ", and over the model size " + significant(extent, 3) +
                              " it carries forces of E L^" + std::to_string(dim - 1) + " = " +
-                             format(constants.youngs_modulus * area) + "; expected at most " +
-                             format(largest_input_magnitude) + units_hint + "."));
+                             significant(constants.youngs_modulus * area, 3) +
+                             "; expected at most " + significant(largest_input_magnitude, 3) +
+                             units_hint + "."));
     check_load_path(coarse, area);
   }
 
@@ -132,7 +125,8 @@ namespace contact_fem
                     std::ostringstream where;
                     where << key << ": '" << expressions[c] << "' on boundary "
                           << static_cast<unsigned int>(id) << " is "
-                          << (std::isnan(value) ? std::string("not a number") : format(value))
+                          << (std::isnan(value) ? std::string("not a number") :
+                                                  significant(value, 3))
                           << " at t = " << time << " at the point "
                           << coordinates_text(face->vertex(v));
                     AssertThrow(std::isfinite(value),
@@ -141,11 +135,12 @@ namespace contact_fem
                                            "time of the load path (t from 0 to Load "
                                            "stepping/End time)."));
                     AssertThrow(!force || std::abs(value) * area <= largest_input_magnitude,
-                                ExcMessage(where.str() +
-                                           ", which over the model's size "
-                                           "gives forces of " +
-                                           format(std::abs(value) * area) + "; expected at most " +
-                                           format(largest_input_magnitude) + units_hint + "."));
+                                ExcMessage(
+                                  where.str() +
+                                  ", which over the model's size "
+                                  "gives forces of " +
+                                  significant(std::abs(value) * area, 3) + "; expected at most " +
+                                  significant(largest_input_magnitude, 3) + units_hint + "."));
                   }
         }
     };

@@ -484,13 +484,16 @@ namespace contact_fem
     constexpr double allowed_elastic_slip = 1e-2;
     out << "    largest elastic slip / h:     " << value_or_ok(elastic_slip, 1e-6)
         << " (stick nodes, |t| / eps_t)" << std::endl;
-    if (elastic_slip > allowed_elastic_slip)
+    // Said in the first cycle that finds it, like the driver's warnings
+    // (an adaptive study would repeat it every cycle).
+    if (elastic_slip > allowed_elastic_slip && !elastic_slip_warned)
       out << "  Warning: stick nodes move up to " << scientific(elastic_slip, 2)
           << " h elastically under the tangential penalty (more than " << allowed_elastic_slip
           << " h): the regularisation decides what sticks and what slips. Raise "
              "Contact/Tangential penalty (auto: that of the normal penalty) or use "
              "alm frictional."
           << std::endl;
+    elastic_slip_warned = elastic_slip_warned || elastic_slip > allowed_elastic_slip;
     // The forces themselves are printed by print_friction_totals().
     if (normal_force == 0.)
       return;

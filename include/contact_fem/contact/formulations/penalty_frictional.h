@@ -213,6 +213,8 @@ namespace contact_fem
     std::vector<TangentialVector<dim>> accepted_tangential;
     /// slip_cone_factor() per interface node, of the last update.
     std::vector<double> cone_factor;
+    /// The elastic-slip warning was printed (once per run).
+    mutable bool elastic_slip_warned = false;
 
     struct FrictionState : public State
     {
