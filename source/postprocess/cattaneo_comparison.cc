@@ -123,14 +123,13 @@ namespace contact_fem
           }
       const double fraction = analytical.symmetry_fraction;
       const auto [P, Q]     = cattaneo_loads(interface, contact, fraction);
-      // The same tolerance as for "no tangential load" in the comparison:
-      // far above the Newton tolerance's noise in Q (a normal step of the
-      // 3D scene leaves 4e-6 mu P), far below any load step of a path.
+      // The same tolerance as for "no tangential load" in the comparison.
       std::vector<double> path = load_path;
       path.push_back(Q);
       const double capacity =
         CattaneoSolution(P, 0., mu, analytical.radius, E_star, problem).capacity();
-      const TangentialPath history = classify_tangential_path(path, 1e-3 * capacity);
+      const TangentialPath history =
+        classify_tangential_path(path, CattaneoSolution::no_tangential_load * capacity);
       if (history.kind == TangentialPath::Kind::none)
         return Json::object()
           .set("mu", mu)

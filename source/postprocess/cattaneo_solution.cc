@@ -203,13 +203,11 @@ namespace contact_fem
         norm += node.weight * t * t;
         weights += node.weight;
       }
-    // Without a tangential load (Q below 1e-3 of the capacity, the normal
-    // phase: zero up to the round-off of an antisymmetric sum in 2D, up to
-    // the Newton tolerance in 3D) q vanishes: the error is then relative to
-    // the largest slip bound instead.
-    constexpr double no_tangential_load = 1e-3;
-    const double     bound              = exact.largest_bound();
-    if (!exact.unloading && exact.Q <= no_tangential_load * exact.capacity())
+    // Without a tangential load (the normal phase: zero up to the round-off
+    // of an antisymmetric sum in 2D, up to the Newton tolerance in 3D) q
+    // vanishes: the error is then relative to the largest slip bound instead.
+    const double bound = exact.largest_bound();
+    if (!exact.unloading && exact.Q <= CattaneoSolution::no_tangential_load * exact.capacity())
       norm = bound * bound * weights;
     result.tangential_l2_relative_error = norm > 0. ? std::sqrt(error / norm) : 0.;
     return result;
@@ -301,7 +299,7 @@ namespace contact_fem
           return steps[k][key].number_value();
         };
         // Steps without a tangential load or a solution compare nothing.
-        if (std::isnan(value("c")) || value("Q_over_mu_P") < 1e-3)
+        if (std::isnan(value("c")) || value("Q_over_mu_P") < CattaneoSolution::no_tangential_load)
           continue;
         out << std::fixed << std::setprecision(4) << "      step " << std::setw(2) << k + 1 << ":  "
             << value("Q_over_mu_P") << "  " << value("c_over_a") << "  " << value("c_h_over_a")

@@ -1436,7 +1436,7 @@ namespace contact_fem
           outside_model_range = true;
           warn("small_strain_warning", text, cycle_record);
         }
-    check_held_rotation(cycle_record);
+    check_held_rotation(checks, cycle_record);
     if (singular_solves == 0)
       return;
     std::ostringstream text;
@@ -1455,7 +1455,7 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactProblem<dim>::check_held_rotation(Json &cycle_record)
+  ContactProblem<dim>::check_held_rotation(const SolutionChecks<dim> &checks, Json &cycle_record)
   {
     if (!contact || !factorisation_current || !linear_solver->can_solve_again() ||
         linear_solver->n_null_pivots() > 0)
@@ -1478,9 +1478,7 @@ namespace contact_fem
     std::set<types::boundary_id> contact_surfaces;
     for (const auto &pair : contact_parameters.pairs)
       contact_surfaces.insert({pair.slave, pair.master});
-    const SolutionChecks<dim> checks({dof_handler, *mapping, constraints, dirichlet_constraints,
-                                      owned_dofs, relevant_dofs, solution, ghosted_solution});
-    const auto                probe =
+    const auto probe =
       checks.weakly_held_rotation(bodies, softest, contact_surfaces, *linear_solver);
     for (const std::string &text : probe.warnings)
       warn("rotation_warning", text, cycle_record);

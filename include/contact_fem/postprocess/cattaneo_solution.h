@@ -74,6 +74,12 @@ namespace contact_fem
                      const double          E_star,
                      const CattaneoProblem problem = CattaneoProblem::cylinders);
 
+    /// A tangential load below this fraction of the capacity() is none
+    /// (the normal phase): far above the Newton tolerance's noise in Q (a
+    /// normal step of the 3D scene leaves 4e-6 mu P), far below any load
+    /// step of a path.
+    static constexpr double no_tangential_load = 1e-3;
+
     /// The largest tangential load: mu P, or 2 a g under Tresca.
     double
     capacity() const

@@ -55,6 +55,8 @@ namespace contact_fem
 
   template <int dim>
   struct ContactNodeTraction;
+  template <int dim>
+  class SolutionChecks;
 
   /// An output stream that writes to the console and, once attached, to a log file.
   class TeeStream : public std::ostream
@@ -190,7 +192,7 @@ namespace contact_fem
     check_converged_solution(const bool solved, Json &cycle_record);
     /// The weakly held rotation probe of check_converged_solution().
     void
-    check_held_rotation(Json &cycle_record);
+    check_held_rotation(const SolutionChecks<dim> &checks, Json &cycle_record);
     /// Records warning @p text under @p kind in @p cycle_record and prints
     /// it in the first cycle that gives the kind (WarningLog).
     void
