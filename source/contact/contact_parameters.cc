@@ -85,7 +85,8 @@ namespace contact_fem
                       "displacements and the previous step, and enlarged during "
                       "Newton whenever an iterate moves farther). Correctness does "
                       "not depend on it: after convergence every slave node is "
-                      "checked against the whole master surface.");
+                      "checked against the whole master surface. Also the reach of "
+                      "the one search of the tied pairs.");
     prm.declare_entry("Kinematics", "small", Patterns::Selection("small|updated"),
                       "'small': the mortar operators (pairing, normals, D, M) are "
                       "built on the reference configuration and the gap is linear in "

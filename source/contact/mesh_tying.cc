@@ -58,13 +58,12 @@ namespace contact_fem
                              const AffineConstraints<double> &dirichlet,
                              const AffineConstraints<double> &hanging,
                              const Materials<dim>            &materials,
+                             const double                     search_factor,
                              const MPI_Comm                   comm)
   {
     surfaces.initialize(mapping, dof_handler, pairs, dirichlet, hanging, materials, comm);
-    // Once, on the reference configuration: the search reach only needs to
-    // bridge the discrete mismatch of surfaces that touch (the default
-    // search factor of Contact).
-    constexpr double search_factor = 3.;
+    // Once, on the reference configuration: the search only needs to
+    // bridge the discrete mismatch of surfaces that touch.
     surfaces.update(std::vector<double>(surfaces.dofs().size(), 0.), search_factor);
     check_surfaces_touch();
     fixed_values.assign(surfaces.dofs().size(), 0.);

@@ -297,7 +297,8 @@ namespace contact_fem
         TimerOutput::Scope t(*timer, "Setup: mesh tying");
         tying = std::make_unique<MeshTying<dim>>();
         tying->initialize(*mapping, dof_handler, contact_parameters.tied_pairs,
-                          dirichlet_constraints, hanging_constraints, materials, comm);
+                          dirichlet_constraints, hanging_constraints, materials,
+                          contact_parameters.search_factor, comm);
       }
     // Contact and tying constraints couple slave DoFs to master DoFs
     // anywhere: every rank may write to the rows and entries of all

@@ -45,7 +45,9 @@ namespace contact_fem
   public:
     /// Builds the tied surfaces of @p pairs (arguments as for
     /// ContactInterface::initialize()), integrates the operators on the
-    /// reference configuration and checks that the surfaces touch: throws
+    /// reference configuration (slave boxes grown by @p search_factor
+    /// times the face length, as in contact) and checks that the surfaces
+    /// touch: throws
     /// naming Contact/Tied pairs if a pair has no slave node facing its
     /// master, or one whose mortar image is farther than
     /// max_distance_over_h of its element size.
@@ -56,6 +58,7 @@ namespace contact_fem
                const AffineConstraints<double> &dirichlet,
                const AffineConstraints<double> &hanging,
                const Materials<dim>            &materials,
+               const double                     search_factor,
                const MPI_Comm                   comm);
 
     /// Sorted DoF indices of all nodes of the tied surfaces.
