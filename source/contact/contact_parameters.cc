@@ -25,26 +25,24 @@ namespace contact_fem
           AssertThrow(pair.slave != pair.master,
                       ExcMessage(key + ": pair " + pair_text(s, m) +
                                  " has the same surface on both sides."));
-          for (const auto id : {pair.slave, pair.master})
-            {
-              const std::string surface = "surface " + std::to_string(id);
-              for (const auto &other : tied)
+          // A surface of this pair in one of @p others is refused: "... in
+          // the @p what <pair>@p advice".
+          const auto refuse_shared = [&](const std::vector<ContactPair> &others,
+                                         const std::string              &what,
+                                         const std::string              &advice) {
+            for (const auto id : {pair.slave, pair.master})
+              for (const auto &other : others)
                 AssertThrow(other.slave != id && other.master != id,
-                            ExcMessage(key + ": " + surface + " of pair " + pair_text(s, m) +
-                                       " is also in the tied pair " +
+                            ExcMessage(key + ": surface " + std::to_string(id) + " of pair " +
+                                       pair_text(s, m) + " is also in the " + what + " " +
                                        pair_text(std::to_string(other.slave),
                                                  std::to_string(other.master)) +
-                                       "; a surface may be in one tied pair only."));
-              for (const auto &other : pairs)
-                AssertThrow(other.slave != id && other.master != id,
-                            ExcMessage(key + ": " + surface + " of pair " + pair_text(s, m) +
-                                       " is also in the contact pair " +
-                                       pair_text(std::to_string(other.slave),
-                                                 std::to_string(other.master)) +
-                                       " of Contact/Pairs; a surface is either tied or "
-                                       "in contact: give the contact surface its own "
-                                       "boundary id."));
-            }
+                                       advice));
+          };
+          refuse_shared(tied, "tied pair", "; a surface may be in one tied pair only.");
+          refuse_shared(pairs, "contact pair",
+                        " of Contact/Pairs; a surface is either tied or in contact: give "
+                        "the contact surface its own boundary id.");
           tied.push_back(pair);
         }
       return tied;

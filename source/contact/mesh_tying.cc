@@ -22,16 +22,6 @@ namespace contact_fem
              std::to_string(static_cast<unsigned int>(pair.master));
     }
 
-    template <int dim>
-    Json
-    vector_json(const Tensor<1, dim> &v)
-    {
-      Json result = Json::array();
-      for (unsigned int d = 0; d < dim; ++d)
-        result.push(v[d]);
-      return result;
-    }
-
     /// @p value with 8 digits, or 0 below 1e-10 of @p scale (round-off).
     std::string
     value_text(const double value, const double scale)
@@ -215,8 +205,8 @@ namespace contact_fem
                       .set("pair", name)
                       .set("tied_slave_nodes", n)
                       .set("area", area)
-                      .set("force", vector_json(force))
-                      .set("mean_traction", vector_json(mean))
+                      .set("force", json_array(force, dim))
+                      .set("mean_traction", json_array(mean, dim))
                       .set("traction_spread", spread)
                       .set("min_normal_traction", normal_min)
                       .set("max_normal_traction", normal_max)
