@@ -74,15 +74,22 @@ namespace contact_fem
   }
 
   template <int dim>
+  std::vector<double>
+  ContactProblem<dim>::interface_contact_force() const
+  {
+    if (!contact)
+      return {};
+    return contact->residuals(*interface, interface_displacement).contact_force;
+  }
+
+  template <int dim>
   Json
   ContactProblem<dim>::reaction_results() const
   {
     // Reactions are the residual K u - f at the Dirichlet DoFs, less the
     // contact force where such a DoF belongs to the interface (a fixed
     // component of a contact node): contact forces are internal.
-    std::vector<double> contact_force;
-    if (contact)
-      contact_force = contact->residuals(*interface, interface_displacement).contact_force;
+    const std::vector<double>            contact_force = interface_contact_force();
     Tensor<1, dim>                       reaction;
     double                               absolute_sum = 0.;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
@@ -147,107 +154,39 @@ namespace contact_fem
   }
 
   template <int dim>
+  RunView<dim>
+  ContactProblem<dim>::run_view(const unsigned int         step,
+                                const ContactState<dim>   *state,
+                                const std::vector<double> &contact_force) const
+  {
+    return {{dof_handler, *mapping, ghosted_solution, materials, volumetric_projection.get(),
+             state},
+            {dof_handler, residual, dirichlet_constraints, boundary_conditions.displacements,
+             boundary_conditions.points, interface.get(), contact.get(), contact_force,
+             contact_parameters.pairs, boundary_conditions.rollers},
+            probe_dofs,
+            solution,
+            scene.frame,
+            output,
+            analytical,
+            comparison.get(),
+            cycle,
+            step,
+            current_time,
+            comm};
+  }
+
+  template <int dim>
   void
-  ContactProblem<dim>::record_forces(const unsigned int step, const double time, Json &step_record)
+  ContactProblem<dim>::postprocess(
+    const std::function<void(Postprocessor<dim> &, std::ostream &)> &hook)
   {
-    std::vector<double> contact_force;
-    if (contact)
-      contact_force = contact->residuals(*interface, interface_displacement).contact_force;
-    const ForceReport<dim> forces = compute_forces<dim>(
-      {dof_handler, residual, dirichlet_constraints, boundary_conditions.displacements,
-       boundary_conditions.points, interface.get(), contact.get(), contact_force,
-       contact_parameters.pairs, boundary_conditions.rollers});
-    std::ostringstream text;
-    forces.print(text, time);
-    pcout << text.str();
-    step_record.set("forces", forces.to_json());
-    // The probes' displacements follow the forces: a force-displacement
-    // curve is two columns of one file.
-    const std::vector<double> probes = probe_displacements();
-    if (force_history.empty())
+    for (const auto &postprocessor : postprocessors)
       {
-        force_history_header = "cycle,step,t" + forces.csv_header();
-        for (unsigned int k = 0; k < probes.size(); ++k)
-          force_history_header +=
-            ",probe_" + std::to_string(k / dim + 1) + "_u" + std::string(1, "xyz"[k % dim]);
+        std::ostringstream text;
+        hook(*postprocessor, text);
+        pcout << text.str();
       }
-    std::ostringstream row;
-    row << cycle << ',' << step << ',' << std::setprecision(10) << time << forces.csv_row();
-    for (const double u : probes)
-      row << ',' << u;
-    force_history.push_back(row.str());
-    const std::string path = output.directory + "/forces.csv";
-    if (Utilities::MPI::this_mpi_process(comm) != 0)
-      {
-        check_written(path, true);
-        return;
-      }
-    std::string csv = force_history_header + "\n";
-    for (const auto &line : force_history)
-      csv += line + "\n";
-    throw_if_unwritten(path, write_file_atomically(path, csv), comm);
-  }
-
-  namespace
-  {
-    /// The reference profile's coordinate: x (2D), the distance from the
-    /// axis (3D, axisymmetric).
-    template <int dim>
-    double
-    profile_coordinate(const AnalyticalSolution &analytical, const Point<dim> &x)
-    {
-      return dim == 2 ? x[0] : analytical.axis_distance(x[0], x[1]);
-    }
-  } // namespace
-
-  template <int dim>
-  double
-  ContactProblem<dim>::reference_pressure_error(const std::vector<double> &pressure) const
-  {
-    return pressure_l2_relative_error<dim>(contact_state(), pressure, [&](const Point<dim> &x) {
-      return analytical.reference_pressure(profile_coordinate(analytical, x));
-    });
-  }
-
-
-  template <int dim>
-  std::vector<double>
-  ContactProblem<dim>::probe_displacements() const
-  {
-    // Each DoF is added by its owner only, so the sum over ranks is its value.
-    std::vector<double> values(probe_dofs.size() * dim, 0.);
-    for (unsigned int i = 0; i < probe_dofs.size(); ++i)
-      for (unsigned int d = 0; d < probe_dofs[i].size(); ++d)
-        if (owned_dofs.is_element(probe_dofs[i][d]))
-          values[i * dim + d] = solution(probe_dofs[i][d]);
-    Utilities::MPI::sum(values, comm, values);
-    return values;
-  }
-
-  template <int dim>
-  Json
-  ContactProblem<dim>::probe_results() const
-  {
-    const std::vector<double> values = probe_displacements();
-
-    Json probes = Json::array();
-    for (unsigned int i = 0; i < probe_dofs.size(); ++i)
-      {
-        Json displacement = Json::array();
-        pcout << "    displacement at " << to_string(output.displacement_probes[i]) << ":"
-              << std::scientific << std::setprecision(7);
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            displacement.push(values[i * dim + d]);
-            pcout << "  u"
-                  << "xyz"[d] << " = " << values[i * dim + d];
-          }
-        pcout << std::defaultfloat << std::setprecision(6) << std::endl;
-        probes.push(Json::object()
-                      .set("point", to_string(output.displacement_probes[i]))
-                      .set("displacement", displacement));
-      }
-    return probes;
   }
 
   template <int dim>
@@ -312,28 +251,6 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactProblem<dim>::write_pressure_profile() const
-  {
-    // The latest cycle's as pressure_profile.csv, and each cycle's.
-    const std::string latest = output.directory + "/pressure_profile.csv";
-    const std::string of_cycle =
-      output.directory + "/pressure_profile_cycle_" + std::to_string(cycle) + ".csv";
-    if (Utilities::MPI::this_mpi_process(comm) != 0)
-      {
-        check_written(latest, true);
-        check_written(of_cycle, true);
-        return;
-      }
-    // The exact pressure where the analytical solution gives one (else 0).
-    const std::function<double(const Point<dim> &)> exact =
-      comparison ? comparison->exact_pressure(contact_state()) : nullptr;
-    const std::string csv = pressure_profile_csv(contact_state(), scene.frame, exact);
-    throw_if_unwritten(latest, write_file_atomically(latest, csv), comm);
-    throw_if_unwritten(of_cycle, write_file_atomically(of_cycle, csv), comm);
-  }
-
-  template <int dim>
-  void
   ContactProblem<dim>::write_summary(const Json        &cycles,
                                      const double       wall_time,
                                      const std::string &status) const
@@ -381,8 +298,12 @@ namespace contact_fem
     check_written(output.directory + "/log.txt", !root || static_cast<bool>(log_file));
     if (root)
       console.attach(log_file);
-    if (output.write_vtu)
-      vtu_output = std::make_unique<VtuOutput<dim>>(output.directory, comm);
+    postprocessors = Postprocessor<dim>::create_wanted(
+      {output, analytical, static_cast<bool>(contact),
+       [this](const std::string &kind, const std::string &text, Json &record) {
+         warn(kind, text, record);
+       },
+       *timer, comm});
     return report;
   }
 
@@ -421,22 +342,22 @@ namespace contact_fem
 
   // The class is instantiated in contact_problem.cc; here only the members
   // defined in this file.
-#define INSTANTIATE(dim)                                                                        \
-  template Tensor<1, dim> ContactProblem<dim>::applied_load(const double) const;                \
-  template Json           ContactProblem<dim>::contact_results() const;                         \
-  template Json           ContactProblem<dim>::reaction_results() const;                        \
-  template void           ContactProblem<dim>::write_pressure_profile() const;                  \
-  template void ContactProblem<dim>::record_forces(const unsigned int, const double, Json &);   \
-  template Json ContactProblem<dim>::probe_results() const;                                     \
-  template std::vector<double> ContactProblem<dim>::probe_displacements() const;                \
-  template double ContactProblem<dim>::reference_pressure_error(const std::vector<double> &)    \
-    const;                                                                                      \
-  template void ContactProblem<dim>::print_results(const Json &, const Json &, const Json &)    \
-    const;                                                                                      \
-  template void                  ContactProblem<dim>::write_summary(const Json &, const double, \
-                                                                    const std::string &) const; \
-  template OutputDirectoryReport ContactProblem<dim>::open_output_directory();                  \
-  template void ContactProblem<dim>::report_earlier_outputs(const OutputDirectoryReport &);     \
+#define INSTANTIATE(dim)                                                                         \
+  template Tensor<1, dim>      ContactProblem<dim>::applied_load(const double) const;            \
+  template Json                ContactProblem<dim>::contact_results() const;                     \
+  template Json                ContactProblem<dim>::reaction_results() const;                    \
+  template std::vector<double> ContactProblem<dim>::interface_contact_force() const;             \
+  template RunView<dim>        ContactProblem<dim>::run_view(const unsigned int,                 \
+                                                             const ContactState<dim> *,          \
+                                                             const std::vector<double> &) const; \
+  template void                ContactProblem<dim>::postprocess(                                 \
+                   const std::function<void(Postprocessor<dim> &, std::ostream &)> &);           \
+  template void ContactProblem<dim>::print_results(const Json &, const Json &, const Json &)     \
+    const;                                                                                       \
+  template void                  ContactProblem<dim>::write_summary(const Json &, const double,  \
+                                                                    const std::string &) const;  \
+  template OutputDirectoryReport ContactProblem<dim>::open_output_directory();                   \
+  template void ContactProblem<dim>::report_earlier_outputs(const OutputDirectoryReport &);      \
   template void ContactProblem<dim>::check_written(const std::string &, const bool) const;
   INSTANTIATE(2)
   INSTANTIATE(3)

@@ -30,39 +30,6 @@ namespace contact_fem
 {
   namespace
   {
-    /// Records and prints the energy-norm error of a solution of
-    /// @p potential_energy against @p reference_energy (Analytical
-    /// solution/Reference potential energy).
-    void
-    record_energy_error(const double              potential_energy,
-                        const double              chord_work,
-                        const double              reference_energy,
-                        const ConditionalOStream &pcout,
-                        Json                     &cycle_record)
-    {
-      // A conforming discrete solution minimises the energy over a subset:
-      // its energy lies above the exact one, and 2 (Pi_h - Pi) is the
-      // squared energy-norm error (plus the contact work, see the
-      // parameter).
-      // Degree-1 Hertz: the work of the contact force on the chord gap
-      // (HertzCylinder::compare()) is a geometry error of the polygonal arc, not
-      // part of the discretisation error the estimate is compared with.
-      const double chord_gap_work = std::isfinite(chord_work) ? chord_work : 0.;
-      const double excess         = potential_energy + chord_gap_work - reference_energy;
-      const double energy_error   = std::sqrt(2. * std::abs(excess));
-      cycle_record.set("energy_error", energy_error);
-      pcout << "    energy-norm error:            " << energy_error << " (from Pi_h "
-            << (chord_gap_work > 0. ? "+ W_chord " : "") << "- Pi_ref = " << excess << ")"
-            << std::endl;
-      if (excess < 0.)
-        pcout << "  Warning: the potential energy is below the reference: the "
-                 "discrete problem is softer than the exact one (a polygonal "
-                 "curved boundary, the weak mortar gap) or the reference is not "
-                 "accurate enough; sqrt(2 |Pi_h - Pi_ref|) is then not a bound "
-                 "of the error."
-              << std::endl;
-    }
-
     /// "Progress: load step k of N of cycle c done, ..." after @p n_solved
     /// load steps with @p left to go, @p elapsed seconds into the cycle; the
     /// remainder is estimated from the mean time per load step so far.
@@ -1609,13 +1576,6 @@ namespace contact_fem
                                  path_timer.wall_time())
                 << std::endl;
         saved = ConvergedState(solution, contact.get(), interface.get());
-        if (vtu_output)
-          {
-            TimerOutput::Scope                       t(*timer, "Output: VTU");
-            const std::unique_ptr<ContactState<dim>> state =
-              contact ? std::make_unique<ContactState<dim>>(contact_state()) : nullptr;
-            vtu_output->write_solution(solution_view(state.get()), cycle, time);
-          }
       }
     current_time = control.converged_time();
     cycle_record.set("load_steps", steps);
@@ -1651,12 +1611,20 @@ namespace contact_fem
                                         const double       time,
                                         Json              &step_record)
   {
-    record_forces(n_solved, time, step_record);
+    // The contact force of the step, before the formulation accepts it
+    // (its tangential residual is taken from the last accepted state).
+    const std::vector<double>                contact_force = interface_contact_force();
+    const std::unique_ptr<ContactState<dim>> state =
+      contact ? std::make_unique<ContactState<dim>>(contact_state()) : nullptr;
+    const RunView<dim> view = run_view(n_solved, state.get(), contact_force);
     // The load history a comparison may need (Cattaneo unloading).
     if (comparison && contact)
       comparison->record_load_step(contact_state());
     if (contact)
       contact->accept_load_step(*interface, interface_displacement);
+    postprocess([&](Postprocessor<dim> &postprocessor, std::ostream &out) {
+      postprocessor.after_load_step(view, step_record, out);
+    });
   }
 
   template <int dim>
@@ -1691,8 +1659,10 @@ namespace contact_fem
     if (refinement.n_cycles > 1)
       {
         estimate_error(cycle_record);
-        if (vtu_output)
-          vtu_output->write_error_indicators(solution_view(nullptr), indicators, cycle);
+        const RunView<dim> view = run_view(0, nullptr, interface_contact_force());
+        postprocess([&](Postprocessor<dim> &postprocessor, std::ostream &) {
+          postprocessor.after_estimate(view, indicators);
+        });
       }
     return true;
   }
@@ -1735,23 +1705,12 @@ namespace contact_fem
     const double potential_energy = strain_energy - external_work;
     cycle_record.set("strain_energy", strain_energy).set("potential_energy", potential_energy);
     print_results(contact_json, reaction_json, hertz_json);
-    if (contact)
-      for (const std::string &text : checkerboard_warnings(*interface, *contact))
-        warn("checkerboard_warning", text, cycle_record);
-    if (!probe_dofs.empty())
-      cycle_record.set("displacement_probes", probe_results());
-    if (contact && !analytical.reference_pressure_profile.empty())
-      {
-        const double error = reference_pressure_error(contact->pressures(*interface));
-        cycle_record.set("pressure_reference_l2_relative_error", error);
-        pcout << "    pressure, L2 error against the reference: " << value_or_ok(error, 1e-10)
-              << std::endl;
-      }
-    if (std::isfinite(analytical.reference_potential_energy))
-      record_energy_error(potential_energy, hertz_json["chord_gap_work"].number_value(),
-                          analytical.reference_potential_energy, pcout, cycle_record);
-    if (output.write_pressure_profile && contact)
-      write_pressure_profile();
+    const std::unique_ptr<ContactState<dim>> state =
+      contact ? std::make_unique<ContactState<dim>>(contact_state()) : nullptr;
+    const RunView<dim> view = run_view(0, state.get(), interface_contact_force());
+    postprocess([&](Postprocessor<dim> &postprocessor, std::ostream &out) {
+      postprocessor.after_cycle(view, cycle_record, out);
+    });
     return true;
   }
 

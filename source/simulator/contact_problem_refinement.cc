@@ -4,6 +4,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/numerics/error_estimator.h>
 
+#include <contact_fem/postprocess/pressure_profile.h>
 #include <contact_fem/simulator/contact_problem.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/adaptivity/marking.h>
@@ -256,7 +257,7 @@ namespace contact_fem
       }
     if (!analytical.reference_pressure_profile.empty())
       {
-        const double error = reference_pressure_error(pressure);
+        const double error = reference_pressure_error(analytical, contact_state(), pressure);
         cycle_record.set(prefix + "recovered_pressure_reference_l2_relative_error", error);
         pcout << label << " pressure, L2 error against the reference: " << value_or_ok(error, 1e-10)
               << std::endl;

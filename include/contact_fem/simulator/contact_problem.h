@@ -41,7 +41,7 @@
 #include <contact_fem/material/volumetric_projection.h>
 #include <contact_fem/postprocess/analytical_comparison.h>
 #include <contact_fem/postprocess/checkerboard.h>
-#include <contact_fem/postprocess/vtu_output.h>
+#include <contact_fem/postprocess/postprocessor.h>
 
 #include <cmath>
 #include <fstream>
@@ -382,31 +382,21 @@ namespace contact_fem
     {
       return {*interface, *contact, interface_displacement};
     }
-    /// Relative L2 error of a pressure per interface node against Analytical
-    /// solution/Reference pressure profile (pressure_l2_relative_error()).
-    double
-    reference_pressure_error(const std::vector<double> &pressure) const;
-    /// Prints and returns the displacements at Output/Displacement probes.
-    Json
-    probe_results() const;
-    /// The displacement components at the probes, probe by probe (the same
-    /// on every rank). Collective.
+    /// The converged state of load step @p step (0: the cycle's results)
+    /// as the postprocessors read it; @p state is contact_state() or null,
+    /// @p contact_force is interface_contact_force().
+    RunView<dim>
+    run_view(const unsigned int         step,
+             const ContactState<dim>   *state,
+             const std::vector<double> &contact_force) const;
+    /// The contact force at each interface DoF of the current state (empty
+    /// without contact).
     std::vector<double>
-    probe_displacements() const;
-    /// The converged solution on the current mesh, as the output reads it.
-    SolutionView<dim>
-    solution_view(const ContactState<dim> *contact_state) const
-    {
-      return {dof_handler,  *mapping, ghosted_solution, materials, volumetric_projection.get(),
-              contact_state};
-    }
+    interface_contact_force() const;
+    /// Calls @p hook on every postprocessor in turn and prints what each
+    /// writes to its stream.
     void
-    write_pressure_profile() const;
-    /// The reactions and pair forces of the converged load step @p step
-    /// (postprocess/forces.h): printed, into @p step_record and as a row
-    /// of forces.csv.
-    void
-    record_forces(const unsigned int step, const double time, Json &step_record);
+    postprocess(const std::function<void(Postprocessor<dim> &, std::ostream &)> &hook);
     /// Prints the contact results and the balance of the last load step.
     void
     print_results(const Json &contact_json, const Json &reaction, const Json &hertz) const;
@@ -507,10 +497,11 @@ namespace contact_fem
 
     std::unique_ptr<TimerOutput> timer; ///< made once the input is valid
     double                       current_time = 0.;
-    /// The VTU/PVD files (with Output/Write VTU), made with the output directory.
-    std::unique_ptr<VtuOutput<dim>> vtu_output;
-    Vector<float>                   indicators; ///< of the last estimate
-    double relative_estimate = 0.;              ///< eta / |u|_E of the last SPR estimate
+    /// The outputs the scene wants (postprocessor.h), made with the output
+    /// directory.
+    std::vector<std::unique_ptr<Postprocessor<dim>>> postprocessors;
+    Vector<float>                                    indicators; ///< of the last estimate
+    double relative_estimate = 0.; ///< eta / |u|_E of the last SPR estimate
     /// The linear solver can still answer for the current load step's last
     /// Newton system (LinearSolver::solve_again()).
     bool factorisation_current = false;
@@ -535,9 +526,6 @@ namespace contact_fem
     WarningLog warnings;
     /// The comparison with Analytical solution/Type; null for none.
     std::unique_ptr<AnalyticalComparison<dim>> comparison;
-    /// forces.csv: its header and the rows of the run so far.
-    std::string              force_history_header;
-    std::vector<std::string> force_history;
     /// The materials, boundary conditions and pairs as the run takes them
     /// (apply_scene_settings()), printed at its start.
     std::string effective_input;
