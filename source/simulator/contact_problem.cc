@@ -7,6 +7,7 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <contact_fem/postprocess/contact_results.h>
 #include <contact_fem/simulator/contact_problem.h>
 #include <contact_fem/contact/friction/friction_capacity.h>
 #include <contact_fem/simulator/search_control.h>
@@ -30,6 +31,44 @@ namespace contact_fem
 {
   namespace
   {
+    const char *const multigrid_setup_section = "Solve: multigrid setup";
+
+    /// The wall time of each timer section of the cycle (summary.json),
+    /// with the multigrid set-ups' part (@p multigrid_seconds, negative for
+    /// a direct solver).
+    Json
+    timing_record(const TimerOutput &timer, const double multigrid_seconds)
+    {
+      Json timing = Json::object();
+      for (const auto &[name, seconds] : timer.get_summary_data(TimerOutput::total_wall_time))
+        timing.set(name, seconds);
+      if (multigrid_seconds >= 0.)
+        timing.set(multigrid_setup_section, multigrid_seconds);
+      return timing;
+    }
+
+    /// The wall time of cycle @p cycle and of its timer sections, as
+    /// timing_record().
+    std::string
+    timing_text(const TimerOutput &timer,
+                const unsigned int cycle,
+                const double       wall,
+                const double       cumulative,
+                const double       multigrid_seconds)
+    {
+      std::ostringstream out;
+      out << "  Wall time of cycle " << cycle << ": " << wall << " s (cumulative " << cumulative
+          << " s), of which" << std::endl;
+      for (const auto &[name, seconds] : timer.get_summary_data(TimerOutput::total_wall_time))
+        out << "    " << std::left << std::setw(22) << name << std::right << std::setw(10)
+            << std::fixed << std::setprecision(4) << seconds << " s" << std::defaultfloat
+            << std::setprecision(6) << std::endl;
+      if (multigrid_seconds >= 0.)
+        out << "    (" << multigrid_setup_section << ": " << std::fixed << std::setprecision(4)
+            << multigrid_seconds << " s)" << std::defaultfloat << std::setprecision(6) << std::endl;
+      return out.str();
+    }
+
     /// "Progress: load step k of N of cycle c done, ..." after @p n_solved
     /// load steps with @p left to go, @p elapsed seconds into the cycle; the
     /// remainder is estimated from the mean time per load step so far.
@@ -1204,7 +1243,9 @@ namespace contact_fem
         const double wall      = cycle_timer.wall_time() - uncounted_wall_time;
         cumulative += wall;
         record.set("wall_time", wall).set("cumulative_wall_time", cumulative);
-        record.set("timing", cycle_timing());
+        record.set("timing",
+                   timing_record(*timer,
+                                 linear_solver->iterative() ? multigrid_setup_seconds : -1.));
         cycles.push(record);
         unsigned int newton_iterations = 0;
         for (const unsigned int n : newton_iterations_of_cycle)
@@ -1220,7 +1261,8 @@ namespace contact_fem
                       !last      ? "running" :
                                    converged_status());
         if (output.print_timing)
-          print_cycle_timing(wall, cumulative);
+          pcout << timing_text(*timer, cycle, wall, cumulative,
+                               linear_solver->iterative() ? multigrid_setup_seconds : -1.);
         if (!converged)
           return 2;
         if (beyond_model)
@@ -1241,34 +1283,6 @@ namespace contact_fem
   }
 
   template <int dim>
-  Json
-  ContactProblem<dim>::cycle_timing() const
-  {
-    Json timing = Json::object();
-    for (const auto &[name, seconds] : timer->get_summary_data(TimerOutput::total_wall_time))
-      timing.set(name, seconds);
-    if (linear_solver->iterative())
-      timing.set(multigrid_setup_section, multigrid_setup_seconds);
-    return timing;
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::print_cycle_timing(const double wall, const double cumulative) const
-  {
-    pcout << "  Wall time of cycle " << cycle << ": " << wall << " s (cumulative " << cumulative
-          << " s), of which" << std::endl;
-    for (const auto &[name, seconds] : timer->get_summary_data(TimerOutput::total_wall_time))
-      pcout << "    " << std::left << std::setw(22) << name << std::right << std::setw(10)
-            << std::fixed << std::setprecision(4) << seconds << " s" << std::defaultfloat
-            << std::setprecision(6) << std::endl;
-    if (linear_solver->iterative())
-      pcout << "    (" << multigrid_setup_section << ": " << std::fixed << std::setprecision(4)
-            << multigrid_setup_seconds << " s)" << std::defaultfloat << std::setprecision(6)
-            << std::endl;
-  }
-
-  template <int dim>
   std::string
   ContactProblem<dim>::converged_status() const
   {
@@ -1278,103 +1292,6 @@ namespace contact_fem
     return balance_failed ? "converged, but the reactions do not balance the load "
                             "(cycles[].balance_warning)" :
                             "converged";
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::check_reaction_balance(const Json &reaction, Json &cycle_record)
-  {
-    // The stability study's verdict tolerance (doc/stability.md): converged
-    // runs of the shipped scenes balance to 1e-10 or better, damped ones
-    // with tightened tolerances to about 2e-8.
-    constexpr double tolerance               = 1e-6;
-    constexpr double contrast_costing_digits = 1e6;
-    const double     imbalance               = reaction["relative_imbalance"].number_value();
-    if (!(imbalance > tolerance))
-      return;
-    const ContactDiagnosis<dim> diagnosis = this->diagnosis();
-    std::string                 cause     = diagnosis.precision_limits();
-    if (cause.empty())
-      cause = diagnosis.load_at_round_off(current_time);
-    // Below the 1e10 limit a large contrast still costs the direct solve
-    // about log10(ratio) of its 16 digits (stiffness/cyl-1e8-swapped: 1.5e-6
-    // with the Newton residuals at their absolute tolerance, and smaller
-    // Newton tolerances do not lower it).
-    const auto [youngs_min, youngs_max] = materials.youngs_modulus_range();
-    if (cause.empty() && youngs_max > contrast_costing_digits * youngs_min)
-      cause = "the stiffness ratio between the bodies, " + significant(youngs_max / youngs_min, 2) +
-              ", costs the solve about " +
-              std::to_string(static_cast<int>(std::log10(youngs_max / youngs_min))) +
-              " of the 16 digits of double precision, and the reactions balance only "
-              "that well (smaller Newton tolerances do not help; a stiff body modelled "
-              "as rigid does)";
-    if (cause.empty())
-      cause = "the Newton tolerances leave that much out of balance (Newton/Displacement "
-              "relative tolerance = " +
-              significant(newton_parameters.displacement_relative_tolerance, 2) + "); tighten them";
-    const std::string text = "the applied load and the support reactions are out of "
-                             "balance by " +
-                             scientific(imbalance, 1) + " of the forces (tolerance " +
-                             significant(tolerance, 2) + "): " + cause;
-    warn("balance_warning", text, cycle_record);
-    balance_failed = true;
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::warn_about_precision_limits() const
-  {
-    for (const auto &[id, constants] : materials.bodies)
-      if (lambda_over_mu(constants.poisson_ratio) > warn_lambda_over_mu())
-        pcout << "  Warning: body " << static_cast<unsigned int>(id) << " has Poisson's ratio "
-              << std::setprecision(16) << constants.poisson_ratio << std::setprecision(6)
-              << ": lambda/mu = " << significant(lambda_over_mu(constants.poisson_ratio), 2)
-              << ", beyond " << significant(warn_lambda_over_mu(), 2)
-              << ", where double precision resolves the shear stiffness next to the "
-                 "volumetric one only to about 1e-14 lambda/mu: expect the reactions to "
-                 "balance the load to about that, or the solver to fail."
-              << std::endl;
-    const ContactDiagnosis<dim> diagnosis = this->diagnosis();
-    if (const std::string contrast = diagnosis.stiffness_contrast_limit(); !contrast.empty())
-      pcout << "  Warning: " << contrast << "." << std::endl;
-    if (const std::string auxetic = diagnosis.auxetic_limit(); !auxetic.empty())
-      pcout << "  Warning: " << auxetic << "." << std::endl;
-    const std::string round_off = diagnosis.load_at_round_off(load_stepping.end_time);
-    if (!round_off.empty())
-      pcout << "  Warning: " << round_off << "." << std::endl;
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::warn_about_modelling_choices() const
-  {
-    warn_about_precision_limits();
-    // Volumetric locking: measured on the Hertz scene, p_max is off by more
-    // than 2 % beyond these Poisson's ratios without B-bar
-    // (doc/stability.md).
-    const double locking_nu = degree == 1 ? 0.49 : 0.499;
-    if (!volumetric_projection)
-      for (const auto &[id, constants] : materials.bodies)
-        if (constants.poisson_ratio > locking_nu)
-          pcout << "  Warning: body " << static_cast<unsigned int>(id) << " has Poisson's ratio "
-                << constants.poisson_ratio << ": degree " << degree
-                << " elements lock volumetrically beyond about " << locking_nu
-                << "; set Finite element/Volumetric strain = B-bar." << std::endl;
-    // The mortar side should be the softer one (and the finer mesh): a stiff
-    // slave on a soft, coarse master cannot represent the pressure.
-    if (interface)
-      for (unsigned int p = 0; p < contact_parameters.pairs.size(); ++p)
-        {
-          const double ratio = diagnosis().slave_stiffness_ratio(p);
-          if (ratio > 10.)
-            pcout << "  Warning: contact pair "
-                  << static_cast<unsigned int>(contact_parameters.pairs[p].slave) << ": "
-                  << static_cast<unsigned int>(contact_parameters.pairs[p].master)
-                  << ": the slave side is " << ratio
-                  << " times stiffer than the master side; the softer (and finer) "
-                     "surface should be the slave (Contact/Pairs)."
-                  << std::endl;
-        }
   }
 
   template <int dim>
@@ -1502,7 +1419,10 @@ namespace contact_fem
             << "; zero pivots (free rigid-body modes) are not detected by it" << std::endl;
 
     if (cycle == 0)
-      warn_about_modelling_choices();
+      for (const std::string &text :
+           diagnosis().modelling_warnings(degree, volumetric_projection != nullptr,
+                                          load_stepping.end_time))
+        pcout << "  Warning: " << text << std::endl;
 
     cycle_record.set("cycle", cycle)
       .set("n_cells", static_cast<double>(triangulation.n_global_active_cells()))
@@ -1671,8 +1591,17 @@ namespace contact_fem
   bool
   ContactProblem<dim>::record_results(const bool converged, Json &cycle_record)
   {
-    const Json contact_json  = contact_results();
-    const Json reaction_json = reaction_results();
+    const std::vector<double> contact_force = interface_contact_force();
+    const Json                contact_json =
+      contact ? contact_results(contact_state(), search->last_penetration_excess()) :
+                               Json::object();
+    const std::function<bool(types::global_dof_index)> held =
+      [this](const types::global_dof_index dof) {
+        return inclined_supports.holds(dof);
+      };
+    const Json reaction_json = reaction_results<dim>(
+      {run_view(0, nullptr, contact_force).forces, held, diagnosis().body_loads(current_time),
+       materials.youngs_modulus_range().first, solution.linfty_norm()});
     cycle_record.set("contact", contact_json).set("reaction", reaction_json);
     if (const double p_min = contact_json["min_active_contact_pressure"].number_value();
         converged && p_min < 0.)
@@ -1690,7 +1619,12 @@ namespace contact_fem
         return false;
       }
     if (converged)
-      check_reaction_balance(reaction_json, cycle_record);
+      if (const std::string text = diagnosis().balance_warning(reaction_json, current_time);
+          !text.empty())
+        {
+          warn("balance_warning", text, cycle_record);
+          balance_failed = true;
+        }
     Json hertz_json = Json::object();
     if (comparison)
       {
@@ -1704,10 +1638,21 @@ namespace contact_fem
     // measures the energy-norm error.
     const double potential_energy = strain_energy - external_work;
     cycle_record.set("strain_energy", strain_energy).set("potential_energy", potential_energy);
-    print_results(contact_json, reaction_json, hertz_json);
+    pcout << "  Results at t = " << current_time << ":" << std::endl
+          << std::setprecision(6)
+          << (contact ? contact_results_text(contact_state(), contact_json, reaction_json,
+                                             contact_parameters.penetration_tolerance) :
+                        std::string())
+          << reaction_results_text(reaction_json);
+    if (comparison && contact)
+      {
+        std::ostringstream text;
+        comparison->print(hertz_json, text);
+        pcout << text.str();
+      }
     const std::unique_ptr<ContactState<dim>> state =
       contact ? std::make_unique<ContactState<dim>>(contact_state()) : nullptr;
-    const RunView<dim> view = run_view(0, state.get(), interface_contact_force());
+    const RunView<dim> view = run_view(0, state.get(), contact_force);
     postprocess([&](Postprocessor<dim> &postprocessor, std::ostream &out) {
       postprocessor.after_cycle(view, cycle_record, out);
     });

@@ -172,16 +172,6 @@ namespace contact_fem
     locate_fixed_points();
     void
     make_dirichlet_constraints(const double time);
-    /// Prints warnings for locking-prone Poisson's ratios and for a slave
-    /// side much stiffer than its master.
-    void
-    warn_about_modelling_choices() const;
-    /// The wall time of each timer section of the cycle (summary.json).
-    Json
-    cycle_timing() const;
-    /// Prints the wall time of the cycle and of its timer sections.
-    void
-    print_cycle_timing(const double wall, const double cumulative) const;
     /// The summary status of a run whose last cycle converged.
     std::string
     converged_status() const;
@@ -365,17 +355,7 @@ namespace contact_fem
                                     newton_parameters, dof_handler, *mapping, interface.get(),
                                     contact.get(), most_null_pivots});
     }
-    /// Warns and records when the reactions do not balance the load.
-    void
-    check_reaction_balance(const Json &reaction, Json &cycle_record);
-    /// Warns about Poisson's ratios and loads beyond double precision.
-    void
-    warn_about_precision_limits() const;
     // --- results (contact_output.cc)
-    Json
-    contact_results() const;
-    Json
-    reaction_results() const;
     /// The converged contact state that results read (with contact).
     ContactState<dim>
     contact_state() const
@@ -397,9 +377,6 @@ namespace contact_fem
     /// writes to its stream.
     void
     postprocess(const std::function<void(Postprocessor<dim> &, std::ostream &)> &hook);
-    /// Prints the contact results and the balance of the last load step.
-    void
-    print_results(const Json &contact_json, const Json &reaction, const Json &hertz) const;
     void
     write_summary(const Json &cycles, const double wall_time, const std::string &status) const;
     /// Prepares the output directory (prepare_output_directory()) and opens
@@ -412,8 +389,6 @@ namespace contact_fem
     /// Throws naming @p path unless @p ok on every rank. Collective.
     void
     check_written(const std::string &path, const bool ok) const;
-    Tensor<1, dim>
-    applied_load(const double time) const;
 
     MPI_Comm           comm;
     std::ofstream      log_file;
@@ -469,7 +444,6 @@ namespace contact_fem
     /// Wall time of the multigrid set-ups of this cycle, part of "Solve:
     /// linear".
     double                        multigrid_setup_seconds = 0.;
-    static constexpr const char  *multigrid_setup_section = "Solve: multigrid setup";
     TrilinosWrappers::MPI::Vector system_rhs;
     TrilinosWrappers::MPI::Vector solution;         ///< owned
     TrilinosWrappers::MPI::Vector ghosted_solution; ///< locally relevant
@@ -518,7 +492,7 @@ namespace contact_fem
     std::string memory_warning;
     /// Set by the first solve_load_step() (started_solving()).
     bool solving = false;
-    /// A cycle's reactions did not balance its load (check_reaction_balance()).
+    /// A cycle's reactions did not balance its load (ContactDiagnosis::balance_warning()).
     bool balance_failed = false;
     /// A cycle converged beyond ModelRange (check_converged_solution()).
     bool outside_model_range = false;
