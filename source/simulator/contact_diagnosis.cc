@@ -518,6 +518,17 @@ namespace contact_fem
            "): " + cause;
   }
 
+  template <int dim>
+  std::string
+  ContactDiagnosis<dim>::precision_hint() const
+  {
+    // Stiffness ratios beyond ~1e10 (measured: 1e12 fails with either body
+    // as the slave) and nearly incompressible bodies leave the direct solve
+    // with too few digits: then that is the likely cause of any failure.
+    const std::string cause = precision_limits();
+    return cause.empty() ? cause : " Likely cause: " + cause + ".";
+  }
+
   template class ContactDiagnosis<2>;
   template class ContactDiagnosis<3>;
 } // namespace contact_fem

@@ -72,7 +72,7 @@ namespace contact_fem
     const std::string path = output.directory + "/summary.json";
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       {
-        check_written(path, true);
+        throw_if_unwritten(path, "", comm);
         return;
       }
     Json summary = Json::object();
@@ -101,59 +101,6 @@ namespace contact_fem
     throw_if_unwritten(path, write_file_atomically(path, out.str()), comm);
   }
 
-  template <int dim>
-  OutputDirectoryReport
-  ContactProblem<dim>::open_output_directory()
-  {
-    const OutputDirectoryReport report = prepare_output_directory(output.directory, comm);
-    const bool                  root   = Utilities::MPI::this_mpi_process(comm) == 0;
-    if (root)
-      log_file.open(output.directory + "/log.txt");
-    check_written(output.directory + "/log.txt", !root || static_cast<bool>(log_file));
-    if (root)
-      console.attach(log_file);
-    postprocessors = Postprocessor<dim>::create_wanted(
-      {output, analytical, static_cast<bool>(contact),
-       [this](const std::string &kind, const std::string &text, Json &record) {
-         warn(kind, text, record);
-       },
-       *timer, comm});
-    return report;
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::report_earlier_outputs(const OutputDirectoryReport &report)
-  {
-    if (report.removed == 0)
-      return;
-    std::ostringstream text;
-    text << "Output directory '" << output.directory << "': removed " << report.removed
-         << " file(s) of an earlier run";
-    // A rerun of the same scene replaces its own results, as expected: the
-    // log says so, the console (and test output) stays the same for every
-    // rerun. Results of another scene are worth a word on the console.
-    if (report.earlier_scene == scene_name)
-      {
-        console.flush();
-        if (log_file.is_open())
-          log_file << text.str() << " of this scene." << std::endl;
-      }
-    else
-      pcout << text.str()
-            << (report.earlier_scene.empty() ? std::string(" (its scene is unknown)") :
-                                               " of scene '" + report.earlier_scene + "'")
-            << "." << std::endl;
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::check_written(const std::string &path, const bool ok) const
-  {
-    // Collective, so that every rank stops if rank 0 could not write.
-    throw_if_unwritten(path, ok ? "" : "the write failed: a full disk?", comm);
-  }
-
   // The class is instantiated in contact_problem.cc; here only the members
   // defined in this file.
 #define INSTANTIATE(dim)                                                                         \
@@ -163,11 +110,8 @@ namespace contact_fem
                                                              const std::vector<double> &) const; \
   template void                ContactProblem<dim>::postprocess(                                 \
                    const std::function<void(Postprocessor<dim> &, std::ostream &)> &);           \
-  template void                  ContactProblem<dim>::write_summary(const Json &, const double,  \
-                                                                    const std::string &) const;  \
-  template OutputDirectoryReport ContactProblem<dim>::open_output_directory();                   \
-  template void ContactProblem<dim>::report_earlier_outputs(const OutputDirectoryReport &);      \
-  template void ContactProblem<dim>::check_written(const std::string &, const bool) const;
+  template void ContactProblem<dim>::write_summary(const Json &, const double,                   \
+                                                   const std::string &) const;
   INSTANTIATE(2)
   INSTANTIATE(3)
 #undef INSTANTIATE

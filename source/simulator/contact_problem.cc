@@ -69,6 +69,59 @@ namespace contact_fem
       return out.str();
     }
 
+    /// The largest change of a prescribed displacement from @p solution to
+    /// the values of @p dirichlet (before they are distributed): a lower
+    /// bound of the motion of the step. Collective.
+    double
+    largest_prescribed_change(const AffineConstraints<double>     &dirichlet,
+                              const TrilinosWrappers::MPI::Vector &solution,
+                              const MPI_Comm                       comm)
+    {
+      double largest = 0.;
+      for (const auto i : solution.locally_owned_elements())
+        if (dirichlet.is_constrained(i) && dirichlet.get_constraint_entries(i)->empty())
+          largest = std::max(largest, std::abs(dirichlet.get_inhomogeneity(i) - solution(i)));
+      return Utilities::MPI::max(largest, comm);
+    }
+
+    /// Records the contact sets of @p contact after @p iteration and throws
+    /// a NewtonFailure (splittable) when they repeat those of an earlier
+    /// iteration although they changed: the iteration cycles.
+    template <int dim>
+    void
+    check_for_cycling(const ContactFormulation<dim> &contact,
+                      const std::string             &at,
+                      const unsigned int             iteration,
+                      const unsigned int             changes,
+                      std::vector<std::vector<int>> &sets_of_iteration)
+    {
+      sets_of_iteration.push_back(contact.contact_sets());
+      // An empty set: the formulation offers no detection.
+      if (changes == 0 || iteration < 2 || sets_of_iteration.back().empty())
+        return;
+      for (unsigned int k = 0; k + 1 < iteration; ++k)
+        if (sets_of_iteration[k] == sets_of_iteration.back())
+          {
+            unsigned int differing = 0;
+            for (unsigned int n = 0; n < sets_of_iteration.back().size(); ++n)
+              differing += sets_of_iteration[iteration - 1][n] != sets_of_iteration.back()[n];
+            throw NewtonFailure(at + ": the stick/slip set cycles: iteration " +
+                                  std::to_string(iteration) +
+                                  " brings back the contact sets "
+                                  "of iteration " +
+                                  std::to_string(k) + " (period " + std::to_string(iteration - k) +
+                                  ", " + std::to_string(differing) +
+                                  " node(s) switching), so the "
+                                  "semi-smooth Newton iteration cannot settle. Smaller load "
+                                  "steps usually break the cycle (the step is split). "
+                                  "With Contact/Pure slip = true a scene that sticks "
+                                  "somewhere cannot settle: set it only where the whole "
+                                  "contact slips.",
+                                true);
+          }
+    }
+
+
     /// "Progress: load step k of N of cycle c done, ..." after @p n_solved
     /// load steps with @p left to go, @p elapsed seconds into the cycle; the
     /// remainder is estimated from the mean time per load step so far.
@@ -87,56 +140,6 @@ namespace contact_fem
     }
   } // namespace
 
-  TeeStream::TeeStream(std::ostream &console)
-    : std::ostream(&buffer)
-  {
-    buffer.first = console.rdbuf();
-  }
-
-  void
-  TeeStream::attach(std::ostream &file)
-  {
-    flush();
-    buffer.second = file.rdbuf();
-  }
-
-  bool
-  TeeStream::file_failed() const
-  {
-    return buffer.file_failed;
-  }
-
-  // Only the console decides the state of the stream: a log file that
-  // fails (a full disk, ...) used to put the whole stream into a failed
-  // state, after which nothing more reached the console either. The file is
-  // dropped instead and the run says so at its end.
-  int
-  TeeStream::Buffer::overflow(int c)
-  {
-    if (c == EOF)
-      return !EOF;
-    if (second && second->sputc(c) == EOF)
-      drop_file();
-    return first->sputc(c);
-  }
-
-  int
-  TeeStream::Buffer::sync()
-  {
-    if (second && second->pubsync() != 0)
-      drop_file();
-    return first->pubsync();
-  }
-
-  void
-  TeeStream::Buffer::drop_file()
-  {
-    second      = nullptr;
-    file_failed = true;
-  }
-
-  namespace
-  {} // namespace
 
   template <int dim>
   void
@@ -207,8 +210,8 @@ namespace contact_fem
                                       const std::string &scene_name,
                                       const std::string &prm_directory)
     : comm(MPI_COMM_WORLD)
-    , console(std::cout)
-    , pcout(console, Utilities::MPI::this_mpi_process(comm) == 0)
+    , log(comm)
+    , pcout(log.stream(), Utilities::MPI::this_mpi_process(comm) == 0)
     , scene_name(scene_name)
     , degree(std::stoul(read_entry(prm, "Finite element", "Degree")))
     , triangulation(comm,
@@ -789,19 +792,6 @@ namespace contact_fem
   }
 
   template <int dim>
-  double
-  ContactProblem<dim>::prescribed_increment() const
-  {
-    double largest = 0.;
-    for (const auto i : owned_dofs)
-      if (dirichlet_constraints.is_constrained(i) &&
-          dirichlet_constraints.get_constraint_entries(i)->empty())
-        largest =
-          std::max(largest, std::abs(dirichlet_constraints.get_inhomogeneity(i) - solution(i)));
-    return Utilities::MPI::max(largest, comm);
-  }
-
-  template <int dim>
   void
   ContactProblem<dim>::prepare_load_step(const double time,
                                          const double step_size,
@@ -811,7 +801,8 @@ namespace contact_fem
     make_dirichlet_constraints(time);
     compute_cell_loads(time);
     // Start from the last converged state with the new prescribed values.
-    const double prescribed = contact ? prescribed_increment() : 0.;
+    const double prescribed =
+      contact ? largest_prescribed_change(dirichlet_constraints, solution, comm) : 0.;
     dirichlet_constraints.distribute(solution);
     ghosted_solution = solution;
     if (contact)
@@ -826,17 +817,6 @@ namespace contact_fem
       }
     make_sparsity_pattern();
     factorisation_current = false;
-  }
-
-  template <int dim>
-  std::string
-  ContactProblem<dim>::precision_hint() const
-  {
-    // Stiffness ratios beyond ~1e10 (measured: 1e12 fails with either body
-    // as the slave) and nearly incompressible bodies leave the direct solve
-    // with too few digits: then that is the likely cause of any failure.
-    const std::string cause = diagnosis().precision_limits();
-    return cause.empty() ? cause : " Likely cause: " + cause + ".";
   }
 
   template <int dim>
@@ -856,7 +836,8 @@ namespace contact_fem
         if (e.singular && contact && contact->slides_everywhere())
           throw NewtonFailure(where + ": " + e.what() + ": " + exceeded_friction_capacity({}));
         throw NewtonFailure(where + ": " + e.what() + "." +
-                              (e.singular ? diagnosis().singular_system_hint() : precision_hint()),
+                              (e.singular ? diagnosis().singular_system_hint() :
+                                            diagnosis().precision_hint()),
                             false);
       }
     catch (const std::exception &e)
@@ -991,7 +972,7 @@ namespace contact_fem
                                linear_iterations)
                 << std::endl;
         if (contact)
-          check_for_cycling(at, iteration, update.changes, sets_of_iteration);
+          check_for_cycling(*contact, at, iteration, update.changes, sets_of_iteration);
         if (assessment.converged && contact &&
             !search->accept(interface_displacement, step, time, step_size))
           {
@@ -1012,7 +993,7 @@ namespace contact_fem
                             monitor.last_residuals() + "." +
                             diagnosis().non_convergence_hint(assessment.stalled, monitor.last_r_u(),
                                                              monitor.last_r_lambda()) +
-                            precision_hint(),
+                            diagnosis().precision_hint(),
                           !assessment.stalled);
 
     return iteration;
@@ -1030,39 +1011,6 @@ namespace contact_fem
     if (contact && contact->slides_everywhere())
       if (const auto free = diagnosis().problem_traits().unsupported_bodies; !free.empty())
         throw NewtonFailure(at + ": " + exceeded_friction_capacity(free));
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::check_for_cycling(const std::string             &at,
-                                         const unsigned int             iteration,
-                                         const unsigned int             changes,
-                                         std::vector<std::vector<int>> &sets_of_iteration) const
-  {
-    sets_of_iteration.push_back(contact->contact_sets());
-    // An empty set: the formulation offers no detection.
-    if (changes == 0 || iteration < 2 || sets_of_iteration.back().empty())
-      return;
-    for (unsigned int k = 0; k + 1 < iteration; ++k)
-      if (sets_of_iteration[k] == sets_of_iteration.back())
-        {
-          unsigned int differing = 0;
-          for (unsigned int n = 0; n < sets_of_iteration.back().size(); ++n)
-            differing += sets_of_iteration[iteration - 1][n] != sets_of_iteration.back()[n];
-          throw NewtonFailure(at + ": the stick/slip set cycles: iteration " +
-                                std::to_string(iteration) +
-                                " brings back the contact sets "
-                                "of iteration " +
-                                std::to_string(k) + " (period " + std::to_string(iteration - k) +
-                                ", " + std::to_string(differing) +
-                                " node(s) switching), so the "
-                                "semi-smooth Newton iteration cannot settle. Smaller load "
-                                "steps usually break the cycle (the step is split). "
-                                "With Contact/Pure slip = true a scene that sticks "
-                                "somewhere cannot settle: set it only where the whole "
-                                "contact slips.",
-                              true);
-        }
   }
 
   template <int dim>
@@ -1121,7 +1069,13 @@ namespace contact_fem
     // checked: an earlier run's files go (they would pass for this run's),
     // and a directory that cannot take the new ones stops the run before
     // any work.
-    const OutputDirectoryReport earlier_outputs = open_output_directory();
+    const OutputDirectoryReport earlier_outputs = log.open(output.directory);
+    postprocessors                              = Postprocessor<dim>::create_wanted(
+                                   {output, analytical, static_cast<bool>(contact),
+                                    [this](const std::string &kind, const std::string &text, Json &record) {
+         warn(kind, text, record);
+       },
+                                    *timer, comm});
     pcout << "contact_fem: scene '" << scene_name << "', " << dim << "D, "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI process(es)" << std::endl
           << effective_input;
@@ -1138,7 +1092,7 @@ namespace contact_fem
                  "coordinates; the VTU files (32-bit points) the moved ones: add ("
               << origin << ") (summary.json: coordinate_origin)." << std::endl;
       }
-    report_earlier_outputs(earlier_outputs);
+    log.report_earlier_outputs(earlier_outputs, scene_name);
     print_input_warnings();
 
     create_checked_mesh();
@@ -1202,7 +1156,7 @@ namespace contact_fem
         throw;
       }
     pcout << warnings.repeats();
-    if (console.file_failed())
+    if (log.failed())
       pcout << "Warning: writing '" << output.directory
             << "/log.txt' failed during the run: the log is incomplete (the console has "
                "everything)."

@@ -64,6 +64,10 @@ namespace contact_fem
     /// a Poisson's ratio near -1 or 0.5), or "".
     std::string
     precision_limits() const;
+    /// precision_limits() as the hint of a failure message: " Likely
+    /// cause: ...", or "".
+    std::string
+    precision_hint() const;
     /// The stiffness ratio part of precision_limits().
     std::string
     stiffness_contrast_limit() const;

@@ -42,6 +42,7 @@
 #include <contact_fem/postprocess/analytical_comparison.h>
 #include <contact_fem/postprocess/checkerboard.h>
 #include <contact_fem/postprocess/postprocessor.h>
+#include <contact_fem/postprocess/run_log.h>
 
 #include <cmath>
 #include <fstream>
@@ -57,38 +58,6 @@ namespace contact_fem
   struct ContactNodeTraction;
   template <int dim>
   class SolutionChecks;
-
-  /// An output stream that writes to the console and, once attached, to a log file.
-  class TeeStream : public std::ostream
-  {
-  public:
-    explicit TeeStream(std::ostream &console);
-    /// Also write to @p file from now on.
-    void
-    attach(std::ostream &file);
-    /// Whether writing to the file failed (it is then no longer written;
-    /// the console goes on).
-    bool
-    file_failed() const;
-
-  private:
-    class Buffer : public std::streambuf
-    {
-    public:
-      std::streambuf *first = nullptr, *second = nullptr;
-      bool            file_failed = false;
-
-    protected:
-      int
-      overflow(int c) override;
-      int
-      sync() override;
-
-    private:
-      void
-      drop_file();
-    } buffer;
-  };
 
   /**
    * Solves one scene: builds the mesh, steps the load, solves each step with
@@ -187,11 +156,6 @@ namespace contact_fem
     /// it in the first cycle that gives the kind (WarningLog).
     void
     warn(const std::string &kind, const std::string &text, Json &cycle_record);
-    /// The largest change of a prescribed displacement from the current
-    /// solution to the values at the present time (before they are
-    /// distributed): a lower bound of the motion of the step. Collective.
-    double
-    prescribed_increment() const;
     void
     make_sparsity_pattern();
     void
@@ -236,19 +200,8 @@ namespace contact_fem
     /// outran it, recovers the multipliers and updates the active set.
     ContactUpdate
     update_contact(const unsigned int iteration);
-    /// " Likely cause: ..." when a precision limit applies, else empty.
-    std::string
-    precision_hint() const;
     void
     assemble_system();
-    /// Records the contact sets after @p iteration and throws a
-    /// NewtonFailure (splittable) when they repeat those of an earlier
-    /// iteration although they changed: the iteration cycles.
-    void
-    check_for_cycling(const std::string             &at,
-                      const unsigned int             iteration,
-                      const unsigned int             changes,
-                      std::vector<std::vector<int>> &sets_of_iteration) const;
 
     /// Whether every cycle solves the whole load path from the unloaded
     /// state: with a formulation whose answer depends on the path.
@@ -379,20 +332,9 @@ namespace contact_fem
     postprocess(const std::function<void(Postprocessor<dim> &, std::ostream &)> &hook);
     void
     write_summary(const Json &cycles, const double wall_time, const std::string &status) const;
-    /// Prepares the output directory (prepare_output_directory()) and opens
-    /// log.txt; throws naming the path if either fails. Collective.
-    OutputDirectoryReport
-    open_output_directory();
-    /// Says how many files of an earlier run the preparation removed.
-    void
-    report_earlier_outputs(const OutputDirectoryReport &report);
-    /// Throws naming @p path unless @p ok on every rank. Collective.
-    void
-    check_written(const std::string &path, const bool ok) const;
 
     MPI_Comm           comm;
-    std::ofstream      log_file;
-    TeeStream          console;
+    RunLog             log; ///< the console and log.txt
     ConditionalOStream pcout;
 
     std::string            scene_name;
