@@ -55,8 +55,6 @@ namespace contact_fem
   using namespace dealii;
 
   template <int dim>
-  struct ContactNodeTraction;
-  template <int dim>
   class SolutionChecks;
 
   /**
@@ -232,16 +230,6 @@ namespace contact_fem
     // --- adaptivity (contact_problem_refinement.cc)
     void
     estimate_error(Json &cycle_record);
-    /// Records and prints how far the traction of the recovered stress at
-    /// the paired slave nodes (@p node_stresses at @p nodes, the paired
-    /// interface->slave_nodes in their order) is from the exact pressure
-    /// (Hertz, reference profile) and from zero shear; keys prefixed with
-    /// @p prefix.
-    void
-    report_recovered_tractions(const std::vector<ContactNodeTraction<dim>> &nodes,
-                               const std::vector<SymmetricTensor<2, dim>>  &node_stresses,
-                               const std::string                           &prefix,
-                               Json                                        &cycle_record) const;
     /// Marks and refines; false if the mesh is kept (nothing to refine).
     bool
     refine_mesh();
