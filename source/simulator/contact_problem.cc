@@ -9,6 +9,7 @@
 
 #include <contact_fem/postprocess/contact_results.h>
 #include <contact_fem/simulator/contact_problem.h>
+#include <contact_fem/simulator/dof_setup.h>
 #include <contact_fem/contact/friction/friction_capacity.h>
 #include <contact_fem/simulator/search_control.h>
 #include <contact_fem/simulator/solution_checks.h>
@@ -277,7 +278,7 @@ namespace contact_fem
     TimerOutput::Scope t(*timer, "Setup: DoFs");
     if (auto *cache = dynamic_cast<MappingQCache<dim> *>(mapping.get()))
       cache->initialize(MappingQ<dim>(cache->get_degree()), triangulation);
-    distribute_dofs();
+    distribute_dofs(dof_handler, fe, dof_renumbering_seed);
     owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
 
@@ -290,7 +291,7 @@ namespace contact_fem
     ghosted_solution.reinit(owned_dofs, relevant_dofs, comm);
 
     locate_fixed_points();
-    make_dirichlet_constraints(0.);
+    make_dirichlet_constraints(dirichlet_inputs(), relevant_dofs, 0., dirichlet_constraints);
     if (!contact_parameters.pairs.empty())
       {
         interface = std::make_unique<ContactInterface<dim>>();
@@ -316,25 +317,6 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactProblem<dim>::distribute_dofs()
-  {
-    dof_handler.distribute_dofs(fe);
-    if (dof_renumbering_seed == 0)
-      return;
-    // Each rank shuffles its own range: deal.II 9.4's DoFRenumbering::random
-    // has a fixed seed and shuffles all n_dofs numbers, which a distributed
-    // DoFHandler on several ranks does not accept (it takes the new numbers
-    // of the owned DoFs only). refine_mesh() and setup_dofs() both call this
-    // on one mesh and get the same order.
-    const IndexSet                      &owned = dof_handler.locally_owned_dofs();
-    std::vector<types::global_dof_index> new_numbers(owned.begin(), owned.end());
-    std::mt19937 generator(dof_renumbering_seed + 7919 * Utilities::MPI::this_mpi_process(comm));
-    std::shuffle(new_numbers.begin(), new_numbers.end(), generator);
-    dof_handler.renumber_dofs(new_numbers);
-  }
-
-  template <int dim>
-  void
   ContactProblem<dim>::select_linear_solver()
   {
     const ProblemTraits traits = diagnosis().problem_traits();
@@ -344,73 +326,14 @@ namespace contact_fem
   }
 
   template <int dim>
-  std::vector<types::global_dof_index>
-  ContactProblem<dim>::vertex_dofs(const BodyPoint &point, const std::string &key) const
-  {
-    Point<dim> user;
-    for (unsigned int d = 0; d < dim; ++d)
-      user[d] = point.coordinates[d];
-    const Point<dim> location = scene.frame.to_model(user);
-    // The nearest vertex of the body, in units of its cell's diameter: a
-    // point typed with fewer digits than the mesh file holds (a rotated
-    // mesh) still names its vertex, and a miss names the nearest one.
-    std::vector<types::global_dof_index> dofs;
-    std::pair<double, Point<dim>>        nearest(std::numeric_limits<double>::infinity(), {});
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        if (cell->is_artificial() || cell->material_id() != point.material_id)
-          continue;
-        for (const auto v : cell->vertex_indices())
-          {
-            const double distance = cell->vertex(v).distance(location) / cell->diameter();
-            if (distance < nearest.first)
-              {
-                // Printed: coordinates of round-off size (on a symmetry
-                // line) as 0, so that the message is the same everywhere.
-                nearest = {distance, scene.frame.to_user(cell->vertex(v))};
-                for (unsigned int d = 0; d < dim; ++d)
-                  if (std::abs(nearest.second[d]) < 1e-10 * cell->diameter())
-                    nearest.second[d] = 0.;
-              }
-            if (distance < vertex_match_tolerance && dofs.empty())
-              for (unsigned int d = 0; d < dim; ++d)
-                dofs.push_back(cell->vertex_dof_index(v, d));
-          }
-        // The nearest vertex matters only where no rank finds the point.
-        if (!dofs.empty())
-          break;
-      }
-    const unsigned int found = dofs.empty() ? 0 : 1;
-    if (Utilities::MPI::sum(found, comm) == 0)
-      {
-        for (const auto &candidate : Utilities::MPI::all_gather(comm, nearest))
-          if (candidate.first < nearest.first)
-            nearest = candidate;
-        const std::string text = to_string(point);
-        AssertThrow(false,
-                    ExcMessage(key + ": body " + std::to_string(point.material_id) +
-                               " has no mesh vertex at (" + text.substr(text.find('@') + 2) + ")" +
-                               (std::isfinite(nearest.first) ?
-                                  "; its nearest vertex is " +
-                                    coordinates_text(scene.frame.to_model(nearest.second)) + ", " +
-                                    significant(nearest.first, 2) +
-                                    " of its cell's diameter away (a point names a vertex "
-                                    "within " +
-                                    significant(vertex_match_tolerance, 2) + ")" :
-                                  "; the body has no cells") +
-                               "."));
-      }
-    return dofs;
-  }
-
-  template <int dim>
   void
   ContactProblem<dim>::locate_fixed_points()
   {
     fixed_point_dofs.clear();
     for (const auto &condition : boundary_conditions.points)
       {
-        const auto dofs = vertex_dofs(condition.point, "Boundary conditions/Fixed points");
+        const auto dofs = vertex_dofs(dof_handler, scene.frame, condition.point,
+                                      "Boundary conditions/Fixed points");
         if (!dofs.empty())
           fixed_point_dofs.push_back(dofs[condition.component]);
       }
@@ -419,31 +342,8 @@ namespace contact_fem
                            fixed_point_dofs.end());
     probe_dofs.clear();
     for (const auto &probe : output.displacement_probes)
-      probe_dofs.push_back(vertex_dofs(probe, "Output/Displacement probes"));
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::make_dirichlet_constraints(const double time)
-  {
-    dirichlet_constraints.clear();
-    dirichlet_constraints.reinit(relevant_dofs);
-    for (const auto &condition : boundary_conditions.displacements)
-      {
-        std::vector<std::string> expressions(dim, "0");
-        expressions[condition.component] = condition.expression;
-        UserFunction<dim> function(expressions, scene.frame);
-        function.set_time(time);
-        ComponentMask mask(dim, false);
-        mask.set(condition.component, true);
-        VectorTools::interpolate_boundary_values(*mapping, dof_handler, condition.boundary_id,
-                                                 function, dirichlet_constraints, mask);
-      }
-    for (const auto dof : fixed_point_dofs)
-      if (!dirichlet_constraints.is_constrained(dof))
-        dirichlet_constraints.add_line(dof);
-    inclined_supports.add_constraints(dof_handler, hanging_constraints, dirichlet_constraints);
-    dirichlet_constraints.close();
+      probe_dofs.push_back(
+        vertex_dofs(dof_handler, scene.frame, probe, "Output/Displacement probes"));
   }
 
   template <int dim>
@@ -670,39 +570,14 @@ namespace contact_fem
             constraints.distribute_local_to_global(cell_matrices[index], load, dofs, system_matrix,
                                                    system_rhs);
           else
-            distribute_unsymmetric(cell_matrices[index], load, dofs);
+            distribute_two_space(cell_matrices[index], load, dofs, constraints, test_constraints,
+                                 system_matrix, system_rhs);
         }
     if (contact)
       contact->assemble(*interface, constraints, symmetric ? constraints : test_constraints,
                         owned_dofs, system_matrix, system_rhs);
     system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::distribute_unsymmetric(const FullMatrix<double>                   &K,
-                                              const Vector<double>                       &load,
-                                              const std::vector<types::global_dof_index> &dofs)
-  {
-    // P (K (C u~ + b) - f) = 0 with the trial constraints u = C u~ + b and
-    // the test constraints P: the rows follow the test space, the columns
-    // the trial space, and the inhomogeneity b moves to the right-hand side.
-    const unsigned int n = dofs.size();
-    Vector<double>     b(n), rhs(load);
-    for (unsigned int i = 0; i < n; ++i)
-      if (constraints.is_constrained(dofs[i]))
-        b(i) = constraints.get_inhomogeneity(dofs[i]);
-    b *= -1.;
-    K.vmult_add(rhs, b);
-    test_constraints.distribute_local_to_global(K, dofs, constraints, dofs, system_matrix);
-    test_constraints.distribute_local_to_global(rhs, dofs, system_rhs);
-    // The two-space form leaves the eliminated rows empty: a diagonal entry
-    // of the bulk's scale keeps the matrix regular (the value is overwritten
-    // by distribute()). Both spaces eliminate the same DoFs.
-    for (unsigned int i = 0; i < n; ++i)
-      if (constraints.is_constrained(dofs[i]))
-        system_matrix.add(dofs[i], dofs[i], std::abs(K(i, i)));
   }
 
   template <int dim>
@@ -798,7 +673,7 @@ namespace contact_fem
                                          const bool   first_step)
   {
     current_time = time;
-    make_dirichlet_constraints(time);
+    make_dirichlet_constraints(dirichlet_inputs(), relevant_dofs, time, dirichlet_constraints);
     compute_cell_loads(time);
     // Start from the last converged state with the new prescribed values.
     const double prescribed =
@@ -1523,7 +1398,8 @@ namespace contact_fem
     if (!path.converged && contact)
       {
         // Results of the last converged state: its residual and gaps.
-        make_dirichlet_constraints(current_time);
+        make_dirichlet_constraints(dirichlet_inputs(), relevant_dofs, current_time,
+                                   dirichlet_constraints);
         compute_cell_loads(current_time);
         compute_residual();
         interface_displacement = interface->gather(solution);

@@ -6,6 +6,7 @@
 
 #include <contact_fem/postprocess/pressure_profile.h>
 #include <contact_fem/simulator/contact_problem.h>
+#include <contact_fem/simulator/dof_setup.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/adaptivity/marking.h>
 #include <contact_fem/contact/mortar.h>
@@ -380,7 +381,7 @@ namespace contact_fem
     triangulation.prepare_coarsening_and_refinement();
     transfer.prepare_for_coarsening_and_refinement(ghosted_solution);
     triangulation.execute_coarsening_and_refinement();
-    distribute_dofs();
+    distribute_dofs(dof_handler, fe, dof_renumbering_seed);
     TrilinosWrappers::MPI::Vector transferred(dof_handler.locally_owned_dofs(), comm);
     transfer.interpolate(transferred);
     transferred_solution = std::make_unique<TrilinosWrappers::MPI::Vector>(transferred);

@@ -27,6 +27,7 @@
 #include <contact_fem/postprocess/convergence_table.h>
 #include <contact_fem/postprocess/output_files.h>
 #include <contact_fem/simulator/contact_diagnosis.h>
+#include <contact_fem/simulator/dof_setup.h>
 #include <contact_fem/simulator/input_checks.h>
 #include <contact_fem/simulator/newton_failure.h>
 #include <contact_fem/simulator/search_control.h>
@@ -120,25 +121,14 @@ namespace contact_fem
     run_cycles(Json &cycles, const Timer &total_timer);
     void
     setup_dofs();
-    /// Distributes the DoFs on the current mesh, in a random order of each
-    /// rank's own DoFs if Finite element/DoF renumbering seed is not 0.
-    void
-    distribute_dofs();
     void
     compute_cell_matrices();
     void
     compute_cell_loads(const double time);
-    /// The dim DoFs of the vertex @p point of its body, if a non-artificial
-    /// cell of this rank has it (else empty); throws naming @p key if no rank
-    /// has it. Collective.
-    std::vector<types::global_dof_index>
-    vertex_dofs(const BodyPoint &point, const std::string &key) const;
     /// Finds the DoFs of the "Fixed points" and of the displacement probes on
     /// this mesh; throws if a point is not a vertex of its body.
     void
     locate_fixed_points();
-    void
-    make_dirichlet_constraints(const double time);
     /// The summary status of a run whose last cycle converged.
     std::string
     converged_status() const;
@@ -209,12 +199,6 @@ namespace contact_fem
       return contact && contact->path_dependent();
     }
 
-    /// Adds a cell's matrix and load when the test space differs from the
-    /// trial space (rows by test_constraints, columns by constraints).
-    void
-    distribute_unsymmetric(const FullMatrix<double>                   &K,
-                           const Vector<double>                       &load,
-                           const std::vector<types::global_dof_index> &dofs);
 
     void
     solve_linear_system(const double newton_residual_target);
@@ -280,6 +264,13 @@ namespace contact_fem
     /// and restoring the last converged state; records the steps.
     LoadPath
     step_the_load(const unsigned int cycle, Json &cycle_record);
+    /// What the prescribed displacements are made of (dof_setup.h).
+    DirichletInputs<dim>
+    dirichlet_inputs()
+    {
+      return {*mapping,         dof_handler,         scene.frame,      boundary_conditions,
+              fixed_point_dofs, hanging_constraints, inclined_supports};
+    }
     /// The checks of the parsed input (input_checks.h).
     InputChecks<dim>
     input_checks() const
@@ -357,7 +348,7 @@ namespace contact_fem
     InclinedSupports<dim>                inclined_supports; ///< Boundary conditions/Rollers
     std::vector<types::global_dof_index> fixed_point_dofs;  ///< locally relevant
     /// Per Output/Displacement probes entry: its vertex DoFs (see
-    /// vertex_dofs()).
+    /// vertex_dofs(), dof_setup.h).
     std::vector<std::vector<types::global_dof_index>> probe_dofs;
     AffineConstraints<double>                         constraints;
     /// The constraints of the test space when the contact formulation's
@@ -391,10 +382,6 @@ namespace contact_fem
     std::vector<bool>                        interface_dof_fixed;
     /// The search of the interface over the load steps (with contact).
     std::unique_ptr<SearchControl<dim>> search;
-    /// A point names a vertex closer than this times the cell's diameter
-    /// (far above the digits a user types, far below the distance of two
-    /// vertices of a valid cell).
-    static constexpr double vertex_match_tolerance = 1e-3;
     /// A direct solve whose residual exceeds this fraction of the
     /// right-hand side has met a singular matrix.
     static constexpr double singular_residual_ratio = 1e-3;
