@@ -529,6 +529,21 @@ namespace contact_fem
     return cause.empty() ? cause : " Likely cause: " + cause + ".";
   }
 
+  template <int dim>
+  std::string
+  ContactDiagnosis<dim>::tension_failure(const Json &contact) const
+  {
+    const double p_min = contact["min_active_contact_pressure"].number_value();
+    if (!(p_min < 0.))
+      return "";
+    const std::string cause = precision_limits();
+    return "the converged state has an active slave node in tension (contact pressure " +
+           scientific(p_min, 2) + ", largest " +
+           scientific(contact["max_contact_pressure"].number_value(), 2) +
+           "): its active set is rounding noise, no result" +
+           (cause.empty() ? std::string() : ": " + cause);
+  }
+
   template class ContactDiagnosis<2>;
   template class ContactDiagnosis<3>;
 } // namespace contact_fem

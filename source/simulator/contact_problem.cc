@@ -23,6 +23,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <random>
 #include <set>
@@ -122,6 +123,35 @@ namespace contact_fem
           }
     }
 
+
+    /// Throws a NewtonFailure at @p at if a residual is not a number, with
+    /// the hint that @p singular_hint() gives.
+    template <typename Hint>
+    void
+    throw_if_not_finite(const std::string &at,
+                        const double       r_u,
+                        const double       r_lambda,
+                        const Hint        &singular_hint)
+    {
+      if (!std::isfinite(r_u) || !std::isfinite(r_lambda))
+        throw NewtonFailure(at + ": the residual is not a number (|r_u| = " + scientific(r_u) +
+                            ", |r_lambda| = " + scientific(r_lambda) +
+                            "). The linear system is singular or the input is extreme." +
+                            singular_hint());
+    }
+
+    /// Why a run whose converged state is outside the model's range stops
+    /// (summary.json @p status, exit code 3).
+    std::string
+    outside_model_range_stop(const std::string &status)
+    {
+      return "Stopped: the converged state is outside the model's range (see the warnings "
+             "above): small-strain linear elasticity does not describe these bodies under "
+             "this load, so the results are no answer of them (summary.json status '" +
+             status +
+             "', exit code 3). Model range/Accept results outside the small-strain range = "
+             "true accepts them.";
+    }
 
     /// "Progress: load step k of N of cycle c done, ..." after @p n_solved
     /// load steps with @p left to go, @p elapsed seconds into the cycle; the
@@ -410,70 +440,67 @@ namespace contact_fem
   void
   ContactProblem<dim>::compute_cell_loads(const double time)
   {
-    TimerOutput::Scope                              t(*timer, "Assembly: bulk");
-    const QGauss<dim - 1>                           quadrature(degree + 1);
-    FEFaceValues<dim>                               fe_face(*mapping, fe, quadrature,
-                                                            update_values | update_normal_vectors | update_quadrature_points |
-                                                              update_JxW_values);
-    std::vector<std::unique_ptr<UserFunction<dim>>> pressures;
+    TimerOutput::Scope    t(*timer, "Assembly: bulk");
+    const QGauss<dim - 1> quadrature(degree + 1);
+    FEFaceValues<dim>     fe_face(*mapping, fe, quadrature,
+                                  update_values | update_normal_vectors | update_quadrature_points |
+                                    update_JxW_values);
+    cell_loads.assign(triangulation.n_active_cells(), Vector<double>());
+    // Adds the loads of the faces on the boundaries @p ids (one per
+    // condition c), cell by cell and face by face: traction(c, q) is the
+    // traction of condition c at quadrature point q of the face.
+    const auto add_face_loads = [&](const std::vector<types::boundary_id> &ids,
+                                    const auto                            &traction) {
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              for (unsigned int c = 0; c < ids.size(); ++c)
+                if (cell->face(f)->boundary_id() == ids[c])
+                  {
+                    fe_face.reinit(cell, f);
+                    Vector<double> &load = cell_loads[cell->active_cell_index()];
+                    if (load.size() == 0)
+                      load.reinit(fe.n_dofs_per_cell());
+                    for (unsigned int q = 0; q < quadrature.size(); ++q)
+                      {
+                        const Tensor<1, dim> t_q = traction(c, q);
+                        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                          load(i) += t_q[fe.system_to_component_index(i).first] *
+                                     fe_face.shape_value(i, q) * fe_face.JxW(q);
+                      }
+                  }
+    };
+    std::vector<types::boundary_id>                 ids;
+    std::vector<std::unique_ptr<UserFunction<dim>>> functions;
     for (const auto &condition : boundary_conditions.pressures)
       {
-        pressures.push_back(
+        ids.push_back(condition.boundary_id);
+        functions.push_back(
           std::make_unique<UserFunction<dim>>(std::vector<std::string>{condition.expression},
                                               scene.frame));
-        pressures.back()->set_time(time);
+        functions.back()->set_time(time);
       }
-    cell_loads.assign(triangulation.n_active_cells(), Vector<double>());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary())
-            for (unsigned int c = 0; c < pressures.size(); ++c)
-              if (cell->face(f)->boundary_id() == boundary_conditions.pressures[c].boundary_id)
-                {
-                  fe_face.reinit(cell, f);
-                  Vector<double> &load = cell_loads[cell->active_cell_index()];
-                  if (load.size() == 0)
-                    load.reinit(fe.n_dofs_per_cell());
-                  for (unsigned int q = 0; q < quadrature.size(); ++q)
-                    {
-                      const double p = pressures[c]->value(fe_face.quadrature_point(q));
-                      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                        {
-                          const unsigned int comp = fe.system_to_component_index(i).first;
-                          load(i) -= p * fe_face.normal_vector(q)[comp] *
-                                     fe_face.shape_value(i, q) * fe_face.JxW(q);
-                        }
-                    }
-                }
+    add_face_loads(ids, [&](const unsigned int c, const unsigned int q) {
+      return -functions[c]->value(fe_face.quadrature_point(q)) * fe_face.normal_vector(q);
+    });
     // Traction vectors (Boundary conditions/Traction): one parser per
     // component.
-    std::vector<std::unique_ptr<UserFunction<dim>>> tractions;
+    ids.clear();
+    functions.clear();
     for (const auto &condition : boundary_conditions.tractions)
       {
-        tractions.push_back(
+        ids.push_back(condition.boundary_id);
+        functions.push_back(
           std::make_unique<UserFunction<dim>>(condition.expressions, scene.frame));
-        tractions.back()->set_time(time);
+        functions.back()->set_time(time);
       }
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary())
-            for (unsigned int c = 0; c < tractions.size(); ++c)
-              if (cell->face(f)->boundary_id() == boundary_conditions.tractions[c].boundary_id)
-                {
-                  fe_face.reinit(cell, f);
-                  Vector<double> &load = cell_loads[cell->active_cell_index()];
-                  if (load.size() == 0)
-                    load.reinit(fe.n_dofs_per_cell());
-                  for (unsigned int q = 0; q < quadrature.size(); ++q)
-                    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                      {
-                        const unsigned int comp = fe.system_to_component_index(i).first;
-                        load(i) += tractions[c]->value(fe_face.quadrature_point(q), comp) *
-                                   fe_face.shape_value(i, q) * fe_face.JxW(q);
-                      }
-                }
+    add_face_loads(ids, [&](const unsigned int c, const unsigned int q) {
+      Tensor<1, dim> t_q;
+      for (unsigned int d = 0; d < dim; ++d)
+        t_q[d] = functions[c]->value(fe_face.quadrature_point(q), d);
+      return t_q;
+    });
   }
 
   template <int dim>
@@ -830,12 +857,9 @@ namespace contact_fem
         const ContactUpdate update   = update_contact(iteration);
         const double        r_u      = equilibrium_residual_norm(update.residuals.contact_force);
         const double        r_lambda = update.residuals.multiplier;
-        if (!std::isfinite(r_u) || !std::isfinite(r_lambda))
-          throw NewtonFailure(at + ": the residual is not a number (|r_u| = " + scientific(r_u) +
-                              ", |r_lambda| = " + scientific(r_lambda) +
-                              "). The linear system is singular or the input is "
-                              "extreme." +
-                              diagnosis().singular_system_hint());
+        throw_if_not_finite(at, r_u, r_lambda, [this] {
+          return diagnosis().singular_system_hint();
+        });
         assessment =
           monitor.assess(iteration, r_u, r_lambda, update.changes, update.searched_again);
         std::optional<unsigned int> linear_iterations;
@@ -1071,15 +1095,14 @@ namespace contact_fem
         const bool   converged = run_cycle(cycle, record);
         const double wall      = cycle_timer.wall_time() - uncounted_wall_time;
         cumulative += wall;
+        const double multigrid = linear_solver->iterative() ? multigrid_setup_seconds : -1.;
         record.set("wall_time", wall).set("cumulative_wall_time", cumulative);
-        record.set("timing",
-                   timing_record(*timer,
-                                 linear_solver->iterative() ? multigrid_setup_seconds : -1.));
+        record.set("timing", timing_record(*timer, multigrid));
         cycles.push(record);
-        unsigned int newton_iterations = 0;
-        for (const unsigned int n : newton_iterations_of_cycle)
-          newton_iterations += n;
-        convergence_table->add_row(record, refinement.estimator, newton_iterations, cumulative);
+        convergence_table->add_row(record, refinement.estimator,
+                                   std::accumulate(newton_iterations_of_cycle.begin(),
+                                                   newton_iterations_of_cycle.end(), 0u),
+                                   cumulative);
         // Written after every cycle, so an interrupted study keeps its data;
         // the status says whether the run is complete.
         // Refining does not bring a state beyond the model back into it.
@@ -1090,21 +1113,12 @@ namespace contact_fem
                       !last      ? "running" :
                                    converged_status());
         if (output.print_timing)
-          pcout << timing_text(*timer, cycle, wall, cumulative,
-                               linear_solver->iterative() ? multigrid_setup_seconds : -1.);
+          pcout << timing_text(*timer, cycle, wall, cumulative, multigrid);
         if (!converged)
           return 2;
         if (beyond_model)
           {
-            pcout << std::endl
-                  << "Stopped: the converged state is outside the model's range (see the "
-                     "warnings above): small-strain linear elasticity does not describe "
-                     "these bodies under this load, so the results are no answer of them "
-                     "(summary.json status '"
-                  << converged_status()
-                  << "', exit code 3). Model range/Accept results outside the "
-                     "small-strain range = true accepts them."
-                  << std::endl;
+            pcout << std::endl << outside_model_range_stop(converged_status()) << std::endl;
             return 3;
           }
       }
@@ -1425,25 +1439,16 @@ namespace contact_fem
     const Json                contact_json =
       contact ? contact_results(contact_state(), search->last_penetration_excess()) :
                                Json::object();
-    const std::function<bool(types::global_dof_index)> held =
-      [this](const types::global_dof_index dof) {
-        return inclined_supports.holds(dof);
-      };
+    const std::function<bool(types::global_dof_index)> held = [this](const auto dof) {
+      return inclined_supports.holds(dof);
+    };
     const Json reaction_json = reaction_results<dim>(
       {run_view(0, nullptr, contact_force).forces, held, diagnosis().body_loads(current_time),
        materials.youngs_modulus_range().first, solution.linfty_norm()});
     cycle_record.set("contact", contact_json).set("reaction", reaction_json);
-    if (const double p_min = contact_json["min_active_contact_pressure"].number_value();
-        converged && p_min < 0.)
+    if (const std::string text = converged ? diagnosis().tension_failure(contact_json) : "";
+        !text.empty())
       {
-        // An active node in tension: the active set was decided by rounding.
-        const std::string cause = diagnosis().precision_limits();
-        const std::string text =
-          "the converged state has an active slave node in tension (contact pressure " +
-          scientific(p_min, 2) + ", largest " +
-          scientific(contact_json["max_contact_pressure"].number_value(), 2) +
-          "): its active set is rounding noise, no result" +
-          (cause.empty() ? std::string() : ": " + cause);
         pcout << std::endl << "Error: " << text << "." << std::endl;
         cycle_record.set("failure", text);
         return false;

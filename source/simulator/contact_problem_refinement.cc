@@ -89,6 +89,15 @@ namespace contact_fem
     /// @p interface: those of the active nodes of @p contact, and with
     /// @p all_paired (a known pressure is compared) the inactive ones too,
     /// not imposed, in the order recovered_traction_report() expects.
+    ///
+    /// The traction of a node is imposed as the N_j-weighted mean over the
+    /// node's slave faces (which is what a dual multiplier is). The stresses
+    /// live on the reference configuration, while the contact force
+    /// -lambda_j D_j n_j acts along the normal of the deformed surface and
+    /// D_j is measured there: the mean traction is that force over the
+    /// reference int N_j ds. (Splitting it along the reference normal
+    /// instead would be off by the surface rotation, ~ a / R in Hertz,
+    /// which does not shrink under refinement.)
     template <int dim>
     std::vector<ContactNodeTraction<dim>>
     recovery_tractions(const ContactInterface<dim>   &interface,
@@ -277,18 +286,8 @@ namespace contact_fem
     settings.contact_terms      = type != "spr";
     settings.penalty_normal     = spr_settings.penalty_normal;
     settings.penalty_tangential = spr_settings.penalty_tangential;
-
-    // The contact tractions of the active slave nodes, imposed as the
-    // N_j-weighted mean over the node's slave faces (which is what a dual
-    // multiplier is). The stresses live on the reference configuration,
-    // while the contact force -lambda_j D_j n_j acts along the normal of the
-    // deformed surface and D_j is measured there: the mean traction is that
-    // force over the reference int N_j ds. (Splitting it along the reference
-    // normal instead would be off by the surface rotation, ~ a / R in Hertz,
-    // which does not shrink under refinement.) When the recovered traction
-    // is reported (a known pressure), every paired node is listed, the
-    // inactive ones not imposed, in the order recovered_traction_report()
-    // expects.
+    // The contact tractions (recovery_tractions()); every paired node when
+    // the recovered traction is compared with a known pressure.
     const bool pressure_known =
       contact && (comparison || !analytical.reference_pressure_profile.empty());
     const std::vector<ContactNodeTraction<dim>> tractions =

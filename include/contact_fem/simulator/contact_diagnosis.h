@@ -112,6 +112,11 @@ namespace contact_fem
     /// cause; "" if it balances.
     std::string
     balance_warning(const Json &reaction, const double time) const;
+    /// Why a converged state whose "contact" record @p contact has an
+    /// active node in tension is no result (its active set was decided by
+    /// rounding); "" if every active node is in compression.
+    std::string
+    tension_failure(const Json &contact) const;
 
   private:
     /// The integral of the outward normal over boundary @p id. Collective.
