@@ -126,7 +126,14 @@ namespace contact_fem
                       "increment of the load step, return mapping to the slip bound "
                       "of the law of Contact/Friction: a sticking node slips "
                       "elastically by t / eps_t; unsymmetric system under Coulomb "
-                      "slip; 2D and 3D, small sliding.");
+                      "slip; 2D and 3D, small sliding. "
+                      "'mpc frictionless' = multipoint constraints: the normal "
+                      "displacement of an active slave node is eliminated through "
+                      "the dual mortar relation n.u_s = n.(D^-1 M u_m) + g (the "
+                      "constraint of 'alm frictionless'); the active set needs no "
+                      "penalty: a node is released when its recovered reaction "
+                      "pulls, an inactive node that penetrates becomes active. Same "
+                      "converged answer as 'alm frictionless'.");
     prm.leave_subsection();
     FrictionlessFormulation<dim>::Parameters::declare_parameters(prm);
     FrictionParameters::declare_parameters(prm);
