@@ -24,9 +24,7 @@ namespace contact_fem
                                        const bool at_step_start,
                                        const bool first_step) const
   {
-    if (at_step_start)
-      return this->starts_active(s, g, first_step);
-    return this->pressure[s.node] - this->penalty[s.pair] * g > 0.;
+    return this->augmented_rule(s, g, at_step_start, first_step);
   }
 
   template <int dim>
