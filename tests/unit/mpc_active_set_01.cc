@@ -16,6 +16,15 @@
 //   inactive node with an open gap stays inactive.
 // - the first step of a mesh: a node about to touch (g below Active check
 //   factor * h) starts active.
+// 'mpc frictional' (Coulomb mu = 0.5; tangent (1, 0), weighted slip
+// xi_j = u_sx - u_mx since the last accepted step, masters fixed):
+// - recovered (t, p) = (-0.3, 1) sticks (|t| < T = 0.5), (-0.6, 1) slips
+//   along the traction (sign -1);
+// - the slipping node moved by dx = +0.01 (its traction -T opposes the
+//   slip) keeps slipping; moved by -0.01 (the slip turned back against the
+//   traction) it sticks;
+// - a node that comes into contact moving by dx = 0.02 slides in, its
+//   traction opposing the slip (sign -1).
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -45,35 +54,45 @@ namespace
   constexpr double gap0 = 0.1;
 
   /// The interface displacement: slave node k moved by @p slave_y[k] along
-  /// y, masters fixed.
+  /// y (and @p slave_x[k] along x, if given), masters fixed.
   std::vector<double>
-  displacement(const ContactInterface<2> &interface, const std::vector<double> &slave_y)
+  displacement(const ContactInterface<2> &interface,
+               const std::vector<double> &slave_y,
+               const std::vector<double> &slave_x = {0., 0.})
   {
     std::vector<double> u(interface.dofs().size(), 0.);
-    unsigned int        k = 0;
-    for (const auto &s : interface.slave_nodes)
-      u[interface.position(interface.nodes[s.node].dofs[1])] = slave_y[k++];
+    for (unsigned int k = 0; k < interface.slave_nodes.size(); ++k)
+      {
+        const auto &dofs               = interface.nodes[interface.slave_nodes[k].node].dofs;
+        u[interface.position(dofs[0])] = slave_x[k];
+        u[interface.position(dofs[1])] = slave_y[k];
+      }
     return u;
   }
 
-  /// The bulk residual of a state with multiplier @p lambdas[k] at slave
-  /// node k: r = -lambda D n_y at its y DoF (the DoF an active node
-  /// eliminates).
+  /// The bulk residual of a state with pressure @p lambdas[k] (and
+  /// tangential traction @p tangential[k], if given) at slave node k:
+  /// r = D (-lambda n + t tau), tau = (1, 0).
   std::vector<double>
-  residual_of(const ContactInterface<2> &interface, const std::vector<double> &lambdas)
+  residual_of(const ContactInterface<2> &interface,
+              const std::vector<double> &lambdas,
+              const std::vector<double> &tangential = {0., 0.})
   {
     std::vector<double> residual(interface.dofs().size(), 0.);
     for (unsigned int k = 0; k < interface.slave_nodes.size(); ++k)
       {
-        const auto &s = interface.slave_nodes[k];
-        residual[interface.position(interface.nodes[s.node].dofs[1])] =
-          -lambdas[k] * s.D * s.normal[1];
+        const auto &s                         = interface.slave_nodes[k];
+        const auto &dofs                      = interface.nodes[s.node].dofs;
+        residual[interface.position(dofs[0])] = s.D * tangential[k];
+        residual[interface.position(dofs[1])] = -lambdas[k] * s.D * s.normal[1];
       }
     return residual;
   }
 
   std::unique_ptr<ContactFormulation<2>>
-  make_formulation(const std::string &name, const std::string &penalty)
+  make_formulation(const std::string &name,
+                   const std::string &penalty,
+                   const std::string &friction = "")
   {
     ParameterHandler prm;
     ContactParameters::declare_parameters(prm);
@@ -83,6 +102,7 @@ namespace
     prm.set("Formulation", name);
     prm.set("Penalty", penalty);
     prm.set("Scale factor", "10");
+    prm.set("Friction", friction);
     prm.leave_subsection();
     return ContactFormulation<2>::create(prm);
   }
@@ -96,8 +116,54 @@ namespace
     std::cout << what << ": " << contact.n_active() << " active" << std::endl;
     for (const auto &s : interface.slave_nodes)
       std::cout << "    node x = " << interface.nodes[s.node].reference[0] << ": gap "
-                << (std::abs(interface.gap(s, u)) < 1e-12 ? 0. : interface.gap(s, u)) << ", active " << contact.is_active(s.node)
-                << ", pressure " << contact.normal_pressure(s.node) << std::endl;
+                << (std::abs(interface.gap(s, u)) < 1e-12 ? 0. : interface.gap(s, u)) << ", active "
+                << contact.is_active(s.node) << ", pressure " << contact.normal_pressure(s.node)
+                << (contact.transmits_shear() ?
+                      ", stick " + std::to_string(contact.held_tangentially(s.node)) +
+                        ", traction_x " + std::to_string(contact.traction(s)[0]) :
+                      std::string())
+                << std::endl;
+  }
+
+  void
+  mpc_frictional(const ContactInterface<2> &interface)
+  {
+    auto contact = make_formulation("mpc frictional", "auto", "coulomb 0.5");
+    contact->initialize(interface);
+    const auto touching = displacement(interface, {-0.1, -0.1});
+    contact->start_load_step(interface, touching, true);
+    contact->recover_multipliers(interface, residual_of(interface, {1., 1.}, {-0.3, -0.6}));
+    unsigned int changes = contact->update_active_set(interface, touching);
+    std::cout << "mpc frictional, (t, p) = (-0.3, 1) and (-0.6, 1): " << changes << " change(s)"
+              << std::endl;
+    print_state("  stick inside the bound, slip on it", interface, *contact, touching);
+    const auto saved = contact->save_state();
+    // Node 1 slips with traction -T = -0.5: recovered as such.
+    const auto slip_residual = residual_of(interface, {1., 1.}, {-0.3, -0.5});
+    for (const double dx : {0.01, -0.01})
+      {
+        contact->restore_state(*saved);
+        contact->recover_multipliers(interface, slip_residual);
+        const auto moved = displacement(interface, {-0.1, -0.1}, {0., dx});
+        changes          = contact->update_active_set(interface, moved);
+        std::cout << "mpc frictional, slip node moved by dx = " << dx << ": " << changes
+                  << " change(s)" << std::endl;
+        print_state("  state", interface, *contact, moved);
+      }
+    // A new step: node 0 open, node 1 not in contact; then node 0 comes in
+    // moving by 0.02.
+    contact->initialize(interface);
+    const auto open = displacement(interface, {0., 0.});
+    contact->start_load_step(interface, open, false);
+    contact->accept_load_step(interface, open);
+    const auto entering = displacement(interface, {-0.11, 0.}, {0.02, 0.});
+    contact->recover_multipliers(interface, residual_of(interface, {0., 0.}));
+    changes = contact->update_active_set(interface, entering);
+    std::cout << "mpc frictional, node 0 comes into contact moving by 0.02: " << changes
+              << " change(s), stick " << contact->held_tangentially(interface.slave_nodes[0].node)
+              << ", slip direction from the contact sets "
+              << contact->contact_sets()[interface.slave_nodes[0].node] << " (2 = +, 3 = -)"
+              << std::endl;
   }
 } // namespace
 
@@ -127,9 +193,9 @@ main(int argc, char **argv)
   interface.initialize(mapping, dof_handler, {ContactPair{4, 3}}, no_dirichlet, no_dirichlet,
                        materials, MPI_COMM_WORLD);
   interface.update(std::vector<double>(interface.dofs().size(), 0.), 3.);
-  std::cout << "mortar: " << interface.slave_nodes.size() << " slave nodes, D = "
-            << interface.slave_nodes[0].D << ", normal " << interface.slave_nodes[0].normal
-            << std::endl;
+  std::cout << "mortar: " << interface.slave_nodes.size()
+            << " slave nodes, D = " << interface.slave_nodes[0].D << ", normal "
+            << interface.slave_nodes[0].normal << std::endl;
 
   try
     {
@@ -157,19 +223,19 @@ main(int argc, char **argv)
   mpc->add_constraints(interface, zero, constraints, false);
   constraints.close();
   std::cout << "  constraints: " << constraints.n_constraints() << ", node 0's inhomogeneity "
-            << constraints.get_inhomogeneity(
-                 interface.nodes[interface.slave_nodes[0].node].dofs[1])
+            << constraints.get_inhomogeneity(interface.nodes[interface.slave_nodes[0].node].dofs[1])
             << std::endl;
 
   // Node 0 held at gap 0 but pulling; node 1 penetrating by 0.03.
   const auto pulled = displacement(interface, {-0.1, -0.13});
   mpc->recover_multipliers(interface, residual_of(interface, {-0.3, 0.}));
   unsigned int changes = mpc->update_active_set(interface, pulled);
-  std::cout << "update: " << changes << " change(s), multiplier residual "
-            << mpc->residuals(interface, pulled).multiplier << " (expected |(0.3 / k, 0.03)| = 0.0424264: the\n    released multiplier over k, the active node's gap)"
-            << std::endl;
-  print_state("  after release on tension and activation on penetration", interface, *mpc,
-              pulled);
+  std::cout
+    << "update: " << changes << " change(s), multiplier residual "
+    << mpc->residuals(interface, pulled).multiplier
+    << " (expected |(0.3 / k, 0.03)| = 0.0424264: the\n    released multiplier over k, the active node's gap)"
+    << std::endl;
+  print_state("  after release on tension and activation on penetration", interface, *mpc, pulled);
 
   // Node 1 compressed (lambda = 1) at an open gap 0.01; node 0 open.
   const auto opened = displacement(interface, {-0.05, -0.09});
@@ -193,4 +259,6 @@ main(int argc, char **argv)
   print_state("first step of a mesh (Active check factor 1e-2, h = " +
                 std::to_string(interface.slave_nodes[0].size) + ")",
               interface, *mpc, near);
+
+  mpc_frictional(interface);
 }

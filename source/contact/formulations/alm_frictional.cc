@@ -569,9 +569,9 @@ namespace contact_fem
       {
         if (!s.paired)
           continue;
-        const double g          = interface.gap(s, u);
-        const bool   now_active = decides_active(s, g, false, false) &&
-                                this->eliminated_component(interface, s) < dim;
+        const double g = interface.gap(s, u);
+        const bool   now_active =
+          decides_active(s, g, false, false) && this->eliminated_component(interface, s) < dim;
         if (now_active != active[s.node])
           ++changes;
         if (!now_active)

@@ -54,8 +54,8 @@ namespace contact_fem
             continue;
           }
         const double g = interface.gap(s, u);
-        active[s.node] = decides_active(s, g, true, first_step) &&
-                         this->eliminated_component(interface, s) < dim;
+        active[s.node] =
+          decides_active(s, g, true, first_step) && this->eliminated_component(interface, s) < dim;
         if (!active[s.node])
           {
             released_pressure[s.node] = pressure[s.node];

@@ -65,7 +65,7 @@ namespace contact_fem
     using typename FrictionlessFormulation<dim>::Residuals;
     using typename FrictionlessFormulation<dim>::State;
     using Parameters = typename FrictionlessFormulation<dim>::Parameters;
-    using SlaveNode = typename ContactInterface<dim>::SlaveNode;
+    using SlaveNode  = typename ContactInterface<dim>::SlaveNode;
 
     /// Reads the shared normal keys; @p friction: the laws and Pure slip.
     AlmFrictional(ParameterHandler &prm, const FrictionParameters &friction);
@@ -182,9 +182,7 @@ namespace contact_fem
     /// else the unit direction d of the trial traction t - c xi (2D: +1 /
     /// -1).
     virtual TangentialVector<dim>
-    stick_or_slip(const SlaveNode             &s,
-                  const double                 p_bound,
-                  const TangentialVector<dim> &xi) const;
+    stick_or_slip(const SlaveNode &s, const double p_bound, const TangentialVector<dim> &xi) const;
 
     /// beta of the cone term of active node @p s (0 unless it slips under
     /// a law with friction in 3D) at slip @p xi.
