@@ -16,6 +16,11 @@ Reported per scene and formulation: Newton iterations per load step
               degrees: 8,124 DoFs)
   hertz3d_r3  the same with Sphere refinements 3 (the quick look of
               prm/hertz_3d.prm's header, Pole patch angle as shipped)
+  friction2d  prm/hertz_frictional.prm as shipped (Coulomb 0.2, 8 load
+              steps): alm frictional against mpc frictional
+  friction3d  prm/hertz_3d.prm as tests/scenes/frictional_hertz_3d_01 runs
+              it (Q1, Sphere refinements 3, Contact refinements 0, Coulomb
+              0.2): alm frictional against mpc frictional
 
 Usage:
   python3 bench/mpc_vs_alm.py [--binary B] [--reps N] [--scenes a,b,...]
@@ -32,14 +37,19 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SMALL_3D = ["Geometry/Hertz sphere/Sphere refinements=2",
             "Geometry/Hertz sphere/Contact refinements=0",
             "Geometry/Hertz sphere/Pole patch angle=20"]
+QUICK_3D = ["Geometry/Hertz sphere/Sphere refinements=3",
+            "Geometry/Hertz sphere/Contact refinements=0"]
+# name: (scene, settings, kind of the two formulations)
 SCENES = {
-    "hertz2d": ("prm/hertz.prm", []),
-    "hertz2d_r8": ("prm/hertz.prm", ["Geometry/Hertz cylinder/Contact refinements=8"]),
-    "hertz3d": ("prm/hertz_3d.prm", SMALL_3D),
-    "hertz3d_r3": ("prm/hertz_3d.prm", ["Geometry/Hertz sphere/Sphere refinements=3",
-                                        "Geometry/Hertz sphere/Contact refinements=0"]),
+    "hertz2d": ("prm/hertz.prm", [], "frictionless"),
+    "hertz2d_r8": ("prm/hertz.prm", ["Geometry/Hertz cylinder/Contact refinements=8"],
+                   "frictionless"),
+    "hertz3d": ("prm/hertz_3d.prm", SMALL_3D, "frictionless"),
+    "hertz3d_r3": ("prm/hertz_3d.prm", QUICK_3D, "frictionless"),
+    "friction2d": ("prm/hertz_frictional.prm", [], "frictional"),
+    "friction3d": ("prm/hertz_3d.prm", QUICK_3D + ["Finite element/Degree=1",
+                                                   "Contact/Friction=coulomb 0.2"], "frictional"),
 }
-FORMULATIONS = ["alm frictionless", "mpc frictionless"]
 
 
 def run(binary, scene, settings, formulation, directory):
@@ -74,14 +84,15 @@ def main():
     print(f"{'scene':<11} {'formulation':<17} {'DoFs':>7} {'its/step':<10} "
           f"{'wall med [s]':>12} {'wall min [s]':>12} {'p_max':>14} {'contact force':>14}")
     for name in args.scenes.split(","):
-        scene, settings = SCENES[name]
-        runs = {f: [] for f in FORMULATIONS}
+        scene, settings, kind = SCENES[name]
+        formulations = [f"alm {kind}", f"mpc {kind}"]
+        runs = {f: [] for f in formulations}
         for rep in range(args.reps):
-            for formulation in FORMULATIONS:
+            for formulation in formulations:
                 directory = os.path.join(out_root, f"{name}-{formulation.split()[0]}-{rep}")
                 runs[formulation].append(run(args.binary, scene, settings, formulation,
                                              directory))
-        for formulation in FORMULATIONS:
+        for formulation in formulations:
             r = runs[formulation]
             times = [x["wall_time"] for x in r]
             print(f"{name:<11} {formulation:<17} {r[0]['dofs']:>7} "
