@@ -23,9 +23,12 @@ namespace contact_fem
     const bool                  moved    = slip > negligible_slip * s.size;
     const bool                  slipping = magnitude<dim>(old) > 0.;
     // Without traction and slip direction the node has just come into
-    // contact: if it moved in the step it slides in (sticking it would pull
-    // it back to where it was at the last step, and off again).
-    const bool entering = !slipping && magnitude<dim>(this->tangential[s.node]) == 0.;
+    // contact: if it moved in the step and its bound holds nothing yet
+    // (Coulomb at p = 0) it slides in (stuck, it would be pulled back to
+    // where it was at the last step, and off again); with a bound (Tresca)
+    // it sticks.
+    const bool entering = !slipping && magnitude<dim>(this->tangential[s.node]) == 0. &&
+                          this->laws[s.pair]->threshold(std::max(p_bound, 0.)) == 0.;
     if ((slipping || entering) && moved)
       {
         // The traction on the slave opposes its slip; a slip that turns

@@ -26,8 +26,9 @@ namespace contact_fem
    *   slave relative to the master (d = -xi / |xi|, so the direction
    *   follows the slip in 3D), and sticks when the slip turns back against
    *   d (a reversal passes through stick); a node that comes into contact
-   *   while moving in the step slides in the same way (stuck, it would be
-   *   pulled back to its place of the last step).
+   *   while moving in the step slides in the same way if its bound holds
+   *   nothing yet (Coulomb at p = 0; stuck, it would be pulled back to its
+   *   place of the last step), else (Tresca) it sticks.
    * In 3D the cone term's stiffness is T(p) / |xi|, the derivative of
    * -T xi / |xi| across the slip (alm's c a / (1 - a) as c grows).
    */
