@@ -184,8 +184,6 @@ namespace contact_fem
     virtual TangentialVector<dim>
     stick_or_slip(const SlaveNode &s, const double p_bound, const TangentialVector<dim> &xi) const;
 
-    /// beta of the cone term of active node @p s (0 unless it slips under
-    /// a law with friction in 3D) at slip @p xi.
     /// The stick/slip decision on the trial traction @p trial against the
     /// bound T(@p p_bound): stick inside it (or with neither traction nor
     /// slip, or when the trial turns against the slip), else slip along
@@ -195,6 +193,8 @@ namespace contact_fem
                     const double                 p_bound,
                     const TangentialVector<dim> &trial) const;
 
+    /// beta of the cone term of active node @p s (0 unless it slips under
+    /// a law with friction in 3D) at slip @p xi.
     virtual double
     slip_cone_stiffness(const SlaveNode &s, const TangentialVector<dim> &xi) const;
 
