@@ -5,6 +5,7 @@
 // patch test); a checkerboard flips the sign from node to node.
 #include <contact_fem/core/format.h>
 #include <contact_fem/postprocess/checkerboard.h>
+#include <contact_fem/postprocess/postprocessor.h>
 
 #include <algorithm>
 #include <cmath>
@@ -125,6 +126,42 @@ namespace contact_fem
       }
     return warnings;
   }
+
+  namespace
+  {
+    /// The checkerboard warnings of each cycle's contact pressure (with
+    /// contact pairs).
+    template <int dim>
+    class CheckerboardCheck : public Postprocessor<dim>
+    {
+    public:
+      static std::unique_ptr<Postprocessor<dim>>
+      create(const PostprocessorContext<dim> &context)
+      {
+        if (!context.has_contact)
+          return nullptr;
+        return std::make_unique<CheckerboardCheck<dim>>(context.warn);
+      }
+
+      explicit CheckerboardCheck(
+        const std::function<void(const std::string &, const std::string &, Json &)> &warn)
+        : warn(warn)
+      {}
+
+      void
+      after_cycle(const RunView<dim> &view, Json &cycle_record, std::ostream &) override
+      {
+        const ContactState<dim> &state = *view.solution.contact;
+        for (const std::string &text : checkerboard_warnings(state.interface, state.contact))
+          warn("checkerboard_warning", text, cycle_record);
+      }
+
+    private:
+      const std::function<void(const std::string &, const std::string &, Json &)> warn;
+    };
+  } // namespace
+
+  CONTACT_FEM_REGISTER_POSTPROCESSOR(CheckerboardCheck, "checkerboard check", 10)
 
   template std::vector<CheckerboardFinding>
   find_checkerboards(const ContactInterface<2> &, const ContactFormulation<2> &);

@@ -3,8 +3,12 @@
 
 #include <contact_fem/core/format.h>
 #include <contact_fem/postprocess/forces.h>
+#include <contact_fem/postprocess/output_files.h>
+#include <contact_fem/postprocess/postprocessor.h>
+#include <contact_fem/simulator/scene_parameters.h>
 
 #include <algorithm>
+#include <iomanip>
 #include <map>
 #include <set>
 #include <sstream>
@@ -270,6 +274,63 @@ namespace contact_fem
       report.scale = std::max(report.scale, (p.normal + p.tangential).norm());
     return report;
   }
+
+  namespace
+  {
+    /// The reactions and pair forces of every converged load step: printed,
+    /// recorded in the step's record and written as a row of forces.csv,
+    /// followed by the probes' displacements (a force-displacement curve is
+    /// two columns of one file).
+    template <int dim>
+    class ForceHistory : public Postprocessor<dim>
+    {
+    public:
+      static std::unique_ptr<Postprocessor<dim>>
+      create(const PostprocessorContext<dim> &)
+      {
+        return std::make_unique<ForceHistory<dim>>();
+      }
+
+      void
+      after_load_step(const RunView<dim> &view, Json &step_record, std::ostream &out) override
+      {
+        const ForceReport<dim> forces = compute_forces<dim>(view.forces);
+        forces.print(out, view.time);
+        step_record.set("forces", forces.to_json());
+        const std::vector<double> probes = view.probe_displacements();
+        if (rows.empty())
+          {
+            header = "cycle,step,t" + forces.csv_header();
+            for (unsigned int k = 0; k < probes.size(); ++k)
+              header +=
+                ",probe_" + std::to_string(k / dim + 1) + "_u" + std::string(1, "xyz"[k % dim]);
+          }
+        std::ostringstream row;
+        row << view.cycle << ',' << view.step << ',' << std::setprecision(10) << view.time
+            << forces.csv_row();
+        for (const double u : probes)
+          row << ',' << u;
+        rows.push_back(row.str());
+        const std::string path = view.output.directory + "/forces.csv";
+        std::string       problem;
+        if (Utilities::MPI::this_mpi_process(view.comm) == 0)
+          {
+            std::string csv = header + "\n";
+            for (const auto &line : rows)
+              csv += line + "\n";
+            problem = write_file_atomically(path, csv);
+          }
+        throw_if_unwritten(path, problem, view.comm);
+      }
+
+    private:
+      /// forces.csv: its header and the rows of the run so far.
+      std::string              header;
+      std::vector<std::string> rows;
+    };
+  } // namespace
+
+  CONTACT_FEM_REGISTER_POSTPROCESSOR(ForceHistory, "forces", 10)
 
   template struct ForceReport<2>;
   template struct ForceReport<3>;

@@ -1,9 +1,14 @@
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/contact/formulations/contact_formulation.h>
+#include <contact_fem/core/format.h>
+#include <contact_fem/postprocess/output_files.h>
+#include <contact_fem/postprocess/postprocessor.h>
 #include <contact_fem/postprocess/pressure_profile.h>
+#include <contact_fem/simulator/scene_parameters.h>
 
 #include <algorithm>
 #include <iomanip>
+#include <ostream>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -58,6 +63,95 @@ namespace contact_fem
     return out.str();
   }
 
+  template <int dim>
+  double
+  reference_pressure_error(const AnalyticalSolution  &analytical,
+                           const ContactState<dim>   &state,
+                           const std::vector<double> &pressure)
+  {
+    return pressure_l2_relative_error<dim>(state, pressure, [&](const Point<dim> &x) {
+      return analytical.reference_pressure(dim == 2 ? x[0] : analytical.axis_distance(x[0], x[1]));
+    });
+  }
+
+  namespace
+  {
+    /// pressure_profile.csv (the latest cycle's) and
+    /// pressure_profile_cycle_K.csv (each cycle's), with Output/Write
+    /// pressure profile and contact pairs.
+    template <int dim>
+    class PressureProfileFiles : public Postprocessor<dim>
+    {
+    public:
+      static std::unique_ptr<Postprocessor<dim>>
+      create(const PostprocessorContext<dim> &context)
+      {
+        if (!context.output.write_pressure_profile || !context.has_contact)
+          return nullptr;
+        return std::make_unique<PressureProfileFiles<dim>>();
+      }
+
+      void
+      after_cycle(const RunView<dim> &view, Json &, std::ostream &) override
+      {
+        const std::string directory = view.output.directory;
+        const std::string latest    = directory + "/pressure_profile.csv";
+        const std::string of_cycle =
+          directory + "/pressure_profile_cycle_" + std::to_string(view.cycle) + ".csv";
+        std::string latest_problem, cycle_problem;
+        if (Utilities::MPI::this_mpi_process(view.comm) == 0)
+          {
+            const ContactState<dim> &state = *view.solution.contact;
+            // The exact pressure where the analytical solution gives one (else 0).
+            const std::function<double(const Point<dim> &)> exact =
+              view.comparison ? view.comparison->exact_pressure(state) : nullptr;
+            const std::string csv = pressure_profile_csv(state, view.frame, exact);
+            latest_problem        = write_file_atomically(latest, csv);
+            cycle_problem         = write_file_atomically(of_cycle, csv);
+          }
+        throw_if_unwritten(latest, latest_problem, view.comm);
+        throw_if_unwritten(of_cycle, cycle_problem, view.comm);
+      }
+    };
+
+    /// The L2 error of the pressure against Analytical solution/Reference
+    /// pressure profile, printed and recorded with each cycle's results.
+    template <int dim>
+    class ReferencePressureError : public Postprocessor<dim>
+    {
+    public:
+      static std::unique_ptr<Postprocessor<dim>>
+      create(const PostprocessorContext<dim> &context)
+      {
+        if (context.analytical.reference_pressure_profile.empty() || !context.has_contact)
+          return nullptr;
+        return std::make_unique<ReferencePressureError<dim>>();
+      }
+
+      void
+      after_cycle(const RunView<dim> &view, Json &cycle_record, std::ostream &out) override
+      {
+        const ContactState<dim> &state = *view.solution.contact;
+        const double             error = reference_pressure_error(view.analytical, state,
+                                                                  state.contact.pressures(state.interface));
+        cycle_record.set("pressure_reference_l2_relative_error", error);
+        out << "    pressure, L2 error against the reference: " << value_or_ok(error, 1e-10)
+            << std::endl;
+      }
+    };
+  } // namespace
+
+  CONTACT_FEM_REGISTER_POSTPROCESSOR(ReferencePressureError, "reference pressure error", 30)
+  CONTACT_FEM_REGISTER_POSTPROCESSOR(PressureProfileFiles, "pressure profile", 50)
+
+  template double
+  reference_pressure_error(const AnalyticalSolution &,
+                           const ContactState<2> &,
+                           const std::vector<double> &);
+  template double
+  reference_pressure_error(const AnalyticalSolution &,
+                           const ContactState<3> &,
+                           const std::vector<double> &);
   template std::string
   pressure_profile_csv(const ContactState<2> &,
                        const ModelFrame<2> &,

@@ -7,6 +7,8 @@
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/contact/formulations/contact_formulation.h>
 #include <contact_fem/postprocess/output_files.h>
+#include <contact_fem/postprocess/postprocessor.h>
+#include <contact_fem/simulator/scene_parameters.h>
 #include <contact_fem/postprocess/vtu_output.h>
 
 #include <functional>
@@ -450,6 +452,50 @@ namespace contact_fem
                          write_file_atomically(path, pvd.str()),
                        comm);
   }
+
+  namespace
+  {
+    /// The VTU/PVD files of every converged load step and of every cycle's
+    /// error indicators (Output/Write VTU).
+    template <int dim>
+    class VtuFiles : public Postprocessor<dim>
+    {
+    public:
+      static std::unique_ptr<Postprocessor<dim>>
+      create(const PostprocessorContext<dim> &context)
+      {
+        if (!context.output.write_vtu)
+          return nullptr;
+        return std::make_unique<VtuFiles<dim>>(context);
+      }
+
+      explicit VtuFiles(const PostprocessorContext<dim> &context)
+        : files(context.output.directory, context.comm)
+        , timer(context.timer)
+      {}
+
+      void
+      after_load_step(const RunView<dim> &view, Json &, std::ostream &) override
+      {
+        TimerOutput::Scope t(timer, "Output: VTU");
+        files.write_solution(view.solution, view.cycle, view.time);
+      }
+
+      void
+      after_estimate(const RunView<dim> &view, const Vector<float> &indicators) override
+      {
+        SolutionView<dim> without_contact = view.solution;
+        without_contact.contact           = nullptr;
+        files.write_error_indicators(without_contact, indicators, view.cycle);
+      }
+
+    private:
+      VtuOutput<dim> files;
+      TimerOutput   &timer;
+    };
+  } // namespace
+
+  CONTACT_FEM_REGISTER_POSTPROCESSOR(VtuFiles, "vtu", 20)
 
   template class VtuOutput<2>;
   template class VtuOutput<3>;

@@ -425,6 +425,125 @@ namespace contact_fem
     return master_E > 0. ? slave_E / master_E : 0.;
   }
 
+  template <int dim>
+  std::vector<std::string>
+  ContactDiagnosis<dim>::modelling_warnings(const unsigned int degree,
+                                            const bool         b_bar,
+                                            const double       end_time) const
+  {
+    std::vector<std::string> warnings;
+    for (const auto &[id, constants] : run.materials.bodies)
+      if (lambda_over_mu(constants.poisson_ratio) > warn_lambda_over_mu())
+        {
+          std::ostringstream text;
+          text << "body " << static_cast<unsigned int>(id) << " has Poisson's ratio "
+               << std::setprecision(16) << constants.poisson_ratio
+               << ": lambda/mu = " << significant(lambda_over_mu(constants.poisson_ratio), 2)
+               << ", beyond " << significant(warn_lambda_over_mu(), 2)
+               << ", where double precision resolves the shear stiffness next to the "
+                  "volumetric one only to about 1e-14 lambda/mu: expect the reactions to "
+                  "balance the load to about that, or the solver to fail.";
+          warnings.push_back(text.str());
+        }
+    for (const std::string &limit :
+         {stiffness_contrast_limit(), auxetic_limit(), load_at_round_off(end_time)})
+      if (!limit.empty())
+        warnings.push_back(limit + ".");
+    // Volumetric locking: measured on the Hertz scene, p_max is off by more
+    // than 2 % beyond these Poisson's ratios without B-bar
+    // (doc/stability.md).
+    const double locking_nu = degree == 1 ? 0.49 : 0.499;
+    if (!b_bar)
+      for (const auto &[id, constants] : run.materials.bodies)
+        if (constants.poisson_ratio > locking_nu)
+          {
+            std::ostringstream text;
+            text << "body " << static_cast<unsigned int>(id) << " has Poisson's ratio "
+                 << constants.poisson_ratio << ": degree " << degree
+                 << " elements lock volumetrically beyond about " << locking_nu
+                 << "; set Finite element/Volumetric strain = B-bar.";
+            warnings.push_back(text.str());
+          }
+    // The mortar side should be the softer one (and the finer mesh): a stiff
+    // slave on a soft, coarse master cannot represent the pressure.
+    const auto &pairs = run.contact_parameters.pairs;
+    if (run.interface)
+      for (unsigned int p = 0; p < pairs.size(); ++p)
+        if (const double ratio = slave_stiffness_ratio(p); ratio > 10.)
+          {
+            std::ostringstream text;
+            text << "contact pair " << static_cast<unsigned int>(pairs[p].slave) << ": "
+                 << static_cast<unsigned int>(pairs[p].master) << ": the slave side is " << ratio
+                 << " times stiffer than the master side; the softer (and finer) surface should "
+                    "be the slave (Contact/Pairs).";
+            warnings.push_back(text.str());
+          }
+    return warnings;
+  }
+
+  template <int dim>
+  std::string
+  ContactDiagnosis<dim>::balance_warning(const Json &reaction, const double time) const
+  {
+    // The stability study's verdict tolerance (doc/stability.md): converged
+    // runs of the shipped scenes balance to 1e-10 or better, damped ones
+    // with tightened tolerances to about 2e-8.
+    constexpr double tolerance               = 1e-6;
+    constexpr double contrast_costing_digits = 1e6;
+    const double     imbalance               = reaction["relative_imbalance"].number_value();
+    if (!(imbalance > tolerance))
+      return "";
+    std::string cause = precision_limits();
+    if (cause.empty())
+      cause = load_at_round_off(time);
+    // Below the 1e10 limit a large contrast still costs the direct solve
+    // about log10(ratio) of its 16 digits (stiffness/cyl-1e8-swapped: 1.5e-6
+    // with the Newton residuals at their absolute tolerance, and smaller
+    // Newton tolerances do not lower it).
+    const auto [youngs_min, youngs_max] = run.materials.youngs_modulus_range();
+    if (cause.empty() && youngs_max > contrast_costing_digits * youngs_min)
+      cause = "the stiffness ratio between the bodies, " + significant(youngs_max / youngs_min, 2) +
+              ", costs the solve about " +
+              std::to_string(static_cast<int>(std::log10(youngs_max / youngs_min))) +
+              " of the 16 digits of double precision, and the reactions balance only "
+              "that well (smaller Newton tolerances do not help; a stiff body modelled "
+              "as rigid does)";
+    if (cause.empty())
+      cause = "the Newton tolerances leave that much out of balance (Newton/Displacement "
+              "relative tolerance = " +
+              significant(run.newton_parameters.displacement_relative_tolerance, 2) +
+              "); tighten them";
+    return "the applied load and the support reactions are out of balance by " +
+           scientific(imbalance, 1) + " of the forces (tolerance " + significant(tolerance, 2) +
+           "): " + cause;
+  }
+
+  template <int dim>
+  std::string
+  ContactDiagnosis<dim>::precision_hint() const
+  {
+    // Stiffness ratios beyond ~1e10 (measured: 1e12 fails with either body
+    // as the slave) and nearly incompressible bodies leave the direct solve
+    // with too few digits: then that is the likely cause of any failure.
+    const std::string cause = precision_limits();
+    return cause.empty() ? cause : " Likely cause: " + cause + ".";
+  }
+
+  template <int dim>
+  std::string
+  ContactDiagnosis<dim>::tension_failure(const Json &contact) const
+  {
+    const double p_min = contact["min_active_contact_pressure"].number_value();
+    if (!(p_min < 0.))
+      return "";
+    const std::string cause = precision_limits();
+    return "the converged state has an active slave node in tension (contact pressure " +
+           scientific(p_min, 2) + ", largest " +
+           scientific(contact["max_contact_pressure"].number_value(), 2) +
+           "): its active set is rounding noise, no result" +
+           (cause.empty() ? std::string() : ": " + cause);
+  }
+
   template class ContactDiagnosis<2>;
   template class ContactDiagnosis<3>;
 } // namespace contact_fem

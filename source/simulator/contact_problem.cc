@@ -7,7 +7,9 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <contact_fem/postprocess/contact_results.h>
 #include <contact_fem/simulator/contact_problem.h>
+#include <contact_fem/simulator/dof_setup.h>
 #include <contact_fem/contact/friction/friction_capacity.h>
 #include <contact_fem/simulator/search_control.h>
 #include <contact_fem/simulator/solution_checks.h>
@@ -21,6 +23,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <random>
 #include <set>
@@ -30,37 +33,124 @@ namespace contact_fem
 {
   namespace
   {
-    /// Records and prints the energy-norm error of a solution of
-    /// @p potential_energy against @p reference_energy (Analytical
-    /// solution/Reference potential energy).
-    void
-    record_energy_error(const double              potential_energy,
-                        const double              chord_work,
-                        const double              reference_energy,
-                        const ConditionalOStream &pcout,
-                        Json                     &cycle_record)
+    const char *const multigrid_setup_section = "Solve: multigrid setup";
+
+    /// The wall time of each timer section of the cycle (summary.json),
+    /// with the multigrid set-ups' part (@p multigrid_seconds, negative for
+    /// a direct solver).
+    Json
+    timing_record(const TimerOutput &timer, const double multigrid_seconds)
     {
-      // A conforming discrete solution minimises the energy over a subset:
-      // its energy lies above the exact one, and 2 (Pi_h - Pi) is the
-      // squared energy-norm error (plus the contact work, see the
-      // parameter).
-      // Degree-1 Hertz: the work of the contact force on the chord gap
-      // (HertzCylinder::compare()) is a geometry error of the polygonal arc, not
-      // part of the discretisation error the estimate is compared with.
-      const double chord_gap_work = std::isfinite(chord_work) ? chord_work : 0.;
-      const double excess         = potential_energy + chord_gap_work - reference_energy;
-      const double energy_error   = std::sqrt(2. * std::abs(excess));
-      cycle_record.set("energy_error", energy_error);
-      pcout << "    energy-norm error:            " << energy_error << " (from Pi_h "
-            << (chord_gap_work > 0. ? "+ W_chord " : "") << "- Pi_ref = " << excess << ")"
-            << std::endl;
-      if (excess < 0.)
-        pcout << "  Warning: the potential energy is below the reference: the "
-                 "discrete problem is softer than the exact one (a polygonal "
-                 "curved boundary, the weak mortar gap) or the reference is not "
-                 "accurate enough; sqrt(2 |Pi_h - Pi_ref|) is then not a bound "
-                 "of the error."
-              << std::endl;
+      Json timing = Json::object();
+      for (const auto &[name, seconds] : timer.get_summary_data(TimerOutput::total_wall_time))
+        timing.set(name, seconds);
+      if (multigrid_seconds >= 0.)
+        timing.set(multigrid_setup_section, multigrid_seconds);
+      return timing;
+    }
+
+    /// The wall time of cycle @p cycle and of its timer sections, as
+    /// timing_record().
+    std::string
+    timing_text(const TimerOutput &timer,
+                const unsigned int cycle,
+                const double       wall,
+                const double       cumulative,
+                const double       multigrid_seconds)
+    {
+      std::ostringstream out;
+      out << "  Wall time of cycle " << cycle << ": " << wall << " s (cumulative " << cumulative
+          << " s), of which" << std::endl;
+      for (const auto &[name, seconds] : timer.get_summary_data(TimerOutput::total_wall_time))
+        out << "    " << std::left << std::setw(22) << name << std::right << std::setw(10)
+            << std::fixed << std::setprecision(4) << seconds << " s" << std::defaultfloat
+            << std::setprecision(6) << std::endl;
+      if (multigrid_seconds >= 0.)
+        out << "    (" << multigrid_setup_section << ": " << std::fixed << std::setprecision(4)
+            << multigrid_seconds << " s)" << std::defaultfloat << std::setprecision(6) << std::endl;
+      return out.str();
+    }
+
+    /// The largest change of a prescribed displacement from @p solution to
+    /// the values of @p dirichlet (before they are distributed): a lower
+    /// bound of the motion of the step. Collective.
+    double
+    largest_prescribed_change(const AffineConstraints<double>     &dirichlet,
+                              const TrilinosWrappers::MPI::Vector &solution,
+                              const MPI_Comm                       comm)
+    {
+      double largest = 0.;
+      for (const auto i : solution.locally_owned_elements())
+        if (dirichlet.is_constrained(i) && dirichlet.get_constraint_entries(i)->empty())
+          largest = std::max(largest, std::abs(dirichlet.get_inhomogeneity(i) - solution(i)));
+      return Utilities::MPI::max(largest, comm);
+    }
+
+    /// Records the contact sets of @p contact after @p iteration and throws
+    /// a NewtonFailure (splittable) when they repeat those of an earlier
+    /// iteration although they changed: the iteration cycles.
+    template <int dim>
+    void
+    check_for_cycling(const ContactFormulation<dim> &contact,
+                      const std::string             &at,
+                      const unsigned int             iteration,
+                      const unsigned int             changes,
+                      std::vector<std::vector<int>> &sets_of_iteration)
+    {
+      sets_of_iteration.push_back(contact.contact_sets());
+      // An empty set: the formulation offers no detection.
+      if (changes == 0 || iteration < 2 || sets_of_iteration.back().empty())
+        return;
+      for (unsigned int k = 0; k + 1 < iteration; ++k)
+        if (sets_of_iteration[k] == sets_of_iteration.back())
+          {
+            unsigned int differing = 0;
+            for (unsigned int n = 0; n < sets_of_iteration.back().size(); ++n)
+              differing += sets_of_iteration[iteration - 1][n] != sets_of_iteration.back()[n];
+            throw NewtonFailure(at + ": the stick/slip set cycles: iteration " +
+                                  std::to_string(iteration) +
+                                  " brings back the contact sets "
+                                  "of iteration " +
+                                  std::to_string(k) + " (period " + std::to_string(iteration - k) +
+                                  ", " + std::to_string(differing) +
+                                  " node(s) switching), so the "
+                                  "semi-smooth Newton iteration cannot settle. Smaller load "
+                                  "steps usually break the cycle (the step is split). "
+                                  "With Contact/Pure slip = true a scene that sticks "
+                                  "somewhere cannot settle: set it only where the whole "
+                                  "contact slips.",
+                                true);
+          }
+    }
+
+
+    /// Throws a NewtonFailure at @p at if a residual is not a number, with
+    /// the hint that @p singular_hint() gives.
+    template <typename Hint>
+    void
+    throw_if_not_finite(const std::string &at,
+                        const double       r_u,
+                        const double       r_lambda,
+                        const Hint        &singular_hint)
+    {
+      if (!std::isfinite(r_u) || !std::isfinite(r_lambda))
+        throw NewtonFailure(at + ": the residual is not a number (|r_u| = " + scientific(r_u) +
+                            ", |r_lambda| = " + scientific(r_lambda) +
+                            "). The linear system is singular or the input is extreme." +
+                            singular_hint());
+    }
+
+    /// Why a run whose converged state is outside the model's range stops
+    /// (summary.json @p status, exit code 3).
+    std::string
+    outside_model_range_stop(const std::string &status)
+    {
+      return "Stopped: the converged state is outside the model's range (see the warnings "
+             "above): small-strain linear elasticity does not describe these bodies under "
+             "this load, so the results are no answer of them (summary.json status '" +
+             status +
+             "', exit code 3). Model range/Accept results outside the small-strain range = "
+             "true accepts them.";
     }
 
     /// "Progress: load step k of N of cycle c done, ..." after @p n_solved
@@ -81,56 +171,6 @@ namespace contact_fem
     }
   } // namespace
 
-  TeeStream::TeeStream(std::ostream &console)
-    : std::ostream(&buffer)
-  {
-    buffer.first = console.rdbuf();
-  }
-
-  void
-  TeeStream::attach(std::ostream &file)
-  {
-    flush();
-    buffer.second = file.rdbuf();
-  }
-
-  bool
-  TeeStream::file_failed() const
-  {
-    return buffer.file_failed;
-  }
-
-  // Only the console decides the state of the stream: a log file that
-  // fails (a full disk, ...) used to put the whole stream into a failed
-  // state, after which nothing more reached the console either. The file is
-  // dropped instead and the run says so at its end.
-  int
-  TeeStream::Buffer::overflow(int c)
-  {
-    if (c == EOF)
-      return !EOF;
-    if (second && second->sputc(c) == EOF)
-      drop_file();
-    return first->sputc(c);
-  }
-
-  int
-  TeeStream::Buffer::sync()
-  {
-    if (second && second->pubsync() != 0)
-      drop_file();
-    return first->pubsync();
-  }
-
-  void
-  TeeStream::Buffer::drop_file()
-  {
-    second      = nullptr;
-    file_failed = true;
-  }
-
-  namespace
-  {} // namespace
 
   template <int dim>
   void
@@ -201,8 +241,8 @@ namespace contact_fem
                                       const std::string &scene_name,
                                       const std::string &prm_directory)
     : comm(MPI_COMM_WORLD)
-    , console(std::cout)
-    , pcout(console, Utilities::MPI::this_mpi_process(comm) == 0)
+    , log(comm)
+    , pcout(log.stream(), Utilities::MPI::this_mpi_process(comm) == 0)
     , scene_name(scene_name)
     , degree(std::stoul(read_entry(prm, "Finite element", "Degree")))
     , triangulation(comm,
@@ -268,7 +308,7 @@ namespace contact_fem
     TimerOutput::Scope t(*timer, "Setup: DoFs");
     if (auto *cache = dynamic_cast<MappingQCache<dim> *>(mapping.get()))
       cache->initialize(MappingQ<dim>(cache->get_degree()), triangulation);
-    distribute_dofs();
+    distribute_dofs(dof_handler, fe, dof_renumbering_seed);
     owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
 
@@ -281,7 +321,7 @@ namespace contact_fem
     ghosted_solution.reinit(owned_dofs, relevant_dofs, comm);
 
     locate_fixed_points();
-    make_dirichlet_constraints(0.);
+    make_dirichlet_constraints(dirichlet_inputs(), relevant_dofs, 0., dirichlet_constraints);
     if (!contact_parameters.pairs.empty())
       {
         interface = std::make_unique<ContactInterface<dim>>();
@@ -319,25 +359,6 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactProblem<dim>::distribute_dofs()
-  {
-    dof_handler.distribute_dofs(fe);
-    if (dof_renumbering_seed == 0)
-      return;
-    // Each rank shuffles its own range: deal.II 9.4's DoFRenumbering::random
-    // has a fixed seed and shuffles all n_dofs numbers, which a distributed
-    // DoFHandler on several ranks does not accept (it takes the new numbers
-    // of the owned DoFs only). refine_mesh() and setup_dofs() both call this
-    // on one mesh and get the same order.
-    const IndexSet                      &owned = dof_handler.locally_owned_dofs();
-    std::vector<types::global_dof_index> new_numbers(owned.begin(), owned.end());
-    std::mt19937 generator(dof_renumbering_seed + 7919 * Utilities::MPI::this_mpi_process(comm));
-    std::shuffle(new_numbers.begin(), new_numbers.end(), generator);
-    dof_handler.renumber_dofs(new_numbers);
-  }
-
-  template <int dim>
-  void
   ContactProblem<dim>::select_linear_solver()
   {
     const ProblemTraits traits = diagnosis().problem_traits();
@@ -347,73 +368,14 @@ namespace contact_fem
   }
 
   template <int dim>
-  std::vector<types::global_dof_index>
-  ContactProblem<dim>::vertex_dofs(const BodyPoint &point, const std::string &key) const
-  {
-    Point<dim> user;
-    for (unsigned int d = 0; d < dim; ++d)
-      user[d] = point.coordinates[d];
-    const Point<dim> location = scene.frame.to_model(user);
-    // The nearest vertex of the body, in units of its cell's diameter: a
-    // point typed with fewer digits than the mesh file holds (a rotated
-    // mesh) still names its vertex, and a miss names the nearest one.
-    std::vector<types::global_dof_index> dofs;
-    std::pair<double, Point<dim>>        nearest(std::numeric_limits<double>::infinity(), {});
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        if (cell->is_artificial() || cell->material_id() != point.material_id)
-          continue;
-        for (const auto v : cell->vertex_indices())
-          {
-            const double distance = cell->vertex(v).distance(location) / cell->diameter();
-            if (distance < nearest.first)
-              {
-                // Printed: coordinates of round-off size (on a symmetry
-                // line) as 0, so that the message is the same everywhere.
-                nearest = {distance, scene.frame.to_user(cell->vertex(v))};
-                for (unsigned int d = 0; d < dim; ++d)
-                  if (std::abs(nearest.second[d]) < 1e-10 * cell->diameter())
-                    nearest.second[d] = 0.;
-              }
-            if (distance < vertex_match_tolerance && dofs.empty())
-              for (unsigned int d = 0; d < dim; ++d)
-                dofs.push_back(cell->vertex_dof_index(v, d));
-          }
-        // The nearest vertex matters only where no rank finds the point.
-        if (!dofs.empty())
-          break;
-      }
-    const unsigned int found = dofs.empty() ? 0 : 1;
-    if (Utilities::MPI::sum(found, comm) == 0)
-      {
-        for (const auto &candidate : Utilities::MPI::all_gather(comm, nearest))
-          if (candidate.first < nearest.first)
-            nearest = candidate;
-        const std::string text = to_string(point);
-        AssertThrow(false,
-                    ExcMessage(key + ": body " + std::to_string(point.material_id) +
-                               " has no mesh vertex at (" + text.substr(text.find('@') + 2) + ")" +
-                               (std::isfinite(nearest.first) ?
-                                  "; its nearest vertex is " +
-                                    coordinates_text(scene.frame.to_model(nearest.second)) + ", " +
-                                    significant(nearest.first, 2) +
-                                    " of its cell's diameter away (a point names a vertex "
-                                    "within " +
-                                    significant(vertex_match_tolerance, 2) + ")" :
-                                  "; the body has no cells") +
-                               "."));
-      }
-    return dofs;
-  }
-
-  template <int dim>
   void
   ContactProblem<dim>::locate_fixed_points()
   {
     fixed_point_dofs.clear();
     for (const auto &condition : boundary_conditions.points)
       {
-        const auto dofs = vertex_dofs(condition.point, "Boundary conditions/Fixed points");
+        const auto dofs = vertex_dofs(dof_handler, scene.frame, condition.point,
+                                      "Boundary conditions/Fixed points");
         if (!dofs.empty())
           fixed_point_dofs.push_back(dofs[condition.component]);
       }
@@ -422,31 +384,8 @@ namespace contact_fem
                            fixed_point_dofs.end());
     probe_dofs.clear();
     for (const auto &probe : output.displacement_probes)
-      probe_dofs.push_back(vertex_dofs(probe, "Output/Displacement probes"));
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::make_dirichlet_constraints(const double time)
-  {
-    dirichlet_constraints.clear();
-    dirichlet_constraints.reinit(relevant_dofs);
-    for (const auto &condition : boundary_conditions.displacements)
-      {
-        std::vector<std::string> expressions(dim, "0");
-        expressions[condition.component] = condition.expression;
-        UserFunction<dim> function(expressions, scene.frame);
-        function.set_time(time);
-        ComponentMask mask(dim, false);
-        mask.set(condition.component, true);
-        VectorTools::interpolate_boundary_values(*mapping, dof_handler, condition.boundary_id,
-                                                 function, dirichlet_constraints, mask);
-      }
-    for (const auto dof : fixed_point_dofs)
-      if (!dirichlet_constraints.is_constrained(dof))
-        dirichlet_constraints.add_line(dof);
-    inclined_supports.add_constraints(dof_handler, hanging_constraints, dirichlet_constraints);
-    dirichlet_constraints.close();
+      probe_dofs.push_back(
+        vertex_dofs(dof_handler, scene.frame, probe, "Output/Displacement probes"));
   }
 
   template <int dim>
@@ -513,70 +452,67 @@ namespace contact_fem
   void
   ContactProblem<dim>::compute_cell_loads(const double time)
   {
-    TimerOutput::Scope                              t(*timer, "Assembly: bulk");
-    const QGauss<dim - 1>                           quadrature(degree + 1);
-    FEFaceValues<dim>                               fe_face(*mapping, fe, quadrature,
-                                                            update_values | update_normal_vectors | update_quadrature_points |
-                                                              update_JxW_values);
-    std::vector<std::unique_ptr<UserFunction<dim>>> pressures;
+    TimerOutput::Scope    t(*timer, "Assembly: bulk");
+    const QGauss<dim - 1> quadrature(degree + 1);
+    FEFaceValues<dim>     fe_face(*mapping, fe, quadrature,
+                                  update_values | update_normal_vectors | update_quadrature_points |
+                                    update_JxW_values);
+    cell_loads.assign(triangulation.n_active_cells(), Vector<double>());
+    // Adds the loads of the faces on the boundaries @p ids (one per
+    // condition c), cell by cell and face by face: traction(c, q) is the
+    // traction of condition c at quadrature point q of the face.
+    const auto add_face_loads = [&](const std::vector<types::boundary_id> &ids,
+                                    const auto                            &traction) {
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              for (unsigned int c = 0; c < ids.size(); ++c)
+                if (cell->face(f)->boundary_id() == ids[c])
+                  {
+                    fe_face.reinit(cell, f);
+                    Vector<double> &load = cell_loads[cell->active_cell_index()];
+                    if (load.size() == 0)
+                      load.reinit(fe.n_dofs_per_cell());
+                    for (unsigned int q = 0; q < quadrature.size(); ++q)
+                      {
+                        const Tensor<1, dim> t_q = traction(c, q);
+                        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                          load(i) += t_q[fe.system_to_component_index(i).first] *
+                                     fe_face.shape_value(i, q) * fe_face.JxW(q);
+                      }
+                  }
+    };
+    std::vector<types::boundary_id>                 ids;
+    std::vector<std::unique_ptr<UserFunction<dim>>> functions;
     for (const auto &condition : boundary_conditions.pressures)
       {
-        pressures.push_back(
+        ids.push_back(condition.boundary_id);
+        functions.push_back(
           std::make_unique<UserFunction<dim>>(std::vector<std::string>{condition.expression},
                                               scene.frame));
-        pressures.back()->set_time(time);
+        functions.back()->set_time(time);
       }
-    cell_loads.assign(triangulation.n_active_cells(), Vector<double>());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary())
-            for (unsigned int c = 0; c < pressures.size(); ++c)
-              if (cell->face(f)->boundary_id() == boundary_conditions.pressures[c].boundary_id)
-                {
-                  fe_face.reinit(cell, f);
-                  Vector<double> &load = cell_loads[cell->active_cell_index()];
-                  if (load.size() == 0)
-                    load.reinit(fe.n_dofs_per_cell());
-                  for (unsigned int q = 0; q < quadrature.size(); ++q)
-                    {
-                      const double p = pressures[c]->value(fe_face.quadrature_point(q));
-                      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                        {
-                          const unsigned int comp = fe.system_to_component_index(i).first;
-                          load(i) -= p * fe_face.normal_vector(q)[comp] *
-                                     fe_face.shape_value(i, q) * fe_face.JxW(q);
-                        }
-                    }
-                }
+    add_face_loads(ids, [&](const unsigned int c, const unsigned int q) {
+      return -functions[c]->value(fe_face.quadrature_point(q)) * fe_face.normal_vector(q);
+    });
     // Traction vectors (Boundary conditions/Traction): one parser per
     // component.
-    std::vector<std::unique_ptr<UserFunction<dim>>> tractions;
+    ids.clear();
+    functions.clear();
     for (const auto &condition : boundary_conditions.tractions)
       {
-        tractions.push_back(
+        ids.push_back(condition.boundary_id);
+        functions.push_back(
           std::make_unique<UserFunction<dim>>(condition.expressions, scene.frame));
-        tractions.back()->set_time(time);
+        functions.back()->set_time(time);
       }
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary())
-            for (unsigned int c = 0; c < tractions.size(); ++c)
-              if (cell->face(f)->boundary_id() == boundary_conditions.tractions[c].boundary_id)
-                {
-                  fe_face.reinit(cell, f);
-                  Vector<double> &load = cell_loads[cell->active_cell_index()];
-                  if (load.size() == 0)
-                    load.reinit(fe.n_dofs_per_cell());
-                  for (unsigned int q = 0; q < quadrature.size(); ++q)
-                    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                      {
-                        const unsigned int comp = fe.system_to_component_index(i).first;
-                        load(i) += tractions[c]->value(fe_face.quadrature_point(q), comp) *
-                                   fe_face.shape_value(i, q) * fe_face.JxW(q);
-                      }
-                }
+    add_face_loads(ids, [&](const unsigned int c, const unsigned int q) {
+      Tensor<1, dim> t_q;
+      for (unsigned int d = 0; d < dim; ++d)
+        t_q[d] = functions[c]->value(fe_face.quadrature_point(q), d);
+      return t_q;
+    });
   }
 
   template <int dim>
@@ -679,39 +615,14 @@ namespace contact_fem
             constraints.distribute_local_to_global(cell_matrices[index], load, dofs, system_matrix,
                                                    system_rhs);
           else
-            distribute_unsymmetric(cell_matrices[index], load, dofs);
+            distribute_two_space(cell_matrices[index], load, dofs, constraints, test_constraints,
+                                 system_matrix, system_rhs);
         }
     if (contact)
       contact->assemble(*interface, constraints, symmetric ? constraints : test_constraints,
                         owned_dofs, system_matrix, system_rhs);
     system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::distribute_unsymmetric(const FullMatrix<double>                   &K,
-                                              const Vector<double>                       &load,
-                                              const std::vector<types::global_dof_index> &dofs)
-  {
-    // P (K (C u~ + b) - f) = 0 with the trial constraints u = C u~ + b and
-    // the test constraints P: the rows follow the test space, the columns
-    // the trial space, and the inhomogeneity b moves to the right-hand side.
-    const unsigned int n = dofs.size();
-    Vector<double>     b(n), rhs(load);
-    for (unsigned int i = 0; i < n; ++i)
-      if (constraints.is_constrained(dofs[i]))
-        b(i) = constraints.get_inhomogeneity(dofs[i]);
-    b *= -1.;
-    K.vmult_add(rhs, b);
-    test_constraints.distribute_local_to_global(K, dofs, constraints, dofs, system_matrix);
-    test_constraints.distribute_local_to_global(rhs, dofs, system_rhs);
-    // The two-space form leaves the eliminated rows empty: a diagonal entry
-    // of the bulk's scale keeps the matrix regular (the value is overwritten
-    // by distribute()). Both spaces eliminate the same DoFs.
-    for (unsigned int i = 0; i < n; ++i)
-      if (constraints.is_constrained(dofs[i]))
-        system_matrix.add(dofs[i], dofs[i], std::abs(K(i, i)));
   }
 
   template <int dim>
@@ -803,29 +714,17 @@ namespace contact_fem
   }
 
   template <int dim>
-  double
-  ContactProblem<dim>::prescribed_increment() const
-  {
-    double largest = 0.;
-    for (const auto i : owned_dofs)
-      if (dirichlet_constraints.is_constrained(i) &&
-          dirichlet_constraints.get_constraint_entries(i)->empty())
-        largest =
-          std::max(largest, std::abs(dirichlet_constraints.get_inhomogeneity(i) - solution(i)));
-    return Utilities::MPI::max(largest, comm);
-  }
-
-  template <int dim>
   void
   ContactProblem<dim>::prepare_load_step(const double time,
                                          const double step_size,
                                          const bool   first_step)
   {
     current_time = time;
-    make_dirichlet_constraints(time);
+    make_dirichlet_constraints(dirichlet_inputs(), relevant_dofs, time, dirichlet_constraints);
     compute_cell_loads(time);
     // Start from the last converged state with the new prescribed values.
-    const double prescribed = contact ? prescribed_increment() : 0.;
+    const double prescribed =
+      contact ? largest_prescribed_change(dirichlet_constraints, solution, comm) : 0.;
     dirichlet_constraints.distribute(solution);
     ghosted_solution = solution;
     if (tying)
@@ -849,17 +748,6 @@ namespace contact_fem
   }
 
   template <int dim>
-  std::string
-  ContactProblem<dim>::precision_hint() const
-  {
-    // Stiffness ratios beyond ~1e10 (measured: 1e12 fails with either body
-    // as the slave) and nearly incompressible bodies leave the direct solve
-    // with too few digits: then that is the likely cause of any failure.
-    const std::string cause = diagnosis().precision_limits();
-    return cause.empty() ? cause : " Likely cause: " + cause + ".";
-  }
-
-  template <int dim>
   void
   ContactProblem<dim>::newton_update(const std::string &where, const double newton_residual_target)
   {
@@ -876,7 +764,8 @@ namespace contact_fem
         if (e.singular && contact && contact->slides_everywhere())
           throw NewtonFailure(where + ": " + e.what() + ": " + exceeded_friction_capacity({}));
         throw NewtonFailure(where + ": " + e.what() + "." +
-                              (e.singular ? diagnosis().singular_system_hint() : precision_hint()),
+                              (e.singular ? diagnosis().singular_system_hint() :
+                                            diagnosis().precision_hint()),
                             false);
       }
     catch (const std::exception &e)
@@ -994,12 +883,9 @@ namespace contact_fem
         const ContactUpdate update   = update_contact(iteration);
         const double        r_u      = equilibrium_residual_norm(update.residuals.contact_force);
         const double        r_lambda = update.residuals.multiplier;
-        if (!std::isfinite(r_u) || !std::isfinite(r_lambda))
-          throw NewtonFailure(at + ": the residual is not a number (|r_u| = " + scientific(r_u) +
-                              ", |r_lambda| = " + scientific(r_lambda) +
-                              "). The linear system is singular or the input is "
-                              "extreme." +
-                              diagnosis().singular_system_hint());
+        throw_if_not_finite(at, r_u, r_lambda, [this] {
+          return diagnosis().singular_system_hint();
+        });
         assessment =
           monitor.assess(iteration, r_u, r_lambda, update.changes, update.searched_again);
         std::optional<unsigned int> linear_iterations;
@@ -1011,7 +897,7 @@ namespace contact_fem
                                linear_iterations)
                 << std::endl;
         if (contact)
-          check_for_cycling(at, iteration, update.changes, sets_of_iteration);
+          check_for_cycling(*contact, at, iteration, update.changes, sets_of_iteration);
         if (assessment.converged && contact &&
             !search->accept(interface_displacement, step, time, step_size))
           {
@@ -1032,7 +918,7 @@ namespace contact_fem
                             monitor.last_residuals() + "." +
                             diagnosis().non_convergence_hint(assessment.stalled, monitor.last_r_u(),
                                                              monitor.last_r_lambda()) +
-                            precision_hint(),
+                            diagnosis().precision_hint(),
                           !assessment.stalled);
 
     return iteration;
@@ -1050,39 +936,6 @@ namespace contact_fem
     if (contact && contact->slides_everywhere())
       if (const auto free = diagnosis().problem_traits().unsupported_bodies; !free.empty())
         throw NewtonFailure(at + ": " + exceeded_friction_capacity(free));
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::check_for_cycling(const std::string             &at,
-                                         const unsigned int             iteration,
-                                         const unsigned int             changes,
-                                         std::vector<std::vector<int>> &sets_of_iteration) const
-  {
-    sets_of_iteration.push_back(contact->contact_sets());
-    // An empty set: the formulation offers no detection.
-    if (changes == 0 || iteration < 2 || sets_of_iteration.back().empty())
-      return;
-    for (unsigned int k = 0; k + 1 < iteration; ++k)
-      if (sets_of_iteration[k] == sets_of_iteration.back())
-        {
-          unsigned int differing = 0;
-          for (unsigned int n = 0; n < sets_of_iteration.back().size(); ++n)
-            differing += sets_of_iteration[iteration - 1][n] != sets_of_iteration.back()[n];
-          throw NewtonFailure(at + ": the stick/slip set cycles: iteration " +
-                                std::to_string(iteration) +
-                                " brings back the contact sets "
-                                "of iteration " +
-                                std::to_string(k) + " (period " + std::to_string(iteration - k) +
-                                ", " + std::to_string(differing) +
-                                " node(s) switching), so the "
-                                "semi-smooth Newton iteration cannot settle. Smaller load "
-                                "steps usually break the cycle (the step is split). "
-                                "With Contact/Pure slip = true a scene that sticks "
-                                "somewhere cannot settle: set it only where the whole "
-                                "contact slips.",
-                              true);
-        }
   }
 
   template <int dim>
@@ -1141,7 +994,13 @@ namespace contact_fem
     // checked: an earlier run's files go (they would pass for this run's),
     // and a directory that cannot take the new ones stops the run before
     // any work.
-    const OutputDirectoryReport earlier_outputs = open_output_directory();
+    const OutputDirectoryReport earlier_outputs = log.open(output.directory);
+    postprocessors                              = Postprocessor<dim>::create_wanted(
+                                   {output, analytical, static_cast<bool>(contact),
+                                    [this](const std::string &kind, const std::string &text, Json &record) {
+         warn(kind, text, record);
+       },
+                                    *timer, comm});
     pcout << "contact_fem: scene '" << scene_name << "', " << dim << "D, "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI process(es)" << std::endl
           << effective_input;
@@ -1158,7 +1017,7 @@ namespace contact_fem
                  "coordinates; the VTU files (32-bit points) the moved ones: add ("
               << origin << ") (summary.json: coordinate_origin)." << std::endl;
       }
-    report_earlier_outputs(earlier_outputs);
+    log.report_earlier_outputs(earlier_outputs, scene_name);
     print_input_warnings();
 
     create_checked_mesh();
@@ -1222,7 +1081,7 @@ namespace contact_fem
         throw;
       }
     pcout << warnings.repeats();
-    if (console.file_failed())
+    if (log.failed())
       pcout << "Warning: writing '" << output.directory
             << "/log.txt' failed during the run: the log is incomplete (the console has "
                "everything)."
@@ -1262,13 +1121,14 @@ namespace contact_fem
         const bool   converged = run_cycle(cycle, record);
         const double wall      = cycle_timer.wall_time() - uncounted_wall_time;
         cumulative += wall;
+        const double multigrid = linear_solver->iterative() ? multigrid_setup_seconds : -1.;
         record.set("wall_time", wall).set("cumulative_wall_time", cumulative);
-        record.set("timing", cycle_timing());
+        record.set("timing", timing_record(*timer, multigrid));
         cycles.push(record);
-        unsigned int newton_iterations = 0;
-        for (const unsigned int n : newton_iterations_of_cycle)
-          newton_iterations += n;
-        convergence_table->add_row(record, refinement.estimator, newton_iterations, cumulative);
+        convergence_table->add_row(record, refinement.estimator,
+                                   std::accumulate(newton_iterations_of_cycle.begin(),
+                                                   newton_iterations_of_cycle.end(), 0u),
+                                   cumulative);
         // Written after every cycle, so an interrupted study keeps its data;
         // the status says whether the run is complete.
         // Refining does not bring a state beyond the model back into it.
@@ -1279,52 +1139,16 @@ namespace contact_fem
                       !last      ? "running" :
                                    converged_status());
         if (output.print_timing)
-          print_cycle_timing(wall, cumulative);
+          pcout << timing_text(*timer, cycle, wall, cumulative, multigrid);
         if (!converged)
           return 2;
         if (beyond_model)
           {
-            pcout << std::endl
-                  << "Stopped: the converged state is outside the model's range (see the "
-                     "warnings above): small-strain linear elasticity does not describe "
-                     "these bodies under this load, so the results are no answer of them "
-                     "(summary.json status '"
-                  << converged_status()
-                  << "', exit code 3). Model range/Accept results outside the "
-                     "small-strain range = true accepts them."
-                  << std::endl;
+            pcout << std::endl << outside_model_range_stop(converged_status()) << std::endl;
             return 3;
           }
       }
     return 0;
-  }
-
-  template <int dim>
-  Json
-  ContactProblem<dim>::cycle_timing() const
-  {
-    Json timing = Json::object();
-    for (const auto &[name, seconds] : timer->get_summary_data(TimerOutput::total_wall_time))
-      timing.set(name, seconds);
-    if (linear_solver->iterative())
-      timing.set(multigrid_setup_section, multigrid_setup_seconds);
-    return timing;
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::print_cycle_timing(const double wall, const double cumulative) const
-  {
-    pcout << "  Wall time of cycle " << cycle << ": " << wall << " s (cumulative " << cumulative
-          << " s), of which" << std::endl;
-    for (const auto &[name, seconds] : timer->get_summary_data(TimerOutput::total_wall_time))
-      pcout << "    " << std::left << std::setw(22) << name << std::right << std::setw(10)
-            << std::fixed << std::setprecision(4) << seconds << " s" << std::defaultfloat
-            << std::setprecision(6) << std::endl;
-    if (linear_solver->iterative())
-      pcout << "    (" << multigrid_setup_section << ": " << std::fixed << std::setprecision(4)
-            << multigrid_setup_seconds << " s)" << std::defaultfloat << std::setprecision(6)
-            << std::endl;
   }
 
   template <int dim>
@@ -1337,103 +1161,6 @@ namespace contact_fem
     return balance_failed ? "converged, but the reactions do not balance the load "
                             "(cycles[].balance_warning)" :
                             "converged";
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::check_reaction_balance(const Json &reaction, Json &cycle_record)
-  {
-    // The stability study's verdict tolerance (doc/stability.md): converged
-    // runs of the shipped scenes balance to 1e-10 or better, damped ones
-    // with tightened tolerances to about 2e-8.
-    constexpr double tolerance               = 1e-6;
-    constexpr double contrast_costing_digits = 1e6;
-    const double     imbalance               = reaction["relative_imbalance"].number_value();
-    if (!(imbalance > tolerance))
-      return;
-    const ContactDiagnosis<dim> diagnosis = this->diagnosis();
-    std::string                 cause     = diagnosis.precision_limits();
-    if (cause.empty())
-      cause = diagnosis.load_at_round_off(current_time);
-    // Below the 1e10 limit a large contrast still costs the direct solve
-    // about log10(ratio) of its 16 digits (stiffness/cyl-1e8-swapped: 1.5e-6
-    // with the Newton residuals at their absolute tolerance, and smaller
-    // Newton tolerances do not lower it).
-    const auto [youngs_min, youngs_max] = materials.youngs_modulus_range();
-    if (cause.empty() && youngs_max > contrast_costing_digits * youngs_min)
-      cause = "the stiffness ratio between the bodies, " + significant(youngs_max / youngs_min, 2) +
-              ", costs the solve about " +
-              std::to_string(static_cast<int>(std::log10(youngs_max / youngs_min))) +
-              " of the 16 digits of double precision, and the reactions balance only "
-              "that well (smaller Newton tolerances do not help; a stiff body modelled "
-              "as rigid does)";
-    if (cause.empty())
-      cause = "the Newton tolerances leave that much out of balance (Newton/Displacement "
-              "relative tolerance = " +
-              significant(newton_parameters.displacement_relative_tolerance, 2) + "); tighten them";
-    const std::string text = "the applied load and the support reactions are out of "
-                             "balance by " +
-                             scientific(imbalance, 1) + " of the forces (tolerance " +
-                             significant(tolerance, 2) + "): " + cause;
-    warn("balance_warning", text, cycle_record);
-    balance_failed = true;
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::warn_about_precision_limits() const
-  {
-    for (const auto &[id, constants] : materials.bodies)
-      if (lambda_over_mu(constants.poisson_ratio) > warn_lambda_over_mu())
-        pcout << "  Warning: body " << static_cast<unsigned int>(id) << " has Poisson's ratio "
-              << std::setprecision(16) << constants.poisson_ratio << std::setprecision(6)
-              << ": lambda/mu = " << significant(lambda_over_mu(constants.poisson_ratio), 2)
-              << ", beyond " << significant(warn_lambda_over_mu(), 2)
-              << ", where double precision resolves the shear stiffness next to the "
-                 "volumetric one only to about 1e-14 lambda/mu: expect the reactions to "
-                 "balance the load to about that, or the solver to fail."
-              << std::endl;
-    const ContactDiagnosis<dim> diagnosis = this->diagnosis();
-    if (const std::string contrast = diagnosis.stiffness_contrast_limit(); !contrast.empty())
-      pcout << "  Warning: " << contrast << "." << std::endl;
-    if (const std::string auxetic = diagnosis.auxetic_limit(); !auxetic.empty())
-      pcout << "  Warning: " << auxetic << "." << std::endl;
-    const std::string round_off = diagnosis.load_at_round_off(load_stepping.end_time);
-    if (!round_off.empty())
-      pcout << "  Warning: " << round_off << "." << std::endl;
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::warn_about_modelling_choices() const
-  {
-    warn_about_precision_limits();
-    // Volumetric locking: measured on the Hertz scene, p_max is off by more
-    // than 2 % beyond these Poisson's ratios without B-bar
-    // (doc/stability.md).
-    const double locking_nu = degree == 1 ? 0.49 : 0.499;
-    if (!volumetric_projection)
-      for (const auto &[id, constants] : materials.bodies)
-        if (constants.poisson_ratio > locking_nu)
-          pcout << "  Warning: body " << static_cast<unsigned int>(id) << " has Poisson's ratio "
-                << constants.poisson_ratio << ": degree " << degree
-                << " elements lock volumetrically beyond about " << locking_nu
-                << "; set Finite element/Volumetric strain = B-bar." << std::endl;
-    // The mortar side should be the softer one (and the finer mesh): a stiff
-    // slave on a soft, coarse master cannot represent the pressure.
-    if (interface)
-      for (unsigned int p = 0; p < contact_parameters.pairs.size(); ++p)
-        {
-          const double ratio = diagnosis().slave_stiffness_ratio(p);
-          if (ratio > 10.)
-            pcout << "  Warning: contact pair "
-                  << static_cast<unsigned int>(contact_parameters.pairs[p].slave) << ": "
-                  << static_cast<unsigned int>(contact_parameters.pairs[p].master)
-                  << ": the slave side is " << ratio
-                  << " times stiffer than the master side; the softer (and finer) "
-                     "surface should be the slave (Contact/Pairs)."
-                  << std::endl;
-        }
   }
 
   template <int dim>
@@ -1563,7 +1290,10 @@ namespace contact_fem
             << "; zero pivots (free rigid-body modes) are not detected by it" << std::endl;
 
     if (cycle == 0)
-      warn_about_modelling_choices();
+      for (const std::string &text :
+           diagnosis().modelling_warnings(degree, volumetric_projection != nullptr,
+                                          load_stepping.end_time))
+        pcout << "  Warning: " << text << std::endl;
 
     cycle_record.set("cycle", cycle)
       .set("n_cells", static_cast<double>(triangulation.n_global_active_cells()))
@@ -1637,13 +1367,6 @@ namespace contact_fem
                                  path_timer.wall_time())
                 << std::endl;
         saved = ConvergedState(solution, contact.get(), interface.get());
-        if (vtu_output)
-          {
-            TimerOutput::Scope                       t(*timer, "Output: VTU");
-            const std::unique_ptr<ContactState<dim>> state =
-              contact ? std::make_unique<ContactState<dim>>(contact_state()) : nullptr;
-            vtu_output->write_solution(solution_view(state.get()), cycle, time);
-          }
       }
     current_time = control.converged_time();
     cycle_record.set("load_steps", steps);
@@ -1679,12 +1402,20 @@ namespace contact_fem
                                         const double       time,
                                         Json              &step_record)
   {
-    record_forces(n_solved, time, step_record);
+    // The contact force of the step, before the formulation accepts it
+    // (its tangential residual is taken from the last accepted state).
+    const std::vector<double>                contact_force = interface_contact_force();
+    const std::unique_ptr<ContactState<dim>> state =
+      contact ? std::make_unique<ContactState<dim>>(contact_state()) : nullptr;
+    const RunView<dim> view = run_view(n_solved, state.get(), contact_force);
     // The load history a comparison may need (Cattaneo unloading).
     if (comparison && contact)
       comparison->record_load_step(contact_state());
     if (contact)
       contact->accept_load_step(*interface, interface_displacement);
+    postprocess([&](Postprocessor<dim> &postprocessor, std::ostream &out) {
+      postprocessor.after_load_step(view, step_record, out);
+    });
   }
 
   template <int dim>
@@ -1709,7 +1440,8 @@ namespace contact_fem
     if (!path.converged && contact)
       {
         // Results of the last converged state: its residual and gaps.
-        make_dirichlet_constraints(current_time);
+        make_dirichlet_constraints(dirichlet_inputs(), relevant_dofs, current_time,
+                                   dirichlet_constraints);
         compute_cell_loads(current_time);
         compute_residual();
         interface_displacement = interface->gather(solution);
@@ -1719,8 +1451,10 @@ namespace contact_fem
     if (refinement.n_cycles > 1)
       {
         estimate_error(cycle_record);
-        if (vtu_output)
-          vtu_output->write_error_indicators(solution_view(nullptr), indicators, cycle);
+        const RunView<dim> view = run_view(0, nullptr, interface_contact_force());
+        postprocess([&](Postprocessor<dim> &postprocessor, std::ostream &) {
+          postprocessor.after_estimate(view, indicators);
+        });
       }
     return true;
   }
@@ -1729,26 +1463,31 @@ namespace contact_fem
   bool
   ContactProblem<dim>::record_results(const bool converged, Json &cycle_record)
   {
-    const Json contact_json  = contact_results();
-    const Json reaction_json = reaction_results();
+    const std::vector<double> contact_force = interface_contact_force();
+    const Json                contact_json =
+      contact ? contact_results(contact_state(), search->last_penetration_excess()) :
+                               Json::object();
+    const std::function<bool(types::global_dof_index)> held = [this](const auto dof) {
+      return inclined_supports.holds(dof);
+    };
+    const Json reaction_json = reaction_results<dim>(
+      {run_view(0, nullptr, contact_force).forces, held, diagnosis().body_loads(current_time),
+       materials.youngs_modulus_range().first, solution.linfty_norm()});
     cycle_record.set("contact", contact_json).set("reaction", reaction_json);
-    if (const double p_min = contact_json["min_active_contact_pressure"].number_value();
-        converged && p_min < 0.)
+    if (const std::string text = converged ? diagnosis().tension_failure(contact_json) : "";
+        !text.empty())
       {
-        // An active node in tension: the active set was decided by rounding.
-        const std::string cause = diagnosis().precision_limits();
-        const std::string text =
-          "the converged state has an active slave node in tension (contact pressure " +
-          scientific(p_min, 2) + ", largest " +
-          scientific(contact_json["max_contact_pressure"].number_value(), 2) +
-          "): its active set is rounding noise, no result" +
-          (cause.empty() ? std::string() : ": " + cause);
         pcout << std::endl << "Error: " << text << "." << std::endl;
         cycle_record.set("failure", text);
         return false;
       }
     if (converged)
-      check_reaction_balance(reaction_json, cycle_record);
+      if (const std::string text = diagnosis().balance_warning(reaction_json, current_time);
+          !text.empty())
+        {
+          warn("balance_warning", text, cycle_record);
+          balance_failed = true;
+        }
     Json hertz_json = Json::object();
     if (comparison)
       {
@@ -1762,30 +1501,30 @@ namespace contact_fem
     // measures the energy-norm error.
     const double potential_energy = strain_energy - external_work;
     cycle_record.set("strain_energy", strain_energy).set("potential_energy", potential_energy);
-    print_results(contact_json, reaction_json, hertz_json);
+    pcout << "  Results at t = " << current_time << ":" << std::endl
+          << std::setprecision(6)
+          << (contact ? contact_results_text(contact_state(), contact_json, reaction_json,
+                                             contact_parameters.penetration_tolerance) :
+                        std::string())
+          << reaction_results_text(reaction_json);
+    if (comparison && contact)
+      {
+        std::ostringstream text;
+        comparison->print(hertz_json, text);
+        pcout << text.str();
+      }
     if (tying)
       {
         std::ostringstream text;
         cycle_record.set("tying", tying->results(text));
         pcout << text.str();
       }
-    if (contact)
-      for (const std::string &text : checkerboard_warnings(*interface, *contact))
-        warn("checkerboard_warning", text, cycle_record);
-    if (!probe_dofs.empty())
-      cycle_record.set("displacement_probes", probe_results());
-    if (contact && !analytical.reference_pressure_profile.empty())
-      {
-        const double error = reference_pressure_error(contact->pressures(*interface));
-        cycle_record.set("pressure_reference_l2_relative_error", error);
-        pcout << "    pressure, L2 error against the reference: " << value_or_ok(error, 1e-10)
-              << std::endl;
-      }
-    if (std::isfinite(analytical.reference_potential_energy))
-      record_energy_error(potential_energy, hertz_json["chord_gap_work"].number_value(),
-                          analytical.reference_potential_energy, pcout, cycle_record);
-    if (output.write_pressure_profile && contact)
-      write_pressure_profile();
+    const std::unique_ptr<ContactState<dim>> state =
+      contact ? std::make_unique<ContactState<dim>>(contact_state()) : nullptr;
+    const RunView<dim> view = run_view(0, state.get(), contact_force);
+    postprocess([&](Postprocessor<dim> &postprocessor, std::ostream &out) {
+      postprocessor.after_cycle(view, cycle_record, out);
+    });
     return true;
   }
 

@@ -4,7 +4,9 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/numerics/error_estimator.h>
 
+#include <contact_fem/postprocess/pressure_profile.h>
 #include <contact_fem/simulator/contact_problem.h>
+#include <contact_fem/simulator/dof_setup.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/adaptivity/marking.h>
 #include <contact_fem/contact/mortar.h>
@@ -86,7 +88,16 @@ namespace contact_fem
     /// The contact tractions that SPR imposes at the paired slave nodes of
     /// @p interface: those of the active nodes of @p contact, and with
     /// @p all_paired (a known pressure is compared) the inactive ones too,
-    /// not imposed, in the order report_recovered_tractions() expects.
+    /// not imposed, in the order recovered_traction_report() expects.
+    ///
+    /// The traction of a node is imposed as the N_j-weighted mean over the
+    /// node's slave faces (which is what a dual multiplier is). The stresses
+    /// live on the reference configuration, while the contact force
+    /// -lambda_j D_j n_j acts along the normal of the deformed surface and
+    /// D_j is measured there: the mean traction is that force over the
+    /// reference int N_j ds. (Splitting it along the reference normal
+    /// instead would be off by the surface rotation, ~ a / R in Hertz,
+    /// which does not shrink under refinement.)
     template <int dim>
     std::vector<ContactNodeTraction<dim>>
     recovery_tractions(const ContactInterface<dim>   &interface,
@@ -217,51 +228,52 @@ namespace contact_fem
       /// mortar tangential traction) and the largest mortar pressure.
       double largest_shear = 0., p_max = 0.;
     };
-  } // namespace
 
-  template <int dim>
-  void
-  ContactProblem<dim>::report_recovered_tractions(
-    const std::vector<ContactNodeTraction<dim>> &nodes,
-    const std::vector<SymmetricTensor<2, dim>>  &node_stresses,
-    const std::string                           &prefix,
-    Json                                        &cycle_record) const
-  {
-    const bool                    with_shear = contact->transmits_shear();
-    const RecoveredTractions<dim> recovered(*interface, *contact, nodes, node_stresses);
-    const std::vector<double>    &pressure      = recovered.pressure;
-    const std::vector<double>    &tangential    = recovered.tangential;
-    const double                  largest_shear = recovered.largest_shear;
-    const double                  p_max         = recovered.p_max;
-    const double                  shear         = p_max > 0. ? largest_shear / p_max : 0.;
-    const std::string label = prefix.empty() ? "    recovered" : "    plain SPR recovered";
-    if (with_shear)
-      {
-        cycle_record.set(prefix + "recovered_tangential_traction_deviation_max_relative", shear);
-        pcout << label
+    /// The lines of how far the traction of the recovered stress at the
+    /// paired slave nodes (@p node_stresses at @p nodes, the paired
+    /// interface slave nodes in their order) is from the mortar traction
+    /// (or zero shear), from the exact pressure of @p comparison (if any)
+    /// and from the reference profile of @p analytical (if any); recorded
+    /// in @p cycle_record with keys prefixed with @p prefix.
+    template <int dim>
+    std::string
+    recovered_traction_report(const ContactState<dim>                     &state,
+                              const AnalyticalComparison<dim>             *comparison,
+                              const AnalyticalSolution                    &analytical,
+                              const std::vector<ContactNodeTraction<dim>> &nodes,
+                              const std::vector<SymmetricTensor<2, dim>>  &node_stresses,
+                              const std::string                           &prefix,
+                              Json                                        &cycle_record)
+    {
+      const RecoveredTractions<dim> recovered(state.interface, state.contact, nodes, node_stresses);
+      const double shear = recovered.p_max > 0. ? recovered.largest_shear / recovered.p_max : 0.;
+      const std::string  label = prefix.empty() ? "    recovered" : "    plain SPR recovered";
+      std::ostringstream out;
+      if (state.contact.transmits_shear())
+        {
+          cycle_record.set(prefix + "recovered_tangential_traction_deviation_max_relative", shear);
+          out << label
               << " tangential traction - mortar one, largest / p_max: " << value_or_ok(shear, 1e-6)
               << std::endl;
-      }
-    else
-      {
-        cycle_record.set(prefix + "recovered_shear_traction_max_relative", shear);
-        pcout << label << " shear traction / p_max: " << value_or_ok(shear, 1e-6) << std::endl;
-      }
-    if (comparison)
-      {
-        std::ostringstream text;
-        comparison->report_recovered(contact_state(), pressure, tangential, label, prefix,
-                                     cycle_record, text);
-        pcout << text.str();
-      }
-    if (!analytical.reference_pressure_profile.empty())
-      {
-        const double error = reference_pressure_error(pressure);
-        cycle_record.set(prefix + "recovered_pressure_reference_l2_relative_error", error);
-        pcout << label << " pressure, L2 error against the reference: " << value_or_ok(error, 1e-10)
+        }
+      else
+        {
+          cycle_record.set(prefix + "recovered_shear_traction_max_relative", shear);
+          out << label << " shear traction / p_max: " << value_or_ok(shear, 1e-6) << std::endl;
+        }
+      if (comparison)
+        comparison->report_recovered(state, recovered.pressure, recovered.tangential, label, prefix,
+                                     cycle_record, out);
+      if (!analytical.reference_pressure_profile.empty())
+        {
+          const double error = reference_pressure_error(analytical, state, recovered.pressure);
+          cycle_record.set(prefix + "recovered_pressure_reference_l2_relative_error", error);
+          out << label << " pressure, L2 error against the reference: " << value_or_ok(error, 1e-10)
               << std::endl;
-      }
-  }
+        }
+      return out.str();
+    }
+  } // namespace
 
   template <int dim>
   void
@@ -274,18 +286,8 @@ namespace contact_fem
     settings.contact_terms      = type != "spr";
     settings.penalty_normal     = spr_settings.penalty_normal;
     settings.penalty_tangential = spr_settings.penalty_tangential;
-
-    // The contact tractions of the active slave nodes, imposed as the
-    // N_j-weighted mean over the node's slave faces (which is what a dual
-    // multiplier is). The stresses live on the reference configuration,
-    // while the contact force -lambda_j D_j n_j acts along the normal of the
-    // deformed surface and D_j is measured there: the mean traction is that
-    // force over the reference int N_j ds. (Splitting it along the reference
-    // normal instead would be off by the surface rotation, ~ a / R in Hertz,
-    // which does not shrink under refinement.) When the recovered traction
-    // is reported (a known pressure), every paired node is listed, the
-    // inactive ones not imposed, in the order report_recovered_tractions()
-    // expects.
+    // The contact tractions (recovery_tractions()); every paired node when
+    // the recovered traction is compared with a known pressure.
     const bool pressure_known =
       contact && (comparison || !analytical.reference_pressure_profile.empty());
     const std::vector<ContactNodeTraction<dim>> tractions =
@@ -311,12 +313,13 @@ namespace contact_fem
     pcout << "    estimated error (SPR" << (settings.contact_terms ? " contact" : "")
           << "): eta / |u|_E = " << value_or_ok(spr.relative_error, 1e-10) << std::endl;
     if (pressure_known)
-      report_recovered_tractions(tractions, spr.node_stresses, "", cycle_record);
+      pcout << recovered_traction_report(contact_state(), comparison.get(), analytical, tractions,
+                                         spr.node_stresses, "", cycle_record);
 
     t.stop();
     if (refinement.compare_plain_spr && settings.contact_terms)
       {
-        Timer comparison;
+        Timer plain_timer;
         settings.contact_terms = false;
         const auto plain =
           StressRecovery<dim>::estimate(*mapping, dof_handler, ghosted_solution, materials,
@@ -325,8 +328,10 @@ namespace contact_fem
         pcout << "    plain SPR on the same mesh:   eta / |u|_E = "
               << value_or_ok(plain.relative_error, 1e-10) << std::endl;
         if (pressure_known)
-          report_recovered_tractions(tractions, plain.node_stresses, "plain_spr_", cycle_record);
-        uncounted_wall_time += comparison.wall_time();
+          pcout << recovered_traction_report(contact_state(), comparison.get(), analytical,
+                                             tractions, plain.node_stresses, "plain_spr_",
+                                             cycle_record);
+        uncounted_wall_time += plain_timer.wall_time();
       }
     report_effectivity(pcout, cycle_record);
   }
@@ -375,7 +380,7 @@ namespace contact_fem
     triangulation.prepare_coarsening_and_refinement();
     transfer.prepare_for_coarsening_and_refinement(ghosted_solution);
     triangulation.execute_coarsening_and_refinement();
-    distribute_dofs();
+    distribute_dofs(dof_handler, fe, dof_renumbering_seed);
     TrilinosWrappers::MPI::Vector transferred(dof_handler.locally_owned_dofs(), comm);
     transfer.interpolate(transferred);
     transferred_solution = std::make_unique<TrilinosWrappers::MPI::Vector>(transferred);

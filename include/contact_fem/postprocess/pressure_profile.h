@@ -9,9 +9,12 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace contact_fem
 {
+  struct AnalyticalSolution;
+
   /**
    * Columns: the deformed position (x in 2D, x,y,z in 3D), pressure,
    * hertz_pressure (@p exact at the deformed position, 0 without it), gap
@@ -27,6 +30,15 @@ namespace contact_fem
   pressure_profile_csv(const ContactState<dim>                         &state,
                        const ModelFrame<dim>                           &frame,
                        const std::function<double(const Point<dim> &)> &exact);
+
+  /// Relative L2 error (pressure_l2_relative_error()) of a pressure per
+  /// interface node against Analytical solution/Reference pressure profile,
+  /// whose coordinate is x (2D) or the distance from the axis (3D).
+  template <int dim>
+  double
+  reference_pressure_error(const AnalyticalSolution  &analytical,
+                           const ContactState<dim>   &state,
+                           const std::vector<double> &pressure);
 } // namespace contact_fem
 
 #endif

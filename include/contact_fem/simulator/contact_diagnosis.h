@@ -10,6 +10,7 @@
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/contact/contact_parameters.h>
 #include <contact_fem/contact/formulations/contact_formulation.h>
+#include <contact_fem/core/json.h>
 #include <contact_fem/geometry/scene.h>
 #include <contact_fem/material/material.h>
 #include <contact_fem/simulator/scene_parameters.h>
@@ -63,6 +64,10 @@ namespace contact_fem
     /// a Poisson's ratio near -1 or 0.5), or "".
     std::string
     precision_limits() const;
+    /// precision_limits() as the hint of a failure message: " Likely
+    /// cause: ...", or "".
+    std::string
+    precision_hint() const;
     /// The stiffness ratio part of precision_limits().
     std::string
     stiffness_contrast_limit() const;
@@ -96,6 +101,22 @@ namespace contact_fem
     /// of its master side (the largest of each); 0 without master faces.
     double
     slave_stiffness_ratio(const unsigned int pair) const;
+    /// The warnings printed before the first solve, each a sentence: models
+    /// beyond double precision, a load at round-off at @p end_time,
+    /// Poisson's ratios where elements of @p degree lock without B-bar
+    /// (@p b_bar: it is on), a slave side much stiffer than its master.
+    std::vector<std::string>
+    modelling_warnings(const unsigned int degree, const bool b_bar, const double end_time) const;
+    /// The warning of a cycle whose @p reaction record (its relative
+    /// imbalance) at @p time does not balance the load, with its likely
+    /// cause; "" if it balances.
+    std::string
+    balance_warning(const Json &reaction, const double time) const;
+    /// Why a converged state whose "contact" record @p contact has an
+    /// active node in tension is no result (its active set was decided by
+    /// rounding); "" if every active node is in compression.
+    std::string
+    tension_failure(const Json &contact) const;
 
   private:
     /// The integral of the outward normal over boundary @p id. Collective.

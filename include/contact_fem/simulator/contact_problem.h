@@ -28,6 +28,7 @@
 #include <contact_fem/postprocess/convergence_table.h>
 #include <contact_fem/postprocess/output_files.h>
 #include <contact_fem/simulator/contact_diagnosis.h>
+#include <contact_fem/simulator/dof_setup.h>
 #include <contact_fem/simulator/input_checks.h>
 #include <contact_fem/simulator/newton_failure.h>
 #include <contact_fem/simulator/search_control.h>
@@ -42,7 +43,8 @@
 #include <contact_fem/material/volumetric_projection.h>
 #include <contact_fem/postprocess/analytical_comparison.h>
 #include <contact_fem/postprocess/checkerboard.h>
-#include <contact_fem/postprocess/vtu_output.h>
+#include <contact_fem/postprocess/postprocessor.h>
+#include <contact_fem/postprocess/run_log.h>
 
 #include <cmath>
 #include <fstream>
@@ -55,41 +57,7 @@ namespace contact_fem
   using namespace dealii;
 
   template <int dim>
-  struct ContactNodeTraction;
-  template <int dim>
   class SolutionChecks;
-
-  /// An output stream that writes to the console and, once attached, to a log file.
-  class TeeStream : public std::ostream
-  {
-  public:
-    explicit TeeStream(std::ostream &console);
-    /// Also write to @p file from now on.
-    void
-    attach(std::ostream &file);
-    /// Whether writing to the file failed (it is then no longer written;
-    /// the console goes on).
-    bool
-    file_failed() const;
-
-  private:
-    class Buffer : public std::streambuf
-    {
-    public:
-      std::streambuf *first = nullptr, *second = nullptr;
-      bool            file_failed = false;
-
-    protected:
-      int
-      overflow(int c) override;
-      int
-      sync() override;
-
-    private:
-      void
-      drop_file();
-    } buffer;
-  };
 
   /**
    * Solves one scene: builds the mesh, steps the load, solves each step with
@@ -154,35 +122,14 @@ namespace contact_fem
     run_cycles(Json &cycles, const Timer &total_timer);
     void
     setup_dofs();
-    /// Distributes the DoFs on the current mesh, in a random order of each
-    /// rank's own DoFs if Finite element/DoF renumbering seed is not 0.
-    void
-    distribute_dofs();
     void
     compute_cell_matrices();
     void
     compute_cell_loads(const double time);
-    /// The dim DoFs of the vertex @p point of its body, if a non-artificial
-    /// cell of this rank has it (else empty); throws naming @p key if no rank
-    /// has it. Collective.
-    std::vector<types::global_dof_index>
-    vertex_dofs(const BodyPoint &point, const std::string &key) const;
     /// Finds the DoFs of the "Fixed points" and of the displacement probes on
     /// this mesh; throws if a point is not a vertex of its body.
     void
     locate_fixed_points();
-    void
-    make_dirichlet_constraints(const double time);
-    /// Prints warnings for locking-prone Poisson's ratios and for a slave
-    /// side much stiffer than its master.
-    void
-    warn_about_modelling_choices() const;
-    /// The wall time of each timer section of the cycle (summary.json).
-    Json
-    cycle_timing() const;
-    /// Prints the wall time of the cycle and of its timer sections.
-    void
-    print_cycle_timing(const double wall, const double cumulative) const;
     /// The summary status of a run whose last cycle converged.
     std::string
     converged_status() const;
@@ -198,11 +145,6 @@ namespace contact_fem
     /// it in the first cycle that gives the kind (WarningLog).
     void
     warn(const std::string &kind, const std::string &text, Json &cycle_record);
-    /// The largest change of a prescribed displacement from the current
-    /// solution to the values at the present time (before they are
-    /// distributed): a lower bound of the motion of the step. Collective.
-    double
-    prescribed_increment() const;
     void
     make_sparsity_pattern();
     void
@@ -247,19 +189,8 @@ namespace contact_fem
     /// outran it, recovers the multipliers and updates the active set.
     ContactUpdate
     update_contact(const unsigned int iteration);
-    /// " Likely cause: ..." when a precision limit applies, else empty.
-    std::string
-    precision_hint() const;
     void
     assemble_system();
-    /// Records the contact sets after @p iteration and throws a
-    /// NewtonFailure (splittable) when they repeat those of an earlier
-    /// iteration although they changed: the iteration cycles.
-    void
-    check_for_cycling(const std::string             &at,
-                      const unsigned int             iteration,
-                      const unsigned int             changes,
-                      std::vector<std::vector<int>> &sets_of_iteration) const;
 
     /// Whether every cycle solves the whole load path from the unloaded
     /// state: with a formulation whose answer depends on the path.
@@ -269,12 +200,6 @@ namespace contact_fem
       return contact && contact->path_dependent();
     }
 
-    /// Adds a cell's matrix and load when the test space differs from the
-    /// trial space (rows by test_constraints, columns by constraints).
-    void
-    distribute_unsymmetric(const FullMatrix<double>                   &K,
-                           const Vector<double>                       &load,
-                           const std::vector<types::global_dof_index> &dofs);
 
     void
     solve_linear_system(const double newton_residual_target);
@@ -290,16 +215,6 @@ namespace contact_fem
     // --- adaptivity (contact_problem_refinement.cc)
     void
     estimate_error(Json &cycle_record);
-    /// Records and prints how far the traction of the recovered stress at
-    /// the paired slave nodes (@p node_stresses at @p nodes, the paired
-    /// interface->slave_nodes in their order) is from the exact pressure
-    /// (Hertz, reference profile) and from zero shear; keys prefixed with
-    /// @p prefix.
-    void
-    report_recovered_tractions(const std::vector<ContactNodeTraction<dim>> &nodes,
-                               const std::vector<SymmetricTensor<2, dim>>  &node_stresses,
-                               const std::string                           &prefix,
-                               Json                                        &cycle_record) const;
     /// Marks and refines; false if the mesh is kept (nothing to refine).
     bool
     refine_mesh();
@@ -350,6 +265,13 @@ namespace contact_fem
     /// and restoring the last converged state; records the steps.
     LoadPath
     step_the_load(const unsigned int cycle, Json &cycle_record);
+    /// What the prescribed displacements are made of (dof_setup.h).
+    DirichletInputs<dim>
+    dirichlet_inputs()
+    {
+      return {*mapping,         dof_handler,         scene.frame,      boundary_conditions,
+              fixed_point_dofs, hanging_constraints, inclined_supports};
+    }
     /// The checks of the parsed input (input_checks.h).
     InputChecks<dim>
     input_checks() const
@@ -366,69 +288,33 @@ namespace contact_fem
                                     newton_parameters, dof_handler, *mapping, interface.get(),
                                     contact.get(), most_null_pivots});
     }
-    /// Warns and records when the reactions do not balance the load.
-    void
-    check_reaction_balance(const Json &reaction, Json &cycle_record);
-    /// Warns about Poisson's ratios and loads beyond double precision.
-    void
-    warn_about_precision_limits() const;
     // --- results (contact_output.cc)
-    Json
-    contact_results() const;
-    Json
-    reaction_results() const;
     /// The converged contact state that results read (with contact).
     ContactState<dim>
     contact_state() const
     {
       return {*interface, *contact, interface_displacement};
     }
-    /// Relative L2 error of a pressure per interface node against Analytical
-    /// solution/Reference pressure profile (pressure_l2_relative_error()).
-    double
-    reference_pressure_error(const std::vector<double> &pressure) const;
-    /// Prints and returns the displacements at Output/Displacement probes.
-    Json
-    probe_results() const;
-    /// The displacement components at the probes, probe by probe (the same
-    /// on every rank). Collective.
+    /// The converged state of load step @p step (0: the cycle's results)
+    /// as the postprocessors read it; @p state is contact_state() or null,
+    /// @p contact_force is interface_contact_force().
+    RunView<dim>
+    run_view(const unsigned int         step,
+             const ContactState<dim>   *state,
+             const std::vector<double> &contact_force) const;
+    /// The contact force at each interface DoF of the current state (empty
+    /// without contact).
     std::vector<double>
-    probe_displacements() const;
-    /// The converged solution on the current mesh, as the output reads it.
-    SolutionView<dim>
-    solution_view(const ContactState<dim> *contact_state) const
-    {
-      return {dof_handler,  *mapping, ghosted_solution, materials, volumetric_projection.get(),
-              contact_state};
-    }
+    interface_contact_force() const;
+    /// Calls @p hook on every postprocessor in turn and prints what each
+    /// writes to its stream.
     void
-    write_pressure_profile() const;
-    /// The reactions and pair forces of the converged load step @p step
-    /// (postprocess/forces.h): printed, into @p step_record and as a row
-    /// of forces.csv.
-    void
-    record_forces(const unsigned int step, const double time, Json &step_record);
-    /// Prints the contact results and the balance of the last load step.
-    void
-    print_results(const Json &contact_json, const Json &reaction, const Json &hertz) const;
+    postprocess(const std::function<void(Postprocessor<dim> &, std::ostream &)> &hook);
     void
     write_summary(const Json &cycles, const double wall_time, const std::string &status) const;
-    /// Prepares the output directory (prepare_output_directory()) and opens
-    /// log.txt; throws naming the path if either fails. Collective.
-    OutputDirectoryReport
-    open_output_directory();
-    /// Says how many files of an earlier run the preparation removed.
-    void
-    report_earlier_outputs(const OutputDirectoryReport &report);
-    /// Throws naming @p path unless @p ok on every rank. Collective.
-    void
-    check_written(const std::string &path, const bool ok) const;
-    Tensor<1, dim>
-    applied_load(const double time) const;
 
     MPI_Comm           comm;
-    std::ofstream      log_file;
-    TeeStream          console;
+    RunLog             log; ///< the console and log.txt
     ConditionalOStream pcout;
 
     std::string            scene_name;
@@ -463,7 +349,7 @@ namespace contact_fem
     InclinedSupports<dim>                inclined_supports; ///< Boundary conditions/Rollers
     std::vector<types::global_dof_index> fixed_point_dofs;  ///< locally relevant
     /// Per Output/Displacement probes entry: its vertex DoFs (see
-    /// vertex_dofs()).
+    /// vertex_dofs(), dof_setup.h).
     std::vector<std::vector<types::global_dof_index>> probe_dofs;
     AffineConstraints<double>                         constraints;
     /// The constraints of the test space when the contact formulation's
@@ -480,7 +366,6 @@ namespace contact_fem
     /// Wall time of the multigrid set-ups of this cycle, part of "Solve:
     /// linear".
     double                        multigrid_setup_seconds = 0.;
-    static constexpr const char  *multigrid_setup_section = "Solve: multigrid setup";
     TrilinosWrappers::MPI::Vector system_rhs;
     TrilinosWrappers::MPI::Vector solution;         ///< owned
     TrilinosWrappers::MPI::Vector ghosted_solution; ///< locally relevant
@@ -500,20 +385,17 @@ namespace contact_fem
     std::unique_ptr<MeshTying<dim>> tying;
     /// The search of the interface over the load steps (with contact).
     std::unique_ptr<SearchControl<dim>> search;
-    /// A point names a vertex closer than this times the cell's diameter
-    /// (far above the digits a user types, far below the distance of two
-    /// vertices of a valid cell).
-    static constexpr double vertex_match_tolerance = 1e-3;
     /// A direct solve whose residual exceeds this fraction of the
     /// right-hand side has met a singular matrix.
     static constexpr double singular_residual_ratio = 1e-3;
 
     std::unique_ptr<TimerOutput> timer; ///< made once the input is valid
     double                       current_time = 0.;
-    /// The VTU/PVD files (with Output/Write VTU), made with the output directory.
-    std::unique_ptr<VtuOutput<dim>> vtu_output;
-    Vector<float>                   indicators; ///< of the last estimate
-    double relative_estimate = 0.;              ///< eta / |u|_E of the last SPR estimate
+    /// The outputs the scene wants (postprocessor.h), made with the output
+    /// directory.
+    std::vector<std::unique_ptr<Postprocessor<dim>>> postprocessors;
+    Vector<float>                                    indicators; ///< of the last estimate
+    double relative_estimate = 0.; ///< eta / |u|_E of the last SPR estimate
     /// The linear solver can still answer for the current load step's last
     /// Newton system (LinearSolver::solve_again()).
     bool factorisation_current = false;
@@ -530,7 +412,7 @@ namespace contact_fem
     std::string memory_warning;
     /// Set by the first solve_load_step() (started_solving()).
     bool solving = false;
-    /// A cycle's reactions did not balance its load (check_reaction_balance()).
+    /// A cycle's reactions did not balance its load (ContactDiagnosis::balance_warning()).
     bool balance_failed = false;
     /// A cycle converged beyond ModelRange (check_converged_solution()).
     bool outside_model_range = false;
@@ -538,9 +420,6 @@ namespace contact_fem
     WarningLog warnings;
     /// The comparison with Analytical solution/Type; null for none.
     std::unique_ptr<AnalyticalComparison<dim>> comparison;
-    /// forces.csv: its header and the rows of the run so far.
-    std::string              force_history_header;
-    std::vector<std::string> force_history;
     /// The materials, boundary conditions and pairs as the run takes them
     /// (apply_scene_settings()), printed at its start.
     std::string effective_input;

@@ -12,14 +12,24 @@ namespace contact_fem
 {
   template <int dim>
   AlmFrictional<dim>::AlmFrictional(ParameterHandler &prm, const FrictionParameters &friction)
-    : Base(friction,
-           FrictionlessFormulation<dim>::Parameters::parse_for_exact_gap(prm, "alm frictional"))
+    : AlmFrictional(friction,
+                    FrictionlessFormulation<dim>::Parameters::parse_for_exact_gap(prm,
+                                                                                  "alm frictional"),
+                    "alm")
+  {}
+
+  template <int dim>
+  AlmFrictional<dim>::AlmFrictional(const FrictionParameters &friction,
+                                    const Parameters         &parameters,
+                                    const std::string        &name)
+    : Base(friction, parameters)
   {
     AssertThrow(!laws.empty(),
-                ExcMessage("Contact/Friction: 'alm frictional' needs a frictional law, e.g. "
+                ExcMessage("Contact/Friction: '" + name +
+                           " frictional' needs a frictional law, e.g. "
                            "'coulomb 0.2' or 'tresca 0.01' (or per pair '3: coulomb 0.2'); "
-                           "for frictionless contact use Contact/Formulation = alm "
-                           "frictionless."));
+                           "for frictionless contact use Contact/Formulation = " +
+                           name + " frictionless."));
   }
 
   template <int dim>
@@ -46,17 +56,25 @@ namespace contact_fem
   template <int dim>
   TangentialVector<dim>
   AlmFrictional<dim>::stick_or_slip(const SlaveNode             &s,
-                                    const double                 augmented_pressure,
+                                    const double                 p_bound,
                                     const TangentialVector<dim> &xi) const
   {
-    const TangentialVector<dim> trial = tangential[s.node] - this->penalty[s.pair] * xi;
-    const double                size  = magnitude<dim>(trial);
+    return decide_on_trial(s, p_bound, tangential[s.node] - this->penalty[s.pair] * xi);
+  }
+
+  template <int dim>
+  TangentialVector<dim>
+  AlmFrictional<dim>::decide_on_trial(const SlaveNode             &s,
+                                      const double                 p_bound,
+                                      const TangentialVector<dim> &trial) const
+  {
+    const double size = magnitude<dim>(trial);
     // For zero only a law without friction slips: its direction changes
     // nothing.
     const TangentialVector<dim> direction = unit_direction<dim>(trial, size);
     if (pure_slip)
       return direction;
-    const double bound = laws[s.pair]->threshold(std::max(augmented_pressure, 0.));
+    const double bound = laws[s.pair]->threshold(std::max(p_bound, 0.));
     // A node with neither traction nor slip (it just touched) sticks: its
     // slip direction is undefined, and any guess would push it sideways.
     if (size == 0. && !frictionless_law(s))
@@ -99,7 +117,7 @@ namespace contact_fem
   void
   AlmFrictional<dim>::set_direction(const ContactInterface<dim> &interface,
                                     const SlaveNode             &s,
-                                    const double                 augmented_pressure,
+                                    const double                 p_bound,
                                     const std::vector<double>   &u)
   {
     if (!carries_friction(interface, s))
@@ -109,7 +127,7 @@ namespace contact_fem
         return;
       }
     const TangentialVector<dim> xi = slip_increment(interface, s, u);
-    sets.direction[s.node]         = stick_or_slip(s, augmented_pressure, xi);
+    sets.direction[s.node]         = stick_or_slip(s, p_bound, xi);
     cone_stiffness[s.node]         = slip_cone_stiffness(s, xi);
   }
 
@@ -203,7 +221,7 @@ namespace contact_fem
     for (const auto &s : interface.slave_nodes)
       {
         const double g = s.paired ? interface.gap(s, u) : 0.;
-        active[s.node] = s.paired && this->starts_active(s, g, first_step) &&
+        active[s.node] = s.paired && decides_active(s, g, true, first_step) &&
                          this->eliminated_component(interface, s) < dim;
         if (!active[s.node])
           {
@@ -214,7 +232,7 @@ namespace contact_fem
             sets.direction[s.node]      = TangentialVector<dim>();
             continue;
           }
-        set_direction(interface, s, pressure[s.node] - this->penalty[s.pair] * g, u);
+        set_direction(interface, s, bound_pressure(s, g), u);
       }
     this->deactivate_master_nodes(interface);
     for (unsigned int n = 0; n < interface.nodes.size(); ++n)
@@ -551,8 +569,9 @@ namespace contact_fem
       {
         if (!s.paired)
           continue;
-        const double augmented  = pressure[s.node] - this->penalty[s.pair] * interface.gap(s, u);
-        const bool   now_active = augmented > 0. && this->eliminated_component(interface, s) < dim;
+        const double g = interface.gap(s, u);
+        const bool   now_active =
+          decides_active(s, g, false, false) && this->eliminated_component(interface, s) < dim;
         if (now_active != active[s.node])
           ++changes;
         if (!now_active)
@@ -568,7 +587,7 @@ namespace contact_fem
         const bool                  was_active = active[s.node];
         const TangentialVector<dim> old        = sets.direction[s.node];
         active[s.node]                         = true;
-        set_direction(interface, s, augmented, u);
+        set_direction(interface, s, bound_pressure(s, g), u);
         // Under a law without friction the direction changes nothing.
         if (was_active && stick_slip_changed<dim>(old, sets.direction[s.node]) &&
             !frictionless_law(s))

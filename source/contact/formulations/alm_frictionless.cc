@@ -13,6 +13,21 @@ namespace contact_fem
   {}
 
   template <int dim>
+  AlmFrictionless<dim>::AlmFrictionless(const Parameters &parameters)
+    : FrictionlessFormulation<dim>(parameters)
+  {}
+
+  template <int dim>
+  bool
+  AlmFrictionless<dim>::decides_active(const typename ContactInterface<dim>::SlaveNode &s,
+                                       const double                                     g,
+                                       const bool at_step_start,
+                                       const bool first_step) const
+  {
+    return this->augmented_rule(s, g, at_step_start, first_step);
+  }
+
+  template <int dim>
   void
   AlmFrictionless<dim>::initialize(const ContactInterface<dim> &interface)
   {
@@ -40,7 +55,7 @@ namespace contact_fem
           }
         const double g = interface.gap(s, u);
         active[s.node] =
-          this->starts_active(s, g, first_step) && this->eliminated_component(interface, s) < dim;
+          decides_active(s, g, true, first_step) && this->eliminated_component(interface, s) < dim;
         if (!active[s.node])
           {
             released_pressure[s.node] = pressure[s.node];
@@ -91,8 +106,8 @@ namespace contact_fem
       {
         if (!s.paired)
           continue;
-        const double augmented  = pressure[s.node] - this->penalty[s.pair] * interface.gap(s, u);
-        const bool   now_active = augmented > 0. && this->eliminated_component(interface, s) < dim;
+        const bool now_active = decides_active(s, interface.gap(s, u), false, false) &&
+                                this->eliminated_component(interface, s) < dim;
         if (now_active != active[s.node])
           ++changes;
         if (!now_active)

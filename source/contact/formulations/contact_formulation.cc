@@ -126,7 +126,22 @@ namespace contact_fem
                       "increment of the load step, return mapping to the slip bound "
                       "of the law of Contact/Friction: a sticking node slips "
                       "elastically by t / eps_t; unsymmetric system under Coulomb "
-                      "slip; 2D and 3D, small sliding.");
+                      "slip; 2D and 3D, small sliding. "
+                      "'mpc frictionless' = multipoint constraints: the normal "
+                      "displacement of an active slave node is eliminated through "
+                      "the dual mortar relation n.u_s = n.(D^-1 M u_m) + g (the "
+                      "constraint of 'alm frictionless'); the active set needs no "
+                      "penalty (Contact/Penalty must stay auto): a node is released "
+                      "when its recovered reaction pulls, an inactive node that "
+                      "penetrates becomes active. Same converged answer as 'alm "
+                      "frictionless'. 'mpc frictional' = 'mpc frictionless' plus "
+                      "the law of Contact/Friction: on a stick node every component "
+                      "is eliminated (u_s = D^-1 M u_m + offsets), on a slip node "
+                      "the normal one, its tangential traction T(p) (Coulomb mu p) "
+                      "opposing the slip (not slip treated as frictionless); a "
+                      "stick node slips when its recovered tangential traction "
+                      "reaches T(p), a slip node sticks when its slip turns back; "
+                      "2D and 3D, small sliding; the answers of 'alm frictional'.");
     prm.leave_subsection();
     FrictionlessFormulation<dim>::Parameters::declare_parameters(prm);
     FrictionParameters::declare_parameters(prm);

@@ -94,6 +94,20 @@ namespace contact_fem
   }
 
   template <int dim>
+  typename FrictionlessFormulation<dim>::Parameters
+  FrictionlessFormulation<dim>::Parameters::parse_without_penalty(ParameterHandler  &prm,
+                                                                  const std::string &formulation)
+  {
+    const Parameters parameters = parse_for_exact_gap(prm, formulation);
+    AssertThrow(parameters.penalty == 0.,
+                ExcMessage("Contact/Penalty is set, but Contact/Formulation = " + formulation +
+                           " has no penalty: its active set comes from the recovered "
+                           "reactions (released in tension) and the gap (activated on "
+                           "penetration). Leave Contact/Penalty = auto."));
+    return parameters;
+  }
+
+  template <int dim>
   FrictionlessFormulation<dim>::FrictionlessFormulation(const Parameters &parameters)
     : parameters(parameters)
   {}

@@ -64,7 +64,8 @@ namespace contact_fem
   public:
     using typename FrictionlessFormulation<dim>::Residuals;
     using typename FrictionlessFormulation<dim>::State;
-    using SlaveNode = typename ContactInterface<dim>::SlaveNode;
+    using Parameters = typename FrictionlessFormulation<dim>::Parameters;
+    using SlaveNode  = typename ContactInterface<dim>::SlaveNode;
 
     /// Reads the shared normal keys; @p friction: the laws and Pure slip.
     AlmFrictional(ParameterHandler &prm, const FrictionParameters &friction);
@@ -150,6 +151,59 @@ namespace contact_fem
                   const Json                  &reaction,
                   std::ostream                &out) const override;
 
+  protected:
+    /// For a formulation that shares the constraints and only decides the
+    /// sets otherwise (mpc frictional); @p name for the messages.
+    AlmFrictional(const FrictionParameters &friction,
+                  const Parameters         &parameters,
+                  const std::string        &name);
+
+    /// Whether paired slave node @p s is active at gap @p g (see
+    /// FrictionlessFormulation::augmented_rule()).
+    virtual bool
+    decides_active(const SlaveNode &s,
+                   const double     g,
+                   const bool       at_step_start,
+                   const bool       first_step) const
+    {
+      return this->augmented_rule(s, g, at_step_start, first_step);
+    }
+
+    /// The pressure of the slip bound of active node @p s at gap @p g in
+    /// the stick/slip decision: the augmented lambda - eps g.
+    virtual double
+    bound_pressure(const SlaveNode &s, const double g) const
+    {
+      return this->pressure[s.node] - this->penalty[s.pair] * g;
+    }
+
+    /// The stick/slip decision of an active frictional node with slip @p xi
+    /// and the pressure @p p_bound of its slip bound: zero = stick,
+    /// else the unit direction d of the trial traction t - c xi (2D: +1 /
+    /// -1).
+    virtual TangentialVector<dim>
+    stick_or_slip(const SlaveNode &s, const double p_bound, const TangentialVector<dim> &xi) const;
+
+    /// The stick/slip decision on the trial traction @p trial against the
+    /// bound T(@p p_bound): stick inside it (or with neither traction nor
+    /// slip, or when the trial turns against the slip), else slip along
+    /// the trial.
+    TangentialVector<dim>
+    decide_on_trial(const SlaveNode             &s,
+                    const double                 p_bound,
+                    const TangentialVector<dim> &trial) const;
+
+    /// beta of the cone term of active node @p s (0 unless it slips under
+    /// a law with friction in 3D) at slip @p xi.
+    virtual double
+    slip_cone_stiffness(const SlaveNode &s, const TangentialVector<dim> &xi) const;
+
+    using Base::frictionless_law;
+    using Base::laws;
+    using Base::pure_slip;
+    using Base::sets;
+    using Base::tangential;
+
   private:
     /// The friction cone check: slip nodes on the bound (|t - sigma T(p)|),
     /// stick nodes inside it (|t| - T(p)), relative to the largest bound.
@@ -193,24 +247,11 @@ namespace contact_fem
     unsigned int
     slip_eliminated_component(const SlaveNode &s) const;
 
-    /// The stick/slip decision of an active frictional node with slip @p xi:
-    /// zero = stick, else the unit direction d of the trial traction (2D:
-    /// +1 / -1).
-    TangentialVector<dim>
-    stick_or_slip(const SlaveNode             &s,
-                  const double                 augmented_pressure,
-                  const TangentialVector<dim> &xi) const;
-
-    /// beta of the cone term of active node @p s (0 unless it slips under
-    /// a law with friction in 3D) at slip @p xi.
-    double
-    slip_cone_stiffness(const SlaveNode &s, const TangentialVector<dim> &xi) const;
-
     /// The stick/slip set and the cone term of active node @p s at @p u.
     void
     set_direction(const ContactInterface<dim> &interface,
                   const SlaveNode             &s,
-                  const double                 augmented_pressure,
+                  const double                 p_bound,
                   const std::vector<double>   &u);
 
     /// u_j = sum_l M_jl / D_j u_l + offsets: the gap and the stick condition
@@ -231,16 +272,11 @@ namespace contact_fem
                         const bool                   test) const;
 
     using Base::converged_displacement;
-    using Base::frictionless_law;
     using Base::last_step_slip;
     using Base::last_stick_slip_changes;
-    using Base::laws;
     using Base::n_slip;
     using Base::n_stick;
-    using Base::pure_slip;
-    using Base::sets;
     using Base::slip_history;
-    using Base::tangential;
 
     /// Whether any node slips under a law with friction: only then do its
     /// test functions leave the trial space (symmetric()).

@@ -62,6 +62,21 @@ namespace contact_fem
     Residuals
     residuals(const ContactInterface<dim> &interface, const std::vector<double> &u) const override;
 
+  protected:
+    /// For a formulation that shares the exact gap constraints and only
+    /// decides the active set otherwise (mpc frictionless).
+    explicit AlmFrictionless(const Parameters &parameters);
+
+    /// Whether paired slave node @p s is active at gap @p g, from the
+    /// current pressures and active set: lambda - eps g > 0, and at the
+    /// start of a step (@p at_step_start) on its first step of a mesh
+    /// (@p first_step) also about to touch.
+    virtual bool
+    decides_active(const typename ContactInterface<dim>::SlaveNode &s,
+                   const double                                     g,
+                   const bool                                       at_step_start,
+                   const bool                                       first_step) const;
+
   private:
     /// Multipliers of the nodes released in the last update (for the
     /// residual).

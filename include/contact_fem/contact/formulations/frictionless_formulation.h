@@ -47,6 +47,11 @@ namespace contact_fem
       /// since the penalty only scales the active-set test there.
       static Parameters
       parse_for_exact_gap(ParameterHandler &prm, const std::string &formulation);
+
+      /// The keys of an exact-gap formulation without a penalty (the
+      /// multipoint-constraint ones): Contact/Penalty is refused too.
+      static Parameters
+      parse_without_penalty(ParameterHandler &prm, const std::string &formulation);
     };
 
     explicit FrictionlessFormulation(const Parameters &parameters);
@@ -105,6 +110,36 @@ namespace contact_fem
     {
       return pressure[s.node] - penalty[s.pair] * g > 0. ||
              (first_step && g <= parameters.active_check_factor * s.size);
+    }
+
+    /// The active-set rule of the augmented Lagrangian for paired slave
+    /// node @p s at gap @p g: lambda_j - eps g_j > 0; at the start of a
+    /// step (@p at_step_start) starts_active().
+    bool
+    augmented_rule(const typename ContactInterface<dim>::SlaveNode &s,
+                   const double                                     g,
+                   const bool                                       at_step_start,
+                   const bool                                       first_step) const
+    {
+      return at_step_start ? starts_active(s, g, first_step) :
+                             pressure[s.node] - penalty[s.pair] * g > 0.;
+    }
+
+    /// The master-slave (multipoint-constraint) rule, without a penalty: an
+    /// active node stays active while its recovered pressure compresses
+    /// (an active gap is held at zero, so only the reaction can release
+    /// it), an inactive one becomes active when it penetrates; at the start
+    /// of a step also, on the first step of a mesh, when about to touch.
+    bool
+    reaction_rule(const typename ContactInterface<dim>::SlaveNode &s,
+                  const double                                     g,
+                  const bool                                       at_step_start,
+                  const bool                                       first_step) const
+    {
+      const bool compressed = active[s.node] && pressure[s.node] > 0.;
+      if (at_step_start)
+        return compressed || g < 0. || (first_step && g <= parameters.active_check_factor * s.size);
+      return active[s.node] ? compressed : g < 0.;
     }
 
     /// Interface nodes that are only master nodes are never active.
