@@ -3,6 +3,52 @@
 
 namespace contact_fem
 {
+  namespace
+  {
+    std::string
+    pair_text(const std::string &slave, const std::string &master)
+    {
+      return "'" + slave + ": " + master + "'";
+    }
+
+    /// The pairs of Contact/Tied pairs (@p text), checked against each
+    /// other and against the contact @p pairs: a tied surface belongs to
+    /// one pair only.
+    std::vector<ContactPair>
+    parse_tied_pairs(const std::string &text, const std::vector<ContactPair> &pairs)
+    {
+      const std::string        key = "Contact/Tied pairs";
+      std::vector<ContactPair> tied;
+      for (const auto &[s, m] : split_key_value_list(text, key))
+        {
+          const ContactPair pair{parse_boundary_id(s, key), parse_boundary_id(m, key)};
+          AssertThrow(pair.slave != pair.master,
+                      ExcMessage(key + ": pair " + pair_text(s, m) +
+                                 " has the same surface on both sides."));
+          // A surface of this pair in one of @p others is refused: "... in
+          // the @p what <pair>@p advice".
+          const auto refuse_shared = [&](const std::vector<ContactPair> &others,
+                                         const std::string              &what,
+                                         const std::string              &advice) {
+            for (const auto id : {pair.slave, pair.master})
+              for (const auto &other : others)
+                AssertThrow(other.slave != id && other.master != id,
+                            ExcMessage(key + ": surface " + std::to_string(id) + " of pair " +
+                                       pair_text(s, m) + " is also in the " + what + " " +
+                                       pair_text(std::to_string(other.slave),
+                                                 std::to_string(other.master)) +
+                                       advice));
+          };
+          refuse_shared(tied, "tied pair", "; a surface may be in one tied pair only.");
+          refuse_shared(pairs, "contact pair",
+                        " of Contact/Pairs; a surface is either tied or in contact: give "
+                        "the contact surface its own boundary id.");
+          tied.push_back(pair);
+        }
+      return tied;
+    }
+  } // namespace
+
   void
   ContactParameters::declare_parameters(ParameterHandler &prm)
   {
@@ -14,6 +60,18 @@ namespace contact_fem
                       "finer and softer surface." +
                         not_set_help(true),
                       true);
+    prm.declare_entry("Tied pairs", "", Patterns::Anything(),
+                      "Mesh tying: surfaces glued together as 'slave boundary id: "
+                      "master boundary id; ...' (or physical names), e.g. parts of an "
+                      "assembly meshed separately, or a fine insert in a coarse mesh. "
+                      "The two surfaces must touch (non-matching meshes, curved or "
+                      "with hanging vertices are fine); every slave node is tied to "
+                      "the master by the dual-mortar coupling u_s = D^-1 M u_m in every "
+                      "component, imposed as constraints, and the tying traction is "
+                      "reported. A tied surface may be in no other tied or contact "
+                      "pair. Empty: no tying (no tying code runs). Independent of "
+                      "Pairs: a scene may have both, or only tied pairs (then no "
+                      "contact formulation runs). See doc/mesh_tying.md.");
     prm.declare_entry("Allow loss of contact", "false", Patterns::Bool(),
                       "If false, a converged step without any active contact node "
                       "stops the run with a 'no contact' diagnosis (the load pulls "
@@ -25,7 +83,8 @@ namespace contact_fem
                       "displacements and the previous step, and enlarged during "
                       "Newton whenever an iterate moves farther). Correctness does "
                       "not depend on it: after convergence every slave node is "
-                      "checked against the whole master surface.");
+                      "checked against the whole master surface. Also the reach of "
+                      "the one search of the tied pairs.");
     prm.declare_entry("Kinematics", "small", Patterns::Selection("small|updated"),
                       "'small': the mortar operators (pairing, normals, D, M) are "
                       "built on the reference configuration and the gap is linear in "
@@ -67,6 +126,7 @@ namespace contact_fem
                                  "one pair only and may not be a master elsewhere."));
         pairs.push_back(pair);
       }
+    tied_pairs = parse_tied_pairs(prm.get("Tied pairs"), pairs);
     search_factor         = prm.get_double("Search factor");
     updated_kinematics    = prm.get("Kinematics") == "updated";
     penetration_tolerance = prm.get_double("Penetration tolerance");

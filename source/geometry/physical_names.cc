@@ -117,6 +117,7 @@ namespace contact_fem
     replace_list("Boundary conditions", "Rollers", false, ';');
     replace("Output", "Displacement probes", true, '@', false);
     replace("Contact", "Pairs", false, ':', true);
+    replace("Contact", "Tied pairs", false, ':', true);
     replace("Geometry", "Manifolds", false, ':', false);
     replace_list("Materials", "Material ids", true, ',');
   }

@@ -331,15 +331,27 @@ namespace contact_fem
         search = std::make_unique<SearchControl<dim>>(*interface, *contact, contact_parameters,
                                                       *timer, pcout);
       }
-    // Contact constraints couple slave DoFs to master DoFs anywhere: every
-    // rank may write to the rows and entries of all interface DoFs.
-    writable_dofs = relevant_dofs;
-    if (interface)
+    tying.reset();
+    if (!contact_parameters.tied_pairs.empty())
       {
-        IndexSet interface_set(dof_handler.n_dofs());
-        interface_set.add_indices(interface->dofs().begin(), interface->dofs().end());
-        writable_dofs.add_indices(interface_set);
+        TimerOutput::Scope t(*timer, "Setup: mesh tying");
+        tying = std::make_unique<MeshTying<dim>>();
+        tying->initialize(*mapping, dof_handler, contact_parameters.tied_pairs,
+                          dirichlet_constraints, hanging_constraints, materials,
+                          contact_parameters.search_factor, comm);
       }
+    // Contact and tying constraints couple slave DoFs to master DoFs
+    // anywhere: every rank may write to the rows and entries of all
+    // interface DoFs.
+    writable_dofs = relevant_dofs;
+    for (const auto *dofs : {interface ? &interface->dofs() : nullptr,
+                             tying ? &tying->dofs() : nullptr})
+      if (dofs)
+        {
+          IndexSet interface_set(dof_handler.n_dofs());
+          interface_set.add_indices(dofs->begin(), dofs->end());
+          writable_dofs.add_indices(interface_set);
+        }
     system_rhs.reinit(owned_dofs, writable_dofs, comm, true);
     residual.reinit(owned_dofs, writable_dofs, comm, true);
     select_linear_solver();
@@ -514,6 +526,8 @@ namespace contact_fem
     AffineConstraints<double> candidates;
     candidates.reinit(writable_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, candidates);
+    if (tying)
+      tying->add_constraints(candidates);
     if (contact)
       contact->add_constraints(*interface, interface_fixed_values, candidates, true);
     candidates.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins, true);
@@ -561,6 +575,8 @@ namespace contact_fem
     constraints.clear();
     constraints.reinit(writable_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    if (tying)
+      tying->add_constraints(constraints);
     if (contact)
       contact->add_constraints(*interface, interface_fixed_values, constraints, false);
     constraints.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins, true);
@@ -570,6 +586,8 @@ namespace contact_fem
         test_constraints.clear();
         test_constraints.reinit(writable_dofs);
         DoFTools::make_hanging_node_constraints(dof_handler, test_constraints);
+        if (tying)
+          tying->add_constraints(test_constraints, true);
         contact->add_test_constraints(*interface, interface_fixed_values, test_constraints);
         test_constraints.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins,
                                true);
@@ -665,6 +683,8 @@ namespace contact_fem
           hanging_constraints.distribute_local_to_global(local_r, dofs, residual);
         }
     residual.compress(VectorOperation::add);
+    if (tying)
+      tying->condense_residual(residual, owned_dofs);
     strain_energy = Utilities::MPI::sum(local_strain, comm);
     external_work = Utilities::MPI::sum(local_work, comm);
   }
@@ -707,6 +727,12 @@ namespace contact_fem
       contact ? largest_prescribed_change(dirichlet_constraints, solution, comm) : 0.;
     dirichlet_constraints.distribute(solution);
     ghosted_solution = solution;
+    if (tying)
+      tying->set_fixed_values([this](const types::global_dof_index i) {
+        return dirichlet_constraints.is_constrained(i) ?
+                 dirichlet_constraints.get_inhomogeneity(i) :
+                 0.;
+      });
     if (contact)
       {
         interface_fixed_values = interface->gather([this](const types::global_dof_index i) {
@@ -1254,6 +1280,8 @@ namespace contact_fem
         if (n_hanging > 0)
           pcout << " and " << n_hanging << " hanging slave vertices";
       }
+    if (tying)
+      pcout << ", " << tying->n_tied_nodes() << " tied slave nodes";
     pcout << std::endl;
     // The direct solver is the quiet default; an iterative one says so, and
     // that it cannot see zero pivots.
@@ -1483,6 +1511,12 @@ namespace contact_fem
       {
         std::ostringstream text;
         comparison->print(hertz_json, text);
+        pcout << text.str();
+      }
+    if (tying)
+      {
+        std::ostringstream text;
+        cycle_record.set("tying", tying->results(text));
         pcout << text.str();
       }
     const std::unique_ptr<ContactState<dim>> state =

@@ -95,6 +95,13 @@ namespace contact_fem
         named.emplace_back("Contact/Pairs: the slave of pair '" + text + "'", pair.slave);
         named.emplace_back("Contact/Pairs: the master of pair '" + text + "'", pair.master);
       }
+    for (const auto &pair : contact_parameters.tied_pairs)
+      {
+        const std::string text = std::to_string(static_cast<unsigned int>(pair.slave)) + ": " +
+                                 std::to_string(static_cast<unsigned int>(pair.master));
+        named.emplace_back("Contact/Tied pairs: the slave of pair '" + text + "'", pair.slave);
+        named.emplace_back("Contact/Tied pairs: the master of pair '" + text + "'", pair.master);
+      }
 
     const std::vector<types::boundary_id> ids = coarse.get_boundary_ids();
     for (const auto &[key, id] : named)

@@ -230,9 +230,11 @@ namespace contact_fem
               (conditions.empty() ? std::string("none") : conditions) + "\n";
       prm.enter_subsection("Contact");
       const std::string pairs = Utilities::trim(prm.get("Pairs"));
+      const std::string tied  = Utilities::trim(prm.get("Tied pairs"));
       prm.leave_subsection();
       return text + "Contact pairs (slave: master): " +
-             (pairs.empty() ? std::string("none (no contact)") : pairs) + "\n";
+             (pairs.empty() ? std::string("none (no contact)") : pairs) + "\n" +
+             (tied.empty() ? std::string() : "Tied pairs (slave: master): " + tied + "\n");
     }
   } // namespace
 

@@ -22,6 +22,8 @@ namespace contact_fem
   struct ContactParameters
   {
     std::vector<ContactPair> pairs; ///< empty: no contact code runs
+    /// Surfaces glued by mesh tying (Tied pairs); empty: no tying code runs.
+    std::vector<ContactPair> tied_pairs;
     double                   search_factor = 3.;
     /// Mortar operators rebuilt at every load step (else once, on the
     /// reference configuration).

@@ -69,6 +69,17 @@ namespace contact_fem
     std::vector<Json>                         items;
     std::vector<std::pair<std::string, Json>> members;
   };
+
+  /// The array of the first @p n components of @p v (a vector or tensor).
+  template <typename Vector>
+  Json
+  json_array(const Vector &v, const unsigned int n)
+  {
+    Json result = Json::array();
+    for (unsigned int i = 0; i < n; ++i)
+      result.push(v[i]);
+    return result;
+  }
 } // namespace contact_fem
 
 #endif

@@ -21,6 +21,7 @@
 #include <contact_fem/solvers/rigid_body_modes.h>
 #include <contact_fem/contact/formulations/contact_formulation.h>
 #include <contact_fem/contact/contact_interface.h>
+#include <contact_fem/contact/mesh_tying.h>
 #include <contact_fem/core/json.h>
 #include <contact_fem/core/warning_log.h>
 #include <contact_fem/material/material.h>
@@ -380,6 +381,8 @@ namespace contact_fem
     std::vector<double>                      interface_fixed_values;
     std::vector<double>                      interface_residual;
     std::vector<bool>                        interface_dof_fixed;
+    /// Present only when the scene has tied pairs (Contact/Tied pairs).
+    std::unique_ptr<MeshTying<dim>> tying;
     /// The search of the interface over the load steps (with contact).
     std::unique_ptr<SearchControl<dim>> search;
     /// A direct solve whose residual exceeds this fraction of the

@@ -1,0 +1,228 @@
+// MeshTying: the tied pairs' dual-mortar coupling as affine constraints,
+// their tractions from the slave residual, and the check that the tied
+// surfaces touch.
+#include <deal.II/base/mpi.h>
+
+#include <contact_fem/contact/formulations/constraint_line.h>
+#include <contact_fem/contact/mesh_tying.h>
+#include <contact_fem/core/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace contact_fem
+{
+  namespace
+  {
+    std::string
+    pair_text(const ContactPair &pair)
+    {
+      return std::to_string(static_cast<unsigned int>(pair.slave)) + ": " +
+             std::to_string(static_cast<unsigned int>(pair.master));
+    }
+
+    /// @p value with 8 digits, or 0 below 1e-10 of @p scale (round-off).
+    std::string
+    value_text(const double value, const double scale)
+    {
+      return std::abs(value) < 1e-10 * scale ? std::string("0") : significant(value, 8);
+    }
+
+    template <int dim>
+    std::string
+    vector_text(const Tensor<1, dim> &v, const double scale)
+    {
+      std::string text = "(";
+      for (unsigned int d = 0; d < dim; ++d)
+        text += (d > 0 ? ", " : "") + value_text(v[d], scale);
+      return text + ")";
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  MeshTying<dim>::initialize(const MappingQ<dim>             &mapping,
+                             const DoFHandler<dim>           &dof_handler,
+                             const std::vector<ContactPair>  &pairs,
+                             const AffineConstraints<double> &dirichlet,
+                             const AffineConstraints<double> &hanging,
+                             const Materials<dim>            &materials,
+                             const double                     search_factor,
+                             const MPI_Comm                   comm)
+  {
+    surfaces.initialize(mapping, dof_handler, pairs, dirichlet, hanging, materials, comm);
+    // Once, on the reference configuration: the search only needs to
+    // bridge the discrete mismatch of surfaces that touch.
+    surfaces.update(std::vector<double>(surfaces.dofs().size(), 0.), search_factor);
+    check_surfaces_touch();
+    fixed_values.assign(surfaces.dofs().size(), 0.);
+    traction.assign(surfaces.slave_nodes.size(), Tensor<1, dim>());
+    slave_force.assign(surfaces.slave_nodes.size(), Tensor<1, dim>());
+  }
+
+  template <int dim>
+  void
+  MeshTying<dim>::check_surfaces_touch() const
+  {
+    for (unsigned int p = 0; p < surfaces.pairs.size(); ++p)
+      {
+        const std::string key = "Contact/Tied pairs: pair '" + pair_text(surfaces.pairs[p]) + "'";
+        bool              any = false;
+        for (const auto &s : surfaces.slave_nodes)
+          {
+            if (s.pair != p || !s.paired)
+              continue;
+            any           = true;
+            const auto &x = surfaces.nodes[s.node].reference;
+            Point<dim>  image;
+            for (const auto &[m, value] : s.M)
+              image += (value / s.D) * (surfaces.nodes[m].reference - x);
+            const double distance = image.norm();
+            AssertThrow(distance <= max_distance_over_h * s.size,
+                        ExcMessage(key + ": the slave node at " + coordinates_text(x) +
+                                   " is " + significant(distance, 3) +
+                                   " from its mortar image on the master surface, " +
+                                   significant(distance / s.size, 3) +
+                                   " times its element size; tied surfaces must touch "
+                                   "(within " +
+                                   significant(max_distance_over_h, 2) +
+                                   " element sizes). Check the pair, or mesh the two "
+                                   "surfaces on one geometric surface."));
+          }
+        AssertThrow(any, ExcMessage(key + ": no slave node faces the master surface (the "
+                                          "surfaces are apart, or their normals do not "
+                                          "oppose); tied surfaces must touch."));
+      }
+  }
+
+  template <int dim>
+  void
+  MeshTying<dim>::set_fixed_values(
+    const std::function<double(types::global_dof_index)> &value_on_owner)
+  {
+    fixed_values = surfaces.gather(value_on_owner);
+  }
+
+  template <int dim>
+  void
+  MeshTying<dim>::add_constraints(AffineConstraints<double> &constraints, const bool test) const
+  {
+    for (const auto &s : surfaces.slave_nodes)
+      {
+        if (!s.paired)
+          continue;
+        const auto &slave = surfaces.nodes[s.node];
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            if (slave.fixed[d] || !constraints.can_store_line(slave.dofs[d]) ||
+                constraints.is_constrained(slave.dofs[d]))
+              continue;
+            ConstraintLine line;
+            for (const auto &[m, value] : s.M)
+              line.add(surfaces.nodes[m], d, value / s.D, surfaces, fixed_values, test);
+            line.store(slave.dofs[d], constraints);
+          }
+      }
+  }
+
+  template <int dim>
+  void
+  MeshTying<dim>::condense_residual(TrilinosWrappers::MPI::Vector &residual,
+                                    const IndexSet                &owned)
+  {
+    const std::vector<double> r = surfaces.gather(residual);
+    std::vector<double>       correction(r.size(), 0.);
+    for (unsigned int k = 0; k < surfaces.slave_nodes.size(); ++k)
+      {
+        const auto &s = surfaces.slave_nodes[k];
+        traction[k] = slave_force[k] = Tensor<1, dim>();
+        if (!s.paired)
+          continue;
+        const auto &slave = surfaces.nodes[s.node];
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            if (slave.fixed[d])
+              continue;
+            const unsigned int position = surfaces.position(slave.dofs[d]);
+            slave_force[k][d]           = r[position];
+            correction[position] -= r[position];
+            for (const auto &[m, value] : s.M)
+              correction[surfaces.position(surfaces.nodes[m].dofs[d])] +=
+                value / s.D * r[position];
+          }
+        traction[k] = slave_force[k] / s.D;
+      }
+    for (unsigned int i = 0; i < correction.size(); ++i)
+      if (correction[i] != 0. && owned.is_element(surfaces.dofs()[i]))
+        residual(surfaces.dofs()[i]) += correction[i];
+    residual.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  unsigned int
+  MeshTying<dim>::n_tied_nodes() const
+  {
+    return std::count_if(surfaces.slave_nodes.begin(), surfaces.slave_nodes.end(),
+                         [](const auto &s) { return s.paired; });
+  }
+
+  template <int dim>
+  Json
+  MeshTying<dim>::results(std::ostream &out) const
+  {
+    Json result = Json::array();
+    for (unsigned int p = 0; p < surfaces.pairs.size(); ++p)
+      {
+        unsigned int   n = 0;
+        double         area = 0., largest = 0.;
+        double         normal_min = std::numeric_limits<double>::max();
+        double         normal_max = std::numeric_limits<double>::lowest();
+        double         tangential_max = 0.;
+        Tensor<1, dim> force;
+        for (unsigned int k = 0; k < surfaces.slave_nodes.size(); ++k)
+          if (const auto &s = surfaces.slave_nodes[k]; s.pair == p && s.paired)
+            {
+              ++n;
+              area += s.D;
+              force += slave_force[k];
+              largest              = std::max(largest, traction[k].norm());
+              const double normal  = traction[k] * s.normal;
+              normal_min           = std::min(normal_min, normal);
+              normal_max           = std::max(normal_max, normal);
+              tangential_max       = std::max(tangential_max,
+                                        (traction[k] - normal * s.normal).norm());
+            }
+        // The traction's spread about its mean (force over area), over the
+        // largest traction: 0 for a uniform stress.
+        const Tensor<1, dim> mean   = area > 0. ? force / area : Tensor<1, dim>();
+        double               spread = 0.;
+        for (unsigned int k = 0; k < surfaces.slave_nodes.size(); ++k)
+          if (const auto &s = surfaces.slave_nodes[k]; s.pair == p && s.paired && largest > 0.)
+            spread = std::max(spread, (traction[k] - mean).norm() / largest);
+        const std::string name = pair_text(surfaces.pairs[p]);
+        result.push(Json::object()
+                      .set("pair", name)
+                      .set("tied_slave_nodes", n)
+                      .set("area", area)
+                      .set("force", json_array(force, dim))
+                      .set("mean_traction", json_array(mean, dim))
+                      .set("traction_spread", spread)
+                      .set("min_normal_traction", normal_min)
+                      .set("max_normal_traction", normal_max)
+                      .set("max_tangential_traction", tangential_max));
+        out << "    tied pair " << name << ": " << n << " tied slave nodes, force on the slave "
+            << vector_text(force, largest * area) << ", mean traction "
+            << vector_text(mean, largest) << std::endl
+            << "      normal traction (+ tension): " << value_text(normal_min, largest) << " ... "
+            << value_text(normal_max, largest) << ", largest tangential "
+            << value_text(tangential_max, largest) << std::endl
+            << "      traction spread max|t - mean|/max|t|: " << value_or_ok(spread, 1e-10)
+            << std::endl;
+      }
+    return result;
+  }
+
+  template class MeshTying<2>;
+  template class MeshTying<3>;
+} // namespace contact_fem
