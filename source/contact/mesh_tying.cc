@@ -80,8 +80,8 @@ namespace contact_fem
               image += (value / s.D) * (surfaces.nodes[m].reference - x);
             const double distance = image.norm();
             AssertThrow(distance <= max_distance_over_h * s.size,
-                        ExcMessage(key + ": the slave node at " + coordinates_text(x) +
-                                   " is " + significant(distance, 3) +
+                        ExcMessage(key + ": the slave node at " + coordinates_text(x) + " is " +
+                                   significant(distance, 3) +
                                    " from its mortar image on the master surface, " +
                                    significant(distance / s.size, 3) +
                                    " times its element size; tied surfaces must touch "
@@ -128,8 +128,7 @@ namespace contact_fem
 
   template <int dim>
   void
-  MeshTying<dim>::condense_residual(TrilinosWrappers::MPI::Vector &residual,
-                                    const IndexSet                &owned)
+  MeshTying<dim>::condense_residual(TrilinosWrappers::MPI::Vector &residual, const IndexSet &owned)
   {
     const std::vector<double> r = surfaces.gather(residual);
     std::vector<double>       correction(r.size(), 0.);
@@ -148,8 +147,7 @@ namespace contact_fem
             slave_force[k][d]           = r[position];
             correction[position] -= r[position];
             for (const auto &[m, value] : s.M)
-              correction[surfaces.position(surfaces.nodes[m].dofs[d])] +=
-                value / s.D * r[position];
+              correction[surfaces.position(surfaces.nodes[m].dofs[d])] += value / s.D * r[position];
           }
         traction[k] = slave_force[k] / s.D;
       }
@@ -164,7 +162,9 @@ namespace contact_fem
   MeshTying<dim>::n_tied_nodes() const
   {
     return std::count_if(surfaces.slave_nodes.begin(), surfaces.slave_nodes.end(),
-                         [](const auto &s) { return s.paired; });
+                         [](const auto &s) {
+                           return s.paired;
+                         });
   }
 
   template <int dim>
@@ -174,10 +174,10 @@ namespace contact_fem
     Json result = Json::array();
     for (unsigned int p = 0; p < surfaces.pairs.size(); ++p)
       {
-        unsigned int   n = 0;
+        unsigned int   n    = 0;
         double         area = 0., largest = 0.;
-        double         normal_min = std::numeric_limits<double>::max();
-        double         normal_max = std::numeric_limits<double>::lowest();
+        double         normal_min     = std::numeric_limits<double>::max();
+        double         normal_max     = std::numeric_limits<double>::lowest();
         double         tangential_max = 0.;
         Tensor<1, dim> force;
         for (unsigned int k = 0; k < surfaces.slave_nodes.size(); ++k)
@@ -186,12 +186,11 @@ namespace contact_fem
               ++n;
               area += s.D;
               force += slave_force[k];
-              largest              = std::max(largest, traction[k].norm());
-              const double normal  = traction[k] * s.normal;
-              normal_min           = std::min(normal_min, normal);
-              normal_max           = std::max(normal_max, normal);
-              tangential_max       = std::max(tangential_max,
-                                        (traction[k] - normal * s.normal).norm());
+              largest             = std::max(largest, traction[k].norm());
+              const double normal = traction[k] * s.normal;
+              normal_min          = std::min(normal_min, normal);
+              normal_max          = std::max(normal_max, normal);
+              tangential_max = std::max(tangential_max, (traction[k] - normal * s.normal).norm());
             }
         // The traction's spread about its mean (force over area), over the
         // largest traction: 0 for a uniform stress.

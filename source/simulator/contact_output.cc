@@ -44,6 +44,7 @@ namespace contact_fem
             output,
             analytical,
             comparison.get(),
+            tying.get(),
             cycle,
             step,
             current_time,

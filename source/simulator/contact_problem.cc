@@ -344,8 +344,8 @@ namespace contact_fem
     // anywhere: every rank may write to the rows and entries of all
     // interface DoFs.
     writable_dofs = relevant_dofs;
-    for (const auto *dofs : {interface ? &interface->dofs() : nullptr,
-                             tying ? &tying->dofs() : nullptr})
+    for (const auto *dofs :
+         {interface ? &interface->dofs() : nullptr, tying ? &tying->dofs() : nullptr})
       if (dofs)
         {
           IndexSet interface_set(dof_handler.n_dofs());
@@ -996,7 +996,7 @@ namespace contact_fem
     // any work.
     const OutputDirectoryReport earlier_outputs = log.open(output.directory);
     postprocessors                              = Postprocessor<dim>::create_wanted(
-                                   {output, analytical, static_cast<bool>(contact),
+                                   {output, analytical, static_cast<bool>(contact), !contact_parameters.tied_pairs.empty(),
                                     [this](const std::string &kind, const std::string &text, Json &record) {
          warn(kind, text, record);
        },
@@ -1511,12 +1511,6 @@ namespace contact_fem
       {
         std::ostringstream text;
         comparison->print(hertz_json, text);
-        pcout << text.str();
-      }
-    if (tying)
-      {
-        std::ostringstream text;
-        cycle_record.set("tying", tying->results(text));
         pcout << text.str();
       }
     const std::unique_ptr<ContactState<dim>> state =

@@ -53,7 +53,7 @@ namespace
                const bool                has_contact)
   {
     TimerOutput timer(MPI_COMM_WORLD, std::cout, TimerOutput::never, TimerOutput::wall_times);
-    return Postprocessor<2>::create_wanted({output, analytical, has_contact,
+    return Postprocessor<2>::create_wanted({output, analytical, has_contact, false,
                                             [](const std::string &, const std::string &, Json &) {},
                                             timer, MPI_COMM_WORLD})
       .size();
@@ -141,6 +141,7 @@ main(int argc, char **argv)
                         output,
                         analytical,
                         nullptr,
+                        nullptr,
                         0,
                         0,
                         1.,
@@ -155,8 +156,8 @@ main(int argc, char **argv)
       no_output.write_vtu              = false;
       no_output.write_pressure_profile = false;
       const auto plugins               = Postprocessor<2>::create_wanted(
-                      {no_output, analytical, false, [](const std::string &, const std::string &, Json &) {},
-                       timer, MPI_COMM_WORLD});
+                      {no_output, analytical, false, false,
+                       [](const std::string &, const std::string &, Json &) {}, timer, MPI_COMM_WORLD});
       Json record = Json::object()
                       .set("potential_energy", -1.)
                       .set("analytical", Json::object().set("chord_gap_work", 0.02));

@@ -30,6 +30,8 @@ namespace contact_fem
   class AnalyticalComparison;
   template <int dim>
   struct ModelFrame;
+  template <int dim>
+  class MeshTying;
 
   /// What a postprocessor reads of a converged state (read only).
   template <int dim>
@@ -48,7 +50,9 @@ namespace contact_fem
     const AnalyticalSolution                                &analytical;
     /// The comparison with Analytical solution/Type, or null.
     const AnalyticalComparison<dim> *comparison;
-    unsigned int                     cycle;
+    /// The tied pairs' coupling and tractions, or null without tied pairs.
+    const MeshTying<dim> *tying;
+    unsigned int          cycle;
     /// The converged load step (counted from 1 in the cycle), or 0 for the
     /// cycle's results.
     unsigned int step;
@@ -68,6 +72,7 @@ namespace contact_fem
     const OutputParameters   &output;
     const AnalyticalSolution &analytical;
     bool                      has_contact;
+    bool                      has_tied_pairs;
     /// Records a warning (kind, text) in the cycle's record and prints it
     /// once per run (the driver's WarningLog).
     std::function<void(const std::string &, const std::string &, Json &)> warn;
