@@ -41,16 +41,6 @@ namespace contact_fem
       return text + ")";
     }
 
-    template <int dim>
-    Json
-    vector_json(const Tensor<1, dim> &force)
-    {
-      Json components = Json::array();
-      for (unsigned int d = 0; d < dim; ++d)
-        components.push(force[d]);
-      return components;
-    }
-
     std::string
     pair_name(const ContactPair &pair)
     {
@@ -83,7 +73,7 @@ namespace contact_fem
     for (const auto &s : supports)
       {
         Json entry = Json::object();
-        entry.set("support", s.label).set("force", vector_json(s.force));
+        entry.set("support", s.label).set("force", json_array(s.force, dim));
         support_list.push(entry);
       }
     for (const auto &p : pairs)
@@ -91,8 +81,8 @@ namespace contact_fem
         Json entry = Json::object();
         entry.set("slave", static_cast<unsigned int>(p.pair.slave))
           .set("master", static_cast<unsigned int>(p.pair.master))
-          .set("normal_force", vector_json(p.normal))
-          .set("tangential_force", vector_json(p.tangential))
+          .set("normal_force", json_array(p.normal, dim))
+          .set("tangential_force", json_array(p.tangential, dim))
           .set(dim == 2 ? "contact_length" : "contact_area", p.area);
         if (p.n_stick >= 0)
           entry.set("stick_nodes", p.n_stick).set("slip_nodes", p.n_slip);
