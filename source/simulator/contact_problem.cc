@@ -234,6 +234,13 @@ namespace contact_fem
     dof_renumbering_seed = prm.get_integer("DoF renumbering seed");
     prm.leave_subsection();
     materials.parse_parameters(prm);
+    AssertThrow(!volumetric_projection || !materials.finite_strain(),
+                ExcMessage("Finite element/Volumetric strain = B-bar applies to linear bodies "
+                           "only; Materials/Models lists a finite-strain law (use "
+                           "Volumetric strain = standard: the finite-strain bodies have no "
+                           "volumetric treatment yet, see doc/finite_strain.md)."));
+    if (materials.finite_strain())
+      finite_strain = std::make_unique<FiniteStrainBulk<dim>>(materials, *mapping, fe);
     boundary_conditions.parse_parameters(prm, dim);
     load_stepping.parse_parameters(prm);
     contact_parameters.parse_parameters(prm);
@@ -450,8 +457,10 @@ namespace contact_fem
     std::vector<double>                  theta(n);
 
     cell_matrices.assign(triangulation.n_active_cells(), FullMatrix<double>());
+    cell_offsets.assign(finite_strain ? triangulation.n_active_cells() : 0, Vector<double>());
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
+      if (cell->is_locally_owned() &&
+          !(finite_strain && finite_strain->law(cell->material_id())))
         {
           fe_values.reinit(cell);
           FullMatrix<double> &K = cell_matrices[cell->active_cell_index()];
@@ -650,18 +659,26 @@ namespace contact_fem
     system_rhs    = 0.;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     const Vector<double>                 no_load(fe.n_dofs_per_cell());
+    Vector<double>                       load_with_offset;
     const bool                           symmetric = !contact || contact->symmetric();
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           cell->get_dof_indices(dofs);
-          const unsigned int    index = cell->active_cell_index();
-          const Vector<double> &load  = cell_loads[index].size() > 0 ? cell_loads[index] : no_load;
+          const unsigned int index = cell->active_cell_index();
+          const Vector<double> *load = cell_loads[index].size() > 0 ? &cell_loads[index] : &no_load;
+          if (finite_strain && cell_offsets[index].size() > 0)
+            {
+              // f - (f_int(u) - K_T(u) u): Newton's step for the total u.
+              load_with_offset = *load;
+              load_with_offset -= cell_offsets[index];
+              load = &load_with_offset;
+            }
           if (symmetric)
-            constraints.distribute_local_to_global(cell_matrices[index], load, dofs, system_matrix,
-                                                   system_rhs);
+            constraints.distribute_local_to_global(cell_matrices[index], *load, dofs,
+                                                   system_matrix, system_rhs);
           else
-            distribute_unsymmetric(cell_matrices[index], load, dofs);
+            distribute_unsymmetric(cell_matrices[index], *load, dofs);
         }
     if (contact)
       contact->assemble(*interface, constraints, symmetric ? constraints : test_constraints,
@@ -736,6 +753,7 @@ namespace contact_fem
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     Vector<double> local_u(fe.n_dofs_per_cell()), local_r(fe.n_dofs_per_cell());
     double         local_strain = 0., local_work = 0.;
+    double         smallest_jacobian = std::numeric_limits<double>::max();
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -743,8 +761,22 @@ namespace contact_fem
           for (unsigned int i = 0; i < dofs.size(); ++i)
             local_u(i) = ghosted_solution(dofs[i]);
           const unsigned int index = cell->active_cell_index();
-          cell_matrices[index].vmult(local_r, local_u);
-          local_strain += 0.5 * (local_u * local_r);
+          if (finite_strain && finite_strain->law(cell->material_id()))
+            {
+              // The tangent and offset of the next Newton step, at this u.
+              const auto linearisation =
+                finite_strain->linearise(cell, local_u, cell_matrices[index], local_r);
+              smallest_jacobian = std::min(smallest_jacobian, linearisation.smallest_jacobian);
+              local_strain += linearisation.energy;
+              cell_offsets[index].reinit(local_u.size());
+              cell_matrices[index].vmult(cell_offsets[index], local_u);
+              cell_offsets[index].sadd(-1., 1., local_r);
+            }
+          else
+            {
+              cell_matrices[index].vmult(local_r, local_u);
+              local_strain += 0.5 * (local_u * local_r);
+            }
           if (cell_loads[index].size() > 0)
             {
               local_work += local_u * cell_loads[index];
@@ -754,6 +786,13 @@ namespace contact_fem
           hanging_constraints.distribute_local_to_global(local_r, dofs, residual);
         }
     residual.compress(VectorOperation::add);
+    // An inverted element (det F <= 0) has no strain energy: the iterate
+    // overshot, a smaller load step may not.
+    if (finite_strain)
+      smallest_jacobian = Utilities::MPI::min(smallest_jacobian, comm);
+    if (!(smallest_jacobian > 0.))
+      throw NewtonFailure("an element of a finite-strain body is inverted (det F = " +
+                          scientific(smallest_jacobian) + " <= 0 at a quadrature point)");
     strain_energy = Utilities::MPI::sum(local_strain, comm);
     external_work = Utilities::MPI::sum(local_work, comm);
   }
@@ -1430,8 +1469,14 @@ namespace contact_fem
         outside_model_range = true;
         warn("warning", text, cycle_record);
       }
+    std::set<types::material_id> finite_strain_bodies;
+    for (const auto &[id, constants] : materials.bodies)
+      if (constants.model != ElasticModel::linear)
+        finite_strain_bodies.insert(id);
     if (solved)
-      if (const std::string text = checks.large_strain(cycle_record); !text.empty())
+      if (const std::string text =
+            checks.large_strain(cycle_record, finite_strain_bodies, contact != nullptr);
+          !text.empty())
         {
           outside_model_range = true;
           warn("small_strain_warning", text, cycle_record);

@@ -6,6 +6,8 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/types.h>
 
+#include <contact_fem/material/hyperelastic_law.h>
+
 #include <map>
 #include <string>
 #include <utility>
@@ -19,6 +21,8 @@ namespace contact_fem
   {
     double youngs_modulus = 1.;
     double poisson_ratio  = 0.3;
+    /// The law (Materials/Models); E and nu give its Lame constants.
+    ElasticModel model = ElasticModel::linear;
 
     /// Lame's first parameter.
     double
@@ -102,6 +106,10 @@ namespace contact_fem
 
     /// The material ids that have constants.
     std::map<types::material_id, ElasticConstants> bodies;
+
+    /// Whether any body has a finite-strain (hyperelastic) law.
+    bool
+    finite_strain() const;
 
     /// Smallest and largest Young's modulus of the bodies.
     std::pair<double, double>

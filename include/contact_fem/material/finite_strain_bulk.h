@@ -1,0 +1,67 @@
+// The total-Lagrangian cell residual and tangent of hyperelastic bodies.
+#ifndef contact_fem_finite_strain_bulk_h
+#define contact_fem_finite_strain_bulk_h
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <contact_fem/material/hyperelastic_law.h>
+#include <contact_fem/material/material.h>
+
+#include <map>
+#include <memory>
+
+namespace contact_fem
+{
+  using namespace dealii;
+
+  /**
+   * The bulk of the finite-strain bodies (Materials/Models other than
+   * linear), total-Lagrangian on the reference configuration: per cell and
+   * displacement u the internal force f_i = int grad N_i : P(F) dV, its
+   * tangent K_ij = int grad N_i : dP/dF : grad N_j dV (consistent, so
+   * Newton converges quadratically) and the strain energy int W(F) dV, with
+   * F = I + grad u. The driver reassembles these at every Newton iterate;
+   * linear bodies keep their precomputed matrices.
+   *
+   * Implemented in source/material/finite_strain_bulk.cc.
+   */
+  template <int dim>
+  class FiniteStrainBulk
+  {
+  public:
+    FiniteStrainBulk(const Materials<dim>       &materials,
+                     const Mapping<dim>         &mapping,
+                     const FiniteElement<dim>   &fe);
+
+    /// The law of material id @p id; null for a linear body.
+    const HyperelasticLaw<dim> *
+    law(const types::material_id id) const;
+
+    /// What linearise() gives of one cell.
+    struct CellLinearisation
+    {
+      double energy = 0.;
+      /// Smallest det F at the quadrature points: <= 0 means an inverted
+      /// element (the law is then not evaluated further).
+      double smallest_jacobian = 0.;
+    };
+
+    /// The tangent @p K and internal force @p internal_force of @p cell
+    /// (of a finite-strain body) at its DoF values @p u.
+    CellLinearisation
+    linearise(const typename DoFHandler<dim>::active_cell_iterator &cell,
+              const Vector<double>                                 &u,
+              FullMatrix<double>                                   &K,
+              Vector<double>                                       &internal_force);
+
+  private:
+    std::map<types::material_id, std::unique_ptr<HyperelasticLaw<dim>>> laws;
+    FEValues<dim>                                                       fe_values;
+  };
+} // namespace contact_fem
+
+#endif
