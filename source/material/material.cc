@@ -151,8 +151,8 @@ namespace contact_fem
                            std::to_string(ids.size()) + ", " + std::to_string(E.size()) + ", " +
                            std::to_string(nu.size()) + ")."));
     AssertThrow(model_names.empty() || model_names.size() == ids.size(),
-                ExcMessage("Materials/Models: " + std::to_string(model_names.size()) +
-                           " entries for " + std::to_string(ids.size()) +
+                ExcMessage("Materials/Models: lists " + std::to_string(model_names.size()) +
+                           " model(s) for " + std::to_string(ids.size()) +
                            " material ids; expected one model per body (or none: "
                            "every body linear)."));
     bodies.clear();
