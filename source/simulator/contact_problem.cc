@@ -158,7 +158,11 @@ namespace contact_fem
                       "volumetric strain div u is projected per cell onto "
                       "polynomials of degree p - 1 (selective, mean dilatation "
                       "for Q1, Q2-P1 for Q2), which removes volumetric locking "
-                      "of nearly incompressible bodies (nu close to 0.5).");
+                      "of nearly incompressible bodies (nu close to 0.5). "
+                      "Finite-strain bodies (Materials/Models) then use its "
+                      "finite-strain counterpart F-bar (the volume change of "
+                      "the cell centre at every point), implemented for Q1 "
+                      "only (doc/finite_strain.md).");
     prm.declare_entry("DoF renumbering seed", "0", Patterns::Integer(0),
                       "0: the DoFs in deal.II's order. Else a random order "
                       "of each rank's DoFs, drawn with this seed (the same "
@@ -234,13 +238,9 @@ namespace contact_fem
     dof_renumbering_seed = prm.get_integer("DoF renumbering seed");
     prm.leave_subsection();
     materials.parse_parameters(prm);
-    AssertThrow(!volumetric_projection || !materials.finite_strain(),
-                ExcMessage("Finite element/Volumetric strain = B-bar applies to linear bodies "
-                           "only; Materials/Models lists a finite-strain law (use "
-                           "Volumetric strain = standard: the finite-strain bodies have no "
-                           "volumetric treatment yet, see doc/finite_strain.md)."));
     if (materials.finite_strain())
-      finite_strain = std::make_unique<FiniteStrainBulk<dim>>(materials, *mapping, fe);
+      finite_strain = std::make_unique<FiniteStrainBulk<dim>>(materials, *mapping, fe,
+                                                              volumetric_projection != nullptr);
     boundary_conditions.parse_parameters(prm, dim);
     load_stepping.parse_parameters(prm);
     contact_parameters.parse_parameters(prm);
@@ -988,7 +988,7 @@ namespace contact_fem
     // residual (gap of active nodes, multiplier / k of the others). With
     // it > 0 the multipliers are first recovered from the solution of
     // iteration it and the active set is updated.
-    NewtonMonitor             monitor(newton_parameters);
+    NewtonMonitor             monitor(newton_parameters, finite_strain != nullptr);
     NewtonMonitor::Assessment assessment;
     // The contact sets after each iteration: a set that comes back after
     // changes means the iteration cycles and would never settle.

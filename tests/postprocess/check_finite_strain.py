@@ -11,11 +11,13 @@ nu = 0.2). The deformation is homogeneous, so the finite-element answer is
 exact up to Newton's tolerance and the reactions of the stretched tops
 (boundary 1, body 1; boundary 4, body 2) must equal the first
 Piola-Kirchhoff stress P_yy of the law times the reference width to 1e-8:
-- plane-strain uniaxial stress (right sides free), Q1 and Q2: the lateral
+- plane-strain uniaxial stress (right sides free), Q1, Q1 with F-bar
+  (Volumetric strain = B-bar: F-bar = F in a homogeneous deformation) and
+  Q2: the lateral
   stretch a solves S_xx(a, 1.25) = 0;
 - plane-strain uniaxial strain (right sides on rollers, a = 1), Q2;
 - 3D (MESH_3D, the blocks of meshes/contact_blocks_3d.geo, 1 x 1 x 0.5),
-  Q1 and Q2: uniaxial stress along z, both lateral stretches a from
+  Q1, Q1 with F-bar and Q2: uniaxial stress along z, both lateral stretches a from
   S_xx = 0;
 - the small-strain limit: a stretch of 1e-7 gives the reactions of the
   linear law (the same scene with Models = linear, linear) to 1e-5
@@ -82,31 +84,36 @@ def check(name, computed, expected, tolerance=1e-8, reference="closed form"):
 
 
 bodies_2d = [("boundary 1", "neo-hookean", 100.0, 0.3), ("boundary 4", "saint-venant-kirchhoff", 200.0, 0.2)]
-for degree, lateral in [(1, "free"), (2, "free"), (2, "rollers")]:
-    directory = f"results_2d_q{degree}_{lateral}"
+for degree, lateral, volumetric in [(1, "free", "standard"), (1, "free", "B-bar"),
+                                    (2, "free", "standard"), (2, "rollers", "standard")]:
+    directory = f"results_2d_q{degree}_{lateral}_{volumetric}"
     settings = [f"Output directory={directory}", f"Finite element/Degree={degree}",
+                f"Finite element/Volumetric strain={volumetric}",
                 "Output/Print Newton iterations=false"]
     if lateral == "rollers":
         settings.append("Boundary conditions/Fixed=3: y; 5: x; 2: y; 6: x; 0: x")
     run_scene(contact_fem, scene_2d, *settings)
     force = reactions(directory)
     for support, model, E, nu in bodies_2d:
-        check(f"2D Q{degree}, lateral {lateral}, {model}", force[support][1],
+        element = f"Q{degree}" + (" F-bar" if volumetric == "B-bar" else "")
+        check(f"2D {element}, lateral {lateral}, {model}", force[support][1],
               axial_stress(model, E, nu, 1.25, lateral == "free", 2))
 
 # 3D: lower block (body 1 of the mesh, z in [0, 0.5]) and upper block
 # (body 2, z in [0.5, 1]), each stretched by 25 % of its height 0.5.
-for degree in [1, 2]:
-    directory = f"results_3d_q{degree}"
+for degree, volumetric in [(1, "standard"), (1, "B-bar"), (2, "standard")]:
+    directory = f"results_3d_q{degree}_{volumetric}"
     run_scene(contact_fem, scene_2d, f"Output directory={directory}", "Dimension=3",
-              f"Finite element/Degree={degree}", "Geometry/Type=mesh file",
+              f"Finite element/Degree={degree}", f"Finite element/Volumetric strain={volumetric}",
+              "Geometry/Type=mesh file",
               f"Geometry/Mesh file={mesh_3d}", "Boundary conditions/Fixed=2: z; 4: z; 5: x; 6: y",
               "Boundary conditions/Prescribed displacement=3: z = 0.125*t; 1: z = 0.125*t",
               "Output/Print Newton iterations=false")
     force = reactions(directory)
     for support, model, E, nu in [("boundary 3", "neo-hookean", 100.0, 0.3),
                                   ("boundary 1", "saint-venant-kirchhoff", 200.0, 0.2)]:
-        check(f"3D Q{degree}, lateral free, {model}", force[support][2],
+        element = f"Q{degree}" + (" F-bar" if volumetric == "B-bar" else "")
+        check(f"3D {element}, lateral free, {model}", force[support][2],
               axial_stress(model, E, nu, 1.25, True, 3))
 
 # Small-strain limit: hyperelastic and linear runs of a 1e-7 stretch.

@@ -27,15 +27,25 @@ namespace contact_fem
    * F = I + grad u. The driver reassembles these at every Newton iterate;
    * linear bodies keep their precomputed matrices.
    *
+   * With @p f_bar (Q1 only) the law is evaluated at F-bar = (J0 / J)^(1/dim)
+   * F, J0 = det F at the cell centre (de Souza Neto et al. 1996): the
+   * volume change is one value per cell, so nearly incompressible bodies do
+   * not lock (the finite-strain counterpart of the mean-dilatation B-bar;
+   * in 2D the plane-strain form, exponent 1/2). Here it is variational: f
+   * and K are the first and second derivatives of int W(F-bar) dV, so K
+   * stays symmetric; a homogeneous deformation has F-bar = F.
+   *
    * Implemented in source/material/finite_strain_bulk.cc.
    */
   template <int dim>
   class FiniteStrainBulk
   {
   public:
-    FiniteStrainBulk(const Materials<dim>       &materials,
-                     const Mapping<dim>         &mapping,
-                     const FiniteElement<dim>   &fe);
+    /// Throws if @p f_bar and the element is not Q1.
+    FiniteStrainBulk(const Materials<dim>     &materials,
+                     const Mapping<dim>       &mapping,
+                     const FiniteElement<dim> &fe,
+                     const bool                f_bar = false);
 
     /// The law of material id @p id; null for a linear body.
     const HyperelasticLaw<dim> *
@@ -59,8 +69,21 @@ namespace contact_fem
               Vector<double>                                       &internal_force);
 
   private:
+    /// The F-bar tangent and force (see the class).
+    CellLinearisation
+    linearise_f_bar(const HyperelasticLaw<dim> &material,
+                    const Vector<double>       &u,
+                    FullMatrix<double>         &K,
+                    Vector<double>             &internal_force);
+
     std::map<types::material_id, std::unique_ptr<HyperelasticLaw<dim>>> laws;
     FEValues<dim>                                                       fe_values;
+    /// At the cell centre, for F-bar's J0; null without F-bar.
+    std::unique_ptr<FEValues<dim>> centre_values;
+    /// Per shape function: its component and scalar gradient at the
+    /// present quadrature point and at the centre.
+    std::vector<unsigned int>   component;
+    std::vector<Tensor<1, dim>> g, g0;
   };
 } // namespace contact_fem
 
