@@ -268,6 +268,23 @@ namespace contact_fem
   }
 
   template <int dim>
+  SymmetricTensor<2, 3>
+  Materials<dim>::finite_strain_stress(const types::material_id id,
+                                       const Tensor<2, dim>    &grad_u) const
+  {
+    const ElasticConstants &c   = constants(id);
+    const auto              law = HyperelasticLaw<3>::create(c.model, c);
+    AssertThrow(law, ExcMessage("Materials: body " + std::to_string(id) + " is linear."));
+    Tensor<2, 3> F;
+    for (unsigned int i = 0; i < 3; ++i)
+      F[i][i] = 1.;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        F[i][j] += grad_u[i][j];
+    return law->cauchy_stress(F);
+  }
+
+  template <int dim>
   double
   Materials<dim>::von_mises(const types::material_id id, const SymmetricTensor<2, dim> &sigma) const
   {

@@ -9,9 +9,13 @@
 //   and rotates P -> QP and sigma -> Q sigma Q^T;
 // - the small-strain limit: at F = I + t G, t = 1e-6, the Cauchy stress is
 //   the linear law's C : sym(t G) up to O(t^2) (relative difference ~t);
+// - the 3D Cauchy stress of a plane-strain body (Materials::
+//   finite_strain_stress(), for the VTU output): sigma_zz = lambda ln J / J
+//   at F = diag(1.25, 1) (neo-Hookean), sigma_xx as the 2D law's;
 // - Materials/Models: the names and the default.
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
 
 #include <contact_fem/material/hyperelastic_law.h>
 #include <contact_fem/material/material.h>
@@ -166,6 +170,30 @@ main(int argc, char **argv)
       check_law<2>(model);
       check_law<3>(model);
     }
+  // The 3D stress of a plane-strain body (VTU output): F = diag(1.25, 1),
+  // F_zz = 1, so sigma_zz = lambda ln J / J for neo-Hookean.
+  {
+    ParameterHandler prm;
+    Materials<2>::declare_parameters(prm);
+    prm.enter_subsection("Materials");
+    prm.set("Material ids", "1");
+    prm.set("Young's moduli", "100");
+    prm.set("Poisson's ratios", "0.3");
+    prm.set("Models", "neo-hookean");
+    prm.leave_subsection();
+    Materials<2> materials;
+    materials.parse_parameters(prm);
+    Tensor<2, 2> grad_u;
+    grad_u[0][0]                      = 0.25;
+    const SymmetricTensor<2, 3> sigma = materials.finite_strain_stress(1, grad_u);
+    const double lambda = materials.constants(1).lambda(), J = 1.25;
+    std::cout << std::setprecision(9) << "plane strain, F = diag(1.25, 1): sigma_zz "
+              << sigma[2][2] << " (lambda ln J / J = " << lambda * std::log(J) / J
+              << "), sigma_xx " << sigma[0][0] << " (2D law: "
+              << NeoHookean<2>(lambda, materials.constants(1).mu()).cauchy_stress(
+                   unit_symmetric_tensor<2>() + Tensor<2, 2>(grad_u))[0][0]
+              << ")" << std::endl;
+  }
   std::cout << "linear has no hyperelastic law: "
             << (HyperelasticLaw<2>::create(ElasticModel::linear, ElasticConstants()) ? "no" :
                                                                                         "yes")

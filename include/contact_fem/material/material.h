@@ -134,6 +134,12 @@ namespace contact_fem
     SymmetricTensor<4, dim>
     stiffness_tensor(const types::material_id id) const;
 
+    /// The Cauchy stress of a finite-strain body @p id (Materials/Models)
+    /// at the displacement gradient @p grad_u, as the 3D tensor (in 2D of
+    /// the plane-strain state F_zz = 1, so that sigma_zz is the law's).
+    SymmetricTensor<2, 3>
+    finite_strain_stress(const types::material_id id, const Tensor<2, dim> &grad_u) const;
+
     /// Von Mises stress of an in-plane (2D: plane strain) stress state of material @p id.
     double
     von_mises(const types::material_id id, const SymmetricTensor<2, dim> &stress) const;
