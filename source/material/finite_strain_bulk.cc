@@ -42,8 +42,8 @@ namespace contact_fem
                            "only; use Finite element/Degree = 1 or Volumetric strain = "
                            "standard."));
     if (f_bar)
-      centre_values = std::make_unique<FEValues<dim>>(mapping, fe, QMidpoint<dim>(),
-                                                      update_gradients);
+      centre_values =
+        std::make_unique<FEValues<dim>>(mapping, fe, QMidpoint<dim>(), update_gradients);
     // Each shape function of the vector element moves one component: its
     // gradient is the row component[i] with the scalar gradient g_i.
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
@@ -59,6 +59,19 @@ namespace contact_fem
   {
     const auto it = laws.find(id);
     return it == laws.end() ? nullptr : it->second.get();
+  }
+
+  template <int dim>
+  Tensor<2, dim>
+  FiniteStrainBulk<dim>::gradient_at(const unsigned int    q,
+                                     const Vector<double> &u,
+                                     CellLinearisation    &result)
+  {
+    for (unsigned int i = 0; i < u.size(); ++i)
+      g[i] = fe_values.shape_grad_component(i, q, component[i]);
+    const Tensor<2, dim> F   = deformation_gradient(u, component, g);
+    result.smallest_jacobian = std::min(result.smallest_jacobian, determinant(F));
+    return F;
   }
 
   template <int dim>
@@ -82,11 +95,8 @@ namespace contact_fem
     result.smallest_jacobian = std::numeric_limits<double>::max();
     for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
       {
-        for (unsigned int i = 0; i < n; ++i)
-          g[i] = fe_values.shape_grad_component(i, q, component[i]);
-        const Tensor<2, dim> F   = deformation_gradient(u, component, g);
-        const double         J   = determinant(F);
-        result.smallest_jacobian = std::min(result.smallest_jacobian, J);
+        const Tensor<2, dim> F = gradient_at(q, u, result);
+        const double         J = determinant(F);
         if (!(J > 0.))
           return result;
         const double         dV = fe_values.JxW(q);
@@ -131,8 +141,8 @@ namespace contact_fem
     CellLinearisation  result;
     for (unsigned int i = 0; i < n; ++i)
       g0[i] = centre_values->shape_grad_component(i, 0, component[i]);
-    const Tensor<2, dim> F0 = deformation_gradient(u, component, g0);
-    const double         J0 = determinant(F0);
+    const Tensor<2, dim> F0  = deformation_gradient(u, component, g0);
+    const double         J0  = determinant(F0);
     result.smallest_jacobian = J0;
     if (!(J0 > 0.))
       return result;
@@ -144,17 +154,14 @@ namespace contact_fem
     std::vector<Tensor<2, dim>> dF_bar(n), AdF(n);
     for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
       {
-        for (unsigned int i = 0; i < n; ++i)
-          g[i] = fe_values.shape_grad_component(i, q, component[i]);
-        const Tensor<2, dim> F   = deformation_gradient(u, component, g);
-        const double         J   = determinant(F);
-        result.smallest_jacobian = std::min(result.smallest_jacobian, J);
+        const Tensor<2, dim> F = gradient_at(q, u, result);
+        const double         J = determinant(F);
         if (!(J > 0.))
           return result;
         const double         alpha = std::pow(J0 / J, 1. / dim);
         const Tensor<2, dim> F_bar = alpha * F, F_inverse_transpose = transpose(invert(F));
-        const Tensor<2, dim> P = material.first_piola(F_bar);
-        const Tensor<4, dim> A = material.first_piola_tangent(F_bar);
+        const Tensor<2, dim> P  = material.first_piola(F_bar);
+        const Tensor<4, dim> A  = material.first_piola_tangent(F_bar);
         const double         dV = fe_values.JxW(q), P_F = scalar_product(P, F);
         result.energy += material.energy(F_bar) * dV;
         for (unsigned int i = 0; i < n; ++i)
@@ -171,13 +178,13 @@ namespace contact_fem
             const double PE_i = P[component[i]] * g[i];
             for (unsigned int j = 0; j <= i; ++j)
               {
-                const double PE_j = P[component[j]] * g[j];
-                const double d2alpha =
-                  alpha / (dim * dim) * (h0[i][component[i]] - h[i][component[i]]) *
-                    (h0[j][component[j]] - h[j][component[j]]) +
-                  alpha / dim *
-                    (h[i][component[j]] * h[j][component[i]] -
-                     h0[i][component[j]] * h0[j][component[i]]);
+                const double PE_j    = P[component[j]] * g[j];
+                const double d2alpha = alpha / (dim * dim) *
+                                         (h0[i][component[i]] - h[i][component[i]]) *
+                                         (h0[j][component[j]] - h[j][component[j]]) +
+                                       alpha / dim *
+                                         (h[i][component[j]] * h[j][component[i]] -
+                                          h0[i][component[j]] * h0[j][component[i]]);
                 K(i, j) += (scalar_product(dF_bar[i], AdF[j]) + dalpha[j] * PE_i +
                             dalpha[i] * PE_j + P_F * d2alpha) *
                            dV;

@@ -36,13 +36,13 @@ namespace contact_fem
   ElasticModel
   parse_elastic_model(const std::string &name, const unsigned int entry)
   {
-    for (const ElasticModel model : {ElasticModel::linear, ElasticModel::neo_hookean,
-                                     ElasticModel::saint_venant_kirchhoff})
+    for (const ElasticModel model :
+         {ElasticModel::linear, ElasticModel::neo_hookean, ElasticModel::saint_venant_kirchhoff})
       if (name == to_string(model))
         return model;
-    AssertThrow(false, ExcMessage("Materials/Models: entry " + std::to_string(entry + 1) + " is '" +
-                                  name +
-                                  "'; expected linear, neo-hookean or saint-venant-kirchhoff."));
+    AssertThrow(false,
+                ExcMessage("Materials/Models: entry " + std::to_string(entry + 1) + " is '" + name +
+                           "'; expected linear, neo-hookean or saint-venant-kirchhoff."));
     return ElasticModel::linear;
   }
 
@@ -74,6 +74,12 @@ namespace contact_fem
           return nullptr;
       }
   }
+
+  template <int dim>
+  HyperelasticLaw<dim>::HyperelasticLaw(const double lambda, const double mu)
+    : lambda(lambda)
+    , mu(mu)
+  {}
 
   template <int dim>
   Tensor<2, dim>
@@ -118,19 +124,13 @@ namespace contact_fem
   }
 
   template <int dim>
-  NeoHookean<dim>::NeoHookean(const double lambda, const double mu)
-    : lambda(lambda)
-    , mu(mu)
-  {}
-
-  template <int dim>
   double
   NeoHookean<dim>::energy(const Tensor<2, dim> &F) const
   {
     // tr C - 3 with C_zz = 1 in plane strain: tr C - dim.
     const double log_J = std::log(determinant(F));
-    return 0.5 * mu * (trace(right_cauchy_green(F)) - dim) - mu * log_J +
-           0.5 * lambda * log_J * log_J;
+    return 0.5 * this->mu * (trace(right_cauchy_green(F)) - dim) - this->mu * log_J +
+           0.5 * this->lambda * log_J * log_J;
   }
 
   template <int dim>
@@ -138,8 +138,8 @@ namespace contact_fem
   NeoHookean<dim>::second_piola(const Tensor<2, dim> &F) const
   {
     const SymmetricTensor<2, dim> C_inverse = invert(right_cauchy_green(F));
-    return mu * (unit_symmetric_tensor<dim>() - C_inverse) +
-           lambda * std::log(determinant(F)) * C_inverse;
+    return this->mu * (unit_symmetric_tensor<dim>() - C_inverse) +
+           this->lambda * std::log(determinant(F)) * C_inverse;
   }
 
   template <int dim>
@@ -149,22 +149,16 @@ namespace contact_fem
     // dS/dE = lambda C^-1 (x) C^-1 + 2 (mu - lambda ln J) dC^-1/dC, from
     // d ln J / dC = C^-1 / 2 and dC^-1/dC = -(C^-1 (x) C^-1)_sym.
     const SymmetricTensor<2, dim> C_inverse = invert(right_cauchy_green(F));
-    return lambda * outer_product(C_inverse, C_inverse) +
-           2. * (mu - lambda * std::log(determinant(F))) * symmetric_product(C_inverse);
+    return this->lambda * outer_product(C_inverse, C_inverse) +
+           2. * (this->mu - this->lambda * std::log(determinant(F))) * symmetric_product(C_inverse);
   }
-
-  template <int dim>
-  SaintVenantKirchhoff<dim>::SaintVenantKirchhoff(const double lambda, const double mu)
-    : lambda(lambda)
-    , mu(mu)
-  {}
 
   template <int dim>
   double
   SaintVenantKirchhoff<dim>::energy(const Tensor<2, dim> &F) const
   {
     const SymmetricTensor<2, dim> E = 0.5 * (right_cauchy_green(F) - unit_symmetric_tensor<dim>());
-    return 0.5 * lambda * trace(E) * trace(E) + mu * (E * E);
+    return 0.5 * this->lambda * trace(E) * trace(E) + this->mu * (E * E);
   }
 
   template <int dim>
@@ -172,15 +166,16 @@ namespace contact_fem
   SaintVenantKirchhoff<dim>::second_piola(const Tensor<2, dim> &F) const
   {
     const SymmetricTensor<2, dim> E = 0.5 * (right_cauchy_green(F) - unit_symmetric_tensor<dim>());
-    return lambda * trace(E) * unit_symmetric_tensor<dim>() + 2. * mu * E;
+    return this->lambda * trace(E) * unit_symmetric_tensor<dim>() + 2. * this->mu * E;
   }
 
   template <int dim>
   SymmetricTensor<4, dim>
   SaintVenantKirchhoff<dim>::material_tangent(const Tensor<2, dim> &) const
   {
-    return lambda * outer_product(unit_symmetric_tensor<dim>(), unit_symmetric_tensor<dim>()) +
-           2. * mu * symmetric_product(unit_symmetric_tensor<dim>());
+    return this->lambda *
+             outer_product(unit_symmetric_tensor<dim>(), unit_symmetric_tensor<dim>()) +
+           2. * this->mu * symmetric_product(unit_symmetric_tensor<dim>());
   }
 
   template class HyperelasticLaw<2>;

@@ -178,10 +178,10 @@ namespace contact_fem
         AssertThrow(bodies.count(ids[i]) == 0,
                     ExcMessage("Materials/Material ids: id " + std::to_string(ids[i]) +
                                " is listed twice."));
-        bodies[ids[i]] = ElasticConstants{E[i], nu[i],
-                                          model_names.empty() ?
-                                            ElasticModel::linear :
-                                            parse_elastic_model(model_names[i], i)};
+        bodies[ids[i]] =
+          ElasticConstants{E[i], nu[i],
+                           model_names.empty() ? ElasticModel::linear :
+                                                 parse_elastic_model(model_names[i], i)};
       }
   }
 

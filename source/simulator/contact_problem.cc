@@ -459,8 +459,7 @@ namespace contact_fem
     cell_matrices.assign(triangulation.n_active_cells(), FullMatrix<double>());
     cell_offsets.assign(finite_strain ? triangulation.n_active_cells() : 0, Vector<double>());
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() &&
-          !(finite_strain && finite_strain->law(cell->material_id())))
+      if (cell->is_locally_owned() && !(finite_strain && finite_strain->law(cell->material_id())))
         {
           fe_values.reinit(cell);
           FullMatrix<double> &K = cell_matrices[cell->active_cell_index()];
@@ -665,7 +664,7 @@ namespace contact_fem
       if (cell->is_locally_owned())
         {
           cell->get_dof_indices(dofs);
-          const unsigned int index = cell->active_cell_index();
+          const unsigned int    index = cell->active_cell_index();
           const Vector<double> *load = cell_loads[index].size() > 0 ? &cell_loads[index] : &no_load;
           if (finite_strain && cell_offsets[index].size() > 0)
             {
@@ -675,8 +674,8 @@ namespace contact_fem
               load = &load_with_offset;
             }
           if (symmetric)
-            constraints.distribute_local_to_global(cell_matrices[index], *load, dofs,
-                                                   system_matrix, system_rhs);
+            constraints.distribute_local_to_global(cell_matrices[index], *load, dofs, system_matrix,
+                                                   system_rhs);
           else
             distribute_unsymmetric(cell_matrices[index], *load, dofs);
         }

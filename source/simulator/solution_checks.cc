@@ -69,7 +69,7 @@ namespace contact_fem
 
   template <int dim>
   std::string
-  SolutionChecks<dim>::large_strain(Json                                &record,
+  SolutionChecks<dim>::large_strain(Json                               &record,
                                     const std::set<types::material_id> &finite_strain_bodies,
                                     const bool                          with_contact) const
   {

@@ -24,6 +24,8 @@
 
 #include <contact_fem/material/finite_strain_bulk.h>
 
+#include "unit_test_materials.h"
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -35,23 +37,6 @@ using namespace contact_fem;
 namespace
 {
   template <int dim>
-  Materials<dim>
-  neo_hookean_body()
-  {
-    ParameterHandler prm;
-    Materials<dim>::declare_parameters(prm);
-    prm.enter_subsection("Materials");
-    prm.set("Material ids", "0");
-    prm.set("Young's moduli", "100");
-    prm.set("Poisson's ratios", "0.3");
-    prm.set("Models", "neo-hookean");
-    prm.leave_subsection();
-    Materials<dim> materials;
-    materials.parse_parameters(prm);
-    return materials;
-  }
-
-  template <int dim>
   void
   check_cell(const unsigned int degree, const bool f_bar = false)
   {
@@ -62,13 +47,13 @@ namespace
     const FESystem<dim> fe(FE_Q<dim>(degree), dim);
     DoFHandler<dim>     dof_handler(tria);
     dof_handler.distribute_dofs(fe);
-    const MappingQ<dim>    mapping(1);
-    const Materials<dim>   materials = neo_hookean_body<dim>();
-    FiniteStrainBulk<dim>  bulk(materials, mapping, fe, f_bar);
-    const auto             cell = dof_handler.begin_active();
-    const unsigned int     n    = fe.n_dofs_per_cell();
-    Vector<double>         u(n), f(n);
-    FullMatrix<double>     K;
+    const MappingQ<dim>   mapping(1);
+    const Materials<dim>  materials = make_materials<dim>("0", "100", "0.3", "neo-hookean");
+    FiniteStrainBulk<dim> bulk(materials, mapping, fe, f_bar);
+    const auto            cell = dof_handler.begin_active();
+    const unsigned int    n    = fe.n_dofs_per_cell();
+    Vector<double>        u(n), f(n);
+    FullMatrix<double>    K;
     // A smooth field at the support points (on the unit cell).
     for (unsigned int i = 0; i < n; ++i)
       {
@@ -98,9 +83,8 @@ namespace
       return std::make_pair(error_f, error_K);
     };
     const auto e1 = errors(1e-3), e2 = errors(5e-4), e3 = errors(2.5e-4);
-    std::cout << std::fixed << std::setprecision(1)
-              << "  f against dW/du: error ratios " << e1.first / e2.first << " "
-              << e2.first / e3.first << std::endl
+    std::cout << std::fixed << std::setprecision(1) << "  f against dW/du: error ratios "
+              << e1.first / e2.first << " " << e2.first / e3.first << std::endl
               << "  K against df/du: error ratios " << e1.second / e2.second << " "
               << e2.second / e3.second << std::defaultfloat << std::endl;
 
@@ -133,8 +117,7 @@ namespace
         const double norm = r.l2_norm() / (k == 0 ? (first = r.l2_norm()) : first);
         if (norm < 1e-13)
           break;
-        std::cout << std::endl
-                  << "    " << std::scientific << std::setprecision(1) << norm;
+        std::cout << std::endl << "    " << std::scientific << std::setprecision(1) << norm;
         if (k > 0)
           std::cout << "  " << norm / (previous * previous);
         std::cout << std::defaultfloat;

@@ -15,10 +15,11 @@
 // - Materials/Models: the names and the default.
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/parameter_handler.h>
 
 #include <contact_fem/material/hyperelastic_law.h>
 #include <contact_fem/material/material.h>
+
+#include "unit_test_materials.h"
 
 #include <cmath>
 #include <iomanip>
@@ -102,8 +103,8 @@ namespace
 
   template <int dim>
   void
-  print_ratios(const std::string &what, double (*error)(const HyperelasticLaw<dim> &,
-                                                          const Tensor<2, dim> &, const double),
+  print_ratios(const std::string &what,
+               double (*error)(const HyperelasticLaw<dim> &, const Tensor<2, dim> &, const double),
                const HyperelasticLaw<dim> &law)
   {
     const Tensor<2, dim> F = deformation_gradient<dim>();
@@ -131,11 +132,11 @@ namespace
     print_ratios<dim>("dP/dF against the difference of P", &tangent_error<dim>, *law);
 
     const Tensor<2, dim> F = deformation_gradient<dim>(), Q = rotation<dim>();
-    const Tensor<2, dim> QF = Q * F;
+    const Tensor<2, dim> QF    = Q * F;
     const double         scale = law->first_piola(F).norm();
-    const double dW = std::abs(law->energy(QF) - law->energy(F)) / std::abs(law->energy(F));
-    const double dS = (law->second_piola(QF) - law->second_piola(F)).norm() / scale;
-    const double dP = (law->first_piola(QF) - Q * law->first_piola(F)).norm() / scale;
+    const double         dW = std::abs(law->energy(QF) - law->energy(F)) / std::abs(law->energy(F));
+    const double         dS = (law->second_piola(QF) - law->second_piola(F)).norm() / scale;
+    const double         dP = (law->first_piola(QF) - Q * law->first_piola(F)).norm() / scale;
     const SymmetricTensor<2, dim> sigma = law->cauchy_stress(F);
     const double                  dsigma =
       (Tensor<2, dim>(law->cauchy_stress(QF)) - Q * Tensor<2, dim>(sigma) * transpose(Q)).norm() /
@@ -173,30 +174,20 @@ main(int argc, char **argv)
   // The 3D stress of a plane-strain body (VTU output): F = diag(1.25, 1),
   // F_zz = 1, so sigma_zz = lambda ln J / J for neo-Hookean.
   {
-    ParameterHandler prm;
-    Materials<2>::declare_parameters(prm);
-    prm.enter_subsection("Materials");
-    prm.set("Material ids", "1");
-    prm.set("Young's moduli", "100");
-    prm.set("Poisson's ratios", "0.3");
-    prm.set("Models", "neo-hookean");
-    prm.leave_subsection();
-    Materials<2> materials;
-    materials.parse_parameters(prm);
-    Tensor<2, 2> grad_u;
-    grad_u[0][0]                      = 0.25;
-    const SymmetricTensor<2, 3> sigma = materials.finite_strain_stress(1, grad_u);
-    const double lambda = materials.constants(1).lambda(), J = 1.25;
-    std::cout << std::setprecision(9) << "plane strain, F = diag(1.25, 1): sigma_zz "
-              << sigma[2][2] << " (lambda ln J / J = " << lambda * std::log(J) / J
-              << "), sigma_xx " << sigma[0][0] << " (2D law: "
-              << NeoHookean<2>(lambda, materials.constants(1).mu()).cauchy_stress(
-                   unit_symmetric_tensor<2>() + Tensor<2, 2>(grad_u))[0][0]
+    const Materials<2> materials = make_materials<2>("1", "100", "0.3", "neo-hookean");
+    Tensor<2, 2>       grad_u;
+    grad_u[0][0]                       = 0.25;
+    const SymmetricTensor<2, 3> sigma  = materials.finite_strain_stress(1, grad_u);
+    const double                lambda = materials.constants(1).lambda(), J = 1.25;
+    std::cout << std::setprecision(9) << "plane strain, F = diag(1.25, 1): sigma_zz " << sigma[2][2]
+              << " (lambda ln J / J = " << lambda * std::log(J) / J << "), sigma_xx " << sigma[0][0]
+              << " (2D law: "
+              << NeoHookean<2>(lambda, materials.constants(1).mu())
+                   .cauchy_stress(unit_symmetric_tensor<2>() + Tensor<2, 2>(grad_u))[0][0]
               << ")" << std::endl;
   }
   std::cout << "linear has no hyperelastic law: "
-            << (HyperelasticLaw<2>::create(ElasticModel::linear, ElasticConstants()) ? "no" :
-                                                                                        "yes")
+            << (HyperelasticLaw<2>::create(ElasticModel::linear, ElasticConstants()) ? "no" : "yes")
             << std::endl;
   for (const std::string name : {"linear", "neo-hookean", "saint-venant-kirchhoff"})
     std::cout << "model '" << name << "' reads back as '" << to_string(parse_elastic_model(name, 0))

@@ -50,6 +50,8 @@ namespace contact_fem
   class HyperelasticLaw
   {
   public:
+    /// A law of the Lame constants @p lambda and @p mu.
+    HyperelasticLaw(const double lambda, const double mu);
     virtual ~HyperelasticLaw() = default;
 
     /// The law of @p model with @p constants; null for ElasticModel::linear.
@@ -75,6 +77,9 @@ namespace contact_fem
     /// Cauchy stress sigma = P F^T / det F.
     SymmetricTensor<2, dim>
     cauchy_stress(const Tensor<2, dim> &F) const;
+
+  protected:
+    double lambda, mu; ///< the Lame constants
   };
 
   /// W = mu/2 (tr C - 3) - mu ln J + lambda/2 (ln J)^2 (Bonet and Wood's
@@ -83,16 +88,13 @@ namespace contact_fem
   class NeoHookean : public HyperelasticLaw<dim>
   {
   public:
-    NeoHookean(const double lambda, const double mu);
+    using HyperelasticLaw<dim>::HyperelasticLaw;
     double
     energy(const Tensor<2, dim> &F) const override;
     SymmetricTensor<2, dim>
     second_piola(const Tensor<2, dim> &F) const override;
     SymmetricTensor<4, dim>
     material_tangent(const Tensor<2, dim> &F) const override;
-
-  private:
-    double lambda, mu;
   };
 
   /// W = lambda/2 (tr E)^2 + mu E : E with the Green-Lagrange strain E =
@@ -103,16 +105,13 @@ namespace contact_fem
   class SaintVenantKirchhoff : public HyperelasticLaw<dim>
   {
   public:
-    SaintVenantKirchhoff(const double lambda, const double mu);
+    using HyperelasticLaw<dim>::HyperelasticLaw;
     double
     energy(const Tensor<2, dim> &F) const override;
     SymmetricTensor<2, dim>
     second_piola(const Tensor<2, dim> &F) const override;
     SymmetricTensor<4, dim>
     material_tangent(const Tensor<2, dim> &F) const override;
-
-  private:
-    double lambda, mu;
   };
 } // namespace contact_fem
 

@@ -459,7 +459,7 @@ namespace contact_fem
     /// Present when a body has a finite-strain law (Materials/Models): its
     /// cells' matrices are the tangent at the last residual's iterate.
     std::unique_ptr<FiniteStrainBulk<dim>> finite_strain;
-    IndexSet                                   owned_dofs, relevant_dofs, writable_dofs;
+    IndexSet                               owned_dofs, relevant_dofs, writable_dofs;
 
     AffineConstraints<double>            hanging_constraints;
     AffineConstraints<double>            dirichlet_constraints;

@@ -61,7 +61,7 @@ namespace contact_fem
     /// strain: only their rotation is checked, and only @p with_contact
     /// (the contact gap stays on the reference configuration).
     std::string
-    large_strain(Json                                &record,
+    large_strain(Json                               &record,
                  const std::set<types::material_id> &finite_strain_bodies = {},
                  const bool                          with_contact         = true) const;
 
