@@ -94,6 +94,17 @@ namespace contact_fem
                       "below 1.5e-8 (mu/K > 1e8) the set-up warns." +
                         not_set_help(true),
                       true);
+    prm.declare_entry("Models", "", Patterns::Anything(),
+                      "The elastic law of each body, in the order of Material ids: "
+                      "'linear' (small strain, sigma = C : eps), 'neo-hookean' "
+                      "(compressible, W = mu/2 (tr C - 3) - mu ln J + lambda/2 "
+                      "(ln J)^2) or 'saint-venant-kirchhoff' (W = lambda/2 "
+                      "(tr E)^2 + mu E : E), the finite-strain laws solved "
+                      "total-Lagrangian with the Lame constants of the body's "
+                      "Young's modulus and Poisson's ratio (their small-strain "
+                      "limit is the linear law). Contact stays on the reference "
+                      "configuration (Contact/Kinematics). Empty: every body "
+                      "linear.");
     prm.leave_subsection();
   }
 
@@ -121,6 +132,7 @@ namespace contact_fem
         ids.push_back(id);
       }
     const std::string E_text = prm.get("Young's moduli"), nu_text = prm.get("Poisson's ratios");
+    const auto        model_names = Utilities::split_string_list(prm.get("Models"));
     prm.leave_subsection();
     AssertThrow(!ids.empty(),
                 ExcMessage("Materials/Material ids: empty; expected the material id of "
@@ -138,6 +150,11 @@ namespace contact_fem
                            "entries (got " +
                            std::to_string(ids.size()) + ", " + std::to_string(E.size()) + ", " +
                            std::to_string(nu.size()) + ")."));
+    AssertThrow(model_names.empty() || model_names.size() == ids.size(),
+                ExcMessage("Materials/Models: lists " + std::to_string(model_names.size()) +
+                           " model(s) for " + std::to_string(ids.size()) +
+                           " material ids; expected one model per body (or none: "
+                           "every body linear)."));
     bodies.clear();
     for (unsigned int i = 0; i < ids.size(); ++i)
       {
@@ -161,7 +178,10 @@ namespace contact_fem
         AssertThrow(bodies.count(ids[i]) == 0,
                     ExcMessage("Materials/Material ids: id " + std::to_string(ids[i]) +
                                " is listed twice."));
-        bodies[ids[i]] = ElasticConstants{E[i], nu[i]};
+        bodies[ids[i]] =
+          ElasticConstants{E[i], nu[i],
+                           model_names.empty() ? ElasticModel::linear :
+                                                 parse_elastic_model(model_names[i], i)};
       }
   }
 
@@ -174,6 +194,16 @@ namespace contact_fem
                 ExcMessage("Materials: the mesh has cells with material id " + std::to_string(id) +
                            ", which 'Materials/Material ids' does not list."));
     return it->second;
+  }
+
+  template <int dim>
+  bool
+  Materials<dim>::finite_strain() const
+  {
+    for (const auto &[id, constants] : bodies)
+      if (constants.model != ElasticModel::linear)
+        return true;
+    return false;
   }
 
   template <int dim>
@@ -235,6 +265,23 @@ namespace contact_fem
     return (sigma -
             lambda / (2. * mu + dim * lambda) * trace(sigma) * unit_symmetric_tensor<dim>()) /
            (2. * mu);
+  }
+
+  template <int dim>
+  SymmetricTensor<2, 3>
+  Materials<dim>::finite_strain_stress(const types::material_id id,
+                                       const Tensor<2, dim>    &grad_u) const
+  {
+    const ElasticConstants &c   = constants(id);
+    const auto              law = HyperelasticLaw<3>::create(c.model, c);
+    AssertThrow(law, ExcMessage("Materials: body " + std::to_string(id) + " is linear."));
+    Tensor<2, 3> F;
+    for (unsigned int i = 0; i < 3; ++i)
+      F[i][i] = 1.;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        F[i][j] += grad_u[i][j];
+    return law->cauchy_stress(F);
   }
 
   template <int dim>

@@ -11,6 +11,7 @@
 #include <contact_fem/simulator/scene_parameters.h>
 #include <contact_fem/postprocess/vtu_output.h>
 
+#include <cmath>
 #include <functional>
 #include <iomanip>
 #include <memory>
@@ -25,7 +26,8 @@ namespace contact_fem
     /// The Cauchy stress tensor of the FE displacement (cell by cell
     /// material; with B-bar from the projected volumetric strain) and its
     /// von Mises stress sqrt(3/2 s:s), s the deviator (in 2D of the plane
-    /// strain state, with sigma_zz).
+    /// strain state, with sigma_zz). Finite-strain bodies (Materials/Models):
+    /// the law's Cauchy stress at F = I + grad u, at the reference points.
     template <int dim>
     class StressFields : public DataPostprocessor<dim>
     {
@@ -70,15 +72,30 @@ namespace contact_fem
         // projection (output only, so its set-up cost does not matter).
         std::unique_ptr<VolumetricProjection<dim>> projection;
         Vector<double>                             local_values;
-        if (b_bar)
+        if (b_bar && materials.constants(id).model == ElasticModel::linear)
           {
             projection = std::make_unique<VolumetricProjection<dim>>(mapping, cell->get_fe());
             projection->reinit(cell);
             local_values.reinit(cell->get_fe().n_dofs_per_cell());
             cell->get_dof_values(solution, local_values);
           }
+        const bool finite_strain = materials.constants(id).model != ElasticModel::linear;
         for (unsigned int q = 0; q < computed.size(); ++q)
           {
+            if (finite_strain)
+              {
+                // The law's Cauchy stress at F = I + grad u (of F, not of
+                // F-bar, with Volumetric strain = B-bar).
+                Tensor<2, dim> grad_u;
+                for (unsigned int i = 0; i < dim; ++i)
+                  grad_u[i] = inputs.solution_gradients[q][i];
+                const SymmetricTensor<2, 3> sigma = materials.finite_strain_stress(id, grad_u);
+                for (unsigned int i = 0; i < dim; ++i)
+                  for (unsigned int j = 0; j < dim; ++j)
+                    computed[q](i * dim + j) = sigma[i][j];
+                computed[q](dim * dim) = std::sqrt(1.5) * deviator(sigma).norm();
+                continue;
+              }
             SymmetricTensor<2, dim> strain;
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int j = 0; j <= i; ++j)

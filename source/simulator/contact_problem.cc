@@ -198,7 +198,11 @@ namespace contact_fem
                       "volumetric strain div u is projected per cell onto "
                       "polynomials of degree p - 1 (selective, mean dilatation "
                       "for Q1, Q2-P1 for Q2), which removes volumetric locking "
-                      "of nearly incompressible bodies (nu close to 0.5).");
+                      "of nearly incompressible bodies (nu close to 0.5). "
+                      "Finite-strain bodies (Materials/Models) then use its "
+                      "finite-strain counterpart F-bar (the volume change of "
+                      "the cell centre at every point), implemented for Q1 "
+                      "only (doc/finite_strain.md).");
     prm.declare_entry("DoF renumbering seed", "0", Patterns::Integer(0),
                       "0: the DoFs in deal.II's order. Else a random order "
                       "of each rank's DoFs, drawn with this seed (the same "
@@ -274,6 +278,9 @@ namespace contact_fem
     dof_renumbering_seed = prm.get_integer("DoF renumbering seed");
     prm.leave_subsection();
     materials.parse_parameters(prm);
+    if (materials.finite_strain())
+      finite_strain = std::make_unique<FiniteStrainBulk<dim>>(materials, *mapping, fe,
+                                                              volumetric_projection != nullptr);
     boundary_conditions.parse_parameters(prm, dim);
     load_stepping.parse_parameters(prm);
     contact_parameters.parse_parameters(prm);
@@ -401,8 +408,9 @@ namespace contact_fem
     std::vector<double>                  theta(n);
 
     cell_matrices.assign(triangulation.n_active_cells(), FullMatrix<double>());
+    cell_offsets.assign(finite_strain ? triangulation.n_active_cells() : 0, Vector<double>());
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
+      if (cell->is_locally_owned() && !(finite_strain && finite_strain->law(cell->material_id())))
         {
           fe_values.reinit(cell);
           FullMatrix<double> &K = cell_matrices[cell->active_cell_index()];
@@ -604,18 +612,26 @@ namespace contact_fem
     system_rhs    = 0.;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     const Vector<double>                 no_load(fe.n_dofs_per_cell());
+    Vector<double>                       load_with_offset;
     const bool                           symmetric = !contact || contact->symmetric();
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           cell->get_dof_indices(dofs);
           const unsigned int    index = cell->active_cell_index();
-          const Vector<double> &load  = cell_loads[index].size() > 0 ? cell_loads[index] : no_load;
+          const Vector<double> *load = cell_loads[index].size() > 0 ? &cell_loads[index] : &no_load;
+          if (finite_strain && cell_offsets[index].size() > 0)
+            {
+              // f - (f_int(u) - K_T(u) u): Newton's step for the total u.
+              load_with_offset = *load;
+              load_with_offset -= cell_offsets[index];
+              load = &load_with_offset;
+            }
           if (symmetric)
-            constraints.distribute_local_to_global(cell_matrices[index], load, dofs, system_matrix,
+            constraints.distribute_local_to_global(cell_matrices[index], *load, dofs, system_matrix,
                                                    system_rhs);
           else
-            distribute_two_space(cell_matrices[index], load, dofs, constraints, test_constraints,
+            distribute_two_space(cell_matrices[index], *load, dofs, constraints, test_constraints,
                                  system_matrix, system_rhs);
         }
     if (contact)
@@ -665,6 +681,7 @@ namespace contact_fem
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     Vector<double> local_u(fe.n_dofs_per_cell()), local_r(fe.n_dofs_per_cell());
     double         local_strain = 0., local_work = 0.;
+    double         smallest_jacobian = std::numeric_limits<double>::max();
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -672,8 +689,22 @@ namespace contact_fem
           for (unsigned int i = 0; i < dofs.size(); ++i)
             local_u(i) = ghosted_solution(dofs[i]);
           const unsigned int index = cell->active_cell_index();
-          cell_matrices[index].vmult(local_r, local_u);
-          local_strain += 0.5 * (local_u * local_r);
+          if (finite_strain && finite_strain->law(cell->material_id()))
+            {
+              // The tangent and offset of the next Newton step, at this u.
+              const auto linearisation =
+                finite_strain->linearise(cell, local_u, cell_matrices[index], local_r);
+              smallest_jacobian = std::min(smallest_jacobian, linearisation.smallest_jacobian);
+              local_strain += linearisation.energy;
+              cell_offsets[index].reinit(local_u.size());
+              cell_matrices[index].vmult(cell_offsets[index], local_u);
+              cell_offsets[index].sadd(-1., 1., local_r);
+            }
+          else
+            {
+              cell_matrices[index].vmult(local_r, local_u);
+              local_strain += 0.5 * (local_u * local_r);
+            }
           if (cell_loads[index].size() > 0)
             {
               local_work += local_u * cell_loads[index];
@@ -685,6 +716,13 @@ namespace contact_fem
     residual.compress(VectorOperation::add);
     if (tying)
       tying->condense_residual(residual, owned_dofs);
+    // An inverted element (det F <= 0) has no strain energy: the iterate
+    // overshot, a smaller load step may not.
+    if (finite_strain)
+      smallest_jacobian = Utilities::MPI::min(smallest_jacobian, comm);
+    if (!(smallest_jacobian > 0.))
+      throw NewtonFailure("an element of a finite-strain body is inverted (det F = " +
+                          scientific(smallest_jacobian) + " <= 0 at a quadrature point)");
     strain_energy = Utilities::MPI::sum(local_strain, comm);
     external_work = Utilities::MPI::sum(local_work, comm);
   }
@@ -864,7 +902,7 @@ namespace contact_fem
     // residual (gap of active nodes, multiplier / k of the others). With
     // it > 0 the multipliers are first recovered from the solution of
     // iteration it and the active set is updated.
-    NewtonMonitor             monitor(newton_parameters);
+    NewtonMonitor             monitor(newton_parameters, finite_strain != nullptr);
     NewtonMonitor::Assessment assessment;
     // The contact sets after each iteration: a set that comes back after
     // changes means the iteration cycles and would never settle.
@@ -1183,8 +1221,14 @@ namespace contact_fem
         outside_model_range = true;
         warn("warning", text, cycle_record);
       }
+    std::set<types::material_id> finite_strain_bodies;
+    for (const auto &[id, constants] : materials.bodies)
+      if (constants.model != ElasticModel::linear)
+        finite_strain_bodies.insert(id);
     if (solved)
-      if (const std::string text = checks.large_strain(cycle_record); !text.empty())
+      if (const std::string text =
+            checks.large_strain(cycle_record, finite_strain_bodies, contact != nullptr);
+          !text.empty())
         {
           outside_model_range = true;
           warn("small_strain_warning", text, cycle_record);

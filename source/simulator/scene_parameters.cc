@@ -217,7 +217,11 @@ namespace contact_fem
       prm.enter_subsection("Materials");
       std::string text = "Bodies (Materials): ids " + prm.get("Material ids") +
                          "; Young's moduli " + prm.get("Young's moduli") + "; Poisson's ratios " +
-                         prm.get("Poisson's ratios") + "\n";
+                         prm.get("Poisson's ratios");
+      // Only when set: the outputs of linear scenes stay as they were.
+      if (const std::string models = Utilities::trim(prm.get("Models")); !models.empty())
+        text += "; Models " + models;
+      text += "\n";
       prm.leave_subsection();
       std::string conditions;
       prm.enter_subsection("Boundary conditions");

@@ -6,6 +6,8 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/types.h>
 
+#include <contact_fem/material/hyperelastic_law.h>
+
 #include <map>
 #include <string>
 #include <utility>
@@ -19,6 +21,8 @@ namespace contact_fem
   {
     double youngs_modulus = 1.;
     double poisson_ratio  = 0.3;
+    /// The law (Materials/Models); E and nu give its Lame constants.
+    ElasticModel model = ElasticModel::linear;
 
     /// Lame's first parameter.
     double
@@ -103,6 +107,10 @@ namespace contact_fem
     /// The material ids that have constants.
     std::map<types::material_id, ElasticConstants> bodies;
 
+    /// Whether any body has a finite-strain (hyperelastic) law.
+    bool
+    finite_strain() const;
+
     /// Smallest and largest Young's modulus of the bodies.
     std::pair<double, double>
     youngs_modulus_range() const;
@@ -125,6 +133,12 @@ namespace contact_fem
     /// The fourth-order elasticity tensor of material @p id.
     SymmetricTensor<4, dim>
     stiffness_tensor(const types::material_id id) const;
+
+    /// The Cauchy stress of a finite-strain body @p id (Materials/Models)
+    /// at the displacement gradient @p grad_u, as the 3D tensor (in 2D of
+    /// the plane-strain state F_zz = 1, so that sigma_zz is the law's).
+    SymmetricTensor<2, 3>
+    finite_strain_stress(const types::material_id id, const Tensor<2, dim> &grad_u) const;
 
     /// Von Mises stress of an in-plane (2D: plane strain) stress state of material @p id.
     double

@@ -24,6 +24,7 @@
 #include <contact_fem/contact/mesh_tying.h>
 #include <contact_fem/core/json.h>
 #include <contact_fem/core/warning_log.h>
+#include <contact_fem/material/finite_strain_bulk.h>
 #include <contact_fem/material/material.h>
 #include <contact_fem/postprocess/convergence_table.h>
 #include <contact_fem/postprocess/output_files.h>
@@ -342,7 +343,10 @@ namespace contact_fem
     /// Present with Finite element/Volumetric strain = B-bar (after fe and
     /// mapping, which it refers to).
     std::unique_ptr<VolumetricProjection<dim>> volumetric_projection;
-    IndexSet                                   owned_dofs, relevant_dofs, writable_dofs;
+    /// Present when a body has a finite-strain law (Materials/Models): its
+    /// cells' matrices are the tangent at the last residual's iterate.
+    std::unique_ptr<FiniteStrainBulk<dim>> finite_strain;
+    IndexSet                               owned_dofs, relevant_dofs, writable_dofs;
 
     AffineConstraints<double>            hanging_constraints;
     AffineConstraints<double>            dirichlet_constraints;
@@ -373,6 +377,10 @@ namespace contact_fem
 
     std::vector<FullMatrix<double>> cell_matrices; ///< by active cell index
     std::vector<Vector<double>>     cell_loads;    ///< by active cell index, may be empty
+    /// Finite-strain cells: f_int(u) - K_T(u) u at the last residual's
+    /// iterate u, so that K_T u_new = f - f_int(u) + K_T u is Newton's step
+    /// for the total displacement; empty for linear cells.
+    std::vector<Vector<double>> cell_offsets;
 
     /// Present only when the scene has contact pairs.
     std::unique_ptr<ContactInterface<dim>>   interface;

@@ -56,9 +56,14 @@ namespace contact_fem
     large_displacement() const;
 
     /// Records the largest principal strain and rotation in @p record;
-    /// why they leave the small-strain range, or "".
+    /// why they leave the small-strain range, or "". The cells of
+    /// @p finite_strain_bodies (Materials/Models) follow their law at any
+    /// strain: only their rotation is checked, and only @p with_contact
+    /// (the contact gap stays on the reference configuration).
     std::string
-    large_strain(Json &record) const;
+    large_strain(Json                               &record,
+                 const std::set<types::material_id> &finite_strain_bodies = {},
+                 const bool                          with_contact         = true) const;
 
     /// The probe for a weakly held rotation.
     struct HeldRotation

@@ -23,7 +23,11 @@ namespace contact_fem
   class NewtonMonitor
   {
   public:
-    explicit NewtonMonitor(const NewtonParameters &parameters);
+    /// @p nonlinear_bulk: the bulk is nonlinear (finite-strain bodies),
+    /// so a slowly falling residual is Newton's pre-asymptotic phase, not
+    /// the accuracy of the linear solver: stagnation then only counts at
+    /// round-off (ratio 1e-8).
+    explicit NewtonMonitor(const NewtonParameters &parameters, const bool nonlinear_bulk = false);
 
     /// What the residuals of one iteration say.
     struct Assessment
@@ -90,6 +94,7 @@ namespace contact_fem
 
   private:
     NewtonParameters parameters;
+    bool             nonlinear_bulk;
     double           reference_u = 0., reference_lambda = 0.;
     double           last_u = 0., last_lambda = 0., previous_r_u = 0.;
     unsigned int     previous_changes = 1, last_changes = 0;

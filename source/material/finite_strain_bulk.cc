@@ -1,0 +1,202 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <contact_fem/material/finite_strain_bulk.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace contact_fem
+{
+  namespace
+  {
+    /// F = I + sum_i u_i e_(c_i) (x) g_i.
+    template <int dim>
+    Tensor<2, dim>
+    deformation_gradient(const Vector<double>              &u,
+                         const std::vector<unsigned int>   &component,
+                         const std::vector<Tensor<1, dim>> &g)
+    {
+      Tensor<2, dim> F;
+      for (unsigned int d = 0; d < dim; ++d)
+        F[d][d] = 1.;
+      for (unsigned int i = 0; i < u.size(); ++i)
+        F[component[i]] += u(i) * g[i];
+      return F;
+    }
+  } // namespace
+
+  template <int dim>
+  FiniteStrainBulk<dim>::FiniteStrainBulk(const Materials<dim>     &materials,
+                                          const Mapping<dim>       &mapping,
+                                          const FiniteElement<dim> &fe,
+                                          const bool                f_bar)
+    : fe_values(mapping, fe, QGauss<dim>(fe.degree + 1), update_gradients | update_JxW_values)
+    , component(fe.n_dofs_per_cell())
+    , g(fe.n_dofs_per_cell())
+    , g0(fe.n_dofs_per_cell())
+  {
+    AssertThrow(!f_bar || fe.degree == 1,
+                ExcMessage("Finite element/Volumetric strain = B-bar: the finite-strain bodies "
+                           "(Materials/Models) then use F-bar, which is implemented for Q1 "
+                           "only; use Finite element/Degree = 1 or Volumetric strain = "
+                           "standard."));
+    if (f_bar)
+      centre_values =
+        std::make_unique<FEValues<dim>>(mapping, fe, QMidpoint<dim>(), update_gradients);
+    // Each shape function of the vector element moves one component: its
+    // gradient is the row component[i] with the scalar gradient g_i.
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      component[i] = fe.system_to_component_index(i).first;
+    for (const auto &[id, constants] : materials.bodies)
+      if (auto law = HyperelasticLaw<dim>::create(constants.model, constants))
+        laws[id] = std::move(law);
+  }
+
+  template <int dim>
+  const HyperelasticLaw<dim> *
+  FiniteStrainBulk<dim>::law(const types::material_id id) const
+  {
+    const auto it = laws.find(id);
+    return it == laws.end() ? nullptr : it->second.get();
+  }
+
+  template <int dim>
+  Tensor<2, dim>
+  FiniteStrainBulk<dim>::gradient_at(const unsigned int    q,
+                                     const Vector<double> &u,
+                                     CellLinearisation    &result)
+  {
+    for (unsigned int i = 0; i < u.size(); ++i)
+      g[i] = fe_values.shape_grad_component(i, q, component[i]);
+    const Tensor<2, dim> F   = deformation_gradient(u, component, g);
+    result.smallest_jacobian = std::min(result.smallest_jacobian, determinant(F));
+    return F;
+  }
+
+  template <int dim>
+  typename FiniteStrainBulk<dim>::CellLinearisation
+  FiniteStrainBulk<dim>::linearise(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                                   const Vector<double>                                 &u,
+                                   FullMatrix<double>                                   &K,
+                                   Vector<double> &internal_force)
+  {
+    const HyperelasticLaw<dim> &material = *law(cell->material_id());
+    fe_values.reinit(cell);
+    const unsigned int n = u.size();
+    K.reinit(n, n);
+    internal_force.reinit(n);
+    if (centre_values)
+      {
+        centre_values->reinit(cell);
+        return linearise_f_bar(material, u, K, internal_force);
+      }
+    CellLinearisation result;
+    result.smallest_jacobian = std::numeric_limits<double>::max();
+    for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+      {
+        const Tensor<2, dim> F = gradient_at(q, u, result);
+        const double         J = determinant(F);
+        if (!(J > 0.))
+          return result;
+        const double         dV = fe_values.JxW(q);
+        const Tensor<2, dim> P  = material.first_piola(F);
+        const Tensor<4, dim> A  = material.first_piola_tangent(F);
+        result.energy += material.energy(F) * dV;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            internal_force(i) += (P[component[i]] * g[i]) * dV;
+            // A_{c_i J k L} g_i[J]: the row of i, contracted with g_j below.
+            Tensor<1, dim> Ag[dim];
+            for (unsigned int k = 0; k < dim; ++k)
+              for (unsigned int J = 0; J < dim; ++J)
+                for (unsigned int L = 0; L < dim; ++L)
+                  Ag[k][L] += g[i][J] * A[component[i]][J][k][L];
+            for (unsigned int j = 0; j <= i; ++j)
+              K(i, j) += (Ag[component[j]] * g[j]) * dV;
+          }
+      }
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = i + 1; j < n; ++j)
+        K(i, j) = K(j, i);
+    return result;
+  }
+
+  template <int dim>
+  typename FiniteStrainBulk<dim>::CellLinearisation
+  FiniteStrainBulk<dim>::linearise_f_bar(const HyperelasticLaw<dim> &material,
+                                         const Vector<double>       &u,
+                                         FullMatrix<double>         &K,
+                                         Vector<double>             &internal_force)
+  {
+    // With alpha = (J0 / J)^(1/dim), F-bar = alpha F and the derivatives in
+    // u_i of a = F^-T : E_i (E_i = e_(c_i) (x) g_i, the gradient of shape
+    // function i) and of a0 (the same at the centre):
+    //   d alpha / du_i    = alpha / dim (a0_i - a_i),
+    //   d F-bar / du_i    = alpha E_i + F d alpha / du_i,
+    //   d2 alpha/du_i du_j = alpha / dim^2 (a0_i - a_i)(a0_j - a_j)
+    //                      + alpha / dim (tr(B_j B_i) - tr(B0_j B0_i)),
+    // B_i = F^-1 E_i, tr(B_j B_i) = h_i[c_j] h_j[c_i] with h_i = F^-T g_i.
+    const unsigned int n = u.size();
+    CellLinearisation  result;
+    for (unsigned int i = 0; i < n; ++i)
+      g0[i] = centre_values->shape_grad_component(i, 0, component[i]);
+    const Tensor<2, dim> F0  = deformation_gradient(u, component, g0);
+    const double         J0  = determinant(F0);
+    result.smallest_jacobian = J0;
+    if (!(J0 > 0.))
+      return result;
+    const Tensor<2, dim>        F0_inverse_transpose = transpose(invert(F0));
+    std::vector<Tensor<1, dim>> h0(n), h(n);
+    for (unsigned int i = 0; i < n; ++i)
+      h0[i] = F0_inverse_transpose * g0[i];
+    std::vector<double>         dalpha(n);
+    std::vector<Tensor<2, dim>> dF_bar(n), AdF(n);
+    for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+      {
+        const Tensor<2, dim> F = gradient_at(q, u, result);
+        const double         J = determinant(F);
+        if (!(J > 0.))
+          return result;
+        const double         alpha = std::pow(J0 / J, 1. / dim);
+        const Tensor<2, dim> F_bar = alpha * F, F_inverse_transpose = transpose(invert(F));
+        const Tensor<2, dim> P  = material.first_piola(F_bar);
+        const Tensor<4, dim> A  = material.first_piola_tangent(F_bar);
+        const double         dV = fe_values.JxW(q), P_F = scalar_product(P, F);
+        result.energy += material.energy(F_bar) * dV;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            h[i]      = F_inverse_transpose * g[i];
+            dalpha[i] = alpha / dim * (h0[i][component[i]] - h[i][component[i]]);
+            dF_bar[i] = dalpha[i] * F;
+            dF_bar[i][component[i]] += alpha * g[i];
+            AdF[i] = double_contract<2, 0, 3, 1>(A, dF_bar[i]);
+            internal_force(i) += scalar_product(P, dF_bar[i]) * dV;
+          }
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const double PE_i = P[component[i]] * g[i];
+            for (unsigned int j = 0; j <= i; ++j)
+              {
+                const double PE_j    = P[component[j]] * g[j];
+                const double d2alpha = alpha / (dim * dim) *
+                                         (h0[i][component[i]] - h[i][component[i]]) *
+                                         (h0[j][component[j]] - h[j][component[j]]) +
+                                       alpha / dim *
+                                         (h[i][component[j]] * h[j][component[i]] -
+                                          h0[i][component[j]] * h0[j][component[i]]);
+                K(i, j) += (scalar_product(dF_bar[i], AdF[j]) + dalpha[j] * PE_i +
+                            dalpha[i] * PE_j + P_F * d2alpha) *
+                           dV;
+              }
+          }
+      }
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = i + 1; j < n; ++j)
+        K(i, j) = K(j, i);
+    return result;
+  }
+
+  template class FiniteStrainBulk<2>;
+  template class FiniteStrainBulk<3>;
+} // namespace contact_fem
