@@ -11,10 +11,17 @@ namespace contact_fem
     /// load time (a function's static: whatever the order of the files'
     /// initialisation); the key orders them.
     template <int dim>
-    std::map<std::pair<int, std::string>, typename Postprocessor<dim>::Factory> &
+    struct Entry
+    {
+      typename Postprocessor<dim>::Factory     create;
+      typename Postprocessor<dim>::Declaration declare;
+    };
+
+    template <int dim>
+    std::map<std::pair<int, std::string>, Entry<dim>> &
     postprocessors()
     {
-      static std::map<std::pair<int, std::string>, typename Postprocessor<dim>::Factory> registry;
+      static std::map<std::pair<int, std::string>, Entry<dim>> registry;
       return registry;
     }
   } // namespace
@@ -37,9 +44,20 @@ namespace contact_fem
   void
   Postprocessor<dim>::register_postprocessor(const std::string &name,
                                              const int          rank,
-                                             const Factory     &factory)
+                                             const Factory     &factory,
+                                             const Declaration  declare)
   {
-    postprocessors<dim>()[{rank, name}] = factory;
+    postprocessors<dim>()[{rank, name}] = {factory, declare};
+  }
+
+  template <int dim>
+  void
+  Postprocessor<dim>::declare_all_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    for (const auto &[key, entry] : postprocessors<dim>())
+      entry.declare(prm);
+    prm.leave_subsection();
   }
 
   template <int dim>
@@ -47,8 +65,8 @@ namespace contact_fem
   Postprocessor<dim>::create_wanted(const PostprocessorContext<dim> &context)
   {
     std::vector<std::unique_ptr<Postprocessor<dim>>> wanted;
-    for (const auto &[key, factory] : postprocessors<dim>())
-      if (auto postprocessor = factory(context))
+    for (const auto &[key, entry] : postprocessors<dim>())
+      if (auto postprocessor = entry.create(context))
         wanted.push_back(std::move(postprocessor));
     return wanted;
   }

@@ -83,10 +83,20 @@ namespace contact_fem
     class PressureProfileFiles : public Postprocessor<dim>
     {
     public:
+      static void
+      declare_parameters(ParameterHandler &prm)
+      {
+        prm.declare_entry("Write pressure profile", "true", Patterns::Bool(),
+                          "Write the slave pressure profile of every cycle as CSV.");
+      }
+
       static std::unique_ptr<Postprocessor<dim>>
       create(const PostprocessorContext<dim> &context)
       {
-        if (!context.output.write_pressure_profile || !context.has_contact)
+        context.prm.enter_subsection("Output");
+        const bool wanted = context.prm.get_bool("Write pressure profile");
+        context.prm.leave_subsection();
+        if (!wanted || !context.has_contact)
           return nullptr;
         return std::make_unique<PressureProfileFiles<dim>>();
       }

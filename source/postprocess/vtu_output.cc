@@ -478,10 +478,20 @@ namespace contact_fem
     class VtuFiles : public Postprocessor<dim>
     {
     public:
+      static void
+      declare_parameters(ParameterHandler &prm)
+      {
+        prm.declare_entry("Write VTU", "true", Patterns::Bool(),
+                          "Write the fields of every load step as VTU/PVTU.");
+      }
+
       static std::unique_ptr<Postprocessor<dim>>
       create(const PostprocessorContext<dim> &context)
       {
-        if (!context.output.write_vtu)
+        context.prm.enter_subsection("Output");
+        const bool wanted = context.prm.get_bool("Write VTU");
+        context.prm.leave_subsection();
+        if (!wanted)
           return nullptr;
         return std::make_unique<VtuFiles<dim>>(context);
       }

@@ -223,6 +223,7 @@ namespace contact_fem
     StressRecoverySettings::declare_parameters(prm);
     AnalyticalSolution::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
+    Postprocessor<dim>::declare_all_parameters(prm);
     ModelRange::declare_parameters(prm);
   }
 
@@ -300,6 +301,12 @@ namespace contact_fem
     memory_warning = input_checks().check_scene_before_meshing(inclined_supports);
 
     timer = std::make_unique<TimerOutput>(comm, pcout, TimerOutput::never, TimerOutput::wall_times);
+    postprocessors = Postprocessor<dim>::create_wanted(
+      {prm, output, analytical, static_cast<bool>(contact), !contact_parameters.tied_pairs.empty(),
+       [this](const std::string &kind, const std::string &text, Json &record) {
+         warn(kind, text, record);
+       },
+       *timer, comm});
   }
 
   template <int dim>
@@ -1033,12 +1040,6 @@ namespace contact_fem
     // and a directory that cannot take the new ones stops the run before
     // any work.
     const OutputDirectoryReport earlier_outputs = log.open(output.directory);
-    postprocessors                              = Postprocessor<dim>::create_wanted(
-                                   {output, analytical, static_cast<bool>(contact), !contact_parameters.tied_pairs.empty(),
-                                    [this](const std::string &kind, const std::string &text, Json &record) {
-         warn(kind, text, record);
-       },
-                                    *timer, comm});
     pcout << "contact_fem: scene '" << scene_name << "', " << dim << "D, "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI process(es)" << std::endl
           << effective_input;

@@ -529,10 +529,6 @@ namespace contact_fem
                       "checks that it can write "
                       "there. Must not be named 'output' in tests.");
     prm.enter_subsection("Output");
-    prm.declare_entry("Write VTU", "true", Patterns::Bool(),
-                      "Write the fields of every load step as VTU/PVTU.");
-    prm.declare_entry("Write pressure profile", "true", Patterns::Bool(),
-                      "Write the slave pressure profile of every cycle as CSV.");
     prm.declare_entry("Print timing", "true", Patterns::Bool(),
                       "Print wall times on the console (they are always in "
                       "summary.json). Tests switch this off.");
@@ -558,8 +554,6 @@ namespace contact_fem
     AssertThrow(!Utilities::trim(directory).empty(),
                 ExcMessage("Output directory: must not be empty."));
     prm.enter_subsection("Output");
-    write_vtu               = prm.get_bool("Write VTU");
-    write_pressure_profile  = prm.get_bool("Write pressure profile");
     print_timing            = prm.get_bool("Print timing");
     print_newton_iterations = prm.get_bool("Print Newton iterations");
     displacement_probes.clear();

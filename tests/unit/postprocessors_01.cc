@@ -22,6 +22,7 @@
 //    0.046574643.
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
@@ -47,13 +48,30 @@ using namespace contact_fem;
 
 namespace
 {
+  /// The plug-ins' keys, set as a scene file would set them.
+  struct OutputKeys
+  {
+    ParameterHandler prm;
+    OutputKeys(const bool vtu, const bool pressure_profile)
+    {
+      Postprocessor<2>::declare_all_parameters(prm);
+      prm.enter_subsection("Output");
+      prm.set("Write VTU", vtu);
+      prm.set("Write pressure profile", pressure_profile);
+      prm.leave_subsection();
+    }
+  };
+
   unsigned int
-  count_wanted(const OutputParameters   &output,
+  count_wanted(const bool                vtu,
+               const bool                pressure_profile,
+               const OutputParameters   &output,
                const AnalyticalSolution &analytical,
                const bool                has_contact)
   {
+    OutputKeys  keys(vtu, pressure_profile);
     TimerOutput timer(MPI_COMM_WORLD, std::cout, TimerOutput::never, TimerOutput::wall_times);
-    return Postprocessor<2>::create_wanted({output, analytical, has_contact, false,
+    return Postprocessor<2>::create_wanted({keys.prm, output, analytical, has_contact, false,
                                             [](const std::string &, const std::string &, Json &) {},
                                             timer, MPI_COMM_WORLD})
       .size();
@@ -64,23 +82,21 @@ namespace
   {
     OutputParameters   output;
     AnalyticalSolution analytical;
-    output.directory              = ".";
-    output.write_vtu              = false;
-    output.write_pressure_profile = false;
-    std::cout << "plain scene: " << count_wanted(output, analytical, false) << std::endl;
-    output.write_vtu = true;
-    std::cout << "with VTU: " << count_wanted(output, analytical, false) << std::endl;
-    output.write_vtu = false;
-    output.displacement_probes.push_back(BodyPoint{1, {1., 1.}});
-    std::cout << "with probes: " << count_wanted(output, analytical, false) << std::endl;
-    std::cout << "with probes and contact: " << count_wanted(output, analytical, true) << std::endl;
-    output.write_pressure_profile = true;
-    std::cout << "with the pressure profile: " << count_wanted(output, analytical, true)
+    output.directory = ".";
+    std::cout << "plain scene: " << count_wanted(false, false, output, analytical, false)
               << std::endl;
-    output.write_vtu                      = true;
+    std::cout << "with VTU: " << count_wanted(true, false, output, analytical, false) << std::endl;
+    output.displacement_probes.push_back(BodyPoint{1, {1., 1.}});
+    std::cout << "with probes: " << count_wanted(false, false, output, analytical, false)
+              << std::endl;
+    std::cout << "with probes and contact: " << count_wanted(false, false, output, analytical, true)
+              << std::endl;
+    std::cout << "with the pressure profile: "
+              << count_wanted(false, true, output, analytical, true) << std::endl;
     analytical.reference_pressure_profile = {{0., 1.}, {1., 0.}};
     analytical.reference_potential_energy = -1.;
-    std::cout << "with everything: " << count_wanted(output, analytical, true) << std::endl;
+    std::cout << "with everything: " << count_wanted(true, true, output, analytical, true)
+              << std::endl;
   }
 } // namespace
 
@@ -153,11 +169,10 @@ main(int argc, char **argv)
     {
       analytical.reference_potential_energy = reference;
       OutputParameters no_output;
-      no_output.write_vtu              = false;
-      no_output.write_pressure_profile = false;
-      const auto plugins               = Postprocessor<2>::create_wanted(
-                      {no_output, analytical, false, false,
-                       [](const std::string &, const std::string &, Json &) {}, timer, MPI_COMM_WORLD});
+      OutputKeys       keys(false, false);
+      const auto       plugins = Postprocessor<2>::create_wanted(
+              {keys.prm, no_output, analytical, false, false,
+               [](const std::string &, const std::string &, Json &) {}, timer, MPI_COMM_WORLD});
       Json record = Json::object()
                       .set("potential_energy", -1.)
                       .set("analytical", Json::object().set("chord_gap_work", 0.02));

@@ -7,6 +7,7 @@
 #define contact_fem_postprocessor_h
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/vector.h>
 
@@ -69,6 +70,9 @@ namespace contact_fem
   template <int dim>
   struct PostprocessorContext
   {
+    /// The scene's parameters: a plug-in reads its own keys (those its
+    /// declare_parameters() declared) from the subsection Output.
+    ParameterHandler         &prm;
     const OutputParameters   &output;
     const AnalyticalSolution &analytical;
     bool                      has_contact;
@@ -85,6 +89,17 @@ namespace contact_fem
   {
   public:
     virtual ~Postprocessor() = default;
+
+    /// A plug-in's own keys, declared in the subsection Output (a plug-in
+    /// with keys hides this one by its own).
+    static void
+    declare_parameters(ParameterHandler &prm)
+    {
+      (void)prm;
+    }
+    /// The keys of every registered plug-in, in the subsection Output.
+    static void
+    declare_all_parameters(ParameterHandler &prm);
 
     /// A load step converged (its state accepted by the formulation);
     /// @p step_record is the step's record.
@@ -110,11 +125,16 @@ namespace contact_fem
     /// Makes the postprocessor, or returns null if the scene does not want it.
     using Factory =
       std::function<std::unique_ptr<Postprocessor<dim>>(const PostprocessorContext<dim> &)>;
-    /// Adds the postprocessor called @p name; they run in the order of
-    /// @p rank (the order of their console lines and files), then of name.
-    /// See CONTACT_FEM_REGISTER_POSTPROCESSOR.
+    /// The declaration of a plug-in's keys (declare_parameters()).
+    using Declaration = void (*)(ParameterHandler &);
+    /// Adds the postprocessor called @p name with its keys (@p declare);
+    /// they run in the order of @p rank (the order of their console lines
+    /// and files), then of name. See CONTACT_FEM_REGISTER_POSTPROCESSOR.
     static void
-    register_postprocessor(const std::string &name, const int rank, const Factory &factory);
+    register_postprocessor(const std::string &name,
+                           const int          rank,
+                           const Factory     &factory,
+                           const Declaration  declare);
     /// The postprocessors @p context wants, in their order.
     static std::vector<std::unique_ptr<Postprocessor<dim>>>
     create_wanted(const PostprocessorContext<dim> &context);
@@ -122,14 +142,17 @@ namespace contact_fem
 
   /// Registers class template @p classname (a Postprocessor<dim> for dim 2
   /// and 3 with a static `create(const PostprocessorContext<dim> &)` that
-  /// returns null when the scene does not want it) under @p name and
+  /// returns null when the scene does not want it, and the static
+  /// `declare_parameters` of its keys if it has any) under @p name and
   /// @p rank when the library is loaded.
 #define CONTACT_FEM_REGISTER_POSTPROCESSOR(classname, name, rank)                  \
   namespace                                                                        \
   {                                                                                \
     const bool classname##_registered = [] {                                       \
-      Postprocessor<2>::register_postprocessor(name, rank, &classname<2>::create); \
-      Postprocessor<3>::register_postprocessor(name, rank, &classname<3>::create); \
+      Postprocessor<2>::register_postprocessor(name, rank, &classname<2>::create,  \
+                                               &classname<2>::declare_parameters); \
+      Postprocessor<3>::register_postprocessor(name, rank, &classname<3>::create,  \
+                                               &classname<3>::declare_parameters); \
       return true;                                                                 \
     }();                                                                           \
   }

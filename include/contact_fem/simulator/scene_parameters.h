@@ -142,8 +142,6 @@ namespace contact_fem
   struct OutputParameters
   {
     std::string directory               = "results";
-    bool        write_vtu               = true;
-    bool        write_pressure_profile  = true;
     bool        print_timing            = true;
     bool        print_newton_iterations = true;
     /// Vertices whose displacement every cycle reports.
