@@ -238,20 +238,40 @@ namespace contact_fem
       return {9u, {nodes[0], nodes[1], nodes[3], nodes[2]}};
     }
 
-    /// The slave surfaces of @p state as an ASCII VTU: the deformed faces
-    /// (degree-1 faces on a curved geometry as their straight cells) and
-    /// per node the contact pressure, the traction vector on the slave, the
-    /// weighted gap, the active flag, the pair, the formulation's own fields
-    /// and the displacement. A hanging vertex shows the interpolation of its
+    /// The value of the nodal @p field (numbers or vectors, per interface
+    /// node) at node @p n: a hanging vertex shows the interpolation of its
     /// parents.
+    template <int dim, typename Field>
+    auto
+    interpolated(const ContactInterface<dim> &interface, const Field &field, const unsigned int n)
+    {
+      if (interface.nodes[n].parents.empty())
+        return field[n];
+      std::decay_t<decltype(field[n])> v{};
+      for (const auto &[source, weight] : interface.nodes[n].parents)
+        v += weight * field[source];
+      return v;
+    }
+
+    /// The nodal fields of a surface VTU: numbers and vectors per point.
+    template <int dim>
+    struct SurfaceFields
+    {
+      std::vector<std::pair<std::string, std::function<double(unsigned int)>>>         scalars;
+      std::vector<std::pair<std::string, std::function<Tensor<1, dim>(unsigned int)>>> vectors;
+    };
+
+    /// The slave faces of @p interface as an ASCII VTU at the positions
+    /// @p position of its nodes (degree-1 faces on a curved geometry as
+    /// their straight cells), with the nodal @p fields.
     template <int dim>
     std::string
-    contact_surface_vtu(const ContactState<dim> &state)
+    surface_vtu(const ContactInterface<dim>                     &interface,
+                const std::function<Point<dim>(unsigned int)> &position,
+                const SurfaceFields<dim>                        &fields)
     {
-      const ContactInterface<dim>   &interface = state.interface;
-      const ContactFormulation<dim> &contact   = state.contact;
-      std::vector<int>               point_of_node(interface.nodes.size(), -1);
-      std::vector<unsigned int>      points, connectivity, offsets, types;
+      std::vector<int>          point_of_node(interface.nodes.size(), -1);
+      std::vector<unsigned int> points, connectivity, offsets, types;
       for (const auto &face : interface.faces)
         if (face.slave)
           {
@@ -268,9 +288,65 @@ namespace contact_fem
             offsets.push_back(connectivity.size());
             types.push_back(type);
           }
-      // Per interface node: the slave node's values, interpolated at a
-      // hanging vertex.
-      const unsigned int  n_nodes = interface.nodes.size();
+
+      std::ostringstream out;
+      out << std::setprecision(10);
+      auto vector_values = [&](const std::function<Tensor<1, dim>(unsigned int)> &at) {
+        for (const unsigned int n : points)
+          {
+            const Tensor<1, dim> v = at(n);
+            for (unsigned int d = 0; d < 3; ++d)
+              out << (d < dim ? v[d] : 0.) << (d < 2 ? ' ' : '\n');
+          }
+      };
+      out << "<?xml version=\"1.0\"?>\n"
+          << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+          << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << points.size()
+          << "\" NumberOfCells=\"" << types.size() << "\">\n"
+          << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+      vector_values([&](const unsigned int n) {
+        return Tensor<1, dim>(position(n));
+      });
+      out << "</DataArray>\n</Points>\n<Cells>\n"
+          << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+      for (const unsigned int c : connectivity)
+        out << c << '\n';
+      out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+      for (const unsigned int o : offsets)
+        out << o << '\n';
+      out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+      for (const unsigned int t : types)
+        out << t << '\n';
+      out << "</DataArray>\n</Cells>\n<PointData>\n";
+      for (const auto &[name, at] : fields.scalars)
+        {
+          out << "<DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
+          for (const unsigned int n : points)
+            out << at(n) << '\n';
+          out << "</DataArray>\n";
+        }
+      for (const auto &[name, at] : fields.vectors)
+        {
+          out << "<DataArray type=\"Float64\" Name=\"" << name
+              << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+          vector_values(at);
+          out << "</DataArray>\n";
+        }
+      out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+      return out.str();
+    }
+
+    /// The slave surfaces of @p state as an ASCII VTU: per node the contact
+    /// pressure, the weighted gap, the active flag, the pair, the
+    /// formulation's own fields, the traction vector on the slave and the
+    /// displacement. A hanging vertex shows the interpolation of its parents.
+    template <int dim>
+    std::string
+    contact_surface_vtu(const ContactState<dim> &state)
+    {
+      const ContactInterface<dim>   &interface = state.interface;
+      const ContactFormulation<dim> &contact   = state.contact;
+      const unsigned int             n_nodes   = interface.nodes.size();
       std::vector<double> pressure(n_nodes, 0.), gap(n_nodes, 0.), active(n_nodes, 0.),
         pair(n_nodes, -1.);
       std::vector<Tensor<1, dim>> traction(n_nodes);
@@ -286,73 +362,25 @@ namespace contact_fem
             traction[s.node] = contact.traction(s);
         }
       const auto own_fields = contact.nodal_fields(interface);
-      // A nodal value of @p field (numbers or vectors) at node n.
-      auto value = [&](const auto &field, const unsigned int n) {
-        if (interface.nodes[n].parents.empty())
-          return field[n];
-        std::decay_t<decltype(field[n])> v{};
-        for (const auto &[source, weight] : interface.nodes[n].parents)
-          v += weight * field[source];
-        return v;
+      auto nodal = [&interface](const auto &field) {
+        return [&interface, &field](const unsigned int n) {
+          return interpolated(interface, field, n);
+        };
       };
-
-      std::ostringstream out;
-      out << std::setprecision(10);
-      out << "<?xml version=\"1.0\"?>\n"
-          << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-          << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << points.size()
-          << "\" NumberOfCells=\"" << types.size() << "\">\n"
-          << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-      for (const unsigned int n : points)
-        {
-          const Point<dim> x = state.position(n);
-          for (unsigned int d = 0; d < 3; ++d)
-            out << (d < dim ? x[d] : 0.) << (d < 2 ? ' ' : '\n');
-        }
-      out << "</DataArray>\n</Points>\n<Cells>\n"
-          << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-      for (const unsigned int c : connectivity)
-        out << c << '\n';
-      out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-      for (const unsigned int o : offsets)
-        out << o << '\n';
-      out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-      for (const unsigned int t : types)
-        out << t << '\n';
-      out << "</DataArray>\n</Cells>\n<PointData>\n";
-      auto scalar = [&](const std::string &name, const std::vector<double> &field) {
-        out << "<DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
-        for (const unsigned int n : points)
-          out << value(field, n) << '\n';
-        out << "</DataArray>\n";
-      };
-      scalar("contact_pressure", pressure);
-      scalar("weighted_gap", gap);
-      scalar("active", active);
-      scalar("pair", pair);
+      SurfaceFields<dim> fields;
+      fields.scalars = {{"contact_pressure", nodal(pressure)},
+                        {"weighted_gap", nodal(gap)},
+                        {"active", nodal(active)},
+                        {"pair", nodal(pair)}};
       for (const auto &field : own_fields)
-        scalar(field.name, field.values);
-      auto vector = [&](const std::string                                 &name,
-                        const std::function<Tensor<1, dim>(unsigned int)> &at) {
-        out << "<DataArray type=\"Float64\" Name=\"" << name
-            << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-        for (const unsigned int n : points)
-          {
-            const Tensor<1, dim> v = at(n);
-            for (unsigned int d = 0; d < 3; ++d)
-              out << (d < dim ? v[d] : 0.) << (d < 2 ? ' ' : '\n');
-          }
-        out << "</DataArray>\n";
-      };
-      vector("traction", [&](const unsigned int n) {
-        return value(traction, n);
-      });
-      // The points less this are the reference positions.
-      vector("displacement", [&](const unsigned int n) {
-        return interface.displacement(n, state.displacement);
-      });
-      out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-      return out.str();
+        fields.scalars.emplace_back(field.name, nodal(field.values));
+      // The points less the displacement are the reference positions.
+      fields.vectors = {{"traction", nodal(traction)},
+                        {"displacement", [&](const unsigned int n) {
+                           return interface.displacement(n, state.displacement);
+                         }}};
+      return surface_vtu<dim>(
+        interface, [&state](const unsigned int n) { return state.position(n); }, fields);
     }
 
     template <int dim>
