@@ -6,6 +6,7 @@
 
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/contact/formulations/contact_formulation.h>
+#include <contact_fem/contact/mesh_tying.h>
 #include <contact_fem/postprocess/output_files.h>
 #include <contact_fem/postprocess/postprocessor.h>
 #include <contact_fem/simulator/scene_parameters.h>
@@ -383,6 +384,49 @@ namespace contact_fem
         interface, [&state](const unsigned int n) { return state.position(n); }, fields);
     }
 
+    /// The tied slave surfaces of @p tying as an ASCII VTU, as the contact
+    /// surfaces: per node the tying traction on the slave (the master's
+    /// traction on it, sigma n for the slave's outward normal n), its
+    /// normal component (positive in tension), the tied flag, the pair and
+    /// the displacement @p u (on every rank, ContactInterface::gather()).
+    template <int dim>
+    std::string
+    tied_surface_vtu(const MeshTying<dim> &tying, const std::vector<double> &u)
+    {
+      const ContactInterface<dim> &interface = tying.interface();
+      const unsigned int           n_nodes   = interface.nodes.size();
+      std::vector<double>          normal(n_nodes, 0.), tied(n_nodes, 0.), pair(n_nodes, -1.);
+      std::vector<Tensor<1, dim>>  traction(n_nodes);
+      for (unsigned int k = 0; k < interface.slave_nodes.size(); ++k)
+        {
+          const auto &s = interface.slave_nodes[k];
+          pair[s.node]  = s.pair;
+          if (!s.paired)
+            continue;
+          tied[s.node]     = 1.;
+          traction[s.node] = tying.tractions()[k];
+          normal[s.node]   = traction[s.node] * s.normal;
+        }
+      auto nodal = [&interface](const auto &field) {
+        return [&interface, &field](const unsigned int n) {
+          return interpolated(interface, field, n);
+        };
+      };
+      SurfaceFields<dim> fields;
+      fields.scalars = {{"normal_traction", nodal(normal)},
+                        {"tied", nodal(tied)},
+                        {"pair", nodal(pair)}};
+      fields.vectors = {{"traction", nodal(traction)}, {"displacement", [&](const unsigned int n) {
+                           return interface.displacement(n, u);
+                         }}};
+      return surface_vtu<dim>(
+        interface,
+        [&](const unsigned int n) {
+          return interface.nodes[n].reference + interface.displacement(n, u);
+        },
+        fields);
+    }
+
     template <int dim>
     void
     add_displacement(DataOut<dim> &data_out, const SolutionView<dim> &view)
@@ -404,7 +448,8 @@ namespace contact_fem
   void
   VtuOutput<dim>::write_solution(const SolutionView<dim> &view,
                                  const unsigned int       cycle,
-                                 const double             time)
+                                 const double             time,
+                                 const MeshTying<dim>    *tying)
   {
     const auto        &triangulation = view.dof_handler.get_triangulation();
     const unsigned int degree        = view.dof_handler.get_fe().degree;
@@ -442,27 +487,42 @@ namespace contact_fem
       {
         cycle_records.clear();
         surface_records.clear();
+        tied_records.clear();
       }
     records_cycle = cycle;
     cycle_records.emplace_back(time, name);
     write_collection("solution_cycle_" + std::to_string(cycle) + ".pvd", cycle_records);
     write_collection("solution.pvd", cycle_records);
+    // The interfaces are known on every rank: rank 0 writes them whole.
     if (view.contact)
+      write_surface("contact_surface", [&] { return contact_surface_vtu(*view.contact); }, cycle,
+                    time, surface_records);
+    if (tying)
       {
-        // The interface is known on every rank: rank 0 writes it whole.
-        const std::string surface =
-          "contact_surface_" + Utilities::int_to_string(n_solutions, 3) + ".vtu";
-        const std::string path = directory + "/" + surface;
-        throw_if_unwritten(path,
-                           Utilities::MPI::this_mpi_process(comm) != 0 ?
-                             std::string() :
-                             write_file_atomically(path, contact_surface_vtu(*view.contact)),
-                           comm);
-        surface_records.emplace_back(time, surface);
-        write_collection("contact_surface_cycle_" + std::to_string(cycle) + ".pvd",
-                         surface_records);
-        write_collection("contact_surface.pvd", surface_records);
+        const std::vector<double> u = tying->interface().gather(view.solution); // collective
+        write_surface("tied_surface", [&] { return tied_surface_vtu(*tying, u); }, cycle, time,
+                      tied_records);
       }
+  }
+
+  template <int dim>
+  void
+  VtuOutput<dim>::write_surface(const std::string                           &prefix,
+                                const std::function<std::string()>          &content,
+                                const unsigned int                           cycle,
+                                const double                                 time,
+                                std::vector<std::pair<double, std::string>> &records)
+  {
+    const std::string surface = prefix + "_" + Utilities::int_to_string(n_solutions, 3) + ".vtu";
+    const std::string path    = directory + "/" + surface;
+    throw_if_unwritten(path,
+                       Utilities::MPI::this_mpi_process(comm) != 0 ?
+                         std::string() :
+                         write_file_atomically(path, content()),
+                       comm);
+    records.emplace_back(time, surface);
+    write_collection(prefix + "_cycle_" + std::to_string(cycle) + ".pvd", records);
+    write_collection(prefix + ".pvd", records);
   }
 
   template <int dim>
@@ -523,7 +583,7 @@ namespace contact_fem
       after_load_step(const RunView<dim> &view, Json &, std::ostream &) override
       {
         TimerOutput::Scope t(timer, "Output: VTU");
-        files.write_solution(view.solution, view.cycle, view.time);
+        files.write_solution(view.solution, view.cycle, view.time, view.tying);
       }
 
       void
