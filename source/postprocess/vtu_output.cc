@@ -254,6 +254,17 @@ namespace contact_fem
       return v;
     }
 
+    /// @p field (per interface node, kept by reference) as a function of
+    /// the node, interpolated at hanging vertices.
+    template <int dim, typename Field>
+    auto
+    nodal_field(const ContactInterface<dim> &interface, const Field &field)
+    {
+      return [&interface, &field](const unsigned int n) {
+        return interpolated(interface, field, n);
+      };
+    }
+
     /// The nodal fields of a surface VTU: numbers and vectors per point.
     template <int dim>
     struct SurfaceFields
@@ -363,20 +374,15 @@ namespace contact_fem
             traction[s.node] = contact.traction(s);
         }
       const auto own_fields = contact.nodal_fields(interface);
-      auto nodal = [&interface](const auto &field) {
-        return [&interface, &field](const unsigned int n) {
-          return interpolated(interface, field, n);
-        };
-      };
       SurfaceFields<dim> fields;
-      fields.scalars = {{"contact_pressure", nodal(pressure)},
-                        {"weighted_gap", nodal(gap)},
-                        {"active", nodal(active)},
-                        {"pair", nodal(pair)}};
+      fields.scalars = {{"contact_pressure", nodal_field(interface, pressure)},
+                        {"weighted_gap", nodal_field(interface, gap)},
+                        {"active", nodal_field(interface, active)},
+                        {"pair", nodal_field(interface, pair)}};
       for (const auto &field : own_fields)
-        fields.scalars.emplace_back(field.name, nodal(field.values));
+        fields.scalars.emplace_back(field.name, nodal_field(interface, field.values));
       // The points less the displacement are the reference positions.
-      fields.vectors = {{"traction", nodal(traction)},
+      fields.vectors = {{"traction", nodal_field(interface, traction)},
                         {"displacement", [&](const unsigned int n) {
                            return interface.displacement(n, state.displacement);
                          }}};
@@ -407,16 +413,11 @@ namespace contact_fem
           traction[s.node] = tying.tractions()[k];
           normal[s.node]   = traction[s.node] * s.normal;
         }
-      auto nodal = [&interface](const auto &field) {
-        return [&interface, &field](const unsigned int n) {
-          return interpolated(interface, field, n);
-        };
-      };
       SurfaceFields<dim> fields;
-      fields.scalars = {{"normal_traction", nodal(normal)},
-                        {"tied", nodal(tied)},
-                        {"pair", nodal(pair)}};
-      fields.vectors = {{"traction", nodal(traction)}, {"displacement", [&](const unsigned int n) {
+      fields.scalars = {{"normal_traction", nodal_field(interface, normal)},
+                        {"tied", nodal_field(interface, tied)},
+                        {"pair", nodal_field(interface, pair)}};
+      fields.vectors = {{"traction", nodal_field(interface, traction)}, {"displacement", [&](const unsigned int n) {
                            return interface.displacement(n, u);
                          }}};
       return surface_vtu<dim>(

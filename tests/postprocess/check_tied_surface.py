@@ -22,9 +22,9 @@ pairs too, contact_surface.pvd must list the same steps.
 import json
 import os
 import sys
-import xml.etree.ElementTree as ET
 
 from scene_run import run_scene
+from vtu_files import collection, read_surface
 
 contact_fem, scene, stress = sys.argv[1:4]
 stress = [float(x) for x in stress.split(",")]
@@ -49,31 +49,6 @@ failures = []
 def check(condition, what):
     if not condition:
         failures.append(what)
-
-
-def numbers(element):
-    return [float(x) for x in element.text.split()]
-
-
-def collection(name):
-    root = ET.parse(os.path.join("results", name)).getroot()
-    return [(float(d.get("timestep")), d.get("file")) for d in root.iter("DataSet")]
-
-
-def read_surface(name):
-    """The points, cells and point fields of a surface VTU."""
-    piece = ET.parse(os.path.join("results", name)).getroot().find(".//Piece")
-    n_points = int(piece.get("NumberOfPoints"))
-    raw = numbers(piece.find("Points/DataArray"))
-    points = [raw[i:i + 3] for i in range(0, len(raw), 3)]
-    cells = {e.get("Name"): [int(float(x)) for x in e.text.split()] for e in piece.find("Cells")}
-    fields = {}
-    for e in piece.find("PointData"):
-        values = numbers(e)
-        components = int(e.get("NumberOfComponents", "1"))
-        check(len(values) == n_points * components, f"{name} {e.get('Name')}: {len(values)} values")
-        fields[e.get("Name")] = [values[i:i + components] for i in range(0, len(values), components)]
-    return points, cells, fields
 
 
 def cell_area(corners):
@@ -110,7 +85,8 @@ def unit_normal(points, cells):
 scale = max(abs(x) for x in stress)
 n_points = 0
 for time, surface in collection("tied_surface.pvd"):
-    points, cells, fields = read_surface(surface)
+    points, cells, fields, wrong = read_surface(surface)
+    failures += wrong
     n_points = len(points)
     check(set(fields) == {"normal_traction", "tied", "pair", "traction", "displacement"},
           f"{surface}: fields {sorted(fields)}")
