@@ -6,6 +6,7 @@
 
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/contact/formulations/contact_formulation.h>
+#include <contact_fem/contact/mesh_tying.h>
 #include <contact_fem/postprocess/output_files.h>
 #include <contact_fem/postprocess/postprocessor.h>
 #include <contact_fem/simulator/scene_parameters.h>
@@ -238,20 +239,51 @@ namespace contact_fem
       return {9u, {nodes[0], nodes[1], nodes[3], nodes[2]}};
     }
 
-    /// The slave surfaces of @p state as an ASCII VTU: the deformed faces
-    /// (degree-1 faces on a curved geometry as their straight cells) and
-    /// per node the contact pressure, the traction vector on the slave, the
-    /// weighted gap, the active flag, the pair, the formulation's own fields
-    /// and the displacement. A hanging vertex shows the interpolation of its
+    /// The value of the nodal @p field (numbers or vectors, per interface
+    /// node) at node @p n: a hanging vertex shows the interpolation of its
     /// parents.
+    template <int dim, typename Field>
+    auto
+    interpolated(const ContactInterface<dim> &interface, const Field &field, const unsigned int n)
+    {
+      if (interface.nodes[n].parents.empty())
+        return field[n];
+      std::decay_t<decltype(field[n])> v{};
+      for (const auto &[source, weight] : interface.nodes[n].parents)
+        v += weight * field[source];
+      return v;
+    }
+
+    /// @p field (per interface node, kept by reference) as a function of
+    /// the node, interpolated at hanging vertices.
+    template <int dim, typename Field>
+    auto
+    nodal_field(const ContactInterface<dim> &interface, const Field &field)
+    {
+      return [&interface, &field](const unsigned int n) {
+        return interpolated(interface, field, n);
+      };
+    }
+
+    /// The nodal fields of a surface VTU: numbers and vectors per point.
+    template <int dim>
+    struct SurfaceFields
+    {
+      std::vector<std::pair<std::string, std::function<double(unsigned int)>>>         scalars;
+      std::vector<std::pair<std::string, std::function<Tensor<1, dim>(unsigned int)>>> vectors;
+    };
+
+    /// The slave faces of @p interface as an ASCII VTU at the positions
+    /// @p position of its nodes (degree-1 faces on a curved geometry as
+    /// their straight cells), with the nodal @p fields.
     template <int dim>
     std::string
-    contact_surface_vtu(const ContactState<dim> &state)
+    surface_vtu(const ContactInterface<dim>                     &interface,
+                const std::function<Point<dim>(unsigned int)> &position,
+                const SurfaceFields<dim>                        &fields)
     {
-      const ContactInterface<dim>   &interface = state.interface;
-      const ContactFormulation<dim> &contact   = state.contact;
-      std::vector<int>               point_of_node(interface.nodes.size(), -1);
-      std::vector<unsigned int>      points, connectivity, offsets, types;
+      std::vector<int>          point_of_node(interface.nodes.size(), -1);
+      std::vector<unsigned int> points, connectivity, offsets, types;
       for (const auto &face : interface.faces)
         if (face.slave)
           {
@@ -268,9 +300,65 @@ namespace contact_fem
             offsets.push_back(connectivity.size());
             types.push_back(type);
           }
-      // Per interface node: the slave node's values, interpolated at a
-      // hanging vertex.
-      const unsigned int  n_nodes = interface.nodes.size();
+
+      std::ostringstream out;
+      out << std::setprecision(10);
+      auto vector_values = [&](const std::function<Tensor<1, dim>(unsigned int)> &at) {
+        for (const unsigned int n : points)
+          {
+            const Tensor<1, dim> v = at(n);
+            for (unsigned int d = 0; d < 3; ++d)
+              out << (d < dim ? v[d] : 0.) << (d < 2 ? ' ' : '\n');
+          }
+      };
+      out << "<?xml version=\"1.0\"?>\n"
+          << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+          << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << points.size()
+          << "\" NumberOfCells=\"" << types.size() << "\">\n"
+          << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+      vector_values([&](const unsigned int n) {
+        return Tensor<1, dim>(position(n));
+      });
+      out << "</DataArray>\n</Points>\n<Cells>\n"
+          << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+      for (const unsigned int c : connectivity)
+        out << c << '\n';
+      out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+      for (const unsigned int o : offsets)
+        out << o << '\n';
+      out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+      for (const unsigned int t : types)
+        out << t << '\n';
+      out << "</DataArray>\n</Cells>\n<PointData>\n";
+      for (const auto &[name, at] : fields.scalars)
+        {
+          out << "<DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
+          for (const unsigned int n : points)
+            out << at(n) << '\n';
+          out << "</DataArray>\n";
+        }
+      for (const auto &[name, at] : fields.vectors)
+        {
+          out << "<DataArray type=\"Float64\" Name=\"" << name
+              << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+          vector_values(at);
+          out << "</DataArray>\n";
+        }
+      out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+      return out.str();
+    }
+
+    /// The slave surfaces of @p state as an ASCII VTU: per node the contact
+    /// pressure, the weighted gap, the active flag, the pair, the
+    /// formulation's own fields, the traction vector on the slave and the
+    /// displacement. A hanging vertex shows the interpolation of its parents.
+    template <int dim>
+    std::string
+    contact_surface_vtu(const ContactState<dim> &state)
+    {
+      const ContactInterface<dim>   &interface = state.interface;
+      const ContactFormulation<dim> &contact   = state.contact;
+      const unsigned int             n_nodes   = interface.nodes.size();
       std::vector<double> pressure(n_nodes, 0.), gap(n_nodes, 0.), active(n_nodes, 0.),
         pair(n_nodes, -1.);
       std::vector<Tensor<1, dim>> traction(n_nodes);
@@ -286,73 +374,58 @@ namespace contact_fem
             traction[s.node] = contact.traction(s);
         }
       const auto own_fields = contact.nodal_fields(interface);
-      // A nodal value of @p field (numbers or vectors) at node n.
-      auto value = [&](const auto &field, const unsigned int n) {
-        if (interface.nodes[n].parents.empty())
-          return field[n];
-        std::decay_t<decltype(field[n])> v{};
-        for (const auto &[source, weight] : interface.nodes[n].parents)
-          v += weight * field[source];
-        return v;
-      };
-
-      std::ostringstream out;
-      out << std::setprecision(10);
-      out << "<?xml version=\"1.0\"?>\n"
-          << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-          << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << points.size()
-          << "\" NumberOfCells=\"" << types.size() << "\">\n"
-          << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-      for (const unsigned int n : points)
-        {
-          const Point<dim> x = state.position(n);
-          for (unsigned int d = 0; d < 3; ++d)
-            out << (d < dim ? x[d] : 0.) << (d < 2 ? ' ' : '\n');
-        }
-      out << "</DataArray>\n</Points>\n<Cells>\n"
-          << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-      for (const unsigned int c : connectivity)
-        out << c << '\n';
-      out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-      for (const unsigned int o : offsets)
-        out << o << '\n';
-      out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-      for (const unsigned int t : types)
-        out << t << '\n';
-      out << "</DataArray>\n</Cells>\n<PointData>\n";
-      auto scalar = [&](const std::string &name, const std::vector<double> &field) {
-        out << "<DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
-        for (const unsigned int n : points)
-          out << value(field, n) << '\n';
-        out << "</DataArray>\n";
-      };
-      scalar("contact_pressure", pressure);
-      scalar("weighted_gap", gap);
-      scalar("active", active);
-      scalar("pair", pair);
+      SurfaceFields<dim> fields;
+      fields.scalars = {{"contact_pressure", nodal_field(interface, pressure)},
+                        {"weighted_gap", nodal_field(interface, gap)},
+                        {"active", nodal_field(interface, active)},
+                        {"pair", nodal_field(interface, pair)}};
       for (const auto &field : own_fields)
-        scalar(field.name, field.values);
-      auto vector = [&](const std::string                                 &name,
-                        const std::function<Tensor<1, dim>(unsigned int)> &at) {
-        out << "<DataArray type=\"Float64\" Name=\"" << name
-            << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-        for (const unsigned int n : points)
-          {
-            const Tensor<1, dim> v = at(n);
-            for (unsigned int d = 0; d < 3; ++d)
-              out << (d < dim ? v[d] : 0.) << (d < 2 ? ' ' : '\n');
-          }
-        out << "</DataArray>\n";
-      };
-      vector("traction", [&](const unsigned int n) {
-        return value(traction, n);
-      });
-      // The points less this are the reference positions.
-      vector("displacement", [&](const unsigned int n) {
-        return interface.displacement(n, state.displacement);
-      });
-      out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-      return out.str();
+        fields.scalars.emplace_back(field.name, nodal_field(interface, field.values));
+      // The points less the displacement are the reference positions.
+      fields.vectors = {{"traction", nodal_field(interface, traction)},
+                        {"displacement", [&](const unsigned int n) {
+                           return interface.displacement(n, state.displacement);
+                         }}};
+      return surface_vtu<dim>(
+        interface, [&state](const unsigned int n) { return state.position(n); }, fields);
+    }
+
+    /// The tied slave surfaces of @p tying as an ASCII VTU, as the contact
+    /// surfaces: per node the tying traction on the slave (the master's
+    /// traction on it, sigma n for the slave's outward normal n), its
+    /// normal component (positive in tension), the tied flag, the pair and
+    /// the displacement @p u (on every rank, ContactInterface::gather()).
+    template <int dim>
+    std::string
+    tied_surface_vtu(const MeshTying<dim> &tying, const std::vector<double> &u)
+    {
+      const ContactInterface<dim> &interface = tying.interface();
+      const unsigned int           n_nodes   = interface.nodes.size();
+      std::vector<double>          normal(n_nodes, 0.), tied(n_nodes, 0.), pair(n_nodes, -1.);
+      std::vector<Tensor<1, dim>>  traction(n_nodes);
+      for (unsigned int k = 0; k < interface.slave_nodes.size(); ++k)
+        {
+          const auto &s = interface.slave_nodes[k];
+          pair[s.node]  = s.pair;
+          if (!s.paired)
+            continue;
+          tied[s.node]     = 1.;
+          traction[s.node] = tying.tractions()[k];
+          normal[s.node]   = traction[s.node] * s.normal;
+        }
+      SurfaceFields<dim> fields;
+      fields.scalars = {{"normal_traction", nodal_field(interface, normal)},
+                        {"tied", nodal_field(interface, tied)},
+                        {"pair", nodal_field(interface, pair)}};
+      fields.vectors = {{"traction", nodal_field(interface, traction)}, {"displacement", [&](const unsigned int n) {
+                           return interface.displacement(n, u);
+                         }}};
+      return surface_vtu<dim>(
+        interface,
+        [&](const unsigned int n) {
+          return interface.nodes[n].reference + interface.displacement(n, u);
+        },
+        fields);
     }
 
     template <int dim>
@@ -376,7 +449,8 @@ namespace contact_fem
   void
   VtuOutput<dim>::write_solution(const SolutionView<dim> &view,
                                  const unsigned int       cycle,
-                                 const double             time)
+                                 const double             time,
+                                 const MeshTying<dim>    *tying)
   {
     const auto        &triangulation = view.dof_handler.get_triangulation();
     const unsigned int degree        = view.dof_handler.get_fe().degree;
@@ -414,27 +488,42 @@ namespace contact_fem
       {
         cycle_records.clear();
         surface_records.clear();
+        tied_records.clear();
       }
     records_cycle = cycle;
     cycle_records.emplace_back(time, name);
     write_collection("solution_cycle_" + std::to_string(cycle) + ".pvd", cycle_records);
     write_collection("solution.pvd", cycle_records);
+    // The interfaces are known on every rank: rank 0 writes them whole.
     if (view.contact)
+      write_surface("contact_surface", [&] { return contact_surface_vtu(*view.contact); }, cycle,
+                    time, surface_records);
+    if (tying)
       {
-        // The interface is known on every rank: rank 0 writes it whole.
-        const std::string surface =
-          "contact_surface_" + Utilities::int_to_string(n_solutions, 3) + ".vtu";
-        const std::string path = directory + "/" + surface;
-        throw_if_unwritten(path,
-                           Utilities::MPI::this_mpi_process(comm) != 0 ?
-                             std::string() :
-                             write_file_atomically(path, contact_surface_vtu(*view.contact)),
-                           comm);
-        surface_records.emplace_back(time, surface);
-        write_collection("contact_surface_cycle_" + std::to_string(cycle) + ".pvd",
-                         surface_records);
-        write_collection("contact_surface.pvd", surface_records);
+        const std::vector<double> u = tying->interface().gather(view.solution); // collective
+        write_surface("tied_surface", [&] { return tied_surface_vtu(*tying, u); }, cycle, time,
+                      tied_records);
       }
+  }
+
+  template <int dim>
+  void
+  VtuOutput<dim>::write_surface(const std::string                           &prefix,
+                                const std::function<std::string()>          &content,
+                                const unsigned int                           cycle,
+                                const double                                 time,
+                                std::vector<std::pair<double, std::string>> &records)
+  {
+    const std::string surface = prefix + "_" + Utilities::int_to_string(n_solutions, 3) + ".vtu";
+    const std::string path    = directory + "/" + surface;
+    throw_if_unwritten(path,
+                       Utilities::MPI::this_mpi_process(comm) != 0 ?
+                         std::string() :
+                         write_file_atomically(path, content()),
+                       comm);
+    records.emplace_back(time, surface);
+    write_collection(prefix + "_cycle_" + std::to_string(cycle) + ".pvd", records);
+    write_collection(prefix + ".pvd", records);
   }
 
   template <int dim>
@@ -505,7 +594,7 @@ namespace contact_fem
       after_load_step(const RunView<dim> &view, Json &, std::ostream &) override
       {
         TimerOutput::Scope t(timer, "Output: VTU");
-        files.write_solution(view.solution, view.cycle, view.time);
+        files.write_solution(view.solution, view.cycle, view.time, view.tying);
       }
 
       void

@@ -15,9 +15,9 @@ at the same current and reference positions.
 import csv
 import os
 import sys
-import xml.etree.ElementTree as ET
 
 from scene_run import run_scene
+from vtu_files import collection, read_surface
 
 contact_fem, scene = sys.argv[1:3]
 run_scene(contact_fem, scene, "Output directory=results", "Output/Write VTU=true",
@@ -31,32 +31,14 @@ def check(condition, what):
         failures.append(what)
 
 
-def numbers(element):
-    return [float(x) for x in element.text.split()]
-
-
-def collection(name):
-    root = ET.parse(os.path.join("results", name)).getroot()
-    return [(float(d.get("timestep")), d.get("file")) for d in root.iter("DataSet")]
-
-
 # The collections: the load steps at their load times.
 for name in ("solution.pvd", "contact_surface.pvd", "contact_surface_cycle_0.pvd"):
     times = [t for t, _ in collection(name)]
     check(times == [0.5, 1.0], f"{name}: times {times}, expected [0.5, 1.0]")
 
-last_surface = collection("contact_surface.pvd")[-1][1]
-piece = ET.parse(os.path.join("results", last_surface)).getroot().find(".//Piece")
-n_points = int(piece.get("NumberOfPoints"))
-raw = numbers(piece.find("Points/DataArray"))
-points = [raw[i:i + 3] for i in range(0, len(raw), 3)]
-cells = {e.get("Name"): [int(float(x)) for x in e.text.split()] for e in piece.find("Cells")}
-fields = {}
-for e in piece.find("PointData"):
-    values = numbers(e)
-    components = int(e.get("NumberOfComponents", "1"))
-    check(len(values) == n_points * components, f"{e.get('Name')}: {len(values)} values")
-    fields[e.get("Name")] = [values[i:i + components] for i in range(0, len(values), components)]
+points, cells, fields, wrong = read_surface(collection("contact_surface.pvd")[-1][1])
+failures += wrong
+n_points = len(points)
 check(set(cells["types"]) == {3}, f"cell types {set(cells['types'])}, expected lines (3)")
 check(cells["offsets"][-1] == len(cells["connectivity"]), "offsets do not end at the connectivity")
 

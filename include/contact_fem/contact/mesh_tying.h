@@ -88,6 +88,21 @@ namespace contact_fem
     void
     condense_residual(TrilinosWrappers::MPI::Vector &residual, const IndexSet &owned);
 
+    /// The tied surfaces (nodes, slave faces and mortar operators).
+    const ContactInterface<dim> &
+    interface() const
+    {
+      return surfaces;
+    }
+
+    /// Per entry of interface().slave_nodes: the tying traction on the
+    /// slave from the latest condense_residual() (zero where not tied).
+    const std::vector<Tensor<1, dim>> &
+    tractions() const
+    {
+      return traction;
+    }
+
     /// The number of tied slave nodes (paired, with a multiplier).
     unsigned int
     n_tied_nodes() const;
