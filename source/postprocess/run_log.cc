@@ -1,5 +1,6 @@
 #include <contact_fem/postprocess/run_log.h>
 
+#include <iostream>
 #include <sstream>
 
 namespace contact_fem

@@ -13,6 +13,7 @@
 #include <contact_fem/adaptivity/refinement.h>
 #include <contact_fem/adaptivity/stress_recovery.h>
 
+#include <map>
 #include <set>
 
 namespace contact_fem

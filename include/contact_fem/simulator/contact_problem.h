@@ -43,12 +43,10 @@
 #include <contact_fem/adaptivity/stress_recovery.h>
 #include <contact_fem/material/volumetric_projection.h>
 #include <contact_fem/postprocess/analytical_comparison.h>
-#include <contact_fem/postprocess/checkerboard.h>
 #include <contact_fem/postprocess/postprocessor.h>
 #include <contact_fem/postprocess/run_log.h>
 
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <memory>
 #include <string>
