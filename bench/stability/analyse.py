@@ -618,11 +618,14 @@ def judge_differs(c, by_id, other_id):
         c["notes"].append("no converged run of %s to compare with" % other_id)
         return
     mine, theirs = c.get("profile") or [], other.get("profile") or []
-    if not mine or len(mine) != len(theirs) or "tangential_traction" not in mine[0]:
+    # 2D: one signed column; 3D: the vector's components.
+    keys = [k for k in ("tangential_traction", "tangential_traction_x", "tangential_traction_y",
+                        "tangential_traction_z") if mine and k in mine[0]]
+    if not mine or len(mine) != len(theirs) or not keys:
         fail_comparison(c, "no tangential traction profile to compare with %s" % other_id)
         return
     scale = max(abs(r["pressure"]) for r in theirs) or 1.
-    diff = max(abs(a["tangential_traction"] - b["tangential_traction"])
+    diff = max(math.sqrt(sum((a[k] - b[k]) ** 2 for k in keys))
                for a, b in zip(mine, theirs)) / scale
     qa = c["contact"].get("total_tangential_contact_force")
     qb = other["contact"].get("total_tangential_contact_force")

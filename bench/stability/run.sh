@@ -934,6 +934,117 @@ run_case $G sphere-alm-k1e-6 "$HERTZ3D" 60 "Hertz sphere, alm, Stiffness factor 
 run_case $G sphere-alm-k1e6 "$HERTZ3D" 60 "Hertz sphere, alm, Stiffness factor 1e6" "hertz $P3 same=3d-stiffness/plate-1e4" \
   "${S3D[@]}" "Contact/Stiffness factor=1e6"
 
+# --- 3D friction: the 2D friction group repeated on 3D scenes ---------------
+# bench/stability/frictional_patch_3d.prm (FP3D): the 3D frictional patch of
+# tests/scenes/frictional_patch_3d_01 (pressed by p = 1, pulled at 30
+# degrees in the plane; uniform stress; every node slips from t = 2 on:
+# |Q| / N = mu exactly at mu = 0.3; a larger mu leaves the pull below the
+# friction capacity, and the side tractions (those of mu = 0.3) then make
+# the state non-uniform: cone checks only). Hertz sphere (Q1, Sphere
+# refinements = 3, as tests/scenes/frictional_hertz_3d_01): the quarter
+# model's tangential force is the radial traction of a quarter (not zero:
+# no ratio check). 3D Cattaneo (prm/cattaneo_3d.prm): P, then
+# Q up to 0.875 mu P.
+G=3d-friction
+FP3D="$script_dir/frictional_patch_3d.prm"
+FQ13D=("Finite element/Degree=1" "Geometry/Hertz sphere/Sphere refinements=3" "Geometry/Hertz sphere/Contact refinements=0")
+CATT3D="$repo_root/prm/cattaneo_3d.prm"
+run_case $G patch-mu0      "$FP3D" 30 "3D patch, mu = 0 (alm frictional, frictionless through the frictional code)" "ratio=0 slip-all" \
+  "Contact/Friction=coulomb 0"
+run_case $G patch-mu1e-3   "$FP3D" 30 "3D patch, mu = 1e-3: slides from the first pull step" "cone ratio=0.001 slip-all" \
+  "Contact/Friction=coulomb 1e-3"
+run_case $G patch-mu0.3    "$FP3D" 30 "3D patch, mu = 0.3 (the test scene): slides at the last steps" "cone ratio=0.3 slip-all" \
+  "Contact/Friction=coulomb 0.3"
+run_case $G patch-mu0.3-pair "$FP3D" 30 "3D patch, mu = 0.3 given per pair ('3: coulomb 0.3'): same as patch-mu0.3" "cone ratio=0.3 slip-all same=3d-friction/patch-mu0.3" \
+  "Contact/Friction=3: coulomb 0.3"
+run_case $G patch-mu0.3-20steps "$FP3D" 30 "3D patch, mu = 0.3, 20 load steps: same end state" "cone ratio=0.3 slip-all same=3d-friction/patch-mu0.3" \
+  "Load stepping/Number of load steps=20"
+run_case $G patch-mu0.3-default-tol "$FP3D" 30 "3D patch, mu = 0.3 with the default Newton tolerances" "ratio=0.3,1e-6 slip-all" \
+  "Newton/Multiplier relative tolerance=1e-4" "Newton/Multiplier absolute tolerance=1e-9"
+run_case $G patch-mu1      "$FP3D" 30 "3D patch, mu = 1: the pull stays below the capacity" "cone" \
+  "Contact/Friction=coulomb 1"
+run_case $G patch-mu1e3    "$FP3D" 30 "3D patch, mu = 1e3: sticks everywhere, no slip in any iteration" "cone stick-all" \
+  "Contact/Friction=coulomb 1e3"
+run_case $G patch-mu1e3-1step "$FP3D" 30 "3D patch, mu = 1e3, the whole path (press and pull) in one step" "cone stick-all same=3d-friction/patch-mu1e3" \
+  "Contact/Friction=coulomb 1e3" "Load stepping/Number of load steps=1"
+run_case $G patch-tresca0.3 "$FP3D" 30 "3D patch, Tresca bound 0.3 (= mu p at p = 1): the Coulomb answer" "cone ratio=0.3 slip-all same=3d-friction/patch-mu0.3" \
+  "Contact/Friction=tresca 0.3"
+run_case $G patch-tresca1e3 "$FP3D" 30 "3D patch, Tresca bound 1e3: sticks" "cone stick-all same=3d-friction/patch-mu1e3" \
+  "Contact/Friction=tresca 1e3"
+run_case $G patch-tresca0  "$FP3D" 30 "3D patch, Tresca bound 0: frictionless" "ratio=0 slip-all same=3d-friction/patch-mu0" \
+  "Contact/Friction=tresca 0"
+# Pure slip on a block pressed with nu = 0: no node moves tangentially
+# while it is pressed, so no slip state exists: the run must stop and say
+# why.
+run_case $G patch-pure-slip-mu1e-3 "$FP3D" 30 "3D patch, mu = 1e-3, Contact/Pure slip = true: nothing slips while pressed (nu = 0)" "diag=Pure slip = true" \
+  "Contact/Friction=coulomb 1e-3" "Contact/Pure slip=true"
+# Stiff / soft pairs (E ratio 1e6 both ways).
+run_case $G patch-base-1e6 "$FP3D" 30 "3D patch, mu = 0.3, base block 1e6 x stiffer than the upper one" "cone ratio=0.3 slip-all" \
+  "Materials/Young's moduli=1e8, 100"
+run_case $G patch-upper-1e6 "$FP3D" 30 "3D patch, mu = 0.3, upper (master) block 1e6 x stiffer than the slave" "cone ratio=0.3 slip-all" \
+  "Materials/Young's moduli=100, 1e8"
+# Reversed and cyclic pulls (no side tractions: the pull alone, along the
+# 30-degree direction): forward to 0.05 (the slide starts at
+# 0.0075; turning the traction round takes 0.036), back to 0 (t = 3); and three full
+# cycles +-0.05 (t = 1 ... 4, 36 steps). The unloading branch differs from
+# the loading one (hysteresis).
+REV3D=("Boundary conditions/Traction=" "Boundary conditions/Prescribed displacement=1: x = 0.8660254037844386*0.05*min(max(t-1,0), max(3-t,0)); 1: y = 0.5*0.05*min(max(t-1,0), max(3-t,0))")
+run_case $G reverse-pressed "$FP3D" 30 "3D patch pressed only (t = 1, 8 steps), mu = 0.3: the unloaded reference" "cone" \
+  "${REV3D[@]}" "Load stepping/End time=1" "Load stepping/Number of load steps=8"
+run_case $G reverse-up      "$FP3D" 30 "3D reversed pull, loading branch: 0.05 along the pull at t = 2 (slides)" "cone ratio=0.3,1e-5 slip-all" \
+  "${REV3D[@]}" "Load stepping/End time=2" "Load stepping/Number of load steps=16"
+run_case $G reverse         "$FP3D" 30 "3D reversed pull back to 0 (t = 3, 24 steps): slides back, Q = -mu N along the pull (the tractions turn a little off the pull: |Q| / N = mu to 1e-5, 1e-4 after cycles)" "cone ratio=0.3,1e-5 slip-all differs=3d-friction/reverse-pressed" \
+  "${REV3D[@]}" "Load stepping/End time=3" "Load stepping/Number of load steps=24"
+run_case $G cyclic          "$FP3D" 60 "3D cyclic pull +-0.05 along the pull, three cycles (t = 1 ... 4, 48 steps): ends sliding forward" "cone ratio=0.3,1e-4 slip-all" \
+  "Boundary conditions/Traction=" "Boundary conditions/Prescribed displacement=1: x = 0.8660254037844386*0.05*sin(6.283185307179586*max(t-1,0)); 1: y = 0.5*0.05*sin(6.283185307179586*max(t-1,0))" \
+  "Load stepping/End time=4" "Load stepping/Number of load steps=48"
+# With mu = 1e3 a node slips only where its pressure vanishes: at the rim
+# that lifts off, one node switches between stick and slip, and the step
+# control cuts the step until it settles.
+run_case $G reverse-mu1e3   "$FP3D" 30 "3D reversed pull 0.05, mu = 1e3: sticks at the end, but nodes lift off and touch again elsewhere (path remembered)" "cone differs=3d-friction/reverse-pressed" \
+  "${REV3D[@]}" "Contact/Friction=coulomb 1e3" "Load stepping/End time=3" "Load stepping/Number of load steps=24"
+run_case $G reverse-0.005-mu1e3 "$FP3D" 30 "3D reversed pull 0.005, mu = 1e3: no slip, no lift-off, so the pressed state again" "cone stick-all same=3d-friction/reverse-pressed" \
+  "Boundary conditions/Traction=" "Boundary conditions/Prescribed displacement=1: x = 0.8660254037844386*0.005*min(max(t-1,0), max(3-t,0)); 1: y = 0.5*0.005*min(max(t-1,0), max(3-t,0))" \
+  "Contact/Friction=coulomb 1e3" "Load stepping/End time=3" "Load stepping/Number of load steps=24"
+# Penalty frictional against alm frictional.
+PENF3D="Contact/Formulation=penalty frictional"
+run_case $G penalty-mu0    "$FP3D" 30 "3D patch, penalty frictional, mu = 0" "ratio=0 slip-all" \
+  "$PENF3D" "Contact/Friction=coulomb 0"
+for f in 1e-2 1 1e2 1e4; do
+  run_case $G "penalty-mu0.3-k$f" "$FP3D" 30 "3D patch, penalty frictional, mu = 0.3, Stiffness factor = $f" "ratio=0.3 slip-all near=3d-friction/patch-mu0.3,1e-2" \
+    "$PENF3D" "Contact/Stiffness factor=$f"
+done
+for et in 1e1 1e3 1e7; do
+  run_case $G "penalty-mu0.3-et$et" "$FP3D" 30 "3D patch, penalty frictional, mu = 0.3, Tangential penalty = $et" "ratio=0.3 slip-all near=3d-friction/patch-mu0.3,1e-2" \
+    "$PENF3D" "Contact/Tangential penalty=$et"
+done
+run_case $G penalty-mu1e3  "$FP3D" 30 "3D patch, penalty frictional, mu = 1e3: sticks (elastically)" "stick-all near=3d-friction/patch-mu1e3,1e-3" \
+  "$PENF3D" "Contact/Friction=coulomb 1e3"
+run_case $G penalty-reverse "$FP3D" 30 "3D reversed pull, penalty frictional" "ratio=0.3,1e-4 slip-all near=3d-friction/reverse,1e-2" \
+  "$PENF3D" "${REV3D[@]}" "Load stepping/End time=3" "Load stepping/Number of load steps=24"
+run_case $G penalty-tresca0.3 "$FP3D" 30 "3D patch, penalty frictional, Tresca 0.3" "ratio=0.3 slip-all" \
+  "$PENF3D" "Contact/Friction=tresca 0.3"
+run_case $G patch-mu0.3-updated "$FP3D" 30 "3D patch, mu = 0.3, Kinematics = updated" "cone ratio=0.3 slip-all" \
+  "Contact/Kinematics=updated"
+# Hertz sphere with friction: symmetric load, no tangential force.
+run_case $G hertz-mu0      "$HERTZ3D" 60 "Hertz sphere (Q1), alm frictional, mu = 0: the frictionless answer" "hertz-approx $P3 ratio=0 same=3d-friction/hertz-frictionless" \
+  "${FQ13D[@]}" "Contact/Formulation=alm frictional" "Contact/Friction=coulomb 0"
+run_case $G hertz-frictionless "$HERTZ3D" 60 "Hertz sphere (Q1), alm frictionless: the reference of hertz-mu0" "hertz-approx $P3" \
+  "${FQ13D[@]}"
+run_case $G hertz-mu0.2    "$HERTZ3D" 60 "Hertz sphere (Q1), mu = 0.2 (tests/scenes/frictional_hertz_3d_01)" "hertz-approx $P3 cone" \
+  "${FQ13D[@]}" "Contact/Formulation=alm frictional" "Contact/Friction=coulomb 0.2"
+run_case $G hertz-mu0.2-8steps "$HERTZ3D" 60 "Hertz sphere (Q1), mu = 0.2, 8 load steps" "hertz-approx $P3 cone" \
+  "${FQ13D[@]}" "Contact/Formulation=alm frictional" "Contact/Friction=coulomb 0.2" "Load stepping/Number of load steps=8"
+run_case $G hertz-mu1e3    "$HERTZ3D" 60 "Hertz sphere (Q1), mu = 1e3: full stick" "hertz-approx $P3 cone stick-all" \
+  "${FQ13D[@]}" "Contact/Formulation=alm frictional" "Contact/Friction=coulomb 1e3"
+run_case $G hertz-tresca   "$HERTZ3D" 60 "Hertz sphere (Q1), Tresca bound 1e6 (0.07 p0)" "hertz-approx $P3 cone" \
+  "${FQ13D[@]}" "Contact/Formulation=alm frictional" "Contact/Friction=tresca 1e6"
+run_case $G hertz-penalty-mu0.2 "$HERTZ3D" 60 "Hertz sphere (Q1), penalty frictional, mu = 0.2, against alm" "hertz-approx $P3 near=3d-friction/hertz-mu0.2,2e-2" \
+  "${FQ13D[@]}" "Contact/Formulation=penalty frictional" "Contact/Friction=coulomb 0.2"
+run_case $G hertz-sphere-1e4 "$HERTZ3D" 60 "Hertz sphere (Q1), mu = 0.2, sphere 1e4 x stiffer than the plate (stiff slave), plate refined twice" "hertz-approx warn=stiffer $P3 cone" \
+  "${FQ13D[@]}" "Contact/Formulation=alm frictional" "Contact/Friction=coulomb 0.2" "Materials/Young's moduli=1e12, 1e8" "Geometry/Hertz sphere/Plate refinements=2"
+run_case $G cattaneo       "$CATT3D" 120 "prm/cattaneo_3d.prm (Q up to 0.875 mu P)" "hertz-approx cone"
+
 # --- 21. 3D iterative linear solver ----------------------------------------
 # Linear solver/Type = iterative on the stiff and nearly incompressible 3D
 # cases: the direct solver's answer (near=, 1e-6) or a stop naming the

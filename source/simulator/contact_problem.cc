@@ -115,10 +115,8 @@ namespace contact_fem
                                   ", " + std::to_string(differing) +
                                   " node(s) switching), so the "
                                   "semi-smooth Newton iteration cannot settle. Smaller load "
-                                  "steps usually break the cycle (the step is split). "
-                                  "With Contact/Pure slip = true a scene that sticks "
-                                  "somewhere cannot settle: set it only where the whole "
-                                  "contact slips.",
+                                  "steps usually break the cycle (the step is split)." +
+                                  contact.non_convergence_note(),
                                 true);
           }
     }
@@ -963,6 +961,7 @@ namespace contact_fem
                             monitor.last_residuals() + "." +
                             diagnosis().non_convergence_hint(assessment.stalled, monitor.last_r_u(),
                                                              monitor.last_r_lambda()) +
+                            (contact ? contact->non_convergence_note() : std::string()) +
                             diagnosis().precision_hint(),
                           !assessment.stalled);
 

@@ -212,6 +212,15 @@ namespace contact_fem
       return "";
     }
 
+    /// What the formulation's own settings add to the message of a Newton
+    /// iteration that did not converge (a sentence with a leading space),
+    /// or nothing.
+    virtual std::string
+    non_convergence_note() const
+    {
+      return "";
+    }
+
     /// A value per interface node, named, for the pressure profile and the
     /// VTU output (friction: tangential traction, slip, stick).
     struct NodalField

@@ -52,6 +52,15 @@ namespace contact_fem
       return true;
     }
 
+    std::string
+    non_convergence_note() const override
+    {
+      return pure_slip ? " Contact/Pure slip = true makes every active node slip in the "
+                         "direction of its trial traction: where the scene sticks, or moves "
+                         "no node tangentially at all, no such state exists (set it false)." :
+                         "";
+    }
+
     /// Whether node @p n is active and sticks.
     bool
     held_tangentially(const unsigned int n) const override
