@@ -57,6 +57,10 @@ GROUPS = [
     ("3d-mesh", "3D: distorted meshes (Geometry/Distortion) on the patch blocks and the sphere"),
     ("3d-regularised", "3D: penalty formulation, automatic, too small and too large penalty, "
                        "adaptive; alm scale factor"),
+    ("3d-friction", "3D friction: Coulomb mu = 0 ... 1e3 and Tresca on the 3D frictional "
+                    "patch, reversed and cyclic pulls, stiff/soft pairs, penalty frictional "
+                    "across penalty scales, updated kinematics, pure slip, Hertz sphere and "
+                    "3D Cattaneo"),
     ("3d-iterative", "3D: iterative linear solver on the stiff and nearly incompressible "
                      "cases; Type = auto at its limits"),
 ]
@@ -856,7 +860,7 @@ def main():
         warnings = any(c["warning_labels"] for c in gc)
         md.append("## %s" % title)
         md.append("")
-        md.append(table(gc, hertz, pressure, warnings, friction=(g == "friction")))
+        md.append(table(gc, hertz, pressure, warnings, friction=(g in ("friction", "3d-friction"))))
         md.append("")
         if g in ("incompressible", "3d-incompressible"):
             pivot = locking_table(gc)
