@@ -758,9 +758,9 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactProblem<dim>::prepare_load_step(const double time,
-                                         const double step_size,
-                                         const bool   first_step)
+  ContactProblem<dim>::prepare_load_step(const double    time,
+                                         const double    step_size,
+                                         const StepStart start)
   {
     current_time = time;
     make_dirichlet_constraints(dirichlet_inputs(), relevant_dofs, time, dirichlet_constraints);
@@ -784,7 +784,7 @@ namespace contact_fem
                    0.;
         });
         interface_displacement = interface->gather(solution);
-        search->start_step(interface_displacement, prescribed, step_size, first_step);
+        search->start_step(interface_displacement, prescribed, step_size, start);
       }
     make_sparsity_pattern();
     factorisation_current = false;
@@ -864,12 +864,12 @@ namespace contact_fem
   ContactProblem<dim>::solve_load_step(const unsigned int step,
                                        const double       time,
                                        const double       step_size,
-                                       const bool         first_step,
+                                       const StepStart    start,
                                        Json              &record)
   {
     solving = true;
     Timer step_timer;
-    prepare_load_step(time, step_size, first_step);
+    prepare_load_step(time, step_size, start);
     pcout << "  Load step " << step + 1 << ", t = " << time << std::endl;
     if (output.print_newton_iterations)
       pcout << NewtonMonitor::header(contact ? contact->iteration_header() : "",
@@ -1027,7 +1027,7 @@ namespace contact_fem
     // search.
     LoadStepControl control(load_stepping, 0., load_stepping.n_steps);
     const double    time = control.next_time();
-    prepare_load_step(time, time, true);
+    prepare_load_step(time, time, StepStart::unloaded);
   }
 
   template <int dim>
@@ -1378,8 +1378,11 @@ namespace contact_fem
         Json         step_record = Json::object();
         try
           {
-            solve_load_step(path.n_solved, time, time - control.converged_time(),
-                            path.n_solved == 0, step_record);
+            const StepStart start = path.n_solved > 0 ? StepStart::continued :
+                                    whole_path        ? StepStart::unloaded :
+                                                        StepStart::transferred;
+            solve_load_step(path.n_solved, time, time - control.converged_time(), start,
+                            step_record);
           }
         catch (const NewtonFailure &failure)
           {

@@ -25,7 +25,7 @@ namespace contact_fem
   SearchControl<dim>::start_step(const std::vector<double> &displacement,
                                  const double               prescribed,
                                  const double               step_size,
-                                 const bool                 first_step)
+                                 const StepStart            start)
   {
     TimerOutput::Scope t(timer, "Contact: search");
     step_start_displacement = displacement;
@@ -48,7 +48,7 @@ namespace contact_fem
         motion_allowance[p] = search_growth * (moved[p] + predicted);
       }
     interface.update(search_configuration, parameters.search_factor, motion_allowance);
-    contact.start_load_step(interface, displacement, first_step);
+    contact.start_load_step(interface, displacement, start);
   }
 
   template <int dim>
@@ -121,7 +121,7 @@ namespace contact_fem
     // replaces the interface's own).
     const std::vector<double> configuration = interface.search_configuration();
     interface.update(configuration, parameters.search_factor, motion_allowance);
-    contact.start_load_step(interface, displacement, false);
+    contact.start_load_step(interface, displacement, StepStart::continued);
   }
 
   template <int dim>

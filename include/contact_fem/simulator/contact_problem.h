@@ -153,7 +153,7 @@ namespace contact_fem
     solve_load_step(const unsigned int step,
                     const double       time,
                     const double       step_size,
-                    const bool         first_step,
+                    const StepStart    start,
                     Json              &step_record);
     /// The Newton iterations of load step @p step (@p where names it in
     /// messages) until it converges; returns their number, throws a
@@ -171,7 +171,7 @@ namespace contact_fem
     /// Dirichlet values and loads at @p time, the contact search and the
     /// sparsity pattern of the step.
     void
-    prepare_load_step(const double time, const double step_size, const bool first_step);
+    prepare_load_step(const double time, const double step_size, const StepStart start);
     /// One Newton update: constraints, assembly, linear solve to a
     /// residual below Newton's @p newton_residual_target (failures become
     /// NewtonFailures naming @p where), damping.

@@ -43,7 +43,7 @@ namespace contact_fem
     start_step(const std::vector<double> &displacement,
                const double               prescribed,
                const double               step_size,
-               const bool                 first_step);
+               const StepStart            start);
 
     /// During Newton: if the iterate @p displacement moved the surfaces
     /// farther than the search reaches, makes room for 1.5 times that

@@ -211,7 +211,7 @@ namespace contact_fem
   void
   AlmFrictional<dim>::start_load_step(const ContactInterface<dim> &interface,
                                       const std::vector<double>   &u,
-                                      const bool                   first_step)
+                                      const StepStart              start)
   {
     this->set_pair_scaling(interface, 1.);
     std::fill(released_pressure.begin(), released_pressure.end(), 0.);
@@ -221,7 +221,7 @@ namespace contact_fem
     for (const auto &s : interface.slave_nodes)
       {
         const double g = s.paired ? interface.gap(s, u) : 0.;
-        active[s.node] = s.paired && decides_active(s, g, true, first_step) &&
+        active[s.node] = s.paired && decides_active(s, g, true, start) &&
                          this->eliminated_component(interface, s) < dim;
         if (!active[s.node])
           {
@@ -569,9 +569,9 @@ namespace contact_fem
       {
         if (!s.paired)
           continue;
-        const double g = interface.gap(s, u);
-        const bool   now_active =
-          decides_active(s, g, false, false) && this->eliminated_component(interface, s) < dim;
+        const double g          = interface.gap(s, u);
+        const bool   now_active = decides_active(s, g, false, StepStart::continued) &&
+                                this->eliminated_component(interface, s) < dim;
         if (now_active != active[s.node])
           ++changes;
         if (!now_active)

@@ -21,10 +21,10 @@ namespace contact_fem
   bool
   AlmFrictionless<dim>::decides_active(const typename ContactInterface<dim>::SlaveNode &s,
                                        const double                                     g,
-                                       const bool at_step_start,
-                                       const bool first_step) const
+                                       const bool      at_step_start,
+                                       const StepStart start) const
   {
-    return this->augmented_rule(s, g, at_step_start, first_step);
+    return this->augmented_rule(s, g, at_step_start, start);
   }
 
   template <int dim>
@@ -39,7 +39,7 @@ namespace contact_fem
   void
   AlmFrictionless<dim>::start_load_step(const ContactInterface<dim> &interface,
                                         const std::vector<double>   &u,
-                                        const bool                   first_step)
+                                        const StepStart              start)
   {
     this->set_pair_scaling(interface, 1.);
     std::fill(released_pressure.begin(), released_pressure.end(), 0.);
@@ -55,7 +55,7 @@ namespace contact_fem
           }
         const double g = interface.gap(s, u);
         active[s.node] =
-          decides_active(s, g, true, first_step) && this->eliminated_component(interface, s) < dim;
+          decides_active(s, g, true, start) && this->eliminated_component(interface, s) < dim;
         if (!active[s.node])
           {
             released_pressure[s.node] = pressure[s.node];
@@ -106,8 +106,9 @@ namespace contact_fem
       {
         if (!s.paired)
           continue;
-        const bool now_active = decides_active(s, interface.gap(s, u), false, false) &&
-                                this->eliminated_component(interface, s) < dim;
+        const bool now_active =
+          decides_active(s, interface.gap(s, u), false, StepStart::continued) &&
+          this->eliminated_component(interface, s) < dim;
         if (now_active != active[s.node])
           ++changes;
         if (!now_active)

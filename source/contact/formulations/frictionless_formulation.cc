@@ -54,7 +54,9 @@ namespace contact_fem
                       "Multiplies the automatic penalty and scale factor.");
     prm.declare_entry("Active check factor", "1e-2", Patterns::Double(0.),
                       "At the first load step, slave nodes whose gap is below this "
-                      "factor times their nodal size start in the active set.");
+                      "factor times their nodal size start in the active set. On a "
+                      "refined mesh of an adaptive cycle, which starts from the "
+                      "transferred solution at the same load, at most 1e-2.");
     prm.leave_subsection();
   }
 

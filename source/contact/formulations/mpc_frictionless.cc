@@ -12,10 +12,10 @@ namespace contact_fem
   bool
   MpcFrictionless<dim>::decides_active(const typename ContactInterface<dim>::SlaveNode &s,
                                        const double                                     g,
-                                       const bool at_step_start,
-                                       const bool first_step) const
+                                       const bool      at_step_start,
+                                       const StepStart start) const
   {
-    return this->reaction_rule(s, g, at_step_start, first_step);
+    return this->reaction_rule(s, g, at_step_start, start);
   }
 
   template <int dim>

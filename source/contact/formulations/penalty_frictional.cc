@@ -148,9 +148,9 @@ namespace contact_fem
   void
   PenaltyFrictional<dim>::start_load_step(const ContactInterface<dim> &interface,
                                           const std::vector<double>   &u,
-                                          const bool                   first_step)
+                                          const StepStart              start)
   {
-    PenaltyFrictionless<dim>::start_load_step(interface, u, first_step);
+    PenaltyFrictionless<dim>::start_load_step(interface, u, start);
     tangent_penalty.resize(this->penalty.size());
     for (unsigned int p = 0; p < tangent_penalty.size(); ++p)
       tangent_penalty[p] = tangential_penalty > 0. ? tangential_penalty : this->penalty[p];

@@ -62,7 +62,7 @@ namespace contact_fem
   void
   PenaltyFrictionless<dim>::start_load_step(const ContactInterface<dim> &interface,
                                             const std::vector<double>   &u,
-                                            const bool                   first_step)
+                                            const StepStart              start)
   {
     // A stiff spring (penetration ~ 1e-4 h p / E) unless the adaptive rule
     // raises it where needed.
@@ -82,7 +82,7 @@ namespace contact_fem
         if (node_penalty[s.node] == 0. || !adaptive)
           node_penalty[s.node] = this->penalty[s.pair];
         previous_gap[s.node] = g;
-        active[s.node]       = this->starts_active(s, g, first_step);
+        active[s.node]       = this->starts_active(s, g, start);
         if (!active[s.node])
           pressure[s.node] = 0.;
       }

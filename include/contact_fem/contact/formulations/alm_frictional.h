@@ -76,7 +76,7 @@ namespace contact_fem
     void
     start_load_step(const ContactInterface<dim> &interface,
                     const std::vector<double>   &u,
-                    const bool                   first_step) override;
+                    const StepStart              start) override;
 
     void
     add_constraints(const ContactInterface<dim> &interface,
@@ -164,9 +164,9 @@ namespace contact_fem
     decides_active(const SlaveNode &s,
                    const double     g,
                    const bool       at_step_start,
-                   const bool       first_step) const
+                   const StepStart  start) const
     {
-      return this->augmented_rule(s, g, at_step_start, first_step);
+      return this->augmented_rule(s, g, at_step_start, start);
     }
 
     /// The pressure of the slip bound of active node @p s at gap @p g in

@@ -41,7 +41,7 @@ namespace contact_fem
     void
     start_load_step(const ContactInterface<dim> &interface,
                     const std::vector<double>   &u,
-                    const bool                   first_step) override;
+                    const StepStart              start) override;
 
     void
     add_constraints(const ContactInterface<dim> &interface,
@@ -69,13 +69,13 @@ namespace contact_fem
 
     /// Whether paired slave node @p s is active at gap @p g, from the
     /// current pressures and active set: lambda - eps g > 0, and at the
-    /// start of a step (@p at_step_start) on its first step of a mesh
-    /// (@p first_step) also about to touch.
+    /// start of a step (@p at_step_start) also about to touch, depending
+    /// on how the step starts (@p start: about_to_touch()).
     virtual bool
     decides_active(const typename ContactInterface<dim>::SlaveNode &s,
                    const double                                     g,
                    const bool                                       at_step_start,
-                   const bool                                       first_step) const;
+                   const StepStart                                  start) const;
 
   private:
     /// Multipliers of the nodes released in the last update (for the

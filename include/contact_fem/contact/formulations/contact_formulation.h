@@ -44,6 +44,16 @@ namespace contact_fem
    * A new formulation is one new class derived from this one and one line in
    * the registry (source/contact/formulations/contact_formulation.cc).
    */
+  /// How a load step starts: from the unloaded state (the first step of a
+  /// load path), from a solution transferred to a refined mesh at the same
+  /// load (a later adaptive cycle), or from the last converged step.
+  enum class StepStart
+  {
+    unloaded,
+    transferred,
+    continued
+  };
+
   template <int dim>
   class ContactFormulation
   {
@@ -69,11 +79,12 @@ namespace contact_fem
 
     /// After a search: scaling and active set at the start of a load step
     /// (or after a wider search during it), at the interface displacement
-    /// @p u; on the first step of a mesh nodes about to touch start active.
+    /// @p u; how the step starts (@p start) decides whether nodes about to
+    /// touch start active.
     virtual void
     start_load_step(const ContactInterface<dim> &interface,
                     const std::vector<double>   &u,
-                    const bool                   first_step) = 0;
+                    const StepStart              start) = 0;
 
     /// Adds the conditions imposed as affine constraints (of the active set,
     /// or of every paired node with @p all_candidates, for the sparsity

@@ -101,15 +101,32 @@ namespace contact_fem
     void
     set_pair_scaling(const ContactInterface<dim> &interface, const double penalty_factor);
 
-    /// The start-of-step rule: lambda_j - eps g_j > 0, and on the first step
-    /// of a mesh also g_j <= Active check factor * h_j (about to touch).
+    /// The start-of-step rule: lambda_j - eps g_j > 0, or about_to_touch().
     bool
     starts_active(const typename ContactInterface<dim>::SlaveNode &s,
                   const double                                     g,
-                  const bool                                       first_step) const
+                  const StepStart                                  start) const
     {
-      return pressure[s.node] - penalty[s.pair] * g > 0. ||
-             (first_step && g <= parameters.active_check_factor * s.size);
+      return pressure[s.node] - penalty[s.pair] * g > 0. || about_to_touch(s, g, start);
+    }
+
+    /// Whether slave node @p s at gap @p g joins the first active set of a
+    /// step that starts as @p start: from the unloaded state when g_j <=
+    /// Active check factor * h_j; from a solution transferred to a new mesh
+    /// when g_j <= 1e-2 h_j at most (that solution is in equilibrium at this
+    /// load: its contact nodes hold g = 0 to round-off, which the margin
+    /// keeps active, and a wider one would activate a rim of nodes around
+    /// its contact zone); never within a load path.
+    bool
+    about_to_touch(const typename ContactInterface<dim>::SlaveNode &s,
+                   const double                                     g,
+                   const StepStart                                  start) const
+    {
+      if (start == StepStart::unloaded)
+        return g <= parameters.active_check_factor * s.size;
+      if (start == StepStart::transferred)
+        return g <= std::min(parameters.active_check_factor, 1e-2) * s.size;
+      return false;
     }
 
     /// The active-set rule of the augmented Lagrangian for paired slave
@@ -119,9 +136,9 @@ namespace contact_fem
     augmented_rule(const typename ContactInterface<dim>::SlaveNode &s,
                    const double                                     g,
                    const bool                                       at_step_start,
-                   const bool                                       first_step) const
+                   const StepStart                                  start) const
     {
-      return at_step_start ? starts_active(s, g, first_step) :
+      return at_step_start ? starts_active(s, g, start) :
                              pressure[s.node] - penalty[s.pair] * g > 0.;
     }
 
@@ -129,16 +146,16 @@ namespace contact_fem
     /// active node stays active while its recovered pressure compresses
     /// (an active gap is held at zero, so only the reaction can release
     /// it), an inactive one becomes active when it penetrates; at the start
-    /// of a step also, on the first step of a mesh, when about to touch.
+    /// of a step also when about_to_touch().
     bool
     reaction_rule(const typename ContactInterface<dim>::SlaveNode &s,
                   const double                                     g,
                   const bool                                       at_step_start,
-                  const bool                                       first_step) const
+                  const StepStart                                  start) const
     {
       const bool compressed = active[s.node] && pressure[s.node] > 0.;
       if (at_step_start)
-        return compressed || g < 0. || (first_step && g <= parameters.active_check_factor * s.size);
+        return compressed || g < 0. || about_to_touch(s, g, start);
       return active[s.node] ? compressed : g < 0.;
     }
 

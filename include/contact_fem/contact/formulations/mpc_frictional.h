@@ -51,9 +51,9 @@ namespace contact_fem
     decides_active(const SlaveNode &s,
                    const double     g,
                    const bool       at_step_start,
-                   const bool       first_step) const override
+                   const StepStart  start) const override
     {
-      return this->reaction_rule(s, g, at_step_start, first_step);
+      return this->reaction_rule(s, g, at_step_start, start);
     }
 
     /// The recovered pressure.

@@ -20,8 +20,9 @@ namespace contact_fem
    *   (lambda_j > 0), and is released when its reaction pulls;
    * - an inactive node becomes active when it penetrates (g_j < 0).
    * At the start of a load step the nodes active and in compression at the
-   * last converged step stay active, penetrating nodes join, and on the
-   * first step of a mesh nodes about to touch (Active check factor) too.
+   * last converged step stay active, penetrating nodes join, and at the
+   * start of a load path or of a new mesh nodes about to touch too
+   * (FrictionlessFormulation::about_to_touch()).
    * The converged state is the one of "alm frictionless" (both satisfy
    * g >= 0, lambda >= 0, lambda g = 0 with the same constraints); only the
    * path of the active set may differ.
@@ -43,7 +44,7 @@ namespace contact_fem
     decides_active(const typename ContactInterface<dim>::SlaveNode &s,
                    const double                                     g,
                    const bool                                       at_step_start,
-                   const bool                                       first_step) const override;
+                   const StepStart                                  start) const override;
   };
 } // namespace contact_fem
 

@@ -88,7 +88,7 @@ namespace contact_fem
     void
     start_load_step(const ContactInterface<dim> &interface,
                     const std::vector<double>   &u,
-                    const bool                   first_step) override;
+                    const StepStart              start) override;
 
     /// The couplings of every component of the slave node and its masters
     /// (the gap gradient drops the components normal to n, the slip

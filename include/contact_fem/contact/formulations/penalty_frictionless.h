@@ -37,7 +37,7 @@ namespace contact_fem
     void
     start_load_step(const ContactInterface<dim> &interface,
                     const std::vector<double>   &u,
-                    const bool                   first_step) override;
+                    const StepStart              start) override;
 
     /// Only with @p all_candidates: the gap constraints of every paired node,
     /// whose couplings (closed over hanging nodes) are those the penalty
