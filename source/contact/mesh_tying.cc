@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 namespace contact_fem
@@ -100,6 +101,46 @@ namespace contact_fem
                                           "surfaces are apart, or their normals do not "
                                           "oppose); tied surfaces must touch."));
       }
+  }
+
+  template <int dim>
+  void
+  MeshTying<dim>::check_apart_from(const ContactInterface<dim> &contact) const
+  {
+    // A node by its first DoF (the same in both interfaces), from the faces
+    // (the search has not run on the contact surfaces yet): its contact
+    // pair and side.
+    std::map<types::global_dof_index, std::pair<unsigned int, bool>> on_contact;
+    for (const auto &face : contact.faces)
+      for (const unsigned int n : face.nodes)
+        {
+          auto &entry = on_contact[contact.nodes[n].dofs[0]];
+          if (face.slave || entry.first == 0)
+            entry = {face.pair + 1, face.slave};
+        }
+    const auto side = [](const bool slave) {
+      return std::string(slave ? "slave" : "master");
+    };
+    for (const auto &face : surfaces.faces)
+      for (const unsigned int n : face.nodes)
+        {
+          const auto &node  = surfaces.nodes[n];
+          const auto  other = on_contact.find(node.dofs[0]);
+          // Only a master of both carries no line of either.
+          if (other == on_contact.end() || (!face.slave && !other->second.second))
+            continue;
+          AssertThrow(false,
+                      ExcMessage("Contact/Tied pairs: the node at " +
+                                 coordinates_text(node.reference) + " is on the " +
+                                 side(face.slave) + " side of the tied pair '" +
+                                 pair_text(surfaces.pairs[face.pair]) + "' and on the " +
+                                 side(other->second.second) + " side of the contact pair '" +
+                                 pair_text(contact.pairs[other->second.first - 1]) +
+                                 "' of Contact/Pairs (the surfaces share an edge or corner). "
+                                 "Its tying and contact constraints would conflict or form a "
+                                 "cycle; let the tied and the contact surfaces share no node "
+                                 "(end one an element before the other)."));
+        }
   }
 
   template <int dim>

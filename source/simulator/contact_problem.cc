@@ -354,6 +354,8 @@ namespace contact_fem
                           dirichlet_constraints, hanging_constraints, materials,
                           contact_parameters.search_factor,
                           contact_parameters.tied_release_threshold, comm);
+        if (interface)
+          tying->check_apart_from(*interface);
       }
     // Contact and tying constraints couple slave DoFs to master DoFs
     // anywhere: every rank may write to the rows and entries of all

@@ -95,6 +95,13 @@ namespace contact_fem
       return surfaces.dofs();
     }
 
+    /// Throws, naming both pairs and the node, if a node of a tied surface
+    /// is also on a contact surface of @p contact (an edge or corner they
+    /// share), unless it is a master of both: its tying line and a contact
+    /// line would conflict (a slave of both) or chain into a cycle.
+    void
+    check_apart_from(const ContactInterface<dim> &contact) const;
+
     /// Takes the Dirichlet values at dofs() of the present load step (from
     /// their owners, collective).
     void
