@@ -86,7 +86,7 @@ namespace contact_fem
                       "With Tied release in tension: the normal tension, as a fraction "
                       "of the largest tying traction of the pair at that Newton "
                       "iteration, beyond which a tied node is released (so that "
-                      "round-off releases nothing). In [0, 1).");
+                      "round-off releases nothing). In [1e-6, 1).");
     prm.declare_entry("Allow loss of contact", "false", Patterns::Bool(),
                       "If false, a converged step without any active contact node "
                       "stops the run with a 'no contact' diagnosis (the load pulls "
@@ -149,9 +149,10 @@ namespace contact_fem
                     ExcMessage("Contact/Tied release in tension = true, but Contact/Tied pairs "
                                "is empty: there is no tied pair to release."));
         tied_release_threshold = prm.get_double("Tied release threshold");
-        AssertThrow(*tied_release_threshold < 1.,
-                    ExcMessage("Contact/Tied release threshold: expected a value in [0, 1) "
-                               "(a fraction of the pair's largest tying traction)."));
+        AssertThrow(*tied_release_threshold >= 1e-6 && *tied_release_threshold < 1.,
+                    ExcMessage("Contact/Tied release threshold: expected a value in [1e-6, 1) "
+                               "(a fraction of the pair's largest tying traction; below 1e-6 "
+                               "round-off of the tractions would decide the release)."));
       }
     search_factor         = prm.get_double("Search factor");
     updated_kinematics    = prm.get("Kinematics") == "updated";

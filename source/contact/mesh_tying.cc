@@ -359,14 +359,24 @@ namespace contact_fem
   }
 
   template <int dim>
+  unsigned int
+  MeshTying<dim>::n_paired(const unsigned int p) const
+  {
+    return std::count_if(surfaces.slave_nodes.begin(), surfaces.slave_nodes.end(),
+                         [p](const auto &s) {
+                           return s.paired && s.pair == p;
+                         });
+  }
+
+  template <int dim>
   Json
   MeshTying<dim>::results(std::ostream &out) const
   {
     Json result = Json::array();
     for (unsigned int p = 0; p < surfaces.pairs.size(); ++p)
       {
-        unsigned int   n = 0, released = 0, held = 0;
-        double         area = 0., largest = 0., widest = 0.;
+        unsigned int   n    = 0;
+        double         area = 0., largest = 0.;
         double         normal_min     = std::numeric_limits<double>::max();
         double         normal_max     = std::numeric_limits<double>::lowest();
         double         tangential_max = 0.;
@@ -375,10 +385,6 @@ namespace contact_fem
           if (const auto &s = surfaces.slave_nodes[k]; s.pair == p && s.paired)
             {
               n += bond[k] == Bond::tied;
-              released += bond[k] != Bond::tied;
-              held += bond[k] == Bond::held;
-              if (bond[k] == Bond::open)
-                widest = std::max(widest, opening[k]);
               area += s.D;
               force += slave_force[k];
               largest             = std::max(largest, traction[k].norm());
@@ -394,20 +400,17 @@ namespace contact_fem
         for (unsigned int k = 0; k < surfaces.slave_nodes.size(); ++k)
           if (const auto &s = surfaces.slave_nodes[k]; s.pair == p && s.paired && largest > 0.)
             spread = std::max(spread, (traction[k] - mean).norm() / largest);
-        const std::string name = pair_text(surfaces.pairs[p]);
-        result.push(Json::object()
-                      .set("pair", name)
-                      .set("tied_slave_nodes", n)
-                      .set("area", area)
-                      .set("force", json_array(force, dim))
-                      .set("mean_traction", json_array(mean, dim))
-                      .set("traction_spread", spread)
-                      .set("min_normal_traction", normal_min)
-                      .set("max_normal_traction", normal_max)
-                      .set("max_tangential_traction", tangential_max)
-                      .set("released_nodes", released)
-                      .set("held_released_nodes", held)
-                      .set("largest_opening", widest));
+        const std::string name   = pair_text(surfaces.pairs[p]);
+        Json              record = Json::object();
+        record.set("pair", name)
+          .set("tied_slave_nodes", n)
+          .set("area", area)
+          .set("force", json_array(force, dim))
+          .set("mean_traction", json_array(mean, dim))
+          .set("traction_spread", spread)
+          .set("min_normal_traction", normal_min)
+          .set("max_normal_traction", normal_max)
+          .set("max_tangential_traction", tangential_max);
         out << "    tied pair " << name << ": " << n << " tied slave nodes, force on the slave "
             << vector_text(force, largest * area) << ", mean traction "
             << vector_text(mean, largest) << std::endl
@@ -417,11 +420,51 @@ namespace contact_fem
             << "      traction spread max|t - mean|/max|t|: " << value_or_ok(spread, 1e-10)
             << std::endl;
         if (releases())
-          out << "      released in tension: " << released << " slave nodes (" << held
-              << " of them held in contact), largest opening "
-              << value_text(widest, surfaces.statistics[p].mean_slave_size) << std::endl;
+          release_results(p, largest, record, out);
+        result.push(record);
       }
     return result;
+  }
+
+  template <int dim>
+  void
+  MeshTying<dim>::release_results(const unsigned int p,
+                                  const double       largest,
+                                  Json              &record,
+                                  std::ostream      &out) const
+  {
+    unsigned int released = 0, held = 0;
+    double       tied_normal_max = std::numeric_limits<double>::lowest();
+    double       open_min = std::numeric_limits<double>::max(), open_max = 0.;
+    for (unsigned int k = 0; k < surfaces.slave_nodes.size(); ++k)
+      if (const auto &s = surfaces.slave_nodes[k]; s.pair == p && s.paired)
+        {
+          released += bond[k] != Bond::tied;
+          held += bond[k] == Bond::held;
+          if (bond[k] == Bond::tied)
+            tied_normal_max = std::max(tied_normal_max, traction[k] * s.normal);
+          if (bond[k] == Bond::open)
+            {
+              open_min = std::min(open_min, opening[k]);
+              open_max = std::max(open_max, opening[k]);
+            }
+        }
+    if (released == held)
+      open_min = 0.;
+    record.set("released_nodes", released)
+      .set("held_released_nodes", held)
+      .set("max_tied_normal_traction", tied_normal_max)
+      .set("min_opening", open_min)
+      .set("max_opening", open_max);
+    const double h = surfaces.statistics[p].mean_slave_size;
+    out << "      released in tension: " << released << " slave nodes (" << held
+        << " of them held in contact)";
+    if (released > held)
+      out << ", the open ones open by " << value_text(open_min, h) << " ... "
+          << value_text(open_max, h);
+    if (released < n_paired(p))
+      out << "; largest normal traction of a tied node " << value_text(tied_normal_max, largest);
+    out << std::endl;
   }
 
   template class MeshTying<2>;

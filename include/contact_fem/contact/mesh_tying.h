@@ -216,6 +216,20 @@ namespace contact_fem
                     AffineConstraints<double>                       &constraints,
                     const bool                                       test) const;
 
+    /// The release in tension of pair @p p (@p largest its largest
+    /// traction): the released and held nodes, the largest normal traction
+    /// of a tied node and the openings of the open ones, set in @p record
+    /// and printed to @p out.
+    void
+    release_results(const unsigned int p,
+                    const double       largest,
+                    Json              &record,
+                    std::ostream      &out) const;
+
+    /// The number of paired slave nodes of pair @p p.
+    unsigned int
+    n_paired(const unsigned int p) const;
+
     /// Per pair: the traction scale the release threshold is relative to.
     std::vector<double>
     traction_scales() const;
