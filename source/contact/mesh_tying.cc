@@ -181,27 +181,12 @@ namespace contact_fem
   }
 
   template <int dim>
-  unsigned int
-  MeshTying<dim>::normal_component(const typename ContactInterface<dim>::SlaveNode &s) const
-  {
-    unsigned int best       = dim;
-    double       best_value = 0.1; // a component nearly tangential cannot carry the line
-    for (unsigned int d = 0; d < dim; ++d)
-      if (!surfaces.nodes[s.node].fixed[d] && std::abs(s.normal[d]) > best_value)
-        {
-          best       = d;
-          best_value = std::abs(s.normal[d]);
-        }
-    return best;
-  }
-
-  template <int dim>
   void
   MeshTying<dim>::add_normal_line(const typename ContactInterface<dim>::SlaveNode &s,
                                   AffineConstraints<double>                       &constraints,
                                   const bool                                       test) const
   {
-    const unsigned int c     = normal_component(s);
+    const unsigned int c     = normal_line_component(surfaces, s);
     const auto        &slave = surfaces.nodes[s.node];
     if (c == dim || !constraints.can_store_line(slave.dofs[c]) ||
         constraints.is_constrained(slave.dofs[c]))
@@ -251,7 +236,7 @@ namespace contact_fem
     };
     if (bond[k] == Bond::held)
       {
-        const unsigned int c = normal_component(s);
+        const unsigned int c = normal_line_component(surfaces, s);
         if (c == dim)
           return;
         const double r_c = r[surfaces.position(slave.dofs[c])];
@@ -321,7 +306,7 @@ namespace contact_fem
         if (bond[k] != Bond::open && pulls)
           bond[k] = Bond::open;
         else if (bond[k] == Bond::open && opening[k] < -penetration_over_h * s.size &&
-                 normal_component(s) < dim)
+                 normal_line_component(surfaces, s) < dim)
           bond[k] = Bond::held;
         update.changes += bond[k] != before;
       }

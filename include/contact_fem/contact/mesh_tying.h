@@ -205,11 +205,6 @@ namespace contact_fem
     void
     check_surfaces_touch() const;
 
-    /// The free slave component that the normal line of @p s eliminates
-    /// (the largest normal part), dim if none.
-    unsigned int
-    normal_component(const typename ContactInterface<dim>::SlaveNode &s) const;
-
     /// The normal line of held slave node @p s (n . u_s = n . D^-1 M u_m).
     void
     add_normal_line(const typename ContactInterface<dim>::SlaveNode &s,
