@@ -296,7 +296,8 @@ namespace contact_fem
         const auto &s = surfaces.slave_nodes[k];
         if (!s.paired)
           continue;
-        // Positive: the slave moves away from its mortar image.
+        // The opening: positive where the slave moves off its mortar image
+        // against its outward normal (away from the master).
         Tensor<1, dim> relative = surfaces.displacement(s.node, u);
         for (const auto &[m, value] : s.M)
           relative -= value / s.D * surfaces.displacement(m, u);
