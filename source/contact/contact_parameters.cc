@@ -72,6 +72,21 @@ namespace contact_fem
                       "pair. Empty: no tying (no tying code runs). Independent of "
                       "Pairs: a scene may have both, or only tied pairs (then no "
                       "contact formulation runs). See doc/mesh_tying.md.");
+    prm.declare_entry("Tied release in tension", "false", Patterns::Bool(),
+                      "Tied pairs with a tension check: a tied slave node whose normal "
+                      "tying traction pulls (tension) by more than Tied release threshold "
+                      "times the largest tying traction of its pair is released for good "
+                      "(debonded, never tied again) and becomes a frictionless contact "
+                      "node of the pair: free while the surfaces open there, held by the "
+                      "normal line of 'mpc frictionless' where they would penetrate. "
+                      "Decided per Newton iteration, as an active set; the answer then "
+                      "depends on the load path (every adaptive cycle re-solves it). "
+                      "See doc/mesh_tying.md.");
+    prm.declare_entry("Tied release threshold", "1e-3", Patterns::Double(0., 1.),
+                      "With Tied release in tension: the normal tension, as a fraction "
+                      "of the largest tying traction of the pair at that Newton "
+                      "iteration, beyond which a tied node is released (so that "
+                      "round-off releases nothing). In [1e-6, 1).");
     prm.declare_entry("Allow loss of contact", "false", Patterns::Bool(),
                       "If false, a converged step without any active contact node "
                       "stops the run with a 'no contact' diagnosis (the load pulls "
@@ -127,6 +142,18 @@ namespace contact_fem
         pairs.push_back(pair);
       }
     tied_pairs = parse_tied_pairs(prm.get("Tied pairs"), pairs);
+    tied_release_threshold.reset();
+    if (prm.get_bool("Tied release in tension"))
+      {
+        AssertThrow(!tied_pairs.empty(),
+                    ExcMessage("Contact/Tied release in tension = true, but Contact/Tied pairs "
+                               "is empty: there is no tied pair to release."));
+        tied_release_threshold = prm.get_double("Tied release threshold");
+        AssertThrow(*tied_release_threshold >= 1e-6 && *tied_release_threshold < 1.,
+                    ExcMessage("Contact/Tied release threshold: expected a value in [1e-6, 1) "
+                               "(a fraction of the pair's largest tying traction; below 1e-6 "
+                               "round-off of the tractions would decide the release)."));
+      }
     search_factor         = prm.get_double("Search factor");
     updated_kinematics    = prm.get("Kinematics") == "updated";
     penetration_tolerance = prm.get_double("Penetration tolerance");

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 namespace contact_fem
@@ -49,6 +50,7 @@ namespace contact_fem
                              const AffineConstraints<double> &hanging,
                              const Materials<dim>            &materials,
                              const double                     search_factor,
+                             const std::optional<double>     &release_threshold,
                              const MPI_Comm                   comm)
   {
     surfaces.initialize(mapping, dof_handler, pairs, dirichlet, hanging, materials, comm);
@@ -59,6 +61,11 @@ namespace contact_fem
     fixed_values.assign(surfaces.dofs().size(), 0.);
     traction.assign(surfaces.slave_nodes.size(), Tensor<1, dim>());
     slave_force.assign(surfaces.slave_nodes.size(), Tensor<1, dim>());
+    this->release_threshold = release_threshold;
+    bond.assign(surfaces.slave_nodes.size(), Bond::tied);
+    accepted_bond = bond;
+    opening.assign(surfaces.slave_nodes.size(), 0.);
+    bonds_of_iteration.clear();
   }
 
   template <int dim>
@@ -98,6 +105,46 @@ namespace contact_fem
 
   template <int dim>
   void
+  MeshTying<dim>::check_apart_from(const ContactInterface<dim> &contact) const
+  {
+    // A node by its first DoF (the same in both interfaces), from the faces
+    // (the search has not run on the contact surfaces yet): its contact
+    // pair and side.
+    std::map<types::global_dof_index, std::pair<unsigned int, bool>> on_contact;
+    for (const auto &face : contact.faces)
+      for (const unsigned int n : face.nodes)
+        {
+          auto &entry = on_contact[contact.nodes[n].dofs[0]];
+          if (face.slave || entry.first == 0)
+            entry = {face.pair + 1, face.slave};
+        }
+    const auto side = [](const bool slave) {
+      return std::string(slave ? "slave" : "master");
+    };
+    for (const auto &face : surfaces.faces)
+      for (const unsigned int n : face.nodes)
+        {
+          const auto &node  = surfaces.nodes[n];
+          const auto  other = on_contact.find(node.dofs[0]);
+          // Only a master of both carries no line of either.
+          if (other == on_contact.end() || (!face.slave && !other->second.second))
+            continue;
+          AssertThrow(false,
+                      ExcMessage("Contact/Tied pairs: the node at " +
+                                 coordinates_text(node.reference) + " is on the " +
+                                 side(face.slave) + " side of the tied pair '" +
+                                 pair_text(surfaces.pairs[face.pair]) + "' and on the " +
+                                 side(other->second.second) + " side of the contact pair '" +
+                                 pair_text(contact.pairs[other->second.first - 1]) +
+                                 "' of Contact/Pairs (the surfaces share an edge or corner). "
+                                 "Its tying and contact constraints would conflict or form a "
+                                 "cycle; let the tied and the contact surfaces share no node "
+                                 "(end one an element before the other)."));
+        }
+  }
+
+  template <int dim>
+  void
   MeshTying<dim>::set_fixed_values(
     const std::function<double(types::global_dof_index)> &value_on_owner)
   {
@@ -106,11 +153,18 @@ namespace contact_fem
 
   template <int dim>
   void
-  MeshTying<dim>::add_constraints(AffineConstraints<double> &constraints, const bool test) const
+  MeshTying<dim>::add_constraints(AffineConstraints<double> &constraints,
+                                  const bool                 test,
+                                  const bool                 all_candidates) const
   {
-    for (const auto &s : surfaces.slave_nodes)
+    for (unsigned int k = 0; k < surfaces.slave_nodes.size(); ++k)
       {
+        const auto &s = surfaces.slave_nodes[k];
         if (!s.paired)
+          continue;
+        if (bond[k] == Bond::held && !all_candidates)
+          add_normal_line(s, constraints, test);
+        if (bond[k] != Bond::tied && !all_candidates)
           continue;
         const auto &slave = surfaces.nodes[s.node];
         for (unsigned int d = 0; d < dim; ++d)
@@ -128,33 +182,156 @@ namespace contact_fem
 
   template <int dim>
   void
+  MeshTying<dim>::add_normal_line(const typename ContactInterface<dim>::SlaveNode &s,
+                                  AffineConstraints<double>                       &constraints,
+                                  const bool                                       test) const
+  {
+    const unsigned int c     = normal_line_component(surfaces, s);
+    const auto        &slave = surfaces.nodes[s.node];
+    if (c == dim || !constraints.can_store_line(slave.dofs[c]) ||
+        constraints.is_constrained(slave.dofs[c]))
+      return;
+    // n . u_s = n . sum_l (M_jl / D_j) u_l, solved for u_s,c: the tied
+    // reference (opening 0), not the geometric gap.
+    ConstraintLine line;
+    for (const auto &[m, value] : s.M)
+      for (unsigned int d = 0; d < dim; ++d)
+        line.add(surfaces.nodes[m], d, value * s.normal[d] / (s.D * s.normal[c]), surfaces,
+                 fixed_values, test);
+    for (unsigned int d = 0; d < dim; ++d)
+      if (d != c)
+        line.add(slave, d, -s.normal[d] / s.normal[c], surfaces, fixed_values, test);
+    line.store(slave.dofs[c], constraints);
+  }
+
+  template <int dim>
+  void
   MeshTying<dim>::condense_residual(TrilinosWrappers::MPI::Vector &residual, const IndexSet &owned)
   {
     const std::vector<double> r = surfaces.gather(residual);
     std::vector<double>       correction(r.size(), 0.);
     for (unsigned int k = 0; k < surfaces.slave_nodes.size(); ++k)
-      {
-        const auto &s = surfaces.slave_nodes[k];
-        traction[k] = slave_force[k] = Tensor<1, dim>();
-        if (!s.paired)
-          continue;
-        const auto &slave = surfaces.nodes[s.node];
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            if (slave.fixed[d])
-              continue;
-            const unsigned int position = surfaces.position(slave.dofs[d]);
-            slave_force[k][d]           = r[position];
-            correction[position] -= r[position];
-            for (const auto &[m, value] : s.M)
-              correction[surfaces.position(surfaces.nodes[m].dofs[d])] += value / s.D * r[position];
-          }
-        traction[k] = slave_force[k] / s.D;
-      }
+      condense_node(k, r, correction);
     for (unsigned int i = 0; i < correction.size(); ++i)
       if (correction[i] != 0. && owned.is_element(surfaces.dofs()[i]))
         residual(surfaces.dofs()[i]) += correction[i];
     residual.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void
+  MeshTying<dim>::condense_node(const unsigned int         k,
+                                const std::vector<double> &r,
+                                std::vector<double>       &correction)
+  {
+    // C^T r of the node's lines: the eliminated rows go to the line's
+    // entries (fixed masters too: their reactions carry the slave's force).
+    const auto &s = surfaces.slave_nodes[k];
+    traction[k] = slave_force[k] = Tensor<1, dim>();
+    if (!s.paired || bond[k] == Bond::open)
+      return;
+    const auto &slave = surfaces.nodes[s.node];
+    const auto  at    = [&](const unsigned int node, const unsigned int d) -> double  &{
+      return correction[surfaces.position(surfaces.nodes[node].dofs[d])];
+    };
+    if (bond[k] == Bond::held)
+      {
+        const unsigned int c = normal_line_component(surfaces, s);
+        if (c == dim)
+          return;
+        const double r_c = r[surfaces.position(slave.dofs[c])];
+        slave_force[k]   = r_c / s.normal[c] * s.normal;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            at(s.node, d) -= s.normal[d] / s.normal[c] * r_c;
+            for (const auto &[m, value] : s.M)
+              at(m, d) += value / s.D * s.normal[d] / s.normal[c] * r_c;
+          }
+      }
+    else
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          if (slave.fixed[d])
+            continue;
+          const double r_d  = r[surfaces.position(slave.dofs[d])];
+          slave_force[k][d] = r_d;
+          at(s.node, d) -= r_d;
+          for (const auto &[m, value] : s.M)
+            at(m, d) += value / s.D * r_d;
+        }
+    traction[k] = slave_force[k] / s.D;
+  }
+
+  template <int dim>
+  std::vector<double>
+  MeshTying<dim>::traction_scales() const
+  {
+    // The largest traction a node of the pair carries, and at least 1e-12
+    // of the pair's modulus: at no load, round-off decides nothing.
+    std::vector<double> scale(surfaces.pairs.size(), 0.);
+    for (unsigned int p = 0; p < scale.size(); ++p)
+      scale[p] = 1e-12 * std::min(surfaces.statistics[p].slave_modulus,
+                                  surfaces.statistics[p].master_modulus);
+    for (unsigned int k = 0; k < surfaces.slave_nodes.size(); ++k)
+      if (surfaces.slave_nodes[k].paired)
+        scale[surfaces.slave_nodes[k].pair] =
+          std::max(scale[surfaces.slave_nodes[k].pair], traction[k].norm());
+    return scale;
+  }
+
+  template <int dim>
+  typename MeshTying<dim>::BondUpdate
+  MeshTying<dim>::update_bonds(const TrilinosWrappers::MPI::Vector &solution,
+                               const unsigned int                   iteration)
+  {
+    BondUpdate update;
+    if (!release_threshold)
+      return update;
+    if (iteration <= 1)
+      bonds_of_iteration.assign(1, bond);
+    const std::vector<double> u     = surfaces.gather(solution);
+    const std::vector<double> scale = traction_scales();
+    for (unsigned int k = 0; k < surfaces.slave_nodes.size(); ++k)
+      {
+        const auto &s = surfaces.slave_nodes[k];
+        if (!s.paired)
+          continue;
+        // The opening: positive where the slave moves off its mortar image
+        // against its outward normal (away from the master).
+        Tensor<1, dim> relative = surfaces.displacement(s.node, u);
+        for (const auto &[m, value] : s.M)
+          relative -= value / s.D * surfaces.displacement(m, u);
+        opening[k]        = -(relative * s.normal);
+        const bool pulls  = traction[k] * s.normal > *release_threshold * scale[s.pair];
+        const Bond before = bond[k];
+        if (bond[k] != Bond::open && pulls)
+          bond[k] = Bond::open;
+        else if (bond[k] == Bond::open && opening[k] < -penetration_over_h * s.size &&
+                 normal_line_component(surfaces, s) < dim)
+          bond[k] = Bond::held;
+        update.changes += bond[k] != before;
+      }
+    if (update.changes > 0)
+      {
+        for (unsigned int i = 0; i < bonds_of_iteration.size(); ++i)
+          if (bonds_of_iteration[i] == bond)
+            update.cycling = "the released tied nodes cycle between open and held: iteration " +
+                             std::to_string(iteration) + " brings back the bonds of iteration " +
+                             std::to_string(i) +
+                             ", so the release in tension cannot settle (smaller load steps "
+                             "usually break the cycle; the step is split)";
+        bonds_of_iteration.push_back(bond);
+      }
+    return update;
+  }
+
+  template <int dim>
+  unsigned int
+  MeshTying<dim>::n_released() const
+  {
+    return std::count_if(bond.begin(), bond.end(), [](const Bond b) {
+      return b != Bond::tied;
+    });
   }
 
   template <int dim>
@@ -164,6 +341,16 @@ namespace contact_fem
     return std::count_if(surfaces.slave_nodes.begin(), surfaces.slave_nodes.end(),
                          [](const auto &s) {
                            return s.paired;
+                         });
+  }
+
+  template <int dim>
+  unsigned int
+  MeshTying<dim>::n_paired(const unsigned int p) const
+  {
+    return std::count_if(surfaces.slave_nodes.begin(), surfaces.slave_nodes.end(),
+                         [p](const auto &s) {
+                           return s.paired && s.pair == p;
                          });
   }
 
@@ -183,7 +370,7 @@ namespace contact_fem
         for (unsigned int k = 0; k < surfaces.slave_nodes.size(); ++k)
           if (const auto &s = surfaces.slave_nodes[k]; s.pair == p && s.paired)
             {
-              ++n;
+              n += bond[k] == Bond::tied;
               area += s.D;
               force += slave_force[k];
               largest             = std::max(largest, traction[k].norm());
@@ -199,17 +386,17 @@ namespace contact_fem
         for (unsigned int k = 0; k < surfaces.slave_nodes.size(); ++k)
           if (const auto &s = surfaces.slave_nodes[k]; s.pair == p && s.paired && largest > 0.)
             spread = std::max(spread, (traction[k] - mean).norm() / largest);
-        const std::string name = pair_text(surfaces.pairs[p]);
-        result.push(Json::object()
-                      .set("pair", name)
-                      .set("tied_slave_nodes", n)
-                      .set("area", area)
-                      .set("force", json_array(force, dim))
-                      .set("mean_traction", json_array(mean, dim))
-                      .set("traction_spread", spread)
-                      .set("min_normal_traction", normal_min)
-                      .set("max_normal_traction", normal_max)
-                      .set("max_tangential_traction", tangential_max));
+        const std::string name   = pair_text(surfaces.pairs[p]);
+        Json              record = Json::object();
+        record.set("pair", name)
+          .set("tied_slave_nodes", n)
+          .set("area", area)
+          .set("force", json_array(force, dim))
+          .set("mean_traction", json_array(mean, dim))
+          .set("traction_spread", spread)
+          .set("min_normal_traction", normal_min)
+          .set("max_normal_traction", normal_max)
+          .set("max_tangential_traction", tangential_max);
         out << "    tied pair " << name << ": " << n << " tied slave nodes, force on the slave "
             << vector_text(force, largest * area) << ", mean traction "
             << vector_text(mean, largest) << std::endl
@@ -218,8 +405,52 @@ namespace contact_fem
             << value_text(tangential_max, largest) << std::endl
             << "      traction spread max|t - mean|/max|t|: " << value_or_ok(spread, 1e-10)
             << std::endl;
+        if (releases())
+          release_results(p, largest, record, out);
+        result.push(record);
       }
     return result;
+  }
+
+  template <int dim>
+  void
+  MeshTying<dim>::release_results(const unsigned int p,
+                                  const double       largest,
+                                  Json              &record,
+                                  std::ostream      &out) const
+  {
+    unsigned int released = 0, held = 0;
+    double       tied_normal_max = std::numeric_limits<double>::lowest();
+    double       open_min = std::numeric_limits<double>::max(), open_max = 0.;
+    for (unsigned int k = 0; k < surfaces.slave_nodes.size(); ++k)
+      if (const auto &s = surfaces.slave_nodes[k]; s.pair == p && s.paired)
+        {
+          released += bond[k] != Bond::tied;
+          held += bond[k] == Bond::held;
+          if (bond[k] == Bond::tied)
+            tied_normal_max = std::max(tied_normal_max, traction[k] * s.normal);
+          if (bond[k] == Bond::open)
+            {
+              open_min = std::min(open_min, opening[k]);
+              open_max = std::max(open_max, opening[k]);
+            }
+        }
+    if (released == held)
+      open_min = 0.;
+    record.set("released_nodes", released)
+      .set("held_released_nodes", held)
+      .set("max_tied_normal_traction", tied_normal_max)
+      .set("min_opening", open_min)
+      .set("max_opening", open_max);
+    const double h = surfaces.statistics[p].mean_slave_size;
+    out << "      released in tension: " << released << " slave nodes (" << held
+        << " of them held in contact)";
+    if (released > held)
+      out << ", the open ones open by " << value_text(open_min, h) << " ... "
+          << value_text(open_max, h);
+    if (released < n_paired(p))
+      out << "; largest normal traction of a tied node " << value_text(tied_normal_max, largest);
+    out << std::endl;
   }
 
   template class MeshTying<2>;

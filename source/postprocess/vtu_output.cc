@@ -393,7 +393,8 @@ namespace contact_fem
     /// The tied slave surfaces of @p tying as an ASCII VTU, as the contact
     /// surfaces: per node the tying traction on the slave (the master's
     /// traction on it, sigma n for the slave's outward normal n), its
-    /// normal component (positive in tension), the tied flag, the pair and
+    /// normal component (positive in tension), the tied flag (0 once
+    /// released in tension), the pair and
     /// the displacement @p u (on every rank, ContactInterface::gather()).
     template <int dim>
     std::string
@@ -409,7 +410,7 @@ namespace contact_fem
           pair[s.node]  = s.pair;
           if (!s.paired)
             continue;
-          tied[s.node]     = 1.;
+          tied[s.node]     = tying.bond_of(k) == MeshTying<dim>::Bond::tied ? 1. : 0.;
           traction[s.node] = tying.tractions()[k];
           normal[s.node]   = traction[s.node] * s.normal;
         }

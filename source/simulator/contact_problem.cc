@@ -350,7 +350,10 @@ namespace contact_fem
         tying = std::make_unique<MeshTying<dim>>();
         tying->initialize(*mapping, dof_handler, contact_parameters.tied_pairs,
                           dirichlet_constraints, hanging_constraints, materials,
-                          contact_parameters.search_factor, comm);
+                          contact_parameters.search_factor,
+                          contact_parameters.tied_release_threshold, comm);
+        if (interface)
+          tying->check_apart_from(*interface);
       }
     // Contact and tying constraints couple slave DoFs to master DoFs
     // anywhere: every rank may write to the rows and entries of all
@@ -540,7 +543,7 @@ namespace contact_fem
     candidates.reinit(writable_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, candidates);
     if (tying)
-      tying->add_constraints(candidates);
+      tying->add_constraints(candidates, false, true);
     if (contact)
       contact->add_constraints(*interface, interface_fixed_values, candidates, true);
     candidates.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins, true);
@@ -860,6 +863,16 @@ namespace contact_fem
   }
 
   template <int dim>
+  unsigned int
+  ContactProblem<dim>::update_bonds(const std::string &at, const unsigned int iteration)
+  {
+    const auto update = tying->update_bonds(solution, iteration);
+    if (!update.cycling.empty())
+      throw NewtonFailure(at + ": " + update.cycling, true);
+    return update.changes;
+  }
+
+  template <int dim>
   void
   ContactProblem<dim>::solve_load_step(const unsigned int step,
                                        const double       time,
@@ -885,6 +898,7 @@ namespace contact_fem
       .set("newton_iterations", iterations)
       .set("converged", true)
       .set("active_slave_nodes", contact ? contact->n_active() : 0u)
+      .set("released_tied_nodes", tying ? tying->n_released() : 0u)
       .set("wall_time", step_timer.wall_time());
     if (linear_solver->iterative())
       {
@@ -923,20 +937,23 @@ namespace contact_fem
             newton_update(at, monitor.displacement_target());
           }
         compute_residual();
-        const ContactUpdate update   = update_contact(iteration);
-        const double        r_u      = equilibrium_residual_norm(update.residuals.contact_force);
-        const double        r_lambda = update.residuals.multiplier;
+        const ContactUpdate update      = update_contact(iteration);
+        const unsigned int bond_changes = tying && iteration > 0 ? update_bonds(at, iteration) : 0u;
+        const unsigned int changes      = update.changes + bond_changes;
+        const double       r_u          = equilibrium_residual_norm(update.residuals.contact_force);
+        const double       r_lambda     = update.residuals.multiplier;
         throw_if_not_finite(at, r_u, r_lambda, [this] {
           return diagnosis().singular_system_hint();
         });
-        assessment =
-          monitor.assess(iteration, r_u, r_lambda, update.changes, update.searched_again);
+        assessment = monitor.assess(iteration, r_u, r_lambda, changes, update.searched_again);
+        // A released tied node changes the model: never accepted at round-off.
+        assessment.converged = assessment.converged && bond_changes == 0;
         std::optional<unsigned int> linear_iterations;
         if (linear_solver->iterative())
           linear_iterations = iteration > 0 ? linear_iterations_of_step.back() : 0u;
         if (output.print_newton_iterations)
-          pcout << monitor.row(iteration, update.changes, contact ? contact->n_active() : 0u,
-                               assessment, contact ? contact->iteration_cells(iteration) : "",
+          pcout << monitor.row(iteration, changes, contact ? contact->n_active() : 0u, assessment,
+                               contact ? contact->iteration_cells(iteration) : "",
                                linear_iterations)
                 << std::endl;
         if (contact)
@@ -1388,6 +1405,8 @@ namespace contact_fem
           {
             pcout << "  Newton failed at " << failure.what() << std::endl;
             saved.restore(solution, contact.get(), interface.get());
+            if (tying)
+              tying->restore_load_step();
             ghosted_solution = solution;
             if (failure.splittable && control.split())
               {
@@ -1460,6 +1479,8 @@ namespace contact_fem
       comparison->record_load_step(contact_state());
     if (contact)
       contact->accept_load_step(*interface, interface_displacement);
+    if (tying)
+      tying->accept_load_step();
     postprocess([&](Postprocessor<dim> &postprocessor, std::ostream &out) {
       postprocessor.after_load_step(view, step_record, out);
     });

@@ -235,10 +235,16 @@ namespace contact_fem
       prm.enter_subsection("Contact");
       const std::string pairs = Utilities::trim(prm.get("Pairs"));
       const std::string tied  = Utilities::trim(prm.get("Tied pairs"));
+      const std::string release =
+        prm.get_bool("Tied release in tension") ?
+          "; released in tension beyond " + prm.get("Tied release threshold") +
+            " of the pair's largest traction" :
+          "";
       prm.leave_subsection();
       return text + "Contact pairs (slave: master): " +
              (pairs.empty() ? std::string("none (no contact)") : pairs) + "\n" +
-             (tied.empty() ? std::string() : "Tied pairs (slave: master): " + tied + "\n");
+             (tied.empty() ? std::string() :
+                             "Tied pairs (slave: master): " + tied + release + "\n");
     }
   } // namespace
 

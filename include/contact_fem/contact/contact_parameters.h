@@ -6,6 +6,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
 
+#include <optional>
 #include <vector>
 
 namespace contact_fem
@@ -24,7 +25,10 @@ namespace contact_fem
     std::vector<ContactPair> pairs; ///< empty: no contact code runs
     /// Surfaces glued by mesh tying (Tied pairs); empty: no tying code runs.
     std::vector<ContactPair> tied_pairs;
-    double                   search_factor = 3.;
+    /// Tied nodes released where the tying pulls (Tied release in tension),
+    /// beyond this fraction of the pair's traction scale; none: never.
+    std::optional<double> tied_release_threshold;
+    double                search_factor = 3.;
     /// Mortar operators rebuilt at every load step (else once, on the
     /// reference configuration).
     bool updated_kinematics = false;

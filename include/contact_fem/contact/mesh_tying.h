@@ -10,6 +10,7 @@
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/core/json.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,11 +39,36 @@ namespace contact_fem
    *
    * A slave component under a Dirichlet condition keeps it (is not tied);
    * a fixed master component enters the line as its prescribed value.
+   *
+   * With a release threshold (Contact/Tied release in tension), a tied
+   * slave node whose normal tying traction pulls by more than the threshold
+   * times the pair's traction scale is released for good (debonded) and
+   * becomes a frictionless contact node of the pair: open (no line) while
+   * its normal relative displacement n . (u_s - D^-1 M u_m) opens, held by
+   * the normal line n . u_s = n . D^-1 M u_m when it would penetrate, and
+   * open again when that line pulls. update_bonds() decides it per Newton
+   * iteration, as an active set.
    */
   template <int dim>
   class MeshTying
   {
   public:
+    /// The state of a tied slave node: tied, or released and then open or
+    /// held by the normal contact line.
+    enum class Bond : unsigned char
+    {
+      tied,
+      open,
+      held
+    };
+
+    /// What update_bonds() changed.
+    struct BondUpdate
+    {
+      unsigned int changes = 0; ///< nodes released, opened or held
+      std::string  cycling;     ///< not empty: the bonds came back (why)
+    };
+
     /// Builds the tied surfaces of @p pairs (arguments as for
     /// ContactInterface::initialize()), integrates the operators on the
     /// reference configuration (slave boxes grown by @p search_factor
@@ -59,6 +85,7 @@ namespace contact_fem
                const AffineConstraints<double> &hanging,
                const Materials<dim>            &materials,
                const double                     search_factor,
+               const std::optional<double>     &release_threshold,
                const MPI_Comm                   comm);
 
     /// Sorted DoF indices of all nodes of the tied surfaces.
@@ -68,16 +95,69 @@ namespace contact_fem
       return surfaces.dofs();
     }
 
+    /// Throws, naming both pairs and the node, if a node of a tied surface
+    /// is also on a contact surface of @p contact (an edge or corner they
+    /// share), unless it is a master of both: its tying line and a contact
+    /// line would conflict (a slave of both) or chain into a cycle.
+    void
+    check_apart_from(const ContactInterface<dim> &contact) const;
+
     /// Takes the Dirichlet values at dofs() of the present load step (from
     /// their owners, collective).
     void
     set_fixed_values(const std::function<double(types::global_dof_index)> &value_on_owner);
 
-    /// Adds the tying lines of every paired slave node's free components to
-    /// @p constraints (lines already there are kept); for the @p test space
-    /// without the prescribed values of fixed masters.
+    /// Adds the tying lines of every tied slave node's free components and
+    /// the normal lines of the held ones to @p constraints (lines already
+    /// there are kept); for the @p test space without the prescribed values
+    /// of fixed masters. @p all_candidates: every paired node as tied (the
+    /// sparsity of any bond state).
     void
-    add_constraints(AffineConstraints<double> &constraints, const bool test = false) const;
+    add_constraints(AffineConstraints<double> &constraints,
+                    const bool                 test           = false,
+                    const bool                 all_candidates = false) const;
+
+    /// Whether tied nodes are released in tension (a threshold was given).
+    bool
+    releases() const
+    {
+      return release_threshold.has_value();
+    }
+
+    /**
+     * Releases the tied nodes whose normal traction (from the latest
+     * condense_residual()) pulls beyond the threshold, holds the released
+     * ones that penetrate by @p solution and opens the held ones that pull.
+     * Iteration @p iteration of the load step (1 clears the record of the
+     * step's bond states, used to tell a cycle). Collective.
+     */
+    BondUpdate
+    update_bonds(const TrilinosWrappers::MPI::Vector &solution, const unsigned int iteration);
+
+    /// Keeps the bonds of a converged load step.
+    void
+    accept_load_step()
+    {
+      accepted_bond = bond;
+    }
+
+    /// Back to the bonds of the last converged load step.
+    void
+    restore_load_step()
+    {
+      bond = accepted_bond;
+    }
+
+    /// The number of released slave nodes (open or held).
+    unsigned int
+    n_released() const;
+
+    /// Per entry of interface().slave_nodes: the bond state.
+    Bond
+    bond_of(const unsigned int k) const
+    {
+      return bond[k];
+    }
 
     /**
      * Recovers the tying tractions from @p residual (r = K u - f, hanging
@@ -116,10 +196,45 @@ namespace contact_fem
     /// its element size, above which the surfaces count as apart.
     static constexpr double max_distance_over_h = 0.25;
 
+    /// A released node penetrates when its opening is below minus this
+    /// fraction of its element size (not decided by round-off).
+    static constexpr double penetration_over_h = 1e-8;
+
   private:
     /// Throws if a pair's surfaces do not touch (initialize()).
     void
     check_surfaces_touch() const;
+
+    /// The normal line of held slave node @p s (n . u_s = n . D^-1 M u_m).
+    void
+    add_normal_line(const typename ContactInterface<dim>::SlaveNode &s,
+                    AffineConstraints<double>                       &constraints,
+                    const bool                                       test) const;
+
+    /// The release in tension of pair @p p (@p largest its largest
+    /// traction): the released and held nodes, the largest normal traction
+    /// of a tied node and the openings of the open ones, set in @p record
+    /// and printed to @p out.
+    void
+    release_results(const unsigned int p,
+                    const double       largest,
+                    Json              &record,
+                    std::ostream      &out) const;
+
+    /// The number of paired slave nodes of pair @p p.
+    unsigned int
+    n_paired(const unsigned int p) const;
+
+    /// Per pair: the traction scale the release threshold is relative to.
+    std::vector<double>
+    traction_scales() const;
+
+    /// Condenses the residual of slave node @p k into @p correction (by
+    /// its bond) and sets its force and traction from @p r.
+    void
+    condense_node(const unsigned int         k,
+                  const std::vector<double> &r,
+                  std::vector<double>       &correction);
 
     ContactInterface<dim> surfaces;
     std::vector<double>   fixed_values; ///< at dofs()
@@ -127,6 +242,13 @@ namespace contact_fem
     std::vector<Tensor<1, dim>> traction;
     /// Per entry of surfaces.slave_nodes: the residual r_j it came from.
     std::vector<Tensor<1, dim>> slave_force;
+
+    std::optional<double> release_threshold;
+    /// Per entry of surfaces.slave_nodes: the bond now and at the last
+    /// converged load step, and the normal opening of the last update.
+    std::vector<Bond>              bond, accepted_bond;
+    std::vector<double>            opening;
+    std::vector<std::vector<Bond>> bonds_of_iteration; ///< of this load step
   };
 } // namespace contact_fem
 

@@ -188,6 +188,11 @@ namespace contact_fem
     /// outran it, recovers the multipliers and updates the active set.
     ContactUpdate
     update_contact(const unsigned int iteration);
+    /// Releases, holds and opens tied nodes (Tied release in tension) after
+    /// iteration @p iteration at @p at; the number of changes. Throws a
+    /// NewtonFailure if the bonds cycle.
+    unsigned int
+    update_bonds(const std::string &at, const unsigned int iteration);
     void
     assemble_system();
 
@@ -196,7 +201,7 @@ namespace contact_fem
     bool
     resolves_load_path() const
     {
-      return contact && contact->path_dependent();
+      return (contact && contact->path_dependent()) || (tying && tying->releases());
     }
 
 

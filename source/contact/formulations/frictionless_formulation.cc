@@ -245,15 +245,7 @@ namespace contact_fem
     const ContactInterface<dim>                     &interface,
     const typename ContactInterface<dim>::SlaveNode &s) const
   {
-    unsigned int best       = dim;
-    double       best_value = 0.1;
-    for (unsigned int d = 0; d < dim; ++d)
-      if (!interface.nodes[s.node].fixed[d] && std::abs(s.normal[d]) > best_value)
-        {
-          best       = d;
-          best_value = std::abs(s.normal[d]);
-        }
-    return best;
+    return normal_line_component(interface, s);
   }
 
   template <int dim>

@@ -13,6 +13,25 @@
 
 namespace contact_fem
 {
+  /// The free component of slave node @p s that a normal line eliminates:
+  /// the one with the largest normal part, dim if none is above 0.1 (a
+  /// nearly tangential component cannot carry the line).
+  template <int dim>
+  unsigned int
+  normal_line_component(const ContactInterface<dim>                     &interface,
+                        const typename ContactInterface<dim>::SlaveNode &s)
+  {
+    unsigned int best       = dim;
+    double       best_value = 0.1;
+    for (unsigned int d = 0; d < dim; ++d)
+      if (!interface.nodes[s.node].fixed[d] && std::abs(s.normal[d]) > best_value)
+        {
+          best       = d;
+          best_value = std::abs(s.normal[d]);
+        }
+    return best;
+  }
+
   /**
    * A line u_dof = sum coefficient * u + inhomogeneity, built term by term:
    * a Dirichlet DoF moves its value into the inhomogeneity (trial space) or
