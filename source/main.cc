@@ -12,7 +12,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -395,26 +394,11 @@ namespace
       std::rethrow_exception(error);
     return code;
   }
-
-  /// A run started without mpirun (an Open MPI "singleton") would fork and
-  /// exec an orted daemon in MPI_Init, 0.15-0.2 s of the default scene's
-  /// start-up (doc/performance.md, "Start-up"); it needs none, as it never
-  /// spawns processes. A launcher's variables, or the user's own setting,
-  /// leave everything as it is.
-  void
-  prefer_isolated_singleton()
-  {
-    for (const char *launched : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
-      if (std::getenv(launched))
-        return;
-    setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
-  }
 } // namespace
 
 int
 main(int argc, char **argv)
 {
-  prefer_isolated_singleton();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const bool                       root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   contact_fem::install_interrupt_handlers();
