@@ -53,6 +53,49 @@ namespace contact_fem
       tangent(const double xi) const;
     };
 
+    /// Lagrange shape function @p i of degree @p p (node order of LineFace)
+    /// at xi, for any number type (double, or an automatic-differentiation
+    /// number in the linearisation, mortar_linearisation.h).
+    template <typename Number>
+    Number
+    lagrange_value(const unsigned int p, const unsigned int i, const Number &xi)
+    {
+      // Branches, not ?:, so that expression-template numbers compile.
+      if (p == 1)
+        {
+          if (i == 0)
+            return 0.5 * (1. - xi);
+          return 0.5 * (1. + xi);
+        }
+      switch (i)
+        {
+          case 0:
+            return 0.5 * xi * (xi - 1.);
+          case 1:
+            return 0.5 * xi * (xi + 1.);
+          default:
+            return 1. - xi * xi;
+        }
+    }
+
+    /// d/dxi of lagrange_value().
+    template <typename Number>
+    Number
+    lagrange_derivative(const unsigned int p, const unsigned int i, const Number &xi)
+    {
+      if (p == 1)
+        return Number(i == 0 ? -0.5 : 0.5);
+      switch (i)
+        {
+          case 0:
+            return xi - 0.5;
+          case 1:
+            return xi + 0.5;
+          default:
+            return -2. * xi;
+        }
+    }
+
     /// Lagrange shape function @p i of degree @p p (node order of LineFace) at xi.
     double
     shape_value(const unsigned int p, const unsigned int i, const double xi);
