@@ -18,10 +18,11 @@ namespace contact_fem
   namespace Mortar
   {
     /**
-     * A surface face whose geometry has polynomial degree p, described by its
-     * p+1 nodes. Node order follows deal.II's face DoF order: the two end
-     * vertices first (parameter xi = -1 and xi = +1), then the interior node
-     * (xi = 0, p = 2).
+     * The nodes of a line face whose geometry has polynomial degree p: p+1
+     * nodes, of type Vector (a point, or a vector of AD numbers in the
+     * linearisation). Node order follows deal.II's face DoF order: the two
+     * end vertices first (parameter xi = -1 and xi = +1), then the interior
+     * node (xi = 0, p = 2).
      *
      * The displacement and the multipliers on the face use the Lagrange
      * shapes of shape_degree(), the element degree. It equals the geometry
@@ -29,9 +30,10 @@ namespace contact_fem
      * degree-2 geometry (a quadratic mapping of Q1 elements): then the
      * interior node is a geometry node only and carries no DoFs.
      */
-    struct LineFace
+    template <typename Vector>
+    struct LineFaceNodes
     {
-      std::vector<Point<2>> nodes;
+      std::vector<Vector> nodes;
       /// Degree of the shape functions of the DoFs; 0: the geometry degree.
       unsigned int element_degree = 0;
 
@@ -45,6 +47,11 @@ namespace contact_fem
       {
         return element_degree > 0 ? element_degree : degree();
       }
+    };
+
+    /// A surface face in double coordinates.
+    struct LineFace : LineFaceNodes<Point<2>>
+    {
       /// Position at parameter xi in [-1, 1].
       Point<2>
       point(const double xi) const;

@@ -71,36 +71,32 @@ namespace contact_fem
 
     /// A LineFace whose node coordinates are numbers of type Number.
     template <typename Number>
-    struct LineFaceOf
+    struct LineFaceOf : LineFaceNodes<Tensor<1, 2, Number>>
     {
-      std::vector<Tensor<1, 2, Number>> nodes;
-      unsigned int                      element_degree = 0;
+      using LineFaceNodes<Tensor<1, 2, Number>>::nodes;
+      using LineFaceNodes<Tensor<1, 2, Number>>::degree;
 
-      unsigned int
-      degree() const
-      {
-        return nodes.size() - 1;
-      }
-      unsigned int
-      shape_degree() const
-      {
-        return element_degree > 0 ? element_degree : degree();
-      }
       Tensor<1, 2, Number>
       point(const Number &xi) const
       {
-        Tensor<1, 2, Number> x;
-        for (unsigned int i = 0; i < nodes.size(); ++i)
-          x += lagrange_value(degree(), i, xi) * nodes[i];
-        return x;
+        return interpolate(xi, &lagrange_value<Number>);
       }
       Tensor<1, 2, Number>
       tangent(const Number &xi) const
       {
-        Tensor<1, 2, Number> t;
+        return interpolate(xi, &lagrange_derivative<Number>);
+      }
+
+    private:
+      /// sum_i shape(p, i, xi) x_i.
+      Tensor<1, 2, Number>
+      interpolate(const Number &xi,
+                  Number (*shape)(const unsigned int, const unsigned int, const Number &)) const
+      {
+        Tensor<1, 2, Number> x;
         for (unsigned int i = 0; i < nodes.size(); ++i)
-          t += lagrange_derivative(degree(), i, xi) * nodes[i];
-        return t;
+          x += shape(degree(), i, xi) * nodes[i];
+        return x;
       }
     };
 
