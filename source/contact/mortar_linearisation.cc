@@ -146,23 +146,47 @@ namespace contact_fem
                                                     Point<2>(values_of(x)), values_of(n)));
       }
 
+      /// The overlap of @p slave with @p master (overlap()), its ends
+      /// linearised into @p xi; false if there is none.
+      template <typename Number>
+      bool
+      linearised_overlap(const LineFaceOf<Number>  &slave,
+                         const Vectors<Number>     &normals,
+                         const LineFaceOf<Number>  &master,
+                         const LineFace            &slave_values,
+                         const LineFace            &master_values,
+                         std::pair<Number, Number> &xi,
+                         std::array<int, 2>        &ends)
+      {
+        std::vector<Tensor<1, 2>> normal_values;
+        for (const Tensor<1, 2, Number> &n : normals)
+          normal_values.push_back(values_of(n));
+        std::array<double, 2> bounds;
+        if (!overlap(slave_values, normal_values, master_values, bounds[0], bounds[1], &ends))
+          return false;
+        const std::array<Number, 2> ends_xi = overlap_ends(slave, normals, master, bounds, ends);
+        xi                                  = {ends_xi[0], ends_xi[1]};
+        return true;
+      }
+
       /**
-       * The dual basis coefficients A = D_e M_e^{-1} on [@p lower, @p upper]
+       * The dual basis coefficients A = D_e M_e^{-1} on @p intervals
        * (dual_basis_coefficients()). Values: those of the double path. The
        * derivative is that of dA = (dD_e - A dM_e) M_e^{-1}: the AD numbers
        * (D_e - A M_e) M_e^{-1}, whose value is round-off, carry it.
        */
       template <typename Number>
       Table<2, Number>
-      dual_coefficients(const LineFaceOf<Number> &slave,
-                        const LineFace           &slave_values,
-                        const Number             &lower,
-                        const Number             &upper)
+      dual_coefficients(const LineFaceOf<Number>                     &slave,
+                        const LineFace                               &slave_values,
+                        const std::vector<std::pair<Number, Number>> &intervals)
       {
-        const FullMatrix<double> A =
-          dual_basis_coefficients(slave_values, {{value_of(lower), value_of(upper)}});
-        const unsigned int n = A.m();
-        Table<2, Number>   result(n, n);
+        std::vector<std::pair<double, double>> interval_values;
+        for (const auto &[a, b] : intervals)
+          interval_values.emplace_back(value_of(a), value_of(b));
+        const FullMatrix<double> A = dual_basis_coefficients(slave_values, interval_values);
+        const unsigned int       n = A.m();
+        Table<2, Number>         result(n, n);
         if constexpr (std::is_same_v<Number, double>)
           {
             for (unsigned int j = 0; j < n; ++j)
@@ -171,7 +195,7 @@ namespace contact_fem
             return result;
           }
         Table<2, Number> De(n, n), Me(n, n);
-        dual_basis_integrals(slave, std::vector<std::pair<Number, Number>>{{lower, upper}}, De, Me);
+        dual_basis_integrals(slave, intervals, De, Me);
         FullMatrix<double> Me_values(n, n), Me_inverse(n, n);
         for (unsigned int j = 0; j < n; ++j)
           for (unsigned int k = 0; k < n; ++k)
@@ -254,32 +278,38 @@ namespace contact_fem
       bool
       compute_pair(const PairPatch &patch, const Vectors<Number> &x, LinearisedPair &result)
       {
-        const LineFace slave_values       = patch.line_face(patch.slave_faces[0]),
-                       master_values      = patch.line_face(patch.master);
-        const LineFaceOf<Number> slave    = face_of(x, patch.slave_faces[0]),
-                                 master   = face_of(x, patch.master);
-        const Vectors<Number>     normals = nodal_normals(patch, x);
-        std::vector<Tensor<1, 2>> normal_values;
-        for (const Tensor<1, 2, Number> &n : normals)
-          normal_values.push_back(values_of(n));
-        std::array<double, 2> bounds;
-        std::array<int, 2>   &ends = result.bounding_master_ends;
-        if (!overlap(slave_values, normal_values, master_values, bounds[0], bounds[1], &ends))
+        const LineFace slave_values                    = patch.line_face(patch.slave_faces[0]),
+                       master_values                   = patch.line_face(patch.master);
+        const LineFaceOf<Number> slave                 = face_of(x, patch.slave_faces[0]),
+                                 master                = face_of(x, patch.master);
+        const Vectors<Number>                  normals = nodal_normals(patch, x);
+        std::array<int, 2>                    &ends    = result.bounding_master_ends;
+        std::vector<std::pair<Number, Number>> intervals(1);
+        if (!linearised_overlap(slave, normals, master, slave_values, master_values, intervals[0],
+                                ends))
           return false;
+        const std::pair<Number, Number> xi = intervals[0];
+        for (const PairPatch::Face &other : patch.other_masters)
+          {
+            std::pair<Number, Number> other_xi;
+            std::array<int, 2>        other_ends;
+            if (linearised_overlap(slave, normals, face_of(x, other), slave_values,
+                                   patch.line_face(other), other_xi, other_ends))
+              intervals.push_back(other_xi);
+          }
 
-        const unsigned int          n  = 2 * patch.points.size();
-        const std::array<Number, 2> xi = overlap_ends(slave, normals, master, bounds, ends);
-        const Table<2, Number>      A  = dual_coefficients(slave, slave_values, xi[0], xi[1]);
-        OperatorsOf<Number>         operators;
+        const unsigned int     n = 2 * patch.points.size();
+        const Table<2, Number> A = dual_coefficients(slave, slave_values, intervals);
+        OperatorsOf<Number>    operators;
         integrate_overlap(slave, normals, A, master, slave_values, master_values,
-                          n_quadrature_points(slave_values, master_values), xi[0], xi[1],
+                          n_quadrature_points(slave_values, master_values), xi.first, xi.second,
                           operators);
-        result.xi_begin = linearised(xi[0], n);
-        result.xi_end   = linearised(xi[1], n);
+        result.xi_begin = linearised(xi.first, n);
+        result.xi_end   = linearised(xi.second, n);
         result.eta_begin =
-          linearised(end_on_master(slave, normals, master, patch, xi[0], ends[0]), n);
+          linearised(end_on_master(slave, normals, master, patch, xi.first, ends[0]), n);
         result.eta_end =
-          linearised(end_on_master(slave, normals, master, patch, xi[1], ends[1]), n);
+          linearised(end_on_master(slave, normals, master, patch, xi.second, ends[1]), n);
         result.dual_coefficients = linearised(A, n);
         store(operators, normals, n, result);
         return true;

@@ -7,7 +7,9 @@
 //  - tilted faces (Q1),
 //  - curved Q2 faces, partly overlapping,
 //  - a Q1 master with both end nodes inside a Q2 slave face,
-//  - Q1 elements on a curved Q2 geometry.
+//  - Q1 elements on a curved Q2 geometry,
+//  - two masters meeting inside the slave face (Q1, Q2): the dual basis on
+//    both overlaps, whose shared end moves with the masters' common node.
 // Quantities: averaged unit nodal normals (through the neighbouring slave
 // faces), overlap ends on both faces, dual basis coefficients, D, M, the
 // weighted gap vector and its normal part. For every derivative, the
@@ -103,6 +105,30 @@ namespace
     return patch;
   }
 
+  /// A second master face of @p patch on @p master from its master's end
+  /// node 1 to parameter @p to (@p from: that node's parameter), its other
+  /// nodes moved by up to 0.02 at random.
+  void
+  add_second_master(PairPatch   &patch,
+                    const Curve &master,
+                    const double from,
+                    const double to,
+                    Random      &random)
+  {
+    PairPatch::Face face = patch.master;
+    face.nodes           = {patch.master.nodes[1], static_cast<unsigned int>(patch.points.size())};
+    patch.points.push_back(master(to));
+    if (patch.master.nodes.size() == 3)
+      {
+        face.nodes.push_back(patch.points.size());
+        patch.points.push_back(master(0.5 * (from + to)));
+      }
+    for (unsigned int i = 1; i < face.nodes.size(); ++i)
+      for (unsigned int d = 0; d < 2; ++d)
+        patch.points[face.nodes[i]][d] += 0.02 * random.next();
+    patch.other_masters.push_back(face);
+  }
+
   /// Every quantity of @p r, by group.
   std::vector<std::pair<std::string, const Linearised *>>
   quantities(const LinearisedPair &r)
@@ -142,7 +168,13 @@ namespace
     std::vector<Tensor<1, 2>> normals;
     for (const auto &n : values.normals)
       normals.push_back(Tensor<1, 2>({n[0].value, n[1].value}));
-    const auto A = dual_basis_coefficients(slave, {{values.xi_begin.value, values.xi_end.value}});
+    std::vector<std::pair<double, double>> intervals = {
+      {values.xi_begin.value, values.xi_end.value}};
+    for (const PairPatch::Face &other : patch.other_masters)
+      if (double lower, upper; overlap(slave, normals, patch.line_face(other), lower, upper))
+        intervals.emplace_back(lower, upper);
+    std::cout << "  dual basis on " << intervals.size() << " overlap(s)" << std::endl;
+    const auto       A = dual_basis_coefficients(slave, intervals);
     SegmentOperators ops;
     bool equal = integrate_pair(slave, normals, A, master, n_quadrature_points(slave, master), ops);
     for (unsigned int j = 0; equal && j < ops.D.size(); ++j)
@@ -300,4 +332,11 @@ main()
                     make_patch(2, 1, 0, bump, above, 0.8, 0.25, random));
   check_derivatives("Q1 elements on a curved Q2 geometry",
                     make_patch(2, 2, 1, bump, bowl, 1.3, 0.3, random));
+  for (const unsigned int degree : {1u, 2u})
+    {
+      PairPatch patch = make_patch(degree, degree, 0, bump, bowl, 1.5, 0.45, random);
+      add_second_master(patch, bowl, 0.45, -0.6, random);
+      check_derivatives("two masters meeting inside the slave face, Q" + std::to_string(degree),
+                        patch);
+    }
 }

@@ -41,6 +41,10 @@ namespace contact_fem
       /// its nodes, which enter its averaged nodal normals.
       std::vector<Face> slave_faces;
       Face              master;
+      /// Further master faces of the slave face: their overlaps join the
+      /// pair's in the support of the dual basis, as ContactInterface builds
+      /// it on all masters of a slave face.
+      std::vector<Face> other_masters;
 
       /// A face as a LineFace of the current coordinates.
       LineFace
@@ -68,7 +72,7 @@ namespace contact_fem
       /// Master parameters of the overlap ends (the slave end points moved
       /// along their normals, or +-1 at a bounding master end).
       Linearised eta_begin, eta_end;
-      /// Dual basis coefficients A_jk on the overlap of this pair.
+      /// Dual basis coefficients A_jk on the overlaps of all masters.
       std::vector<std::vector<Linearised>>   dual_coefficients;
       std::vector<Linearised>                D;
       std::vector<std::vector<Linearised>>   M;
@@ -78,8 +82,9 @@ namespace contact_fem
     };
 
     /**
-     * The operators of @p patch (dual basis on this pair's overlap, Gauss
-     * points as n_quadrature_points()), with their derivatives if
+     * The operators of @p patch (dual basis on the overlaps of the master
+     * and the other masters, Gauss points as n_quadrature_points()), with
+     * their derivatives if
      * @p derivatives. Returns false if the faces do not overlap.
      */
     bool
