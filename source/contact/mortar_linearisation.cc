@@ -49,6 +49,17 @@ namespace contact_fem
         return result;
       }
 
+      /// The slave and master face of a pair in numbers of type Number and
+      /// in double (for the decisions and roots), and the slave's nodal
+      /// normals.
+      template <typename Number>
+      struct PairFaces
+      {
+        LineFaceOf<Number> slave, master;
+        LineFace           slave_values, master_values;
+        Vectors<Number>    normals;
+      };
+
       /// face_normal() in numbers of type Number.
       template <typename Number>
       Tensor<1, 2, Number>
@@ -129,52 +140,46 @@ namespace contact_fem
       /// the slave point along its normal.
       template <typename Number>
       Number
-      end_on_master(const LineFaceOf<Number> &slave,
-                    const Vectors<Number>    &normals,
-                    const LineFaceOf<Number> &master,
-                    const PairPatch          &patch,
-                    const Number             &xi,
-                    const int                 bounding_master_end)
+      end_on_master(const PairFaces<Number> &faces, const Number &xi, const int bounding_master_end)
       {
         if (bounding_master_end >= 0)
           return Number(bounding_master_end == 0 ? -1. : 1.);
-        const Tensor<1, 2, Number> n = interpolated_normal(slave.shape_degree(), normals, xi);
-        const Tensor<1, 2, Number> x = slave.point(xi);
-        return projected_parameter(master, x, n,
-                                   master_parameter(patch.line_face(patch.slave_faces[0]),
-                                                    patch.line_face(patch.master),
+        const Tensor<1, 2, Number> n =
+          interpolated_normal(faces.slave.shape_degree(), faces.normals, xi);
+        const Tensor<1, 2, Number> x = faces.slave.point(xi);
+        return projected_parameter(faces.master, x, n,
+                                   master_parameter(faces.slave_values, faces.master_values,
                                                     Point<2>(values_of(x)), values_of(n)));
       }
 
-      /// The overlap of @p slave with @p master (overlap()), its ends
-      /// linearised into @p xi; false if there is none.
+      /// The overlap of the slave face of @p faces with their master
+      /// (overlap()), its ends linearised into @p xi; false if there is
+      /// none.
       template <typename Number>
       bool
-      linearised_overlap(const LineFaceOf<Number>  &slave,
-                         const Vectors<Number>     &normals,
-                         const LineFaceOf<Number>  &master,
-                         const LineFace            &slave_values,
-                         const LineFace            &master_values,
+      linearised_overlap(const PairFaces<Number>   &faces,
                          std::pair<Number, Number> &xi,
                          std::array<int, 2>        &ends)
       {
         std::vector<Tensor<1, 2>> normal_values;
-        for (const Tensor<1, 2, Number> &n : normals)
+        for (const Tensor<1, 2, Number> &n : faces.normals)
           normal_values.push_back(values_of(n));
         std::array<double, 2> bounds;
-        if (!overlap(slave_values, normal_values, master_values, bounds[0], bounds[1], &ends))
+        if (!overlap(faces.slave_values, normal_values, faces.master_values, bounds[0], bounds[1],
+                     &ends))
           return false;
-        const std::array<Number, 2> ends_xi = overlap_ends(slave, normals, master, bounds, ends);
-        xi                                  = {ends_xi[0], ends_xi[1]};
+        const std::array<Number, 2> ends_xi =
+          overlap_ends(faces.slave, faces.normals, faces.master, bounds, ends);
+        xi = {ends_xi[0], ends_xi[1]};
         return true;
       }
 
       /**
-       * The dual basis coefficients A = D_e M_e^{-1} on @p intervals
-       * (dual_basis_coefficients()). Values: those of the double path. The
-       * derivative is that of dA = (dD_e - A dM_e) M_e^{-1}: the AD numbers
-       * (D_e - A M_e) M_e^{-1}, whose value is round-off, carry it.
-       */
+ * The dual basis coefficients A = D_e M_e^{-1} on @p intervals
+ * (dual_basis_coefficients()). Values: those of the double path. The
+ * derivative is that of dA = (dD_e - A dM_e) M_e^{-1}: the AD numbers
+ * (D_e - A M_e) M_e^{-1}, whose value is round-off, carry it.
+ */
       template <typename Number>
       Table<2, Number>
       dual_coefficients(const LineFaceOf<Number>                     &slave,
@@ -278,40 +283,38 @@ namespace contact_fem
       bool
       compute_pair(const PairPatch &patch, const Vectors<Number> &x, LinearisedPair &result)
       {
-        const LineFace slave_values                    = patch.line_face(patch.slave_faces[0]),
-                       master_values                   = patch.line_face(patch.master);
-        const LineFaceOf<Number> slave                 = face_of(x, patch.slave_faces[0]),
-                                 master                = face_of(x, patch.master);
-        const Vectors<Number>                  normals = nodal_normals(patch, x);
-        std::array<int, 2>                    &ends    = result.bounding_master_ends;
+        PairFaces<Number>   faces{face_of(x, patch.slave_faces[0]), face_of(x, patch.master),
+                                patch.line_face(patch.slave_faces[0]),
+                                patch.line_face(patch.master), nodal_normals(patch, x)};
+        std::array<int, 2> &ends = result.bounding_master_ends;
         std::vector<std::pair<Number, Number>> intervals(1);
-        if (!linearised_overlap(slave, normals, master, slave_values, master_values, intervals[0],
-                                ends))
+        if (!linearised_overlap(faces, intervals[0], ends))
           return false;
         const std::pair<Number, Number> xi = intervals[0];
         for (const PairPatch::Face &other : patch.other_masters)
           {
-            std::pair<Number, Number> other_xi;
-            std::array<int, 2>        other_ends;
-            if (linearised_overlap(slave, normals, face_of(x, other), slave_values,
-                                   patch.line_face(other), other_xi, other_ends))
-              intervals.push_back(other_xi);
+            PairFaces<Number> other_faces = faces;
+            other_faces.master            = face_of(x, other);
+            other_faces.master_values     = patch.line_face(other);
+            std::array<int, 2> other_ends;
+            if (linearised_overlap(other_faces, intervals.emplace_back(), other_ends))
+              continue;
+            intervals.pop_back();
           }
 
         const unsigned int     n = 2 * patch.points.size();
-        const Table<2, Number> A = dual_coefficients(slave, slave_values, intervals);
+        const Table<2, Number> A = dual_coefficients(faces.slave, faces.slave_values, intervals);
         OperatorsOf<Number>    operators;
-        integrate_overlap(slave, normals, A, master, slave_values, master_values,
-                          n_quadrature_points(slave_values, master_values), xi.first, xi.second,
-                          operators);
-        result.xi_begin = linearised(xi.first, n);
-        result.xi_end   = linearised(xi.second, n);
-        result.eta_begin =
-          linearised(end_on_master(slave, normals, master, patch, xi.first, ends[0]), n);
-        result.eta_end =
-          linearised(end_on_master(slave, normals, master, patch, xi.second, ends[1]), n);
+        integrate_overlap(faces.slave, faces.normals, A, faces.master, faces.slave_values,
+                          faces.master_values,
+                          n_quadrature_points(faces.slave_values, faces.master_values), xi.first,
+                          xi.second, operators);
+        result.xi_begin          = linearised(xi.first, n);
+        result.xi_end            = linearised(xi.second, n);
+        result.eta_begin         = linearised(end_on_master(faces, xi.first, ends[0]), n);
+        result.eta_end           = linearised(end_on_master(faces, xi.second, ends[1]), n);
         result.dual_coefficients = linearised(A, n);
-        store(operators, normals, n, result);
+        store(operators, faces.normals, n, result);
         return true;
       }
 
