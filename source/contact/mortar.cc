@@ -2,6 +2,7 @@
 
 #include <contact_fem/contact/mortar.h>
 #include <contact_fem/contact/mortar_kernel.h>
+#include <contact_fem/contact/mortar_number.h>
 #include <contact_fem/core/format.h>
 
 #include <algorithm>
@@ -25,18 +26,8 @@ namespace contact_fem
     double
     shape_value(const unsigned int p, const unsigned int i, const double xi)
     {
-      if (p == 1)
-        return (i == 0 ? 0.5 * (1. - xi) : 0.5 * (1. + xi));
-      Assert(p == 2, ExcNotImplemented());
-      switch (i)
-        {
-          case 0:
-            return 0.5 * xi * (xi - 1.);
-          case 1:
-            return 0.5 * xi * (xi + 1.);
-          default:
-            return 1. - xi * xi;
-        }
+      Assert(p == 1 || p == 2, ExcNotImplemented());
+      return lagrange_value(p, i, xi);
     }
 
     double
@@ -72,18 +63,8 @@ namespace contact_fem
     double
     shape_derivative(const unsigned int p, const unsigned int i, const double xi)
     {
-      if (p == 1)
-        return (i == 0 ? -0.5 : 0.5);
-      Assert(p == 2, ExcNotImplemented());
-      switch (i)
-        {
-          case 0:
-            return xi - 0.5;
-          case 1:
-            return xi + 0.5;
-          default:
-            return -2. * xi;
-        }
+      Assert(p == 1 || p == 2, ExcNotImplemented());
+      return lagrange_derivative(p, i, xi);
     }
 
     Point<2>
@@ -114,58 +95,26 @@ namespace contact_fem
       return orientation * n / n.norm();
     }
 
-    namespace
+    void
+    gauss_rule(const unsigned int n, std::vector<double> &points, std::vector<double> &weights)
     {
-      double
-      cross(const Tensor<1, 2> &a, const Tensor<1, 2> &b)
-      {
-        return a[0] * b[1] - a[1] * b[0];
-      }
-
-      /// Gauss rule on [-1, 1] (weights sum to 2).
-      void
-      gauss_rule(const unsigned int n, std::vector<double> &points, std::vector<double> &weights)
-      {
-        const QGauss<1> q(n);
-        points.resize(n);
-        weights.resize(n);
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            points[i]  = 2. * q.point(i)[0] - 1.;
-            weights[i] = 2. * q.weight(i);
-          }
-      }
-    } // namespace
+      const QGauss<1> q(n);
+      points.resize(n);
+      weights.resize(n);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          points[i]  = 2. * q.point(i)[0] - 1.;
+          weights[i] = 2. * q.weight(i);
+        }
+    }
 
     FullMatrix<double>
     dual_basis_coefficients(const LineFace                               &slave,
                             const std::vector<std::pair<double, double>> &intervals)
     {
-      const unsigned int p = slave.shape_degree(), n = p + 1;
-      // Exact for straight faces; curved faces have a non-polynomial
-      // Jacobian, hence the generous rule.
-      std::vector<double> xg, wg;
-      gauss_rule(2 * p + 8, xg, wg);
-      std::vector<double> xq, wq;
-      for (const auto &[a, b] : intervals)
-        for (unsigned int q = 0; q < xg.size(); ++q)
-          {
-            xq.push_back(a + 0.5 * (xg[q] + 1.) * (b - a));
-            wq.push_back(0.5 * (b - a) * wg[q]);
-          }
-
+      const unsigned int n = slave.shape_degree() + 1;
       FullMatrix<double> Me(n, n), De(n, n);
-      for (unsigned int q = 0; q < xq.size(); ++q)
-        {
-          const double jxw = slave.tangent(xq[q]).norm() * wq[q];
-          for (unsigned int j = 0; j < n; ++j)
-            {
-              const double Nj = shape_value(p, j, xq[q]);
-              De(j, j) += Nj * jxw;
-              for (unsigned int k = 0; k < n; ++k)
-                Me(j, k) += Nj * shape_value(p, k, xq[q]) * jxw;
-            }
-        }
+      dual_basis_integrals(slave, intervals, De, Me);
       FullMatrix<double> Me_inverse(n, n), A(n, n);
       Me_inverse.invert(Me);
       De.mmult(A, Me_inverse);
@@ -174,19 +123,6 @@ namespace contact_fem
 
     namespace
     {
-      /// (face(eta) - x) x d for each face node's parameter: the offsets of
-      /// the face from the line through @p x along @p d. The differences
-      /// x_i - x are formed first, so that the round-off is that of the
-      /// face's size, not of the coordinates' distance from the origin.
-      double
-      line_offset(const LineFace &face, const Point<2> &x, const Tensor<1, 2> &d, const double eta)
-      {
-        Tensor<1, 2> r;
-        for (unsigned int i = 0; i < face.nodes.size(); ++i)
-          r += shape_value(face.degree(), i, eta) * (face.nodes[i] - x);
-        return cross(r, d);
-      }
-
       /**
        * A root of @p f (returning the value and the derivative) between
        * @p a and @p b, where f(a) and f(b) differ in sign: Newton steps
@@ -270,26 +206,6 @@ namespace contact_fem
 
     namespace
     {
-      /// (x - s(xi)) x n(xi), s the slave face, n its interpolated nodal
-      /// normal, and its derivative; differences formed as in line_offset().
-      std::pair<double, double>
-      normal_line_offset(const LineFace                  &slave,
-                         const std::vector<Tensor<1, 2>> &normals,
-                         const Point<2>                  &x,
-                         const double                     xi)
-      {
-        const unsigned int p = slave.shape_degree();
-        Tensor<1, 2>       n, dn, r;
-        for (unsigned int i = 0; i <= p; ++i)
-          {
-            n += shape_value(p, i, xi) * normals[i];
-            dn += shape_derivative(p, i, xi) * normals[i];
-          }
-        for (unsigned int i = 0; i < slave.nodes.size(); ++i)
-          r += shape_value(slave.degree(), i, xi) * (x - slave.nodes[i]);
-        return {cross(r, n), cross(-slave.tangent(xi), n) + cross(r, dn)};
-      }
-
       /// Slave parameter xi in [-1, 1] whose point, moved along the
       /// interpolated nodal normal n(xi), passes through @p x, for a point
       /// @p x that lies between the normal lines of the slave's end nodes
@@ -366,50 +282,34 @@ namespace contact_fem
                    const unsigned int               n_quadrature_points,
                    SegmentOperators                &result)
     {
-      const unsigned int ps = slave.shape_degree(), pm = master.shape_degree();
-      double             lower = -1., upper = 1.;
+      double lower = -1., upper = 1.;
       if (!overlap(slave, slave_normals, master, lower, upper))
         return false;
 
-      result.D.assign(ps + 1, 0.);
-      result.weighted_gap.assign(ps + 1, Tensor<1, 2>());
-      result.M.reinit(ps + 1, pm + 1);
-      result.overlap_length = 0.;
-      result.xi_begin       = lower;
-      result.xi_end         = upper;
-
-      std::vector<double> xq, wq, phi(ps + 1);
-      gauss_rule(n_quadrature_points, xq, wq);
-      for (unsigned int q = 0; q < xq.size(); ++q)
-        {
-          // Map the Gauss point into the overlap interval of the slave face.
-          const double xi  = lower + 0.5 * (xq[q] + 1.) * (upper - lower);
-          const double jxw = slave.tangent(xi).norm() * wq[q] * 0.5 * (upper - lower);
-
-          Tensor<1, 2> n;
-          for (unsigned int i = 0; i <= ps; ++i)
-            n += shape_value(ps, i, xi) * slave_normals[i];
-          const Point<2> x_slave = slave.point(xi);
-          double         eta     = 0.;
-          // Inside the overlap the normal line crosses the master face, up
-          // to round-off at the overlap's ends.
-          constexpr double round_off_beyond_end = 1e-8;
-          AssertThrow(project_along(master, x_slave, n, eta) &&
-                        std::abs(eta) <= 1. + round_off_beyond_end,
-                      ExcMessage("Mortar integration: the slave face from " +
-                                 coordinates_text(slave.nodes[0]) + " to " +
-                                 coordinates_text(slave.nodes[1]) +
-                                 " has a quadrature point of its overlap that does not "
-                                 "project onto the master face from " +
-                                 coordinates_text(master.nodes[0]) + " to " +
-                                 coordinates_text(master.nodes[1]) + "."));
-          eta                           = std::max(-1., std::min(1., eta));
-          const Tensor<1, 2> separation = master.point(eta) - x_slave;
-
-          result.overlap_length += jxw;
-          add_quadrature_point<2>(dual_coefficients, ps, pm, xi, eta, jxw, separation, phi, result);
-        }
+      integrate_overlap(slave, slave_normals, dual_coefficients, master, slave, master,
+                        n_quadrature_points, lower, upper, result);
       return result.overlap_length > 0.;
+    }
+
+    double
+    master_parameter(const LineFace     &slave,
+                     const LineFace     &master,
+                     const Point<2>     &x,
+                     const Tensor<1, 2> &n)
+    {
+      double eta = 0.;
+      // Inside the overlap the normal line crosses the master face, up to
+      // round-off at the overlap's ends.
+      constexpr double round_off_beyond_end = 1e-8;
+      AssertThrow(project_along(master, x, n, eta) && std::abs(eta) <= 1. + round_off_beyond_end,
+                  ExcMessage("Mortar integration: the slave face from " +
+                             coordinates_text(slave.nodes[0]) + " to " +
+                             coordinates_text(slave.nodes[1]) +
+                             " has a quadrature point of its overlap that does not "
+                             "project onto the master face from " +
+                             coordinates_text(master.nodes[0]) + " to " +
+                             coordinates_text(master.nodes[1]) + "."));
+      return std::max(-1., std::min(1., eta));
     }
 
     double

@@ -18,10 +18,11 @@ namespace contact_fem
   namespace Mortar
   {
     /**
-     * A surface face whose geometry has polynomial degree p, described by its
-     * p+1 nodes. Node order follows deal.II's face DoF order: the two end
-     * vertices first (parameter xi = -1 and xi = +1), then the interior node
-     * (xi = 0, p = 2).
+     * The nodes of a line face whose geometry has polynomial degree p: p+1
+     * nodes, of type Vector (a point, or a vector of AD numbers in the
+     * linearisation). Node order follows deal.II's face DoF order: the two
+     * end vertices first (parameter xi = -1 and xi = +1), then the interior
+     * node (xi = 0, p = 2).
      *
      * The displacement and the multipliers on the face use the Lagrange
      * shapes of shape_degree(), the element degree. It equals the geometry
@@ -29,9 +30,10 @@ namespace contact_fem
      * degree-2 geometry (a quadratic mapping of Q1 elements): then the
      * interior node is a geometry node only and carries no DoFs.
      */
-    struct LineFace
+    template <typename Vector>
+    struct LineFaceNodes
     {
-      std::vector<Point<2>> nodes;
+      std::vector<Vector> nodes;
       /// Degree of the shape functions of the DoFs; 0: the geometry degree.
       unsigned int element_degree = 0;
 
@@ -45,6 +47,11 @@ namespace contact_fem
       {
         return element_degree > 0 ? element_degree : degree();
       }
+    };
+
+    /// A surface face in double coordinates.
+    struct LineFace : LineFaceNodes<Point<2>>
+    {
       /// Position at parameter xi in [-1, 1].
       Point<2>
       point(const double xi) const;
@@ -52,6 +59,49 @@ namespace contact_fem
       Tensor<1, 2>
       tangent(const double xi) const;
     };
+
+    /// Lagrange shape function @p i of degree @p p (node order of LineFace)
+    /// at xi, for any number type (double, or an automatic-differentiation
+    /// number in the linearisation, mortar_linearisation.h).
+    template <typename Number>
+    Number
+    lagrange_value(const unsigned int p, const unsigned int i, const Number &xi)
+    {
+      // Branches, not ?:, so that expression-template numbers compile.
+      if (p == 1)
+        {
+          if (i == 0)
+            return 0.5 * (1. - xi);
+          return 0.5 * (1. + xi);
+        }
+      switch (i)
+        {
+          case 0:
+            return 0.5 * xi * (xi - 1.);
+          case 1:
+            return 0.5 * xi * (xi + 1.);
+          default:
+            return 1. - xi * xi;
+        }
+    }
+
+    /// d/dxi of lagrange_value().
+    template <typename Number>
+    Number
+    lagrange_derivative(const unsigned int p, const unsigned int i, const Number &xi)
+    {
+      if (p == 1)
+        return Number(i == 0 ? -0.5 : 0.5);
+      switch (i)
+        {
+          case 0:
+            return xi - 0.5;
+          case 1:
+            return xi + 0.5;
+          default:
+            return -2. * xi;
+        }
+    }
 
     /// Lagrange shape function @p i of degree @p p (node order of LineFace) at xi.
     double

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cmath>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -64,10 +65,15 @@ namespace contact_fem
       {
         return Mortar::node_parameter(p, i);
       }
-      static double
-      shape_value(const unsigned int p, const unsigned int i, const Parameter xi)
+      /// For a double or an AD number @p xi (mortar_number.h).
+      template <typename Number>
+      static Number
+      shape_value(const unsigned int p, const unsigned int i, const Number &xi)
       {
-        return Mortar::shape_value(p, i, xi);
+        if constexpr (std::is_same_v<Number, double>)
+          return Mortar::shape_value(p, i, xi);
+        else
+          return lagrange_value(p, i, xi);
       }
       /// |dx/dxi|: the length element of the face at @p xi.
       static double
@@ -203,19 +209,20 @@ namespace contact_fem
      * face to the blocks of @p result (integrate_pair(), both dimensions):
      * the slave point at parameter @p xi with weight @p jxw, projected to
      * @p eta on the master, apart from it by @p separation. @p phi: room
-     * for the dual functions there (one per slave DoF node).
+     * for the dual functions there (one per slave DoF node). Number: double,
+     * or in 2D an AD number (mortar_number.h).
      */
-    template <int dim>
+    template <int dim, typename Matrix, typename Parameter, typename Number, typename Operators>
     void
-    add_quadrature_point(const FullMatrix<double>              &dual_coefficients,
-                         const unsigned int                     slave_degree,
-                         const unsigned int                     master_degree,
-                         const typename Kernel<dim>::Parameter &xi,
-                         const typename Kernel<dim>::Parameter &eta,
-                         const double                           jxw,
-                         const Tensor<1, dim>                  &separation,
-                         std::vector<double>                   &phi,
-                         typename Kernel<dim>::Operators       &result)
+    add_quadrature_point(const Matrix                 &dual_coefficients,
+                         const unsigned int            slave_degree,
+                         const unsigned int            master_degree,
+                         const Parameter              &xi,
+                         const Parameter              &eta,
+                         const Number                 &jxw,
+                         const Tensor<1, dim, Number> &separation,
+                         std::vector<Number>          &phi,
+                         Operators                    &result)
     {
       for (unsigned int j = 0; j < result.D.size(); ++j)
         {
@@ -223,11 +230,11 @@ namespace contact_fem
           for (unsigned int k = 0; k < result.D.size(); ++k)
             phi[j] += dual_coefficients(j, k) * Kernel<dim>::shape_value(slave_degree, k, xi);
           result.D[j] += phi[j] * jxw;
-          result.weighted_gap[j] += phi[j] * jxw * separation;
+          result.weighted_gap[j] += Number(phi[j] * jxw) * separation;
         }
-      for (unsigned int l = 0; l < result.M.n(); ++l)
+      for (unsigned int l = 0; l < result.M.n_cols(); ++l)
         {
-          const double N_l = Kernel<dim>::shape_value(master_degree, l, eta);
+          const Number N_l = Kernel<dim>::shape_value(master_degree, l, eta);
           for (unsigned int j = 0; j < result.D.size(); ++j)
             result.M(j, l) += phi[j] * N_l * jxw;
         }
