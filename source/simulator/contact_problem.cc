@@ -1423,7 +1423,7 @@ namespace contact_fem
             break;
           }
         ++path.n_solved;
-        finish_load_step(path.n_solved, time, step_record);
+        finish_load_step(path.n_solved, step_record);
         steps.push(step_record);
         if (control.accept())
           pcout << "  Growing the step to " << control.step_size() << std::endl;
@@ -1464,9 +1464,7 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactProblem<dim>::finish_load_step(const unsigned int n_solved,
-                                        const double       time,
-                                        Json              &step_record)
+  ContactProblem<dim>::finish_load_step(const unsigned int n_solved, Json &step_record)
   {
     // The contact force of the step, before the formulation accepts it
     // (its tangential residual is taken from the last accepted state).

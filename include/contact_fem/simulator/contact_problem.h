@@ -260,11 +260,11 @@ namespace contact_fem
       std::unique_ptr<typename ContactFormulation<dim>::State> contact_state;
       std::unique_ptr<ContactInterface<dim>>                   interface;
     };
-    /// After the @p n_solved th converged load step (at @p time): its
+    /// After the @p n_solved th converged load step: its
     /// forces, the comparison's load history and the formulation's accepted
     /// state.
     void
-    finish_load_step(const unsigned int n_solved, const double time, Json &step_record);
+    finish_load_step(const unsigned int n_solved, Json &step_record);
     /// Steps the load of the cycle (LoadStepControl), splitting failed steps
     /// and restoring the last converged state; records the steps.
     LoadPath
