@@ -129,7 +129,7 @@ main(int argc, char **argv)
   alm->initialize(interface);
   // Both slave nodes 0.02 inside the master: lambda - eps g = 2 > 0.
   const std::vector<double> penetrating = displacement(interface, {-0.12, -0.12});
-  alm->start_load_step(interface, penetrating, false);
+  alm->start_load_step(interface, penetrating, StepStart::continued);
   std::cout << "alm, both nodes 0.02 inside: " << alm->n_active() << " active" << std::endl;
 
   AffineConstraints<double> constraints;
@@ -190,7 +190,7 @@ main(int argc, char **argv)
   // --- penalty frictionless, eps = 1000 ---------------------------------------
   auto penalty = make_formulation("penalty frictionless", "1000");
   penalty->initialize(interface);
-  penalty->start_load_step(interface, penetrating, false);
+  penalty->start_load_step(interface, penetrating, StepStart::continued);
   AffineConstraints<double> none;
   penalty->add_constraints(interface, std::vector<double>(interface.dofs().size(), 0.), none,
                            false);

@@ -121,7 +121,7 @@ namespace
         auto contact = make_formulation("penalty frictional", "100");
         contact->initialize(interface);
         const auto u = displacement(interface, dx, -0.12);
-        contact->start_load_step(interface, u, false);
+        contact->start_load_step(interface, u, StepStart::continued);
         const unsigned int changes = contact->update_active_set(interface, u);
         std::cout << "penalty frictional, 0.02 inside, dx = " << dx << ": " << changes
                   << " change(s) (the step starts sticking)" << std::endl;
@@ -147,7 +147,7 @@ namespace
         // 0.02 inside: lambda - eps g = 2 > 0 (active), and with neither
         // traction nor slip the nodes start sticking.
         const auto start = displacement(interface, 0., -0.12);
-        contact->start_load_step(interface, start, false);
+        contact->start_load_step(interface, start, StepStart::continued);
         AffineConstraints<double> constraints;
         contact->add_constraints(interface, std::vector<double>(interface.dofs().size(), 0.),
                                  constraints, false);

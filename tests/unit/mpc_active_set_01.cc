@@ -131,7 +131,7 @@ namespace
     auto contact = make_formulation("mpc frictional", "auto", "coulomb 0.5");
     contact->initialize(interface);
     const auto touching = displacement(interface, {-0.1, -0.1});
-    contact->start_load_step(interface, touching, true);
+    contact->start_load_step(interface, touching, StepStart::unloaded);
     contact->recover_multipliers(interface, residual_of(interface, {1., 1.}, {-0.3, -0.6}));
     unsigned int changes = contact->update_active_set(interface, touching);
     std::cout << "mpc frictional, (t, p) = (-0.3, 1) and (-0.6, 1): " << changes << " change(s)"
@@ -154,7 +154,7 @@ namespace
     // moving by 0.02.
     contact->initialize(interface);
     const auto open = displacement(interface, {0., 0.});
-    contact->start_load_step(interface, open, false);
+    contact->start_load_step(interface, open, StepStart::continued);
     contact->accept_load_step(interface, open);
     const auto entering = displacement(interface, {-0.11, 0.}, {0.02, 0.});
     contact->recover_multipliers(interface, residual_of(interface, {0., 0.}));
@@ -217,7 +217,7 @@ main(int argc, char **argv)
 
   // Node 0 penetrates by 0.02, node 1 is open (gap 0.1).
   const auto start = displacement(interface, {-0.12, 0.});
-  mpc->start_load_step(interface, start, false);
+  mpc->start_load_step(interface, start, StepStart::continued);
   print_state("start of a step", interface, *mpc, start);
   AffineConstraints<double> constraints;
   mpc->add_constraints(interface, zero, constraints, false);
@@ -246,7 +246,7 @@ main(int argc, char **argv)
 
   auto alm = make_formulation("alm frictionless", "1000");
   alm->initialize(interface);
-  alm->start_load_step(interface, displacement(interface, {0., -0.13}), false);
+  alm->start_load_step(interface, displacement(interface, {0., -0.13}), StepStart::continued);
   alm->recover_multipliers(interface, residual_of(interface, {0., 1.}));
   changes = alm->update_active_set(interface, opened);
   std::cout << "alm (eps = 1000), the same: " << changes << " change(s)" << std::endl;
@@ -255,7 +255,7 @@ main(int argc, char **argv)
   // A new mesh: node 0 at gap 0.005 (about to touch), node 1 at 0.05.
   mpc->initialize(interface);
   const auto near = displacement(interface, {-0.095, -0.05});
-  mpc->start_load_step(interface, near, true);
+  mpc->start_load_step(interface, near, StepStart::unloaded);
   print_state("first step of a mesh (Active check factor 1e-2, h = " +
                 std::to_string(interface.slave_nodes[0].size) + ")",
               interface, *mpc, near);
