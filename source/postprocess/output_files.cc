@@ -172,10 +172,10 @@ namespace contact_fem
     // The VTU names are deal.II's write_vtu_with_pvtu_record(): base_NNN.pvtu
     // and base_NNN.RANK.vtu (vtu_output.cc).
     static const std::regex pattern(
-      "(summary\\.json|log\\.txt|convergence\\.csv|pressure_profile(_cycle_[0-9]+)?\\.csv|"
-      "forces\\.csv|"
-      "(solution|contact_surface)(_cycle_[0-9]+)?\\.pvd|error_indicators\\.pvd|"
-      "contact_surface_[0-9]+\\.vtu)"
+      "(summary\\.json|log\\.txt|convergence\\.csv|"
+      "(pressure|tying)_profile(_cycle_[0-9]+)?\\.csv|forces\\.csv|"
+      "(solution|contact_surface|tied_surface)(_cycle_[0-9]+)?\\.pvd|error_indicators\\.pvd|"
+      "(contact|tied)_surface_[0-9]+\\.vtu)"
       "(\\.partial)?|"
       "(solution|error_indicators)_[0-9]+\\.([0-9]+\\.vtu|pvtu)|"
       "\\.contact_fem-write-check");

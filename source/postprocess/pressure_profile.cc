@@ -87,7 +87,8 @@ namespace contact_fem
       declare_parameters(ParameterHandler &prm)
       {
         prm.declare_entry("Write pressure profile", "true", Patterns::Bool(),
-                          "Write the slave pressure profile of every cycle as CSV.");
+                          "Write the slave pressure profile of every cycle as CSV "
+                          "(and, with tied pairs, the tying traction profile).");
       }
 
       static std::unique_ptr<Postprocessor<dim>>

@@ -233,13 +233,13 @@ namespace contact_fem
       text += "Supports and loads (Boundary conditions): " +
               (conditions.empty() ? std::string("none") : conditions) + "\n";
       prm.enter_subsection("Contact");
-      const std::string pairs = Utilities::trim(prm.get("Pairs"));
-      const std::string tied  = Utilities::trim(prm.get("Tied pairs"));
-      const std::string release =
-        prm.get_bool("Tied release in tension") ?
-          "; released in tension beyond " + prm.get("Tied release threshold") +
-            " of the pair's largest traction" :
-          "";
+      const std::string pairs   = Utilities::trim(prm.get("Pairs"));
+      const std::string tied    = Utilities::trim(prm.get("Tied pairs"));
+      const std::string release = prm.get_bool("Tied release in tension") ?
+                                    "; released in tension beyond " +
+                                      prm.get("Tied release threshold") +
+                                      " of the pair's largest traction" :
+                                    "";
       prm.leave_subsection();
       return text + "Contact pairs (slave: master): " +
              (pairs.empty() ? std::string("none (no contact)") : pairs) + "\n" +
@@ -527,10 +527,13 @@ namespace contact_fem
                       "run from it (only the names contact_fem writes: "
                       "summary.json, log.txt, convergence.csv, "
                       "pressure_profile.csv, pressure_profile_cycle_*.csv, "
+                      "tying_profile.csv, tying_profile_cycle_*.csv, "
                       "forces.csv, solution.pvd, "
                       "solution_cycle_*.pvd, solution_*.pvtu/vtu, "
                       "contact_surface.pvd, contact_surface_cycle_*.pvd, "
-                      "contact_surface_*.vtu, error_indicators.pvd, "
+                      "contact_surface_*.vtu, tied_surface.pvd, "
+                      "tied_surface_cycle_*.pvd, tied_surface_*.vtu, "
+                      "error_indicators.pvd, "
                       "error_indicators_*.pvtu/vtu; doc/outputs.md) and "
                       "checks that it can write "
                       "there. Must not be named 'output' in tests.");

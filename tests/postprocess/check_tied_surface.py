@@ -17,7 +17,8 @@ uniform to 1e-10. The sign of n_s = +-n is taken from the first node, so a
 traction of the wrong sign shows in the normal traction. The traction
 integrated over the reference cells (exact for a uniform traction on flat
 cells) must equal the pair force of summary.json to 1e-9; with contact
-pairs too, contact_surface.pvd must list the same steps.
+pairs too, contact_surface.pvd must list the same steps. tying_profile.csv
+must hold the same traction at each of its rows (the tied slave nodes).
 """
 import json
 import os
@@ -42,6 +43,7 @@ sigma = [[0.0] * dim for _ in range(dim)]
 for (i, j), value in zip(pairs, stress):
     sigma[i][j] = sigma[j][i] = value
 run_scene(contact_fem, scene, "Output directory=results", "Output/Write VTU=true",
+          "Output/Write pressure profile=true",
           "Load stepping/Number of load steps=2", *settings)
 failures = []
 
@@ -131,8 +133,24 @@ with open(os.path.join("results", "summary.json")) as f:
 check(all(abs(force[d] - pair_force[d]) <= 1e-9 * max(1.0, scale) for d in range(dim)),
       f"integrated traction {force} differs from the pair force {pair_force} of summary.json")
 
+# tying_profile.csv (the last step): the same traction at every tied slave
+# node, in at most the surface's points (hanging vertices have no row).
+import csv
+with open(os.path.join("results", "tying_profile.csv")) as f:
+    rows = list(csv.DictReader(f))
+axes = "xyz"[:dim]
+check(0 < len(rows) <= n_points, f"tying_profile.csv: {len(rows)} rows for {n_points} surface points")
+for k, row in enumerate(rows):
+    t = [float(row["traction_" + a]) for a in axes]
+    check(row["tied"] == "1", f"tying_profile.csv row {k}: not tied")
+    check(all(abs(t[d] - expected[d]) < 1e-9 * scale for d in range(dim)),
+          f"tying_profile.csv row {k}: traction {t}, expected {expected}")
+    check(abs(float(row["normal_traction"]) - expected_normal) < 1e-9 * scale,
+          f"tying_profile.csv row {k}: normal traction {row['normal_traction']}, expected {expected_normal}")
+
 if failures:
     print("\n".join(failures))
     sys.exit(1)
 print(f"{n_points} tied slave nodes: traction t sigma n = {expected} (t = 1) at each for t = 0.5 "
-      f"and 1, normal traction {expected_normal}; integrated traction = pair force {pair_force}")
+      f"and 1, normal traction {expected_normal}; integrated traction = pair force {pair_force}; "
+      f"tying_profile.csv: the same at its {len(rows)} rows")
