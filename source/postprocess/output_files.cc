@@ -166,6 +166,27 @@ namespace contact_fem
     }
   } // namespace
 
+  void
+  write_cycle_csv(const std::string                  &directory,
+                  const std::string                  &base,
+                  const unsigned int                  cycle,
+                  const std::function<std::string()> &make,
+                  const MPI_Comm                      comm)
+  {
+    const std::string latest = directory + "/" + base + ".csv";
+    const std::string of_cycle =
+      directory + "/" + base + "_cycle_" + std::to_string(cycle) + ".csv";
+    std::string latest_problem, cycle_problem;
+    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        const std::string text = make();
+        latest_problem         = write_file_atomically(latest, text);
+        cycle_problem          = write_file_atomically(of_cycle, text);
+      }
+    throw_if_unwritten(latest, latest_problem, comm);
+    throw_if_unwritten(of_cycle, cycle_problem, comm);
+  }
+
   bool
   is_output_file_name(const std::string &name)
   {

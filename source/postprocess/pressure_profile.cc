@@ -105,23 +105,16 @@ namespace contact_fem
       void
       after_cycle(const RunView<dim> &view, Json &, std::ostream &) override
       {
-        const std::string directory = view.output.directory;
-        const std::string latest    = directory + "/pressure_profile.csv";
-        const std::string of_cycle =
-          directory + "/pressure_profile_cycle_" + std::to_string(view.cycle) + ".csv";
-        std::string latest_problem, cycle_problem;
-        if (Utilities::MPI::this_mpi_process(view.comm) == 0)
-          {
+        write_cycle_csv(
+          view.output.directory, "pressure_profile", view.cycle,
+          [&view] {
             const ContactState<dim> &state = *view.solution.contact;
             // The exact pressure where the analytical solution gives one (else 0).
             const std::function<double(const Point<dim> &)> exact =
               view.comparison ? view.comparison->exact_pressure(state) : nullptr;
-            const std::string csv = pressure_profile_csv(state, view.frame, exact);
-            latest_problem        = write_file_atomically(latest, csv);
-            cycle_problem         = write_file_atomically(of_cycle, csv);
-          }
-        throw_if_unwritten(latest, latest_problem, view.comm);
-        throw_if_unwritten(of_cycle, cycle_problem, view.comm);
+            return pressure_profile_csv(state, view.frame, exact);
+          },
+          view.comm);
       }
     };
 

@@ -106,21 +106,14 @@ namespace contact_fem
       void
       after_cycle(const RunView<dim> &view, Json &, std::ostream &) override
       {
-        const std::string directory = view.output.directory;
-        const std::string latest    = directory + "/tying_profile.csv";
-        const std::string of_cycle =
-          directory + "/tying_profile_cycle_" + std::to_string(view.cycle) + ".csv";
         const std::vector<double> u =
           view.tying->interface().gather(view.solution.solution); // collective
-        std::string latest_problem, cycle_problem;
-        if (Utilities::MPI::this_mpi_process(view.comm) == 0)
-          {
-            const std::string csv = tying_profile_csv(*view.tying, u, view.frame);
-            latest_problem        = write_file_atomically(latest, csv);
-            cycle_problem         = write_file_atomically(of_cycle, csv);
-          }
-        throw_if_unwritten(latest, latest_problem, view.comm);
-        throw_if_unwritten(of_cycle, cycle_problem, view.comm);
+        write_cycle_csv(
+          view.output.directory, "tying_profile", view.cycle,
+          [&] {
+            return tying_profile_csv(*view.tying, u, view.frame);
+          },
+          view.comm);
       }
     };
   } // namespace

@@ -7,6 +7,7 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>
 
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -63,6 +64,17 @@ namespace contact_fem
   /// rank if @p problem is not empty on some rank. Collective.
   void
   throw_if_unwritten(const std::string &path, const std::string &problem, const MPI_Comm comm);
+
+  /// Writes the text of @p make (called on rank 0 only) to @p base.csv (the
+  /// latest cycle's) and @p base_cycle_K.csv (K = @p cycle) in
+  /// @p directory, each through write_file_atomically(), and throws on
+  /// every rank if either could not be written. Collective.
+  void
+  write_cycle_csv(const std::string                  &directory,
+                  const std::string                  &base,
+                  const unsigned int                  cycle,
+                  const std::function<std::string()> &make,
+                  const MPI_Comm                      comm);
 
   /// Writes this rank's piece of @p data and (rank 0) the .pvtu record that
   /// lists the pieces, named as deal.II's write_vtu_with_pvtu_record():
