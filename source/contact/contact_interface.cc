@@ -34,8 +34,11 @@ namespace contact_fem
     master_faces_per_rank.clear();
     std::map<types::global_dof_index, unsigned int> node_of_dof;
     const unsigned int record = 5 + nodes_per_face * 3 * dim + n_geometry_points * dim;
+    const unsigned int rank   = Utilities::MPI::this_mpi_process(communicator);
     for (const auto &chunk : all)
       {
+        if (slave_faces_per_rank.size() == rank)
+          own_faces.first = faces.size();
         slave_faces_per_rank.push_back(0);
         master_faces_per_rank.push_back(0);
         for (unsigned int r = 0; r + record <= chunk.size(); r += record)
@@ -80,6 +83,8 @@ namespace contact_fem
             ++(face.slave ? slave_faces_per_rank.back() : master_faces_per_rank.back());
             faces.push_back(face);
           }
+        if (slave_faces_per_rank.size() == rank + 1)
+          own_faces.second = faces.size();
       }
   }
 

@@ -7,7 +7,10 @@
 #include <deal.II/boost_adaptors/bounding_box.h>
 #include <deal.II/numerics/rtree.h>
 
+#include <deal.II/base/mpi.h>
+
 #include <contact_fem/contact/contact_interface.h>
+#include <contact_fem/core/parameters.h>
 
 #include <algorithm>
 #include <cmath>
@@ -131,6 +134,122 @@ namespace contact_fem
   }
 
   template <int dim>
+  template <class Tree>
+  std::vector<double>
+  ContactInterface<dim>::integrate_own_faces(const unsigned int                       p,
+                                             const std::vector<FaceGeometry>         &geometries,
+                                             const Tree                              &tree,
+                                             const std::vector<double>               &reach,
+                                             const std::map<unsigned int, SlaveNode> &slave_data,
+                                             std::string                             &error) const
+  {
+    using Kernel = Mortar::Kernel<dim>;
+    std::vector<double> packed;
+    try
+      {
+        for (unsigned int f = own_faces.first; f < own_faces.second; ++f)
+          {
+            if (!faces[f].slave || faces[f].pair != p)
+              continue;
+            BoundingBox<dim> box(geometries[f].nodes);
+            box.extend(reach[f]);
+            std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
+            tree.query(boost::geometry::index::intersects(box), std::back_inserter(hits));
+            std::sort(hits.begin(), hits.end(), [](const auto &a, const auto &b) {
+              return a.second < b.second;
+            });
+
+            // Narrow phase: opposing normals, then the overlaps, on which
+            // the dual basis of the slave face is built (the part the
+            // masters cover).
+            std::vector<Tensor<1, dim>> normals;
+            for (const unsigned int n : faces[f].nodes)
+              normals.push_back(slave_data.at(n).normal);
+            const Tensor<1, dim> n_slave =
+              Mortar::face_normal(geometries[f], Kernel::centre(), faces[f].orientation);
+            std::vector<unsigned int> masters, facing;
+            typename Kernel::Overlaps overlaps;
+            for (const auto &hit : hits)
+              {
+                const unsigned int m = hit.second;
+                if (!(n_slave *
+                        Mortar::face_normal(geometries[m], Kernel::centre(), faces[m].orientation) <
+                      0.))
+                  continue;
+                facing.push_back(m);
+                if (Kernel::add_overlap(geometries[f], normals, geometries[m], overlaps))
+                  masters.push_back(m);
+              }
+            if (masters.empty())
+              continue;
+            check_tiling(f, geometries, masters, overlaps, facing);
+            const FullMatrix<double> A = Kernel::dual_basis(geometries[f], normals, overlaps);
+            const std::size_t        count_at = packed.size() + 1;
+            packed.push_back(f);
+            packed.push_back(0.);
+            for (const unsigned int m : masters)
+              {
+                typename Kernel::Operators ops;
+                if (!Mortar::integrate_pair(geometries[f], normals, A, geometries[m],
+                                            Mortar::n_quadrature_points(geometries[f],
+                                                                        geometries[m]),
+                                            ops))
+                  continue;
+                AssertDimension(ops.D.size(), faces[f].nodes.size());
+                AssertDimension(ops.M.n(), faces[m].nodes.size());
+                packed[count_at] += 1.;
+                packed.push_back(m);
+                packed.insert(packed.end(), ops.D.begin(), ops.D.end());
+                for (unsigned int j = 0; j < ops.M.m(); ++j)
+                  for (unsigned int l = 0; l < ops.M.n(); ++l)
+                    packed.push_back(ops.M(j, l));
+                for (const auto &g : ops.weighted_gap)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    packed.push_back(g[d]);
+              }
+          }
+      }
+    catch (const std::exception &e)
+      {
+        error = user_message(e);
+      }
+    return packed;
+  }
+
+  template <int dim>
+  std::map<unsigned int, typename ContactInterface<dim>::Segments>
+  ContactInterface<dim>::unpack_segments(const std::vector<std::vector<double>> &packed) const
+  {
+    std::map<unsigned int, Segments> segments_of_face;
+    for (const auto &chunk : packed)
+      for (std::size_t i = 0; i < chunk.size();)
+        {
+          const auto         f          = static_cast<unsigned int>(chunk[i]);
+          const auto         n_segments = static_cast<unsigned int>(chunk[i + 1]);
+          const unsigned int n          = faces[f].nodes.size();
+          Segments          &segments   = segments_of_face[f];
+          i += 2;
+          for (unsigned int k = 0; k < n_segments; ++k)
+            {
+              const auto                              m = static_cast<unsigned int>(chunk[i++]);
+              typename Mortar::Kernel<dim>::Operators ops;
+              ops.D.assign(chunk.begin() + i, chunk.begin() + i + n);
+              i += n;
+              ops.M.reinit(n, faces[m].nodes.size());
+              for (unsigned int j = 0; j < ops.M.m(); ++j)
+                for (unsigned int l = 0; l < ops.M.n(); ++l)
+                  ops.M(j, l) = chunk[i++];
+              ops.weighted_gap.resize(n);
+              for (auto &g : ops.weighted_gap)
+                for (unsigned int d = 0; d < dim; ++d)
+                  g[d] = chunk[i++];
+              segments.emplace_back(m, std::move(ops));
+            }
+        }
+    return segments_of_face;
+  }
+
+  template <int dim>
   void
   ContactInterface<dim>::search_pair(
     const unsigned int                                      p,
@@ -147,68 +266,37 @@ namespace contact_fem
     // that touching boxes of flat faces meet.
     constexpr double                                       master_box_margin = 1e-2;
     std::vector<std::pair<BoundingBox<dim>, unsigned int>> master_boxes;
+    std::vector<double>                                    reach(faces.size(), 0.);
     for (unsigned int f = 0; f < faces.size(); ++f)
-      if (!faces[f].slave && faces[f].pair == p)
+      if (faces[f].pair == p && !faces[f].slave)
         {
           BoundingBox<dim> box(geometries[f].nodes);
           box.extend(master_box_margin * face_lengths[f]);
           master_boxes.emplace_back(box, f);
         }
+      else if (faces[f].pair == p)
+        {
+          reach[f]           = search_factor * face_lengths[f] + allowance;
+          reach_of_search[p] = std::min(reach_of_search[p], reach[f]);
+        }
     const auto tree = pack_rtree(master_boxes);
+
+    // Narrow phase and integration on the faces of this rank; a failed
+    // tiling check stops every rank with the same message.
+    std::string error;
+    const auto  own    = integrate_own_faces(p, geometries, tree, reach, slave_data, error);
+    const auto  errors = Utilities::MPI::all_gather(communicator, error);
+    for (const std::string &message : errors)
+      AssertThrow(message.empty(), ExcMessage(message));
+    const auto segments_of_face = unpack_segments(Utilities::MPI::all_gather(communicator, own));
 
     std::vector<bool> master_is_candidate(faces.size(), false);
     double            slave_measure = 0., slave_modulus = 0.;
     unsigned int      n_overlapping_faces = 0;
-    for (unsigned int f = 0; f < faces.size(); ++f)
+    for (const auto &[f, segments] : segments_of_face)
       {
-        if (!faces[f].slave || faces[f].pair != p)
-          continue;
-        const double     reach = search_factor * face_lengths[f] + allowance;
-        BoundingBox<dim> box(geometries[f].nodes);
-        box.extend(reach);
-        reach_of_search[p] = std::min(reach_of_search[p], reach);
-        std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
-        tree.query(boost::geometry::index::intersects(box), std::back_inserter(hits));
-        std::sort(hits.begin(), hits.end(), [](const auto &a, const auto &b) {
-          return a.second < b.second;
-        });
-
-        // Narrow phase: opposing normals, then the overlaps, on which the
-        // dual basis of the slave face is built (the part the masters
-        // cover).
-        std::vector<Tensor<1, dim>> normals;
-        for (const unsigned int n : faces[f].nodes)
-          normals.push_back(slave_data.at(n).normal);
-        const Tensor<1, dim> n_slave =
-          Mortar::face_normal(geometries[f], Kernel::centre(), faces[f].orientation);
-        std::vector<unsigned int> masters, facing;
-        typename Kernel::Overlaps overlaps;
-        for (const auto &hit : hits)
-          {
-            const unsigned int m = hit.second;
-            if (!(n_slave *
-                    Mortar::face_normal(geometries[m], Kernel::centre(), faces[m].orientation) <
-                  0.))
-              continue;
-            facing.push_back(m);
-            if (Kernel::add_overlap(geometries[f], normals, geometries[m], overlaps))
-              masters.push_back(m);
-          }
-        if (masters.empty())
-          continue;
-        check_tiling(f, geometries, masters, overlaps, facing);
-        const FullMatrix<double> A = Kernel::dual_basis(geometries[f], normals, overlaps);
-        std::vector<std::pair<unsigned int, typename Kernel::Operators>> segments;
-        for (const unsigned int m : masters)
-          {
-            typename Kernel::Operators ops;
-            if (!Mortar::integrate_pair(geometries[f], normals, A, geometries[m],
-                                        Mortar::n_quadrature_points(geometries[f], geometries[m]),
-                                        ops))
-              continue;
-            master_is_candidate[m] = true;
-            segments.emplace_back(m, std::move(ops));
-          }
+        for (const auto &segment : segments)
+          master_is_candidate[segment.first] = true;
         if (!add_constrained_face(f, segments, slave_data, M_of_node, weighted_gap_of_node))
           for (const auto &[m, ops] : segments)
             add_segment(f, m, ops, slave_data, M_of_node, weighted_gap_of_node);
@@ -294,6 +382,9 @@ namespace contact_fem
                                            const std::vector<double>    &u_at_dofs) const
   {
     using Kernel = Mortar::Kernel<dim>;
+    // The nodes are shared out over the ranks (every n_ranks-th).
+    const unsigned int          rank    = Utilities::MPI::this_mpi_process(communicator);
+    const unsigned int          n_ranks = Utilities::MPI::n_mpi_processes(communicator);
     std::vector<double>         distances(points.size(), std::numeric_limits<double>::infinity());
     std::vector<Tensor<1, dim>> u(nodes.size());
     for (unsigned int n = 0; n < nodes.size(); ++n)
@@ -329,7 +420,7 @@ namespace contact_fem
         if (boxes.empty())
           continue;
         const auto tree = pack_rtree(boxes);
-        for (unsigned int i = 0; i < points.size(); ++i)
+        for (unsigned int i = rank; i < points.size(); i += n_ranks)
           {
             const SlaveNode &s = points[i];
             if (s.pair != p)
@@ -378,7 +469,11 @@ namespace contact_fem
             distances[i]      = side < 0. ? -best : best;
           }
       }
-    return distances;
+    // Each node's distance is on one rank, +infinity on the others.
+    std::vector<double> all_distances(points.size());
+    Utilities::MPI::min(ArrayView<const double>(distances), communicator,
+                        ArrayView<double>(all_distances));
+    return all_distances;
   }
 
   // The members defined here, for both dimensions; the class itself is

@@ -17,6 +17,8 @@
 
 #include <array>
 #include <map>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace contact_fem
@@ -301,6 +303,10 @@ namespace contact_fem
     unsigned int        geometry_degree = 1; ///< of the face geometry
     /// How the surfaces are split over the ranks (locally owned faces).
     std::vector<unsigned int> slave_faces_per_rank, master_faces_per_rank;
+    /// The faces (indices in faces) this rank contributed at set-up, the
+    /// slave faces among them the ones whose narrow phase and mortar
+    /// integration it computes: [first, second).
+    std::pair<unsigned int, unsigned int> own_faces = {0, 0};
 
   private:
     /// Builds nodes and faces from the face records of every rank (@p all,
@@ -398,9 +404,17 @@ namespace contact_fem
                       const SurfaceNormals                                   &slave_normals,
                       const SurfaceNormals                                   &master_normals);
 
-    /// Search and integration of pair @p p on the face @p geometries of
-    /// @p measures: adds D, M and the weighted gap of the slave nodes of the
-    /// pair, and sets its statistics.
+    /// The mortar segments of a slave face: (master face, operators).
+    using Segments = std::vector<std::pair<unsigned int, typename Mortar::Kernel<dim>::Operators>>;
+
+    /**
+     * Search and integration of pair @p p on the face @p geometries of
+     * @p measures: adds D, M and the weighted gap of the slave nodes of the
+     * pair, and sets its statistics. Each rank computes the narrow phase
+     * and the integration of its own slave faces (integrate_own_faces());
+     * the segments are then exchanged and every rank adds all of them in
+     * face order, so the sums are those of a serial run, bit for bit.
+     */
     void
     search_pair(const unsigned int                                      p,
                 const std::vector<FaceGeometry>                        &geometries,
@@ -410,6 +424,26 @@ namespace contact_fem
                 std::map<unsigned int, SlaveNode>                      &slave_data,
                 std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
                 std::map<unsigned int, Tensor<1, dim>>                 &weighted_gap_of_node);
+
+    /// The narrow phase and the integration of the slave faces of pair
+    /// @p p in own_faces against the master faces in @p tree whose boxes
+    /// meet the face's box enlarged by @p reach (per face), packed for
+    /// unpack_segments(): per face with segments, its index, their number,
+    /// and per segment the master face, D, M and the weighted gap. A failed
+    /// tiling check ends the loop with its message in @p error.
+    template <class Tree>
+    std::vector<double>
+    integrate_own_faces(const unsigned int                       p,
+                        const std::vector<FaceGeometry>         &geometries,
+                        const Tree                              &tree,
+                        const std::vector<double>               &reach,
+                        const std::map<unsigned int, SlaveNode> &slave_data,
+                        std::string                             &error) const;
+
+    /// The segments of every face in @p packed (integrate_own_faces() of
+    /// all ranks, in rank order), by slave face.
+    std::map<unsigned int, Segments>
+    unpack_segments(const std::vector<std::vector<double>> &packed) const;
 
     /// Displacement at dofs() of the last search, and its reach per pair.
     std::vector<double>                             search_displacement;
