@@ -19,16 +19,17 @@ integrated over the reference cells (exact for a uniform traction on flat
 cells) must equal the pair force of summary.json to 1e-9; with contact
 pairs too, contact_surface.pvd must list the same steps. tying_profile.csv
 must hold the same traction at each of its rows (the tied slave nodes).
-In the volume VTU of each step (solution_NNN.pvtu), tying_traction and
-tying_normal_traction must be the same at every tied slave node in the
-slave body's cells (to the file's single precision) and zero elsewhere.
+In the volume VTU of each step (solution_NNN.pvtu), the stress must be t
+sigma at every point, and tying_traction and tying_normal_traction the
+traction above at every tied slave node in the slave body's cells and zero
+elsewhere (to the file's single precision).
 """
 import json
 import os
 import sys
 
 from scene_run import run_scene
-from vtu_files import collection, read_surface, tied_volume
+from vtu_files import collection, read_surface, read_volume, tied_volume
 
 contact_fem, scene, stress = sys.argv[1:4]
 stress = [float(x) for x in stress.split(",")]
@@ -122,6 +123,12 @@ for time, surface in collection("tied_surface.pvd"):
     # The volume VTU of the step: the same traction at every tied slave
     # node (in the slave body's cells), zero elsewhere, to single precision.
     values, wrong = tied_volume(volumes[time], reference)
+    # The uniform stress itself at every point of the volume (both bodies,
+    # hanging vertices), to single precision.
+    _, volume = read_volume(volumes[time])
+    bad = [s for s in volume["stress"] if any(abs(s[3 * i + j] - time * sigma[i][j]) > 1e-6 * scale
+                                              for i in range(dim) for j in range(dim))]
+    check(not bad, f"{volumes[time]}: {len(bad)} points with a stress other than t sigma, e.g. {bad[:1]}")
     failures += wrong
     for x, at_node in zip(reference, values):
         for t, p in at_node:
@@ -168,4 +175,5 @@ if failures:
 print(f"{n_points} tied slave nodes: traction t sigma n = {expected} (t = 1) at each for t = 0.5 "
       f"and 1, normal traction {expected_normal}; integrated traction = pair force {pair_force}; "
       f"tying_profile.csv: the same at its {len(rows)} rows; the volume VTU: the same at the "
-      f"{sum(len(v) for v in values)} points of the slave cells there, zero elsewhere")
+      f"{sum(len(v) for v in values)} points of the slave cells there, zero elsewhere, and the "
+      f"stress t sigma at its {len(volume['stress'])} points")
