@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Runs a scene with tied pairs and checks the tying traction of its volume VTU.
 
-Usage: check_tied_volume.py CONTACT_FEM SCENE.prm [SETTING...]
+Usage: check_tied_volume.py CONTACT_FEM [--launcher=MPIEXEC,ARG...] SCENE.prm [SETTING...]
 
 The scene runs with its VTU output and tying_profile.csv and the
 'Section/Key=value' SETTINGs. In the volume VTU of the last load step
@@ -11,7 +11,9 @@ body's cells, the traction and normal traction tying_profile.csv has for
 that node, to the VTU's single precision, and zero elsewhere (vtu_files.py
 tied_volume()). The traction must vary along the interface (a uniform one
 could not show a node mixed up with another), and released nodes (tied
-flag 0) must show what the CSV has for them.
+flag 0) must show what the CSV has for them. With --launcher, contact_fem
+runs under that MPI launcher (its words separated by commas), so the
+volume has a piece per rank.
 """
 import csv
 import os
@@ -20,9 +22,12 @@ import sys
 from scene_run import run_scene
 from vtu_files import collection, read_surface, tied_volume
 
-contact_fem, scene = sys.argv[1:3]
+arguments = sys.argv[1:]
+launcher = arguments.pop(1)[len("--launcher="):].split(",") \
+    if arguments[1].startswith("--launcher=") else []
+contact_fem, scene = arguments[:2]
 run_scene(contact_fem, scene, "Output directory=results", "Output/Write VTU=true",
-          "Output/Write pressure profile=true", *sys.argv[3:])
+          "Output/Write pressure profile=true", *arguments[2:], launcher=launcher)
 failures = []
 
 # Every tied slave node (hanging vertices too) from the tied surface VTU.
@@ -31,6 +36,11 @@ references = [[x[d] - u[d] for d in range(3)] for x, u in zip(points, fields["di
 volume = collection("solution.pvd")[-1][1]
 values, wrong = tied_volume(volume, references)
 failures += wrong
+if launcher:
+    import xml.etree.ElementTree as ET
+    pieces = len(list(ET.parse(os.path.join("results", volume)).getroot().iter("Piece")))
+    if pieces < 2:
+        failures.append(f"{volume}: {pieces} piece(s) from the MPI run")
 
 with open(os.path.join("results", "tying_profile.csv")) as f:
     rows = list(csv.DictReader(f))
