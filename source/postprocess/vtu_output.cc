@@ -133,45 +133,25 @@ namespace contact_fem
       return flags;
     }
 
-    /// The nodal contact fields of @p contact on a scalar Q_p space
-    /// @p scalar_dofs of the same mesh: the contact pressure, weighted gap,
-    /// active, slave and master flags, then the formulation's own fields
-    /// (friction: tangential traction, slip, stick); their names in
-    /// @p names. Hanging vertices show the interpolation of their parents.
+    /// Calls @p at(n, scalar_dof) for every locally owned DoF of the scalar
+    /// Q_p space @p scalar_dofs at a node n of @p interface (@p dof_handler:
+    /// the displacement's, on the same mesh).
     template <int dim>
-    std::vector<TrilinosWrappers::MPI::Vector>
-    contact_fields(const SolutionView<dim>  &view,
-                   const DoFHandler<dim>    &scalar_dofs,
-                   std::vector<std::string> &names)
+    void
+    for_each_interface_dof(const DoFHandler<dim>       &dof_handler,
+                           const DoFHandler<dim>       &scalar_dofs,
+                           const ContactInterface<dim> &interface,
+                           const std::function<void(unsigned int, types::global_dof_index)> &at)
     {
-      const ContactInterface<dim>   &interface    = view.contact->interface;
-      const ContactFormulation<dim> &contact      = view.contact->contact;
-      const MPI_Comm                 comm         = view.dof_handler.get_communicator();
-      const IndexSet                 scalar_owned = scalar_dofs.locally_owned_dofs();
-      IndexSet                       scalar_relevant;
-      DoFTools::extract_locally_relevant_dofs(scalar_dofs, scalar_relevant);
-
-      names                 = {"contact_pressure", "weighted_gap", "active", "slave", "master"};
-      const auto own_fields = contact.nodal_fields(interface);
-      for (const auto &field : own_fields)
-        names.push_back(field.name);
-      std::vector<TrilinosWrappers::MPI::Vector> fields(names.size());
-      for (auto &f : fields)
-        f.reinit(scalar_owned, comm);
-
       std::unordered_map<types::global_dof_index, unsigned int> node_of_dof;
       for (unsigned int n = 0; n < interface.nodes.size(); ++n)
         node_of_dof[interface.nodes[n].dofs[0]] = n;
-      std::vector<double> gap(interface.nodes.size(), 0.);
-      for (const auto &s : interface.slave_nodes)
-        if (s.paired)
-          gap[s.node] = interface.gap(s, view.contact->displacement);
-
-      const FiniteElement<dim>            &fe = view.dof_handler.get_fe();
+      const IndexSet                       scalar_owned = scalar_dofs.locally_owned_dofs();
+      const FiniteElement<dim>            &fe           = dof_handler.get_fe();
       std::vector<types::global_dof_index> vector_dofs(fe.n_dofs_per_cell()),
         scalar_dofs_of_cell(scalar_dofs.get_fe().n_dofs_per_cell());
       auto scalar_cell = scalar_dofs.begin_active();
-      for (const auto &cell : view.dof_handler.active_cell_iterators())
+      for (const auto &cell : dof_handler.active_cell_iterators())
         {
           if (cell->is_locally_owned())
             {
@@ -184,40 +164,84 @@ namespace contact_fem
                   if (ci.first != 0 || it == node_of_dof.end())
                     continue;
                   const auto scalar_dof = scalar_dofs_of_cell[ci.second];
-                  if (!scalar_owned.is_element(scalar_dof))
-                    continue;
-                  const unsigned int n = it->second;
-                  // A hanging vertex has no multiplier of its own: it shows
-                  // the interpolation of its parents, as its displacement.
-                  const std::vector<std::pair<unsigned int, double>> itself = {{n, 1.}};
-                  const auto &parents  = interface.nodes[n].parents;
-                  double      pressure = 0., interpolated_gap = 0.;
-                  bool        active = true;
-                  for (const auto &[source, weight] : parents.empty() ? itself : parents)
-                    {
-                      pressure += weight * contact.normal_pressure(source);
-                      interpolated_gap += weight * gap[source];
-                      active = active && contact.is_active(source);
-                    }
-                  fields[0](scalar_dof) = pressure;
-                  fields[1](scalar_dof) = interpolated_gap;
-                  fields[2](scalar_dof) = active ? 1. : 0.;
-                  fields[3](scalar_dof) = interface.nodes[n].slave ? 1. : 0.;
-                  fields[4](scalar_dof) = interface.nodes[n].master ? 1. : 0.;
-                  for (unsigned int k = 0; k < own_fields.size(); ++k)
-                    fields[5 + k](scalar_dof) = own_fields[k].values[n];
+                  if (scalar_owned.is_element(scalar_dof))
+                    at(it->second, scalar_dof);
                 }
             }
           ++scalar_cell;
         }
-      std::vector<TrilinosWrappers::MPI::Vector> ghosted(names.size());
-      for (unsigned int k = 0; k < names.size(); ++k)
+    }
+
+    /// @p fields (owned entries of @p dofs' vectors, set by insertion)
+    /// compressed and with the ghost entries DataOut reads.
+    template <int dim>
+    std::vector<TrilinosWrappers::MPI::Vector>
+    ghosted_fields(std::vector<TrilinosWrappers::MPI::Vector> &fields, const DoFHandler<dim> &dofs)
+    {
+      IndexSet relevant;
+      DoFTools::extract_locally_relevant_dofs(dofs, relevant);
+      std::vector<TrilinosWrappers::MPI::Vector> ghosted(fields.size());
+      for (unsigned int k = 0; k < fields.size(); ++k)
         {
           fields[k].compress(VectorOperation::insert);
-          ghosted[k].reinit(scalar_owned, scalar_relevant, comm);
+          ghosted[k].reinit(dofs.locally_owned_dofs(), relevant, dofs.get_communicator());
           ghosted[k] = fields[k];
         }
       return ghosted;
+    }
+
+    /// The nodal contact fields of @p contact on a scalar Q_p space
+    /// @p scalar_dofs of the same mesh: the contact pressure, weighted gap,
+    /// active, slave and master flags, then the formulation's own fields
+    /// (friction: tangential traction, slip, stick); their names in
+    /// @p names. Hanging vertices show the interpolation of their parents.
+    template <int dim>
+    std::vector<TrilinosWrappers::MPI::Vector>
+    contact_fields(const SolutionView<dim>  &view,
+                   const DoFHandler<dim>    &scalar_dofs,
+                   std::vector<std::string> &names)
+    {
+      const ContactInterface<dim>   &interface = view.contact->interface;
+      const ContactFormulation<dim> &contact   = view.contact->contact;
+      const MPI_Comm                 comm      = view.dof_handler.get_communicator();
+
+      names                 = {"contact_pressure", "weighted_gap", "active", "slave", "master"};
+      const auto own_fields = contact.nodal_fields(interface);
+      for (const auto &field : own_fields)
+        names.push_back(field.name);
+      std::vector<TrilinosWrappers::MPI::Vector> fields(names.size());
+      for (auto &f : fields)
+        f.reinit(scalar_dofs.locally_owned_dofs(), comm);
+
+      std::vector<double> gap(interface.nodes.size(), 0.);
+      for (const auto &s : interface.slave_nodes)
+        if (s.paired)
+          gap[s.node] = interface.gap(s, view.contact->displacement);
+
+      for_each_interface_dof<dim>(
+        view.dof_handler, scalar_dofs, interface,
+        [&](const unsigned int n, const types::global_dof_index scalar_dof) {
+          // A hanging vertex has no multiplier of its own: it shows the
+          // interpolation of its parents, as its displacement.
+          const std::vector<std::pair<unsigned int, double>> itself   = {{n, 1.}};
+          const auto                                        &parents  = interface.nodes[n].parents;
+          double                                             pressure = 0., interpolated_gap = 0.;
+          bool                                               active = true;
+          for (const auto &[source, weight] : parents.empty() ? itself : parents)
+            {
+              pressure += weight * contact.normal_pressure(source);
+              interpolated_gap += weight * gap[source];
+              active = active && contact.is_active(source);
+            }
+          fields[0](scalar_dof) = pressure;
+          fields[1](scalar_dof) = interpolated_gap;
+          fields[2](scalar_dof) = active ? 1. : 0.;
+          fields[3](scalar_dof) = interface.nodes[n].slave ? 1. : 0.;
+          fields[4](scalar_dof) = interface.nodes[n].master ? 1. : 0.;
+          for (unsigned int k = 0; k < own_fields.size(); ++k)
+            fields[5 + k](scalar_dof) = own_fields[k].values[n];
+        });
+      return ghosted_fields(fields, scalar_dofs);
     }
 
     /// The VTK cell type and the VTK order of the nodes of a slave face
@@ -263,6 +287,57 @@ namespace contact_fem
       return [&interface, &field](const unsigned int n) {
         return interpolated(interface, field, n);
       };
+    }
+
+    /// The tying tractions of @p tying per node of its interface: the
+    /// vector on the slave at its tied (or held) slave nodes, zero
+    /// elsewhere, and its normal component (positive in tension).
+    template <int dim>
+    std::pair<std::vector<Tensor<1, dim>>, std::vector<double>>
+    nodal_tying_tractions(const MeshTying<dim> &tying)
+    {
+      const ContactInterface<dim> &interface = tying.interface();
+      std::vector<Tensor<1, dim>>  traction(interface.nodes.size());
+      std::vector<double>          normal(interface.nodes.size(), 0.);
+      for (unsigned int k = 0; k < interface.slave_nodes.size(); ++k)
+        {
+          const auto &s = interface.slave_nodes[k];
+          if (!s.paired)
+            continue;
+          traction[s.node] = tying.tractions()[k];
+          normal[s.node]   = traction[s.node] * s.normal;
+        }
+      return {traction, normal};
+    }
+
+    /// The tying traction of @p tying in the volume: the vector on the
+    /// displacement's DoFs and its normal component on the scalar Q_p space
+    /// @p scalar_dofs, as nodal_tying_tractions() (hanging vertices: the
+    /// interpolation of their parents).
+    template <int dim>
+    std::pair<TrilinosWrappers::MPI::Vector, TrilinosWrappers::MPI::Vector>
+    tying_fields(const DoFHandler<dim> &dof_handler,
+                 const DoFHandler<dim> &scalar_dofs,
+                 const MeshTying<dim>  &tying)
+    {
+      const ContactInterface<dim>               &interface = tying.interface();
+      const auto                                 nodal     = nodal_tying_tractions(tying);
+      const IndexSet                             owned     = dof_handler.locally_owned_dofs();
+      std::vector<TrilinosWrappers::MPI::Vector> vector(1), scalar(1);
+      vector[0].reinit(owned, dof_handler.get_communicator());
+      scalar[0].reinit(scalar_dofs.locally_owned_dofs(), dof_handler.get_communicator());
+      for (unsigned int n = 0; n < interface.nodes.size(); ++n)
+        {
+          const Tensor<1, dim> t = interpolated(interface, nodal.first, n);
+          for (unsigned int d = 0; d < dim; ++d)
+            if (owned.is_element(interface.nodes[n].dofs[d]))
+              vector[0](interface.nodes[n].dofs[d]) = t[d];
+        }
+      for_each_interface_dof<dim>(dof_handler, scalar_dofs, interface,
+                                  [&](const unsigned int n, const types::global_dof_index dof) {
+                                    scalar[0](dof) = interpolated(interface, nodal.second, n);
+                                  });
+      return {ghosted_fields(vector, dof_handler)[0], ghosted_fields(scalar, scalar_dofs)[0]};
     }
 
     /// The nodal fields of a surface VTU: numbers and vectors per point.
@@ -402,17 +477,14 @@ namespace contact_fem
     {
       const ContactInterface<dim> &interface = tying.interface();
       const unsigned int           n_nodes   = interface.nodes.size();
-      std::vector<double>          normal(n_nodes, 0.), tied(n_nodes, 0.), pair(n_nodes, -1.);
-      std::vector<Tensor<1, dim>>  traction(n_nodes);
+      std::vector<double>          tied(n_nodes, 0.), pair(n_nodes, -1.);
+      const auto [traction, normal] = nodal_tying_tractions(tying);
       for (unsigned int k = 0; k < interface.slave_nodes.size(); ++k)
         {
           const auto &s = interface.slave_nodes[k];
           pair[s.node]  = s.pair;
-          if (!s.paired)
-            continue;
-          tied[s.node]     = tying.bond_of(k) == MeshTying<dim>::Bond::tied ? 1. : 0.;
-          traction[s.node] = tying.tractions()[k];
-          normal[s.node]   = traction[s.node] * s.normal;
+          if (s.paired)
+            tied[s.node] = tying.bond_of(k) == MeshTying<dim>::Bond::tied ? 1. : 0.;
         }
       SurfaceFields<dim> fields;
       fields.scalars = {{"normal_traction", nodal_field(interface, normal)},
@@ -463,6 +535,10 @@ namespace contact_fem
     std::vector<TrilinosWrappers::MPI::Vector> fields;
     if (view.contact)
       fields = contact_fields(view, scalar_dofs, names);
+    // Only with tied pairs: the VTU of a scene without them is unchanged.
+    std::pair<TrilinosWrappers::MPI::Vector, TrilinosWrappers::MPI::Vector> tying_traction;
+    if (tying)
+      tying_traction = tying_fields(view.dof_handler, scalar_dofs, *tying);
 
     DataOut<dim> data_out;
     data_out.attach_triangulation(triangulation);
@@ -471,6 +547,14 @@ namespace contact_fem
     data_out.add_data_vector(view.dof_handler, view.solution, stress);
     for (unsigned int k = 0; k < fields.size(); ++k)
       data_out.add_data_vector(scalar_dofs, fields[k], names[k]);
+    if (tying)
+      {
+        data_out.add_data_vector(
+          view.dof_handler, tying_traction.first, std::vector<std::string>(dim, "tying_traction"),
+          std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+            dim, DataComponentInterpretation::component_is_part_of_vector));
+        data_out.add_data_vector(scalar_dofs, tying_traction.second, "tying_normal_traction");
+      }
     Vector<float> material(triangulation.n_active_cells()),
       subdomain(triangulation.n_active_cells());
     for (const auto &cell : triangulation.active_cell_iterators())

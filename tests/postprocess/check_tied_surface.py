@@ -19,13 +19,17 @@ integrated over the reference cells (exact for a uniform traction on flat
 cells) must equal the pair force of summary.json to 1e-9; with contact
 pairs too, contact_surface.pvd must list the same steps. tying_profile.csv
 must hold the same traction at each of its rows (the tied slave nodes).
+In the volume VTU of each step (solution_NNN.pvtu), the stress must be t
+sigma at every point, and tying_traction and tying_normal_traction the
+traction above at every tied slave node in the slave body's cells and zero
+elsewhere (to the file's single precision).
 """
 import json
 import os
 import sys
 
 from scene_run import run_scene
-from vtu_files import collection, read_surface
+from vtu_files import collection, read_surface, read_volume, tied_volume
 
 contact_fem, scene, stress = sys.argv[1:4]
 stress = [float(x) for x in stress.split(",")]
@@ -85,6 +89,7 @@ def unit_normal(points, cells):
 
 
 scale = max(abs(x) for x in stress)
+volumes = dict(collection("solution.pvd"))
 n_points = 0
 for time, surface in collection("tied_surface.pvd"):
     points, cells, fields, wrong = read_surface(surface)
@@ -115,6 +120,22 @@ for time, surface in collection("tied_surface.pvd"):
         values = [fields["traction"][k][d] for k in range(n_points)]
         check(max(values) - min(values) <= 1e-10 * scale,
               f"{surface}: traction component {d} not uniform: {min(values)} ... {max(values)}")
+    # The volume VTU of the step: the same traction at every tied slave
+    # node (in the slave body's cells), zero elsewhere, to single precision.
+    values, wrong = tied_volume(volumes[time], reference)
+    # The uniform stress itself at every point of the volume (both bodies,
+    # hanging vertices), to single precision.
+    _, volume = read_volume(volumes[time])
+    bad = [s for s in volume["stress"] if any(abs(s[3 * i + j] - time * sigma[i][j]) > 1e-6 * scale
+                                              for i in range(dim) for j in range(dim))]
+    check(not bad, f"{volumes[time]}: {len(bad)} points with a stress other than t sigma, e.g. {bad[:1]}")
+    failures += wrong
+    for x, at_node in zip(reference, values):
+        for t, p in at_node:
+            check(all(abs(t[d] - expected[d]) <= 1e-6 * scale for d in range(dim))
+                  and abs(p - expected_normal) <= 1e-6 * scale,
+                  f"{volumes[time]} at {x}: tying traction {t}, normal {p}, expected "
+                  f"{expected}, {expected_normal}")
 
 # The last step: the traction integrated over the reference cells is the
 # pair force of summary.json.
@@ -153,4 +174,6 @@ if failures:
     sys.exit(1)
 print(f"{n_points} tied slave nodes: traction t sigma n = {expected} (t = 1) at each for t = 0.5 "
       f"and 1, normal traction {expected_normal}; integrated traction = pair force {pair_force}; "
-      f"tying_profile.csv: the same at its {len(rows)} rows")
+      f"tying_profile.csv: the same at its {len(rows)} rows; the volume VTU: the same at the "
+      f"{sum(len(v) for v in values)} points of the slave cells there, zero elsewhere, and the "
+      f"stress t sigma at its {len(volume['stress'])} points")

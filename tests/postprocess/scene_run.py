@@ -15,9 +15,10 @@ def run(command):
     return result.stdout
 
 
-def run_scene(contact_fem, scene, *settings):
-    """Runs contact_fem on scene with each 'Section/Key=value' of settings."""
-    command = [contact_fem, scene]
+def run_scene(contact_fem, scene, *settings, launcher=()):
+    """Runs contact_fem on scene with each 'Section/Key=value' of settings
+    (under the MPI launcher command, if given)."""
+    command = [*launcher, contact_fem, scene]
     for setting in settings:
         command += ["--set", setting]
     return run(command)

@@ -1,5 +1,6 @@
 // The VTU/PVD files of a run: the solution of every converged load step
-// (displacement, stress, von Mises stress, contact fields), the slave
+// (displacement, stress, von Mises stress, contact fields, with tied pairs
+// the tying traction), the slave
 // contact surfaces (pressure, traction vector, gap, state), the tied slave
 // surfaces (tying traction) and the error
 // indicators of every adaptive cycle, with ParaView collections whose times
@@ -50,7 +51,8 @@ namespace contact_fem
     /// solution_NNN.pvtu (NNN counts the files of the run) for the load
     /// step converged at load time @p time of adaptive cycle @p cycle,
     /// listed at @p time in solution_cycle_K.pvd and in solution.pvd (the
-    /// load path of the latest cycle: the final mesh's after the run).
+    /// load path of the latest cycle: the final mesh's after the run); with
+    /// @p tying, its tying traction at the tied slave nodes is a field.
     /// With contact also contact_surface_NNN.vtu, the slave surfaces
     /// alone, in contact_surface_cycle_K.pvd and contact_surface.pvd.
     /// With @p tying (tied pairs) also tied_surface_NNN.vtu, the tied
