@@ -103,13 +103,17 @@ namespace contact_fem
       return 0.;
     // beta = c a / (1 - a), a = T(p) / |t*|: the derivative of the slip
     // direction t* / |t*| across it. a reaches 1 at zero slip (infinitely
-    // stiff); the cap keeps beta below 1e4 c, the stiffness of a default
-    // tangential penalty, and changes only the rate, not the solution.
-    constexpr double largest_a = 1. - 1e-4;
-    const double     c         = this->penalty[s.pair];
-    const double     trial     = magnitude<dim>(tangential[s.node] - c * xi);
-    const double     bound     = laws[s.pair]->threshold(std::max(this->pressure[s.node], 0.));
-    const double     a         = trial > 0. ? std::min(bound / trial, largest_a) : largest_a;
+    // stiff); the cap keeps beta below 1e4 times the E / h of the stiffer
+    // side (c is that of the softer one), the stiffness of a default
+    // tangential penalty there, and changes only the rate, not the
+    // solution. Capped at the softer side, the slip of a node against a
+    // much stiffer slave converged only linearly (bench/stability,
+    // patch-base-1e6).
+    const double largest_a = 1. - 1e-4 / stiffness_ratio[s.pair];
+    const double c         = this->penalty[s.pair];
+    const double trial     = magnitude<dim>(tangential[s.node] - c * xi);
+    const double bound     = laws[s.pair]->threshold(std::max(this->pressure[s.node], 0.));
+    const double a         = trial > 0. ? std::min(bound / trial, largest_a) : largest_a;
     return c * a / (1. - a);
   }
 
@@ -214,6 +218,17 @@ namespace contact_fem
                                       const StepStart              start)
   {
     this->set_pair_scaling(interface, 1.);
+    stiffness_ratio.assign(interface.pairs.size(), 1.);
+    for (unsigned int p = 0; p < interface.pairs.size(); ++p)
+      {
+        const auto &stat = interface.statistics[p];
+        if (stat.mean_slave_size > 0.)
+          {
+            const double slave  = stat.slave_modulus / stat.mean_slave_size;
+            const double master = stat.master_modulus / stat.mean_master_size;
+            stiffness_ratio[p]  = std::max(slave, master) / std::min(slave, master);
+          }
+      }
     std::fill(released_pressure.begin(), released_pressure.end(), 0.);
     std::fill(released_tangential.begin(), released_tangential.end(), TangentialVector<dim>());
     auto &pressure = this->pressure;

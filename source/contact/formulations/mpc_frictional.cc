@@ -51,9 +51,9 @@ namespace contact_fem
     if (dim == 2 || !this->sets.slips(s.node, this->active) || this->frictionless_law(s))
       return 0.;
     // The derivative of t = -T xi / |xi| across the slip: T / |xi|, capped
-    // as alm's at 1e4 c (c = E/h of the pair).
+    // as alm's at 1e4 times the stiffer side's E / h.
     const double bound   = this->laws[s.pair]->threshold(std::max(this->pressure[s.node], 0.));
-    const double largest = 1e4 * this->penalty[s.pair];
+    const double largest = 1e4 * this->penalty[s.pair] * this->stiffness_ratio[s.pair];
     const double slip    = magnitude<dim>(xi);
     return slip * largest > bound ? bound / slip : largest;
   }

@@ -152,6 +152,9 @@ namespace contact_fem
                   std::ostream                &out) const override;
 
   protected:
+    /// Per pair: the stiffer side's E / h over the softer side's (the
+    /// penalty's), which sets the largest beta (slip_cone_stiffness()).
+    std::vector<double> stiffness_ratio;
     /// For a formulation that shares the constraints and only decides the
     /// sets otherwise (mpc frictional); @p name for the messages.
     AlmFrictional(const FrictionParameters &friction,
