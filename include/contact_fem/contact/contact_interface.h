@@ -30,9 +30,11 @@ namespace contact_fem
    *
    * The surfaces are lower-dimensional, so each rank gathers all of them
    * (faces, reference coordinates and DoF indices of their nodes) once per
-   * mesh, and computes the search and the mortar operators of the whole
-   * interface redundantly: every rank then knows every constraint that touches
-   * its DoFs, and the result does not depend on the partition.
+   * mesh. The narrow phase and the mortar integration of a slave face run
+   * on the rank that owns it; the segments are exchanged, and every rank
+   * assembles the operators of the whole interface from them in face
+   * order: every rank then knows every constraint that touches its DoFs,
+   * and the result does not depend on the partition.
    *
    * Search and mortar integration run on the configuration X + u the
    * caller gives (the reference configuration with Contact/Kinematics =
