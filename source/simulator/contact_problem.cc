@@ -1255,7 +1255,9 @@ namespace contact_fem
         finite_strain_bodies.insert(id);
     if (solved)
       if (const std::string text =
-            checks.large_strain(cycle_record, finite_strain_bodies, contact != nullptr);
+            checks.large_strain(cycle_record, finite_strain_bodies,
+                                // a gap linear in u (not current kinematics)
+                                contact != nullptr && !contact_parameters.current_kinematics);
           !text.empty())
         {
           outside_model_range = true;
