@@ -69,15 +69,16 @@ namespace contact_fem
       }
 
       /// Adds @p factor times the coordinate derivatives @p derivatives,
-      /// taken to the displacement DoFs, to @p sums.
+      /// taken to the displacement DoFs, to @p sums. Every DoF of the patch
+      /// gets an entry, zero or not: the sparsity pattern holds the
+      /// couplings of the patch, whatever the configuration.
       void
       add(const std::vector<double> &derivatives, const double factor, DofMap &sums) const
       {
         for (unsigned int i = 0; i < chain.size(); ++i)
           for (const auto &[node, weight] : chain[i])
             for (unsigned int d = 0; d < 2; ++d)
-              if (const double value = derivatives[2 * i + d]; value != 0.)
-                sums[interface.nodes[node].dofs[d]] += factor * weight * value;
+              sums[interface.nodes[node].dofs[d]] += factor * weight * derivatives[2 * i + d];
       }
 
       Mortar::PairPatch patch;
