@@ -84,22 +84,22 @@ namespace contact_fem
       Mortar::PairPatch patch;
 
     private:
-      const ContactInterface<2>                             &interface;
-      const std::vector<Tensor<1, 2>>                       &u;
-      std::map<unsigned int, unsigned int>                   point_of_node;
+      const ContactInterface<2>                                &interface;
+      const std::vector<Tensor<1, 2>>                          &u;
+      std::map<unsigned int, unsigned int>                      point_of_node;
       std::vector<std::vector<std::pair<unsigned int, double>>> chain;
     };
 
     /// The derivatives of pair (@p f, @p m) added to the sums of the
     /// paired nodes of slave face @p f.
     void
-    add_pair(const ContactInterface<2>                     &interface,
-             const std::vector<Tensor<1, 2>>               &u,
-             const unsigned int                             f,
-             const unsigned int                             m,
-             const std::vector<unsigned int>               &neighbours,
-             const std::vector<unsigned int>               &masters,
-             std::map<unsigned int, NodeSums>              &sums)
+    add_pair(const ContactInterface<2>        &interface,
+             const std::vector<Tensor<1, 2>>  &u,
+             const unsigned int                f,
+             const unsigned int                m,
+             const std::vector<unsigned int>  &neighbours,
+             const std::vector<unsigned int>  &masters,
+             std::map<unsigned int, NodeSums> &sums)
     {
       PatchBuilder builder(interface, u);
       builder.patch.slave_faces.push_back(builder.add_face(f));
@@ -197,7 +197,8 @@ namespace contact_fem
               for (const unsigned int g : faces_of_node[n])
                 if (g != f)
                   neighbours.insert(g);
-            add_pair(*this, u, f, m, std::vector<unsigned int>(neighbours.begin(), neighbours.end()),
+            add_pair(*this, u, f, m,
+                     std::vector<unsigned int>(neighbours.begin(), neighbours.end()),
                      masters_of_face[f], sums);
           }
         for (const auto &[n, node_sums] : sums)

@@ -80,8 +80,8 @@ namespace
   /// (0 outside the node's patch).
   double
   analytic(const ContactInterface<2>::LinearisedNode &node,
-           const types::global_dof_index               key,
-           const types::global_dof_index               dof)
+           const types::global_dof_index              key,
+           const types::global_dof_index              dof)
   {
     const auto it = std::find(node.dofs.begin(), node.dofs.end(), dof);
     if (it == node.dofs.end())
@@ -107,8 +107,8 @@ namespace
     const FESystem<2> fe(FE_Q<2>(degree), 2);
     DoFHandler<2>     dof_handler(tria);
     dof_handler.distribute_dofs(fe);
-    const MappingQ<2>  mapping(mapping_degree);
-    const Materials<2> materials = make_materials<2>("1, 2", "100, 200", "0.3, 0.3");
+    const MappingQ<2>         mapping(mapping_degree);
+    const Materials<2>        materials = make_materials<2>("1, 2", "100, 200", "0.3, 0.3");
     AffineConstraints<double> none;
     none.close();
     ContactInterface<2> interface;
@@ -163,12 +163,12 @@ namespace
           scale = std::max(scale, std::abs(analytic(node, entry.second, dof)));
         for (const auto &[dof, value] : by_dof)
           {
-            const double exact  = analytic(node, entry.second, dof);
-            const double e1     = std::abs(value - exact) / scale;
-            const double e2     = std::abs(fine.at(entry).at(dof) - exact) / scale;
-            const double e3     = std::abs(tight.at(entry).at(dof) - exact) / scale;
-            const bool   inside = std::find(node.dofs.begin(), node.dofs.end(), dof) !=
-                                node.dofs.end();
+            const double exact = analytic(node, entry.second, dof);
+            const double e1    = std::abs(value - exact) / scale;
+            const double e2    = std::abs(fine.at(entry).at(dof) - exact) / scale;
+            const double e3    = std::abs(tight.at(entry).at(dof) - exact) / scale;
+            const bool   inside =
+              std::find(node.dofs.begin(), node.dofs.end(), dof) != node.dofs.end();
             complete = complete && (inside || std::abs(value) < 1e-10 * scale);
             small    = small && e3 < 1e-6;
             worst    = std::max(worst, e3);
@@ -178,15 +178,15 @@ namespace
           }
       }
     std::cout << "Q" << degree << " on a mapping of degree " << mapping_degree << ": "
-              << linear.size() << " paired slave nodes, "
-              << interface.coupled_faces.size() << " coupled face pairs" << std::endl
+              << linear.size() << " paired slave nodes, " << interface.coupled_faces.size()
+              << " coupled face pairs" << std::endl
               << "  same face pairs at every perturbed configuration: "
               << (coarse_pairs && fine_pairs && tight_pairs ? "yes" : "no") << std::endl
               << "  dG/du and df/du against central differences, error below 1e-6 of the "
                  "node's largest derivative: "
               << (small ? "yes" : "no") << std::endl
-              << "  error falling at second order (or round-off): "
-              << (second_order ? "yes" : "no") << std::endl
+              << "  error falling at second order (or round-off): " << (second_order ? "yes" : "no")
+              << std::endl
               << "  no coupling outside the node's patch: " << (complete ? "yes" : "no")
               << std::endl;
     if (!small)

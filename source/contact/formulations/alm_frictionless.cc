@@ -103,7 +103,8 @@ namespace contact_fem
               for (const auto &[m, value] : s.M)
                 line.add(interface.nodes[m], d, 1., interface, fixed_values);
             }
-          if (constraints.can_store_line(slave.dofs[c]) && !constraints.is_constrained(slave.dofs[c]))
+          if (constraints.can_store_line(slave.dofs[c]) &&
+              !constraints.is_constrained(slave.dofs[c]))
             line.store(slave.dofs[c], constraints);
         }
   }
@@ -264,7 +265,7 @@ namespace contact_fem
     };
 
     // The gap row, scaled by k (stress / length) to the bulk's size.
-    const double   k = this->scale[s.pair];
+    const double       k = this->scale[s.pair];
     FullMatrix<double> gap_row(1, kept.size());
     Vector<double>     gap_rhs(1);
     gap_rhs(0) = -k * s.D * interface.gap(s, u);
@@ -285,7 +286,7 @@ namespace contact_fem
     const double lambda = this->pressure[s.node];
     if (lambda == 0.)
       return;
-    std::vector<types::global_dof_index> rows;
+    std::vector<types::global_dof_index>     rows;
     std::vector<const std::vector<double> *> values;
     for (const auto &[dof, derivatives] : linearised.force)
       if (!interface.dof_fixed(interface.position(dof)))
