@@ -28,9 +28,9 @@
 
 #include "unit_test_blocks.h"
 #include "unit_test_materials.h"
+#include "unit_test_random.h"
 
 #include <cmath>
-#include <cstdint>
 #include <iostream>
 #include <map>
 
@@ -39,20 +39,6 @@ using namespace contact_fem;
 
 namespace
 {
-  class Random
-  {
-  public:
-    double
-    next()
-    {
-      state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-      return 2. * static_cast<double>(state >> 11) / 9007199254740992. - 1.;
-    }
-
-  private:
-    std::uint64_t state = 29;
-  };
-
   /// Per paired slave node: G_j and f_j by DoF, at the last update().
   using Values = std::map<unsigned int, std::map<types::global_dof_index, double>>;
 
@@ -115,7 +101,7 @@ namespace
     interface.initialize(mapping, dof_handler, {ContactPair{3, 4}}, none, none, materials,
                          MPI_COMM_WORLD);
 
-    Random              random;
+    Random              random(29);
     std::vector<double> u(interface.dofs().size());
     for (double &value : u)
       value = 0.02 * random.next();
