@@ -100,7 +100,7 @@ namespace contact_fem
                       "not depend on it: after convergence every slave node is "
                       "checked against the whole master surface. Also the reach of "
                       "the one search of the tied pairs.");
-    prm.declare_entry("Kinematics", "small", Patterns::Selection("small|updated"),
+    prm.declare_entry("Kinematics", "small", Patterns::Selection("small|updated|current"),
                       "'small': the mortar operators (pairing, normals, D, M) are "
                       "built on the reference configuration and the gap is linear in "
                       "the displacement, consistent with the small-strain bulk: "
@@ -109,7 +109,12 @@ namespace contact_fem
                       "rebuilt on the configuration X + u of the start of every load "
                       "step (follows larger sliding, but the answer then depends on "
                       "the number of load steps and adaptive cycles; see "
-                      "doc/design.md).");
+                      "doc/design.md). 'current': search, segmentation, D, M, "
+                      "normals and gaps on the deformed surfaces X + u of every "
+                      "Newton iterate, with their consistent linearisation in the "
+                      "tangent (finite deformation, large sliding; Newton "
+                      "converges quadratically; see doc/finite_strain.md). 2D, "
+                      "'alm frictionless' only.");
     prm.declare_entry("Penetration tolerance", "0.05", Patterns::Double(0.),
                       "After a step converges, every slave node is located against "
                       "the whole master surface of its pair (R-tree, closest point). "
@@ -155,12 +160,25 @@ namespace contact_fem
                                "round-off of the tractions would decide the release)."));
       }
     search_factor         = prm.get_double("Search factor");
-    updated_kinematics    = prm.get("Kinematics") == "updated";
+    current_kinematics    = prm.get("Kinematics") == "current";
+    updated_kinematics    = prm.get("Kinematics") == "updated" || current_kinematics;
     penetration_tolerance = prm.get_double("Penetration tolerance");
     allow_loss_of_contact = prm.get_bool("Allow loss of contact");
     prm.leave_subsection();
     AssertThrow(search_factor > 0., ExcMessage("Contact/Search factor: expected a value > 0."));
     AssertThrow(penetration_tolerance > 0.,
                 ExcMessage("Contact/Penetration tolerance: expected a value > 0."));
+  }
+
+  void
+  ContactParameters::check_kinematics(const unsigned int dim, const std::string &formulation) const
+  {
+    // The linearisation of the mortar operators exists for 2D line faces,
+    // and only the exact-gap formulation without friction uses it.
+    AssertThrow(!current_kinematics || (dim == 2 && formulation == "alm frictionless"),
+                ExcMessage("Contact/Kinematics = current is implemented for 2D scenes with "
+                           "Contact/Formulation = alm frictionless only (this scene: " +
+                           std::to_string(dim) + "D, " + formulation +
+                           "). Use Kinematics = updated or small."));
   }
 } // namespace contact_fem

@@ -283,6 +283,7 @@ namespace contact_fem
     boundary_conditions.parse_parameters(prm, dim);
     load_stepping.parse_parameters(prm);
     contact_parameters.parse_parameters(prm);
+    contact_parameters.check_kinematics(dim, read_entry(prm, "Contact", "Formulation"));
     // Read (and checked) whether or not the scene has contact pairs; kept
     // only if it has.
     auto formulation = ContactFormulation<dim>::create(prm);
@@ -846,7 +847,17 @@ namespace contact_fem
         return update;
       }
     interface_displacement = interface->gather(solution);
-    if (iteration > 0 && search->extend_if_outrun(interface_displacement))
+    // Current kinematics: the operators of every iterate on its own
+    // configuration (the search then always reaches the iterate).
+    if (iteration > 0 && contact_parameters.current_kinematics)
+      {
+        if (search->follow(interface_displacement))
+          {
+            update.searched_again = true;
+            make_sparsity_pattern();
+          }
+      }
+    else if (iteration > 0 && search->extend_if_outrun(interface_displacement))
       {
         update.searched_again = true;
         make_sparsity_pattern();
@@ -1244,7 +1255,9 @@ namespace contact_fem
         finite_strain_bodies.insert(id);
     if (solved)
       if (const std::string text =
-            checks.large_strain(cycle_record, finite_strain_bodies, contact != nullptr);
+            checks.large_strain(cycle_record, finite_strain_bodies,
+                                // a gap linear in u (not current kinematics)
+                                contact != nullptr && !contact_parameters.current_kinematics);
           !text.empty())
         {
           outside_model_range = true;

@@ -47,8 +47,37 @@ namespace contact_fem
           predicted = std::max(predicted, last_step_motion[p] * step_size / last_step_size);
         motion_allowance[p] = search_growth * (moved[p] + predicted);
       }
-    interface.update(search_configuration, parameters.search_factor, motion_allowance);
+    search(search_configuration);
     contact.start_load_step(interface, displacement, start);
+  }
+
+  template <int dim>
+  void
+  SearchControl<dim>::search(const std::vector<double> &configuration)
+  {
+    interface.update(configuration, parameters.search_factor, motion_allowance);
+    if (parameters.current_kinematics)
+      interface.linearise();
+  }
+
+  template <int dim>
+  bool
+  SearchControl<dim>::follow(const std::vector<double> &displacement)
+  {
+    TimerOutput::Scope t(timer, "Contact: search");
+    // The couplings of the sparsity pattern: the face pairs and the
+    // paired nodes.
+    const auto paired_nodes = [this] {
+      std::vector<unsigned int> result;
+      for (const auto &s : interface.slave_nodes)
+        if (s.paired)
+          result.push_back(s.node);
+      return result;
+    };
+    const auto coupled = interface.coupled_faces;
+    const auto paired  = paired_nodes();
+    search(displacement);
+    return interface.coupled_faces != coupled || paired_nodes() != paired;
   }
 
   template <int dim>
@@ -120,7 +149,7 @@ namespace contact_fem
     // The same configuration as the step's search (a copy: update()
     // replaces the interface's own).
     const std::vector<double> configuration = interface.search_configuration();
-    interface.update(configuration, parameters.search_factor, motion_allowance);
+    search(configuration);
     contact.start_load_step(interface, displacement, StepStart::continued);
   }
 

@@ -23,8 +23,9 @@
 // weighted gap equal integrate_pair() exactly.
 #include <contact_fem/contact/mortar_linearisation.h>
 
+#include "unit_test_random.h"
+
 #include <cmath>
-#include <cstdint>
 #include <functional>
 #include <iostream>
 #include <map>
@@ -36,22 +37,6 @@ using namespace contact_fem::Mortar;
 
 namespace
 {
-  /// Numbers in [-1, 1] from a linear congruential generator: the same
-  /// sequence on every platform.
-  class Random
-  {
-  public:
-    double
-    next()
-    {
-      state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-      return 2. * static_cast<double>(state >> 11) / 9007199254740992. - 1.;
-    }
-
-  private:
-    std::uint64_t state = 2026;
-  };
-
   using Curve = std::function<Point<2>(const double)>;
 
   /**
@@ -301,7 +286,7 @@ namespace
 int
 main()
 {
-  Random      random;
+  Random      random(2026);
   const Curve flat = [](const double s) {
     return Point<2>(s, 0.);
   };

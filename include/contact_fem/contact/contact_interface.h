@@ -132,6 +132,24 @@ namespace contact_fem
       bool                                         paired = false; ///< has a master projection
     };
 
+    /**
+     * The consistent linearisation of one paired slave node j at the
+     * configuration of the last search (Contact/Kinematics = current, 2D):
+     * derivatives with respect to the displacement DoFs of its patch (its
+     * slave faces, the slave faces next to them, their masters).
+     */
+    struct LinearisedNode
+    {
+      /// The DoFs the derivatives refer to.
+      std::vector<types::global_dof_index> dofs;
+      /// d G_j / du, G_j = n_j . int Phi_j (x_master - x_slave) = D_j g_j.
+      std::vector<double> gap;
+      /// d f_j / du per DoF of the contact force per unit pressure f_j
+      /// (-D_j n_j on the slave node, +M_jl n_j on master l): (row, values
+      /// at dofs).
+      std::vector<std::pair<types::global_dof_index, std::vector<double>>> force;
+    };
+
     /// Interface statistics of the last search, per pair.
     struct PairStatistics
     {
@@ -206,6 +224,11 @@ namespace contact_fem
     update(const std::vector<double> &u,
            const double               search_factor,
            const std::vector<double> &motion_allowance = {});
+
+    /// linearised_nodes of the paired slave nodes at the configuration of
+    /// the last update() (2D only; contact_interface_linearisation.cc).
+    void
+    linearise();
 
     /// Per pair: a bound of how far the slave surface moved relative to the
     /// master from @p from to @p to (both at dofs()): the largest slave plus
@@ -289,6 +312,8 @@ namespace contact_fem
     std::vector<Node>        nodes;
     std::vector<Face>        faces;
     std::vector<SlaveNode>   slave_nodes;
+    /// Per paired slave node (by node index), after linearise().
+    std::map<unsigned int, LinearisedNode> linearised_nodes;
     /// The hanging vertices of the slave surfaces at the last search (3D
     /// adaptive meshes): no multiplier, but checked against penetration like
     /// the slave nodes. Only node, pair, normal and size are set; paired

@@ -7,6 +7,7 @@
 #include <deal.II/base/types.h>
 
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace contact_fem
@@ -30,8 +31,11 @@ namespace contact_fem
     std::optional<double> tied_release_threshold;
     double                search_factor = 3.;
     /// Mortar operators rebuilt at every load step (else once, on the
-    /// reference configuration).
+    /// reference configuration): Kinematics = updated or current.
     bool updated_kinematics = false;
+    /// Kinematics = current: also rebuilt and linearised at every Newton
+    /// iteration (2D, alm frictionless).
+    bool current_kinematics = false;
     /// Unexplained penetration allowed after convergence, over the element size.
     double penetration_tolerance = 0.05;
     bool   allow_loss_of_contact = false;
@@ -40,6 +44,10 @@ namespace contact_fem
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
+    /// Refuses Kinematics = current where it is not implemented: a scene
+    /// of dimension @p dim with Contact/Formulation = @p formulation.
+    void
+    check_kinematics(const unsigned int dim, const std::string &formulation) const;
   };
 } // namespace contact_fem
 

@@ -51,6 +51,13 @@ namespace contact_fem
     bool
     extend_if_outrun(const std::vector<double> &displacement);
 
+    /// Contact/Kinematics = current, during Newton: searches and
+    /// linearises the operators on the iterate @p displacement; returns
+    /// whether other faces are coupled than before (the sparsity pattern
+    /// must then be rebuilt).
+    bool
+    follow(const std::vector<double> &displacement);
+
     /// The penetration check of a converged iterate @p displacement of load
     /// step @p step at @p time: true if it holds (the step's motion is then
     /// recorded), false after a wider search (Newton goes on); throws a
@@ -94,6 +101,10 @@ namespace contact_fem
     /// and searches again.
     void
     widen(const std::vector<double> &displacement, const unsigned int pair, const double depth);
+    /// Search and integration on @p configuration with the present motion
+    /// allowance, and the linearisation with current kinematics.
+    void
+    search(const std::vector<double> &configuration);
     /// Searches the same configuration with the present motion allowance
     /// and restarts the formulation's active set from @p displacement.
     void

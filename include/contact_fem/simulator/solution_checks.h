@@ -59,7 +59,7 @@ namespace contact_fem
     /// why they leave the small-strain range, or "". The cells of
     /// @p finite_strain_bodies (Materials/Models) follow their law at any
     /// strain: only their rotation is checked, and only @p with_contact
-    /// (the contact gap stays on the reference configuration).
+    /// (a contact gap linear in u: Contact/Kinematics small or updated).
     std::string
     large_strain(Json                               &record,
                  const std::set<types::material_id> &finite_strain_bodies = {},

@@ -1,4 +1,8 @@
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
 #include <contact_fem/contact/formulations/alm_frictionless.h>
+#include <contact_fem/contact/formulations/constraint_line.h>
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +14,11 @@ namespace contact_fem
   AlmFrictionless<dim>::AlmFrictionless(ParameterHandler &prm)
     : FrictionlessFormulation<dim>(
         FrictionlessFormulation<dim>::Parameters::parse_for_exact_gap(prm, "alm frictionless"))
-  {}
+  {
+    prm.enter_subsection("Contact");
+    current = prm.get("Kinematics") == "current";
+    prm.leave_subsection();
+  }
 
   template <int dim>
   AlmFrictionless<dim>::AlmFrictionless(const Parameters &parameters)
@@ -72,7 +80,44 @@ namespace contact_fem
                                         AffineConstraints<double>   &constraints,
                                         const bool                   all_candidates) const
   {
-    this->add_gap_constraints(interface, fixed_values, constraints, !all_candidates);
+    // Current kinematics: the candidates' lines only shape the sparsity
+    // pattern (the test space's couplings); the trial space is free.
+    if (!current)
+      this->add_gap_constraints(interface, fixed_values, constraints, !all_candidates);
+    else if (!all_candidates)
+      this->dirichlet_values = fixed_values;
+    else
+      for (const auto &s : interface.slave_nodes)
+        {
+          // Every component of the node and its masters: the normals turn
+          // during Newton, so a coupling at round-off now may not stay so.
+          const unsigned int c = this->eliminated_component(interface, s);
+          if (!s.paired || c == dim)
+            continue;
+          const auto    &slave = interface.nodes[s.node];
+          ConstraintLine line;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              if (d != c)
+                line.add(slave, d, 1., interface, fixed_values);
+              for (const auto &[m, value] : s.M)
+                line.add(interface.nodes[m], d, 1., interface, fixed_values);
+            }
+          if (constraints.can_store_line(slave.dofs[c]) &&
+              !constraints.is_constrained(slave.dofs[c]))
+            line.store(slave.dofs[c], constraints);
+        }
+  }
+
+  template <int dim>
+  void
+  AlmFrictionless<dim>::add_test_constraints(const ContactInterface<dim> &interface,
+                                             const std::vector<double>   &fixed_values,
+                                             AffineConstraints<double>   &constraints) const
+  {
+    // The test functions v with f_j . v = 0: the homogeneous part of the
+    // gap line of the current D, M and n.
+    this->add_gap_constraints(interface, fixed_values, constraints, true);
   }
 
   template <int dim>
@@ -105,7 +150,14 @@ namespace contact_fem
     for (const auto &s : interface.slave_nodes)
       {
         if (!s.paired)
-          continue;
+          {
+            // Current kinematics: a node may leave its masters during Newton.
+            if (active[s.node])
+              ++changes;
+            active[s.node]   = false;
+            pressure[s.node] = 0.;
+            continue;
+          }
         const bool now_active =
           decides_active(s, interface.gap(s, u), false, StepStart::continued) &&
           this->eliminated_component(interface, s) < dim;
@@ -141,6 +193,117 @@ namespace contact_fem
     result.multiplier    = std::sqrt(sum);
     result.contact_force = this->contact_forces(interface);
     return result;
+  }
+
+  // Contact/Kinematics = current: the Newton system of the contact on the
+  // configuration of the iterate u_k. An active node j eliminates one DoF
+  // from the test space (the direction of its contact force f_j = -D_j n_j,
+  // +M_jl n_j, so that its pressure drops out), and that DoF's row holds
+  // the linearised gap G_j(u_k) + dG_j/du (u - u_k) = 0 (all patch DoFs:
+  // slave, neighbouring slave nodes through the normals, masters). The
+  // geometric stiffness -lambda_j df_j/du of the pressure of the last
+  // iterate makes the tangent consistent. The derivatives:
+  // ContactInterface::linearise().
+
+  template <int dim>
+  void
+  AlmFrictionless<dim>::add_sparsity(const ContactInterface<dim> &interface,
+                                     const AffineConstraints<double> &,
+                                     const IndexSet         &owned,
+                                     DynamicSparsityPattern &pattern) const
+  {
+    if (!current)
+      return;
+    for (const auto &[node, linearised] : interface.linearised_nodes)
+      if (owned.is_element(interface.nodes[node].dofs[0]))
+        for (const auto row : linearised.dofs)
+          pattern.add_entries(row, linearised.dofs.begin(), linearised.dofs.end(), true);
+  }
+
+  template <int dim>
+  void
+  AlmFrictionless<dim>::assemble(const ContactInterface<dim>     &interface,
+                                 const AffineConstraints<double> &constraints,
+                                 const AffineConstraints<double> &test_constraints,
+                                 const IndexSet                  &owned,
+                                 TrilinosWrappers::SparseMatrix  &matrix,
+                                 TrilinosWrappers::MPI::Vector   &rhs) const
+  {
+    if (!current)
+      return;
+    // The operators were built on the iterate: its displacement is the
+    // search configuration.
+    const std::vector<double> &u = interface.search_configuration();
+    for (const auto &s : interface.slave_nodes)
+      if (s.paired && this->active[s.node] && owned.is_element(interface.nodes[s.node].dofs[0]))
+        assemble_current(interface, s, u, constraints, test_constraints, matrix, rhs);
+  }
+
+  template <int dim>
+  void
+  AlmFrictionless<dim>::assemble_current(const ContactInterface<dim>                     &interface,
+                                         const typename ContactInterface<dim>::SlaveNode &s,
+                                         const std::vector<double>                       &u,
+                                         const AffineConstraints<double> &constraints,
+                                         const AffineConstraints<double> &test_constraints,
+                                         TrilinosWrappers::SparseMatrix  &matrix,
+                                         TrilinosWrappers::MPI::Vector   &rhs) const
+  {
+    const auto &linearised = interface.linearised_nodes.at(s.node);
+    // Dirichlet DoFs already hold their values in u_k, so their columns
+    // (u - u_k = 0 there) and rows (zero test functions) drop out.
+    std::vector<types::global_dof_index> columns;
+    std::vector<unsigned int>            kept;
+    for (unsigned int i = 0; i < linearised.dofs.size(); ++i)
+      if (!interface.dof_fixed(interface.position(linearised.dofs[i])))
+        {
+          kept.push_back(i);
+          columns.push_back(linearised.dofs[i]);
+        }
+    const auto u_at = [&](const unsigned int i) {
+      return u[interface.position(linearised.dofs[i])];
+    };
+
+    // The gap row, scaled by k (stress / length) to the bulk's size.
+    const double       k = this->scale[s.pair];
+    FullMatrix<double> gap_row(1, kept.size());
+    Vector<double>     gap_rhs(1);
+    gap_rhs(0) = -k * s.D * interface.gap(s, u);
+    for (unsigned int a = 0; a < kept.size(); ++a)
+      {
+        gap_row(0, a) = k * linearised.gap[kept[a]];
+        gap_rhs(0) += gap_row(0, a) * u_at(kept[a]);
+      }
+    const std::vector<types::global_dof_index> row = {
+      interface.nodes[s.node].dofs[this->eliminated_component(interface, s)]};
+    AffineConstraints<double> free_rows;
+    free_rows.close();
+    free_rows.distribute_local_to_global(gap_row, row, constraints, columns, matrix);
+    free_rows.distribute_local_to_global(gap_rhs, row, rhs);
+
+    // The geometric stiffness -lambda_j df_j/du, in the test space; its
+    // part at u_k moves to the right-hand side (Newton for the total u).
+    const double lambda = this->pressure[s.node];
+    if (lambda == 0.)
+      return;
+    std::vector<types::global_dof_index>     rows;
+    std::vector<const std::vector<double> *> values;
+    for (const auto &[dof, derivatives] : linearised.force)
+      if (!interface.dof_fixed(interface.position(dof)))
+        {
+          rows.push_back(dof);
+          values.push_back(&derivatives);
+        }
+    FullMatrix<double> stiffness(rows.size(), kept.size());
+    Vector<double>     stiffness_rhs(rows.size());
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      for (unsigned int a = 0; a < kept.size(); ++a)
+        {
+          stiffness(r, a) = -lambda * (*values[r])[kept[a]];
+          stiffness_rhs(r) += stiffness(r, a) * u_at(kept[a]);
+        }
+    test_constraints.distribute_local_to_global(stiffness, rows, constraints, columns, matrix);
+    test_constraints.distribute_local_to_global(stiffness_rhs, rows, rhs);
   }
 
   template class AlmFrictionless<2>;

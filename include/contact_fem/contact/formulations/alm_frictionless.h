@@ -62,6 +62,35 @@ namespace contact_fem
     Residuals
     residuals(const ContactInterface<dim> &interface, const std::vector<double> &u) const override;
 
+    /// With current kinematics the test space (the contact force
+    /// directions) differs from the linearised gap of the trial space.
+    bool
+    symmetric() const override
+    {
+      return !current;
+    }
+
+    void
+    add_test_constraints(const ContactInterface<dim> &interface,
+                         const std::vector<double>   &fixed_values,
+                         AffineConstraints<double>   &constraints) const override;
+
+    void
+    add_sparsity(const ContactInterface<dim>     &interface,
+                 const AffineConstraints<double> &constraints,
+                 const IndexSet                  &owned,
+                 DynamicSparsityPattern          &pattern) const override;
+
+    /// Current kinematics: the linearised gap rows and the geometric
+    /// stiffness (nothing otherwise).
+    void
+    assemble(const ContactInterface<dim>     &interface,
+             const AffineConstraints<double> &constraints,
+             const AffineConstraints<double> &test_constraints,
+             const IndexSet                  &owned,
+             TrilinosWrappers::SparseMatrix  &matrix,
+             TrilinosWrappers::MPI::Vector   &rhs) const override;
+
   protected:
     /// For a formulation that shares the exact gap constraints and only
     /// decides the active set otherwise (mpc frictionless).
@@ -78,6 +107,26 @@ namespace contact_fem
                    const StepStart                                  start) const;
 
   private:
+    /// Contact/Kinematics = current: the operators of every Newton iterate
+    /// on its configuration, with their linearisation (the interface's
+    /// linearised_nodes). The gap of an active node j is then no constraint
+    /// of the trial space: its linearised form G_j(u_k) + dG_j/du (u - u_k)
+    /// = 0 is the matrix row of the DoF its force direction eliminates from
+    /// the test space (the two differ at finite deformation), and
+    /// -lambda_j df_j/du is the geometric stiffness.
+    bool current = false;
+
+    /// The row of the linearised gap of active node @p s and the geometric
+    /// stiffness of its pressure, at the interface displacement @p u.
+    void
+    assemble_current(const ContactInterface<dim>                     &interface,
+                     const typename ContactInterface<dim>::SlaveNode &s,
+                     const std::vector<double>                       &u,
+                     const AffineConstraints<double>                 &constraints,
+                     const AffineConstraints<double>                 &test_constraints,
+                     TrilinosWrappers::SparseMatrix                  &matrix,
+                     TrilinosWrappers::MPI::Vector                   &rhs) const;
+
     /// Multipliers of the nodes released in the last update (for the
     /// residual).
     std::vector<double> released_pressure;

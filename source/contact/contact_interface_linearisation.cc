@@ -1,0 +1,213 @@
+// ContactInterface::linearise(): the derivatives of the weighted gaps and
+// contact forces of the paired slave nodes with respect to the
+// displacement DoFs, at the configuration of the last search, from
+// Mortar::linearise_pair() on every coupled face pair (2D). For
+// Contact/Kinematics = current (doc/finite_strain.md).
+#include <contact_fem/contact/contact_interface.h>
+#include <contact_fem/contact/mortar_linearisation.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace contact_fem
+{
+  namespace
+  {
+    using DofMap = std::map<types::global_dof_index, double>;
+
+    /// Sums of one node's derivatives over its face pairs.
+    struct NodeSums
+    {
+      DofMap                                    gap;
+      std::map<types::global_dof_index, DofMap> force;
+    };
+
+    /// A PairPatch of interface faces, with the chain from its points to
+    /// the interface nodes (a geometry point of Q1 on a quadratic mapping
+    /// moves with the linear interpolation of its face's vertices).
+    class PatchBuilder
+    {
+    public:
+      PatchBuilder(const ContactInterface<2> &interface, const std::vector<Tensor<1, 2>> &u)
+        : interface(interface)
+        , u(u)
+      {}
+
+      Mortar::PairPatch::Face
+      add_face(const unsigned int f)
+      {
+        const auto             &face = interface.faces[f];
+        Mortar::PairPatch::Face result;
+        result.orientation    = face.orientation;
+        result.element_degree = interface.degree;
+        for (const unsigned int n : face.nodes)
+          {
+            const auto [it, inserted] = point_of_node.emplace(n, patch.points.size());
+            if (inserted)
+              {
+                patch.points.push_back(interface.nodes[n].reference + u[n]);
+                chain.push_back({{n, 1.}});
+              }
+            result.nodes.push_back(it->second);
+          }
+        for (unsigned int k = 0; k < face.geometry_points.size(); ++k)
+          {
+            const auto xi = Mortar::Kernel<2>::node_parameter(2, face.nodes.size() + k);
+            Point<2>   x  = face.geometry_points[k];
+            chain.emplace_back();
+            for (unsigned int v = 0; v < face.nodes.size(); ++v)
+              {
+                const double w = Mortar::Kernel<2>::shape_value(1, v, xi);
+                x += w * u[face.nodes[v]];
+                chain.back().emplace_back(face.nodes[v], w);
+              }
+            result.nodes.push_back(patch.points.size());
+            patch.points.push_back(x);
+          }
+        return result;
+      }
+
+      /// Adds @p factor times the coordinate derivatives @p derivatives,
+      /// taken to the displacement DoFs, to @p sums. Every DoF of the patch
+      /// gets an entry, zero or not: the sparsity pattern holds the
+      /// couplings of the patch, whatever the configuration.
+      void
+      add(const std::vector<double> &derivatives, const double factor, DofMap &sums) const
+      {
+        for (unsigned int i = 0; i < chain.size(); ++i)
+          for (const auto &[node, weight] : chain[i])
+            for (unsigned int d = 0; d < 2; ++d)
+              sums[interface.nodes[node].dofs[d]] += factor * weight * derivatives[2 * i + d];
+      }
+
+      Mortar::PairPatch patch;
+
+    private:
+      const ContactInterface<2>                                &interface;
+      const std::vector<Tensor<1, 2>>                          &u;
+      std::map<unsigned int, unsigned int>                      point_of_node;
+      std::vector<std::vector<std::pair<unsigned int, double>>> chain;
+    };
+
+    /// The derivatives of pair (@p f, @p m) added to the sums of the
+    /// paired nodes of slave face @p f.
+    void
+    add_pair(const ContactInterface<2>        &interface,
+             const std::vector<Tensor<1, 2>>  &u,
+             const unsigned int                f,
+             const unsigned int                m,
+             const std::vector<unsigned int>  &neighbours,
+             const std::vector<unsigned int>  &masters,
+             std::map<unsigned int, NodeSums> &sums)
+    {
+      PatchBuilder builder(interface, u);
+      builder.patch.slave_faces.push_back(builder.add_face(f));
+      for (const unsigned int g : neighbours)
+        builder.patch.slave_faces.push_back(builder.add_face(g));
+      builder.patch.master = builder.add_face(m);
+      for (const unsigned int other : masters)
+        if (other != m)
+          builder.patch.other_masters.push_back(builder.add_face(other));
+      Mortar::LinearisedPair result;
+      if (!Mortar::linearise_pair(builder.patch, true, result))
+        return;
+      const auto &slave_nodes  = interface.faces[f].nodes;
+      const auto &master_nodes = interface.faces[m].nodes;
+      for (unsigned int k = 0; k < result.D.size(); ++k)
+        {
+          const auto it = sums.find(slave_nodes[k]);
+          if (it == sums.end())
+            continue;
+          NodeSums &node = it->second;
+          builder.add(result.normal_gap[k].derivatives, 1., node.gap);
+          const auto &n = result.normals[k];
+          // f_j = -D_j n_j on the slave node, +M_jl n_j on master l.
+          for (unsigned int d = 0; d < 2; ++d)
+            {
+              DofMap &row = node.force[interface.nodes[slave_nodes[k]].dofs[d]];
+              builder.add(result.D[k].derivatives, -n[d].value, row);
+              builder.add(n[d].derivatives, -result.D[k].value, row);
+              for (unsigned int l = 0; l < result.M[k].size(); ++l)
+                {
+                  DofMap &master_row = node.force[interface.nodes[master_nodes[l]].dofs[d]];
+                  builder.add(result.M[k][l].derivatives, n[d].value, master_row);
+                  builder.add(n[d].derivatives, result.M[k][l].value, master_row);
+                }
+            }
+        }
+    }
+
+    /// The sums of one node as a LinearisedNode over the union of its DoFs.
+    ContactInterface<2>::LinearisedNode
+    linearised_node(const NodeSums &sums)
+    {
+      std::set<types::global_dof_index> dofs;
+      for (const auto &[dof, value] : sums.gap)
+        dofs.insert(dof);
+      for (const auto &[row, values] : sums.force)
+        for (const auto &[dof, value] : values)
+          dofs.insert(dof);
+      ContactInterface<2>::LinearisedNode result;
+      result.dofs.assign(dofs.begin(), dofs.end());
+      const auto at = [&](const DofMap &values) {
+        std::vector<double> dense(result.dofs.size(), 0.);
+        for (unsigned int i = 0; i < dense.size(); ++i)
+          if (const auto it = values.find(result.dofs[i]); it != values.end())
+            dense[i] = it->second;
+        return dense;
+      };
+      result.gap = at(sums.gap);
+      for (const auto &[row, values] : sums.force)
+        result.force.emplace_back(row, at(values));
+      return result;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ContactInterface<dim>::linearise()
+  {
+    linearised_nodes.clear();
+    if constexpr (dim != 2)
+      {
+        AssertThrow(false, ExcMessage("the contact linearisation is implemented in 2D only"));
+      }
+    else
+      {
+        std::vector<Tensor<1, dim>> u(nodes.size());
+        for (unsigned int n = 0; n < nodes.size(); ++n)
+          u[n] = displacement(n, search_displacement);
+        std::map<unsigned int, NodeSums> sums;
+        for (const auto &s : slave_nodes)
+          if (s.paired)
+            sums[s.node];
+        // The slave faces at every node, and the masters of every slave face.
+        std::map<unsigned int, std::vector<unsigned int>> faces_of_node, masters_of_face;
+        for (unsigned int f = 0; f < faces.size(); ++f)
+          if (faces[f].slave)
+            for (const unsigned int n : faces[f].nodes)
+              faces_of_node[n].push_back(f);
+        for (const auto &[f, m] : coupled_faces)
+          masters_of_face[f].push_back(m);
+        for (const auto &[f, m] : coupled_faces)
+          {
+            std::set<unsigned int> neighbours;
+            for (const unsigned int n : faces[f].nodes)
+              for (const unsigned int g : faces_of_node[n])
+                if (g != f)
+                  neighbours.insert(g);
+            add_pair(*this, u, f, m,
+                     std::vector<unsigned int>(neighbours.begin(), neighbours.end()),
+                     masters_of_face[f], sums);
+          }
+        for (const auto &[n, node_sums] : sums)
+          linearised_nodes[n] = linearised_node(node_sums);
+      }
+  }
+
+  template void
+  ContactInterface<2>::linearise();
+  template void
+  ContactInterface<3>::linearise();
+} // namespace contact_fem
