@@ -1,7 +1,6 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_system.h>
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
@@ -214,10 +213,10 @@ namespace contact_fem
   fill_mapping_cache(const Triangulation<dim> &tria, MappingQCache<dim> &cache)
   {
     // FE_Q's support points (Gauss-Lobatto, hierarchic) are the mapping's.
-    const FESystem<dim>             fe(FE_Q<dim>(cache.get_degree()), dim);
-    const std::vector<Point<dim>>  &unit_points = fe.base_element(0).get_unit_support_points();
-    const ManifoldMappingQ<dim>     mapping_q(cache.get_degree());
-    const auto                      points_of = [&](const auto &cell) {
+    const FE_Q<dim>                fe(cache.get_degree());
+    const std::vector<Point<dim>> &unit_points = fe.get_unit_support_points();
+    const ManifoldMappingQ<dim>    mapping_q(cache.get_degree());
+    const auto                     points_of = [&](const auto &cell) {
       std::vector<Point<dim>> points = transfinite_points<dim>(cell, unit_points);
       if (points.empty())
         return mapping_q.compute_mapping_support_points(cell);
@@ -232,7 +231,8 @@ namespace contact_fem
         return;
       }
 
-    // A hanging point gets the value of the coarse side's polynomial.
+    // A continuous field per coordinate, whose hanging values become those
+    // of the coarse side's polynomial.
     DoFHandler<dim> position(tria);
     position.distribute_dofs(fe);
     IndexSet relevant;
@@ -240,9 +240,11 @@ namespace contact_fem
     AffineConstraints<double> hanging(relevant);
     DoFTools::make_hanging_node_constraints(position, hanging);
     hanging.close();
-    const IndexSet                            &owned = position.locally_owned_dofs();
-    LinearAlgebra::distributed::Vector<double> x(owned, relevant, tria.get_communicator());
-    std::vector<types::global_dof_index>       dofs(fe.n_dofs_per_cell());
+    const IndexSet                                        &owned = position.locally_owned_dofs();
+    std::array<LinearAlgebra::distributed::Vector<double>, dim> x;
+    for (auto &component : x)
+      component.reinit(owned, relevant, tria.get_communicator());
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &cell : position.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -250,13 +252,14 @@ namespace contact_fem
           cell->get_dof_indices(dofs);
           for (unsigned int i = 0; i < dofs.size(); ++i)
             if (owned.is_element(dofs[i]))
-              {
-                const auto [component, point] = fe.system_to_component_index(i);
-                x(dofs[i])                    = points[point][component];
-              }
+              for (unsigned int d = 0; d < dim; ++d)
+                x[d](dofs[i]) = points[i][d];
         }
-    hanging.distribute(x);
-    x.update_ghost_values();
+    for (auto &component : x)
+      {
+        hanging.distribute(component);
+        component.update_ghost_values();
+      }
 
     cache.initialize(tria, [&](const typename Triangulation<dim>::cell_iterator &cell) {
       if (!cell->is_active() || cell->is_artificial())
@@ -265,12 +268,10 @@ namespace contact_fem
                                                              &position);
       std::vector<types::global_dof_index>          cell_dofs(fe.n_dofs_per_cell());
       dof_cell->get_dof_indices(cell_dofs);
-      std::vector<Point<dim>> points(unit_points.size());
+      std::vector<Point<dim>> points(cell_dofs.size());
       for (unsigned int i = 0; i < cell_dofs.size(); ++i)
-        {
-          const auto [component, point] = fe.system_to_component_index(i);
-          points[point][component]      = x(cell_dofs[i]);
-        }
+        for (unsigned int d = 0; d < dim; ++d)
+          points[i][d] = x[d](cell_dofs[i]);
       return points;
     });
   }
