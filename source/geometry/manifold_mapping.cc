@@ -200,7 +200,11 @@ namespace contact_fem
     if (dynamic_cast<const TransfiniteInterpolationManifold<dim> *>(&coarse->get_manifold()) ==
         nullptr)
       return {};
-    const CoarseChart<dim>  chart(coarse);
+    const CoarseChart<dim> chart(coarse);
+    // A sphere's refinement of a face is not the sub-box (see the header).
+    for (const Manifold<dim> *face : chart.faces)
+      if (face != nullptr && dynamic_cast<const ChartManifold<dim> *>(face) == nullptr)
+        return {};
     std::vector<Point<dim>> points;
     points.reserve(unit_points.size());
     for (const auto &x : unit_points)

@@ -1,6 +1,7 @@
 // fill_mapping_cache() (source/geometry/manifold_mapping.cc) on a disc
-// (2D) and a ball (3D): a circle (sphere) on the boundary, a transfinite
-// interpolation inside, as the Hertz scenes and Geometry/Manifolds.
+// (2D), a ball and a cylinder (3D): a circle (sphere, cylinder) on the
+// boundary, a transfinite interpolation inside, as the Hertz scenes and
+// Geometry/Manifolds. The ball's cells keep MappingQ's points (sphere).
 //  - uniform refinement: the support points equal those deal.II's
 //    MappingQ takes from the manifolds up to the tolerance of its
 //    pull-backs (largest distance 4e-10 of the cell diameter);
@@ -27,18 +28,28 @@ using namespace contact_fem;
 
 namespace
 {
+  /// A disc (2D) or ball (3D) on a circle (sphere), or (3D) a cylinder
+  /// along x on a CylindricalManifold; a transfinite interpolation inside.
   template <int dim>
   void
-  make_ball(parallel::distributed::Triangulation<dim> &tria)
+  make_body(parallel::distributed::Triangulation<dim> &tria, const bool cylinder)
   {
-    GridGenerator::hyper_ball(tria, Point<dim>(), 1.);
+    if constexpr (dim == 3)
+      if (cylinder)
+        GridGenerator::cylinder(tria, 1., 1.);
+    if (!cylinder)
+      GridGenerator::hyper_ball(tria, Point<dim>(), 1.);
     for (const auto &cell : tria.active_cell_iterators())
       cell->set_all_manifold_ids(1);
     for (const auto &cell : tria.active_cell_iterators())
       for (const auto f : cell->face_indices())
-        if (cell->face(f)->at_boundary())
+        if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == 0)
           cell->face(f)->set_all_manifold_ids(0);
-    tria.set_manifold(0, SphericalManifold<dim>());
+    if constexpr (dim == 3)
+      if (cylinder)
+        tria.set_manifold(0, CylindricalManifold<dim>(0));
+    if (!cylinder)
+      tria.set_manifold(0, SphericalManifold<dim>());
     TransfiniteInterpolationManifold<dim> interior;
     interior.initialize(tria);
     tria.set_manifold(1, interior);
@@ -51,7 +62,8 @@ namespace
   largest_difference(const Triangulation<dim> &tria, const Mapping<dim> &a, const Mapping<dim> &b,
                      const unsigned int degree)
   {
-    const std::vector<Point<dim>> &unit = FE_Q<dim>(degree).get_unit_support_points();
+    const FE_Q<dim>                fe(degree);
+    const std::vector<Point<dim>> &unit = fe.get_unit_support_points();
     double                         worst = 0.;
     for (const auto &cell : tria.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -104,15 +116,15 @@ namespace
 
   template <int dim>
   void
-  check(const unsigned int degree, ConditionalOStream &out)
+  check(const unsigned int degree, const bool cylinder, ConditionalOStream &out)
   {
     parallel::distributed::Triangulation<dim> tria(MPI_COMM_WORLD);
-    make_ball(tria);
-    tria.refine_global(dim == 2 ? 2 : 1);
+    make_body(tria, cylinder);
+    tria.refine_global(dim == 2 || cylinder ? 2 : 1);
     MappingQCache<dim> cache(degree);
     fill_mapping_cache(tria, cache);
     const MappingQ<dim> manifolds(degree);
-    out << dim << "D, degree " << degree << ", " << tria.n_global_active_cells()
+    out << (cylinder ? "cylinder" : dim == 2 ? "disc" : "ball") << ", degree " << degree << ", " << tria.n_global_active_cells()
         << " cells, uniform: difference from MappingQ "
         << (largest_difference(tria, cache, manifolds, degree) < 1e-9 ? "< 1e-9" : "too large")
         << std::endl;
@@ -144,7 +156,8 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   ConditionalOStream out(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
-  check<2>(2, out);
-  check<2>(3, out);
-  check<3>(2, out);
+  check<2>(2, false, out);
+  check<2>(3, false, out);
+  check<3>(2, false, out);
+  check<3>(2, true, out);
 }

@@ -23,7 +23,11 @@ namespace contact_fem
    * boundary lines and faces evaluated there, with no search and no
    * Newton iteration. Straight lines and flat faces are those of the
    * transfinite or the flat manifold id. Returns an empty vector for any
-   * other cell.
+   * other cell, and (3D) for a coarse cell with a curved face that is not
+   * a ChartManifold (a sphere): the triangulation's refinement of such a
+   * face does not follow the sub-boxes (3 % of a cell apart after three
+   * levels), so MappingQ's points, pulled back from the vertices, are
+   * kept there.
    */
   template <int dim>
   std::vector<Point<dim>>
