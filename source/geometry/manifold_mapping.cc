@@ -276,6 +276,10 @@ namespace contact_fem
       for (unsigned int i = 0; i < cell_dofs.size(); ++i)
         for (unsigned int d = 0; d < dim; ++d)
           points[i][d] = x[d](cell_dofs[i]);
+      // A hanging vertex too stays the triangulation's, which the contact
+      // faces are checked against (see the header).
+      for (const unsigned int v : cell->vertex_indices())
+        points[v] = cell->vertex(v);
       return points;
     });
   }

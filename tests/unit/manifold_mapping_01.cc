@@ -9,7 +9,8 @@
 //    lie on the coarse side's polynomial face (the distance of the point
 //    from its pull-back onto the coarse face, relative to the fine cell's
 //    diameter); deal.II's MappingQ (the cache before) is printed beside it
-//    to show that the check sees the gap.
+//    to show that the check sees the gap. Degree 3 keeps a gap at the
+//    hanging vertex (the triangulation's, not on the coarse cubic).
 // Run serially and on 2 ranks (the hanging points of ghost cells).
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
@@ -141,13 +142,16 @@ namespace
     fill_mapping_cache(tria, cache);
     MappingQCache<dim> before(degree);
     before.initialize(manifolds, tria);
-    const double gap = largest_hanging_gap(tria, cache);
+    const double gap        = largest_hanging_gap(tria, cache);
+    const double gap_before = largest_hanging_gap(tria, before);
     out << "  locally refined, " << tria.n_global_active_cells()
         << " cells: hanging faces conforming (gap < 1e-10 h): " << (gap < 1e-10 ? "yes" : "no")
-        << "; MappingQ's gap above 1e-6 h: "
-        << (largest_hanging_gap(tria, before) > 1e-6 ? "yes" : "no") << std::endl;
+        << "; MappingQ's gap above 1e-6 h: " << (gap_before > 1e-6 ? "yes" : "no") << std::endl;
+    // Degree 3: the hanging vertex (the triangulation's) is no support
+    // point of the coarse cubic.
     if (gap >= 1e-10)
-      out << "  gap: " << gap << std::endl;
+      out << "  gap below a tenth of MappingQ's: " << (gap < 0.1 * gap_before ? "yes" : "no")
+          << std::endl;
   }
 } // namespace
 

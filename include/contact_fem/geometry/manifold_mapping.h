@@ -42,7 +42,12 @@ namespace contact_fem
    * continuous FE_Q position field of the mapping's degree and its
    * hanging-node constraints, so that a refined side of a hanging face
    * lies on the coarse side's polynomial face (as a finite element field
-   * is continuous there). Collective on the triangulation's communicator.
+   * is continuous there). The vertices, hanging ones too, stay the
+   * triangulation's: for degree 2 a hanging vertex is the coarse line's
+   * midpoint support point anyway, except on a sphere's face (3D), whose
+   * refinement is not that of the chart; for degree 3 and more it lies off
+   * the coarse polynomial by O(h^(p+1)). Collective on the triangulation's
+   * communicator.
    */
   template <int dim>
   void
