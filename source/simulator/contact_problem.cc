@@ -17,6 +17,7 @@
 #include <contact_fem/core/interruption.h>
 #include <contact_fem/core/parameters.h>
 #include <contact_fem/geometry/mesh_file.h>
+#include <contact_fem/geometry/manifold_mapping.h>
 #include <contact_fem/solvers/rigid_body_modes.h>
 
 #include <algorithm>
@@ -264,9 +265,8 @@ namespace contact_fem
     const unsigned int geometry_degree = mapping_degree != "auto"    ? std::stoul(mapping_degree) :
                                          scene.has_curved_boundary() ? std::max(degree, 2u) :
                                                                        degree;
-    // A curved mapping takes its support points from the manifolds (the
-    // transfinite interpolation of the Hertz disc is costly): cached once
-    // per mesh, in setup_dofs().
+    // A curved mapping takes its support points from the manifolds: cached
+    // once per mesh, in setup_dofs() (fill_mapping_cache()).
     if (geometry_degree > 1)
       mapping = std::make_unique<MappingQCache<dim>>(geometry_degree);
     else
@@ -320,7 +320,7 @@ namespace contact_fem
   {
     TimerOutput::Scope t(*timer, "Setup: DoFs");
     if (auto *cache = dynamic_cast<MappingQCache<dim> *>(mapping.get()))
-      cache->initialize(MappingQ<dim>(cache->get_degree()), triangulation);
+      fill_mapping_cache(triangulation, *cache);
     distribute_dofs(dof_handler, fe, dof_renumbering_seed);
     owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);

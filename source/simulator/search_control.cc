@@ -173,9 +173,21 @@ namespace contact_fem
     const auto       consider = [&](const typename ContactInterface<dim>::SlaveNode &s,
                               const double distance, const double allowed, const bool hanging) {
       const double penetration = std::max(0., -distance);
-      if ((penetration - allowed) / s.size > check.excess)
+      const double excess      = (penetration - allowed) / s.size;
+      // Symmetric nodes penetrate alike: the tie goes to the smaller
+      // reference coordinates, not to the last bit of the excess.
+      const bool tie = check.excess > 0. && std::abs(excess - check.excess) <= 1e-9 * check.excess;
+      const auto precedes = [](const Point<dim> &a, const Point<dim> &b) {
+        for (unsigned int d = 0; d < dim; ++d)
+          if (a[d] != b[d])
+            return a[d] < b[d];
+        return false;
+      };
+      if (tie ? precedes(interface.nodes[s.node].reference,
+                         interface.nodes[check.node.node].reference) :
+                excess > check.excess)
         {
-          check.excess      = (penetration - allowed) / s.size;
+          check.excess      = excess;
           check.node        = s;
           check.hanging     = hanging;
           check.penetration = penetration;
