@@ -8,6 +8,7 @@
 
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/core/format.h>
+#include <contact_fem/core/parameters.h>
 #include <contact_fem/contact/mortar_kernel.h>
 
 #include <deal.II/lac/vector.h>
@@ -177,62 +178,73 @@ namespace contact_fem
     // coordinates, dofs, fixed flags].
     std::vector<double>                  packed;
     std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary())
-            for (unsigned int p = 0; p < pairs.size(); ++p)
-              for (const bool slave : {true, false})
-                {
-                  const types::boundary_id id = slave ? pairs[p].slave : pairs[p].master;
-                  if (cell->face(f)->boundary_id() != id)
-                    continue;
-                  fe_face.reinit(cell, f);
-                  cell->face(f)->get_dof_indices(face_dofs);
-                  std::vector<std::array<types::global_dof_index, dim>> node_dofs(nodes_per_face);
-                  for (unsigned int i = 0; i < face_dofs.size(); ++i)
+    // A failed check of a face stops every rank (stop_on_every_rank()).
+    std::string error;
+    try
+      {
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const auto f : cell->face_indices())
+              if (cell->face(f)->at_boundary())
+                for (unsigned int p = 0; p < pairs.size(); ++p)
+                  for (const bool slave : {true, false})
                     {
-                      const auto ci                  = fe.face_system_to_component_index(i, f);
-                      node_dofs[ci.second][ci.first] = face_dofs[i];
-                    }
-                  const double dot = outward_orientation(fe_face, cell->face(f), nodes_per_face);
-
-                  packed.push_back(p);
-                  packed.push_back(slave ? 1. : 0.);
-                  packed.push_back(materials.constants(cell->material_id()).youngs_modulus);
-                  packed.push_back(materials.constants(cell->material_id()).poisson_ratio);
-                  packed.push_back(dot > 0 ? 1. : -1.);
-                  for (unsigned int k = 0; k < nodes_per_face; ++k)
-                    {
-                      for (unsigned int d = 0; d < dim; ++d)
-                        packed.push_back(fe_face.quadrature_point(k)[d]);
-                      for (unsigned int d = 0; d < dim; ++d)
-                        packed.push_back(static_cast<double>(node_dofs[k][d]));
-                      for (unsigned int d = 0; d < dim; ++d)
+                      const types::boundary_id id = slave ? pairs[p].slave : pairs[p].master;
+                      if (cell->face(f)->boundary_id() != id)
+                        continue;
+                      fe_face.reinit(cell, f);
+                      cell->face(f)->get_dof_indices(face_dofs);
+                      std::vector<std::array<types::global_dof_index, dim>> node_dofs(
+                        nodes_per_face);
+                      for (unsigned int i = 0; i < face_dofs.size(); ++i)
                         {
-                          const auto dof   = node_dofs[k][d];
-                          const bool fixed = dirichlet.is_constrained(dof) &&
-                                             dirichlet.get_constraint_entries(dof)->empty();
-                          packed.push_back(fixed ? 1. : 0.);
+                          const auto ci                  = fe.face_system_to_component_index(i, f);
+                          node_dofs[ci.second][ci.first] = face_dofs[i];
+                        }
+                      const double dot =
+                        outward_orientation(fe_face, cell->face(f), nodes_per_face);
+
+                      packed.push_back(p);
+                      packed.push_back(slave ? 1. : 0.);
+                      packed.push_back(materials.constants(cell->material_id()).youngs_modulus);
+                      packed.push_back(materials.constants(cell->material_id()).poisson_ratio);
+                      packed.push_back(dot > 0 ? 1. : -1.);
+                      for (unsigned int k = 0; k < nodes_per_face; ++k)
+                        {
+                          for (unsigned int d = 0; d < dim; ++d)
+                            packed.push_back(fe_face.quadrature_point(k)[d]);
+                          for (unsigned int d = 0; d < dim; ++d)
+                            packed.push_back(static_cast<double>(node_dofs[k][d]));
+                          for (unsigned int d = 0; d < dim; ++d)
+                            {
+                              const auto dof   = node_dofs[k][d];
+                              const bool fixed = dirichlet.is_constrained(dof) &&
+                                                 dirichlet.get_constraint_entries(dof)->empty();
+                              packed.push_back(fixed ? 1. : 0.);
+                            }
+                        }
+                      if (n_geometry_points > 0)
+                        {
+                          fe_face_geometry->reinit(cell, f);
+                          for (unsigned int k = first_geometry_node; k < nodes_per_face; ++k)
+                            AssertThrow(fe_face_geometry->quadrature_point(k).distance(
+                                          fe_face.quadrature_point(k)) <=
+                                          1e-10 * cell->face(f)->diameter(),
+                                        ExcMessage("Contact: the geometry points of a contact "
+                                                   "face are not in the order of its nodes."));
+                          for (unsigned int k = nodes_per_face;
+                               k < nodes_per_face + n_geometry_points; ++k)
+                            for (unsigned int d = 0; d < dim; ++d)
+                              packed.push_back(
+                                fe_face_geometry->quadrature_point(k - first_geometry_node)[d]);
                         }
                     }
-                  if (n_geometry_points > 0)
-                    {
-                      fe_face_geometry->reinit(cell, f);
-                      for (unsigned int k = first_geometry_node; k < nodes_per_face; ++k)
-                        AssertThrow(fe_face_geometry->quadrature_point(k).distance(
-                                      fe_face.quadrature_point(k)) <=
-                                      1e-10 * cell->face(f)->diameter(),
-                                    ExcMessage("Contact: the geometry points of a contact "
-                                               "face are not in the order of its nodes."));
-                      for (unsigned int k = nodes_per_face; k < nodes_per_face + n_geometry_points;
-                           ++k)
-                        for (unsigned int d = 0; d < dim; ++d)
-                          packed.push_back(
-                            fe_face_geometry->quadrature_point(k - first_geometry_node)[d]);
-                    }
-                }
-
+      }
+    catch (const std::exception &e)
+      {
+        error = user_message(e);
+      }
+    stop_on_every_rank(error);
     unpack_faces(Utilities::MPI::all_gather(comm, packed), nodes_per_face, n_geometry_points);
 
     interface_dofs.clear();
@@ -254,6 +266,14 @@ namespace contact_fem
     coupled_faces.clear();
     face_lengths.clear();
     statistics.assign(pairs.size(), PairStatistics());
+  }
+
+  template <int dim>
+  void
+  ContactInterface<dim>::stop_on_every_rank(const std::string &error) const
+  {
+    for (const std::string &message : Utilities::MPI::all_gather(communicator, error))
+      AssertThrow(message.empty(), ExcMessage(message));
   }
 
   template <int dim>

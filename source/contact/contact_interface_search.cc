@@ -284,10 +284,8 @@ namespace contact_fem
     // Narrow phase and integration on the faces of this rank; a failed
     // tiling check stops every rank with the same message.
     std::string error;
-    const auto  own    = integrate_own_faces(p, geometries, tree, reach, slave_data, error);
-    const auto  errors = Utilities::MPI::all_gather(communicator, error);
-    for (const std::string &message : errors)
-      AssertThrow(message.empty(), ExcMessage(message));
+    const auto  own = integrate_own_faces(p, geometries, tree, reach, slave_data, error);
+    stop_on_every_rank(error);
     const auto segments_of_face = unpack_segments(Utilities::MPI::all_gather(communicator, own));
 
     std::vector<bool> master_is_candidate(faces.size(), false);

@@ -467,6 +467,13 @@ namespace contact_fem
                         const std::map<unsigned int, SlaveNode> &slave_data,
                         std::string                             &error) const;
 
+    /// Collective: if @p error (this rank's) or that of another rank is not
+    /// empty, every rank throws the first of them (by rank), so a check
+    /// that fails on one rank stops all of them instead of leaving the
+    /// others waiting in the next collective call.
+    void
+    stop_on_every_rank(const std::string &error) const;
+
     /// The segments of every face in @p packed (integrate_own_faces() of
     /// all ranks, in rank order), by slave face.
     std::map<unsigned int, Segments>
