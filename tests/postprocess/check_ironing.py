@@ -62,8 +62,8 @@ for refinements in (0, 1):
     normal = [abs(r[1]) for _, r, _ in plateau]
     mean = sum(normal) / len(normal) if normal else 0.
     ratio = max((abs(r[0]) / abs(r[1]) for _, r, _ in plateau), default=1.)
-    # The die's reaction is minus the contact force the block exerts on it
-    # (the pair force acts on the slave, the block).
+    # The support's reaction on the die balances the contact force on the
+    # die, so it equals the pair's force on the slave (the block).
     balance = max((abs(r[0] - p[0]) / abs(r[1]) for _, r, p in plateau), default=1.)
     amplitude = max(abs(f - mean) for f in normal) / mean if normal else 1.
     chatter.append(amplitude)
