@@ -206,23 +206,34 @@ namespace contact_fem
 
     namespace
     {
-      /// Slave parameter xi in [-1, 1] whose point, moved along the
+      /// Slave parameter @p xi in [-1, 1] whose point, moved along the
       /// interpolated nodal normal n(xi), passes through @p x, for a point
       /// @p x that lies between the normal lines of the slave's end nodes
       /// (a master end inside the slave's shadow). At round-off distance of
-      /// an end line the nearer end is the answer.
-      double
+      /// an end line the nearer end is the answer. False if @p x lies
+      /// clearly outside both lines: the end normals then cross before
+      /// they reach the master's line (a distant master face, e.g. a
+      /// steep flank of a die above an indented slave face), the map xi ->
+      /// eta is not monotone and the faces do not overlap.
+      bool
       slave_image(const LineFace                  &slave,
                   const std::vector<Tensor<1, 2>> &normals,
-                  const Point<2>                  &x)
+                  const Point<2>                  &x,
+                  double                          &xi)
       {
         const auto f = [&](const double xi) {
           return normal_line_offset(slave, normals, x, xi);
         };
         const double g_begin = f(-1.).first, g_end = f(1.).first;
         if ((g_begin < 0.) == (g_end < 0.) && g_begin != 0. && g_end != 0.)
-          return std::abs(g_begin) < std::abs(g_end) ? -1. : 1.;
-        return bracketed_root(f, -1., 1.);
+          {
+            constexpr double round_off = 1e-8;
+            xi = std::abs(g_begin) < std::abs(g_end) ? -1. : 1.;
+            return std::min(std::abs(g_begin), std::abs(g_end)) <=
+                   round_off * (slave.nodes[1] - slave.nodes[0]).norm();
+          }
+        xi = bracketed_root(f, -1., 1.);
+        return true;
       }
     } // namespace
 
@@ -253,7 +264,9 @@ namespace contact_fem
           const double eta = end == 0 ? -1. : 1.;
           if (eta > std::min(eta_a, eta_b) && eta < std::max(eta_a, eta_b))
             {
-              const double xi = slave_image(slave, slave_normals, master.point(eta));
+              double xi = 0.;
+              if (!slave_image(slave, slave_normals, master.point(eta), xi))
+                return false;
               // The part of the slave face beyond this master end is outside.
               const bool beyond_is_upper = (eta_b - eta_a) * eta > 0.;
               if (beyond_is_upper && xi < upper)
