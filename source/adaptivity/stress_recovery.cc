@@ -271,6 +271,10 @@ namespace contact_fem
                   std::vector<SymmetricTensor<2, dim>> &stresses) const;
       void
       sample_stresses();
+      /// Whether support point @p k of @p cell carries the displacement DoF
+      /// of @p node (true if the node names none).
+      bool
+      has_node_dof(const CellIt &cell, const unsigned int k, const ContactNodeTraction<dim> &node) const;
       void
       match_contact_nodes();
       PatchFit<dim>
@@ -517,6 +521,19 @@ namespace contact_fem
     }
 
     template <int dim>
+    bool
+    SPREstimator<dim>::has_node_dof(const CellIt                   &cell,
+                                    const unsigned int              k,
+                                    const ContactNodeTraction<dim> &node) const
+    {
+      if (node.dof == numbers::invalid_dof_index)
+        return true;
+      std::vector<types::global_dof_index> dofs(dof_handler.get_fe().n_dofs_per_cell());
+      DoFCellIt(&tria, cell->level(), cell->index(), &dof_handler)->get_dof_indices(dofs);
+      return dofs[dof_handler.get_fe().component_to_system_index(0, k)] == node.dof;
+    }
+
+    template <int dim>
     void
     SPREstimator<dim>::match_contact_nodes()
     {
@@ -576,10 +593,12 @@ namespace contact_fem
                           }
                         const Tensor<1, dim> n =
                           contact_nodes[j].normal / contact_nodes[j].normal.norm();
-                        if (n * face_normal > orientation_tolerance)
+                        if (n * face_normal > orientation_tolerance &&
+                            has_node_dof(cell, k, contact_nodes[j]))
                           {
                             cell_contacts[cell->active_cell_index()].emplace_back(k, j);
                             node_cells[j].push_back(cell);
+
                           }
                       }
                   }
@@ -887,7 +906,9 @@ namespace contact_fem
       std::vector<Tensor<2, dim>>      gradient(1);
       for (unsigned int i = 0; i < points.size(); ++i)
         {
-          // The cell whose unit point of the sample is nearest its unit cell.
+          // The cell of the node's body whose unit point of the sample is
+          // nearest its unit cell (ties to the lower CellId, so that every
+          // partition picks the same).
           double     distance = std::numeric_limits<double>::infinity();
           CellIt     nearest;
           Point<dim> unit;
@@ -896,7 +917,7 @@ namespace contact_fem
               {
                 const Point<dim> p = mapping.transform_real_to_unit_cell(cell, points[i].first);
                 const double     d = GeometryInfo<dim>::distance_to_unit_cell(p);
-                if (d < distance)
+                if (d < distance || (d == distance && cell->id() < nearest->id()))
                   std::tie(distance, nearest, unit) = std::make_tuple(d, cell, p);
               }
             catch (const typename Mapping<dim>::ExcTransformationFailed &)

@@ -72,6 +72,11 @@ namespace contact_fem
     /// false: the node's condition is not imposed (an inactive slave node);
     /// its recovered stress is only reported (Result::node_stresses).
     bool imposed = true;
+    /// The node's displacement DoF of component 0, if known: then only the
+    /// support points that carry it get the node (not those of another
+    /// body's node at the same place, whose side face may also face along
+    /// a deformed normal at a corner).
+    types::global_dof_index dof = numbers::invalid_dof_index;
   };
 
   /**
