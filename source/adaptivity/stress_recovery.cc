@@ -42,6 +42,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <tuple>
 #include <utility>
 
 namespace contact_fem
@@ -270,6 +271,10 @@ namespace contact_fem
                   std::vector<SymmetricTensor<2, dim>> &stresses) const;
       void
       sample_stresses();
+      /// Whether support point @p k of @p cell carries the displacement DoF
+      /// of @p node (true if the node names none).
+      bool
+      has_node_dof(const CellIt &cell, const unsigned int k, const ContactNodeTraction<dim> &node) const;
       void
       match_contact_nodes();
       PatchFit<dim>
@@ -286,7 +291,13 @@ namespace contact_fem
       effective_fit(const unsigned int vertex, const types::material_id body);
       template <typename Function>
       SymmetricTensor<2, dim>
-      traction_correction(const ContactNodeTraction<dim> &node, const Function &fitted) const;
+      traction_correction(const std::size_t j, const Function &fitted) const;
+      /// The vectors m_q with which the recovered stress gives the traction
+      /// at the samples of contact node @p j (at its location without
+      /// samples): the unit normal, or for a finite-strain body Nanson's
+      /// J F^-T N (sigma* m_q is the nominal traction, per reference area).
+      std::vector<Tensor<1, dim>>
+      traction_vectors(const std::size_t j) const;
       void
       recover_nodal_values();
       Result
@@ -322,6 +333,8 @@ namespace contact_fem
       /// Per active cell index: (support point of fe_q, contact node) for the
       /// contact nodes at support points of its slave boundary faces.
       std::vector<std::vector<std::pair<unsigned int, std::size_t>>> cell_contacts;
+      /// Per contact node: the cells found in cell_contacts for it.
+      std::vector<std::vector<CellIt>> node_cells;
 
       /// Stage 1: per-vertex fits in an FE_Q(1) system (layout per slot:
       /// coefficients, h, kind).
@@ -444,6 +457,26 @@ namespace contact_fem
       const FEValuesExtractors::Vector displacement(0);
       fe_values[displacement].get_function_symmetric_gradients(solution, strains);
       stresses.resize(strains.size());
+      if (materials.constants(cell->material_id()).model != ElasticModel::linear)
+        {
+          // A finite-strain body: the law's Cauchy stress at F = I + grad u
+          // (of F, also under F-bar), at the reference points. The "strain"
+          // is C^-1 : sigma of the body's linear law, so that the energy norm
+          // below is the complementary energy of the law's small-strain limit
+          // (the same metric as the estimate).
+          std::vector<Tensor<2, dim>> gradients(strains.size());
+          fe_values[displacement].get_function_gradients(solution, gradients);
+          for (unsigned int q = 0; q < strains.size(); ++q)
+            {
+              const SymmetricTensor<2, 3> sigma =
+                materials.finite_strain_stress(cell->material_id(), gradients[q]);
+              for (unsigned int i = 0; i < dim; ++i)
+                for (unsigned int j = i; j < dim; ++j)
+                  stresses[q][i][j] = sigma[i][j];
+              strains[q] = materials.compliance(cell->material_id(), stresses[q]);
+            }
+          return;
+        }
       if (volumetric == nullptr)
         {
           for (unsigned int q = 0; q < strains.size(); ++q)
@@ -488,10 +521,24 @@ namespace contact_fem
     }
 
     template <int dim>
+    bool
+    SPREstimator<dim>::has_node_dof(const CellIt                   &cell,
+                                    const unsigned int              k,
+                                    const ContactNodeTraction<dim> &node) const
+    {
+      if (node.dof == numbers::invalid_dof_index)
+        return true;
+      std::vector<types::global_dof_index> dofs(dof_handler.get_fe().n_dofs_per_cell());
+      DoFCellIt(&tria, cell->level(), cell->index(), &dof_handler)->get_dof_indices(dofs);
+      return dofs[dof_handler.get_fe().component_to_system_index(0, k)] == node.dof;
+    }
+
+    template <int dim>
     void
     SPREstimator<dim>::match_contact_nodes()
     {
       cell_contacts.assign(tria.n_active_cells(), {});
+      node_cells.assign(contact_nodes.size(), {});
       if (contact_nodes.empty())
         return;
 
@@ -546,8 +593,13 @@ namespace contact_fem
                           }
                         const Tensor<1, dim> n =
                           contact_nodes[j].normal / contact_nodes[j].normal.norm();
-                        if (n * face_normal > orientation_tolerance)
-                          cell_contacts[cell->active_cell_index()].emplace_back(k, j);
+                        if (n * face_normal > orientation_tolerance &&
+                            has_node_dof(cell, k, contact_nodes[j]))
+                          {
+                            cell_contacts[cell->active_cell_index()].emplace_back(k, j);
+                            node_cells[j].push_back(cell);
+
+                          }
                       }
                   }
               }
@@ -827,6 +879,65 @@ namespace contact_fem
     // minimiser changes only the traction components:
     //   delta = alpha_n / (1 + alpha_n) (n.r) n(x)n
     //         + sum_t alpha_t / (2 + alpha_t) (t.r) (n(x)t + t(x)n).
+    // For a finite-strain body the recovered field is the Cauchy stress at
+    // the reference points, while the contact traction (recovery_tractions()
+    // in contact_problem_refinement.cc: the node's force over its reference
+    // int N_j ds, with either kinematics) is per reference area. By Nanson,
+    // sigma n da = J sigma F^-T N dA, so the condition compares J sigma*
+    // F^-T N, F = I + grad u_h of the node's cell nearest to the sample.
+    template <int dim>
+    std::vector<Tensor<1, dim>>
+    SPREstimator<dim>::traction_vectors(const std::size_t j) const
+    {
+      const ContactNodeTraction<dim> &node = contact_nodes[j];
+      std::vector<std::pair<Point<dim>, Tensor<1, dim>>> points;
+      if (node.samples.empty())
+        points.emplace_back(node.location, node.normal / node.normal.norm());
+      for (const TractionSample<dim> &q : node.samples)
+        points.emplace_back(q.point, q.normal / q.normal.norm());
+      std::vector<Tensor<1, dim>> vectors;
+      for (const auto &point : points)
+        vectors.push_back(point.second);
+      if (node_cells[j].empty() ||
+          materials.constants(node_cells[j][0]->material_id()).model == ElasticModel::linear)
+        return vectors;
+
+      const FEValuesExtractors::Vector displacement(0);
+      std::vector<Tensor<2, dim>>      gradient(1);
+      for (unsigned int i = 0; i < points.size(); ++i)
+        {
+          // The cell of the node's body whose unit point of the sample is
+          // nearest its unit cell (ties to the lower CellId, so that every
+          // partition picks the same).
+          double     distance = std::numeric_limits<double>::infinity();
+          CellIt     nearest;
+          Point<dim> unit;
+          for (const CellIt &cell : node_cells[j])
+            try
+              {
+                const Point<dim> p = mapping.transform_real_to_unit_cell(cell, points[i].first);
+                const double     d = GeometryInfo<dim>::distance_to_unit_cell(p);
+                if (d < distance || (d == distance && cell->id() < nearest->id()))
+                  std::tie(distance, nearest, unit) = std::make_tuple(d, cell, p);
+              }
+            catch (const typename Mapping<dim>::ExcTransformationFailed &)
+              {}
+          AssertThrow(std::isfinite(distance),
+                      ExcMessage("StressRecovery: a traction sample of a contact node lies "
+                                 "in none of the node's cells."));
+          FEValues<dim> fe_values(mapping, dof_handler.get_fe(),
+                                  Quadrature<dim>(GeometryInfo<dim>::project_to_unit_cell(unit)),
+                                  update_gradients);
+          fe_values.reinit(DoFCellIt(&tria, nearest->level(), nearest->index(), &dof_handler));
+          fe_values[displacement].get_function_gradients(solution, gradient);
+          Tensor<2, dim> F = gradient[0];
+          for (unsigned int d = 0; d < dim; ++d)
+            F[d][d] += 1.;
+          vectors[i] = determinant(F) * (transpose(invert(F)) * points[i].second);
+        }
+      return vectors;
+    }
+
     // The shift is applied to this node's value only: a contact condition in
     // the fits of neighbouring patches (as first implemented) fitted the
     // pressure's variation along the slightly curved surface with the
@@ -835,18 +946,20 @@ namespace contact_fem
     template <int dim>
     template <typename Function>
     SymmetricTensor<2, dim>
-    SPREstimator<dim>::traction_correction(const ContactNodeTraction<dim> &node,
-                                           const Function                 &fitted) const
+    SPREstimator<dim>::traction_correction(const std::size_t j, const Function &fitted) const
     {
-      Tensor<1, dim> mean_traction;
+      const ContactNodeTraction<dim>   &node    = contact_nodes[j];
+      const std::vector<Tensor<1, dim>> vectors = traction_vectors(j);
+      Tensor<1, dim>                    mean_traction;
       if (node.samples.empty())
-        mean_traction = fitted(node.location) * (node.normal / node.normal.norm());
+        mean_traction = fitted(node.location) * vectors[0];
       else
         {
           double total = 0.;
-          for (const TractionSample<dim> &q : node.samples)
+          for (unsigned int i = 0; i < node.samples.size(); ++i)
             {
-              mean_traction += q.weight * (fitted(q.point) * (q.normal / q.normal.norm()));
+              const TractionSample<dim> &q = node.samples[i];
+              mean_traction += q.weight * (fitted(q.point) * vectors[i]);
               total += q.weight;
             }
           AssertThrow(std::abs(total) > 0.,
@@ -991,7 +1104,7 @@ namespace contact_fem
                           {
                             const ContactNodeTraction<dim> &node = contact_nodes[contact->second];
                             if (settings.contact_terms && node.imposed)
-                              value += traction_correction(node, fitted);
+                              value += traction_correction(contact->second, fitted);
                             node_stresses[contact->second] += value;
                             node_hits[contact->second] += 1.;
                           }

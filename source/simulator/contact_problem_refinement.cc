@@ -123,7 +123,8 @@ namespace contact_fem
             else if (active)
               traction = -contact.normal_pressure(s.node) * s.D / reference * s.normal;
             tractions.push_back(
-              {interface.nodes[s.node].reference, s.normal, traction, samples, active});
+              {interface.nodes[s.node].reference, s.normal, traction, samples, active,
+               interface.nodes[s.node].dofs[0]});
           }
       return tractions;
     }

@@ -63,13 +63,20 @@ namespace contact_fem
     /// tangential rows, which have their own penalties.
     Tensor<1, dim> normal;
     /// The (mean) traction vector sigma* n; -p n for a frictionless contact
-    /// pressure p with the normal n of the reference configuration.
+    /// pressure p with the normal n of the reference configuration. Per
+    /// reference area: for a finite-strain body it is compared with J
+    /// sigma* F^-T n.
     Tensor<1, dim> traction;
     /// Weighted points of the support of the node (may be empty).
     std::vector<TractionSample<dim>> samples = {};
     /// false: the node's condition is not imposed (an inactive slave node);
     /// its recovered stress is only reported (Result::node_stresses).
     bool imposed = true;
+    /// The node's displacement DoF of component 0, if known: then only the
+    /// support points that carry it get the node (not those of another
+    /// body's node at the same place, whose side face may also face along
+    /// a deformed normal at a corner).
+    types::global_dof_index dof = numbers::invalid_dof_index;
   };
 
   /**
@@ -79,7 +86,11 @@ namespace contact_fem
    *
    * - sigma_h = C(material id) : eps(u_h) is sampled at the Gauss points of
    *   every cell: the centre for p = 1, the (p + 1)-point rule per
-   *   direction for p >= 2 (p = displacement degree).
+   *   direction for p >= 2 (p = displacement degree). For a finite-strain
+   *   body (Materials/Models) sigma_h is the law's Cauchy stress at F = I +
+   *   grad u_h, recovered at the reference points (symmetric, so the same
+   *   fits apply), and its contact condition compares the nominal traction
+   *   J sigma* F^-T N (Nanson) with the node's traction per reference area.
    * - For every vertex and every body (material id) whose cells touch the
    *   vertex, the patch is the set of active cells of that body that have the
    *   vertex as one of their vertices. Each stress component is fitted there by
@@ -109,7 +120,9 @@ namespace contact_fem
    *   support point is the mean of the (effective) fits of the vertices of the
    *   geometric object the support point belongs to; hanging support points
    *   take their values from the hanging-node constraints.
-   * - eta_K^2 = int_K (sigma* - sigma_h) : C^{-1} : (sigma* - sigma_h).
+   * - eta_K^2 = int_K (sigma* - sigma_h) : C^{-1} : (sigma* - sigma_h), C
+   *   the linear law of the body (for a finite-strain body that of its
+   *   small-strain limit, the tangent at F = I).
    */
   /// How StressRecovery imposes the contact tractions; its keys live in the
   /// subsection "Refinement".
@@ -146,7 +159,8 @@ namespace contact_fem
       Vector<float> cell_indicators;
       /// eta = sqrt(sum_K eta_K^2) over all ranks.
       double estimated_error = 0;
-      /// sqrt(sum_K int_K sigma_h : eps_h) over all ranks.
+      /// sqrt(sum_K int_K sigma_h : eps_h) over all ranks (for a finite-strain
+      /// body eps_h = C^{-1} : sigma_h of its small-strain limit).
       double solution_energy_norm = 0;
       /// eta / solution_energy_norm (0 if both vanish, +inf if only the
       /// energy norm vanishes).
