@@ -174,10 +174,12 @@ namespace contact_fem
   ContactParameters::check_kinematics(const unsigned int dim, const std::string &formulation) const
   {
     // The linearisation of the mortar operators exists for 2D line faces,
-    // and only the exact-gap formulation without friction uses it.
-    AssertThrow(!current_kinematics || (dim == 2 && formulation == "alm frictionless"),
+    // and only the exact-gap formulations (alm) use it.
+    AssertThrow(!current_kinematics || (dim == 2 && (formulation == "alm frictionless" ||
+                                                     formulation == "alm frictional")),
                 ExcMessage("Contact/Kinematics = current is implemented for 2D scenes with "
-                           "Contact/Formulation = alm frictionless only (this scene: " +
+                           "Contact/Formulation = alm frictionless or alm frictional only "
+                           "(this scene: " +
                            std::to_string(dim) + "D, " + formulation +
                            "). Use Kinematics = updated or small."));
   }

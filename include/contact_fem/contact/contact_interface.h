@@ -148,6 +148,15 @@ namespace contact_fem
       /// (-D_j n_j on the slave node, +M_jl n_j on master l): (row, values
       /// at dofs).
       std::vector<std::pair<types::global_dof_index, std::vector<double>>> force;
+      /// The same for the tangential force per unit traction h_j (D_j tau_j
+      /// on the slave, -M_jl tau_j on master l; tau_j = n_j turned
+      /// counterclockwise), the rows of @p force.
+      std::vector<std::pair<types::global_dof_index, std::vector<double>>> tangent_force;
+      /// d n_j / du, per component (frictional conditions).
+      std::array<std::vector<double>, dim> normal;
+      /// d (D_j x_j - sum_l M_jl x_l) / du with the positions x held: the
+      /// operators' part of the objective slip, per component.
+      std::array<std::vector<double>, dim> operators;
     };
 
     /// Interface statistics of the last search, per pair.
