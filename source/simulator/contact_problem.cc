@@ -857,10 +857,17 @@ namespace contact_fem
             make_sparsity_pattern();
           }
       }
-    else if (iteration > 0 && search->extend_if_outrun(interface_displacement))
+    else if (iteration > 0)
       {
-        update.searched_again = true;
-        make_sparsity_pattern();
+        // A wider search restarts the active set from the multipliers: they
+        // must be this iterate's, or a node held at zero gap would be
+        // decided by the round-off of that gap.
+        contact->recover_multipliers(*interface, interface->gather(residual));
+        if (search->extend_if_outrun(interface_displacement))
+          {
+            update.searched_again = true;
+            make_sparsity_pattern();
+          }
       }
     TimerOutput::Scope t(*timer, "Contact: active set");
     interface_residual = interface->gather(residual);
