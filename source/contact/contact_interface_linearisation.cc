@@ -1,9 +1,10 @@
 // ContactInterface::linearise(): the derivatives of the weighted gaps and
 // contact forces of the paired slave nodes with respect to the
 // displacement DoFs, at the configuration of the last search, from
-// Mortar::linearise_pair() on every coupled face pair (2D). For
+// Mortar::linearise_pair() on every coupled face pair (2D and 3D). For
 // Contact/Kinematics = current (doc/finite_strain.md).
 #include <contact_fem/contact/contact_interface.h>
+#include <contact_fem/contact/mortar_3d_linearisation.h>
 #include <contact_fem/contact/mortar_linearisation.h>
 
 #include <algorithm>
@@ -23,13 +24,28 @@ namespace contact_fem
       std::map<types::global_dof_index, DofMap> force;
     };
 
+    /// The face-pair patch and its linearised operators of each dimension.
+    template <int dim>
+    struct Linearisation
+    {
+      using Patch  = Mortar::PairPatch;
+      using Result = Mortar::LinearisedPair;
+    };
+    template <>
+    struct Linearisation<3>
+    {
+      using Patch  = Mortar::QuadPairPatch;
+      using Result = Mortar::LinearisedQuadPair;
+    };
+
     /// A PairPatch of interface faces, with the chain from its points to
     /// the interface nodes (a geometry point of Q1 on a quadratic mapping
     /// moves with the linear interpolation of its face's vertices).
+    template <int dim>
     class PatchBuilder
     {
     public:
-      PatchBuilder(const ContactInterface<2> &interface, const std::vector<Tensor<1, 2>> &u)
+      PatchBuilder(const ContactInterface<dim> &interface, const std::vector<Tensor<1, dim>> &u)
         : interface(interface)
         , u(u)
       {}
@@ -53,12 +69,12 @@ namespace contact_fem
           }
         for (unsigned int k = 0; k < face.geometry_points.size(); ++k)
           {
-            const auto xi = Mortar::Kernel<2>::node_parameter(2, face.nodes.size() + k);
-            Point<2>   x  = face.geometry_points[k];
+            const auto xi = Mortar::Kernel<dim>::node_parameter(2, face.nodes.size() + k);
+            Point<dim> x  = face.geometry_points[k];
             chain.emplace_back();
             for (unsigned int v = 0; v < face.nodes.size(); ++v)
               {
-                const double w = Mortar::Kernel<2>::shape_value(1, v, xi);
+                const double w = Mortar::Kernel<dim>::shape_value(1, v, xi);
                 x += w * u[face.nodes[v]];
                 chain.back().emplace_back(face.nodes[v], w);
               }
@@ -77,31 +93,32 @@ namespace contact_fem
       {
         for (unsigned int i = 0; i < chain.size(); ++i)
           for (const auto &[node, weight] : chain[i])
-            for (unsigned int d = 0; d < 2; ++d)
-              sums[interface.nodes[node].dofs[d]] += factor * weight * derivatives[2 * i + d];
+            for (unsigned int d = 0; d < dim; ++d)
+              sums[interface.nodes[node].dofs[d]] += factor * weight * derivatives[dim * i + d];
       }
 
-      Mortar::PairPatch patch;
+      typename Linearisation<dim>::Patch patch;
 
     private:
-      const ContactInterface<2>                                &interface;
-      const std::vector<Tensor<1, 2>>                          &u;
+      const ContactInterface<dim>                              &interface;
+      const std::vector<Tensor<1, dim>>                        &u;
       std::map<unsigned int, unsigned int>                      point_of_node;
       std::vector<std::vector<std::pair<unsigned int, double>>> chain;
     };
 
     /// The derivatives of pair (@p f, @p m) added to the sums of the
     /// paired nodes of slave face @p f.
+    template <int dim>
     void
-    add_pair(const ContactInterface<2>        &interface,
-             const std::vector<Tensor<1, 2>>  &u,
+    add_pair(const ContactInterface<dim>       &interface,
+             const std::vector<Tensor<1, dim>> &u,
              const unsigned int                f,
              const unsigned int                m,
              const std::vector<unsigned int>  &neighbours,
              const std::vector<unsigned int>  &masters,
              std::map<unsigned int, NodeSums> &sums)
     {
-      PatchBuilder builder(interface, u);
+      PatchBuilder<dim> builder(interface, u);
       builder.patch.slave_faces.push_back(builder.add_face(f));
       for (const unsigned int g : neighbours)
         builder.patch.slave_faces.push_back(builder.add_face(g));
@@ -109,7 +126,7 @@ namespace contact_fem
       for (const unsigned int other : masters)
         if (other != m)
           builder.patch.other_masters.push_back(builder.add_face(other));
-      Mortar::LinearisedPair result;
+      typename Linearisation<dim>::Result result;
       if (!Mortar::linearise_pair(builder.patch, true, result))
         return;
       const auto &slave_nodes  = interface.faces[f].nodes;
@@ -123,7 +140,7 @@ namespace contact_fem
           builder.add(result.normal_gap[k].derivatives, 1., node.gap);
           const auto &n = result.normals[k];
           // f_j = -D_j n_j on the slave node, +M_jl n_j on master l.
-          for (unsigned int d = 0; d < 2; ++d)
+          for (unsigned int d = 0; d < dim; ++d)
             {
               DofMap &row = node.force[interface.nodes[slave_nodes[k]].dofs[d]];
               builder.add(result.D[k].derivatives, -n[d].value, row);
@@ -139,7 +156,8 @@ namespace contact_fem
     }
 
     /// The sums of one node as a LinearisedNode over the union of its DoFs.
-    ContactInterface<2>::LinearisedNode
+    template <int dim>
+    typename ContactInterface<dim>::LinearisedNode
     linearised_node(const NodeSums &sums)
     {
       std::set<types::global_dof_index> dofs;
@@ -148,7 +166,7 @@ namespace contact_fem
       for (const auto &[row, values] : sums.force)
         for (const auto &[dof, value] : values)
           dofs.insert(dof);
-      ContactInterface<2>::LinearisedNode result;
+      typename ContactInterface<dim>::LinearisedNode result;
       result.dofs.assign(dofs.begin(), dofs.end());
       const auto at = [&](const DofMap &values) {
         std::vector<double> dense(result.dofs.size(), 0.);
@@ -169,11 +187,6 @@ namespace contact_fem
   ContactInterface<dim>::linearise()
   {
     linearised_nodes.clear();
-    if constexpr (dim != 2)
-      {
-        AssertThrow(false, ExcMessage("the contact linearisation is implemented in 2D only"));
-      }
-    else
       {
         std::vector<Tensor<1, dim>> u(nodes.size());
         for (unsigned int n = 0; n < nodes.size(); ++n)
@@ -202,7 +215,7 @@ namespace contact_fem
                      masters_of_face[f], sums);
           }
         for (const auto &[n, node_sums] : sums)
-          linearised_nodes[n] = linearised_node(node_sums);
+          linearised_nodes[n] = linearised_node<dim>(node_sums);
       }
   }
 
