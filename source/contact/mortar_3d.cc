@@ -75,20 +75,6 @@ namespace contact_fem
           return point_value(x);
       }
 
-      /// |t|, for double exactly Tensor::norm().
-      template <typename Number>
-      Number
-      norm_of(const Tensor<1, 3, Number> &t)
-      {
-        if constexpr (std::is_same_v<Number, double>)
-          return t.norm();
-        else
-          {
-            using std::sqrt;
-            return sqrt(t * t);
-          }
-      }
-
       template <typename Number>
       Number
       abs_of(const Number &x)
@@ -252,8 +238,8 @@ namespace contact_fem
       void
       normalise(Tensor<1, 3, Number> &t)
       {
-        const Number length = norm_of(t);
-        t /= length;
+        const Number norm = length(t);
+        t /= norm;
       }
 
       /// The auxiliary plane of a slave face: through its centre, normal n0
@@ -298,7 +284,7 @@ namespace contact_fem
         AuxiliaryPlaneOf<Number> plane;
         for (unsigned int k = 0; k < normals.size(); ++k)
           plane.normal += quad_shape_value(slave.shape_degree(), k, Point<2>()) * normals[k];
-        AssertThrow(value_of(norm_of(plane.normal)) > 0.,
+        AssertThrow(value_of(length(plane.normal)) > 0.,
                     ExcMessage("The slave normals cancel at the face centre."));
         normalise(plane.normal);
         plane.origin        = slave.point(centre);
@@ -529,7 +515,7 @@ namespace contact_fem
                         const auto                 t  = slave.tangents(xi);
                         const Tensor<1, 3, Number> nt = cross_product_3d(t[0], t[1]);
                         const Number               jxw =
-                          gauss.weight(i) * gauss.weight(j) * u * det * norm_of(nt) /
+                          gauss.weight(i) * gauss.weight(j) * u * det * length(nt) /
                           abs_of(Number(nt * plane.normal));
                         f(xi, jxw);
                       }

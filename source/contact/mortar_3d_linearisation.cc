@@ -40,19 +40,6 @@ namespace contact_fem
         return result;
       }
 
-      template <typename Number>
-      Number
-      norm_of(const Tensor<1, 3, Number> &t)
-      {
-        if constexpr (std::is_same_v<Number, double>)
-          return t.norm();
-        else
-          {
-            using std::sqrt;
-            return sqrt(t * t);
-          }
-      }
-
       /// The area of @p face and its unit normal at @p xi times
       /// @p orientation, as ContactInterface computes them.
       template <typename Face>
@@ -67,7 +54,7 @@ namespace contact_fem
             const Point<2, Number> xi(Number(2. * q.point(i)[0] - 1.),
                                       Number(2. * q.point(i)[1] - 1.));
             const auto t = face.tangents(xi);
-            area += 4. * q.weight(i) * norm_of(Tensor<1, 3, Number>(cross_product_3d(t[0], t[1])));
+            area += 4. * q.weight(i) * length(Tensor<1, 3, Number>(cross_product_3d(t[0], t[1])));
           }
         return area;
       }
@@ -93,18 +80,18 @@ namespace contact_fem
                     const Point<2>             xi = quad_node_parameter(p, i);
                     const auto                 t  = face.tangents(Point<2, Number>(xi[0], xi[1]));
                     const Tensor<1, 3, Number> n  = cross_product_3d(t[0], t[1]);
-                    normals[k] += Number(area * f.orientation / norm_of(n)) * n;
+                    normals[k] += Number(area * f.orientation / length(n)) * n;
                   }
           }
         for (Tensor<1, 3, Number> &n : normals)
-          n = n / norm_of(n);
+          n = n / length(n);
         return normals;
       }
 
       /**
        * The dual basis coefficients A = D_e M_e^{-1} on @p polygons
        * (dual_basis_coefficients()). Values: those of the double path; the
-       * derivative is that of dA = (dD_e - A dM_e) M_e^{-1}, as in 2D.
+       * derivative: dual_coefficients_of().
        */
       template <typename Number>
       Table<2, Number>
@@ -134,29 +121,12 @@ namespace contact_fem
                 result(j, k) = A(j, k);
             return result;
           }
-        Table<2, Number> De(n, n), Me(n, n);
-        dual_basis_integrals_of<Number>(slave, slave_values, normals, polygons, De, Me);
-        FullMatrix<double> Me_values(n, n), Me_inverse(n, n);
-        for (unsigned int j = 0; j < n; ++j)
-          for (unsigned int k = 0; k < n; ++k)
-            Me_values(j, k) = value_of(Me(j, k));
-        Me_inverse.invert(Me_values);
-        for (unsigned int j = 0; j < n; ++j)
-          for (unsigned int k = 0; k < n; ++k)
-            {
-              Number a = 0.;
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  Number r = De(j, i);
-                  for (unsigned int m = 0; m < n; ++m)
-                    r -= A(j, m) * Me(m, i);
-                  a += r * Me_inverse(i, k);
-                }
-              if constexpr (!std::is_same_v<Number, double>)
-                a.val() = A(j, k);
-              result(j, k) = a;
-            }
-        return result;
+        else
+          {
+            Table<2, Number> De(n, n), Me(n, n);
+            dual_basis_integrals_of<Number>(slave, slave_values, normals, polygons, De, Me);
+            return dual_coefficients_of(A, De, Me);
+          }
       }
 
       template <typename Number>
