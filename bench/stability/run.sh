@@ -8,6 +8,8 @@
 # the Hertz scene (prm/hertz.prm) and of the contact-blocks scenes
 # (tests/scenes/*.prm), and in 3D (groups 3d-*) of the Hertz sphere
 # (prm/hertz_3d.prm) and the 3D patch blocks (bench/stability/patch_3d.prm),
+# and at finite strain (group finite-strain: neo-Hookean bodies, contact on
+# the current configuration, the sliding and ironing scenes),
 # one after the other, each under a time limit, into
 # bench/stability/results/<group>/<case>/, then calls analyse.py, which
 # writes doc/stability.md.
@@ -105,6 +107,7 @@ case_order() { echo "${order_of[$1]:-0}"; }
 #     slip-all       every active node slips at the end
 #     same=G/C       p_max and contact force equal those of case G/C (1e-8)
 #     near=G/C,TOL   the same within TOL relative (penalty against alm)
+#     force-near=G/C,TOL  the contact force alone within TOL (another mesh)
 #     differs=G/C    the tangential traction profile differs from that of
 #                    case G/C by more than 1e-3 of its largest pressure
 #                    (hysteresis of a reversed load)
@@ -694,6 +697,104 @@ run_case $G cattaneo-r2      "$CATT" 180 "prm/cattaneo.prm, Global refinements =
   "$IT" "Geometry/Global refinements=2"
 run_case $G hertz-asym-load-nofix "$HERTZ" 120 "mechanism/hertz-asym-load-nofix (rotation held only by the discrete arc): the Newton solves and the held-rotation probe run with CG on a nearly singular system" "hertz warn=held only weakly" \
   "$IT" "Boundary conditions/Pressure=1: 0.2*t*(1+0.01*x)" "Boundary conditions/Fixed points="
+
+# --- 13b. Finite strain (issue 29, item 6) --------------------------------
+# Neo-Hookean half-disc (E = 200, nu = 0.3) on the rigid plate with contact
+# on the current configuration (Contact/Kinematics = current), Contact
+# refinements = 4 (slave faces ~0.2 at the contact). The Hertz formula is the
+# small-load limit only: at x1 it must hold (a / R = 0.05), beyond it is
+# indicative (the finite-strain answer differs by the load's own order).
+# Newton tolerances 1e-10, so that answers of different step counts compare.
+G=finite-strain
+SLIDE="$repo_root/tests/scenes/current_kinematics_sliding_01.prm"
+IRON="$repo_root/tests/scenes/ironing_2d_01.prm"
+FS=("Materials/Models=neo-hookean, linear" "Contact/Kinematics=current"
+    "Geometry/Hertz cylinder/Contact refinements=4"
+    "Newton/Displacement relative tolerance=1e-10" "Newton/Displacement absolute tolerance=1e-12")
+X1E2=("Boundary conditions/Pressure=1: 100*0.2*t" "Geometry/Hertz cylinder/Refinement half width=4.5")
+X3E2=("Boundary conditions/Pressure=1: 300*0.2*t" "Geometry/Hertz cylinder/Refinement half width=7")
+# Large loads: a / R = 0.05, 0.15, 0.48 and the whole arc in contact (x300,
+# Hertz a = 0.83 R; the flattened disc is 19 wide on a plate of 20).
+run_case $G load-x1 "$HERTZ" 60 "p = 0.2 t (a = 0.05 R), neo-Hookean, current kinematics" "hertz" "${FS[@]}"
+run_case $G load-x1e1 "$HERTZ" 60 "p = 10 x 0.2 t (a = 0.15 R), graded zone 1.5, 4 steps" "hertz-approx" \
+  "${FS[@]}" "Boundary conditions/Pressure=1: 10*0.2*t" "Geometry/Hertz cylinder/Refinement half width=1.5" \
+  "Load stepping/Number of load steps=4"
+run_case $G load-x1e2 "$HERTZ" 60 "p = 100 x 0.2 t (a = 0.48 R), graded zone 4.5, 5 steps" "hertz-approx" \
+  "${FS[@]}" "${X1E2[@]}" "Load stepping/Number of load steps=5"
+run_case $G load-x3e2 "$HERTZ" 60 "p = 300 x 0.2 t (Hertz a = 0.83 R: the whole arc touches), graded zone 7, 5 steps" "hertz-approx" \
+  "${FS[@]}" "${X3E2[@]}" "Load stepping/Number of load steps=5"
+run_case $G load-x1e2-svk "$HERTZ" 60 "as load-x1e2 with Saint Venant-Kirchhoff (softens in compression)" "hertz-approx" \
+  "${FS[@]}" "${X1E2[@]}" "Load stepping/Number of load steps=5" "Materials/Models=saint-venant-kirchhoff, linear"
+# The same loads with a model that cannot follow them: linear bulk (current
+# kinematics) must stop outside the model's range (exit 3); small kinematics
+# with the finite-strain bulk must stop with the penetration check's diagnosis.
+run_case $G load-x1e2-linear "$HERTZ" 60 "as load-x1e2 with the linear bulk" "diag=range" \
+  "${FS[@]}" "${X1E2[@]}" "Load stepping/Number of load steps=5" "Materials/Models=linear, linear"
+run_case $G load-x1e2-small "$HERTZ" 60 "as load-x1e2 with Contact/Kinematics = small" "diag=not a contact solution" \
+  "${FS[@]}" "${X1E2[@]}" "Load stepping/Number of load steps=5" "Contact/Kinematics=small"
+# Element inversion: the first iterate of a large step inverts elements; the
+# step must be split and give the answer of the finer stepping, or the run
+# must stop naming the step and det F (x3000: the predictor from rest
+# inverts even at a sixteenth of the step).
+run_case $G invert-x1e2-1step "$HERTZ" 60 "load-x1e2 in one step (inverts: split)" "near=finite-strain/load-x1e2,1e-8" \
+  "${FS[@]}" "${X1E2[@]}" "Load stepping/Number of load steps=1"
+run_case $G invert-x3e2-1step "$HERTZ" 60 "load-x3e2 in one step (inverts: split 4 times, then stops)" "diag=is inverted" \
+  "${FS[@]}" "${X3E2[@]}" "Load stepping/Number of load steps=1"
+run_case $G invert-x3e2-1step-splits "$HERTZ" 60 "the same with Maximum step splits = 8" "near=finite-strain/load-x3e2,1e-8" \
+  "${FS[@]}" "${X3E2[@]}" "Load stepping/Number of load steps=1" "Load stepping/Maximum step splits=8"
+run_case $G invert-x3e3 "$HERTZ" 60 "p = 3000 x 0.2 t in 5 steps: inverts after 4 splits" "diag=is inverted" \
+  "${FS[@]}" "Boundary conditions/Pressure=1: 3000*0.2*t" "Geometry/Hertz cylinder/Refinement half width=7" \
+  "Load stepping/Number of load steps=5"
+# Near incompressibility at the Hertz load on the shipped mesh (Contact
+# refinements 6; small-load limit: Hertz with E* = E / (1 - nu^2) holds, as
+# in group 'incompressible') and at 10 x on the coarser mesh (a = 0.15 R,
+# indicative): Q1 with F-bar (Finite element/Volumetric strain = B-bar),
+# standard Q1 (locks, must warn beyond 0.49) and Q2 (displacement element).
+FS6=("Materials/Models=neo-hookean, linear" "Contact/Kinematics=current"
+     "Newton/Displacement relative tolerance=1e-10" "Newton/Displacement absolute tolerance=1e-12")
+X1E1=("Boundary conditions/Pressure=1: 10*0.2*t" "Geometry/Hertz cylinder/Refinement half width=1.5"
+      "Load stepping/Number of load steps=4")
+for nu in 0.49 0.499; do
+  exp_std="hertz"
+  [[ $nu == 0.499 ]] && exp_std="hertz warn=lock volumetrically"
+  run_case $G "Q1-nu$nu" "$HERTZ" 60 "Q1, nu = $nu, standard" "$exp_std" \
+    "${FS6[@]}" "Materials/Poisson's ratios=$nu, 0.3"
+  run_case $G "Q1-fbar-nu$nu" "$HERTZ" 60 "Q1, nu = $nu, F-bar" "hertz" \
+    "${FS6[@]}" "Materials/Poisson's ratios=$nu, 0.3" "Finite element/Volumetric strain=B-bar"
+  run_case $G "Q2-nu$nu" "$HERTZ" 60 "Q2, nu = $nu (displacement element)" "hertz" \
+    "${FS6[@]}" "Materials/Poisson's ratios=$nu, 0.3" "Finite element/Degree=2"
+  run_case $G "Q1-fbar-nu$nu-x1e1" "$HERTZ" 60 "Q1, nu = $nu, F-bar, 10 x load in 4 steps, Contact refinements 4" "hertz-approx" \
+    "${FS[@]}" "Materials/Poisson's ratios=$nu, 0.3" "Finite element/Volumetric strain=B-bar" "${X1E1[@]}"
+  run_case $G "Q2-nu$nu-x1e1" "$HERTZ" 60 "Q2, nu = $nu, 10 x load in 4 steps, Contact refinements 4" "hertz-approx" \
+    "${FS[@]}" "Materials/Poisson's ratios=$nu, 0.3" "Finite element/Degree=2" "${X1E1[@]}"
+done
+# Large sliding over hanging nodes: tests/scenes/current_kinematics_sliding_01
+# (a neo-Hookean block pressed 10 % and slid 0.6 over a master of 10 faces)
+# with the master's top row refined twice where the block arrives and the
+# slave's left half once (Geometry/Local refinements); the ironing scene
+# (die slid 1.5) with the block's top band refined under the slide, in 36
+# steps and in 9 (0.75 element lengths per step). The refined meshes must
+# give the unrefined answer within its mesh error.
+run_case $G sliding "$SLIDE" 30 "sliding blocks, uniform meshes" ""
+run_case $G sliding-hanging "$SLIDE" 30 "sliding blocks, hanging nodes on master and slave" "force-near=finite-strain/sliding,2e-2" \
+  "Geometry/Local refinements=2: 0.5, 0.85, 1.1, 1; 1: 0, 1, 0.5, 1.2"
+run_case $G ironing "$IRON" 60 "ironing, 36 steps" ""
+run_case $G ironing-hanging "$IRON" 60 "ironing, block top refined once over x in [-1, 1], 36 steps" "force-near=finite-strain/ironing,5e-2" \
+  "Geometry/Local refinements=1: -1, 1.5, 1, 2.1"
+run_case $G ironing-hanging-9steps "$IRON" 60 "the same in 9 steps (pressed in one, 0.75 element lengths per slide step)" "near=finite-strain/ironing-hanging,1e-6" \
+  "Geometry/Local refinements=1: -1, 1.5, 1, 2.1" "Load stepping/Number of load steps=9"
+# Self-contact and reach beyond the paired surfaces: a pair of two surfaces
+# of one body is refused (self-contact is not implemented); the flattened
+# disc of load-x3e2 on a plate narrower than it (half width 8.5) hangs over
+# the master's end; the ironing die pressed 1.2 (beyond its radius) sinks
+# below its equator and the block wraps around it.
+run_case $G self-pair "$SLIDE" 30 "Contact/Pairs = 3: 1 (bottom and top of the upper block)" "diag=self-contact" \
+  "Contact/Pairs=3: 1"
+run_case $G overhang "$HERTZ" 60 "load-x3e2 on a plate of half width 8.5 (the disc hangs over its ends)" "hertz-approx" \
+  "${FS[@]}" "${X3E2[@]}" "Load stepping/Number of load steps=5" "Geometry/Hertz cylinder/Plate half width=8.5"
+run_case $G die-sunk "$IRON" 60 "ironing die pressed 1.2 in 12 steps (radius 1: the block wraps past its equator)" "" \
+  "Boundary conditions/Prescribed displacement=die top: x = 0; die top: y = -1.2*t" \
+  "Load stepping/End time=1" "Load stepping/Number of load steps=12"
 
 # === 3D (groups 3d-*; run them alone with --only '^3d-') ====================
 # Small 3D scenes, about a second each:

@@ -21,7 +21,11 @@ namespace contact_fem
     struct NodeSums
     {
       DofMap                                    gap;
-      std::map<types::global_dof_index, DofMap> force;
+      std::map<types::global_dof_index, DofMap> force, tangent_force;
+      /// The normal's derivatives come whole from any one pair (its patch
+      /// holds every slave face at the node); the operators' are summed.
+      bool                  has_normal = false;
+      std::array<DofMap, 2> normal, operators;
     };
 
     /// The face-pair patch and its linearised operators of each dimension.
@@ -106,6 +110,45 @@ namespace contact_fem
       std::vector<std::vector<std::pair<unsigned int, double>>> chain;
     };
 
+    /// The frictional derivatives of slave node @p k of a pair (@p result)
+    /// added to @p node: h_j = D_j tau_j on the slave, -M_jl tau_j on master
+    /// l, tau_j = (-n_y, n_x); n_j; D_j x_j - sum_l M_jl x_l at held x.
+    void
+    add_frictional(const ContactInterface<2>       &interface,
+                   const std::vector<Tensor<1, 2>> &u,
+                   const PatchBuilder<2>           &builder,
+                   const Mortar::LinearisedPair    &result,
+                   const unsigned int               k,
+                   const std::vector<unsigned int> &slave_nodes,
+                   const std::vector<unsigned int> &master_nodes,
+                   NodeSums                        &node)
+    {
+      const auto                &n   = result.normals[k];
+      const std::array<double, 2> tau = {{-n[1].value, n[0].value}};
+      // d tau_d = sign_d d n_(1-d).
+      const std::array<double, 2> sign = {{-1., 1.}};
+      const auto                  x    = [&](const unsigned int node_index) {
+        return interface.nodes[node_index].reference + u[node_index];
+      };
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          DofMap &row = node.tangent_force[interface.nodes[slave_nodes[k]].dofs[d]];
+          builder.add(result.D[k].derivatives, tau[d], row);
+          builder.add(n[1 - d].derivatives, sign[d] * result.D[k].value, row);
+          builder.add(result.D[k].derivatives, x(slave_nodes[k])[d], node.operators[d]);
+          for (unsigned int l = 0; l < result.M[k].size(); ++l)
+            {
+              DofMap &master_row = node.tangent_force[interface.nodes[master_nodes[l]].dofs[d]];
+              builder.add(result.M[k][l].derivatives, -tau[d], master_row);
+              builder.add(n[1 - d].derivatives, -sign[d] * result.M[k][l].value, master_row);
+              builder.add(result.M[k][l].derivatives, -x(master_nodes[l])[d], node.operators[d]);
+            }
+          if (!node.has_normal)
+            builder.add(n[d].derivatives, 1., node.normal[d]);
+        }
+      node.has_normal = true;
+    }
+
     /// The derivatives of pair (@p f, @p m) added to the sums of the
     /// paired nodes of slave face @p f.
     template <int dim>
@@ -152,6 +195,9 @@ namespace contact_fem
                   builder.add(n[d].derivatives, result.M[k][l].value, master_row);
                 }
             }
+          // Friction at finite deformation: 2D only (check_kinematics()).
+          if constexpr (dim == 2)
+            add_frictional(interface, u, builder, result, k, slave_nodes, master_nodes, node);
         }
     }
 
@@ -178,6 +224,13 @@ namespace contact_fem
       result.gap = at(sums.gap);
       for (const auto &[row, values] : sums.force)
         result.force.emplace_back(row, at(values));
+      for (const auto &[row, values] : sums.tangent_force)
+        result.tangent_force.emplace_back(row, at(values));
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          result.normal[d]    = at(sums.normal[d]);
+          result.operators[d] = at(sums.operators[d]);
+        }
       return result;
     }
   } // namespace

@@ -13,6 +13,7 @@
 #include <contact_fem/core/parameters.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -133,32 +134,76 @@ namespace contact_fem
                       surface_node_normals(geometries, measures, false));
   }
 
+  namespace
+  {
+    /// The master faces in @p tree whose boxes meet @p box, by face index.
+    template <int dim, class Tree>
+    std::vector<unsigned int>
+    candidate_masters(const Tree &tree, const BoundingBox<dim> &box)
+    {
+      std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
+      tree.query(boost::geometry::index::intersects(box), std::back_inserter(hits));
+      std::vector<unsigned int> masters;
+      for (const auto &hit : hits)
+        masters.push_back(hit.second);
+      std::sort(masters.begin(), masters.end());
+      return masters;
+    }
+
+    /// The box of the slave face of @p nodes enlarged by @p reach.
+    template <int dim>
+    BoundingBox<dim>
+    slave_box(const std::vector<Point<dim>> &nodes, const double reach)
+    {
+      BoundingBox<dim> box(nodes);
+      box.extend(reach);
+      return box;
+    }
+
+    /**
+     * The faces of @p costs (face, cost of its narrow phase and
+     * integration: the number of its candidate masters; in face order)
+     * that rank @p rank of @p n_ranks integrates: contiguous runs in face
+     * order of about equal cost. Every rank computes the same split.
+     */
+    std::vector<unsigned int>
+    share_of_faces(const std::vector<std::pair<unsigned int, unsigned int>> &costs,
+                   const unsigned int                                        rank,
+                   const unsigned int                                        n_ranks)
+    {
+      std::uint64_t total = 0;
+      for (const auto &entry : costs)
+        total += entry.second;
+      std::vector<unsigned int> share;
+      std::uint64_t             before = 0;
+      for (const auto &[f, cost] : costs)
+        {
+          // The rank whose part holds the middle of the face's cost
+          // (integers: the same on every rank).
+          if ((2 * before + cost) * n_ranks / (2 * total) == rank)
+            share.push_back(f);
+          before += cost;
+        }
+      return share;
+    }
+  } // namespace
+
   template <int dim>
   template <class Tree>
   std::vector<double>
-  ContactInterface<dim>::integrate_own_faces(const unsigned int                       p,
-                                             const std::vector<FaceGeometry>         &geometries,
-                                             const Tree                              &tree,
-                                             const std::vector<double>               &reach,
-                                             const std::map<unsigned int, SlaveNode> &slave_data,
-                                             std::string                             &error) const
+  ContactInterface<dim>::integrate_faces(const std::vector<unsigned int>         &share,
+                                         const std::vector<FaceGeometry>         &geometries,
+                                         const Tree                              &tree,
+                                         const std::vector<double>               &reach,
+                                         const std::map<unsigned int, SlaveNode> &slave_data,
+                                         std::string                             &error) const
   {
     using Kernel = Mortar::Kernel<dim>;
     std::vector<double> packed;
     try
       {
-        for (unsigned int f = own_faces.first; f < own_faces.second; ++f)
+        for (const unsigned int f : share)
           {
-            if (!faces[f].slave || faces[f].pair != p)
-              continue;
-            BoundingBox<dim> box(geometries[f].nodes);
-            box.extend(reach[f]);
-            std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
-            tree.query(boost::geometry::index::intersects(box), std::back_inserter(hits));
-            std::sort(hits.begin(), hits.end(), [](const auto &a, const auto &b) {
-              return a.second < b.second;
-            });
-
             // Narrow phase: opposing normals, then the overlaps, on which
             // the dual basis of the slave face is built (the part the
             // masters cover).
@@ -169,9 +214,9 @@ namespace contact_fem
               Mortar::face_normal(geometries[f], Kernel::centre(), faces[f].orientation);
             std::vector<unsigned int> masters, facing;
             typename Kernel::Overlaps overlaps;
-            for (const auto &hit : hits)
+            for (const unsigned int m :
+                 candidate_masters<dim>(tree, slave_box(geometries[f].nodes, reach[f])))
               {
-                const unsigned int m = hit.second;
                 if (!(n_slave *
                         Mortar::face_normal(geometries[m], Kernel::centre(), faces[m].orientation) <
                       0.))
@@ -281,12 +326,28 @@ namespace contact_fem
         }
     const auto tree = pack_rtree(master_boxes);
 
-    // Narrow phase and integration on the faces of this rank; a failed
-    // tiling check stops every rank with the same message.
+    // The broad phase of this rank's own slave faces gives their costs
+    // (the number of candidate masters); the faces with candidates are
+    // then shared out over the ranks by cost, since the contact zone need
+    // not follow the partition of the cells. The narrow phase and the
+    // integration run on the shared-out faces; a failed tiling check stops
+    // every rank with the same message.
+    std::vector<unsigned int> own_costs;
+    for (unsigned int f = own_faces.first; f < own_faces.second; ++f)
+      if (faces[f].slave && faces[f].pair == p)
+        if (const auto n =
+              candidate_masters<dim>(tree, slave_box(geometries[f].nodes, reach[f])).size())
+          own_costs.insert(own_costs.end(), {f, static_cast<unsigned int>(n)});
+    std::vector<std::pair<unsigned int, unsigned int>> costs;
+    for (const auto &chunk : Utilities::MPI::all_gather(communicator, own_costs))
+      for (unsigned int i = 0; i + 1 < chunk.size(); i += 2)
+        costs.emplace_back(chunk[i], chunk[i + 1]);
     std::string error;
-    const auto  own = integrate_own_faces(p, geometries, tree, reach, slave_data, error);
+    const auto  share = share_of_faces(costs, Utilities::MPI::this_mpi_process(communicator),
+                                       Utilities::MPI::n_mpi_processes(communicator));
+    const auto  mine  = integrate_faces(share, geometries, tree, reach, slave_data, error);
     stop_on_every_rank(error);
-    const auto segments_of_face = unpack_segments(Utilities::MPI::all_gather(communicator, own));
+    const auto segments_of_face = unpack_segments(Utilities::MPI::all_gather(communicator, mine));
 
     std::vector<bool> master_is_candidate(faces.size(), false);
     double            slave_measure = 0., slave_modulus = 0.;

@@ -265,8 +265,8 @@ namespace contact_fem
   }
 
   template <int dim>
-  std::string
-  ContactDiagnosis<dim>::no_contact_message(const std::string &where,
+  NewtonFailure
+  ContactDiagnosis<dim>::no_contact_failure(const std::string &where,
                                             const double       time,
                                             const bool         in_iteration,
                                             const bool         none_started) const
@@ -281,10 +281,11 @@ namespace contact_fem
     if (cause.empty())
       cause = load_at_round_off(time);
     if (!cause.empty())
-      return where +
-             ": no contact. No slave node is active, but not because the load "
-             "separates the bodies: " +
-             cause + ".";
+      return NewtonFailure(where +
+                             ": no contact. No slave node is active, but not because the load "
+                             "separates the bodies: " +
+                             cause + ".",
+                           false);
     double total = 0.;
     for (const auto &[id, load] : body_loads(time))
       total += load.norm();
@@ -300,17 +301,20 @@ namespace contact_fem
         // Nothing was solved yet: the start rule, not the iteration, left
         // the loaded body without support.
         if (none_started)
-          return pushing + ": no slave node started the step in contact, so nothing held the "
-                           "loaded body. A node starts in contact when it carried pressure at "
-                           "the end of the previous step, or, on the first step of a mesh, when "
-                           "its gap is below Contact/Active check factor times its size (at 0, "
-                           "round-off decides whether a touching node does). Hint: raise "
-                           "Contact/Active check factor, or close the gap by a prescribed "
-                           "displacement.";
-        return pushing + ": the contact was lost numerically, not by the load. Hint: more "
-                         "load steps, or a different Contact/Penalty.";
+          return NewtonFailure(
+            pushing + ": no slave node started the step in contact, so nothing held the "
+                      "loaded body. A node starts in contact when it carried pressure at "
+                      "the end of the previous step, or, on the first step of a mesh, when "
+                      "its gap is below Contact/Active check factor times its size (at 0, "
+                      "round-off decides whether a touching node does). Hint: raise "
+                      "Contact/Active check factor, or close the gap by a prescribed "
+                      "displacement.",
+            false);
+        return NewtonFailure(pushing + ": the contact was lost numerically, not by the load. "
+                                       "Hint: more load steps, or a different Contact/Penalty.",
+                             in_iteration);
       }
-    return separation;
+    return NewtonFailure(separation, false);
   }
 
   template <int dim>

@@ -731,8 +731,10 @@ namespace contact_fem
     if (finite_strain)
       smallest_jacobian = Utilities::MPI::min(smallest_jacobian, comm);
     if (!(smallest_jacobian > 0.))
-      throw NewtonFailure("an element of a finite-strain body is inverted (det F = " +
-                          scientific(smallest_jacobian) + " <= 0 at a quadrature point)");
+      throw NewtonFailure(
+        "an element of a finite-strain body is inverted (det F = " + scientific(smallest_jacobian) +
+        " <= 0 at a quadrature point). Hint: more load steps (Load stepping/"
+        "Number of load steps, Maximum step splits)");
     strain_energy = Utilities::MPI::sum(local_strain, comm);
     external_work = Utilities::MPI::sum(local_work, comm);
   }
@@ -858,10 +860,17 @@ namespace contact_fem
             make_sparsity_pattern();
           }
       }
-    else if (iteration > 0 && search->extend_if_outrun(interface_displacement))
+    else if (iteration > 0)
       {
-        update.searched_again = true;
-        make_sparsity_pattern();
+        // A wider search restarts the active set from the multipliers: they
+        // must be this iterate's, or a node held at zero gap would be
+        // decided by the round-off of that gap.
+        contact->recover_multipliers(*interface, interface->gather(residual));
+        if (search->extend_if_outrun(interface_displacement))
+          {
+            update.searched_again = true;
+            make_sparsity_pattern();
+          }
       }
     TimerOutput::Scope t(*timer, "Contact: active set");
     interface_residual = interface->gather(residual);
@@ -948,7 +957,14 @@ namespace contact_fem
             check_before_solve(at, iteration);
             newton_update(at, monitor.displacement_target());
           }
-        compute_residual();
+        try
+          {
+            compute_residual();
+          }
+        catch (const NewtonFailure &failure) // an inverted element: say where
+          {
+            throw NewtonFailure(at + ": " + failure.what(), failure.splittable);
+          }
         const ContactUpdate update      = update_contact(iteration);
         const unsigned int bond_changes = tying && iteration > 0 ? update_bonds(at, iteration) : 0u;
         const unsigned int changes      = update.changes + bond_changes;
@@ -983,7 +999,7 @@ namespace contact_fem
       }
     if (assessment.converged && contact && contact->n_active() == 0 &&
         !contact_parameters.allow_loss_of_contact)
-      throw NewtonFailure(diagnosis().no_contact_message(where, current_time, false, false), false);
+      throw diagnosis().no_contact_failure(where, current_time, false, false);
     if (!assessment.converged)
       throw NewtonFailure(where + " did not converge in " +
                             std::to_string(newton_parameters.max_iterations) + " iterations " +
@@ -1002,8 +1018,7 @@ namespace contact_fem
   ContactProblem<dim>::check_before_solve(const std::string &at, const unsigned int iteration) const
   {
     if (contact && contact->n_active() == 0 && !contact_parameters.allow_loss_of_contact)
-      throw NewtonFailure(diagnosis().no_contact_message(at, current_time, true, iteration == 1),
-                          false);
+      throw diagnosis().no_contact_failure(at, current_time, true, iteration == 1);
     // With every node slipping, a body that only friction holds is free
     // to slide: the next solve would be (nearly) singular.
     if (contact && contact->slides_everywhere())
@@ -1243,22 +1258,23 @@ namespace contact_fem
   void
   ContactProblem<dim>::check_converged_solution(const bool solved, Json &cycle_record)
   {
-    const SolutionChecks<dim> checks({dof_handler, *mapping, constraints, dirichlet_constraints,
-                                      owned_dofs, relevant_dofs, solution, ghosted_solution});
-    if (const std::string text = checks.large_displacement(); !text.empty())
-      {
-        outside_model_range = true;
-        warn("warning", text, cycle_record);
-      }
+    const SolutionChecks<dim>    checks({dof_handler, *mapping, constraints, dirichlet_constraints,
+                                         owned_dofs, relevant_dofs, solution, ghosted_solution});
     std::set<types::material_id> finite_strain_bodies;
     for (const auto &[id, constants] : materials.bodies)
       if (constants.model != ElasticModel::linear)
         finite_strain_bodies.insert(id);
+    // a gap linear in u (not current kinematics)
+    const bool linear_gap = contact != nullptr && !contact_parameters.current_kinematics;
+    if (const std::string text = checks.large_displacement(finite_strain_bodies, linear_gap);
+        !text.empty())
+      {
+        outside_model_range = true;
+        warn("warning", text, cycle_record);
+      }
     if (solved)
       if (const std::string text =
-            checks.large_strain(cycle_record, finite_strain_bodies,
-                                // a gap linear in u (not current kinematics)
-                                contact != nullptr && !contact_parameters.current_kinematics);
+            checks.large_strain(cycle_record, finite_strain_bodies, linear_gap);
           !text.empty())
         {
           outside_model_range = true;

@@ -247,7 +247,8 @@ namespace contact_fem
     message << " (Contact/Penetration tolerance = " << parameters.penetration_tolerance << " h).";
     if (!parameters.updated_kinematics)
       message << " This motion is beyond small sliding, so smaller load steps cannot help: "
-                 "use Contact/Kinematics = updated with enough load steps.";
+                 "use Contact/Kinematics = updated with enough load steps, or current "
+                 "(linearised on the deformed surfaces) where supported.";
     return NewtonFailure(message.str(), parameters.updated_kinematics);
   }
 

@@ -88,8 +88,14 @@ namespace contact_fem
     // iteration long before the linear solver's accuracy (measured: ratio
     // 7e-3 after 0.5, sheared neo-Hookean block at nu = 0.499).
     const double stagnation_bound = nonlinear_bulk ? 1e-8 : 1e-2;
-    const bool   stagnating = parameters.damping == 1. && flat && a.ratio_u <= stagnation_bound &&
-                            a.ratio_lambda <= parameters.multiplier_relative_tolerance;
+    // The multipliers may be at round-off from the start (no node changed
+    // its pressure): their ratio is then noise, their absolute value small.
+    // (Finite strain only: the linear scenes keep their iterations.)
+    const bool lambda_settled =
+      a.ratio_lambda <= parameters.multiplier_relative_tolerance ||
+      (nonlinear_bulk && r_lambda <= parameters.multiplier_absolute_tolerance);
+    const bool stagnating =
+      parameters.damping == 1. && flat && a.ratio_u <= stagnation_bound && lambda_settled;
     // Flat with both residuals eight orders below their start: round-off,
     // which no tolerance below it can wait for.
     a.stalled   = flat && a.ratio_u <= 1e-8 && a.ratio_lambda <= 1e-8;

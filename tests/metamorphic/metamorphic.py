@@ -20,6 +20,9 @@ Placeholders (p denotes a point of the scene's own frame):
                     and scaled
   @MAT(id)@         a material id, after the swap of the ids 1 and 2
 
+Further parameters: --set PATH/KEY=VALUE (repeatable; placeholders allowed),
+e.g. --set "Contact/Formulation=penalty frictionless".
+
 Variants: name=kind:value, kinds translate (a vector in units of the model
 size), rotate (quarter turns about z), rotate_degrees (angle[,ax,ay,az]:
 any angle about z or the axis (ax, ay, az); templates without @AXES@, @x@,
@@ -237,11 +240,13 @@ def main():
     parser.add_argument("--size", type=float, default=1.0, help="model size (for translations)")
     parser.add_argument("--tolerance", type=float, default=1e-7, help="relative tolerance")
     parser.add_argument("--mpirun", default="", help="run the variants on 2 ranks with this mpirun")
+    parser.add_argument("--set", action="append", default=[], metavar="PATH/KEY=VALUE",
+                        help="a parameter added to the template (placeholders allowed)")
     parser.add_argument("variants", nargs="+")
     args = parser.parse_args()
 
     with open(args.template) as f:
-        template = f.read()
+        template = f.read() + "".join(parameter_text(entry) for entry in args.set)
     dim = int(re.search(r"set\s+Dimension\s*=\s*(\d)", template).group(1)) \
         if re.search(r"set\s+Dimension\s*=\s*(\d)", template) else 2
     template_dir = os.path.dirname(os.path.abspath(args.template))
@@ -282,6 +287,14 @@ def main():
               f"(largest relative change {worst:.1e})")
     print(f"{len(args.variants)} variants, {failures} differences")
     sys.exit(1 if failures else 0)
+
+
+def parameter_text(entry):
+    """'Contact/Formulation=penalty frictionless' as the lines of a .prm."""
+    path, _, value = entry.partition("=")
+    *sections, key = path.split("/")
+    return ("".join(f"subsection {name}\n" for name in sections) + f"set {key} = {value}\n"
+            + "end\n" * len(sections))
 
 
 def abs_scale(reference, name):

@@ -19,56 +19,9 @@ these bounds.
 """
 import csv
 import math
-import re
 import sys
 
-from scene_run import run_scene
-
-ROW = re.compile(r"^\s*\|\s*(\d+)\s*\|\s*([^|]+)\|[^|]+\|[^|]+\|[^|]+\|\s*([^|]+)\|")
-
-
-def newton_ratios(output):
-    """newton_table() of the steps that converged (a step whose first
-    iterate inverts an element is split and tried again)."""
-    return [ratios for ratios, converged in newton_table(output) if converged]
-
-
-def newton_table(output):
-    """Per load step attempt: the displacement ratio of each Newton iteration (None
-    where the table shows no number, or where the iteration changed the
-    active set: a kink the tangent cannot see), and whether it converged."""
-    steps = []
-    for line in output.splitlines():
-        if line.strip().startswith("Load step"):
-            steps.append(([], False))
-        if line.rstrip().endswith("| converged") and steps:
-            steps[-1] = (steps[-1][0], True)
-        match = ROW.match(line)
-        if match and steps:
-            text, changes = match.group(2).strip(), match.group(3).strip()
-            try:
-                value = float(text)
-            except ValueError:
-                value = None
-            if changes not in ("0", "-"):
-                value = None
-            steps[-1][0].append(value)
-    return steps
-
-
-def check_quadratic(name, output, bound):
-    steps = newton_ratios(output)
-    worst = 0.0
-    for ratios in steps:
-        for previous, current in zip(ratios, ratios[1:]):
-            if previous is not None and current is not None and previous <= 0.1:
-                worst = max(worst, current / previous**2)
-    iterations = [len(r) - 1 for r in steps]
-    ok = worst <= bound and len(steps) > 0
-    print(f"{name}: {len(steps)} converged load steps, Newton iterations {iterations}; "
-          f"quadratic rate "
-          f"r_k <= {bound} r_(k-1)^2: {'ok' if ok else f'FAILED (largest ratio {worst:.3g})'}")
-    return ok
+from scene_run import check_quadratic, run_scene
 
 
 def cauchy_pressure(E, nu, stretch):

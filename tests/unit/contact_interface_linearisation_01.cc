@@ -12,7 +12,11 @@
 // node's largest derivative, and DoFs outside a node's patch have zero
 // differences (the linearisation misses no coupling). The coupled face
 // pairs are the same at every perturbed configuration (no branch switch
-// inside a difference).
+// inside a difference). The frictional quantities likewise (alm frictional
+// with current kinematics): dh_j/du (h_j = D_j tau_j on the slave node,
+// -M_jl tau_j on master l), dn_j/du, and d(D_j x_j - sum_l M_jl x_l)/du
+// (the linearisation's part at held positions plus D_j and -M_jl on the
+// node's own coordinates).
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -39,8 +43,21 @@ using namespace contact_fem;
 
 namespace
 {
-  /// Per paired slave node: G_j and f_j by DoF, at the last update().
-  using Values = std::map<unsigned int, std::map<types::global_dof_index, double>>;
+  /// The quantities of a node: (kind, index), kind gap (index 0), force
+  /// or tangent_force (index the row DoF), normal or operators (index the
+  /// component).
+  enum Kind
+  {
+    gap,
+    force,
+    tangent_force,
+    normal,
+    operators
+  };
+  using Key = std::pair<Kind, types::global_dof_index>;
+
+  /// Per paired slave node: the quantities by key, at the last update().
+  using Values = std::map<unsigned int, std::map<Key, double>>;
 
   Values
   values_of(const ContactInterface<2> &interface, const std::vector<double> &u)
@@ -49,36 +66,76 @@ namespace
     for (const auto &s : interface.slave_nodes)
       if (s.paired)
         {
-          auto &node = result[s.node];
-          // The gap under a key no DoF has.
-          node[numbers::invalid_dof_index] = s.D * interface.gap(s, u);
+          auto &node     = result[s.node];
+          node[{gap, 0}] = s.D * interface.gap(s, u);
+          const Tensor<1, 2> tau({-s.normal[1], s.normal[0]});
+          const auto         x = [&](const unsigned int n) {
+            return interface.nodes[n].reference + interface.displacement(n, u);
+          };
           for (unsigned int d = 0; d < 2; ++d)
             {
-              node[interface.nodes[s.node].dofs[d]] += -s.D * s.normal[d];
+              node[{force, interface.nodes[s.node].dofs[d]}] += -s.D * s.normal[d];
+              node[{tangent_force, interface.nodes[s.node].dofs[d]}] += s.D * tau[d];
+              node[{normal, d}]    = s.normal[d];
+              node[{operators, d}] = s.D * x(s.node)[d];
               for (const auto &[m, value] : s.M)
-                node[interface.nodes[m].dofs[d]] += value * s.normal[d];
+                {
+                  node[{force, interface.nodes[m].dofs[d]}] += value * s.normal[d];
+                  node[{tangent_force, interface.nodes[m].dofs[d]}] += -value * tau[d];
+                  node[{operators, d}] -= value * x(m)[d];
+                }
             }
         }
+    return result;
+  }
+
+  /// The derivative of component @p d of D_j x_j - sum_l M_jl x_l along
+  /// @p dof through the positions themselves (the linearisation holds them).
+  double
+  direct_part(const ContactInterface<2>                &interface,
+              const ContactInterface<2>::SlaveNode     &s,
+              const unsigned int                        d,
+              const types::global_dof_index             dof)
+  {
+    double result = interface.nodes[s.node].dofs[d] == dof ? s.D : 0.;
+    for (const auto &[m, value] : s.M)
+      if (interface.nodes[m].dofs[d] == dof)
+        result -= value;
     return result;
   }
 
   /// The analytic derivative of entry @p key of node @p n along DoF @p dof
   /// (0 outside the node's patch).
   double
-  analytic(const ContactInterface<2>::LinearisedNode &node,
-           const types::global_dof_index              key,
-           const types::global_dof_index              dof)
+  analytic(const ContactInterface<2>                &interface,
+           const unsigned int                        n,
+           const Key                                &key,
+           const types::global_dof_index             dof)
   {
+    const auto &node = interface.linearised_nodes.at(n);
+    double      held = 0.;
+    if (key.first == operators)
+      for (const auto &s : interface.slave_nodes)
+        if (s.node == n)
+          held = direct_part(interface, s, key.second, dof);
     const auto it = std::find(node.dofs.begin(), node.dofs.end(), dof);
     if (it == node.dofs.end())
-      return 0.;
+      return held;
     const unsigned int i = it - node.dofs.begin();
-    if (key == numbers::invalid_dof_index)
-      return node.gap[i];
-    for (const auto &[row, values] : node.force)
-      if (row == key)
-        return values[i];
-    return 0.;
+    switch (key.first)
+      {
+        case gap:
+          return node.gap[i];
+        case normal:
+          return node.normal[key.second][i];
+        case operators:
+          return held + node.operators[key.second][i];
+        default:
+          for (const auto &[row, values] : key.first == force ? node.force : node.tangent_force)
+            if (row == key.second)
+              return values[i];
+          return 0.;
+      }
   }
 
   void
@@ -112,9 +169,7 @@ namespace
 
     // Differences at h and h / 2 of every entry along every DoF.
     const auto differences = [&](const double h) {
-      std::map<std::pair<unsigned int, types::global_dof_index>,
-               std::map<types::global_dof_index, double>>
-           result;
+      std::map<std::pair<unsigned int, Key>, std::map<types::global_dof_index, double>> result;
       bool same_pairs = true;
       for (unsigned int i = 0; i < u.size(); ++i)
         {
@@ -146,16 +201,16 @@ namespace
         const auto &node  = linear.at(entry.first);
         double      scale = 0.;
         for (const auto &[dof, value] : by_dof)
-          scale = std::max(scale, std::abs(analytic(node, entry.second, dof)));
+          scale = std::max(scale, std::abs(analytic(interface, entry.first, entry.second, dof)));
         for (const auto &[dof, value] : by_dof)
           {
-            const double exact = analytic(node, entry.second, dof);
+            const double exact = analytic(interface, entry.first, entry.second, dof);
             const double e1    = std::abs(value - exact) / scale;
             const double e2    = std::abs(fine.at(entry).at(dof) - exact) / scale;
             const double e3    = std::abs(tight.at(entry).at(dof) - exact) / scale;
             const bool   inside =
               std::find(node.dofs.begin(), node.dofs.end(), dof) != node.dofs.end();
-            complete = complete && (inside || std::abs(value) < 1e-10 * scale);
+            complete = complete && (inside || std::abs(value - exact) < 1e-10 * scale);
             small    = small && e3 < 1e-6;
             worst    = std::max(worst, e3);
             // Beyond round-off, the error falls by 4 when h halves.
@@ -168,7 +223,8 @@ namespace
               << " coupled face pairs" << std::endl
               << "  same face pairs at every perturbed configuration: "
               << (coarse_pairs && fine_pairs && tight_pairs ? "yes" : "no") << std::endl
-              << "  dG/du and df/du against central differences, error below 1e-6 of the "
+              << "  dG/du, df/du, dh/du, dn/du and d(D x - M x)/du against central "
+                 "differences, error below 1e-6 of the "
                  "node's largest derivative: "
               << (small ? "yes" : "no") << std::endl
               << "  error falling at second order (or round-off): " << (second_order ? "yes" : "no")

@@ -30,8 +30,10 @@ namespace contact_fem
    *
    * The surfaces are lower-dimensional, so each rank gathers all of them
    * (faces, reference coordinates and DoF indices of their nodes) once per
-   * mesh. The narrow phase and the mortar integration of a slave face run
-   * on the rank that owns it; the segments are exchanged, and every rank
+   * mesh. The narrow phase and the mortar integration of the slave faces
+   * that have candidate masters are shared out over the ranks by their
+   * cost (the contact zone need not follow the partition of the cells);
+   * the segments are exchanged, and every rank
    * assembles the operators of the whole interface from them in face
    * order: every rank then knows every constraint that touches its DoFs,
    * and the result does not depend on the partition.
@@ -148,6 +150,15 @@ namespace contact_fem
       /// (-D_j n_j on the slave node, +M_jl n_j on master l): (row, values
       /// at dofs).
       std::vector<std::pair<types::global_dof_index, std::vector<double>>> force;
+      /// The same for the tangential force per unit traction h_j (D_j tau_j
+      /// on the slave, -M_jl tau_j on master l; tau_j = n_j turned
+      /// counterclockwise), the rows of @p force.
+      std::vector<std::pair<types::global_dof_index, std::vector<double>>> tangent_force;
+      /// d n_j / du, per component (frictional conditions).
+      std::array<std::vector<double>, dim> normal;
+      /// d (D_j x_j - sum_l M_jl x_l) / du with the positions x held: the
+      /// operators' part of the objective slip, per component.
+      std::array<std::vector<double>, dim> operators;
     };
 
     /// Interface statistics of the last search, per pair.
@@ -331,8 +342,8 @@ namespace contact_fem
     /// How the surfaces are split over the ranks (locally owned faces).
     std::vector<unsigned int> slave_faces_per_rank, master_faces_per_rank;
     /// The faces (indices in faces) this rank contributed at set-up, the
-    /// slave faces among them the ones whose narrow phase and mortar
-    /// integration it computes: [first, second).
+    /// slave faces among them the ones whose broad phase it runs:
+    /// [first, second).
     std::pair<unsigned int, unsigned int> own_faces = {0, 0};
 
   private:
@@ -437,8 +448,10 @@ namespace contact_fem
     /**
      * Search and integration of pair @p p on the face @p geometries of
      * @p measures: adds D, M and the weighted gap of the slave nodes of the
-     * pair, and sets its statistics. Each rank computes the narrow phase
-     * and the integration of its own slave faces (integrate_own_faces());
+     * pair, and sets its statistics. Each rank runs the broad phase of its
+     * own slave faces; the faces with candidate masters are shared out
+     * over the ranks by their number of candidates, each rank computes the
+     * narrow phase and the integration of its share (integrate_faces());
      * the segments are then exchanged and every rank adds all of them in
      * face order, so the sums are those of a serial run, bit for bit.
      */
@@ -452,20 +465,20 @@ namespace contact_fem
                 std::map<unsigned int, std::map<unsigned int, double>> &M_of_node,
                 std::map<unsigned int, Tensor<1, dim>>                 &weighted_gap_of_node);
 
-    /// The narrow phase and the integration of the slave faces of pair
-    /// @p p in own_faces against the master faces in @p tree whose boxes
-    /// meet the face's box enlarged by @p reach (per face), packed for
-    /// unpack_segments(): per face with segments, its index, their number,
-    /// and per segment the master face, D, M and the weighted gap. A failed
-    /// tiling check ends the loop with its message in @p error.
+    /// The narrow phase and the integration of the slave faces @p share
+    /// against the master faces in @p tree whose boxes meet the face's box
+    /// enlarged by @p reach (per face), packed for unpack_segments(): per
+    /// face with segments, its index, their number, and per segment the
+    /// master face, D, M and the weighted gap. A failed tiling check ends
+    /// the loop with its message in @p error.
     template <class Tree>
     std::vector<double>
-    integrate_own_faces(const unsigned int                       p,
-                        const std::vector<FaceGeometry>         &geometries,
-                        const Tree                              &tree,
-                        const std::vector<double>               &reach,
-                        const std::map<unsigned int, SlaveNode> &slave_data,
-                        std::string                             &error) const;
+    integrate_faces(const std::vector<unsigned int>         &share,
+                    const std::vector<FaceGeometry>         &geometries,
+                    const Tree                              &tree,
+                    const std::vector<double>               &reach,
+                    const std::map<unsigned int, SlaveNode> &slave_data,
+                    std::string                             &error) const;
 
     /// Collective: if @p error (this rank's) or that of another rank is not
     /// empty, every rank throws the first of them (by rank), so a check
@@ -474,7 +487,7 @@ namespace contact_fem
     void
     stop_on_every_rank(const std::string &error) const;
 
-    /// The segments of every face in @p packed (integrate_own_faces() of
+    /// The segments of every face in @p packed (integrate_faces() of
     /// all ranks, in rank order), by slave face.
     std::map<unsigned int, Segments>
     unpack_segments(const std::vector<std::vector<double>> &packed) const;

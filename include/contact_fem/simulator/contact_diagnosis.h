@@ -13,6 +13,7 @@
 #include <contact_fem/core/json.h>
 #include <contact_fem/geometry/scene.h>
 #include <contact_fem/material/material.h>
+#include <contact_fem/simulator/newton_failure.h>
 #include <contact_fem/simulator/scene_parameters.h>
 #include <contact_fem/solvers/linear_solver.h>
 #include <contact_fem/solvers/solver_parameters.h>
@@ -74,12 +75,14 @@ namespace contact_fem
     /// The part of precision_limits() of a Poisson's ratio near -1.
     std::string
     auxetic_limit() const;
-    /// The diagnosis of a step without active slave nodes at @p where at
+    /// The failure of a step without active slave nodes at @p where at
     /// @p time: the separating load, or the real cause if the load does not
     /// separate the bodies. @p none_started: no node started the step in
-    /// contact (before any solve of the step). Collective.
-    std::string
-    no_contact_message(const std::string &where,
+    /// contact (before any solve of the step). Splittable only if contact
+    /// was lost numerically @p in_iteration (a smaller step may keep it).
+    /// Collective.
+    NewtonFailure
+    no_contact_failure(const std::string &where,
                        const double       time,
                        const bool         in_iteration,
                        const bool         none_started) const;

@@ -51,9 +51,11 @@ namespace contact_fem
     explicit SolutionChecks(const ConvergedSystem &system);
 
     /// Why |u|_max, beyond half the model size, leaves linear elasticity,
-    /// or "".
+    /// or "". The cells of @p finite_strain_bodies count only @p
+    /// with_contact (a contact gap linear in u), as in large_strain().
     std::string
-    large_displacement() const;
+    large_displacement(const std::set<types::material_id> &finite_strain_bodies = {},
+                       const bool                          with_contact         = true) const;
 
     /// Records the largest principal strain and rotation in @p record;
     /// why they leave the small-strain range, or "". The cells of

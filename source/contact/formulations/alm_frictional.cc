@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
 
 namespace contact_fem
 {
@@ -16,7 +18,11 @@ namespace contact_fem
                     FrictionlessFormulation<dim>::Parameters::parse_for_exact_gap(prm,
                                                                                   "alm frictional"),
                     "alm")
-  {}
+  {
+    prm.enter_subsection("Contact");
+    current = prm.get("Kinematics") == "current";
+    prm.leave_subsection();
+  }
 
   template <int dim>
   AlmFrictional<dim>::AlmFrictional(const FrictionParameters &friction,
@@ -41,6 +47,7 @@ namespace contact_fem
     released_pressure.assign(n, 0.);
     released_tangential.assign(n, TangentialVector<dim>());
     cone_stiffness.assign(n, 0.);
+    converged_operators.assign(n, Operators());
   }
 
   template <int dim>
@@ -49,8 +56,55 @@ namespace contact_fem
                                      const SlaveNode             &s,
                                      const std::vector<double>   &u) const
   {
+    if (current)
+      {
+        TangentialVector<dim> xi;
+        xi[0] = objective_slip(interface, s, u, nullptr);
+        return xi;
+      }
     return to_frame(weighted_relative_displacement(interface, s, converged_displacement, u),
                     frame_normal(s));
+  }
+
+  template <int dim>
+  double
+  AlmFrictional<dim>::objective_slip(const ContactInterface<dim>               &interface,
+                                     const SlaveNode                           &s,
+                                     const std::vector<double>                 &u,
+                                     std::map<types::global_dof_index, double> *derivatives) const
+  {
+    AssertThrow(dim == 2, ExcNotImplemented());
+    // xi_j = -tau_j . w_j, w_j = sum_a c_a x_a over the slave node (c = D_j
+    // - D_j^n) and its masters now and at the last accepted step (c =
+    // -(M_jl - M_jl^n)): the operators' change at the current positions.
+    const Operators               &old = converged_operators[s.node];
+    std::map<unsigned int, double> coefficient;
+    coefficient[s.node] += s.D - old.D;
+    for (const auto &[m, value] : s.M)
+      coefficient[m] -= value;
+    for (const auto &[m, value] : old.M)
+      coefficient[m] += value;
+    const Tensor<1, dim> tau = ContactFormulation<dim>::tangent(s.normal);
+    Tensor<1, dim>       w;
+    for (const auto &[node, c] : coefficient)
+      w += c * (interface.nodes[node].reference + interface.displacement(node, u));
+    if (derivatives)
+      {
+        for (const auto &[node, c] : coefficient)
+          for (unsigned int d = 0; d < dim; ++d)
+            (*derivatives)[interface.nodes[node].dofs[d]] -= c * tau[d];
+        // d tau = (-d n_y, d n_x); the operators' derivatives at held x.
+        const auto &linearised = interface.linearised_nodes.at(s.node);
+        for (unsigned int i = 0; i < linearised.dofs.size(); ++i)
+          {
+            const double dtau_w = -linearised.normal[1][i] * w[0] + linearised.normal[0][i] * w[1];
+            double       tau_s  = 0.;
+            for (unsigned int d = 0; d < dim; ++d)
+              tau_s += tau[d] * linearised.operators[d][i];
+            (*derivatives)[linearised.dofs[i]] -= dtau_w + tau_s;
+          }
+      }
+    return -(tau * w);
   }
 
   template <int dim>
@@ -231,6 +285,12 @@ namespace contact_fem
       }
     std::fill(released_pressure.begin(), released_pressure.end(), 0.);
     std::fill(released_tangential.begin(), released_tangential.end(), TangentialVector<dim>());
+    // Current kinematics: a node paired for the first time measures its
+    // slip from the operators of this step's start.
+    if (current)
+      for (const auto &s : interface.slave_nodes)
+        if (s.paired && converged_operators[s.node].M.empty())
+          converged_operators[s.node] = Operators{s.D, s.M};
     auto &pressure = this->pressure;
     auto &active   = this->active;
     for (const auto &s : interface.slave_nodes)
@@ -368,6 +428,9 @@ namespace contact_fem
   {
     if (!all_candidates)
       this->dirichlet_values = fixed_values;
+    // Current kinematics: no trial constraints (assemble_current()).
+    if (current && !all_candidates)
+      return;
     // For the sparsity: the stick lines couple a slave node with every
     // component of its masters (the gap line drops the components normal
     // to n), a superset of the slip lines' couplings.
@@ -421,7 +484,29 @@ namespace contact_fem
   bool
   AlmFrictional<dim>::symmetric() const
   {
-    return !pressure_dependent_slip;
+    return !current && !pressure_dependent_slip;
+  }
+
+  template <int dim>
+  void
+  AlmFrictional<dim>::add_sparsity(const ContactInterface<dim> &interface,
+                                   const AffineConstraints<double> &,
+                                   const IndexSet         &owned,
+                                   DynamicSparsityPattern &pattern) const
+  {
+    if (!current)
+      return;
+    for (const auto &[node, linearised] : interface.linearised_nodes)
+      if (owned.is_element(interface.nodes[node].dofs[0]))
+        {
+          std::set<types::global_dof_index> unique(linearised.dofs.begin(), linearised.dofs.end());
+          for (const auto &[m, value] : converged_operators[node].M)
+            for (unsigned int d = 0; d < dim; ++d)
+              unique.insert(interface.nodes[m].dofs[d]);
+          const std::vector<types::global_dof_index> dofs(unique.begin(), unique.end());
+          for (const auto row : dofs)
+            pattern.add_entries(row, dofs.begin(), dofs.end(), true);
+        }
   }
 
   template <int dim>
@@ -437,6 +522,14 @@ namespace contact_fem
     // h = T(p) - T'(p) p along its slip direction d, is a load (D_j on the
     // slave, -M_jl on the masters); the rest is carried by the constraints
     // (and in 3D by the cone term).
+    if (current)
+      {
+        const std::vector<double> &u = interface.search_configuration();
+        for (const auto &s : interface.slave_nodes)
+          if (s.paired && this->active[s.node] &&
+              owned.is_element(interface.nodes[s.node].dofs[0]))
+            assemble_current(interface, s, u, constraints, test_constraints, matrix, rhs);
+      }
     std::vector<types::global_dof_index> dofs;
     Vector<double>                       values;
     for (const auto &s : interface.slave_nodes)
@@ -534,6 +627,98 @@ namespace contact_fem
     local_matrix.vmult_add(local_rhs, inhomogeneity);
     test_constraints.distribute_local_to_global(local_matrix, dofs, constraints, dofs, matrix);
     test_constraints.distribute_local_to_global(local_rhs, dofs, rhs);
+  }
+
+  template <int dim>
+  void
+  AlmFrictional<dim>::assemble_current(const ContactInterface<dim>     &interface,
+                                       const SlaveNode                 &s,
+                                       const std::vector<double>       &u,
+                                       const AffineConstraints<double> &constraints,
+                                       const AffineConstraints<double> &test_constraints,
+                                       TrilinosWrappers::SparseMatrix  &matrix,
+                                       TrilinosWrappers::MPI::Vector   &rhs) const
+  {
+    using Row = std::map<types::global_dof_index, double>;
+    // The rows of the DoFs the test space eliminates: k (value + row . (u -
+    // u_k)) = 0, k the pair's scale; Dirichlet columns drop out (u_k holds
+    // their values).
+    const double              k = this->scale[s.pair];
+    AffineConstraints<double> free_rows;
+    free_rows.close();
+    const auto add_row = [&](const unsigned int component, const Row &row, const double value) {
+      std::vector<types::global_dof_index> columns;
+      std::vector<double>                  entries;
+      double                               right = -k * value;
+      for (const auto &[dof, entry] : row)
+        if (!interface.dof_fixed(interface.position(dof)))
+          {
+            columns.push_back(dof);
+            entries.push_back(k * entry);
+            right += k * entry * u[interface.position(dof)];
+          }
+      FullMatrix<double> local(1, columns.size());
+      for (unsigned int a = 0; a < columns.size(); ++a)
+        local(0, a) = entries[a];
+      Vector<double>                             local_rhs(1);
+      const std::vector<types::global_dof_index> row_dof = {
+        interface.nodes[s.node].dofs[component]};
+      local_rhs(0) = right;
+      free_rows.distribute_local_to_global(local, row_dof, constraints, columns, matrix);
+      free_rows.distribute_local_to_global(local_rhs, row_dof, rhs);
+    };
+    const auto &linearised = interface.linearised_nodes.at(s.node);
+    const bool  friction   = carries_friction(interface, s);
+    const bool  sticks     = friction && !sets.slips(s.node, this->active);
+    const unsigned int gap_component =
+      friction && !sticks ? slip_eliminated_component(s) : this->eliminated_component(interface, s);
+    if (gap_component == dim)
+      return;
+    Row gap_row;
+    for (unsigned int i = 0; i < linearised.dofs.size(); ++i)
+      gap_row[linearised.dofs[i]] = linearised.gap[i];
+    add_row(gap_component, gap_row, s.D * interface.gap(s, u));
+    if (sticks)
+      {
+        Row          slip_row;
+        const double xi = objective_slip(interface, s, u, &slip_row);
+        add_row(1 - gap_component, slip_row, xi);
+      }
+
+    // The geometric stiffness -p df/du - t dh/du in the test space, its
+    // part at u_k on the right-hand side (Newton for the total u).
+    const double p = this->pressure[s.node];
+    const double t = sticks   ? tangential[s.node][0] :
+                     friction ? sets.direction[s.node][0] * laws[s.pair]->threshold(p) :
+                                0.;
+    if (p == 0. && t == 0.)
+      return;
+    std::vector<types::global_dof_index> columns, rows;
+    std::vector<unsigned int>            kept, kept_rows;
+    for (unsigned int i = 0; i < linearised.dofs.size(); ++i)
+      if (!interface.dof_fixed(interface.position(linearised.dofs[i])))
+        {
+          kept.push_back(i);
+          columns.push_back(linearised.dofs[i]);
+        }
+    for (unsigned int r = 0; r < linearised.force.size(); ++r)
+      if (!interface.dof_fixed(interface.position(linearised.force[r].first)))
+        {
+          kept_rows.push_back(r);
+          rows.push_back(linearised.force[r].first);
+        }
+    FullMatrix<double> stiffness(rows.size(), kept.size());
+    Vector<double>     stiffness_rhs(rows.size());
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      for (unsigned int a = 0; a < kept.size(); ++a)
+        {
+          const unsigned int row = kept_rows[r];
+          stiffness(r, a)        = -p * linearised.force[row].second[kept[a]] -
+                            t * linearised.tangent_force[row].second[kept[a]];
+          stiffness_rhs(r) += stiffness(r, a) * u[interface.position(columns[a])];
+        }
+    test_constraints.distribute_local_to_global(stiffness, rows, constraints, columns, matrix);
+    test_constraints.distribute_local_to_global(stiffness_rhs, rows, rhs);
   }
 
   template <int dim>
@@ -671,6 +856,9 @@ namespace contact_fem
         last_step_slip[s.node] = slip_increment(interface, s, u);
     slip_history.add(interface, *this, last_step_slip);
     converged_displacement = u;
+    if (current)
+      for (const auto &s : interface.slave_nodes)
+        converged_operators[s.node] = s.paired ? Operators{s.D, s.M} : Operators();
   }
 
   template <int dim>
@@ -725,6 +913,7 @@ namespace contact_fem
     state->slip_history           = slip_history;
     state->last_step_slip         = last_step_slip;
     state->sets                   = sets;
+    state->converged_operators    = converged_operators;
     return state;
   }
 
@@ -739,6 +928,7 @@ namespace contact_fem
     slip_history           = saved.slip_history;
     last_step_slip         = saved.last_step_slip;
     sets                   = saved.sets;
+    converged_operators    = saved.converged_operators;
   }
 
   template <int dim>

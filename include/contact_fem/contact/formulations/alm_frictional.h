@@ -55,6 +55,19 @@ namespace contact_fem
    * support holds them tangentially): they are treated as frictionless.
    * The slip is measured from the last accepted load step with the current
    * operators (small sliding): a load step is a physical increment.
+   *
+   * Contact/Kinematics = current (2D): the operators of every Newton
+   * iterate on its configuration, the frame the slave normal n_j, and the
+   * objective slip of Gitterle, Popp et al.: xi_j = -tau_j . ((D_j - D_j^n)
+   * x_j - sum_l (M_jl - M_jl^n) x_l), the change of the operators since
+   * the last accepted step (^n) at the current positions, zero under any
+   * rigid motion of the pair. The trial space is free; the test space is
+   * that of the small path (stick: v_j = sum_l M_jl / D_j v_l; slip: the
+   * line normal to w), and the rows it eliminates hold the linearised gap
+   * and, for a stick node, the linearised xi_j = 0. The geometric
+   * stiffness -p_j df_j/du - t_j dh_j/du (f_j, h_j the force per unit
+   * normal and tangential traction; t_j = sigma T(p_j) when slipping)
+   * makes the tangent consistent (assemble_current()).
    */
   template <int dim>
   class AlmFrictional : public FrictionalFormulation<dim, FrictionlessFormulation<dim>>
@@ -125,7 +138,8 @@ namespace contact_fem
     Tensor<1, dim>
     frame_normal(const SlaveNode &s) const override
     {
-      return sets.held[s.node] || frictionless_law(s) ? s.normal : s.interface_normal;
+      return current || sets.held[s.node] || frictionless_law(s) ? s.normal :
+                                                                   s.interface_normal;
     }
 
     void
@@ -133,6 +147,14 @@ namespace contact_fem
 
     bool
     symmetric() const override;
+
+    /// Current kinematics: the patches of the linearised nodes and the
+    /// masters of their last accepted step (the objective slip).
+    void
+    add_sparsity(const ContactInterface<dim>     &interface,
+                 const AffineConstraints<double> &constraints,
+                 const IndexSet                  &owned,
+                 DynamicSparsityPattern          &pattern) const override;
 
     std::unique_ptr<State>
     save_state() const override;
@@ -284,6 +306,36 @@ namespace contact_fem
     /// Whether any node slips under a law with friction: only then do its
     /// test functions leave the trial space (symmetric()).
     bool pressure_dependent_slip = false;
+
+    /// Contact/Kinematics = current (see the class comment).
+    bool current = false;
+    /// D_j and M_jl of every slave node at the last accepted load step
+    /// (current kinematics).
+    struct Operators
+    {
+      double                                       D = 0.;
+      std::vector<std::pair<unsigned int, double>> M;
+    };
+    std::vector<Operators> converged_operators;
+
+    /// The objective slip xi_j of @p s at @p u and, if @p derivatives is
+    /// not null, d xi_j / du by DoF (current kinematics).
+    double
+    objective_slip(const ContactInterface<dim>                     &interface,
+                   const SlaveNode                                 &s,
+                   const std::vector<double>                       &u,
+                   std::map<types::global_dof_index, double> *derivatives) const;
+
+    /// Current kinematics: the rows of the linearised gap and (stick) slip
+    /// of active node @p s and its geometric stiffness, at @p u.
+    void
+    assemble_current(const ContactInterface<dim>     &interface,
+                     const SlaveNode                 &s,
+                     const std::vector<double>       &u,
+                     const AffineConstraints<double> &constraints,
+                     const AffineConstraints<double> &test_constraints,
+                     TrilinosWrappers::SparseMatrix  &matrix,
+                     TrilinosWrappers::MPI::Vector   &rhs) const;
     /// Multipliers of the nodes released in the last update.
     std::vector<double>                released_pressure;
     std::vector<TangentialVector<dim>> released_tangential;
@@ -297,6 +349,7 @@ namespace contact_fem
       std::vector<double>                converged_displacement;
       SlipHistory<dim>                   slip_history;
       StickSlipSets<dim>                 sets;
+      std::vector<Operators>             converged_operators;
     };
   };
 } // namespace contact_fem
