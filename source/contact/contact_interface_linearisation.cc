@@ -1,9 +1,10 @@
 // ContactInterface::linearise(): the derivatives of the weighted gaps and
 // contact forces of the paired slave nodes with respect to the
 // displacement DoFs, at the configuration of the last search, from
-// Mortar::linearise_pair() on every coupled face pair (2D). For
+// Mortar::linearise_pair() on every coupled face pair (2D and 3D). For
 // Contact/Kinematics = current (doc/finite_strain.md).
 #include <contact_fem/contact/contact_interface.h>
+#include <contact_fem/contact/mortar_3d_linearisation.h>
 #include <contact_fem/contact/mortar_linearisation.h>
 
 #include <algorithm>
@@ -27,13 +28,28 @@ namespace contact_fem
       std::array<DofMap, 2> normal, operators;
     };
 
+    /// The face-pair patch and its linearised operators of each dimension.
+    template <int dim>
+    struct Linearisation
+    {
+      using Patch  = Mortar::PairPatch;
+      using Result = Mortar::LinearisedPair;
+    };
+    template <>
+    struct Linearisation<3>
+    {
+      using Patch  = Mortar::QuadPairPatch;
+      using Result = Mortar::LinearisedQuadPair;
+    };
+
     /// A PairPatch of interface faces, with the chain from its points to
     /// the interface nodes (a geometry point of Q1 on a quadratic mapping
     /// moves with the linear interpolation of its face's vertices).
+    template <int dim>
     class PatchBuilder
     {
     public:
-      PatchBuilder(const ContactInterface<2> &interface, const std::vector<Tensor<1, 2>> &u)
+      PatchBuilder(const ContactInterface<dim> &interface, const std::vector<Tensor<1, dim>> &u)
         : interface(interface)
         , u(u)
       {}
@@ -57,12 +73,12 @@ namespace contact_fem
           }
         for (unsigned int k = 0; k < face.geometry_points.size(); ++k)
           {
-            const auto xi = Mortar::Kernel<2>::node_parameter(2, face.nodes.size() + k);
-            Point<2>   x  = face.geometry_points[k];
+            const auto xi = Mortar::Kernel<dim>::node_parameter(2, face.nodes.size() + k);
+            Point<dim> x  = face.geometry_points[k];
             chain.emplace_back();
             for (unsigned int v = 0; v < face.nodes.size(); ++v)
               {
-                const double w = Mortar::Kernel<2>::shape_value(1, v, xi);
+                const double w = Mortar::Kernel<dim>::shape_value(1, v, xi);
                 x += w * u[face.nodes[v]];
                 chain.back().emplace_back(face.nodes[v], w);
               }
@@ -81,15 +97,15 @@ namespace contact_fem
       {
         for (unsigned int i = 0; i < chain.size(); ++i)
           for (const auto &[node, weight] : chain[i])
-            for (unsigned int d = 0; d < 2; ++d)
-              sums[interface.nodes[node].dofs[d]] += factor * weight * derivatives[2 * i + d];
+            for (unsigned int d = 0; d < dim; ++d)
+              sums[interface.nodes[node].dofs[d]] += factor * weight * derivatives[dim * i + d];
       }
 
-      Mortar::PairPatch patch;
+      typename Linearisation<dim>::Patch patch;
 
     private:
-      const ContactInterface<2>                                &interface;
-      const std::vector<Tensor<1, 2>>                          &u;
+      const ContactInterface<dim>                              &interface;
+      const std::vector<Tensor<1, dim>>                        &u;
       std::map<unsigned int, unsigned int>                      point_of_node;
       std::vector<std::vector<std::pair<unsigned int, double>>> chain;
     };
@@ -100,7 +116,7 @@ namespace contact_fem
     void
     add_frictional(const ContactInterface<2>       &interface,
                    const std::vector<Tensor<1, 2>> &u,
-                   const PatchBuilder              &builder,
+                   const PatchBuilder<2>           &builder,
                    const Mortar::LinearisedPair    &result,
                    const unsigned int               k,
                    const std::vector<unsigned int> &slave_nodes,
@@ -135,16 +151,17 @@ namespace contact_fem
 
     /// The derivatives of pair (@p f, @p m) added to the sums of the
     /// paired nodes of slave face @p f.
+    template <int dim>
     void
-    add_pair(const ContactInterface<2>        &interface,
-             const std::vector<Tensor<1, 2>>  &u,
+    add_pair(const ContactInterface<dim>       &interface,
+             const std::vector<Tensor<1, dim>> &u,
              const unsigned int                f,
              const unsigned int                m,
              const std::vector<unsigned int>  &neighbours,
              const std::vector<unsigned int>  &masters,
              std::map<unsigned int, NodeSums> &sums)
     {
-      PatchBuilder builder(interface, u);
+      PatchBuilder<dim> builder(interface, u);
       builder.patch.slave_faces.push_back(builder.add_face(f));
       for (const unsigned int g : neighbours)
         builder.patch.slave_faces.push_back(builder.add_face(g));
@@ -152,7 +169,7 @@ namespace contact_fem
       for (const unsigned int other : masters)
         if (other != m)
           builder.patch.other_masters.push_back(builder.add_face(other));
-      Mortar::LinearisedPair result;
+      typename Linearisation<dim>::Result result;
       if (!Mortar::linearise_pair(builder.patch, true, result))
         return;
       const auto &slave_nodes  = interface.faces[f].nodes;
@@ -166,7 +183,7 @@ namespace contact_fem
           builder.add(result.normal_gap[k].derivatives, 1., node.gap);
           const auto &n = result.normals[k];
           // f_j = -D_j n_j on the slave node, +M_jl n_j on master l.
-          for (unsigned int d = 0; d < 2; ++d)
+          for (unsigned int d = 0; d < dim; ++d)
             {
               DofMap &row = node.force[interface.nodes[slave_nodes[k]].dofs[d]];
               builder.add(result.D[k].derivatives, -n[d].value, row);
@@ -178,12 +195,15 @@ namespace contact_fem
                   builder.add(n[d].derivatives, result.M[k][l].value, master_row);
                 }
             }
-          add_frictional(interface, u, builder, result, k, slave_nodes, master_nodes, node);
+          // Friction at finite deformation: 2D only (check_kinematics()).
+          if constexpr (dim == 2)
+            add_frictional(interface, u, builder, result, k, slave_nodes, master_nodes, node);
         }
     }
 
     /// The sums of one node as a LinearisedNode over the union of its DoFs.
-    ContactInterface<2>::LinearisedNode
+    template <int dim>
+    typename ContactInterface<dim>::LinearisedNode
     linearised_node(const NodeSums &sums)
     {
       std::set<types::global_dof_index> dofs;
@@ -192,7 +212,7 @@ namespace contact_fem
       for (const auto &[row, values] : sums.force)
         for (const auto &[dof, value] : values)
           dofs.insert(dof);
-      ContactInterface<2>::LinearisedNode result;
+      typename ContactInterface<dim>::LinearisedNode result;
       result.dofs.assign(dofs.begin(), dofs.end());
       const auto at = [&](const DofMap &values) {
         std::vector<double> dense(result.dofs.size(), 0.);
@@ -220,11 +240,6 @@ namespace contact_fem
   ContactInterface<dim>::linearise()
   {
     linearised_nodes.clear();
-    if constexpr (dim != 2)
-      {
-        AssertThrow(false, ExcMessage("the contact linearisation is implemented in 2D only"));
-      }
-    else
       {
         std::vector<Tensor<1, dim>> u(nodes.size());
         for (unsigned int n = 0; n < nodes.size(); ++n)
@@ -253,7 +268,7 @@ namespace contact_fem
                      masters_of_face[f], sums);
           }
         for (const auto &[n, node_sums] : sums)
-          linearised_nodes[n] = linearised_node(node_sums);
+          linearised_nodes[n] = linearised_node<dim>(node_sums);
       }
   }
 

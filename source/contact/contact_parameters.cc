@@ -171,16 +171,25 @@ namespace contact_fem
   }
 
   void
-  ContactParameters::check_kinematics(const unsigned int dim, const std::string &formulation) const
+  ContactParameters::check_kinematics(const unsigned int dim,
+                                      const std::string &formulation,
+                                      const unsigned int geometry_degree) const
   {
-    // The linearisation of the mortar operators exists for 2D line faces,
-    // and only the exact-gap formulations (alm) use it.
-    AssertThrow(!current_kinematics || (dim == 2 && (formulation == "alm frictionless" ||
-                                                     formulation == "alm frictional")),
-                ExcMessage("Contact/Kinematics = current is implemented for 2D scenes with "
-                           "Contact/Formulation = alm frictionless or alm frictional only "
-                           "(this scene: " +
+    // The linearisation of the mortar operators exists for 2D line faces
+    // and 3D bilinear faces; the exact-gap formulations (alm) use it, the
+    // frictional one in 2D only.
+    AssertThrow(!current_kinematics || formulation == "alm frictionless" ||
+                  (dim == 2 && formulation == "alm frictional"),
+                ExcMessage("Contact/Kinematics = current is implemented with "
+                           "Contact/Formulation = alm frictionless, or alm frictional in 2D, "
+                           "only (this scene: " +
                            std::to_string(dim) + "D, " + formulation +
                            "). Use Kinematics = updated or small."));
+    AssertThrow(!current_kinematics || dim == 2 || geometry_degree == 1,
+                ExcMessage("Contact/Kinematics = current in 3D is implemented for bilinear faces "
+                           "only (this scene: geometry degree " +
+                           std::to_string(geometry_degree) +
+                           "); set Finite element/Degree = 1 and Mapping degree = 1, or use "
+                           "Kinematics = updated or small."));
   }
 } // namespace contact_fem

@@ -1,9 +1,12 @@
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/differentiation/ad.h>
 
 #include <contact_fem/contact/mortar.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/contact/mortar_3d.h>
+#include <contact_fem/contact/mortar_3d_number.h>
 #include <contact_fem/contact/mortar_kernel.h>
+#include <contact_fem/contact/mortar_number.h>
 
 #include <algorithm>
 #include <cmath>
@@ -39,8 +42,9 @@ namespace contact_fem
         return {0, 6, 1, 5, 3, 7, 2, 4};
       }
 
-      double
-      cross_2d(const Tensor<1, 2> &a, const Tensor<1, 2> &b)
+      template <typename Number>
+      Number
+      cross_2d(const Tensor<1, 2, Number> &a, const Tensor<1, 2, Number> &b)
       {
         return a[0] * b[1] - a[1] * b[0];
       }
@@ -51,14 +55,63 @@ namespace contact_fem
         return std::max(-1., std::min(1., x));
       }
 
+      /// The values of a point or vector of double or AD numbers.
+      template <int dim, typename Number>
+      Point<dim>
+      point_value(const Tensor<1, dim, Number> &x)
+      {
+        Point<dim> v;
+        for (unsigned int d = 0; d < dim; ++d)
+          v[d] = value_of(x[d]);
+        return v;
+      }
+      template <typename Number>
+      Tensor<1, 3>
+      vector_value(const Tensor<1, 3, Number> &x)
+      {
+        if constexpr (std::is_same_v<Number, double>)
+          return x;
+        else
+          return point_value(x);
+      }
+
+      template <typename Number>
+      Number
+      abs_of(const Number &x)
+      {
+        if constexpr (std::is_same_v<Number, double>)
+          return std::abs(x);
+        else
+          return x.val() < 0. ? Number(-x) : x;
+      }
+
+      /// The parameter @p xi clamped to the face as clamp(); a clamped AD
+      /// coordinate is constant (one-sided derivative at the face's rim).
+      template <typename Number>
+      Point<2, Number>
+      clamped(const Point<2, Number> &xi)
+      {
+        if constexpr (std::is_same_v<Number, double>)
+          return Point<2>(clamp(xi[0]), clamp(xi[1]));
+        else
+          {
+            Point<2, Number> result = xi;
+            for (unsigned int d = 0; d < 2; ++d)
+              if (std::abs(xi[d].val()) > 1.)
+                result[d] = Number(clamp(xi[d].val()));
+            return result;
+          }
+      }
+
       /// A polygon in the auxiliary plane: (e1, e2) coordinates, not closed.
       using PlanePolygon = std::vector<Point<2>>;
 
       /// Twice the signed area (positive: counterclockwise).
-      double
-      twice_signed_area(const PlanePolygon &polygon)
+      template <typename Number>
+      Number
+      twice_signed_area(const std::vector<Point<2, Number>> &polygon)
       {
-        double area = 0.;
+        Number area = 0.;
         for (unsigned int k = 0; k < polygon.size(); ++k)
           area += cross_2d(polygon[k], polygon[(k + 1) % polygon.size()]);
         return area;
@@ -139,80 +192,153 @@ namespace contact_fem
        * on the two cylinders extruded and refined, whose faces meet edge on
        * edge at 1e-14 after the transfinite interpolation of the interior.)
        */
-      PlanePolygon
-      clip_convex(const PlanePolygon &subject, const PlanePolygon &clip)
+      template <typename Number>
+      std::vector<Point<2, Number>>
+      clip_convex(const std::vector<Point<2, Number>> &subject,
+                  const std::vector<Point<2, Number>> &clip)
       {
-        PlanePolygon result = subject, input;
+        std::vector<Point<2, Number>> result = subject, input;
         for (unsigned int e = 0; e < clip.size() && !result.empty(); ++e)
           {
-            const Point<2>     a    = clip[e];
-            const Tensor<1, 2> edge = clip[(e + 1) % clip.size()] - a;
+            const Point<2, Number>     a    = clip[e];
+            const Tensor<1, 2, Number> edge = clip[(e + 1) % clip.size()] - a;
             input.swap(result);
             result.clear();
             for (unsigned int k = 0; k < input.size(); ++k)
               {
-                const Point<2> &p = input[k], &q = input[(k + 1) % input.size()];
-                const double    sp = cross_2d(edge, p - a), sq = cross_2d(edge, q - a);
-                if (sp >= 0.)
+                const Point<2, Number> &p = input[k], &q = input[(k + 1) % input.size()];
+                const Number sp = cross_2d(edge, Tensor<1, 2, Number>(p - a)),
+                             sq = cross_2d(edge, Tensor<1, 2, Number>(q - a));
+                const bool p_in = value_of(sp) >= 0., q_in = value_of(sq) >= 0.;
+                if (p_in)
                   result.push_back(p);
-                if ((sp >= 0.) != (sq >= 0.))
-                  result.push_back(p + (sp / (sp - sq)) * (q - p));
+                if (p_in != q_in)
+                  result.push_back(p + Number(sp / (sp - sq)) * (q - p));
               }
           }
         return result;
       }
 
       /// Interpolated (not normalised) nodal normal field at @p xi.
-      Tensor<1, 3>
-      interpolated_normal(const QuadFace                  &face,
-                          const std::vector<Tensor<1, 3>> &normals,
-                          const Point<2>                  &xi)
+      template <typename Face, typename Number>
+      Tensor<1, 3, Number>
+      interpolated_normal(const Face                              &face,
+                          const std::vector<Tensor<1, 3, Number>> &normals,
+                          const Point<2, Number>                  &xi)
       {
         AssertDimension(normals.size(), face.n_shape_nodes());
-        Tensor<1, 3> n;
+        Tensor<1, 3, Number> n;
         for (unsigned int k = 0; k < normals.size(); ++k)
-          n += quad_shape_value(face.shape_degree(), k, xi) * normals[k];
+          n += quad_shape_value_of(face.shape_degree(), k, xi) * normals[k];
         return n;
+      }
+
+      /// @p t / |t|, for double exactly t /= t.norm().
+      template <typename Number>
+      void
+      normalise(Tensor<1, 3, Number> &t)
+      {
+        const Number norm = length(t);
+        t /= norm;
       }
 
       /// The auxiliary plane of a slave face: through its centre, normal n0
       /// (the nodal normals interpolated there), spanned by e1 (the xi
       /// tangent made orthogonal to n0) and e2 = n0 x e1.
-      struct AuxiliaryPlane
+      template <typename Number>
+      struct AuxiliaryPlaneOf
       {
-        Point<3>     origin;
-        Tensor<1, 3> normal, e1, e2;
+        Point<3, Number>     origin;
+        Tensor<1, 3, Number> normal, e1, e2;
 
         /// (e1, e2) coordinates of the projection of @p x along the normal.
-        Point<2>
-        coordinates(const Point<3> &x) const
+        Point<2, Number>
+        coordinates(const Point<3, Number> &x) const
         {
-          return Point<2>((x - origin) * e1, (x - origin) * e2);
+          return Point<2, Number>((x - origin) * e1, (x - origin) * e2);
         }
-        Point<3>
-        point(const Point<2> &u) const
+        Point<3, Number>
+        point(const Point<2, Number> &u) const
         {
           return origin + u[0] * e1 + u[1] * e2;
         }
+        /// The plane in double.
+        AuxiliaryPlaneOf<double>
+        values() const
+        {
+          if constexpr (std::is_same_v<Number, double>)
+            return *this;
+          else
+            return {point_value(origin), vector_value(normal), vector_value(e1),
+                    vector_value(e2)};
+        }
       };
+      using AuxiliaryPlane = AuxiliaryPlaneOf<double>;
 
-      AuxiliaryPlane
-      auxiliary_plane(const QuadFace &slave, const std::vector<Tensor<1, 3>> &normals)
+      template <typename Face, typename Number>
+      AuxiliaryPlaneOf<Number>
+      auxiliary_plane(const Face &slave, const std::vector<Tensor<1, 3, Number>> &normals)
       {
         AssertDimension(normals.size(), slave.n_shape_nodes());
-        const Point<2> centre;
-        AuxiliaryPlane plane;
+        const Point<2, Number>   centre;
+        AuxiliaryPlaneOf<Number> plane;
         for (unsigned int k = 0; k < normals.size(); ++k)
-          plane.normal += quad_shape_value(slave.shape_degree(), k, centre) * normals[k];
-        AssertThrow(plane.normal.norm() > 0.,
+          plane.normal += quad_shape_value(slave.shape_degree(), k, Point<2>()) * normals[k];
+        AssertThrow(value_of(length(plane.normal)) > 0.,
                     ExcMessage("The slave normals cancel at the face centre."));
-        plane.normal /= plane.normal.norm();
+        normalise(plane.normal);
         plane.origin        = slave.point(centre);
         const auto tangents = slave.tangents(centre);
         plane.e1            = tangents[0] - (tangents[0] * plane.normal) * plane.normal;
-        plane.e1 /= plane.e1.norm();
+        normalise(plane.e1);
         plane.e2 = cross_product_3d(plane.normal, plane.e1);
         return plane;
+      }
+
+      /**
+       * The parameter of the point of @p face that @p x moved along @p d
+       * reaches, whose value @p eta project_along() found on the face in
+       * double (@p face_values). For an AD number: one Newton step in AD
+       * numbers from (eta, t) on r = face(eta) - x - t d, whose derivative
+       * part is that of the root (implicit-function theorem, as
+       * implicit_root() in 2D); its value is set back to @p eta.
+       */
+      template <typename Face, typename Number>
+      Point<2, Number>
+      projected_parameter(const Face                 &face,
+                          const QuadFace             &face_values,
+                          const Point<3, Number>     &x,
+                          const Tensor<1, 3, Number> &d,
+                          const Point<2>             &eta)
+      {
+        if constexpr (std::is_same_v<Number, double>)
+          return eta;
+        else
+          {
+            const auto         t  = face_values.tangents(eta);
+            const Tensor<1, 3> dv = vector_value(d);
+            Tensor<2, 3>       J;
+            for (unsigned int i = 0; i < 3; ++i)
+              {
+                J[i][0] = t[0][i];
+                J[i][1] = t[1][i];
+                J[i][2] = -dv[i];
+              }
+            const Tensor<2, 3>   J_inverse = invert(J);
+            Tensor<1, 3, Number> r = face.point(Point<2, Number>(Number(eta[0]), Number(eta[1]))) - x;
+            const double         along = (vector_value(r) * dv) / dv.norm_square();
+            r -= along * d;
+            Point<2, Number> result;
+            for (unsigned int c = 0; c < 2; ++c)
+              {
+                Number step = 0.;
+                for (unsigned int i = 0; i < 3; ++i)
+                  step += J_inverse[c][i] * r[i];
+                result[c]       = eta[c] - step;
+                result[c].val() = eta[c];
+              }
+            return result;
+          }
       }
 
       /// A chord of the slave's projected boundary ring: the straight line
@@ -315,23 +441,25 @@ namespace contact_fem
       /// triangles, and of any order, which QGaussSimplex<2> of deal.II 9.4
       /// is not. Signed weights: polygons star-shaped from their centroid,
       /// convex or not, are exact too.
-      template <typename Function>
+      template <typename Face, typename Number, typename Function>
       void
-      for_each_point(const QuadFace                      &slave,
-                     const AuxiliaryPlane                &plane,
-                     const std::vector<ParameterPolygon> &polygons,
-                     const unsigned int                   n,
-                     const Function                      &f)
+      for_each_point(const Face                                    &slave,
+                     const QuadFace                                &slave_values,
+                     const AuxiliaryPlaneOf<Number>                &plane,
+                     const std::vector<ParameterPolygonOf<Number>> &polygons,
+                     const unsigned int                             n,
+                     const Function                                &f)
       {
-        const QGauss<1>       gauss(n);
-        std::vector<Point<2>> vertices;
-        for (const ParameterPolygon &polygon : polygons)
+        const QGauss<1>               gauss(n);
+        const AuxiliaryPlane          plane_values = plane.values();
+        std::vector<Point<2, Number>> vertices;
+        for (const ParameterPolygonOf<Number> &polygon : polygons)
           {
             const unsigned int m = polygon.size();
             vertices.clear();
-            Point<2> c;
-            double   area = 0.;
-            for (const Point<2> &xi : polygon)
+            Point<2, Number> c;
+            Number           area = 0.;
+            for (const Point<2, Number> &xi : polygon)
               {
                 vertices.push_back(plane.coordinates(slave.point(xi)));
                 c += vertices.back() / static_cast<double>(m);
@@ -340,48 +468,56 @@ namespace contact_fem
               area += cross_2d(vertices[k], vertices[(k + 1) % m]);
             // Counterclockwise in the slave parameters, but clockwise in the
             // plane if the slave parameters run clockwise seen from n0.
-            const double orientation = area < 0. ? -1. : 1.;
+            const double orientation = value_of(area) < 0. ? -1. : 1.;
             for (unsigned int k = 0; k < m; ++k)
               {
-                const Point<2> xa = polygon[k], xb = polygon[(k + 1) % m];
+                const Point<2, Number> xa = polygon[k], xb = polygon[(k + 1) % m];
                 // On the slave boundary: both ends on the same line xi = +-1
                 // or eta = +-1 (overlap() clamps them there).
                 bool on_boundary = false;
                 for (unsigned int d = 0; d < 2; ++d)
-                  on_boundary |= (std::abs(xa[d]) == 1. && xb[d] == xa[d]);
+                  on_boundary |=
+                    (std::abs(value_of(xa[d])) == 1. && value_of(xb[d]) == value_of(xa[d]));
                 for (unsigned int j = 0; j < n; ++j)
                   {
-                    const double v = gauss.point(j)[0];
-                    Point<2>     E;
-                    Tensor<1, 2> dE;
+                    const double         v = gauss.point(j)[0];
+                    Point<2, Number>     E;
+                    Tensor<1, 2, Number> dE;
                     if (on_boundary)
                       {
-                        const Point<2>     xi = xa + v * (xb - xa);
-                        const auto         t  = slave.tangents(xi);
-                        const Tensor<1, 3> T  = (xb - xa)[0] * t[0] + (xb - xa)[1] * t[1];
-                        E                     = plane.coordinates(slave.point(xi));
-                        dE                    = Tensor<1, 2>({T * plane.e1, T * plane.e2});
+                        const Point<2, Number>     xi = xa + v * (xb - xa);
+                        const auto                 t  = slave.tangents(xi);
+                        const Tensor<1, 3, Number> T =
+                          (xb - xa)[0] * t[0] + (xb - xa)[1] * t[1];
+                        E     = plane.coordinates(slave.point(xi));
+                        dE[0] = T * plane.e1;
+                        dE[1] = T * plane.e2;
                       }
                     else
                       {
                         E  = vertices[k] + v * (vertices[(k + 1) % m] - vertices[k]);
                         dE = vertices[(k + 1) % m] - vertices[k];
                       }
-                    const double det = orientation * cross_2d(E - c, dE);
-                    if (det == 0.)
+                    const Number det = orientation * cross_2d(Tensor<1, 2, Number>(E - c), dE);
+                    if (value_of(det) == 0.)
                       continue;
                     for (unsigned int i = 0; i < n; ++i)
                       {
-                        const double u = gauss.point(i)[0];
-                        Point<2>     xi;
-                        if (!project_along(slave, plane.point(c + u * (E - c)), plane.normal, xi))
+                        const double           u = gauss.point(i)[0];
+                        const Point<3, Number> x = plane.point(c + u * (E - c));
+                        Point<2>               xi_value;
+                        if (!project_along(slave_values, point_value(x), plane_values.normal,
+                                           xi_value))
                           continue;
-                        xi = Point<2>(clamp(xi[0]), clamp(xi[1]));
+                        const Point<2, Number> xi = clamped(
+                          projected_parameter(slave, slave_values, x, plane.normal, xi_value));
                         // Plane area to slave area: |t_xi x t_eta| / |n0 . (t_xi x t_eta)|.
-                        const auto         t  = slave.tangents(xi);
-                        const Tensor<1, 3> nt = cross_product_3d(t[0], t[1]);
-                        f(xi, gauss.weight(i) * gauss.weight(j) * u * det * nt.norm() /
-                                std::abs(nt * plane.normal));
+                        const auto                 t  = slave.tangents(xi);
+                        const Tensor<1, 3, Number> nt = cross_product_3d(t[0], t[1]);
+                        const Number               jxw =
+                          gauss.weight(i) * gauss.weight(j) * u * det * length(nt) /
+                          abs_of(Number(nt * plane.normal));
+                        f(xi, jxw);
                       }
                   }
               }
@@ -518,7 +654,7 @@ namespace contact_fem
       Assert(!polygons.empty(), ExcMessage("The dual basis needs a non-empty overlap."));
       const AuxiliaryPlane plane = auxiliary_plane(slave, slave_normals);
       return dual_basis_from_rule(slave, [&](const auto &f) {
-        for_each_point(slave, plane, polygons, slave.shape_degree() + 5, f);
+        for_each_point(slave, slave, plane, polygons, slave.shape_degree() + 5, f);
       });
     }
 
@@ -574,101 +710,202 @@ namespace contact_fem
       return false;
     }
 
-    bool
-    overlap(const QuadFace                  &slave,
-            const std::vector<Tensor<1, 3>> &slave_normals,
-            const QuadFace                  &master,
-            std::vector<ParameterPolygon>   &polygons)
+    namespace
     {
+      /// The convex @p pieces of a slave ring (convex_pieces(), in double)
+      /// in numbers of type Number: their vertices are those of @p ring
+      /// or its @p centre.
+      template <typename Number>
+      std::vector<std::vector<Point<2, Number>>>
+      pieces_of(const std::vector<PlanePolygon>     &pieces,
+                const std::vector<Point<2, Number>> &ring,
+                const Point<2, Number>              &centre)
+      {
+        if constexpr (std::is_same_v<Number, double>)
+          return pieces;
+        else
+          {
+            std::vector<std::vector<Point<2, Number>>> result;
+            for (const PlanePolygon &piece : pieces)
+              {
+                result.emplace_back();
+                for (const Point<2> &u : piece)
+                  {
+                    result.back().push_back(centre);
+                    for (const Point<2, Number> &r : ring)
+                      if (point_value(r) == u)
+                        result.back().back() = r;
+                  }
+              }
+            return result;
+          }
+      }
+
+      /// The slave parameter of the overlap vertex @p u (in the auxiliary
+      /// plane), whose value @p xi_value overlap() found: its projection
+      /// along n0 in numbers of type Number, a coordinate on the slave
+      /// boundary held there. Exact for bilinear faces, whose edges project
+      /// to the chords.
+      template <typename Face, typename Number>
+      Point<2, Number>
+      vertex_parameter(const Face                     &slave,
+                       const QuadFace                 &slave_values,
+                       const AuxiliaryPlaneOf<Number> &plane,
+                       const Point<2, Number>         &u,
+                       const Point<2>                 &xi_value)
+      {
+        if constexpr (std::is_same_v<Number, double>)
+          return xi_value;
+        else
+          {
+            Point<2, Number> xi =
+              projected_parameter(slave, slave_values, plane.point(u), plane.normal, xi_value);
+            for (unsigned int d = 0; d < 2; ++d)
+              if (std::abs(xi_value[d]) == 1.)
+                xi[d] = Number(xi_value[d]);
+            return xi;
+          }
+      }
+
+      /// The parameter (in double) of the vertex @p u of an overlap
+      /// @p piece after @p prev and before @p next (overlap()): where a
+      /// master edge crosses the slave edge for a vertex inside a boundary
+      /// chord, the projection along n0 otherwise, put on the boundary
+      /// within 1e-10. False if it does not project.
+      bool
+      vertex_parameter_value(const QuadFace                   &slave,
+                             const AuxiliaryPlane             &plane,
+                             const std::vector<BoundaryChord> &chords,
+                             const Point<2>                   &u,
+                             const Point<2>                   &prev,
+                             const Point<2>                   &next,
+                             Point<2>                         &xi)
+      {
+        // A vertex inside a boundary chord, between a neighbour on the
+        // chord and one off it: where a master edge crosses the slave
+        // edge.
+        bool on_edge = false;
+        for (const BoundaryChord &chord : chords)
+          {
+            const Tensor<1, 2> c       = chord.b - chord.a;
+            const auto         on_line = [&](const Point<2> &x) {
+              return std::abs(cross_2d(c, x - chord.a)) <= 1e-10 * c.norm_square();
+            };
+            const double fraction = ((u - chord.a) * c) / c.norm_square();
+            if (!on_line(u) || !(fraction > 1e-10 && fraction < 1. - 1e-10) ||
+                on_line(prev) == on_line(next))
+              continue;
+            on_edge = on_line(prev) ? edge_crossing(slave, plane, chord, u, prev, next, xi) :
+                                      edge_crossing(slave, plane, chord, u, next, prev, xi);
+            break;
+          }
+        if (!on_edge && !project_along(slave, plane.point(u), plane.normal, xi))
+          return false;
+        // Vertices on the slave boundary come back up to round-off:
+        // put them on it (for_each_point() recognises its edges).
+        for (unsigned int d = 0; d < 2; ++d)
+          if (std::abs(xi[d]) > 1. - 1e-10)
+            xi[d] = xi[d] > 0. ? 1. : -1.;
+        return true;
+      }
+    } // namespace
+
+    template <typename Number>
+    bool
+    overlap_of(const QuadFaceFor<Number>               &slave,
+               const QuadFace                          &slave_values,
+               const std::vector<Tensor<1, 3, Number>> &slave_normals,
+               const QuadFaceFor<Number>               &master,
+               std::vector<ParameterPolygonOf<Number>> &polygons)
+    {
+      using Polygon = std::vector<Point<2, Number>>;
       polygons.clear();
-      const AuxiliaryPlane plane = auxiliary_plane(slave, slave_normals);
+      const AuxiliaryPlaneOf<Number> plane        = auxiliary_plane(slave, slave_normals);
+      const AuxiliaryPlane           plane_values = plane.values();
 
       // Projection along n0 into the plane, in (e1, e2) coordinates,
       // counterclockwise (the master, whose normal opposes n0, comes
       // clockwise).
-      const auto project = [&](const QuadFace &face) {
-        PlanePolygon ring;
+      const auto project = [&](const QuadFaceFor<Number> &face) {
+        Polygon ring;
         for (const unsigned int i : boundary_ring(face.degree()))
           ring.push_back(plane.coordinates(face.nodes[i]));
-        if (twice_signed_area(ring) < 0.)
+        if (value_of(twice_signed_area(ring)) < 0.)
           std::reverse(ring.begin(), ring.end());
         return ring;
       };
-      const PlanePolygon slave_ring = project(slave), master_ring = project(master);
-      const double       slave_area = 0.5 * twice_signed_area(slave_ring);
+      const Polygon slave_ring = project(slave), master_ring = project(master);
+      const double  slave_area = value_of(0.5 * twice_signed_area(slave_ring));
+      PlanePolygon  slave_ring_values;
+      for (const Point<2, Number> &u : slave_ring)
+        slave_ring_values.push_back(point_value(u));
       // The master is clipped by the convex pieces of the slave: the slave
       // itself, or its fan from the centre where a curved edge bends inward
       // at its midpoint; their cuts run from node to node, so the slave edges
       // stay whole (for_each_point() integrates them along the face).
-      const std::vector<PlanePolygon> slave_pieces =
-        convex_pieces(slave_ring, plane.coordinates(slave.point(Point<2>())));
+      const Point<2, Number>     centre = plane.coordinates(slave.point(Point<2, Number>()));
+      const std::vector<Polygon> slave_pieces =
+        pieces_of(convex_pieces(slave_ring_values, point_value(centre)), slave_ring, centre);
       // A master seen edge-on (or folded over) from the plane projects to no
       // valid polygon: no overlap to integrate.
-      if (!(0.5 * twice_signed_area(master_ring) > 1e-10 * slave_area) || slave_pieces.empty())
+      if (!(value_of(0.5 * twice_signed_area(master_ring)) > 1e-10 * slave_area) ||
+          slave_pieces.empty())
         return false;
 
-      const std::vector<BoundaryChord> chords = boundary_chords(slave, plane);
+      const std::vector<BoundaryChord> chords = boundary_chords(slave_values, plane_values);
       const double                     length = std::sqrt(slave_area);
-      for (const PlanePolygon &slave_piece : slave_pieces)
+      for (const Polygon &slave_piece : slave_pieces)
         {
-          const PlanePolygon clipped = clip_convex(master_ring, slave_piece);
+          const Polygon clipped = clip_convex(master_ring, slave_piece);
           // Touching edges or corners give no piece or a zero-area one;
           // slivers of this relative size are round-off of shared edges.
-          if (clipped.size() < 3 || !(0.5 * twice_signed_area(clipped) > 1e-10 * slave_area))
+          if (clipped.size() < 3 ||
+              !(value_of(0.5 * twice_signed_area(clipped)) > 1e-10 * slave_area))
             continue;
           // Clipping repeats a vertex that lies on a clip edge.
-          PlanePolygon piece;
-          for (const Point<2> &u : clipped)
-            if (piece.empty() || u.distance(piece.back()) > 1e-12 * length)
-              piece.push_back(u);
-          while (piece.size() > 1 && piece.front().distance(piece.back()) <= 1e-12 * length)
-            piece.pop_back();
-          ParameterPolygon polygon;
+          Polygon      piece;
+          PlanePolygon values;
+          for (const Point<2, Number> &u : clipped)
+            if (values.empty() || point_value(u).distance(values.back()) > 1e-12 * length)
+              {
+                piece.push_back(u);
+                values.push_back(point_value(u));
+              }
+          while (values.size() > 1 && values.front().distance(values.back()) <= 1e-12 * length)
+            {
+              piece.pop_back();
+              values.pop_back();
+            }
+          ParameterPolygonOf<Number> polygon;
+          ParameterPolygon           polygon_values;
           for (unsigned int k = 0; k < piece.size(); ++k)
             {
-              const Point<2> &u    = piece[k];
-              const Point<2> &prev = piece[(k + piece.size() - 1) % piece.size()];
-              const Point<2> &next = piece[(k + 1) % piece.size()];
-              // A vertex inside a boundary chord, between a neighbour on the
-              // chord and one off it: where a master edge crosses the slave
-              // edge.
-              bool     on_edge = false;
               Point<2> xi;
-              for (const BoundaryChord &chord : chords)
-                {
-                  const Tensor<1, 2> c       = chord.b - chord.a;
-                  const auto         on_line = [&](const Point<2> &x) {
-                    return std::abs(cross_2d(c, x - chord.a)) <= 1e-10 * c.norm_square();
-                  };
-                  const double fraction = ((u - chord.a) * c) / c.norm_square();
-                  if (!on_line(u) || !(fraction > 1e-10 && fraction < 1. - 1e-10) ||
-                      on_line(prev) == on_line(next))
-                    continue;
-                  on_edge = on_line(prev) ? edge_crossing(slave, plane, chord, u, prev, next, xi) :
-                                            edge_crossing(slave, plane, chord, u, next, prev, xi);
-                  break;
-                }
-              if (!on_edge && !project_along(slave, plane.point(u), plane.normal, xi))
+              if (!vertex_parameter_value(slave_values, plane_values, chords, values[k],
+                                          values[(k + values.size() - 1) % values.size()],
+                                          values[(k + 1) % values.size()], xi))
                 {
                   polygons.clear();
                   return false;
                 }
-              // Vertices on the slave boundary come back up to round-off:
-              // put them on it (for_each_point() recognises its edges).
-              for (unsigned int d = 0; d < 2; ++d)
-                if (std::abs(xi[d]) > 1. - 1e-10)
-                  xi[d] = xi[d] > 0. ? 1. : -1.;
               // An edge crossing at a chord's end repeats its node.
-              if (polygon.empty() || xi.distance(polygon.back()) > 1e-12)
-                polygon.push_back(xi);
+              if (polygon_values.empty() || xi.distance(polygon_values.back()) > 1e-12)
+                {
+                  polygon_values.push_back(xi);
+                  polygon.push_back(vertex_parameter(slave, slave_values, plane, piece[k], xi));
+                }
             }
-          while (polygon.size() > 1 && polygon.front().distance(polygon.back()) <= 1e-12)
-            polygon.pop_back();
+          while (polygon_values.size() > 1 &&
+                 polygon_values.front().distance(polygon_values.back()) <= 1e-12)
+            {
+              polygon_values.pop_back();
+              polygon.pop_back();
+            }
           if (polygon.size() < 3)
             continue;
           double area = 0.;
-          for (std::size_t v = 0; v < polygon.size(); ++v)
-            area += cross_2d(polygon[v], polygon[(v + 1) % polygon.size()]);
+          for (std::size_t v = 0; v < polygon_values.size(); ++v)
+            area += cross_2d(polygon_values[v], polygon_values[(v + 1) % polygon_values.size()]);
           // The slave's parameter orientation relative to n0 depends on its
           // vertex order (deal.II face orientation): make it counterclockwise.
           if (area < 0.)
@@ -677,6 +914,70 @@ namespace contact_fem
         }
       return !polygons.empty();
     }
+
+    bool
+    overlap(const QuadFace                  &slave,
+            const std::vector<Tensor<1, 3>> &slave_normals,
+            const QuadFace                  &master,
+            std::vector<ParameterPolygon>   &polygons)
+    {
+      return overlap_of<double>(slave, slave, slave_normals, master, polygons);
+    }
+
+    namespace
+    {
+      /// integrate_pair() on the given overlap @p polygons in numbers of
+      /// type Number (see integrate_polygons_of()).
+      template <typename Face, typename Number, typename Matrix, typename Operators>
+      void
+      integrate_polygons(const Face                                    &slave,
+                         const QuadFace                                &slave_values,
+                         const std::vector<Tensor<1, 3, Number>>       &slave_normals,
+                         const Matrix                                  &dual_coefficients,
+                         const Face                                    &master,
+                         const QuadFace                                &master_values,
+                         const unsigned int                             n_quadrature_points,
+                         const std::vector<ParameterPolygonOf<Number>> &polygons,
+                         Operators                                     &result)
+      {
+        const unsigned int ps = slave.shape_degree(), pm = master.shape_degree();
+        const unsigned int ns = slave.n_shape_nodes(), nm = master.n_shape_nodes();
+        AssertDimension(dual_coefficients.n_rows(), ns);
+
+        result.D.assign(ns, Number(0.));
+        result.weighted_gap.assign(ns, Tensor<1, 3, Number>());
+        result.M.reinit(ns, nm);
+        result.overlap_area = 0.;
+
+        std::vector<Number>            phi(ns);
+        const AuxiliaryPlaneOf<Number> plane     = auxiliary_plane(slave, slave_normals);
+        const auto                     add_point = [&](const Point<2, Number> &xi,
+                                   const Number           &jxw) {
+          const Point<3, Number>     x_slave = slave.point(xi);
+          const Tensor<1, 3, Number> n       = interpolated_normal(slave, slave_normals, xi);
+          Point<2>                   eta_value;
+          // The overlap's points project onto the master: a failure here is
+          // not a geometric fact, and skipping the point would shrink D.
+          AssertThrow(project_along(master_values, point_value(x_slave), vector_value(n),
+                                    eta_value),
+                      ExcMessage("Mortar integration: a quadrature point of the slave face "
+                                 "centred at " +
+                                 coordinates_text(slave_values.point(Point<2>())) +
+                                 " does not project onto the master face centred at " +
+                                 coordinates_text(master_values.point(Point<2>())) + "."));
+          // The segmentation projected along n0, the normal field may differ
+          // slightly: stay on the master face (partition of unity kept).
+          const Point<2, Number> eta =
+            clamped(projected_parameter(master, master_values, x_slave, n, eta_value));
+          const Tensor<1, 3, Number> separation = master.point(eta) - x_slave;
+
+          result.overlap_area += jxw;
+          add_quadrature_point<3>(dual_coefficients, ps, pm, xi, eta, jxw, separation, phi,
+                                  result);
+        };
+        for_each_point(slave, slave_values, plane, polygons, n_quadrature_points, add_point);
+      }
+    } // namespace
 
     bool
     integrate_pair(const QuadFace                  &slave,
@@ -688,40 +989,97 @@ namespace contact_fem
     {
       if (!overlap(slave, slave_normals, master, result.polygons))
         return false;
-      const unsigned int ps = slave.shape_degree(), pm = master.shape_degree();
-      const unsigned int ns = slave.n_shape_nodes(), nm = master.n_shape_nodes();
-      AssertDimension(dual_coefficients.m(), ns);
-
-      result.D.assign(ns, 0.);
-      result.weighted_gap.assign(ns, Tensor<1, 3>());
-      result.M.reinit(ns, nm);
-      result.overlap_area = 0.;
-
-      std::vector<double>  phi(ns);
-      const AuxiliaryPlane plane     = auxiliary_plane(slave, slave_normals);
-      const auto           add_point = [&](const Point<2> &xi, const double jxw) {
-        const Point<3> x_slave = slave.point(xi);
-        Point<2>       eta;
-        // The overlap's points project onto the master: a failure here is
-        // not a geometric fact, and skipping the point would shrink D.
-        AssertThrow(project_along(master, x_slave, interpolated_normal(slave, slave_normals, xi),
-                                            eta),
-                              ExcMessage("Mortar integration: a quadrature point of the slave face "
-                                                   "centred at " +
-                                         coordinates_text(slave.point(Point<2>())) +
-                                         " does not project onto the master face centred at " +
-                                         coordinates_text(master.point(Point<2>())) + "."));
-        // The segmentation projected along n0, the normal field may differ
-        // slightly: stay on the master face (partition of unity kept).
-        eta                           = Point<2>(clamp(eta[0]), clamp(eta[1]));
-        const Tensor<1, 3> separation = master.point(eta) - x_slave;
-
-        result.overlap_area += jxw;
-        add_quadrature_point<3>(dual_coefficients, ps, pm, xi, eta, jxw, separation, phi, result);
-      };
-      for_each_point(slave, plane, result.polygons, n_quadrature_points, add_point);
+      integrate_polygons(slave, slave, slave_normals, dual_coefficients, master, master,
+                         n_quadrature_points, result.polygons, result);
       return result.overlap_area > 0.;
     }
+
+    template <typename Number>
+    void
+    integrate_polygons_of(const QuadFaceFor<Number>                     &slave,
+                          const QuadFace                                &slave_values,
+                          const std::vector<Tensor<1, 3, Number>>       &slave_normals,
+                          const Table<2, Number>                        &dual_coefficients,
+                          const QuadFaceFor<Number>                     &master,
+                          const QuadFace                                &master_values,
+                          const unsigned int                             n_quadrature_points,
+                          const std::vector<ParameterPolygonOf<Number>> &polygons,
+                          QuadOperatorsOf<Number>                       &result)
+    {
+      integrate_polygons(slave, slave_values, slave_normals, dual_coefficients, master,
+                         master_values, n_quadrature_points, polygons, result);
+    }
+
+    template <typename Number>
+    void
+    dual_basis_integrals_of(const QuadFaceFor<Number>                     &slave,
+                            const QuadFace                                &slave_values,
+                            const std::vector<Tensor<1, 3, Number>>       &slave_normals,
+                            const std::vector<ParameterPolygonOf<Number>> &polygons,
+                            Table<2, Number>                              &De,
+                            Table<2, Number>                              &Me)
+    {
+      const unsigned int p = slave.shape_degree(), n = slave.n_shape_nodes();
+      for_each_point(slave, slave_values, auxiliary_plane(slave, slave_normals), polygons,
+                     p + 5, [&](const Point<2, Number> &xi, const Number &jxw) {
+                       for (unsigned int j = 0; j < n; ++j)
+                         {
+                           const Number Nj = quad_shape_value_of(p, j, xi);
+                           De(j, j) += Nj * jxw;
+                           for (unsigned int k = 0; k < n; ++k)
+                             Me(j, k) += Nj * quad_shape_value_of(p, k, xi) * jxw;
+                         }
+                     });
+    }
+
+    template bool
+    overlap_of<double>(const QuadFace &,
+                       const QuadFace &,
+                       const std::vector<Tensor<1, 3>> &,
+                       const QuadFace &,
+                       std::vector<ParameterPolygon> &);
+    template void
+    integrate_polygons_of<double>(const QuadFace &,
+                                  const QuadFace &,
+                                  const std::vector<Tensor<1, 3>> &,
+                                  const Table<2, double> &,
+                                  const QuadFace &,
+                                  const QuadFace &,
+                                  const unsigned int,
+                                  const std::vector<ParameterPolygon> &,
+                                  QuadOperatorsOf<double> &);
+    template void
+    dual_basis_integrals_of<double>(const QuadFace &,
+                                    const QuadFace &,
+                                    const std::vector<Tensor<1, 3>> &,
+                                    const std::vector<ParameterPolygon> &,
+                                    Table<2, double> &,
+                                    Table<2, double> &);
+
+    using ADNumber = Sacado::Fad::DFad<double>;
+    template bool
+    overlap_of<ADNumber>(const QuadFaceOf<ADNumber> &,
+                         const QuadFace &,
+                         const std::vector<Tensor<1, 3, ADNumber>> &,
+                         const QuadFaceOf<ADNumber> &,
+                         std::vector<ParameterPolygonOf<ADNumber>> &);
+    template void
+    integrate_polygons_of<ADNumber>(const QuadFaceOf<ADNumber> &,
+                                    const QuadFace &,
+                                    const std::vector<Tensor<1, 3, ADNumber>> &,
+                                    const Table<2, ADNumber> &,
+                                    const QuadFaceOf<ADNumber> &,
+                                    const QuadFace &,
+                                    const unsigned int,
+                                    const std::vector<ParameterPolygonOf<ADNumber>> &,
+                                    QuadOperatorsOf<ADNumber> &);
+    template void
+    dual_basis_integrals_of<ADNumber>(const QuadFaceOf<ADNumber> &,
+                                      const QuadFace &,
+                                      const std::vector<Tensor<1, 3, ADNumber>> &,
+                                      const std::vector<ParameterPolygonOf<ADNumber>> &,
+                                      Table<2, ADNumber> &,
+                                      Table<2, ADNumber> &);
 
     Point<2>
     closest_parameter(const QuadFace &quad, const Point<3> &x)

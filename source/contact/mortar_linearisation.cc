@@ -199,29 +199,12 @@ namespace contact_fem
                 result(j, k) = A(j, k);
             return result;
           }
-        Table<2, Number> De(n, n), Me(n, n);
-        dual_basis_integrals(slave, intervals, De, Me);
-        FullMatrix<double> Me_values(n, n), Me_inverse(n, n);
-        for (unsigned int j = 0; j < n; ++j)
-          for (unsigned int k = 0; k < n; ++k)
-            Me_values(j, k) = value_of(Me(j, k));
-        Me_inverse.invert(Me_values);
-        for (unsigned int j = 0; j < n; ++j)
-          for (unsigned int k = 0; k < n; ++k)
-            {
-              Number a = 0.;
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  Number r = De(j, i);
-                  for (unsigned int m = 0; m < n; ++m)
-                    r -= A(j, m) * Me(m, i);
-                  a += r * Me_inverse(i, k);
-                }
-              if constexpr (!std::is_same_v<Number, double>)
-                a.val() = A(j, k);
-              result(j, k) = a;
-            }
-        return result;
+        else
+          {
+            Table<2, Number> De(n, n), Me(n, n);
+            dual_basis_integrals(slave, intervals, De, Me);
+            return dual_coefficients_of(A, De, Me);
+          }
       }
 
       template <typename Number>

@@ -40,25 +40,30 @@ def cauchy_pressure(E, nu, stretch):
     return -stretch * S(stretch, a) / a
 
 
-contact_fem, patch, sliding = sys.argv[1:4]
-ok = True
+def main():
+    contact_fem, patch, sliding = sys.argv[1:4]
+    ok = True
 
-expected = cauchy_pressure(100.0, 0.3, 0.7)
-for degree in (1, 2):
-    name = f"patch Q{degree}"
-    output = run_scene(contact_fem, patch, "Output/Write pressure profile=true",
-                       f"Finite element/Degree={degree}")
-    ok = check_quadratic(name, output, 10.0) and ok
-    with open("results/pressure_profile.csv") as f:
-        rows = list(csv.DictReader(f))
-    errors = [abs(float(r["pressure"]) - expected) / expected for r in rows]
-    inactive = [r for r in rows if r["active"] != "1"]
-    good = len(rows) > 0 and not inactive and max(errors) < 1e-8
-    print(f"{name}: {len(rows)} slave nodes, pressure against the Cauchy stress "
-          f"{expected:.9g} of the law to 1e-8: {'ok' if good else 'FAILED'} "
-          f"(largest relative error {max(errors):.1e}, inactive {len(inactive)})")
-    ok = good and ok
+    expected = cauchy_pressure(100.0, 0.3, 0.7)
+    for degree in (1, 2):
+        name = f"patch Q{degree}"
+        output = run_scene(contact_fem, patch, "Output/Write pressure profile=true",
+                           f"Finite element/Degree={degree}")
+        ok = check_quadratic(name, output, 10.0) and ok
+        with open("results/pressure_profile.csv") as f:
+            rows = list(csv.DictReader(f))
+        errors = [abs(float(r["pressure"]) - expected) / expected for r in rows]
+        inactive = [r for r in rows if r["active"] != "1"]
+        good = len(rows) > 0 and not inactive and max(errors) < 1e-8
+        print(f"{name}: {len(rows)} slave nodes, pressure against the Cauchy stress "
+              f"{expected:.9g} of the law to 1e-8: {'ok' if good else 'FAILED'} "
+              f"(largest relative error {max(errors):.1e}, inactive {len(inactive)})")
+        ok = good and ok
 
-output = run_scene(contact_fem, sliding)
-ok = check_quadratic("sliding", output, 100.0) and ok
-sys.exit(0 if ok else 1)
+    output = run_scene(contact_fem, sliding)
+    ok = check_quadratic("sliding", output, 100.0) and ok
+    sys.exit(0 if ok else 1)
+
+
+if __name__ == "__main__":
+    main()

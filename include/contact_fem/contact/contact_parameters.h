@@ -45,9 +45,12 @@ namespace contact_fem
     void
     parse_parameters(ParameterHandler &prm);
     /// Refuses Kinematics = current where it is not implemented: a scene
-    /// of dimension @p dim with Contact/Formulation = @p formulation.
+    /// of dimension @p dim with Contact/Formulation = @p formulation and
+    /// a geometry of degree @p geometry_degree.
     void
-    check_kinematics(const unsigned int dim, const std::string &formulation) const;
+    check_kinematics(const unsigned int  dim,
+                     const std::string  &formulation,
+                     const unsigned int  geometry_degree) const;
   };
 } // namespace contact_fem
 

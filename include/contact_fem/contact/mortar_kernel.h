@@ -8,6 +8,7 @@
 
 #include <contact_fem/contact/mortar.h>
 #include <contact_fem/contact/mortar_3d.h>
+#include <contact_fem/contact/mortar_3d_number.h>
 
 #include <array>
 #include <cmath>
@@ -156,10 +157,12 @@ namespace contact_fem
       {
         return quad_node_parameter(p, i);
       }
-      static double
-      shape_value(const unsigned int p, const unsigned int i, const Parameter &xi)
+      /// For a double or an AD parameter @p xi (mortar_3d_number.h).
+      template <typename Number>
+      static Number
+      shape_value(const unsigned int p, const unsigned int i, const Point<2, Number> &xi)
       {
-        return quad_shape_value(p, i, xi);
+        return quad_shape_value_of(p, i, xi);
       }
       /// |dx/dxi x dx/deta|: the area element of the face at @p xi.
       static double
@@ -210,7 +213,7 @@ namespace contact_fem
      * the slave point at parameter @p xi with weight @p jxw, projected to
      * @p eta on the master, apart from it by @p separation. @p phi: room
      * for the dual functions there (one per slave DoF node). Number: double,
-     * or in 2D an AD number (mortar_number.h).
+     * or an AD number (mortar_number.h, mortar_3d_number.h).
      */
     template <int dim, typename Matrix, typename Parameter, typename Number, typename Operators>
     void

@@ -69,6 +69,57 @@ namespace contact_fem
         }
     }
 
+    /// |t| in 3D, for double exactly Tensor::norm().
+    template <typename Number>
+    Number
+    length(const Tensor<1, 3, Number> &t)
+    {
+      if constexpr (std::is_same_v<Number, double>)
+        return t.norm();
+      else
+        {
+          using std::sqrt;
+          return sqrt(t * t);
+        }
+    }
+
+    /**
+     * The dual basis coefficients A = D_e M_e^{-1} in AD numbers from
+     * their values @p A (the double path) and the AD integrals @p De and
+     * @p Me: the value A; the derivative that of dA = (dD_e - A dM_e)
+     * M_e^{-1}, carried by the AD numbers (D_e - A M_e) M_e^{-1}, whose
+     * value is round-off.
+     */
+    template <typename Number>
+    Table<2, Number>
+    dual_coefficients_of(const FullMatrix<double> &A,
+                         const Table<2, Number>   &De,
+                         const Table<2, Number>   &Me)
+    {
+      const unsigned int n = A.m();
+      FullMatrix<double> Me_values(n, n), Me_inverse(n, n);
+      for (unsigned int j = 0; j < n; ++j)
+        for (unsigned int k = 0; k < n; ++k)
+          Me_values(j, k) = value_of(Me(j, k));
+      Me_inverse.invert(Me_values);
+      Table<2, Number> result(n, n);
+      for (unsigned int j = 0; j < n; ++j)
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            Number a = 0.;
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                Number r = De(j, i);
+                for (unsigned int m = 0; m < n; ++m)
+                  r -= A(j, m) * Me(m, i);
+                a += r * Me_inverse(i, k);
+              }
+            a.val()      = A(j, k);
+            result(j, k) = a;
+          }
+      return result;
+    }
+
     /// A LineFace whose node coordinates are numbers of type Number.
     template <typename Number>
     struct LineFaceOf : LineFaceNodes<Tensor<1, 2, Number>>

@@ -1,0 +1,78 @@
+// The 3D mortar operators of one slave/master quadrilateral face pair as
+// functions of the node coordinates, with their first derivatives: D, M,
+// the weighted gap, its normal part and the averaged unit nodal normals,
+// and the dual basis they are built from. Forward automatic
+// differentiation (Sacado) of the kernel of mortar_3d_number.h; the values
+// are exactly those of the double path (integrate_pair()). The 3D
+// counterpart of mortar_linearisation.h, for bilinear (4-node) faces:
+// a vertex where a master edge crosses a curved slave edge is not
+// linearised. Where the clipping changes topology (a vertex entering or
+// leaving a polygon, a quadrature point clamped to the master's rim) the
+// derivative is the one-sided one of the topology found.
+#ifndef contact_fem_mortar_3d_linearisation_h
+#define contact_fem_mortar_3d_linearisation_h
+
+#include <deal.II/base/point.h>
+
+#include <contact_fem/contact/mortar_3d.h>
+#include <contact_fem/contact/mortar_linearisation.h>
+
+#include <array>
+#include <vector>
+
+namespace contact_fem
+{
+  namespace Mortar
+  {
+    /**
+     * A slave/master face pair and the slave faces next to it, by their
+     * nodes: indices into @p points, whose coordinates (x, y and z of each
+     * point, in this order) are the independent variables.
+     */
+    struct QuadPairPatch
+    {
+      /// Node indices in QuadFace order; orientation and element degree as
+      /// in PairPatch::Face.
+      using Face = PairPatch::Face;
+      std::vector<Point<3>> points;
+      /// [0]: the slave face of the pair; others: slave faces sharing one of
+      /// its nodes, which enter its averaged nodal normals.
+      std::vector<Face> slave_faces;
+      Face              master;
+      /// Further masters of the slave face: their overlaps join the pair's
+      /// in the support of the dual basis.
+      std::vector<Face> other_masters;
+
+      /// A face as a QuadFace of the current coordinates.
+      QuadFace
+      quad_face(const Face &face) const;
+    };
+
+    /// The operators of a QuadPairPatch; j: slave DoF node, l: master DoF node.
+    struct LinearisedQuadPair
+    {
+      /// Unit nodal normals: the area-weighted mean of the normals of the
+      /// slave faces at node j (as ContactInterface averages them).
+      std::vector<std::array<Linearised, 3>> normals;
+      /// The number of vertices of each overlap polygon (the topology).
+      std::vector<unsigned int>              polygon_sizes;
+      std::vector<std::vector<Linearised>>   dual_coefficients;
+      std::vector<Linearised>                D;
+      std::vector<std::vector<Linearised>>   M;
+      std::vector<std::array<Linearised, 3>> weighted_gap;
+      /// g_j = n_j . weighted_gap_j.
+      std::vector<Linearised> normal_gap;
+    };
+
+    /**
+     * The operators of @p patch (dual basis on the overlaps of the master
+     * and the other masters, Gauss points as n_quadrature_points()), with
+     * their derivatives if @p derivatives. Returns false if the faces do
+     * not overlap. Throws for faces that are not bilinear.
+     */
+    bool
+    linearise_pair(const QuadPairPatch &patch, const bool derivatives, LinearisedQuadPair &result);
+  } // namespace Mortar
+} // namespace contact_fem
+
+#endif

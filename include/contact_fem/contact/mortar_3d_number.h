@@ -1,0 +1,167 @@
+// The 3D mortar kernel (mortar_3d.cc) written once over the number type:
+// double in the operators (integrate_pair()) and a forward
+// automatic-differentiation number in their linearisation
+// (mortar_3d_linearisation.cc). As in 2D (mortar_number.h), every decision
+// (clipping sides, duplicate vertices, which points project) and every
+// Newton root is taken in double; an AD number only adds the derivatives
+// to those values. Instantiated in mortar_3d.cc for double and
+// Sacado::Fad::DFad<double>.
+#ifndef contact_fem_mortar_3d_number_h
+#define contact_fem_mortar_3d_number_h
+
+#include <deal.II/base/table.h>
+
+#include <contact_fem/contact/mortar.h>
+#include <contact_fem/contact/mortar_3d.h>
+
+#include <array>
+#include <type_traits>
+#include <vector>
+
+namespace contact_fem
+{
+  namespace Mortar
+  {
+    /// The 1D node indices (LineFace order) of node @p i of a quadrilateral
+    /// face of degree @p p: -1 -> 0, 1 -> 1, 0 -> 2.
+    inline std::array<unsigned int, 2>
+    quad_line_indices(const unsigned int p, const unsigned int i)
+    {
+      const Point<2> node  = quad_node_parameter(p, i);
+      const auto     index = [](const double x) {
+        return x < 0. ? 0u : (x > 0. ? 1u : 2u);
+      };
+      return {{index(node[0]), index(node[1])}};
+    }
+
+    /// quad_shape_value() for a double or an AD parameter @p xi.
+    template <typename Number>
+    Number
+    quad_shape_value_of(const unsigned int p, const unsigned int i, const Point<2, Number> &xi)
+    {
+      if constexpr (std::is_same_v<Number, double>)
+        return quad_shape_value(p, i, xi);
+      else
+        {
+          const auto [a, b] = quad_line_indices(p, i);
+          return lagrange_value(p, a, xi[0]) * lagrange_value(p, b, xi[1]);
+        }
+    }
+
+    /// quad_shape_gradient() for an AD parameter @p xi.
+    template <typename Number>
+    Tensor<1, 2, Number>
+    quad_shape_gradient_of(const unsigned int p, const unsigned int i, const Point<2, Number> &xi)
+    {
+      const auto [a, b] = quad_line_indices(p, i);
+      Tensor<1, 2, Number> g;
+      g[0] = lagrange_derivative(p, a, xi[0]) * lagrange_value(p, b, xi[1]);
+      g[1] = lagrange_value(p, a, xi[0]) * lagrange_derivative(p, b, xi[1]);
+      return g;
+    }
+
+    /// A QuadFace whose node coordinates are AD numbers.
+    template <typename Number>
+    struct QuadFaceOf
+    {
+      std::vector<Point<3, Number>> nodes;
+      unsigned int                  element_degree = 0;
+
+      unsigned int
+      degree() const
+      {
+        return nodes.size() == 4 ? 1 : 2;
+      }
+      unsigned int
+      shape_degree() const
+      {
+        return element_degree > 0 ? element_degree : degree();
+      }
+      unsigned int
+      n_shape_nodes() const
+      {
+        return (shape_degree() + 1) * (shape_degree() + 1);
+      }
+      Point<3, Number>
+      point(const Point<2, Number> &xi) const
+      {
+        Point<3, Number> x;
+        for (unsigned int i = 0; i < nodes.size(); ++i)
+          x += quad_shape_value_of(degree(), i, xi) * nodes[i];
+        return x;
+      }
+      std::array<Tensor<1, 3, Number>, 2>
+      tangents(const Point<2, Number> &xi) const
+      {
+        std::array<Tensor<1, 3, Number>, 2> t;
+        for (unsigned int i = 0; i < nodes.size(); ++i)
+          {
+            const Tensor<1, 2, Number> g = quad_shape_gradient_of(degree(), i, xi);
+            t[0] += g[0] * nodes[i];
+            t[1] += g[1] * nodes[i];
+          }
+        return t;
+      }
+    };
+
+    /// The face type of the kernel for numbers of type Number.
+    template <typename Number>
+    using QuadFaceFor = std::conditional_t<std::is_same_v<Number, double>, QuadFace, QuadFaceOf<Number>>;
+
+    template <typename Number>
+    using ParameterPolygonOf = std::vector<Point<2, Number>>;
+
+    /// The blocks of integrate_pair() in numbers of type Number.
+    template <typename Number>
+    struct QuadOperatorsOf
+    {
+      std::vector<Number>               D;
+      Table<2, Number>                  M;
+      std::vector<Tensor<1, 3, Number>> weighted_gap;
+      Number                            overlap_area;
+    };
+
+    /**
+     * overlap() with @p slave, @p master and @p slave_normals in numbers of
+     * type Number (@p slave_values: the slave in double, for the
+     * decisions and roots): the vertices of @p polygons as
+     * functions of the nodes. In AD numbers, bilinear faces only (a vertex
+     * where a master edge crosses a curved slave edge is not linearised).
+     */
+    template <typename Number>
+    bool
+    overlap_of(const QuadFaceFor<Number>                     &slave,
+               const QuadFace                                &slave_values,
+               const std::vector<Tensor<1, 3, Number>>       &slave_normals,
+               const QuadFaceFor<Number>                     &master,
+               std::vector<ParameterPolygonOf<Number>>       &polygons);
+
+    /// D_e = diag(int N_j) and M_e = (int N_j N_k) over @p polygons, as
+    /// dual_basis_coefficients() integrates them. @p De, @p Me: zero n x n.
+    template <typename Number>
+    void
+    dual_basis_integrals_of(const QuadFaceFor<Number>                     &slave,
+                            const QuadFace                                &slave_values,
+                            const std::vector<Tensor<1, 3, Number>>       &slave_normals,
+                            const std::vector<ParameterPolygonOf<Number>> &polygons,
+                            Table<2, Number>                              &De,
+                            Table<2, Number>                              &Me);
+
+    /// integrate_pair() on the given overlap @p polygons (overlap_of()),
+    /// with dual basis coefficients @p dual_coefficients; the quadrature
+    /// points are projected onto the master as there.
+    template <typename Number>
+    void
+    integrate_polygons_of(const QuadFaceFor<Number>                     &slave,
+                          const QuadFace                                &slave_values,
+                          const std::vector<Tensor<1, 3, Number>>       &slave_normals,
+                          const Table<2, Number>                        &dual_coefficients,
+                          const QuadFaceFor<Number>                     &master,
+                          const QuadFace                                &master_values,
+                          const unsigned int                             n_quadrature_points,
+                          const std::vector<ParameterPolygonOf<Number>> &polygons,
+                          QuadOperatorsOf<Number>                       &result);
+  } // namespace Mortar
+} // namespace contact_fem
+
+#endif

@@ -1,0 +1,302 @@
+// Derivatives of the 3D mortar operators of one slave/master quadrilateral
+// face pair with respect to the node coordinates
+// (source/contact/mortar_3d_linearisation.cc: forward AD of the kernel of
+// mortar_3d_number.h) against central finite differences of the double
+// path. The slave face is the centre of 3 x 3 bilinear faces on a curved
+// surface (its nodal normals average over the eight around it); masters
+// are bilinear faces on a tilted, curved surface above, turned against
+// the slave grid (non-matching), every node moved at random by up to 2 %
+// of the face size:
+//  - a master partly overlapping the slave face (a master corner inside,
+//    edges crossing edges: clipped vertices of every kind),
+//  - a master covering the slave face whole,
+//  - two masters meeting inside the slave face: the dual basis on both
+//    overlaps.
+// Quantities: averaged unit nodal normals, dual basis coefficients, D, M,
+// the weighted gap vector and its normal part. For every derivative, the
+// finite-difference error at h, h/2, h/4 (h = 2e-3 face diagonal) falls at
+// second order (both observed orders in [1.8, 2.2]) unless it is round-off
+// already at h (below 1e-9 of the group's scale), and at h/4 it is below
+// 1e-5 of the group's scale (its largest derivative or value per length).
+// The topology (polygon vertex counts) is the same at every perturbed
+// point. The AD values equal the double path exactly, and D, M and the
+// weighted gap equal integrate_pair() exactly.
+#include <contact_fem/contact/mortar_3d_linearisation.h>
+
+#include "unit_test_random.h"
+
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <string>
+
+using namespace dealii;
+using namespace contact_fem;
+using namespace contact_fem::Mortar;
+
+namespace
+{
+  using Surface = std::function<Point<3>(const double, const double)>;
+
+  /// The bilinear face (@p i, @p j) of an n x n grid of points, in
+  /// deal.II's vertex order.
+  QuadPairPatch::Face
+  grid_face(const unsigned int n, const unsigned int i, const unsigned int j)
+  {
+    QuadPairPatch::Face face;
+    face.nodes = {j * n + i, j * n + i + 1, (j + 1) * n + i, (j + 1) * n + i + 1};
+    return face;
+  }
+
+  /// The slave patch: 4 x 4 nodes of @p slave at parameters -1, 0, 1, 2,
+  /// the centre face first.
+  QuadPairPatch
+  slave_patch(const Surface &slave)
+  {
+    QuadPairPatch patch;
+    for (unsigned int j = 0; j < 4; ++j)
+      for (unsigned int i = 0; i < 4; ++i)
+        patch.points.push_back(slave(i - 1., j - 1.));
+    patch.slave_faces.push_back(grid_face(4, 1, 1));
+    for (unsigned int j = 0; j < 3; ++j)
+      for (unsigned int i = 0; i < 3; ++i)
+        if (i != 1 || j != 1)
+          patch.slave_faces.push_back(grid_face(4, i, j));
+    return patch;
+  }
+
+  /// A master face of the points of @p master at @p corners (deal.II's
+  /// vertex order), added to @p patch; vertices in @p shared are existing
+  /// points.
+  QuadPairPatch::Face
+  add_master(QuadPairPatch                         &patch,
+             const Surface                         &master,
+             const std::array<Point<2>, 4>         &corners,
+             const std::map<unsigned int, unsigned> &shared = {})
+  {
+    QuadPairPatch::Face face;
+    for (unsigned int v = 0; v < 4; ++v)
+      if (const auto it = shared.find(v); it != shared.end())
+        face.nodes.push_back(it->second);
+      else
+        {
+          face.nodes.push_back(patch.points.size());
+          patch.points.push_back(master(corners[v][0], corners[v][1]));
+        }
+    return face;
+  }
+
+  void
+  perturb(QuadPairPatch &patch, Random &random)
+  {
+    for (Point<3> &p : patch.points)
+      for (unsigned int d = 0; d < 3; ++d)
+        p[d] += 0.02 * random.next();
+  }
+
+  /// Every quantity of @p r, by group.
+  std::vector<std::pair<std::string, const Linearised *>>
+  quantities(const LinearisedQuadPair &r)
+  {
+    std::vector<std::pair<std::string, const Linearised *>> list;
+    const auto add_vectors = [&](const std::string &group, const auto &vectors) {
+      for (const auto &v : vectors)
+        for (const Linearised &c : v)
+          list.emplace_back(group, &c);
+    };
+    add_vectors("nodal normals", r.normals);
+    add_vectors("dual basis", r.dual_coefficients);
+    for (const Linearised &c : r.D)
+      list.emplace_back("D", &c);
+    add_vectors("M", r.M);
+    add_vectors("weighted gap", r.weighted_gap);
+    for (const Linearised &c : r.normal_gap)
+      list.emplace_back("normal gap", &c);
+    return list;
+  }
+
+  /// Whether AD and double values agree exactly, and D, M, gap with
+  /// integrate_pair().
+  void
+  check_values(const QuadPairPatch      &patch,
+               const LinearisedQuadPair &exact,
+               const LinearisedQuadPair &values)
+  {
+    const auto a = quantities(exact), b = quantities(values);
+    bool       same = a.size() == b.size();
+    for (unsigned int i = 0; same && i < a.size(); ++i)
+      same = a[i].second->value == b[i].second->value;
+    std::cout << "  AD values = double path: " << (same ? "yes" : "NO") << std::endl;
+
+    const QuadFace slave  = patch.quad_face(patch.slave_faces[0]),
+                   master = patch.quad_face(patch.master);
+    std::vector<Tensor<1, 3>> normals;
+    for (const auto &n : values.normals)
+      normals.push_back(Tensor<1, 3>({n[0].value, n[1].value, n[2].value}));
+    std::vector<ParameterPolygon> polygons, more;
+    overlap(slave, normals, master, polygons);
+    for (const QuadPairPatch::Face &other : patch.other_masters)
+      if (overlap(slave, normals, patch.quad_face(other), more))
+        polygons.insert(polygons.end(), more.begin(), more.end());
+    std::cout << "  dual basis on " << polygons.size() << " polygon(s) of";
+    for (const unsigned int size : values.polygon_sizes)
+      std::cout << " " << size;
+    std::cout << " vertices" << std::endl;
+    const auto           A = dual_basis_coefficients(slave, normals, polygons);
+    QuadSegmentOperators ops;
+    bool equal = integrate_pair(slave, normals, A, master, n_quadrature_points(slave, master), ops);
+    for (unsigned int j = 0; equal && j < ops.D.size(); ++j)
+      {
+        equal = ops.D[j] == values.D[j].value;
+        for (unsigned int d = 0; d < 3; ++d)
+          equal = equal && ops.weighted_gap[j][d] == values.weighted_gap[j][d].value;
+        for (unsigned int l = 0; l < ops.M.n(); ++l)
+          equal = equal && ops.M(j, l) == values.M[j][l].value;
+      }
+    std::cout << "  D, M, weighted gap = integrate_pair(): " << (equal ? "yes" : "NO") << std::endl;
+  }
+
+  /// The values of all quantities with coordinate @p i of @p patch moved
+  /// by @p h into @p v; false if the topology differs from @p sizes.
+  bool
+  perturbed_values(QuadPairPatch                    patch,
+                   const unsigned int               i,
+                   const double                     h,
+                   const std::vector<unsigned int> &sizes,
+                   std::vector<double>             &v)
+  {
+    patch.points[i / 3][i % 3] += h;
+    LinearisedQuadPair r;
+    if (!linearise_pair(patch, false, r) || r.polygon_sizes != sizes)
+      return false;
+    v.clear();
+    for (const auto &q : quantities(r))
+      v.push_back(q.second->value);
+    return true;
+  }
+
+  /// Central-difference errors |FD(h_k) - derivative| for h_k = h, h/2,
+  /// h/4, per quantity of @p exact and coordinate; false if a perturbed
+  /// point has another topology.
+  bool
+  difference_errors(const QuadPairPatch                             &patch,
+                    const LinearisedQuadPair                        &exact,
+                    const double                                     h,
+                    std::vector<std::vector<std::array<double, 3>>> &errors)
+  {
+    const auto         list = quantities(exact);
+    const unsigned int n    = 3 * patch.points.size();
+    errors.assign(list.size(), std::vector<std::array<double, 3>>(n));
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int k = 0; k < 3; ++k)
+        {
+          const double        hk = h / (1 << k);
+          std::vector<double> plus, minus;
+          if (!perturbed_values(patch, i, hk, exact.polygon_sizes, plus) ||
+              !perturbed_values(patch, i, -hk, exact.polygon_sizes, minus))
+            return false;
+          for (unsigned int q = 0; q < list.size(); ++q)
+            errors[q][i][k] =
+              std::abs((plus[q] - minus[q]) / (2. * hk) - list[q].second->derivatives[i]);
+        }
+    return true;
+  }
+
+  void
+  check_derivatives(const std::string &name, const QuadPairPatch &patch)
+  {
+    LinearisedQuadPair exact, values;
+    if (!linearise_pair(patch, true, exact) || !linearise_pair(patch, false, values))
+      {
+        std::cout << name << ": no overlap" << std::endl;
+        return;
+      }
+    const unsigned int n = 3 * patch.points.size();
+    std::cout << name << " (" << n << " coordinates)" << std::endl;
+    check_values(patch, exact, values);
+
+    const std::vector<unsigned int> &s    = patch.slave_faces[0].nodes;
+    const double                     size = (patch.points[s[3]] - patch.points[s[0]]).norm();
+    std::vector<std::vector<std::array<double, 3>>> errors;
+    const bool same_topology = difference_errors(patch, exact, 2e-3 * size, errors);
+    std::cout << "  same topology at every perturbed point: " << (same_topology ? "yes" : "NO")
+              << std::endl;
+    if (!same_topology)
+      return;
+
+    const auto                    list = quantities(exact);
+    std::vector<std::string>      groups;
+    std::map<std::string, double> scale;
+    for (const auto &[group, q] : list)
+      {
+        if (scale.count(group) == 0)
+          groups.push_back(group);
+        scale[group] = std::max(scale[group], std::abs(q->value) / size);
+        for (const double d : q->derivatives)
+          scale[group] = std::max(scale[group], std::abs(d));
+      }
+    for (const std::string &group : groups)
+      {
+        unsigned int count = 0, bad = 0;
+        double       worst = 0.;
+        for (unsigned int q = 0; q < list.size(); ++q)
+          if (list[q].first == group)
+            for (unsigned int i = 0; i < n; ++i, ++count)
+              {
+                const auto  &e         = errors[q][i];
+                const double order_1   = std::log2(e[0] / e[1]);
+                const double order_2   = std::log2(e[1] / e[2]);
+                const bool   round_off = e[0] <= 1e-9 * scale[group];
+                const bool   second =
+                  order_1 >= 1.8 && order_1 <= 2.2 && order_2 >= 1.8 && order_2 <= 2.2;
+                worst = std::max(worst, e[2] / scale[group]);
+                if (!round_off && !second && ++bad <= 3)
+                  std::cout << "    " << group << " #" << q << " coordinate " << i << ": errors "
+                            << e[0] << " " << e[1] << " " << e[2] << std::endl;
+              }
+        std::cout << "  " << group << ": " << count
+                  << " derivatives, error at second order or round-off: "
+                  << (bad == 0 ? "yes" : "NO")
+                  << ", error at h/4 below 1e-5 of the scale: " << (worst < 1e-5 ? "yes" : "NO")
+                  << std::endl;
+      }
+  }
+} // namespace
+
+int
+main()
+{
+  Random random(2027);
+  // The slave: a saddle-shaped, bulging surface, normals up.
+  const Surface slave = [](const double x, const double y) {
+    return Point<3>(x, y, 0.1 * x * y - 0.08 * (x * x + y * y));
+  };
+  // The master: a tilted, curved surface above.
+  const Surface master = [](const double x, const double y) {
+    return Point<3>(x, y, 0.05 + 0.15 * x - 0.1 * y + 0.05 * x * x);
+  };
+  // Master corners in (x, y), turned against the slave face [0, 1]^2.
+  {
+    QuadPairPatch patch = slave_patch(slave);
+    patch.master        = add_master(patch, master, {{{0.5, 0.4}, {1.6, 0.55}, {0.4, 1.5}, {1.5, 1.65}}});
+    perturb(patch, random);
+    check_derivatives("partly overlapping, a master corner inside", patch);
+  }
+  {
+    QuadPairPatch patch = slave_patch(slave);
+    patch.master = add_master(patch, master, {{{-0.3, -0.2}, {1.3, -0.4}, {-0.2, 1.35}, {1.4, 1.2}}});
+    perturb(patch, random);
+    check_derivatives("master covering the slave face", patch);
+  }
+  {
+    QuadPairPatch patch = slave_patch(slave);
+    patch.master        = add_master(patch, master, {{{-0.3, -0.2}, {0.45, -0.3}, {-0.25, 1.3}, {0.55, 1.25}}});
+    const std::map<unsigned int, unsigned int> shared = {{0, patch.master.nodes[1]},
+                                                         {2, patch.master.nodes[3]}};
+    patch.other_masters.push_back(
+      add_master(patch, master, {{{0.45, -0.3}, {1.35, -0.2}, {0.55, 1.25}, {1.3, 1.35}}}, shared));
+    perturb(patch, random);
+    check_derivatives("two masters meeting inside the slave face", patch);
+  }
+}
