@@ -44,7 +44,8 @@ def cauchy_pressure_3d(E, nu, stretch):
 
 contact_fem, patch, sliding = sys.argv[1:4]
 expected = cauchy_pressure_3d(100.0, 0.3, 0.7)
-output = run_scene(contact_fem, patch, "Output/Write pressure profile=true")
+output = run_scene(contact_fem, patch, "Output/Write pressure profile=true",
+                   "Output/Print Newton iterations=true")
 ok = check_quadratic("patch 3D Q1", output, 10.0)
 with open("results/pressure_profile.csv") as f:
     rows = list(csv.DictReader(f))
