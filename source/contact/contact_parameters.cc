@@ -113,8 +113,10 @@ namespace contact_fem
                       "normals and gaps on the deformed surfaces X + u of every "
                       "Newton iterate, with their consistent linearisation in the "
                       "tangent (finite deformation, large sliding; Newton "
-                      "converges quadratically; see doc/finite_strain.md). 2D, "
-                      "'alm frictionless' only.");
+                      "converges quadratically; see doc/finite_strain.md). "
+                      "'alm frictionless' in 2D and in 3D on bilinear faces "
+                      "(geometry degree 1), 'alm frictional' (objective slip) "
+                      "in 2D.");
     prm.declare_entry("Penetration tolerance", "0.05", Patterns::Double(0.),
                       "After a step converges, every slave node is located against "
                       "the whole master surface of its pair (R-tree, closest point). "

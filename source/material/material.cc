@@ -102,9 +102,9 @@ namespace contact_fem
                       "(tr E)^2 + mu E : E), the finite-strain laws solved "
                       "total-Lagrangian with the Lame constants of the body's "
                       "Young's modulus and Poisson's ratio (their small-strain "
-                      "limit is the linear law). Contact stays on the reference "
-                      "configuration (Contact/Kinematics). Empty: every body "
-                      "linear.");
+                      "limit is the linear law). The contact operators follow "
+                      "Contact/Kinematics (the reference configuration by "
+                      "default). Empty: every body linear.");
     prm.leave_subsection();
   }
 
