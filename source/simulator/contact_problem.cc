@@ -942,7 +942,21 @@ namespace contact_fem
     // residual (gap of active nodes, multiplier / k of the others). With
     // it > 0 the multipliers are first recovered from the solution of
     // iteration it and the active set is updated.
-    NewtonMonitor             monitor(newton_parameters, finite_strain != nullptr);
+    NewtonMonitor monitor(newton_parameters, finite_strain != nullptr);
+    {
+      // The model size from the coarse cells, which every rank holds.
+      std::optional<BoundingBox<dim>> box;
+      for (const auto &cell : triangulation.cell_iterators_on_level(0))
+        if (box)
+          box->merge_with(cell->bounding_box());
+        else
+          box = cell->bounding_box();
+      double extent = 0.;
+      for (unsigned int d = 0; d < dim; ++d)
+        extent = std::max(extent, box->side_length(d));
+      monitor.set_scene_units(materials.youngs_modulus_range().second * std::pow(extent, dim - 1),
+                              extent);
+    }
     NewtonMonitor::Assessment assessment;
     // The contact sets after each iteration: a set that comes back after
     // changes means the iteration cycles and would never settle.

@@ -48,7 +48,20 @@ namespace contact_fem
   NewtonMonitor::NewtonMonitor(const NewtonParameters &parameters, const bool nonlinear_bulk)
     : parameters(parameters)
     , nonlinear_bulk(nonlinear_bulk)
+    , absolute_u(parameters.displacement_absolute_tolerance)
+    , absolute_lambda(parameters.multiplier_absolute_tolerance)
   {}
+
+  void
+  NewtonMonitor::set_scene_units(const double force, const double length)
+  {
+    // The defaults (1e-9) are those of a model of unit size and modulus;
+    // a model in smaller units gets the same bounds relative to its own
+    // scale, still seven orders above the round-off of the residuals
+    // (about 1e-16 of the forces and coordinates).
+    absolute_u      = std::min(parameters.displacement_absolute_tolerance, 1e-9 * force);
+    absolute_lambda = std::min(parameters.multiplier_absolute_tolerance, 1e-9 * length);
+  }
 
   NewtonMonitor::Assessment
   NewtonMonitor::assess(const unsigned int iteration,
@@ -66,15 +79,13 @@ namespace contact_fem
     a.ratio_u        = reference_u > 0. ? r_u / reference_u : 0.;
     a.ratio_lambda   = reference_lambda > 0. ? r_lambda / reference_lambda : 0.;
 
-    a.residuals_small = (a.ratio_u <= parameters.displacement_relative_tolerance ||
-                         r_u <= parameters.displacement_absolute_tolerance) &&
-                        (a.ratio_lambda <= parameters.multiplier_relative_tolerance ||
-                         r_lambda <= parameters.multiplier_absolute_tolerance);
+    a.residuals_small =
+      (a.ratio_u <= parameters.displacement_relative_tolerance || r_u <= absolute_u) &&
+      (a.ratio_lambda <= parameters.multiplier_relative_tolerance || r_lambda <= absolute_lambda);
     // Nodes with lambda = 0 and g = 0 to round-off (a gap closing exactly
     // at this load) may flip state forever without changing anything:
     // with both residuals at round-off the active set counts as settled.
-    const bool at_round_off = r_u <= parameters.displacement_absolute_tolerance &&
-                              r_lambda <= parameters.multiplier_absolute_tolerance;
+    const bool at_round_off = r_u <= absolute_u && r_lambda <= absolute_lambda;
     // With a settled active set each further solve returns the same
     // displacement: a residual that stops decreasing is the accuracy of the
     // linear solver (very large stiffness contrasts), not a failure.
@@ -117,8 +128,7 @@ namespace contact_fem
   double
   NewtonMonitor::displacement_target() const
   {
-    return std::max(parameters.displacement_relative_tolerance * reference_u,
-                    parameters.displacement_absolute_tolerance);
+    return std::max(parameters.displacement_relative_tolerance * reference_u, absolute_u);
   }
 
   std::string
@@ -130,11 +140,10 @@ namespace contact_fem
                      const std::optional<unsigned int> &linear_iterations) const
   {
     std::ostringstream s;
-    s << "    | " << std::setw(2) << iteration << " | "
-      << cells(a.ratio_u, last_u, parameters.displacement_absolute_tolerance) << " | "
-      << cells(a.ratio_lambda, last_lambda, parameters.multiplier_absolute_tolerance) << " | "
-      << std::setw(7) << (iteration == 0 ? std::string("-") : std::to_string(changes)) << " | "
-      << std::setw(6) << n_active << " |";
+    s << "    | " << std::setw(2) << iteration << " | " << cells(a.ratio_u, last_u, absolute_u)
+      << " | " << cells(a.ratio_lambda, last_lambda, absolute_lambda) << " | " << std::setw(7)
+      << (iteration == 0 ? std::string("-") : std::to_string(changes)) << " | " << std::setw(6)
+      << n_active << " |";
     s << contact_cells;
     if (linear_iterations)
       s << " " << std::setw(7)
@@ -148,10 +157,8 @@ namespace contact_fem
   std::string
   NewtonMonitor::last_residuals() const
   {
-    return "(last: |r_u| " +
-           residual_text(last_u, parameters.displacement_absolute_tolerance, reference_u) +
-           ", |r_lambda| " +
-           residual_text(last_lambda, parameters.multiplier_absolute_tolerance, reference_lambda) +
-           ", " + std::to_string(last_changes) + " active-set changes)";
+    return "(last: |r_u| " + residual_text(last_u, absolute_u, reference_u) + ", |r_lambda| " +
+           residual_text(last_lambda, absolute_lambda, reference_lambda) + ", " +
+           std::to_string(last_changes) + " active-set changes)";
   }
 } // namespace contact_fem

@@ -50,12 +50,16 @@ namespace contact_fem
                       "r_u of the free DoFs.");
     prm.declare_entry("Displacement absolute tolerance", "1e-9", Patterns::Double(0.),
                       "Absolute bound on |r_u|. Units: force. Must be > 0 "
-                      "(residuals stall at round-off).");
+                      "(residuals stall at round-off). Capped at 1e-9 E_max L^(dim-1) "
+                      "(E_max the largest Young's modulus, L the model's largest "
+                      "extent), so that a scene in small units is not accepted "
+                      "before a unit-sized one would be.");
     prm.declare_entry("Multiplier relative tolerance", "1e-4", Patterns::Double(0.),
                       "Same for the complementarity residual of the multipliers.");
     prm.declare_entry("Multiplier absolute tolerance", "1e-9", Patterns::Double(0.),
                       "Absolute bound on the multiplier residual. Units: length. "
-                      "Must be > 0 (residuals stall at round-off).");
+                      "Must be > 0 (residuals stall at round-off). Capped at 1e-9 L "
+                      "(L the model's largest extent).");
     prm.declare_entry("Damping", "1", Patterns::Double(0.),
                       "Step length alpha in (0, 1] of every Newton update, u <- u + "
                       "alpha du. Below 1 it damps an active set that cycles between "

@@ -29,6 +29,16 @@ namespace contact_fem
     /// round-off (ratio 1e-8).
     explicit NewtonMonitor(const NewtonParameters &parameters, const bool nonlinear_bulk = false);
 
+    /// The scene's own units: @p force = E_max L^(dim-1), the force a unit
+    /// strain of the stiffest body carries over the model size L, and
+    /// @p length = L. The absolute tolerances (in the user's units) are
+    /// capped at 1e-9 of them, so that a scene in small units (a
+    /// micrometre model, a rubber in MPa and metres) does not pass the
+    /// absolute test long before the relative one: the convergence test
+    /// then does not depend on the units.
+    void
+    set_scene_units(const double force, const double length);
+
     /// What the residuals of one iteration say.
     struct Assessment
     {
@@ -95,9 +105,12 @@ namespace contact_fem
   private:
     NewtonParameters parameters;
     bool             nonlinear_bulk;
-    double           reference_u = 0., reference_lambda = 0.;
-    double           last_u = 0., last_lambda = 0., previous_r_u = 0.;
-    unsigned int     previous_changes = 1, last_changes = 0;
+    /// The absolute tolerances in use: the parameters', capped by
+    /// set_scene_units().
+    double       absolute_u, absolute_lambda;
+    double       reference_u = 0., reference_lambda = 0.;
+    double       last_u = 0., last_lambda = 0., previous_r_u = 0.;
+    unsigned int previous_changes = 1, last_changes = 0;
   };
 } // namespace contact_fem
 
