@@ -371,6 +371,8 @@ namespace contact_fem
         }
     system_rhs.reinit(owned_dofs, writable_dofs, comm, true);
     residual.reinit(owned_dofs, writable_dofs, comm, true);
+    if (f_bar())
+      linearised_residual.reinit(owned_dofs, writable_dofs, comm, true);
     select_linear_solver();
   }
 
@@ -688,8 +690,11 @@ namespace contact_fem
   {
     TimerOutput::Scope t(*timer, "Assembly: residual");
     residual = 0.;
+    if (f_bar())
+      linearised_residual = 0.;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    Vector<double> local_u(fe.n_dofs_per_cell()), local_r(fe.n_dofs_per_cell());
+    Vector<double> local_u(fe.n_dofs_per_cell()), local_r(fe.n_dofs_per_cell()),
+      linear_minus_r(fe.n_dofs_per_cell());
     double         local_strain = 0., local_work = 0.;
     double         smallest_jacobian = std::numeric_limits<double>::max();
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -701,6 +706,13 @@ namespace contact_fem
           const unsigned int index = cell->active_cell_index();
           if (finite_strain && finite_strain->law(cell->material_id()))
             {
+              // The last step's linear model at this u, K_T u + offset.
+              const bool linear_model = f_bar() && cell_offsets[index].size() > 0;
+              if (linear_model)
+                {
+                  cell_matrices[index].vmult(linear_minus_r, local_u);
+                  linear_minus_r += cell_offsets[index];
+                }
               // The tangent and offset of the next Newton step, at this u.
               const auto linearisation =
                 finite_strain->linearise(cell, local_u, cell_matrices[index], local_r);
@@ -709,6 +721,12 @@ namespace contact_fem
               cell_offsets[index].reinit(local_u.size());
               cell_matrices[index].vmult(cell_offsets[index], local_u);
               cell_offsets[index].sadd(-1., 1., local_r);
+              if (linear_model)
+                {
+                  linear_minus_r -= local_r;
+                  hanging_constraints.distribute_local_to_global(linear_minus_r, dofs,
+                                                                 linearised_residual);
+                }
             }
           else
             {
@@ -726,6 +744,11 @@ namespace contact_fem
     residual.compress(VectorOperation::add);
     if (tying)
       tying->condense_residual(residual, owned_dofs);
+    if (f_bar())
+      {
+        linearised_residual.compress(VectorOperation::add);
+        linearised_residual += residual;
+      }
     // An inverted element (det F <= 0) has no strain energy: the iterate
     // overshot, a smaller load step may not.
     if (finite_strain)
@@ -850,6 +873,11 @@ namespace contact_fem
         return update;
       }
     interface_displacement = interface->gather(solution);
+    // F-bar: the multipliers of the linear model that gave the iterate, as
+    // the semi-smooth Newton takes them (linearised_residual).
+    const auto reactions = [this] {
+      return interface->gather(f_bar() ? linearised_residual : residual);
+    };
     // Current kinematics: the operators of every iterate on its own
     // configuration (the search then always reaches the iterate).
     if (iteration > 0 && contact_parameters.current_kinematics)
@@ -865,7 +893,7 @@ namespace contact_fem
         // A wider search restarts the active set from the multipliers: they
         // must be this iterate's, or a node held at zero gap would be
         // decided by the round-off of that gap.
-        contact->recover_multipliers(*interface, interface->gather(residual));
+        contact->recover_multipliers(*interface, reactions());
         if (search->extend_if_outrun(interface_displacement))
           {
             update.searched_again = true;
@@ -876,7 +904,7 @@ namespace contact_fem
     interface_residual = interface->gather(residual);
     if (iteration > 0)
       {
-        contact->recover_multipliers(*interface, interface_residual);
+        contact->recover_multipliers(*interface, f_bar() ? reactions() : interface_residual);
         update.changes = contact->update_active_set(*interface, interface_displacement);
       }
     update.residuals = contact->residuals(*interface, interface_displacement);

@@ -27,18 +27,11 @@ steps); every node that sticks at t = 1.5 must be where it was at t =
 moved.
 """
 import csv
-import re
 import sys
 
-from scene_run import check_quadratic, run_scene
+from scene_run import check_quadratic, converged_sets, run_scene
 
 MU = 0.3
-SETS = re.compile(r"^\s*\|[^|]*(?:\|[^|]*){5}\|\s*(\d+)\s*\|\s*(\d+)\s*\|\s*(\d+)\s*\|[^|]*\|\s*converged")
-
-
-def converged_sets(output):
-    """(active, stick, slip) of the converged iterate of every step."""
-    return [tuple(int(g) for g in m.groups()) for m in map(SETS.match, output.splitlines()) if m]
 
 
 def top_reactions():

@@ -25,6 +25,14 @@ def run_scene(contact_fem, scene, *settings, launcher=()):
     return run(command)
 
 
+def perturbation():
+    """The setting that renumbers the DoFs by CONTACT_FEM_PERTURBATION_SEED
+    (as tests/run_perturbed.sh does), if that is set: a script run with
+    seeds 1-3 shows whether what it checks hangs on round-off."""
+    seed = os.environ.get("CONTACT_FEM_PERTURBATION_SEED")
+    return (f"Finite element/DoF renumbering seed={seed}",) if seed else ()
+
+
 ROW = re.compile(r"^\s*\|\s*(\d+)\s*\|\s*([^|]+)\|[^|]+\|[^|]+\|[^|]+\|\s*([^|]+)\|")
 
 
@@ -55,6 +63,15 @@ def newton_table(output):
                 value = None
             steps[-1][0].append(value)
     return steps
+
+
+SETS = re.compile(r"^\s*\|[^|]*(?:\|[^|]*){5}\|\s*(\d+)\s*\|\s*(\d+)\s*\|\s*(\d+)\s*\|[^|]*\|\s*converged")
+
+
+def converged_sets(output):
+    """(active, stick, slip) of the converged iterate of every step (the
+    Newton table of a frictional formulation)."""
+    return [tuple(int(g) for g in m.groups()) for m in map(SETS.match, output.splitlines()) if m]
 
 
 def check_quadratic(name, output, bound):

@@ -377,6 +377,19 @@ namespace contact_fem
     TrilinosWrappers::MPI::Vector solution;         ///< owned
     TrilinosWrappers::MPI::Vector ghosted_solution; ///< locally relevant
     TrilinosWrappers::MPI::Vector residual;         ///< C_h^T (K u - f), writable
+    /// With F-bar bodies: the residual of the linear model that gave the
+    /// iterate (each finite-strain cell's force from the tangent and offset
+    /// of its last step), zero on the free DoFs up to the linear solve; the
+    /// multipliers are recovered from it. The nonlinear remainder that
+    /// residual adds at the contact rows alternates from node to node under
+    /// F-bar and outweighs the reactions (doc/finite_strain.md).
+    TrilinosWrappers::MPI::Vector linearised_residual;
+    /// Whether the finite-strain bodies use F-bar (linearised_residual).
+    bool
+    f_bar() const
+    {
+      return finite_strain && volumetric_projection;
+    }
 
     std::vector<FullMatrix<double>> cell_matrices; ///< by active cell index
     std::vector<Vector<double>>     cell_loads;    ///< by active cell index, may be empty

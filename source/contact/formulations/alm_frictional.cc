@@ -751,6 +751,15 @@ namespace contact_fem
         const Tensor<1, dim> n = frame_normal(s);
         this->pressure[s.node] = -(lambda * n);
         tangential[s.node]     = to_frame(lambda, n);
+        // Current kinematics (2D): a slip node's traction is the one its
+        // slip condition imposed, T(p) d. From the residual it also carries
+        // the change of D_j and n_j over the iteration, which at a node
+        // leaving the master (D_j -> 0 under a large normal force) reversed
+        // it, and the node cycled between stick and slip. (In 3D the
+        // linearised condition leaves a component across d.)
+        if (dim == 2 && current && sets.slips(s.node, this->active))
+          tangential[s.node] =
+            laws[s.pair]->threshold(std::max(this->pressure[s.node], 0.)) * sets.direction[s.node];
       }
   }
 
