@@ -27,7 +27,7 @@ slide; doc/finite_strain.md). Per level:
 - DoFs, wall time, Newton iterations.
 
 Usage: bench/finite_strain/ironing_3d.py [--binary B] [--levels N] [--out DIR]
-       (levels 0 and 1 take about 1 and 8 minutes on one core)
+       (levels 0 and 1 took 1.5 and 13 minutes on one core of a shared machine)
 """
 
 import argparse
