@@ -101,9 +101,10 @@ def plateau_statistics(rows):
 def mesh(level, out):
     """The Gmsh mesh of the level in out (Gmsh on PATH)."""
     path = os.path.join(out, "ironing_3d.msh")
-    subprocess.run(["gmsh", "-3", "-format", "msh22", os.path.join(REPO, "meshes", "ironing_3d.geo"),
-                    "-setnumber", "h", str(0.5 ** level), "-setnumber", "ny", str(2 ** (level + 1)),
-                    "-o", path], check=True, capture_output=True)
+    geo = os.path.join(REPO, "meshes", "ironing_3d.geo")
+    subprocess.run(["gmsh", "-3", "-format", "msh22", geo, "-setnumber", "h", str(0.5 ** level),
+                    "-setnumber", "ny", str(2 ** (level + 1)), "-o", path],
+                   check=True, capture_output=True)
     return path
 
 
