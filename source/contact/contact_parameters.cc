@@ -178,12 +178,11 @@ namespace contact_fem
                                       const unsigned int geometry_degree) const
   {
     // The linearisation of the mortar operators exists for 2D line faces
-    // and 3D bilinear faces; the exact-gap formulations (alm) use it, the
-    // frictional one in 2D only.
+    // and 3D bilinear faces; the exact-gap formulations (alm) use it.
     AssertThrow(!current_kinematics || formulation == "alm frictionless" ||
-                  (dim == 2 && formulation == "alm frictional"),
+                  formulation == "alm frictional",
                 ExcMessage("Contact/Kinematics = current is implemented with "
-                           "Contact/Formulation = alm frictionless, or alm frictional in 2D, "
+                           "Contact/Formulation = alm frictionless or alm frictional "
                            "only (this scene: " +
                            std::to_string(dim) + "D, " + formulation +
                            "). Use Kinematics = updated or small."));

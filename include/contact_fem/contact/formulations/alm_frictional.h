@@ -318,13 +318,16 @@ namespace contact_fem
     };
     std::vector<Operators> converged_operators;
 
-    /// The objective slip xi_j of @p s at @p u and, if @p derivatives is
-    /// not null, d xi_j / du by DoF (current kinematics).
-    double
-    objective_slip(const ContactInterface<dim>                     &interface,
-                   const SlaveNode                                 &s,
-                   const std::vector<double>                       &u,
-                   std::map<types::global_dof_index, double> *derivatives) const;
+    using Row = std::map<types::global_dof_index, double>;
+
+    /// The objective slip xi_j of @p s at @p u in the tangent frame of its
+    /// normal and, if @p derivatives is not null, d xi_j / du by DoF per
+    /// frame component (current kinematics).
+    TangentialVector<dim>
+    objective_slip(const ContactInterface<dim> &interface,
+                   const SlaveNode             &s,
+                   const std::vector<double>   &u,
+                   std::array<Row, dim - 1>    *derivatives) const;
 
     /// Current kinematics: the rows of the linearised gap and (stick) slip
     /// of active node @p s and its geometric stiffness, at @p u.
