@@ -20,7 +20,7 @@
 // and d(D_j x_j - sum_l M_jl x_l)/du (the linearisation's part at held
 // positions plus D_j and -M_jl on the node's own coordinates). In 3D
 // (Q1, bilinear faces: the lower block 3 x 3 cells on its top, the upper
-// 2 x 2) the same checks.
+// 2 x 2, overhanging it by 0.1: no coincident rims) the same checks.
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_handler.h>
