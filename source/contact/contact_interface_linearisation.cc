@@ -21,11 +21,12 @@ namespace contact_fem
     struct NodeSums
     {
       DofMap                                    gap;
-      std::map<types::global_dof_index, DofMap> force, tangent_force;
+      std::map<types::global_dof_index, DofMap>                force;
+      std::array<std::map<types::global_dof_index, DofMap>, 3> tangent_force;
       /// The normal's derivatives come whole from any one pair (its patch
       /// holds every slave face at the node); the operators' are summed.
       bool                  has_normal = false;
-      std::array<DofMap, 2> normal, operators;
+      std::array<DofMap, 3> normal, operators;
     };
 
     /// The face-pair patch and its linearised operators of each dimension.
@@ -111,38 +112,46 @@ namespace contact_fem
     };
 
     /// The frictional derivatives of slave node @p k of a pair (@p result)
-    /// added to @p node: h_j = D_j tau_j on the slave, -M_jl tau_j on master
-    /// l, tau_j = (-n_y, n_x); n_j; D_j x_j - sum_l M_jl x_l at held x.
+    /// added to @p node: per global component c of a held tangential
+    /// traction t = e_c, kept in the tangent plane as n_j turns (dt = -(t .
+    /// dn) n), the force h_j = D_j t on the slave and -M_jl t on master l;
+    /// n_j; D_j x_j - sum_l M_jl x_l at held x.
+    template <int dim>
     void
-    add_frictional(const ContactInterface<2>       &interface,
-                   const std::vector<Tensor<1, 2>> &u,
-                   const PatchBuilder<2>           &builder,
-                   const Mortar::LinearisedPair    &result,
-                   const unsigned int               k,
-                   const std::vector<unsigned int> &slave_nodes,
-                   const std::vector<unsigned int> &master_nodes,
-                   NodeSums                        &node)
+    add_frictional(const ContactInterface<dim>                 &interface,
+                   const std::vector<Tensor<1, dim>>           &u,
+                   const PatchBuilder<dim>                     &builder,
+                   const typename Linearisation<dim>::Result   &result,
+                   const unsigned int                           k,
+                   const std::vector<unsigned int>             &slave_nodes,
+                   const std::vector<unsigned int>             &master_nodes,
+                   NodeSums                                    &node)
     {
-      const auto                &n   = result.normals[k];
-      const std::array<double, 2> tau = {{-n[1].value, n[0].value}};
-      // d tau_d = sign_d d n_(1-d).
-      const std::array<double, 2> sign = {{-1., 1.}};
-      const auto                  x    = [&](const unsigned int node_index) {
+      const auto &n = result.normals[k];
+      const auto  x = [&](const unsigned int node_index) {
         return interface.nodes[node_index].reference + u[node_index];
       };
-      for (unsigned int d = 0; d < 2; ++d)
+      for (unsigned int c = 0; c < dim; ++c)
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            DofMap &row = node.tangent_force[c][interface.nodes[slave_nodes[k]].dofs[d]];
+            if (c == d)
+              builder.add(result.D[k].derivatives, 1., row);
+            builder.add(n[c].derivatives, -result.D[k].value * n[d].value, row);
+            for (unsigned int l = 0; l < result.M[k].size(); ++l)
+              {
+                DofMap &master_row =
+                  node.tangent_force[c][interface.nodes[master_nodes[l]].dofs[d]];
+                if (c == d)
+                  builder.add(result.M[k][l].derivatives, -1., master_row);
+                builder.add(n[c].derivatives, result.M[k][l].value * n[d].value, master_row);
+              }
+          }
+      for (unsigned int d = 0; d < dim; ++d)
         {
-          DofMap &row = node.tangent_force[interface.nodes[slave_nodes[k]].dofs[d]];
-          builder.add(result.D[k].derivatives, tau[d], row);
-          builder.add(n[1 - d].derivatives, sign[d] * result.D[k].value, row);
           builder.add(result.D[k].derivatives, x(slave_nodes[k])[d], node.operators[d]);
           for (unsigned int l = 0; l < result.M[k].size(); ++l)
-            {
-              DofMap &master_row = node.tangent_force[interface.nodes[master_nodes[l]].dofs[d]];
-              builder.add(result.M[k][l].derivatives, -tau[d], master_row);
-              builder.add(n[1 - d].derivatives, -sign[d] * result.M[k][l].value, master_row);
-              builder.add(result.M[k][l].derivatives, -x(master_nodes[l])[d], node.operators[d]);
-            }
+            builder.add(result.M[k][l].derivatives, -x(master_nodes[l])[d], node.operators[d]);
           if (!node.has_normal)
             builder.add(n[d].derivatives, 1., node.normal[d]);
         }
@@ -159,6 +168,7 @@ namespace contact_fem
              const unsigned int                m,
              const std::vector<unsigned int>  &neighbours,
              const std::vector<unsigned int>  &masters,
+             const bool                        frictional,
              std::map<unsigned int, NodeSums> &sums)
     {
       PatchBuilder<dim> builder(interface, u);
@@ -195,8 +205,7 @@ namespace contact_fem
                   builder.add(n[d].derivatives, result.M[k][l].value, master_row);
                 }
             }
-          // Friction at finite deformation: 2D only (check_kinematics()).
-          if constexpr (dim == 2)
+          if (frictional)
             add_frictional(interface, u, builder, result, k, slave_nodes, master_nodes, node);
         }
     }
@@ -224,10 +233,10 @@ namespace contact_fem
       result.gap = at(sums.gap);
       for (const auto &[row, values] : sums.force)
         result.force.emplace_back(row, at(values));
-      for (const auto &[row, values] : sums.tangent_force)
-        result.tangent_force.emplace_back(row, at(values));
-      for (unsigned int d = 0; d < 2; ++d)
+      for (unsigned int d = 0; d < dim; ++d)
         {
+          for (const auto &[row, values] : sums.tangent_force[d])
+            result.tangent_force[d].emplace_back(row, at(values));
           result.normal[d]    = at(sums.normal[d]);
           result.operators[d] = at(sums.operators[d]);
         }
@@ -237,7 +246,7 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactInterface<dim>::linearise()
+  ContactInterface<dim>::linearise(const bool frictional)
   {
     linearised_nodes.clear();
       {
@@ -265,7 +274,7 @@ namespace contact_fem
                   neighbours.insert(g);
             add_pair(*this, u, f, m,
                      std::vector<unsigned int>(neighbours.begin(), neighbours.end()),
-                     masters_of_face[f], sums);
+                     masters_of_face[f], frictional, sums);
           }
         for (const auto &[n, node_sums] : sums)
           linearised_nodes[n] = linearised_node<dim>(node_sums);
@@ -273,7 +282,7 @@ namespace contact_fem
   }
 
   template void
-  ContactInterface<2>::linearise();
+  ContactInterface<2>::linearise(const bool);
   template void
-  ContactInterface<3>::linearise();
+  ContactInterface<3>::linearise(const bool);
 } // namespace contact_fem

@@ -114,9 +114,9 @@ namespace contact_fem
                       "Newton iterate, with their consistent linearisation in the "
                       "tangent (finite deformation, large sliding; Newton "
                       "converges quadratically; see doc/finite_strain.md). "
-                      "'alm frictionless' in 2D and in 3D on bilinear faces "
-                      "(geometry degree 1), 'alm frictional' (objective slip) "
-                      "in 2D.");
+                      "'alm frictionless' and 'alm frictional' (objective "
+                      "slip), in 2D and in 3D on bilinear faces (geometry "
+                      "degree 1).");
     prm.declare_entry("Penetration tolerance", "0.05", Patterns::Double(0.),
                       "After a step converges, every slave node is located against "
                       "the whole master surface of its pair (R-tree, closest point). "
@@ -178,12 +178,11 @@ namespace contact_fem
                                       const unsigned int geometry_degree) const
   {
     // The linearisation of the mortar operators exists for 2D line faces
-    // and 3D bilinear faces; the exact-gap formulations (alm) use it, the
-    // frictional one in 2D only.
+    // and 3D bilinear faces; the exact-gap formulations (alm) use it.
     AssertThrow(!current_kinematics || formulation == "alm frictionless" ||
-                  (dim == 2 && formulation == "alm frictional"),
+                  formulation == "alm frictional",
                 ExcMessage("Contact/Kinematics = current is implemented with "
-                           "Contact/Formulation = alm frictionless, or alm frictional in 2D, "
+                           "Contact/Formulation = alm frictionless or alm frictional "
                            "only (this scene: " +
                            std::to_string(dim) + "D, " + formulation +
                            "). Use Kinematics = updated or small."));

@@ -57,7 +57,7 @@ namespace contact_fem
   {
     interface.update(configuration, parameters.search_factor, motion_allowance);
     if (parameters.current_kinematics)
-      interface.linearise();
+      interface.linearise(contact.transmits_shear());
   }
 
   template <int dim>

@@ -20,7 +20,7 @@ iterate):
 
 And the stick condition is objective and exact: on a rigid flat master
 (its top held in x and y) the objective slip of a slave node j reduces to
-D_j^n (x_j - x_j^n) . tau, so a node that sticks through a load step keeps
+D_j^n / D_j (x_j - x_j^n) . tau, so a node that sticks through a load step keeps
 its position. The scene is run to t = 1.25 and to t = 1.5 (the same
 steps); every node that sticks at t = 1.5 must be where it was at t =
 1.25, to 1e-10 of the block's width, and a node that slips must have

@@ -13,10 +13,14 @@
 // differences (the linearisation misses no coupling). The coupled face
 // pairs are the same at every perturbed configuration (no branch switch
 // inside a difference). The frictional quantities likewise (alm frictional
-// with current kinematics): dh_j/du (h_j = D_j tau_j on the slave node,
-// -M_jl tau_j on master l), dn_j/du, and d(D_j x_j - sum_l M_jl x_l)/du
-// (the linearisation's part at held positions plus D_j and -M_jl on the
-// node's own coordinates).
+// with current kinematics): dh_j/du (h_j = D_j t on the slave node, -M_jl t
+// on master l, for t = tau_k, each tangent of the node's frame at u, held
+// in the tangent plane as n_j turns: t(v) = tau_k - (tau_k . n_j(v))
+// n_j(v); the linearisation's per global component, combined), dn_j/du,
+// and d(D_j x_j - sum_l M_jl x_l)/du (the linearisation's part at held
+// positions plus D_j and -M_jl on the node's own coordinates). In 3D
+// (Q1, bilinear faces: the lower block 3 x 3 cells on its top, the upper
+// 2 x 2, overhanging it by 0.1: no coincident rims) the same checks.
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -28,12 +32,15 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <contact_fem/contact/contact_interface.h>
+#include <contact_fem/contact/friction/stick_slip_sets.h>
 #include <contact_fem/material/material.h>
 
 #include "unit_test_blocks.h"
 #include "unit_test_materials.h"
 #include "unit_test_random.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <map>
@@ -44,23 +51,31 @@ using namespace contact_fem;
 namespace
 {
   /// The quantities of a node: (kind, index), kind gap (index 0), force
-  /// or tangent_force (index the row DoF), normal or operators (index the
-  /// component).
+  /// or tangent_force + k (tangent k of the frame; index the row DoF),
+  /// normal or operators (index the component).
   enum Kind
   {
     gap,
     force,
-    tangent_force,
     normal,
-    operators
+    operators,
+    tangent_force
   };
-  using Key = std::pair<Kind, types::global_dof_index>;
+  using Key = std::pair<int, types::global_dof_index>;
 
   /// Per paired slave node: the quantities by key, at the last update().
   using Values = std::map<unsigned int, std::map<Key, double>>;
 
+  /// The tangents of the frame of every paired slave node at the
+  /// linearisation's configuration.
+  template <int dim>
+  using Frames = std::map<unsigned int, std::array<Tensor<1, dim>, dim - 1>>;
+
+  template <int dim>
   Values
-  values_of(const ContactInterface<2> &interface, const std::vector<double> &u)
+  values_of(const ContactInterface<dim> &interface,
+            const std::vector<double>   &u,
+            const Frames<dim>           &frames)
   {
     Values result;
     for (const auto &s : interface.slave_nodes)
@@ -68,20 +83,29 @@ namespace
         {
           auto &node     = result[s.node];
           node[{gap, 0}] = s.D * interface.gap(s, u);
-          const Tensor<1, 2> tau({-s.normal[1], s.normal[0]});
-          const auto         x = [&](const unsigned int n) {
+          const auto x   = [&](const unsigned int n) {
             return interface.nodes[n].reference + interface.displacement(n, u);
           };
-          for (unsigned int d = 0; d < 2; ++d)
+          for (unsigned int k = 0; k < dim - 1; ++k)
+            {
+              // The frame tangent held in the tangent plane of n(u).
+              const Tensor<1, dim> &tau = frames.at(s.node)[k];
+              const Tensor<1, dim>  t   = tau - (tau * s.normal) * s.normal;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  node[{tangent_force + k, interface.nodes[s.node].dofs[d]}] += s.D * t[d];
+                  for (const auto &[m, value] : s.M)
+                    node[{tangent_force + k, interface.nodes[m].dofs[d]}] += -value * t[d];
+                }
+            }
+          for (unsigned int d = 0; d < dim; ++d)
             {
               node[{force, interface.nodes[s.node].dofs[d]}] += -s.D * s.normal[d];
-              node[{tangent_force, interface.nodes[s.node].dofs[d]}] += s.D * tau[d];
               node[{normal, d}]    = s.normal[d];
               node[{operators, d}] = s.D * x(s.node)[d];
               for (const auto &[m, value] : s.M)
                 {
                   node[{force, interface.nodes[m].dofs[d]}] += value * s.normal[d];
-                  node[{tangent_force, interface.nodes[m].dofs[d]}] += -value * tau[d];
                   node[{operators, d}] -= value * x(m)[d];
                 }
             }
@@ -91,9 +115,10 @@ namespace
 
   /// The derivative of component @p d of D_j x_j - sum_l M_jl x_l along
   /// @p dof through the positions themselves (the linearisation holds them).
+  template <int dim>
   double
-  direct_part(const ContactInterface<2>                &interface,
-              const ContactInterface<2>::SlaveNode     &s,
+  direct_part(const ContactInterface<dim>                  &interface,
+              const typename ContactInterface<dim>::SlaveNode &s,
               const unsigned int                        d,
               const types::global_dof_index             dof)
   {
@@ -106,11 +131,13 @@ namespace
 
   /// The analytic derivative of entry @p key of node @p n along DoF @p dof
   /// (0 outside the node's patch).
+  template <int dim>
   double
-  analytic(const ContactInterface<2>                &interface,
-           const unsigned int                        n,
-           const Key                                &key,
-           const types::global_dof_index             dof)
+  analytic(const ContactInterface<dim> &interface,
+           const Frames<dim>           &frames,
+           const unsigned int           n,
+           const Key                   &key,
+           const types::global_dof_index dof)
   {
     const auto &node = interface.linearised_nodes.at(n);
     double      held = 0.;
@@ -122,6 +149,12 @@ namespace
     if (it == node.dofs.end())
       return held;
     const unsigned int i = it - node.dofs.begin();
+    const auto row = [&](const auto &rows) {
+      for (const auto &[r, values] : rows)
+        if (r == key.second)
+          return values[i];
+      return 0.;
+    };
     switch (key.first)
       {
         case gap:
@@ -130,31 +163,59 @@ namespace
           return node.normal[key.second][i];
         case operators:
           return held + node.operators[key.second][i];
+        case force:
+          return row(node.force);
         default:
-          for (const auto &[row, values] : key.first == force ? node.force : node.tangent_force)
-            if (row == key.second)
-              return values[i];
-          return 0.;
+          {
+            // Per global component c of the held traction, combined.
+            const Tensor<1, dim> &tau    = frames.at(n)[key.first - tangent_force];
+            double                result = 0.;
+            for (unsigned int c = 0; c < dim; ++c)
+              result += tau[c] * row(node.tangent_force[c]);
+            return result;
+          }
       }
   }
 
+  /// The two stacked blocks of the test in @p tria.
   void
-  run(const unsigned int degree, const unsigned int mapping_degree)
+  make_blocks(Triangulation<2> &tria)
   {
-    Triangulation<2> tria, lower, upper;
+    Triangulation<2> lower, upper;
     GridGenerator::subdivided_hyper_rectangle(lower, {3, 1}, Point<2>(0., 0.), Point<2>(1., 1.));
     GridGenerator::subdivided_hyper_rectangle(upper, {2, 1}, Point<2>(0., 1.05),
                                               Point<2>(1., 2.05));
     GridGenerator::merge_triangulations(lower, upper, tria);
+  }
+
+  void
+  make_blocks(Triangulation<3> &tria)
+  {
+    Triangulation<3> lower, upper;
+    GridGenerator::subdivided_hyper_rectangle(lower, {3, 3, 1}, Point<3>(0., 0., 0.),
+                                              Point<3>(1., 1., 1.));
+    // The upper block overhangs the lower one: no coincident rims, whose
+    // clipping would change topology inside a difference.
+    GridGenerator::subdivided_hyper_rectangle(upper, {2, 2, 1}, Point<3>(-0.1, -0.1, 1.05),
+                                              Point<3>(1.1, 1.1, 2.05));
+    GridGenerator::merge_triangulations(lower, upper, tria);
+  }
+
+  template <int dim>
+  void
+  run(const unsigned int degree, const unsigned int mapping_degree)
+  {
+    Triangulation<dim> tria;
+    make_blocks(tria);
     label_stacked_blocks(tria, 0.05);
-    const FESystem<2> fe(FE_Q<2>(degree), 2);
-    DoFHandler<2>     dof_handler(tria);
+    const FESystem<dim> fe(FE_Q<dim>(degree), dim);
+    DoFHandler<dim>     dof_handler(tria);
     dof_handler.distribute_dofs(fe);
-    const MappingQ<2>         mapping(mapping_degree);
-    const Materials<2>        materials = make_materials<2>("1, 2", "100, 200", "0.3, 0.3");
+    const MappingQ<dim>       mapping(mapping_degree);
+    const Materials<dim>      materials = make_materials<dim>("1, 2", "100, 200", "0.3, 0.3");
     AffineConstraints<double> none;
     none.close();
-    ContactInterface<2> interface;
+    ContactInterface<dim> interface;
     interface.initialize(mapping, dof_handler, {ContactPair{3, 4}}, none, none, materials,
                          MPI_COMM_WORLD);
 
@@ -163,9 +224,13 @@ namespace
     for (double &value : u)
       value = 0.02 * random.next();
     interface.update(u, 3.);
-    interface.linearise();
+    interface.linearise(true);
     const auto  coupled = interface.coupled_faces;
     const auto &linear  = interface.linearised_nodes;
+    Frames<dim> frames;
+    for (const auto &s : interface.slave_nodes)
+      if (s.paired)
+        frames[s.node] = tangent_frame(s.normal);
 
     // Differences at h and h / 2 of every entry along every DoF.
     const auto differences = [&](const double h) {
@@ -178,10 +243,10 @@ namespace
             {
               std::vector<double> v = u;
               v[i] += side == 0 ? h : -h;
-              ContactInterface<2> moved = interface;
+              ContactInterface<dim> moved = interface;
               moved.update(v, 3.);
               same_pairs = same_pairs && moved.coupled_faces == coupled;
-              at[side]   = values_of(moved, v);
+              at[side]   = values_of(moved, v, frames);
             }
           for (const auto &[n, entries] : at[0])
             for (const auto &[key, value] : entries)
@@ -201,10 +266,10 @@ namespace
         const auto &node  = linear.at(entry.first);
         double      scale = 0.;
         for (const auto &[dof, value] : by_dof)
-          scale = std::max(scale, std::abs(analytic(interface, entry.first, entry.second, dof)));
+          scale = std::max(scale, std::abs(analytic(interface, frames, entry.first, entry.second, dof)));
         for (const auto &[dof, value] : by_dof)
           {
-            const double exact = analytic(interface, entry.first, entry.second, dof);
+            const double exact = analytic(interface, frames, entry.first, entry.second, dof);
             const double e1    = std::abs(value - exact) / scale;
             const double e2    = std::abs(fine.at(entry).at(dof) - exact) / scale;
             const double e3    = std::abs(tight.at(entry).at(dof) - exact) / scale;
@@ -218,7 +283,7 @@ namespace
               second_order = second_order && e1 / e2 > 3.5 && e1 / e2 < 4.5;
           }
       }
-    std::cout << "Q" << degree << " on a mapping of degree " << mapping_degree << ": "
+    std::cout << dim << "D, Q" << degree << " on a mapping of degree " << mapping_degree << ": "
               << linear.size() << " paired slave nodes, " << interface.coupled_faces.size()
               << " coupled face pairs" << std::endl
               << "  same face pairs at every perturbed configuration: "
@@ -240,8 +305,10 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  run(1, 1);
-  run(2, 2);
+  run<2>(1, 1);
+  run<2>(2, 2);
   // Q1 faces with a geometry point (moving with the vertices).
-  run(1, 2);
+  run<2>(1, 2);
+  // 3D: bilinear faces only.
+  run<3>(1, 1);
 }

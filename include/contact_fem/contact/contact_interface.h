@@ -150,14 +150,18 @@ namespace contact_fem
       /// (-D_j n_j on the slave node, +M_jl n_j on master l): (row, values
       /// at dofs).
       std::vector<std::pair<types::global_dof_index, std::vector<double>>> force;
-      /// The same for the tangential force per unit traction h_j (D_j tau_j
-      /// on the slave, -M_jl tau_j on master l; tau_j = n_j turned
-      /// counterclockwise), the rows of @p force.
-      std::vector<std::pair<types::global_dof_index, std::vector<double>>> tangent_force;
-      /// d n_j / du, per component (frictional conditions).
+      /// Per global component c, the same for the force of a held unit
+      /// tangential traction t = e_c (D_j t on the slave, -M_jl t on master
+      /// l), t kept in the tangent plane as n_j turns: dt = -(t . dn_j) n_j
+      /// (in 2D the turn of the tangent). The rows of @p force. Frictional
+      /// only (linearise()).
+      std::array<std::vector<std::pair<types::global_dof_index, std::vector<double>>>, dim>
+        tangent_force;
+      /// d n_j / du, per component (frictional only).
       std::array<std::vector<double>, dim> normal;
       /// d (D_j x_j - sum_l M_jl x_l) / du with the positions x held: the
-      /// operators' part of the objective slip, per component.
+      /// operators' part of the objective slip, per component (frictional
+      /// only).
       std::array<std::vector<double>, dim> operators;
     };
 
@@ -237,9 +241,10 @@ namespace contact_fem
            const std::vector<double> &motion_allowance = {});
 
     /// linearised_nodes of the paired slave nodes at the configuration of
-    /// the last update() (2D only; contact_interface_linearisation.cc).
+    /// the last update() (contact_interface_linearisation.cc); with the
+    /// quantities of the frictional conditions if @p frictional.
     void
-    linearise();
+    linearise(const bool frictional);
 
     /// Per pair: a bound of how far the slave surface moved relative to the
     /// master from @p from to @p to (both at dofs()): the largest slave plus

@@ -57,26 +57,25 @@ namespace contact_fem
                                      const std::vector<double>   &u) const
   {
     if (current)
-      {
-        TangentialVector<dim> xi;
-        xi[0] = objective_slip(interface, s, u, nullptr);
-        return xi;
-      }
+      return objective_slip(interface, s, u, nullptr);
     return to_frame(weighted_relative_displacement(interface, s, converged_displacement, u),
                     frame_normal(s));
   }
 
   template <int dim>
-  double
-  AlmFrictional<dim>::objective_slip(const ContactInterface<dim>               &interface,
-                                     const SlaveNode                           &s,
-                                     const std::vector<double>                 &u,
-                                     std::map<types::global_dof_index, double> *derivatives) const
+  TangentialVector<dim>
+  AlmFrictional<dim>::objective_slip(const ContactInterface<dim> &interface,
+                                     const SlaveNode             &s,
+                                     const std::vector<double>   &u,
+                                     std::array<Row, dim - 1>    *derivatives) const
   {
-    AssertThrow(dim == 2, ExcNotImplemented());
-    // xi_j = -tau_j . w_j, w_j = sum_a c_a x_a over the slave node (c = D_j
+    // xi_j = -P w_j / D_j, P the projection onto the tangent plane (in the
+    // frame tau_k of n_j), w_j = sum_a c_a x_a over the slave node (c = D_j
     // - D_j^n) and its masters now and at the last accepted step (c =
-    // -(M_jl - M_jl^n)): the operators' change at the current positions.
+    // -(M_jl - M_jl^n)): the operators' change at the current positions,
+    // per unit D_j, a length like the small path's slip (weighted by D_j,
+    // c xi_j would fall with the face area, h^2 in 3D, and the stick/slip
+    // decision would follow the pressure's change instead of the slip).
     const Operators               &old = converged_operators[s.node];
     std::map<unsigned int, double> coefficient;
     coefficient[s.node] += s.D - old.D;
@@ -84,27 +83,40 @@ namespace contact_fem
       coefficient[m] -= value;
     for (const auto &[m, value] : old.M)
       coefficient[m] += value;
-    const Tensor<1, dim> tau = ContactFormulation<dim>::tangent(s.normal);
-    Tensor<1, dim>       w;
+    const auto     frame = tangent_frame(s.normal);
+    Tensor<1, dim> w;
     for (const auto &[node, c] : coefficient)
       w += c * (interface.nodes[node].reference + interface.displacement(node, u));
-    if (derivatives)
+    TangentialVector<dim> xi;
+    for (unsigned int k = 0; k < dim - 1; ++k)
+      xi[k] = -(frame[k] * w) / s.D;
+    if (!derivatives)
+      return xi;
+    // d xi_k = (-tau_k . dw - d tau_k . w) / D_j, the frame held in the
+    // tangent plane as n turns: d tau_k = -(tau_k . dn) n (in 2D the turn
+    // of tau). dw: c_a dx_a, and the operators' derivatives at held x. D_j
+    // is held: its part, -xi_k dD_j / D_j, vanishes where the derivative
+    // matters (xi = 0 on a stick node, e . xi = 0 across a slip direction).
+    const auto  &linearised  = interface.linearised_nodes.at(s.node);
+    const double normal_part = s.normal * w;
+    for (unsigned int k = 0; k < dim - 1; ++k)
       {
+        Row &row = (*derivatives)[k];
         for (const auto &[node, c] : coefficient)
           for (unsigned int d = 0; d < dim; ++d)
-            (*derivatives)[interface.nodes[node].dofs[d]] -= c * tau[d];
-        // d tau = (-d n_y, d n_x); the operators' derivatives at held x.
-        const auto &linearised = interface.linearised_nodes.at(s.node);
+            row[interface.nodes[node].dofs[d]] -= c * frame[k][d] / s.D;
         for (unsigned int i = 0; i < linearised.dofs.size(); ++i)
           {
-            const double dtau_w = -linearised.normal[1][i] * w[0] + linearised.normal[0][i] * w[1];
-            double       tau_s  = 0.;
+            double tau_dn = 0., tau_dw = 0.;
             for (unsigned int d = 0; d < dim; ++d)
-              tau_s += tau[d] * linearised.operators[d][i];
-            (*derivatives)[linearised.dofs[i]] -= dtau_w + tau_s;
+              {
+                tau_dn += frame[k][d] * linearised.normal[d][i];
+                tau_dw += frame[k][d] * linearised.operators[d][i];
+              }
+            row[linearised.dofs[i]] += (tau_dn * normal_part - tau_dw) / s.D;
           }
       }
-    return -(tau * w);
+    return xi;
   }
 
   template <int dim>
@@ -609,23 +621,53 @@ namespace contact_fem
             dofs.push_back(master.dofs[d]);
             gradient.push_back(-value / s.D * e[d]);
           }
-    const std::vector<double> zero(interface.dofs().size(), 0.);
-    const double              old_slip =
-      e * weighted_relative_displacement(interface, s, zero, converged_displacement) - fixed_slip;
-    const double       factor = s.D * cone_stiffness[s.node];
-    const unsigned int size   = dofs.size();
-    FullMatrix<double> local_matrix(size, size);
-    Vector<double>     local_rhs(size), inhomogeneity(size);
-    for (unsigned int a = 0; a < size; ++a)
+    // The columns: the gradient of e . xi and its offset z, e . xi = gradient
+    // . u - z; of the objective slip at the search configuration u_k for
+    // current kinematics (z = gradient . u_k - e . xi(u_k)).
+    std::vector<types::global_dof_index> columns  = dofs;
+    std::vector<double>                  entries  = gradient;
+    double                               z        = 0.;
+    if (current)
       {
-        for (unsigned int b = 0; b < size; ++b)
-          local_matrix(a, b) = factor * gradient[a] * gradient[b];
-        local_rhs(a) = factor * old_slip * gradient[a];
-        if (constraints.is_constrained(dofs[a]))
-          inhomogeneity(a) = -constraints.get_inhomogeneity(dofs[a]);
+        columns.clear();
+        entries.clear();
+        const std::vector<double>  &u = interface.search_configuration();
+        std::array<Row, dim - 1>    slip_rows;
+        const TangentialVector<dim> xi     = objective_slip(interface, s, u, &slip_rows);
+        const TangentialVector<dim> e_part = to_frame(e, n);
+        z                                  = -(e_part * xi);
+        Row column;
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          for (const auto &[dof, entry] : slip_rows[k])
+            column[dof] += e_part[k] * entry;
+        for (const auto &[dof, entry] : column)
+          if (!interface.dof_fixed(interface.position(dof)))
+            {
+              columns.push_back(dof);
+              entries.push_back(entry);
+              z += entry * u[interface.position(dof)];
+            }
       }
+    else
+      {
+        const std::vector<double> zero(interface.dofs().size(), 0.);
+        z = e * weighted_relative_displacement(interface, s, zero, converged_displacement) -
+            fixed_slip;
+      }
+    const double       factor = s.D * cone_stiffness[s.node];
+    FullMatrix<double> local_matrix(dofs.size(), columns.size());
+    Vector<double>     local_rhs(dofs.size()), inhomogeneity(columns.size());
+    for (unsigned int a = 0; a < dofs.size(); ++a)
+      {
+        for (unsigned int b = 0; b < columns.size(); ++b)
+          local_matrix(a, b) = factor * gradient[a] * entries[b];
+        local_rhs(a) = factor * z * gradient[a];
+      }
+    for (unsigned int b = 0; b < columns.size(); ++b)
+      if (constraints.is_constrained(columns[b]))
+        inhomogeneity(b) = -constraints.get_inhomogeneity(columns[b]);
     local_matrix.vmult_add(local_rhs, inhomogeneity);
-    test_constraints.distribute_local_to_global(local_matrix, dofs, constraints, dofs, matrix);
+    test_constraints.distribute_local_to_global(local_matrix, dofs, constraints, columns, matrix);
     test_constraints.distribute_local_to_global(local_rhs, dofs, rhs);
   }
 
@@ -639,7 +681,6 @@ namespace contact_fem
                                        TrilinosWrappers::SparseMatrix  &matrix,
                                        TrilinosWrappers::MPI::Vector   &rhs) const
   {
-    using Row = std::map<types::global_dof_index, double>;
     // The rows of the DoFs the test space eliminates: k (value + row . (u -
     // u_k)) = 0, k the pair's scale; Dirichlet columns drop out (u_k holds
     // their values).
@@ -680,18 +721,25 @@ namespace contact_fem
     add_row(gap_component, gap_row, s.D * interface.gap(s, u));
     if (sticks)
       {
-        Row          slip_row;
-        const double xi = objective_slip(interface, s, u, &slip_row);
-        add_row(1 - gap_component, slip_row, xi);
+        // xi_j = 0, one frame component in each of the other rows.
+        std::array<Row, dim - 1>    slip_rows;
+        const TangentialVector<dim> xi = objective_slip(interface, s, u, &slip_rows);
+        for (unsigned int k = 0, component = 0; k < dim - 1; ++k, ++component)
+          {
+            component += component == gap_component;
+            add_row(component, slip_rows[k], xi[k]);
+          }
       }
 
-    // The geometric stiffness -p df/du - t dh/du in the test space, its
-    // part at u_k on the right-hand side (Newton for the total u).
-    const double p = this->pressure[s.node];
-    const double t = sticks   ? tangential[s.node][0] :
-                     friction ? sets.direction[s.node][0] * laws[s.pair]->threshold(p) :
-                                0.;
-    if (p == 0. && t == 0.)
+    // The geometric stiffness -p df/du - t_c dh^c/du in the test space
+    // (t the tangential traction), its part at u_k on the right-hand side
+    // (Newton for the total u).
+    const double         p = this->pressure[s.node];
+    const Tensor<1, dim> t =
+      sticks   ? to_global(tangential[s.node], s.normal) :
+      friction ? laws[s.pair]->threshold(p) * to_global(sets.direction[s.node], s.normal) :
+                 Tensor<1, dim>();
+    if (p == 0. && t.norm_square() == 0.)
       return;
     std::vector<types::global_dof_index> columns, rows;
     std::vector<unsigned int>            kept, kept_rows;
@@ -713,8 +761,10 @@ namespace contact_fem
       for (unsigned int a = 0; a < kept.size(); ++a)
         {
           const unsigned int row = kept_rows[r];
-          stiffness(r, a)        = -p * linearised.force[row].second[kept[a]] -
-                            t * linearised.tangent_force[row].second[kept[a]];
+          stiffness(r, a)        = -p * linearised.force[row].second[kept[a]];
+          if (friction)
+            for (unsigned int c = 0; c < dim; ++c)
+              stiffness(r, a) -= t[c] * linearised.tangent_force[c][row].second[kept[a]];
           stiffness_rhs(r) += stiffness(r, a) * u[interface.position(columns[a])];
         }
     test_constraints.distribute_local_to_global(stiffness, rows, constraints, columns, matrix);

@@ -56,18 +56,21 @@ namespace contact_fem
    * The slip is measured from the last accepted load step with the current
    * operators (small sliding): a load step is a physical increment.
    *
-   * Contact/Kinematics = current (2D): the operators of every Newton
-   * iterate on its configuration, the frame the slave normal n_j, and the
-   * objective slip of Gitterle, Popp et al.: xi_j = -tau_j . ((D_j - D_j^n)
-   * x_j - sum_l (M_jl - M_jl^n) x_l), the change of the operators since
-   * the last accepted step (^n) at the current positions, zero under any
-   * rigid motion of the pair. The trial space is free; the test space is
-   * that of the small path (stick: v_j = sum_l M_jl / D_j v_l; slip: the
-   * line normal to w), and the rows it eliminates hold the linearised gap
-   * and, for a stick node, the linearised xi_j = 0. The geometric
-   * stiffness -p_j df_j/du - t_j dh_j/du (f_j, h_j the force per unit
-   * normal and tangential traction; t_j = sigma T(p_j) when slipping)
-   * makes the tangent consistent (assemble_current()).
+   * Contact/Kinematics = current (2D, 3D on bilinear faces): the operators
+   * of every Newton iterate on its configuration, the frame the slave
+   * normal n_j, and the objective slip of Gitterle, Popp et al. per unit
+   * D_j: xi_j = -P_j ((D_j - D_j^n) x_j - sum_l (M_jl - M_jl^n) x_l) / D_j
+   * (P_j onto the tangent plane, in the frame), the change of the
+   * operators since the last accepted step (^n) at the current positions,
+   * zero under any rigid motion of the pair. The trial space is free; the
+   * test space is that of the small path (stick: v_j = sum_l M_jl / D_j
+   * v_l; slip: normal to the test normal), and the rows it eliminates hold
+   * the linearised gap and, for a stick node, the linearised xi_j = 0 (per
+   * frame component). The geometric stiffness -p_j df_j/du - t . dh_j/du
+   * (f_j the force per unit pressure, h_j per unit tangential traction
+   * held in the tangent plane; t_j = T(p_j) d_j when slipping) makes the
+   * tangent consistent (assemble_current()); in 3D the cone term takes
+   * d(e . xi_j)/du of the objective slip.
    */
   template <int dim>
   class AlmFrictional : public FrictionalFormulation<dim, FrictionlessFormulation<dim>>
@@ -318,13 +321,16 @@ namespace contact_fem
     };
     std::vector<Operators> converged_operators;
 
-    /// The objective slip xi_j of @p s at @p u and, if @p derivatives is
-    /// not null, d xi_j / du by DoF (current kinematics).
-    double
-    objective_slip(const ContactInterface<dim>                     &interface,
-                   const SlaveNode                                 &s,
-                   const std::vector<double>                       &u,
-                   std::map<types::global_dof_index, double> *derivatives) const;
+    using Row = std::map<types::global_dof_index, double>;
+
+    /// The objective slip xi_j of @p s at @p u in the tangent frame of its
+    /// normal and, if @p derivatives is not null, d xi_j / du by DoF per
+    /// frame component (current kinematics).
+    TangentialVector<dim>
+    objective_slip(const ContactInterface<dim> &interface,
+                   const SlaveNode             &s,
+                   const std::vector<double>   &u,
+                   std::array<Row, dim - 1>    *derivatives) const;
 
     /// Current kinematics: the rows of the linearised gap and (stick) slip
     /// of active node @p s and its geometric stiffness, at @p u.
