@@ -201,8 +201,8 @@ namespace contact_fem
         else
           {
             // |sp - sq| = |edge| |pq| sin(angle between them).
-            const double sine = std::abs(value_of(sp - sq)) /
-                                (value_of(edge.norm()) * value_of(pq.norm()));
+            const double sine =
+              std::abs(value_of(sp - sq)) / (value_of(edge.norm()) * value_of(pq.norm()));
             return sine > 1e-10 ? fraction : Number(value_of(fraction));
           }
       }

@@ -903,8 +903,7 @@ namespace contact_fem
     // current configuration) and was regular in an earlier solve of this
     // load path: the supports hold the bodies, this iterate is far from
     // equilibrium (or past a limit point), and a smaller step may not be.
-    if ((finite_strain || (contact && contact_parameters.current_kinematics)) &&
-        regular_solve_seen)
+    if ((finite_strain || (contact && contact_parameters.current_kinematics)) && regular_solve_seen)
       return NewtonFailure(what +
                            ": the tangent of this iterate is singular, although an earlier "
                            "solve of this load path was regular (the bodies are held). Hint: "

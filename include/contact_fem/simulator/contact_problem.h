@@ -363,7 +363,8 @@ namespace contact_fem
     bool start_tangent_kept = false;
     /// A solve of this load path had no zero pivot (singular_failure()).
     bool regular_solve_seen = false;
-    IndexSet                               owned_dofs, relevant_dofs, writable_dofs;
+
+    IndexSet owned_dofs, relevant_dofs, writable_dofs;
 
     AffineConstraints<double>            hanging_constraints;
     AffineConstraints<double>            dirichlet_constraints;
