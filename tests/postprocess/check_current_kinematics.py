@@ -24,11 +24,14 @@ import sys
 from scene_run import check_quadratic, run_scene
 
 
-def cauchy_pressure(E, nu, stretch):
+def cauchy_pressure(E, nu, stretch, dim=2):
+    """-sigma along the stretch of S = mu (I - C^-1) + lambda ln J C^-1
+    under uniaxial stress (plane strain in 2D): the lateral stretch a from
+    S_xx = 0 by bisection, J = a^(dim-1) stretch."""
     lam, mu = E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
 
     def S(s, a):
-        return mu * (1 - 1 / s**2) + lam * math.log(a * stretch) / s**2
+        return mu * (1 - 1 / s**2) + lam * math.log(a ** (dim - 1) * stretch) / s**2
 
     lo, hi = 0.5, 2.0
     for _ in range(200):
@@ -37,25 +40,11 @@ def cauchy_pressure(E, nu, stretch):
             hi = a
         else:
             lo = a
-    return -stretch * S(stretch, a) / a
+    return -stretch * S(stretch, a) / a ** (dim - 1)
 
 
 def cauchy_pressure_3d(E, nu, stretch):
-    """-sigma_zz of S = mu (I - C^-1) + lambda ln J C^-1 under uniaxial
-    stress: stretch along z, a along x and y with S_xx = 0."""
-    lam, mu = E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
-
-    def S(s, a):
-        return mu * (1 - 1 / s**2) + lam * math.log(a * a * stretch) / s**2
-
-    lo, hi = 0.5, 2.0
-    for _ in range(200):
-        a = 0.5 * (lo + hi)
-        if S(a, a) > 0:
-            hi = a
-        else:
-            lo = a
-    return -stretch * S(stretch, a) / a**2
+    return cauchy_pressure(E, nu, stretch, dim=3)
 
 
 def check_cauchy_pressure(name, expected):
