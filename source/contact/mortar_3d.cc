@@ -179,6 +179,35 @@ namespace contact_fem
       }
 
       /**
+       * The fraction sp / (sp - sq) of the way from p to q where the segment
+       * pq crosses the line of a clip @p edge (sp, sq: the cross products of
+       * @p edge with p and q from its start). Where pq runs along the edge up
+       * to round-off (rims of faces that coincide), the crossing is anywhere
+       * on it and its derivative is round-off over round-off (1e16 and more,
+       * times a sliver width that the fan integration does not cancel in
+       * floating point): there the fraction is held, and the vertex moves with
+       * p and q, a bounded one-sided derivative of the overlap.
+       */
+      template <typename Number>
+      Number
+      crossing_fraction(const Number               &sp,
+                        const Number               &sq,
+                        const Tensor<1, 2, Number> &edge,
+                        const Tensor<1, 2, Number> &pq)
+      {
+        const Number fraction = sp / (sp - sq);
+        if constexpr (std::is_same_v<Number, double>)
+          return fraction;
+        else
+          {
+            // |sp - sq| = |edge| |pq| sin(angle between them).
+            const double sine =
+              std::abs(value_of(sp - sq)) / (value_of(edge.norm()) * value_of(pq.norm()));
+            return sine > 1e-10 ? fraction : Number(value_of(fraction));
+          }
+      }
+
+      /**
        * Sutherland-Hodgman: @p subject (any simple polygon) clipped by the
        * half-planes of the edges of the convex, counterclockwise @p clip.
        * Where the intersection falls apart into several parts, they come as
@@ -213,7 +242,7 @@ namespace contact_fem
                 if (p_in)
                   result.push_back(p);
                 if (p_in != q_in)
-                  result.push_back(p + Number(sp / (sp - sq)) * (q - p));
+                  result.push_back(p + crossing_fraction(sp, sq, edge, q - p) * (q - p));
               }
           }
         return result;

@@ -667,11 +667,6 @@ namespace contact_fem
     multigrid_setup_seconds += linear_solver->take_setup_seconds();
     if (const std::string note = linear_solver->take_note(); !note.empty())
       pcout << "    Note: " << note << "." << std::endl;
-    if (linear_solver->n_null_pivots() > 0)
-      {
-        ++singular_solves;
-        most_null_pivots = std::max(most_null_pivots, linear_solver->n_null_pivots());
-      }
     // A singular system (a body held by nothing) does not always make the
     // direct solver fail: check that the solution solves it. Singular
     // systems leave O(1) residuals that refinement does not reduce.
@@ -680,13 +675,22 @@ namespace contact_fem
                 ExcMessage("the linear system is singular (relative residual " +
                            scientific(linear_residual / system_rhs.l2_norm()) +
                            " after the linear solve)"));
+    // Only solves whose solution is used: a failed one is reported (and
+    // its step may be split), it leaves no undetermined mode in the results.
+    if (linear_solver->n_null_pivots() > 0)
+      {
+        ++singular_solves;
+        most_null_pivots = std::max(most_null_pivots, linear_solver->n_null_pivots());
+      }
+    else
+      regular_solve_seen = true;
     constraints.distribute(solution);
     ghosted_solution = solution;
   }
 
   template <int dim>
   void
-  ContactProblem<dim>::compute_residual()
+  ContactProblem<dim>::compute_residual(const bool linearised_at_start)
   {
     TimerOutput::Scope t(*timer, "Assembly: residual");
     residual = 0.;
@@ -706,26 +710,37 @@ namespace contact_fem
           const unsigned int index = cell->active_cell_index();
           if (finite_strain && finite_strain->law(cell->material_id()))
             {
-              // The last step's linear model at this u, K_T u + offset.
-              const bool linear_model = f_bar() && cell_offsets[index].size() > 0;
-              if (linear_model)
+              if (linearised_at_start)
                 {
-                  cell_matrices[index].vmult(linear_minus_r, local_u);
-                  linear_minus_r += cell_offsets[index];
+                  // f_int(u_n) + K_T(u_n) (u - u_n) = K_T(u_n) u + offset,
+                  // with the tangent and offset of the step's start u_n
+                  // (which is also the F-bar linear model: no remainder).
+                  cell_matrices[index].vmult(local_r, local_u);
+                  local_r += cell_offsets[index];
                 }
-              // The tangent and offset of the next Newton step, at this u.
-              const auto linearisation =
-                finite_strain->linearise(cell, local_u, cell_matrices[index], local_r);
-              smallest_jacobian = std::min(smallest_jacobian, linearisation.smallest_jacobian);
-              local_strain += linearisation.energy;
-              cell_offsets[index].reinit(local_u.size());
-              cell_matrices[index].vmult(cell_offsets[index], local_u);
-              cell_offsets[index].sadd(-1., 1., local_r);
-              if (linear_model)
+              else
                 {
-                  linear_minus_r -= local_r;
-                  hanging_constraints.distribute_local_to_global(linear_minus_r, dofs,
-                                                                 linearised_residual);
+                  // The last step's linear model at this u, K_T u + offset.
+                  const bool linear_model = f_bar() && cell_offsets[index].size() > 0;
+                  if (linear_model)
+                    {
+                      cell_matrices[index].vmult(linear_minus_r, local_u);
+                      linear_minus_r += cell_offsets[index];
+                    }
+                  // The tangent and offset of the next Newton step, at this u.
+                  const auto linearisation =
+                    finite_strain->linearise(cell, local_u, cell_matrices[index], local_r);
+                  smallest_jacobian = std::min(smallest_jacobian, linearisation.smallest_jacobian);
+                  local_strain += linearisation.energy;
+                  cell_offsets[index].reinit(local_u.size());
+                  cell_matrices[index].vmult(cell_offsets[index], local_u);
+                  cell_offsets[index].sadd(-1., 1., local_r);
+                  if (linear_model)
+                    {
+                      linear_minus_r -= local_r;
+                      hanging_constraints.distribute_local_to_global(linear_minus_r, dofs,
+                                                                     linearised_residual);
+                    }
                 }
             }
           else
@@ -795,6 +810,23 @@ namespace contact_fem
     current_time = time;
     make_dirichlet_constraints(dirichlet_inputs(), relevant_dofs, time, dirichlet_constraints);
     compute_cell_loads(time);
+    // Finite strain: the step's first solve takes the tangent of the last
+    // converged state with the new prescribed values (the tangential
+    // predictor), not the tangent of that state with only the prescribed
+    // DoFs moved, whose elements along those boundaries are squeezed by the
+    // whole increment (a 15 % step of the 3D patch inverted an element, the
+    // 3D patch in 2 steps failed from it). That state itself is never an
+    // iterate: the first residual is its linearisation at the start.
+    start_tangent_kept = false;
+    if (finite_strain)
+      try
+        {
+          ghosted_solution = solution;
+          compute_residual();
+          start_tangent_kept = true;
+        }
+      catch (const NewtonFailure &) // no tangent there: the first iterate's
+        {}
     // Start from the last converged state with the new prescribed values.
     const double prescribed =
       contact ? largest_prescribed_change(dirichlet_constraints, solution, comm) : 0.;
@@ -836,10 +868,9 @@ namespace contact_fem
       {
         if (e.singular && contact && contact->slides_everywhere())
           throw NewtonFailure(where + ": " + e.what() + ": " + exceeded_friction_capacity({}));
-        throw NewtonFailure(where + ": " + e.what() + "." +
-                              (e.singular ? diagnosis().singular_system_hint() :
-                                            diagnosis().precision_hint()),
-                            false);
+        if (e.singular)
+          throw singular_failure(where + ": " + e.what());
+        throw NewtonFailure(where + ": " + e.what() + "." + diagnosis().precision_hint(), false);
       }
     catch (const std::exception &e)
       {
@@ -851,6 +882,8 @@ namespace contact_fem
         // Split: an overshooting iterate near a load reversal slips everywhere.
         if (pos != std::string::npos && contact && contact->slides_everywhere())
           throw NewtonFailure(where + ": " + cause + ": " + exceeded_friction_capacity({}));
+        if (pos != std::string::npos)
+          throw singular_failure(where + ": " + cause);
         throw NewtonFailure(where + ": " + cause + "." + diagnosis().singular_system_hint(), false);
       }
     // Both iterates satisfy the hanging-node and Dirichlet constraints, and
@@ -860,6 +893,23 @@ namespace contact_fem
         solution.sadd(newton_parameters.damping, 1. - newton_parameters.damping, previous_solution);
         ghosted_solution = solution;
       }
+  }
+
+  template <int dim>
+  NewtonFailure
+  ContactProblem<dim>::singular_failure(const std::string &what) const
+  {
+    // A tangent that depends on the iterate (finite strain, contact on the
+    // current configuration) and was regular in an earlier solve of this
+    // load path: the supports hold the bodies, this iterate is far from
+    // equilibrium (or past a limit point), and a smaller step may not be.
+    if ((finite_strain || (contact && contact_parameters.current_kinematics)) && regular_solve_seen)
+      return NewtonFailure(what +
+                           ": the tangent of this iterate is singular, although an earlier "
+                           "solve of this load path was regular (the bodies are held). Hint: "
+                           "more load steps (Load stepping/Number of load steps, Maximum step "
+                           "splits)");
+    return NewtonFailure(what + "." + diagnosis().singular_system_hint(), false);
   }
 
   template <int dim>
@@ -1001,7 +1051,7 @@ namespace contact_fem
           }
         try
           {
-            compute_residual();
+            compute_residual(iteration == 0 && start_tangent_kept);
           }
         catch (const NewtonFailure &failure) // an inverted element: say where
           {
@@ -1460,6 +1510,7 @@ namespace contact_fem
     if (comparison)
       comparison->start_load_path();
     ConvergedState saved(solution, contact.get(), interface.get());
+    regular_solve_seen = false;
     while (!control.finished())
       {
         stop_if_interrupted(comm);

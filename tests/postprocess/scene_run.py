@@ -33,7 +33,7 @@ def perturbation():
     return (f"Finite element/DoF renumbering seed={seed}",) if seed else ()
 
 
-ROW = re.compile(r"^\s*\|\s*(\d+)\s*\|\s*([^|]+)\|[^|]+\|[^|]+\|[^|]+\|\s*([^|]+)\|")
+ROW = re.compile(r"^\s*\|\s*(\d+)\s*\|\s*([^|]+)\|[^|]+\|\s*([^|]+)\|[^|]+\|\s*([^|]+)\|")
 
 
 def newton_ratios(output):
@@ -45,7 +45,8 @@ def newton_ratios(output):
 def newton_table(output):
     """Per load step attempt: the displacement ratio of each Newton iteration (None
     where the table shows no number, or where the iteration changed the
-    active set: a kink the tangent cannot see), and whether it converged."""
+    active set: a kink the tangent cannot see, or where the multipliers
+    are still far: ratio above 0.1), and whether it converged."""
     steps = []
     for line in output.splitlines():
         if line.strip().startswith("Load step"):
@@ -54,13 +55,21 @@ def newton_table(output):
             steps[-1] = (steps[-1][0], True)
         match = ROW.match(line)
         if match and steps:
-            text, changes = match.group(2).strip(), match.group(3).strip()
+            text, changes = match.group(2).strip(), match.group(4).strip()
             try:
                 value = float(text)
             except ValueError:
                 value = None
             if changes not in ("0", "-"):
                 value = None
+            # Multipliers still far from theirs (a step's first iterate
+            # after the tangential predictor): the displacement ratio alone
+            # does not measure the distance to the solution there.
+            try:
+                if float(match.group(3)) > 0.1:
+                    value = None
+            except ValueError:
+                pass
             steps[-1][0].append(value)
     return steps
 

@@ -207,13 +207,22 @@ namespace contact_fem
 
     void
     solve_linear_system(const double newton_residual_target);
+    /// The failure of a Newton update whose linear system is singular
+    /// (@p what: where and the solver's words): splittable when the tangent
+    /// depends on the iterate and was regular before in this load path.
+    NewtonFailure
+    singular_failure(const std::string &what) const;
     /// Tells the linear solver the scene and the size of the new mesh (it
     /// may pick its method by them) and gives it the near-null space if it
     /// asks.
     void
     select_linear_solver();
+    /// The residual at the solution and the finite-strain cells' tangent
+    /// and offset there; with @p linearised_at_start, the finite-strain
+    /// cells' residual linearised at the step's start (their tangent and
+    /// offset, kept; start_tangent_kept).
     void
-    compute_residual();
+    compute_residual(bool linearised_at_start = false);
     double
     equilibrium_residual_norm(const std::vector<double> &contact_force_at_interface) const;
     // --- adaptivity (contact_problem_refinement.cc)
@@ -349,7 +358,13 @@ namespace contact_fem
     /// Present when a body has a finite-strain law (Materials/Models): its
     /// cells' matrices are the tangent at the last residual's iterate.
     std::unique_ptr<FiniteStrainBulk<dim>> finite_strain;
-    IndexSet                               owned_dofs, relevant_dofs, writable_dofs;
+    /// The finite-strain tangent of the step's start (before the new
+    /// prescribed values) is in the cells: the step's first solve uses it.
+    bool start_tangent_kept = false;
+    /// A solve of this load path had no zero pivot (singular_failure()).
+    bool regular_solve_seen = false;
+
+    IndexSet owned_dofs, relevant_dofs, writable_dofs;
 
     AffineConstraints<double>            hanging_constraints;
     AffineConstraints<double>            dirichlet_constraints;
