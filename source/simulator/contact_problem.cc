@@ -699,8 +699,8 @@ namespace contact_fem
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     Vector<double> local_u(fe.n_dofs_per_cell()), local_r(fe.n_dofs_per_cell()),
       linear_minus_r(fe.n_dofs_per_cell());
-    double         local_strain = 0., local_work = 0.;
-    double         smallest_jacobian = std::numeric_limits<double>::max();
+    double local_strain = 0., local_work = 0.;
+    double smallest_jacobian = std::numeric_limits<double>::max();
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -937,6 +937,12 @@ namespace contact_fem
             update.searched_again = true;
             make_sparsity_pattern();
           }
+        else if (contact->transmits_shear())
+          // The friction rows of an iterate couple its nodes with the
+          // masters of its own operators and of the converged ones: the
+          // pattern follows the iterate (3D ironing with mu = 0.3 assembled
+          // outside it, a Trilinos error, when a node turned to stick).
+          make_sparsity_pattern();
       }
     else if (iteration > 0)
       {
