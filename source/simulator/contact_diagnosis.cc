@@ -112,7 +112,7 @@ namespace contact_fem
 
   template <int dim>
   double
-  ContactDiagnosis<dim>::model_size() const
+  ContactDiagnosis<dim>::largest_coordinate() const
   {
     double size = 0.;
     for (const auto &cell : run.dof_handler.get_triangulation().active_cell_iterators())
@@ -142,8 +142,10 @@ namespace contact_fem
         if (component > 0.)
           largest = std::max(largest, component * (load / component).norm());
       }
-    const double by_force   = largest / (youngs_min * std::pow(model_size(), dim - 2.));
-    double       prescribed = 0.;
+    const double by_force =
+      largest /
+      (youngs_min * std::pow(model_extent(run.dof_handler.get_triangulation()), dim - 2.));
+    double prescribed = 0.;
     for (const auto &condition : run.boundary_conditions.displacements)
       {
         if (condition.expression == "0")
@@ -167,11 +169,13 @@ namespace contact_fem
   ContactDiagnosis<dim>::load_at_round_off(const double time) const
   {
     const double displacement = load_displacement_scale(time);
-    const double resolution   = std::numeric_limits<double>::epsilon() * model_size();
+    // The resolution of the coordinates depends on their magnitude, not on
+    // the model's extent.
+    const double resolution = std::numeric_limits<double>::epsilon() * largest_coordinate();
     if (displacement == 0. || displacement >= round_off_units * resolution)
       return "";
     return "the load is at the round-off of the geometry: it moves the bodies by about " +
-           format(displacement) + ", while coordinates of size " + format(model_size()) +
+           format(displacement) + ", while coordinates of size " + format(largest_coordinate()) +
            " are resolved to " + format(resolution) +
            " in double precision, so the gaps and the active set are rounding noise; "
            "scale the load (or the units) up";

@@ -17,6 +17,7 @@
 #include <contact_fem/core/interruption.h>
 #include <contact_fem/core/parameters.h>
 #include <contact_fem/geometry/mesh_file.h>
+#include <contact_fem/geometry/mesh_queries.h>
 #include <contact_fem/geometry/manifold_mapping.h>
 #include <contact_fem/solvers/rigid_body_modes.h>
 
@@ -1028,16 +1029,7 @@ namespace contact_fem
     // iteration it and the active set is updated.
     NewtonMonitor monitor(newton_parameters, finite_strain != nullptr);
     {
-      // The model size from the coarse cells, which every rank holds.
-      std::optional<BoundingBox<dim>> box;
-      for (const auto &cell : triangulation.cell_iterators_on_level(0))
-        if (box)
-          box->merge_with(cell->bounding_box());
-        else
-          box = cell->bounding_box();
-      double extent = 0.;
-      for (unsigned int d = 0; d < dim; ++d)
-        extent = std::max(extent, box->side_length(d));
+      const double extent = model_extent(triangulation);
       monitor.set_scene_units(materials.youngs_modulus_range().second * std::pow(extent, dim - 1),
                               extent);
     }

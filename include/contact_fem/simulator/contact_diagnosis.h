@@ -125,9 +125,10 @@ namespace contact_fem
     /// The integral of the outward normal over boundary @p id. Collective.
     Tensor<1, dim>
     surface_normal(const types::boundary_id id) const;
-    /// The largest distance of a vertex from the origin. Collective.
+    /// The largest distance of a vertex from the origin (of the computing
+    /// frame). Collective.
     double
-    model_size() const;
+    largest_coordinate() const;
     /// The displacement the load at @p time causes: applied force over the
     /// smallest Young's modulus, or the largest prescribed displacement.
     double
