@@ -690,6 +690,39 @@ namespace contact_fem
   }
 
   template <int dim>
+  typename FiniteStrainBulk<dim>::CellLinearisation
+  ContactProblem<dim>::relinearise_finite_strain_cell(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const std::vector<types::global_dof_index>           &dofs,
+    const Vector<double>                                 &local_u,
+    Vector<double>                                       &local_r)
+  {
+    const unsigned int index = cell->active_cell_index();
+    // The last step's linear model at this u, K_T u + offset: with F-bar
+    // the multipliers are recovered from its residual (linearised_residual).
+    Vector<double> linear_minus_r;
+    const bool     linear_model = f_bar() && cell_offsets[index].size() > 0;
+    if (linear_model)
+      {
+        linear_minus_r.reinit(local_u.size());
+        cell_matrices[index].vmult(linear_minus_r, local_u);
+        linear_minus_r += cell_offsets[index];
+      }
+    // The tangent and offset of the next Newton step, at this u.
+    const auto linearisation =
+      finite_strain->linearise(cell, local_u, cell_matrices[index], local_r);
+    cell_offsets[index].reinit(local_u.size());
+    cell_matrices[index].vmult(cell_offsets[index], local_u);
+    cell_offsets[index].sadd(-1., 1., local_r);
+    if (linear_model)
+      {
+        linear_minus_r -= local_r;
+        hanging_constraints.distribute_local_to_global(linear_minus_r, dofs, linearised_residual);
+      }
+    return linearisation;
+  }
+
+  template <int dim>
   void
   ContactProblem<dim>::compute_residual(const bool linearised_at_start)
   {
@@ -698,10 +731,9 @@ namespace contact_fem
     if (f_bar())
       linearised_residual = 0.;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    Vector<double> local_u(fe.n_dofs_per_cell()), local_r(fe.n_dofs_per_cell()),
-      linear_minus_r(fe.n_dofs_per_cell());
-    double local_strain = 0., local_work = 0.;
-    double smallest_jacobian = std::numeric_limits<double>::max();
+    Vector<double> local_u(fe.n_dofs_per_cell()), local_r(fe.n_dofs_per_cell());
+    double         local_strain = 0., local_work = 0.;
+    double         smallest_jacobian = std::numeric_limits<double>::max();
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -721,27 +753,10 @@ namespace contact_fem
                 }
               else
                 {
-                  // The last step's linear model at this u, K_T u + offset.
-                  const bool linear_model = f_bar() && cell_offsets[index].size() > 0;
-                  if (linear_model)
-                    {
-                      cell_matrices[index].vmult(linear_minus_r, local_u);
-                      linear_minus_r += cell_offsets[index];
-                    }
-                  // The tangent and offset of the next Newton step, at this u.
                   const auto linearisation =
-                    finite_strain->linearise(cell, local_u, cell_matrices[index], local_r);
+                    relinearise_finite_strain_cell(cell, dofs, local_u, local_r);
                   smallest_jacobian = std::min(smallest_jacobian, linearisation.smallest_jacobian);
                   local_strain += linearisation.energy;
-                  cell_offsets[index].reinit(local_u.size());
-                  cell_matrices[index].vmult(cell_offsets[index], local_u);
-                  cell_offsets[index].sadd(-1., 1., local_r);
-                  if (linear_model)
-                    {
-                      linear_minus_r -= local_r;
-                      hanging_constraints.distribute_local_to_global(linear_minus_r, dofs,
-                                                                     linearised_residual);
-                    }
                 }
             }
           else
