@@ -87,6 +87,16 @@ namespace contact_fem
         }
     while (!result.empty() && result.back() == '-')
       result.pop_back();
+    // Trilinos' own code says nothing to a user; the one seen in practice
+    // (error 2 from a sum into a matrix) is an entry outside the sparsity
+    // pattern, a coupling the program did not foresee: a defect to report.
+    if (result.find("occurred while calling a Trilinos function") != std::string::npos)
+      result = "internal error: " + result +
+               (result.find("error number 2 ") != std::string::npos ?
+                  " (from the assembly: an entry outside the matrix's sparsity pattern, a "
+                  "coupling the program did not foresee)" :
+                  "") +
+               ". Please report it with the parameter file";
     // A message quotes what the user wrote: bounded, whatever its length.
     constexpr std::size_t longest = 2000;
     if (result.size() > longest)
