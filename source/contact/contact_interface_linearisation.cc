@@ -20,7 +20,7 @@ namespace contact_fem
     /// Sums of one node's derivatives over its face pairs.
     struct NodeSums
     {
-      DofMap                                    gap;
+      DofMap                                                   gap, D;
       std::map<types::global_dof_index, DofMap>                force;
       std::array<std::map<types::global_dof_index, DofMap>, 3> tangent_force;
       /// The normal's derivatives come whole from any one pair (its patch
@@ -118,14 +118,14 @@ namespace contact_fem
     /// n_j; D_j x_j - sum_l M_jl x_l at held x.
     template <int dim>
     void
-    add_frictional(const ContactInterface<dim>                 &interface,
-                   const std::vector<Tensor<1, dim>>           &u,
-                   const PatchBuilder<dim>                     &builder,
-                   const typename Linearisation<dim>::Result   &result,
-                   const unsigned int                           k,
-                   const std::vector<unsigned int>             &slave_nodes,
-                   const std::vector<unsigned int>             &master_nodes,
-                   NodeSums                                    &node)
+    add_frictional(const ContactInterface<dim>               &interface,
+                   const std::vector<Tensor<1, dim>>         &u,
+                   const PatchBuilder<dim>                   &builder,
+                   const typename Linearisation<dim>::Result &result,
+                   const unsigned int                         k,
+                   const std::vector<unsigned int>           &slave_nodes,
+                   const std::vector<unsigned int>           &master_nodes,
+                   NodeSums                                  &node)
     {
       const auto &n = result.normals[k];
       const auto  x = [&](const unsigned int node_index) {
@@ -164,12 +164,12 @@ namespace contact_fem
     void
     add_pair(const ContactInterface<dim>       &interface,
              const std::vector<Tensor<1, dim>> &u,
-             const unsigned int                f,
-             const unsigned int                m,
-             const std::vector<unsigned int>  &neighbours,
-             const std::vector<unsigned int>  &masters,
-             const bool                        frictional,
-             std::map<unsigned int, NodeSums> &sums)
+             const unsigned int                 f,
+             const unsigned int                 m,
+             const std::vector<unsigned int>   &neighbours,
+             const std::vector<unsigned int>   &masters,
+             const bool                         frictional,
+             std::map<unsigned int, NodeSums>  &sums)
     {
       PatchBuilder<dim> builder(interface, u);
       builder.patch.slave_faces.push_back(builder.add_face(f));
@@ -191,6 +191,7 @@ namespace contact_fem
             continue;
           NodeSums &node = it->second;
           builder.add(result.normal_gap[k].derivatives, 1., node.gap);
+          builder.add(result.D[k].derivatives, 1., node.D);
           const auto &n = result.normals[k];
           // f_j = -D_j n_j on the slave node, +M_jl n_j on master l.
           for (unsigned int d = 0; d < dim; ++d)
@@ -231,6 +232,7 @@ namespace contact_fem
         return dense;
       };
       result.gap = at(sums.gap);
+      result.D   = at(sums.D);
       for (const auto &[row, values] : sums.force)
         result.force.emplace_back(row, at(values));
       for (unsigned int d = 0; d < dim; ++d)
@@ -249,36 +251,35 @@ namespace contact_fem
   ContactInterface<dim>::linearise(const bool frictional)
   {
     linearised_nodes.clear();
-      {
-        std::vector<Tensor<1, dim>> u(nodes.size());
-        for (unsigned int n = 0; n < nodes.size(); ++n)
-          u[n] = displacement(n, search_displacement);
-        std::map<unsigned int, NodeSums> sums;
-        for (const auto &s : slave_nodes)
-          if (s.paired)
-            sums[s.node];
-        // The slave faces at every node, and the masters of every slave face.
-        std::map<unsigned int, std::vector<unsigned int>> faces_of_node, masters_of_face;
-        for (unsigned int f = 0; f < faces.size(); ++f)
-          if (faces[f].slave)
-            for (const unsigned int n : faces[f].nodes)
-              faces_of_node[n].push_back(f);
-        for (const auto &[f, m] : coupled_faces)
-          masters_of_face[f].push_back(m);
-        for (const auto &[f, m] : coupled_faces)
-          {
-            std::set<unsigned int> neighbours;
-            for (const unsigned int n : faces[f].nodes)
-              for (const unsigned int g : faces_of_node[n])
-                if (g != f)
-                  neighbours.insert(g);
-            add_pair(*this, u, f, m,
-                     std::vector<unsigned int>(neighbours.begin(), neighbours.end()),
-                     masters_of_face[f], frictional, sums);
-          }
-        for (const auto &[n, node_sums] : sums)
-          linearised_nodes[n] = linearised_node<dim>(node_sums);
-      }
+    {
+      std::vector<Tensor<1, dim>> u(nodes.size());
+      for (unsigned int n = 0; n < nodes.size(); ++n)
+        u[n] = displacement(n, search_displacement);
+      std::map<unsigned int, NodeSums> sums;
+      for (const auto &s : slave_nodes)
+        if (s.paired)
+          sums[s.node];
+      // The slave faces at every node, and the masters of every slave face.
+      std::map<unsigned int, std::vector<unsigned int>> faces_of_node, masters_of_face;
+      for (unsigned int f = 0; f < faces.size(); ++f)
+        if (faces[f].slave)
+          for (const unsigned int n : faces[f].nodes)
+            faces_of_node[n].push_back(f);
+      for (const auto &[f, m] : coupled_faces)
+        masters_of_face[f].push_back(m);
+      for (const auto &[f, m] : coupled_faces)
+        {
+          std::set<unsigned int> neighbours;
+          for (const unsigned int n : faces[f].nodes)
+            for (const unsigned int g : faces_of_node[n])
+              if (g != f)
+                neighbours.insert(g);
+          add_pair(*this, u, f, m, std::vector<unsigned int>(neighbours.begin(), neighbours.end()),
+                   masters_of_face[f], frictional, sums);
+        }
+      for (const auto &[n, node_sums] : sums)
+        linearised_nodes[n] = linearised_node<dim>(node_sums);
+    }
   }
 
   template void

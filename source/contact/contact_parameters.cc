@@ -28,16 +28,15 @@ namespace contact_fem
           // A surface of this pair in one of @p others is refused: "... in
           // the @p what <pair>@p advice".
           const auto refuse_shared = [&](const std::vector<ContactPair> &others,
-                                         const std::string              &what,
-                                         const std::string              &advice) {
+                                         const std::string &what, const std::string &advice) {
             for (const auto id : {pair.slave, pair.master})
               for (const auto &other : others)
                 AssertThrow(other.slave != id && other.master != id,
-                            ExcMessage(key + ": surface " + std::to_string(id) + " of pair " +
-                                       pair_text(s, m) + " is also in the " + what + " " +
-                                       pair_text(std::to_string(other.slave),
-                                                 std::to_string(other.master)) +
-                                       advice));
+                            ExcMessage(
+                              key + ": surface " + std::to_string(id) + " of pair " +
+                              pair_text(s, m) + " is also in the " + what + " " +
+                              pair_text(std::to_string(other.slave), std::to_string(other.master)) +
+                              advice));
           };
           refuse_shared(tied, "tied pair", "; a surface may be in one tied pair only.");
           refuse_shared(pairs, "contact pair",
@@ -114,9 +113,9 @@ namespace contact_fem
                       "Newton iterate, with their consistent linearisation in the "
                       "tangent (finite deformation, large sliding; Newton "
                       "converges quadratically; see doc/finite_strain.md). "
-                      "'alm frictionless' and 'alm frictional' (objective "
-                      "slip), in 2D and in 3D on bilinear faces (geometry "
-                      "degree 1).");
+                      "'alm frictionless', 'alm frictional' (objective slip) "
+                      "and 'penalty frictionless', in 2D and in 3D on bilinear "
+                      "faces (geometry degree 1).");
     prm.declare_entry("Penetration tolerance", "0.05", Patterns::Double(0.),
                       "After a step converges, every slave node is located against "
                       "the whole master surface of its pair (R-tree, closest point). "
@@ -178,12 +177,13 @@ namespace contact_fem
                                       const unsigned int geometry_degree) const
   {
     // The linearisation of the mortar operators exists for 2D line faces
-    // and 3D bilinear faces; the exact-gap formulations (alm) use it.
+    // and 3D bilinear faces; the alm formulations and the frictionless
+    // penalty use it.
     AssertThrow(!current_kinematics || formulation == "alm frictionless" ||
-                  formulation == "alm frictional",
+                  formulation == "alm frictional" || formulation == "penalty frictionless",
                 ExcMessage("Contact/Kinematics = current is implemented with "
-                           "Contact/Formulation = alm frictionless or alm frictional "
-                           "only (this scene: " +
+                           "Contact/Formulation = alm frictionless, alm frictional or "
+                           "penalty frictionless only (this scene: " +
                            std::to_string(dim) + "D, " + formulation +
                            "). Use Kinematics = updated or small."));
     AssertThrow(!current_kinematics || dim == 2 || geometry_degree == 1,

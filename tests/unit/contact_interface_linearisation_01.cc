@@ -1,7 +1,7 @@
 // ContactInterface::linearise() (Contact/Kinematics = current) against
 // central differences of the interface's own operators: for every paired
-// slave node j, dG_j/du (G_j = D_j g_j, the weighted normal gap) and
-// df_j/du (f_j = -D_j n_j on the slave node, +M_jl n_j on master l) with
+// slave node j, dG_j/du (G_j = D_j g_j, the weighted normal gap), dD_j/du
+// and df_j/du (f_j = -D_j n_j on the slave node, +M_jl n_j on master l) with
 // respect to every interface DoF, from ContactInterface::update() at u +-
 // h e_i. Two stacked blocks (the lower one's top the slave, 3 cells; the
 // upper one's base the master, 2 cells: non-matching; 5 % of the width
@@ -59,6 +59,7 @@ namespace
     force,
     normal,
     operators,
+    weight, ///< D_j (index 0)
     tangent_force
   };
   using Key = std::pair<int, types::global_dof_index>;
@@ -81,9 +82,10 @@ namespace
     for (const auto &s : interface.slave_nodes)
       if (s.paired)
         {
-          auto &node     = result[s.node];
-          node[{gap, 0}] = s.D * interface.gap(s, u);
-          const auto x   = [&](const unsigned int n) {
+          auto &node        = result[s.node];
+          node[{gap, 0}]    = s.D * interface.gap(s, u);
+          node[{weight, 0}] = s.D;
+          const auto x      = [&](const unsigned int n) {
             return interface.nodes[n].reference + interface.displacement(n, u);
           };
           for (unsigned int k = 0; k < dim - 1; ++k)
@@ -117,10 +119,10 @@ namespace
   /// @p dof through the positions themselves (the linearisation holds them).
   template <int dim>
   double
-  direct_part(const ContactInterface<dim>                  &interface,
+  direct_part(const ContactInterface<dim>                     &interface,
               const typename ContactInterface<dim>::SlaveNode &s,
-              const unsigned int                        d,
-              const types::global_dof_index             dof)
+              const unsigned int                               d,
+              const types::global_dof_index                    dof)
   {
     double result = interface.nodes[s.node].dofs[d] == dof ? s.D : 0.;
     for (const auto &[m, value] : s.M)
@@ -133,10 +135,10 @@ namespace
   /// (0 outside the node's patch).
   template <int dim>
   double
-  analytic(const ContactInterface<dim> &interface,
-           const Frames<dim>           &frames,
-           const unsigned int           n,
-           const Key                   &key,
+  analytic(const ContactInterface<dim>  &interface,
+           const Frames<dim>            &frames,
+           const unsigned int            n,
+           const Key                    &key,
            const types::global_dof_index dof)
   {
     const auto &node = interface.linearised_nodes.at(n);
@@ -148,8 +150,8 @@ namespace
     const auto it = std::find(node.dofs.begin(), node.dofs.end(), dof);
     if (it == node.dofs.end())
       return held;
-    const unsigned int i = it - node.dofs.begin();
-    const auto row = [&](const auto &rows) {
+    const unsigned int i   = it - node.dofs.begin();
+    const auto         row = [&](const auto &rows) {
       for (const auto &[r, values] : rows)
         if (r == key.second)
           return values[i];
@@ -159,6 +161,8 @@ namespace
       {
         case gap:
           return node.gap[i];
+        case weight:
+          return node.D[i];
         case normal:
           return node.normal[key.second][i];
         case operators:
@@ -266,7 +270,8 @@ namespace
         const auto &node  = linear.at(entry.first);
         double      scale = 0.;
         for (const auto &[dof, value] : by_dof)
-          scale = std::max(scale, std::abs(analytic(interface, frames, entry.first, entry.second, dof)));
+          scale =
+            std::max(scale, std::abs(analytic(interface, frames, entry.first, entry.second, dof)));
         for (const auto &[dof, value] : by_dof)
           {
             const double exact = analytic(interface, frames, entry.first, entry.second, dof);
@@ -288,7 +293,7 @@ namespace
               << " coupled face pairs" << std::endl
               << "  same face pairs at every perturbed configuration: "
               << (coarse_pairs && fine_pairs && tight_pairs ? "yes" : "no") << std::endl
-              << "  dG/du, df/du, dh/du, dn/du and d(D x - M x)/du against central "
+              << "  dG/du, dD/du, df/du, dh/du, dn/du and d(D x - M x)/du against central "
                  "differences, error below 1e-6 of the "
                  "node's largest derivative: "
               << (small ? "yes" : "no") << std::endl

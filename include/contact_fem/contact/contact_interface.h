@@ -146,6 +146,8 @@ namespace contact_fem
       std::vector<types::global_dof_index> dofs;
       /// d G_j / du, G_j = n_j . int Phi_j (x_master - x_slave) = D_j g_j.
       std::vector<double> gap;
+      /// d D_j / du (the penalty's pressure is eps G_j / D_j).
+      std::vector<double> D;
       /// d f_j / du per DoF of the contact force per unit pressure f_j
       /// (-D_j n_j on the slave node, +M_jl n_j on master l): (row, values
       /// at dofs).

@@ -4,6 +4,7 @@
 #include <contact_fem/contact/formulations/penalty_frictionless.h>
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 
 namespace contact_fem
@@ -43,6 +44,7 @@ namespace contact_fem
   {
     prm.enter_subsection("Contact");
     adaptive           = prm.get_bool("Adaptive penalty");
+    current            = prm.get("Kinematics") == "current";
     penetration_factor = prm.get_double("Maximum penetration factor");
     prm.leave_subsection();
     AssertThrow(!adaptive || penetration_factor > 0.,
@@ -109,6 +111,15 @@ namespace contact_fem
                                          const IndexSet                  &owned,
                                          DynamicSparsityPattern          &pattern) const
   {
+    if (current)
+      {
+        // The couplings of the linearised patch of every paired node,
+        // closed over the hanging nodes.
+        for (const auto &[node, linearised] : interface.linearised_nodes)
+          if (owned.is_element(interface.nodes[node].dofs[0]))
+            constraints.add_entries_local_to_global(linearised.dofs, pattern, true);
+        return;
+      }
     std::vector<types::global_dof_index> dofs;
     std::vector<double>                  gradient;
     for (const auto &s : interface.slave_nodes)
@@ -128,6 +139,16 @@ namespace contact_fem
                                      TrilinosWrappers::SparseMatrix &matrix,
                                      TrilinosWrappers::MPI::Vector  &rhs) const
   {
+    if (current)
+      {
+        // The operators were built on the iterate: its displacement is the
+        // search configuration.
+        const std::vector<double> &u = interface.search_configuration();
+        for (const auto &s : interface.slave_nodes)
+          if (s.paired && this->active[s.node] && owned.is_element(interface.nodes[s.node].dofs[0]))
+            assemble_current(interface, s, u, constraints, matrix, rhs);
+        return;
+      }
     // g_j is affine in u within a load step: g_j(u) = g_j(0) + grad g_j . u.
     const std::vector<double>            zero(interface.dofs().size(), 0.);
     std::vector<types::global_dof_index> dofs;
@@ -152,6 +173,70 @@ namespace contact_fem
         this->eliminate_fixed(interface, dofs, local_matrix, local_rhs);
         constraints.distribute_local_to_global(local_matrix, local_rhs, dofs, matrix, rhs);
       }
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictionless<dim>::assemble_current(const ContactInterface<dim> &interface,
+                                             const typename ContactInterface<dim>::SlaveNode &s,
+                                             const std::vector<double>                       &u,
+                                             const AffineConstraints<double> &constraints,
+                                             TrilinosWrappers::SparseMatrix  &matrix,
+                                             TrilinosWrappers::MPI::Vector   &rhs) const
+  {
+    const auto &linearised = interface.linearised_nodes.at(s.node);
+    // Dirichlet DoFs already hold their values in u_k: their columns (u -
+    // u_k = 0 there) and rows (zero test functions) drop out.
+    std::vector<types::global_dof_index> columns;
+    std::vector<unsigned int>            kept;
+    for (unsigned int i = 0; i < linearised.dofs.size(); ++i)
+      if (!interface.dof_fixed(interface.position(linearised.dofs[i])))
+        {
+          kept.push_back(i);
+          columns.push_back(linearised.dofs[i]);
+        }
+    // f_j at u_k on the rows of linearised.force (the node's DoFs and its
+    // masters').
+    std::map<types::global_dof_index, double> force;
+    for (unsigned int d = 0; d < dim; ++d)
+      force[interface.nodes[s.node].dofs[d]] -= s.D * s.normal[d];
+    for (const auto &[m, value] : s.M)
+      for (unsigned int d = 0; d < dim; ++d)
+        force[interface.nodes[m].dofs[d]] += value * s.normal[d];
+
+    const double eps    = node_penalty[s.node];
+    const double lambda = this->pressure[s.node];
+    // d lambda_j = -(eps dG_j + lambda dD_j) / D_j at the kept columns.
+    std::vector<double> d_lambda(kept.size());
+    for (unsigned int a = 0; a < kept.size(); ++a)
+      d_lambda[a] = -(eps * linearised.gap[kept[a]] + lambda * linearised.D[kept[a]]) / s.D;
+
+    // Newton for the total u: K (u - u_k) = -r(u_k) with the contact's
+    // internal force r = -lambda_j f_j and K = dr/du = -(f_j (x) d lambda_j
+    // + lambda_j d f_j); the right-hand side is lambda_j f_j + K u_k.
+    std::vector<types::global_dof_index>     rows;
+    std::vector<const std::vector<double> *> derivatives;
+    for (const auto &[dof, values] : linearised.force)
+      if (!interface.dof_fixed(interface.position(dof)))
+        {
+          rows.push_back(dof);
+          derivatives.push_back(&values);
+        }
+    FullMatrix<double> stiffness(rows.size(), kept.size());
+    Vector<double>     stiffness_rhs(rows.size());
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      {
+        const auto   it  = force.find(rows[r]);
+        const double f   = it == force.end() ? 0. : it->second;
+        stiffness_rhs(r) = lambda * f;
+        for (unsigned int a = 0; a < kept.size(); ++a)
+          {
+            stiffness(r, a) = -(f * d_lambda[a] + lambda * (*derivatives[r])[kept[a]]);
+            stiffness_rhs(r) += stiffness(r, a) * u[interface.position(columns[a])];
+          }
+      }
+    constraints.distribute_local_to_global(stiffness, rows, constraints, columns, matrix);
+    constraints.distribute_local_to_global(stiffness_rhs, rows, rhs);
   }
 
   template <int dim>

@@ -18,6 +18,14 @@ namespace contact_fem
    * penetrations of this and the previous iteration until each is below the
    * allowed one; adapted penalties live as long as the mesh (a split step
    * keeps them: they describe the mesh, not the load path).
+   *
+   * Contact/Kinematics = current: D_j, M_jl, n_j and the gaps are those of
+   * the iterate u_k. The contact force is lambda_j f_j, f_j = -D_j n_j on
+   * the slave node and +M_jl n_j on master l (the virtual work of the
+   * pressure, as for the alm formulations), lambda_j = eps_j (-G_j) / D_j;
+   * its tangent, f_j (x) d lambda_j + lambda_j d f_j, with d lambda_j =
+   * -(eps_j dG_j + lambda_j dD_j) / D_j, is unsymmetric
+   * (matrix_symmetric()). The derivatives: ContactInterface::linearise().
    */
   template <int dim>
   class PenaltyFrictionless : public FrictionlessFormulation<dim>
@@ -33,6 +41,12 @@ namespace contact_fem
 
     void
     initialize(const ContactInterface<dim> &interface) override;
+    /// False with current kinematics (the operators' derivatives).
+    bool
+    matrix_symmetric() const override
+    {
+      return !current;
+    }
 
     void
     start_load_step(const ContactInterface<dim> &interface,
@@ -98,6 +112,18 @@ namespace contact_fem
                     const double previous_penetration,
                     const double allowed) const;
 
+    /// The terms of active node @p s with current kinematics (see the
+    /// class comment), at the iterate @p u (at the interface DoFs).
+    void
+    assemble_current(const ContactInterface<dim>                     &interface,
+                     const typename ContactInterface<dim>::SlaveNode &s,
+                     const std::vector<double>                       &u,
+                     const AffineConstraints<double>                 &constraints,
+                     TrilinosWrappers::SparseMatrix                  &matrix,
+                     TrilinosWrappers::MPI::Vector                   &rhs) const;
+
+    /// Contact/Kinematics = current.
+    bool   current            = false;
     bool   adaptive           = false;
     double penetration_factor = 1e-3;
     /// eps_j per interface node (adapted or the pair's).
