@@ -23,6 +23,7 @@
 #include <numeric>
 #include <sstream>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace contact_fem
 {
@@ -73,7 +74,7 @@ namespace contact_fem
       return nullptr;
     }
 
-    constexpr int gmsh_quadrilateral = 3, gmsh_hexahedron = 5;
+    constexpr int gmsh_line = 1, gmsh_quadrilateral = 3, gmsh_hexahedron = 5;
 
     /// A hexahedron of the file, for the check of its shape.
     struct GmshHexahedron
@@ -123,10 +124,15 @@ namespace contact_fem
       std::string first_pyramid;
       /// MSH 4.x $Entities: the physical tag of (dimension, entity tag).
       std::map<std::pair<int, int>, int> entity_physical;
-      Point<3>                           lower = Point<3>(std::numeric_limits<double>::max(),
+      /// The boundary elements with a physical tag (lines in 2D,
+      /// quadrilaterals in 3D: the cells' facets) and the nodes of the
+      /// cells, for the boundary elements on nodes of their own (below).
+      std::vector<GmshElement> tagged_facets;
+      std::unordered_set<long> cell_nodes;
+      Point<3>                 lower = Point<3>(std::numeric_limits<double>::max(),
                                 std::numeric_limits<double>::max(),
                                 std::numeric_limits<double>::max());
-      Point<3>                           upper = -lower;
+      Point<3>                 upper = -lower;
     };
 
     /// Reads a text file line by line and knows the line number, so that
@@ -356,6 +362,20 @@ namespace contact_fem
                    Contents                  &contents)
     {
       const ElementType *t = find_element_type(type);
+      // keep_hexahedra: the scan of a 3D mesh, whose facets are
+      // quadrilaterals (2D: lines).
+      const unsigned int cell_dim = contents.keep_hexahedra ? 3 : 2;
+      if (t != nullptr && t->dim == cell_dim)
+        for (unsigned int i = 0; i < t->n_nodes; ++i)
+          contents.cell_nodes.insert(static_cast<long>(v[first_node + i]));
+      if (t != nullptr && physical > 0 &&
+          type == (contents.keep_hexahedra ? gmsh_quadrilateral : gmsh_line))
+        {
+          GmshElement facet{type, static_cast<long>(v[0]), line, physical, {}};
+          for (unsigned int i = 0; i < t->n_nodes; ++i)
+            facet.nodes.push_back(static_cast<long>(v[first_node + i]));
+          contents.tagged_facets.push_back(std::move(facet));
+        }
       if (t != nullptr && t->dim == 3 && t->n_nodes == 5 && contents.first_pyramid.empty())
         contents.first_pyramid = "the first: element " + std::to_string(static_cast<long>(v[0])) +
                                  ", line " + std::to_string(line);
@@ -921,6 +941,100 @@ namespace contact_fem
     }
   } // namespace
 
+  namespace
+  {
+    /**
+     * Gmsh without coherence (the built-in kernel with Geometry.AutoCoherence
+     * = 0, some extrusions) writes boundary elements on nodes of their own,
+     * at the coordinates of the cells' nodes. deal.II's reader drops them
+     * without a word, and their faces keep boundary id 0: a contact surface
+     * or a support half missing (meshes/ironing_3d.msh lost 39 of its 78
+     * tagged faces). Such an element gets the face of the mesh whose
+     * vertices it meets, within 1e-6 of its size. Returns how many; throws
+     * for one that meets no face, or the faces of two bodies.
+     */
+    template <int dim>
+    unsigned int
+    assign_orphan_facets(const Contents     &contents,
+                         const Point<3>     &origin,
+                         const std::string  &file,
+                         Triangulation<dim> &coarse)
+    {
+      std::vector<const GmshElement *> orphans;
+      for (const GmshElement &facet : contents.tagged_facets)
+        if (std::any_of(facet.nodes.begin(), facet.nodes.end(), [&](const long n) {
+              return contents.cell_nodes.count(n) == 0;
+            }))
+          orphans.push_back(&facet);
+      if (orphans.empty())
+        return 0;
+      // The boundary faces by the x of their centres.
+      std::vector<std::pair<double, typename Triangulation<dim>::face_iterator>> faces;
+      for (const auto &cell : coarse.active_cell_iterators())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            faces.emplace_back(cell->face(f)->center()[0], cell->face(f));
+      std::sort(faces.begin(), faces.end(), [](const auto &a, const auto &b) {
+        return a.first < b.first;
+      });
+      const auto point_of = [&](const long node) {
+        Point<dim>      p;
+        const Point<3> &x = contents.node_coordinates.at(node);
+        for (unsigned int d = 0; d < dim; ++d)
+          p[d] = x[d] - origin[d];
+        return p;
+      };
+      unsigned int assigned = 0;
+      for (const GmshElement *facet : orphans)
+        {
+          std::vector<Point<dim>> points;
+          Point<dim>              centre;
+          for (const long n : facet->nodes)
+            {
+              points.push_back(point_of(n));
+              centre += points.back() / static_cast<double>(facet->nodes.size());
+            }
+          double size = 0.;
+          for (const auto &p : points)
+            size = std::max(size, p.distance(centre));
+          const double                                            tolerance = 1e-6 * size;
+          std::vector<typename Triangulation<dim>::face_iterator> matches;
+          for (auto it = std::lower_bound(faces.begin(), faces.end(), centre[0] - tolerance,
+                                          [](const auto &a, const double x) {
+                                            return a.first < x;
+                                          });
+               it != faces.end() && it->first <= centre[0] + tolerance; ++it)
+            {
+              const auto &face = it->second;
+              const bool  same = face->n_vertices() == points.size() &&
+                                std::all_of(points.begin(), points.end(), [&](const Point<dim> &p) {
+                                  for (const auto v : face->vertex_indices())
+                                    if (face->vertex(v).distance(p) <= tolerance)
+                                      return true;
+                                  return false;
+                                });
+              if (same)
+                matches.push_back(face);
+            }
+          const std::string element = "boundary element " + std::to_string(facet->tag) + " (line " +
+                                      std::to_string(facet->line) + ", physical tag " +
+                                      std::to_string(facet->physical) + ")";
+          AssertThrow(matches.size() == 1,
+                      ExcMessage(mesh_key + ": '" + file + "': " + element +
+                                 " is on nodes that no cell uses, and " +
+                                 (matches.empty() ?
+                                    "no boundary face of the cells lies at its nodes' "
+                                    "coordinates" :
+                                    "the faces of two bodies lie at its nodes' coordinates") +
+                                 "; expected boundary elements on the nodes of the cells "
+                                 "(in Gmsh: Coherence, or Geometry.AutoCoherence = 1)."));
+          matches[0]->set_boundary_id(static_cast<types::boundary_id>(facet->physical));
+          ++assigned;
+        }
+      return assigned;
+    }
+  } // namespace
+
   template <int dim>
   MeshFileInfo
   read_gmsh(const std::string &file, Triangulation<dim> &coarse)
@@ -978,6 +1092,12 @@ namespace contact_fem
         AssertThrow(false, ExcMessage(mesh_key + ": cannot read '" + file +
                                       "' as a Gmsh mesh: " + user_message(e)));
       }
+    if (split_text.empty())
+      if (const unsigned int n = assign_orphan_facets(contents, origin, file, coarse); n > 0)
+        info.orphan_note = std::to_string(n) +
+                           (n == 1 ? " boundary element" : " boundary elements") +
+                           " on nodes of their own (Gmsh without coherence) took the faces of "
+                           "the cells at their coordinates";
     return info;
   }
 

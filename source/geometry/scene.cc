@@ -245,6 +245,7 @@ namespace contact_fem
     frame          = ModelFrame<dim>();
     message_origin = {};
     mesh_note.clear();
+    facet_note.clear();
     type               = prm.get("Type");
     mesh_file          = prm.get("Mesh file");
     global_refinements = prm.get_integer("Global refinements");
@@ -384,7 +385,8 @@ namespace contact_fem
     for (auto &m : manifolds)
       m.centre = frame.to_model(m.centre);
     place_new_vertices_on_manifolds(manifolds, info.first_new_vertex, *coarse);
-    mesh_note = info.split_note;
+    mesh_note  = info.split_note;
+    facet_note = info.orphan_note;
     check_unmerged_vertices(*coarse, mesh_file);
     check_boundary_manifolds(manifolds, *coarse, key);
     set_manifold_ids(manifolds, curved_interior(), *coarse);

@@ -1145,6 +1145,8 @@ namespace contact_fem
     }
     if (!scene.mesh_note.empty())
       pcout << "Mesh file: " << scene.mesh_note << std::endl;
+    if (!scene.facet_note.empty())
+      pcout << "Mesh file: " << scene.facet_note << std::endl;
     // Refining a polygon of a curve without its manifold moves p_max away
     // from the converged value with every level: say so once, up front.
     const bool refines =

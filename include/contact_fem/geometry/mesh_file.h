@@ -34,7 +34,10 @@ namespace contact_fem
     /// tetrahedra split into 96 hexahedra"), and the first vertex the split
     /// made (the vertices before it are the file's nodes). Empty and
     /// invalid for a mesh read as it is.
-    std::string  split_note;
+    std::string split_note;
+    /// Boundary elements on nodes no cell uses (Gmsh without coherence),
+    /// given the faces at their coordinates: how many; empty if none.
+    std::string  orphan_note;
     unsigned int first_new_vertex = numbers::invalid_unsigned_int;
   };
 

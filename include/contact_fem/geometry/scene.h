@@ -199,6 +199,9 @@ namespace contact_fem
     /// What the reader split ("24 tetrahedra split into 96 hexahedra"), or
     /// empty: the mesh file's cells were read as they are.
     std::string mesh_note;
+    /// Boundary elements of the mesh file on nodes of their own, given the
+    /// faces at their coordinates (MeshFileInfo::orphan_note); empty if none.
+    std::string facet_note;
 
     struct Hertz
     {
