@@ -173,12 +173,11 @@ namespace contact_fem
   }
 
   void
-  ContactParameters::check_kinematics(const unsigned int dim,
-                                      const std::string &formulation,
-                                      const unsigned int geometry_degree) const
+  ContactParameters::check_kinematics(const unsigned int dim, const std::string &formulation) const
   {
     // The linearisation of the mortar operators exists for 2D line faces
-    // and 3D bilinear faces; the exact-gap formulations (alm) use it.
+    // and 3D quadrilateral faces (bilinear or biquadratic); the exact-gap
+    // formulations (alm) use it.
     AssertThrow(!current_kinematics || formulation == "alm frictionless" ||
                   formulation == "alm frictional",
                 ExcMessage("Contact/Kinematics = current is implemented with "
@@ -186,11 +185,5 @@ namespace contact_fem
                            "only (this scene: " +
                            std::to_string(dim) + "D, " + formulation +
                            "). Use Kinematics = updated or small."));
-    AssertThrow(!current_kinematics || dim == 2 || geometry_degree == 1,
-                ExcMessage("Contact/Kinematics = current in 3D is implemented for bilinear faces "
-                           "only (this scene: geometry degree " +
-                           std::to_string(geometry_degree) +
-                           "); set Finite element/Degree = 1 and Mapping degree = 1, or use "
-                           "Kinematics = updated or small."));
   }
 } // namespace contact_fem
