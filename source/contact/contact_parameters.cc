@@ -115,8 +115,7 @@ namespace contact_fem
                       "tangent (finite deformation, large sliding; Newton "
                       "converges quadratically; see doc/finite_strain.md). "
                       "'alm frictionless' and 'alm frictional' (objective "
-                      "slip), in 2D and in 3D on bilinear faces (geometry "
-                      "degree 1).");
+                      "slip), in 2D and 3D (bilinear or curved faces).");
     prm.declare_entry("Penetration tolerance", "0.05", Patterns::Double(0.),
                       "After a step converges, every slave node is located against "
                       "the whole master surface of its pair (R-tree, closest point). "
