@@ -114,8 +114,8 @@ namespace contact_fem
                       "tangent (finite deformation, large sliding; Newton "
                       "converges quadratically; see doc/finite_strain.md). "
                       "'alm frictionless', 'alm frictional' (objective slip) "
-                      "and 'penalty frictionless', in 2D and in 3D on bilinear "
-                      "faces (geometry degree 1).");
+                      "and 'penalty frictionless', in 2D and 3D (bilinear or "
+                      "curved faces).");
     prm.declare_entry("Penetration tolerance", "0.05", Patterns::Double(0.),
                       "After a step converges, every slave node is located against "
                       "the whole master surface of its pair (R-tree, closest point). "
@@ -172,13 +172,11 @@ namespace contact_fem
   }
 
   void
-  ContactParameters::check_kinematics(const unsigned int dim,
-                                      const std::string &formulation,
-                                      const unsigned int geometry_degree) const
+  ContactParameters::check_kinematics(const unsigned int dim, const std::string &formulation) const
   {
     // The linearisation of the mortar operators exists for 2D line faces
-    // and 3D bilinear faces; the alm formulations and the frictionless
-    // penalty use it.
+    // and 3D quadrilateral faces (bilinear or biquadratic); the alm
+    // formulations and the frictionless penalty use it.
     AssertThrow(!current_kinematics || formulation == "alm frictionless" ||
                   formulation == "alm frictional" || formulation == "penalty frictionless",
                 ExcMessage("Contact/Kinematics = current is implemented with "
@@ -186,11 +184,5 @@ namespace contact_fem
                            "penalty frictionless only (this scene: " +
                            std::to_string(dim) + "D, " + formulation +
                            "). Use Kinematics = updated or small."));
-    AssertThrow(!current_kinematics || dim == 2 || geometry_degree == 1,
-                ExcMessage("Contact/Kinematics = current in 3D is implemented for bilinear faces "
-                           "only (this scene: geometry degree " +
-                           std::to_string(geometry_degree) +
-                           "); set Finite element/Degree = 1 and Mapping degree = 1, or use "
-                           "Kinematics = updated or small."));
   }
 } // namespace contact_fem

@@ -406,8 +406,9 @@ namespace contact_fem
        * of D at a slave corner cut off by a master edge under the slightest
        * initial penetration, a jump at zero gap). The chord's end beyond
        * @p u lies across the master edge, so the crossing is bracketed:
-       * found by a scan and bisection. False if @p along is not on the
-       * inner side of that edge either.
+       * found by a scan and bisection; @p s: its fraction along the chord's
+       * parameters (xi = xi_a + s (xi_b - xi_a)). False if @p along is not
+       * on the inner side of that edge either.
        */
       bool
       edge_crossing(const QuadFace       &slave,
@@ -416,7 +417,8 @@ namespace contact_fem
                     const Point<2>       &u,
                     const Point<2>       &along,
                     const Point<2>       &other,
-                    Point<2>             &xi)
+                    Point<2>             &xi,
+                    double               &s)
       {
         const Tensor<1, 2> c = chord.b - chord.a, d = other - u, dxi = chord.xi_b - chord.xi_a;
         const auto         fraction = [&](const Point<2> &x) {
@@ -447,7 +449,8 @@ namespace contact_fem
             (side(middle) == inner ? lower : upper) = middle;
           }
         // dxi is zero in the edge's fixed parameter, which stays exactly +-1.
-        xi = chord.xi_a + 0.5 * (lower + upper) * dxi;
+        s  = 0.5 * (lower + upper);
+        xi = chord.xi_a + s * dxi;
         return true;
       }
 
@@ -774,7 +777,7 @@ namespace contact_fem
       /// plane), whose value @p xi_value overlap() found: its projection
       /// along n0 in numbers of type Number, a coordinate on the slave
       /// boundary held there. Exact for bilinear faces, whose edges project
-      /// to the chords.
+      /// to the chords (a crossing of a curved edge: crossing_parameter()).
       template <typename Face, typename Number>
       Point<2, Number>
       vertex_parameter(const Face                     &slave,
@@ -796,11 +799,79 @@ namespace contact_fem
           }
       }
 
+      /// A vertex that overlap() put where a master edge crosses a slave
+      /// edge (edge_crossing()): its chord, the fraction s along it, and
+      /// which neighbour of the vertex spans that master edge with it.
+      struct EdgeCrossing
+      {
+        bool         found         = false;
+        unsigned int chord         = 0;
+        double       s             = 0.;
+        bool         other_is_next = false;
+      };
+
+      /**
+       * The slave parameter of an edge @p crossing (value @p xi_value) in
+       * numbers of type Number, from the overlap vertex @p u and its
+       * neighbour @p other along the master edge. The crossing solves
+       * f(s) = d x (P(x(xi_a + s dxi)) - u) = 0, d = other - u, P the plane
+       * coordinates, x the slave face; found by bisection in double, its
+       * derivatives come from the implicit-function theorem: one Newton step
+       * s* - f(s*) / f_s(s*) in AD numbers (f_s in double) carries
+       * ds = -f_x dx / f_s, and its value is set back to s*. A coordinate on
+       * the slave boundary (+-1) is held, as in vertex_parameter().
+       */
+      template <typename Face, typename Number>
+      Point<2, Number>
+      crossing_parameter(const Face                     &slave,
+                         const QuadFace                 &slave_values,
+                         const AuxiliaryPlaneOf<Number> &plane,
+                         const BoundaryChord            &chord,
+                         const EdgeCrossing             &crossing,
+                         const Point<2, Number>         &u,
+                         const Point<2, Number>         &other,
+                         const Point<2>                 &xi_value)
+      {
+        if constexpr (std::is_same_v<Number, double>)
+          return xi_value;
+        else
+          {
+            const Tensor<1, 2>         dxi  = chord.xi_b - chord.xi_a;
+            const Point<2>             xi_s = chord.xi_a + crossing.s * dxi;
+            const Tensor<1, 2, Number> d    = other - u;
+            const Number               f =
+              cross_2d(d,
+                       Tensor<1, 2, Number>(
+                         plane.coordinates(slave.point(Point<2, Number>(xi_s[0], xi_s[1]))) - u));
+            const auto           t            = slave_values.tangents(xi_s);
+            const Tensor<1, 3>   T            = dxi[0] * t[0] + dxi[1] * t[1];
+            const AuxiliaryPlane plane_values = plane.values();
+            const Tensor<1, 2>   dT({T * plane_values.e1, T * plane_values.e2});
+            const Tensor<1, 2>   d_value = point_value(d);
+            const double         f_s     = cross_2d(d_value, dT);
+            // A master edge (nearly) tangent to the slave edge: the crossing
+            // is ill-conditioned; hold s (as crossing_fraction() does).
+            Number s = crossing.s;
+            if (std::abs(f_s) > 1e-10 * d_value.norm() * dT.norm())
+              s = crossing.s - f / f_s;
+            Point<2, Number> xi;
+            for (unsigned int c = 0; c < 2; ++c)
+              {
+                xi[c] = chord.xi_a[c] + s * dxi[c];
+                if (std::abs(xi_value[c]) == 1. || dxi[c] == 0.)
+                  xi[c] = Number(xi_value[c]);
+                xi[c].val() = xi_value[c];
+              }
+            return xi;
+          }
+      }
+
       /// The parameter (in double) of the vertex @p u of an overlap
       /// @p piece after @p prev and before @p next (overlap()): where a
       /// master edge crosses the slave edge for a vertex inside a boundary
-      /// chord, the projection along n0 otherwise, put on the boundary
-      /// within 1e-10. False if it does not project.
+      /// chord (described in @p crossing), the projection along n0
+      /// otherwise, put on the boundary within 1e-10. False if it does not
+      /// project.
       bool
       vertex_parameter_value(const QuadFace                   &slave,
                              const AuxiliaryPlane             &plane,
@@ -808,27 +879,32 @@ namespace contact_fem
                              const Point<2>                   &u,
                              const Point<2>                   &prev,
                              const Point<2>                   &next,
-                             Point<2>                         &xi)
+                             Point<2>                         &xi,
+                             EdgeCrossing                     &crossing)
       {
         // A vertex inside a boundary chord, between a neighbour on the
         // chord and one off it: where a master edge crosses the slave
         // edge.
-        bool on_edge = false;
-        for (const BoundaryChord &chord : chords)
+        crossing = EdgeCrossing();
+        for (unsigned int k = 0; k < chords.size(); ++k)
           {
-            const Tensor<1, 2> c       = chord.b - chord.a;
-            const auto         on_line = [&](const Point<2> &x) {
+            const BoundaryChord &chord   = chords[k];
+            const Tensor<1, 2>   c       = chord.b - chord.a;
+            const auto           on_line = [&](const Point<2> &x) {
               return std::abs(cross_2d(c, x - chord.a)) <= 1e-10 * c.norm_square();
             };
             const double fraction = ((u - chord.a) * c) / c.norm_square();
             if (!on_line(u) || !(fraction > 1e-10 && fraction < 1. - 1e-10) ||
                 on_line(prev) == on_line(next))
               continue;
-            on_edge = on_line(prev) ? edge_crossing(slave, plane, chord, u, prev, next, xi) :
-                                      edge_crossing(slave, plane, chord, u, next, prev, xi);
+            crossing.chord         = k;
+            crossing.other_is_next = on_line(prev);
+            const Point<2> &along = on_line(prev) ? prev : next,
+                           &other = on_line(prev) ? next : prev;
+            crossing.found = edge_crossing(slave, plane, chord, u, along, other, xi, crossing.s);
             break;
           }
-        if (!on_edge && !project_along(slave, plane.point(u), plane.normal, xi))
+        if (!crossing.found && !project_along(slave, plane.point(u), plane.normal, xi))
           return false;
         // Vertices on the slave boundary come back up to round-off:
         // put them on it (for_each_point() recognises its edges).
@@ -909,19 +985,28 @@ namespace contact_fem
           ParameterPolygon           polygon_values;
           for (unsigned int k = 0; k < piece.size(); ++k)
             {
-              Point<2> xi;
+              Point<2>           xi;
+              EdgeCrossing       crossing;
+              const unsigned int prev = (k + values.size() - 1) % values.size(),
+                                 next = (k + 1) % values.size();
               if (!vertex_parameter_value(slave_values, plane_values, chords, values[k],
-                                          values[(k + values.size() - 1) % values.size()],
-                                          values[(k + 1) % values.size()], xi))
+                                          values[prev], values[next], xi, crossing))
                 {
                   polygons.clear();
                   return false;
                 }
-              // An edge crossing at a chord's end repeats its node.
+              // An edge crossing at a chord's end repeats its node. On a
+              // bilinear face the crossing is the projection of the vertex
+              // (straight edges), linearised as such.
               if (polygon_values.empty() || xi.distance(polygon_values.back()) > 1e-12)
                 {
                   polygon_values.push_back(xi);
-                  polygon.push_back(vertex_parameter(slave, slave_values, plane, piece[k], xi));
+                  polygon.push_back(
+                    crossing.found && slave_values.degree() == 2 ?
+                      crossing_parameter(slave, slave_values, plane, chords[crossing.chord],
+                                         crossing, piece[k],
+                                         piece[crossing.other_is_next ? next : prev], xi) :
+                      vertex_parameter(slave, slave_values, plane, piece[k], xi));
                 }
             }
           while (polygon_values.size() > 1 &&

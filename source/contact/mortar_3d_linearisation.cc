@@ -220,15 +220,6 @@ namespace contact_fem
     bool
     linearise_pair(const QuadPairPatch &patch, const bool derivatives, LinearisedQuadPair &result)
     {
-      const auto bilinear = [&](const QuadPairPatch::Face &face) {
-        return face.nodes.size() == 4;
-      };
-      bool all_bilinear = bilinear(patch.master);
-      for (const auto &faces : {patch.slave_faces, patch.other_masters})
-        for (const QuadPairPatch::Face &face : faces)
-          all_bilinear = all_bilinear && bilinear(face);
-      AssertThrow(all_bilinear,
-                  ExcMessage("The 3D contact linearisation supports bilinear (4-node) faces only."));
       if (derivatives)
         return compute_pair(patch, coordinates<ADNumber>(patch), result);
       return compute_pair(patch, coordinates<double>(patch), result);

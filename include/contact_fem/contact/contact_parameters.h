@@ -45,12 +45,9 @@ namespace contact_fem
     void
     parse_parameters(ParameterHandler &prm);
     /// Refuses Kinematics = current where it is not implemented: a scene
-    /// of dimension @p dim with Contact/Formulation = @p formulation and
-    /// a geometry of degree @p geometry_degree.
+    /// of dimension @p dim with Contact/Formulation = @p formulation.
     void
-    check_kinematics(const unsigned int  dim,
-                     const std::string  &formulation,
-                     const unsigned int  geometry_degree) const;
+    check_kinematics(const unsigned int dim, const std::string &formulation) const;
   };
 } // namespace contact_fem
 

@@ -4,11 +4,13 @@
 // and the dual basis they are built from. Forward automatic
 // differentiation (Sacado) of the kernel of mortar_3d_number.h; the values
 // are exactly those of the double path (integrate_pair()). The 3D
-// counterpart of mortar_linearisation.h, for bilinear (4-node) faces:
-// a vertex where a master edge crosses a curved slave edge is not
-// linearised. Where the clipping changes topology (a vertex entering or
-// leaving a polygon, a quadrature point clamped to the master's rim) the
-// derivative is the one-sided one of the topology found.
+// counterpart of mortar_linearisation.h, for bilinear (4-node) and
+// biquadratic (9-node) faces, Q1 on a quadratic mapping included (a vertex
+// where a master edge crosses a curved slave edge, found by bisection, is
+// differentiated by the implicit-function theorem). Where the clipping
+// changes topology (a vertex entering or leaving a polygon, a quadrature
+// point clamped to the master's rim) the derivative is the one-sided one
+// of the topology found.
 #ifndef contact_fem_mortar_3d_linearisation_h
 #define contact_fem_mortar_3d_linearisation_h
 
@@ -68,7 +70,7 @@ namespace contact_fem
      * The operators of @p patch (dual basis on the overlaps of the master
      * and the other masters, Gauss points as n_quadrature_points()), with
      * their derivatives if @p derivatives. Returns false if the faces do
-     * not overlap. Throws for faces that are not bilinear.
+     * not overlap.
      */
     bool
     linearise_pair(const QuadPairPatch &patch, const bool derivatives, LinearisedQuadPair &result);

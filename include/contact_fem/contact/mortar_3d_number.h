@@ -125,8 +125,9 @@ namespace contact_fem
      * overlap() with @p slave, @p master and @p slave_normals in numbers of
      * type Number (@p slave_values: the slave in double, for the
      * decisions and roots): the vertices of @p polygons as
-     * functions of the nodes. In AD numbers, bilinear faces only (a vertex
-     * where a master edge crosses a curved slave edge is not linearised).
+     * functions of the nodes, bilinear or biquadratic (a vertex where a
+     * master edge crosses a curved slave edge, found by bisection in double,
+     * gets its derivatives from the implicit-function theorem).
      */
     template <typename Number>
     bool
