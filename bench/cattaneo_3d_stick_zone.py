@@ -22,8 +22,9 @@ traction's L2 error against Mindlin; after the normal step, the slip nodes
 and the tangential force across the load (the half model's y force: the
 resultant of the radial traction the normal step leaves, over mu P / 2).
 From pressure_profile.csv at the last step: the largest radius of a stick
-node. (The nodes on the symmetry plane y = 0 carry no friction: see
-doc/validation.md, "The stick radius: Q1 against Q2".)
+node. (The nodes on the symmetry plane y = 0 carried no friction until
+2026-11-27 (branch symfric): doc/validation.md, "The stick radius: Q1
+against Q2".)
 
 Usage:
   python3 bench/cattaneo_3d_stick_zone.py [--binary B] [--variants a,b]

@@ -132,9 +132,10 @@ namespace contact_fem
   TangentialVector<dim>
   AlmFrictional<dim>::decide_on_trial(const SlaveNode             &s,
                                       const double                 p_bound,
-                                      const TangentialVector<dim> &trial) const
+                                      const TangentialVector<dim> &trial_traction) const
   {
-    const double size = magnitude<dim>(trial);
+    const TangentialVector<dim> trial = free_part(s, trial_traction);
+    const double                size  = magnitude<dim>(trial);
     // For zero only a law without friction slips: its direction changes
     // nothing.
     const TangentialVector<dim> direction = unit_direction<dim>(trial, size);
@@ -159,6 +160,18 @@ namespace contact_fem
     if (sets.direction[s.node] * direction < 0. && !frictionless_law(s))
       return TangentialVector<dim>();
     return direction;
+  }
+
+  template <int dim>
+  TangentialVector<dim>
+  AlmFrictional<dim>::free_part(const SlaveNode &s, const TangentialVector<dim> &t) const
+  {
+    const unsigned int f = sets.held_component[s.node];
+    if (f == dim)
+      return t;
+    const Tensor<1, dim>        n    = frame_normal(s);
+    const TangentialVector<dim> free = to_frame(free_tangent(n, f), n);
+    return (t * free) * free;
   }
 
   template <int dim>
@@ -196,9 +209,11 @@ namespace contact_fem
         cone_stiffness[s.node] = 0.;
         return;
       }
-    const TangentialVector<dim> xi = slip_increment(interface, s, u);
+    // Along one tangent only where a support holds the other: no cone term
+    // across the slip direction (the support carries that direction).
+    const TangentialVector<dim> xi = free_part(s, slip_increment(interface, s, u));
     sets.direction[s.node]         = stick_or_slip(s, p_bound, xi);
-    cone_stiffness[s.node]         = slip_cone_stiffness(s, xi);
+    cone_stiffness[s.node] = sets.held_component[s.node] < dim ? 0. : slip_cone_stiffness(s, xi);
   }
 
   template <int dim>
@@ -248,6 +263,8 @@ namespace contact_fem
     double               best_value = 0.1;
     for (unsigned int c = 0; c < dim; ++c)
       {
+        if (c == sets.held_component[s.node])
+          continue;
         const double value = std::min(std::abs(s.normal[c]), std::abs(m[c]));
         if (value > best_value)
           {
@@ -335,9 +352,11 @@ namespace contact_fem
                                            const std::vector<double>   &fixed_values,
                                            AffineConstraints<double>   &constraints) const
   {
-    const auto &slave = interface.nodes[s.node];
+    const auto        &slave = interface.nodes[s.node];
+    const unsigned int held  = sets.held_component[s.node];
     for (unsigned int d = 0; d < dim; ++d)
-      if (!constraints.can_store_line(slave.dofs[d]) || constraints.is_constrained(slave.dofs[d]))
+      if (d != held &&
+          (!constraints.can_store_line(slave.dofs[d]) || constraints.is_constrained(slave.dofs[d])))
         return;
     // u_j = sum_l M_jl / D_j u_l + n (gap offset) + tau (slip offset): the
     // normal part closes the gap, the tangential part keeps the relative
@@ -352,6 +371,13 @@ namespace contact_fem
     Tensor<1, dim> old_relative = interface.displacement(s.node, converged_displacement);
     for (const auto &[m, value] : s.M)
       old_relative -= (value / s.D) * interface.displacement(m, converged_displacement);
+    if constexpr (dim == 3)
+      if (held < dim)
+        {
+          add_partly_held_stick(interface, s, normal_offset, old_relative, fixed_values,
+                                constraints);
+          return;
+        }
     const auto     frame = tangent_frame(frame_normal(s));
     Tensor<1, dim> offset;
     if constexpr (dim == 2)
@@ -383,6 +409,47 @@ namespace contact_fem
         for (const auto &[m, value] : s.M)
           line.add(interface.nodes[m], d, value / s.D, interface, fixed_values);
         line.store(slave.dofs[d], constraints);
+      }
+  }
+
+  template <int dim>
+  void
+  AlmFrictional<dim>::add_partly_held_stick(const ContactInterface<dim> &interface,
+                                            const SlaveNode             &s,
+                                            const double                 normal_offset,
+                                            const Tensor<1, dim>        &old_relative,
+                                            const std::vector<double>   &fixed_values,
+                                            AffineConstraints<double>   &constraints) const
+  {
+    // A support fixes component f: the gap (n . z = normal offset) and the
+    // free tangent (a . z = a . old relative displacement) on the free
+    // components g_0, g_1, with u_j,f its Dirichlet value. The 2x2 system
+    // has determinant (n x a)_f = sqrt(1 - n_f^2) for n along the frame
+    // normal, of order one on an active node (a free |n_c| > 0.1).
+    const auto          &slave     = interface.nodes[s.node];
+    const unsigned int   f         = sets.held_component[s.node];
+    const unsigned int   g[2]      = {(f + 1) % dim, (f + 2) % dim};
+    const Tensor<1, dim> rows[2]   = {s.normal, free_tangent(frame_normal(s), f)};
+    const double         values[2] = {normal_offset, old_relative * rows[1]};
+    const double         det       = rows[0][g[0]] * rows[1][g[1]] - rows[0][g[1]] * rows[1][g[0]];
+    const double         inverse[2][2] = {{rows[1][g[1]] / det, -rows[0][g[1]] / det},
+                                          {-rows[1][g[0]] / det, rows[0][g[0]] / det}};
+    for (unsigned int i = 0; i < 2; ++i)
+      {
+        // u_j,g_i = sum_r inverse_ir (rows_r . (sum_l M_jl / D_j u_l) +
+        // values_r - rows_r,f u_j,f).
+        Tensor<1, dim> coefficient;
+        ConstraintLine line;
+        for (unsigned int r = 0; r < 2; ++r)
+          {
+            coefficient += inverse[i][r] * rows[r];
+            line.inhomogeneity += inverse[i][r] * values[r];
+          }
+        for (const auto &[m, value] : s.M)
+          for (unsigned int d = 0; d < dim; ++d)
+            line.add(interface.nodes[m], d, coefficient[d] * value / s.D, interface, fixed_values);
+        line.add(slave, f, -coefficient[f], interface, fixed_values);
+        line.store(slave.dofs[g[i]], constraints);
       }
   }
 
@@ -538,8 +605,7 @@ namespace contact_fem
       {
         const std::vector<double> &u = interface.search_configuration();
         for (const auto &s : interface.slave_nodes)
-          if (s.paired && this->active[s.node] &&
-              owned.is_element(interface.nodes[s.node].dofs[0]))
+          if (s.paired && this->active[s.node] && owned.is_element(interface.nodes[s.node].dofs[0]))
             assemble_current(interface, s, u, constraints, test_constraints, matrix, rhs);
       }
     std::vector<types::global_dof_index> dofs;
@@ -624,9 +690,9 @@ namespace contact_fem
     // The columns: the gradient of e . xi and its offset z, e . xi = gradient
     // . u - z; of the objective slip at the search configuration u_k for
     // current kinematics (z = gradient . u_k - e . xi(u_k)).
-    std::vector<types::global_dof_index> columns  = dofs;
-    std::vector<double>                  entries  = gradient;
-    double                               z        = 0.;
+    std::vector<types::global_dof_index> columns = dofs;
+    std::vector<double>                  entries = gradient;
+    double                               z       = 0.;
     if (current)
       {
         columns.clear();
@@ -708,9 +774,9 @@ namespace contact_fem
       free_rows.distribute_local_to_global(local, row_dof, constraints, columns, matrix);
       free_rows.distribute_local_to_global(local_rhs, row_dof, rhs);
     };
-    const auto &linearised = interface.linearised_nodes.at(s.node);
-    const bool  friction   = carries_friction(interface, s);
-    const bool  sticks     = friction && !sets.slips(s.node, this->active);
+    const auto        &linearised = interface.linearised_nodes.at(s.node);
+    const bool         friction   = carries_friction(interface, s);
+    const bool         sticks     = friction && !sets.slips(s.node, this->active);
     const unsigned int gap_component =
       friction && !sticks ? slip_eliminated_component(s) : this->eliminated_component(interface, s);
     if (gap_component == dim)
@@ -723,12 +789,25 @@ namespace contact_fem
       {
         // xi_j = 0, one frame component in each of the other rows.
         std::array<Row, dim - 1>    slip_rows;
-        const TangentialVector<dim> xi = objective_slip(interface, s, u, &slip_rows);
-        for (unsigned int k = 0, component = 0; k < dim - 1; ++k, ++component)
+        const TangentialVector<dim> xi   = objective_slip(interface, s, u, &slip_rows);
+        const unsigned int          held = sets.held_component[s.node];
+        if (held < dim)
           {
-            component += component == gap_component;
-            add_row(component, slip_rows[k], xi[k]);
+            // A support fixes component held: the free tangent's slip in
+            // the remaining free component.
+            const TangentialVector<dim> free = to_frame(free_tangent(s.normal, held), s.normal);
+            Row                         row;
+            for (unsigned int k = 0; k < dim - 1; ++k)
+              for (const auto &[dof, entry] : slip_rows[k])
+                row[dof] += free[k] * entry;
+            add_row(3 - gap_component - held, row, xi * free);
           }
+        else
+          for (unsigned int k = 0, component = 0; k < dim - 1; ++k, ++component)
+            {
+              component += component == gap_component;
+              add_row(component, slip_rows[k], xi[k]);
+            }
       }
 
     // The geometric stiffness -p df/du - t_c dh^c/du in the test space
@@ -795,6 +874,12 @@ namespace contact_fem
             tangential[s.node] = TangentialVector<dim>();
             continue;
           }
+        if constexpr (dim == 3)
+          if (sets.held_component[s.node] < dim)
+            {
+              recover_partly_held(interface, s, residual);
+              continue;
+            }
         Tensor<1, dim> lambda;
         for (unsigned int d = 0; d < dim; ++d)
           lambda[d] = residual[interface.position(slave.dofs[d])] / s.D;
@@ -811,6 +896,37 @@ namespace contact_fem
           tangential[s.node] =
             laws[s.pair]->threshold(std::max(this->pressure[s.node], 0.)) * sets.direction[s.node];
       }
+  }
+
+  template <int dim>
+  void
+  AlmFrictional<dim>::recover_partly_held(const ContactInterface<dim> &interface,
+                                          const SlaveNode             &s,
+                                          const std::vector<double>   &residual)
+  {
+    // The residual of the fixed component holds the support's reaction:
+    // lambda = alpha b + beta a from the free components g_0, g_1, b the
+    // other direction of the node's conditions (stick: the gap's slave
+    // normal; slip: the frame normal of the slip condition's test space),
+    // a the free tangent. The tangential traction keeps the part along
+    // n x a of a stick node's lambda (its slave normal's tilt off the frame
+    // normal), so that the masters' force is traction(): that part is the
+    // support's, and the cone sees only the one along a (free_part()).
+    const auto          &slave = interface.nodes[s.node];
+    const unsigned int   f     = sets.held_component[s.node];
+    const unsigned int   g[2]  = {(f + 1) % dim, (f + 2) % dim};
+    const Tensor<1, dim> n     = frame_normal(s);
+    const Tensor<1, dim> a     = free_tangent(n, f);
+    const Tensor<1, dim> b     = sets.slips(s.node, this->active) ? n : s.normal;
+    double               r[2];
+    for (unsigned int i = 0; i < 2; ++i)
+      r[i] = residual[interface.position(slave.dofs[g[i]])] / s.D;
+    const double         det    = b[g[0]] * a[g[1]] - b[g[1]] * a[g[0]];
+    const double         alpha  = (r[0] * a[g[1]] - r[1] * a[g[0]]) / det;
+    const double         beta   = (b[g[0]] * r[1] - b[g[1]] * r[0]) / det;
+    const Tensor<1, dim> lambda = alpha * b + beta * a;
+    this->pressure[s.node]      = -(lambda * n);
+    tangential[s.node]          = to_frame(lambda, n);
   }
 
   template <int dim>
@@ -885,7 +1001,7 @@ namespace contact_fem
           {
             const double p  = this->pressure[s.node];
             const double rt = !sets.slips(s.node, this->active) ?
-                                magnitude<dim>(slip_increment(interface, s, u)) :
+                                magnitude<dim>(free_part(s, slip_increment(interface, s, u))) :
                                 magnitude<dim>(tangential[s.node] - laws[s.pair]->threshold(p) *
                                                                       sets.direction[s.node]) /
                                   k;
@@ -947,7 +1063,7 @@ namespace contact_fem
           if (sets.slips(s.node, this->active))
             off_bound = std::max(off_bound, magnitude<dim>(t - bound * sets.direction[s.node]));
           else
-            outside = std::max(outside, magnitude<dim>(t) - bound);
+            outside = std::max(outside, magnitude<dim>(free_part(s, t)) - bound);
         }
     if (largest_bound == 0.)
       {

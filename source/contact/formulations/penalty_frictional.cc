@@ -54,6 +54,10 @@ namespace contact_fem
                            "e.g. 'coulomb 0.2' or 'tresca 0.01' (or per pair '3: coulomb "
                            "0.2'); for frictionless contact use Contact/Formulation = "
                            "penalty frictionless."));
+    // A node a support holds along one tangential direction only (3D
+    // symmetry plane) has no friction along the other here: the support
+    // holds it (alm / mpc frictional impose it).
+    this->free_tangents = false;
     prm.enter_subsection("Contact");
     tangential_penalty =
       parse_auto_or_positive(prm.get("Tangential penalty"), "Contact/Tangential penalty");
@@ -165,7 +169,7 @@ namespace contact_fem
         if (!this->active[s.node])
           continue;
         cone_factor[s.node] = 0.;
-        if (!carries_friction(interface, s))
+        if (!carries_friction(interface, s, false))
           {
             tangential[s.node]     = TangentialVector<dim>();
             sets.direction[s.node] = TangentialVector<dim>();
@@ -233,7 +237,7 @@ namespace contact_fem
     std::array<std::vector<double>, dim - 1> xi_gradient;
     for (const auto &s : interface.slave_nodes)
       {
-        if (!this->active[s.node] || !carries_friction(interface, s) ||
+        if (!this->active[s.node] || !carries_friction(interface, s, false) ||
             !owned.is_element(interface.nodes[s.node].dofs[0]))
           continue;
         const TangentialVector<dim> &direction = sets.direction[s.node];
@@ -309,7 +313,7 @@ namespace contact_fem
       {
         if (!s.paired)
           continue;
-        if (!this->active[s.node] || !carries_friction(interface, s))
+        if (!this->active[s.node] || !carries_friction(interface, s, false))
           {
             tangential[s.node]     = TangentialVector<dim>();
             sets.direction[s.node] = TangentialVector<dim>();
@@ -459,7 +463,7 @@ namespace contact_fem
             direction[0] = sets.direction[s.node][0];
           else
             direction = to_global(sets.direction[s.node], s.normal);
-          if (sets.direction[s.node].norm_square() == 0. || !carries_friction(interface, s))
+          if (sets.direction[s.node].norm_square() == 0. || !carries_friction(interface, s, false))
             all_slip = false;
           else if (first)
             {
@@ -478,7 +482,7 @@ namespace contact_fem
     // instead of mu = 0.2).
     double elastic_slip = 0.;
     for (const auto &s : interface.slave_nodes)
-      if (sets.sticks(s.node, this->active) && carries_friction(interface, s))
+      if (sets.sticks(s.node, this->active) && carries_friction(interface, s, false))
         elastic_slip = std::max(elastic_slip, magnitude<dim>(tangential[s.node]) /
                                                 tangent_penalty[s.pair] / s.size);
     constexpr double allowed_elastic_slip = 1e-2;

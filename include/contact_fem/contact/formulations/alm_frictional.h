@@ -141,8 +141,7 @@ namespace contact_fem
     Tensor<1, dim>
     frame_normal(const SlaveNode &s) const override
     {
-      return current || sets.held[s.node] || frictionless_law(s) ? s.normal :
-                                                                   s.interface_normal;
+      return current || sets.held[s.node] || frictionless_law(s) ? s.normal : s.interface_normal;
     }
 
     void
@@ -221,6 +220,13 @@ namespace contact_fem
                     const double                 p_bound,
                     const TangentialVector<dim> &trial) const;
 
+    /// The part of the tangential vector @p t of node @p s along the
+    /// direction its support leaves free (free_tangent()) if a support
+    /// holds it along the other (StickSlipSets::held_component); @p t
+    /// otherwise.
+    TangentialVector<dim>
+    free_part(const SlaveNode &s, const TangentialVector<dim> &t) const;
+
     /// beta of the cone term of active node @p s (0 unless it slips under
     /// a law with friction in 3D) at slip @p xi.
     virtual double
@@ -244,6 +250,22 @@ namespace contact_fem
     slip_increment(const ContactInterface<dim> &interface,
                    const SlaveNode             &s,
                    const std::vector<double>   &u) const;
+
+    /// The stick lines of a node a support holds along one tangential
+    /// direction (3D): gap and free tangent on the two free components.
+    void
+    add_partly_held_stick(const ContactInterface<dim> &interface,
+                          const SlaveNode             &s,
+                          const double                 normal_offset,
+                          const Tensor<1, dim>        &old_relative,
+                          const std::vector<double>   &fixed_values,
+                          AffineConstraints<double>   &constraints) const;
+
+    /// recover_multipliers() of such a node.
+    void
+    recover_partly_held(const ContactInterface<dim> &interface,
+                        const SlaveNode             &s,
+                        const std::vector<double>   &residual);
 
     /// The direction w of the slip condition w . lambda = T - T' p (along
     /// d) of slip node @p s: 2D tau + sigma T'(p) n (the condition times

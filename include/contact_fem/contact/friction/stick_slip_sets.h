@@ -13,19 +13,62 @@
 
 namespace contact_fem
 {
+  /// The Dirichlet component of interface node @p node if a support fixes
+  /// exactly one (3D; a roller on a symmetry plane): it holds one
+  /// tangential direction only, and the other carries friction
+  /// (free_tangent()). dim otherwise (2D: the one tangent is held).
+  template <int dim>
+  unsigned int
+  partly_held_component(const typename ContactInterface<dim>::Node &node)
+  {
+    unsigned int fixed = dim, count = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      if (node.fixed[d])
+        {
+          fixed = d;
+          ++count;
+        }
+    return dim == 3 && count == 1 ? fixed : dim;
+  }
+
   /// Whether slave node @p s carries a tangential condition: paired, and no
-  /// Dirichlet component (a support holds it tangentially).
+  /// Dirichlet component (a support holds it tangentially), or in 3D one
+  /// (partly_held_component(); with @p free_tangents, the formulations
+  /// that impose friction along free_tangent()).
   template <int dim>
   bool
   carries_friction(const ContactInterface<dim>                     &interface,
-                   const typename ContactInterface<dim>::SlaveNode &s)
+                   const typename ContactInterface<dim>::SlaveNode &s,
+                   const bool                                       free_tangents = true)
   {
     if (!s.paired)
       return false;
+    const auto &node = interface.nodes[s.node];
+    if (free_tangents && partly_held_component<dim>(node) < dim)
+      return true;
     for (unsigned int d = 0; d < dim; ++d)
-      if (interface.nodes[s.node].fixed[d])
+      if (node.fixed[d])
         return false;
     return true;
+  }
+
+  /// The tangent direction a support that fixes component @p f leaves free
+  /// at a node with unit normal @p n (3D): n x e_f, in the tangent plane
+  /// and normal to e_f (on a symmetry plane whose node normal tilts off it
+  /// by ~h / 2R, the in-plane tangent turned into the tangent plane).
+  template <int dim>
+  Tensor<1, dim>
+  free_tangent(const Tensor<1, dim> &n, const unsigned int f)
+  {
+    Tensor<1, dim> result;
+    if constexpr (dim == 3)
+      {
+        Tensor<1, dim> axis;
+        axis[f] = 1.;
+        result  = cross_product_3d(n, axis);
+        result /= result.norm();
+      }
+    return result;
   }
 
   /// The weighted relative displacement of slave node @p s from the
@@ -162,22 +205,34 @@ namespace contact_fem
    * The stick/slip sets of the interface nodes: per node the slip direction
    * of the trial traction (zero = stick; in 2D +1 / -1), meaningful for
    * active nodes, and whether a support holds the node (it then neither
-   * sticks nor slips).
+   * sticks nor slips; with @p free_tangents not a node a support holds
+   * along one tangential direction only, whose slip direction is then
+   * along free_tangent(), partly_held_component()).
    */
   template <int dim>
   struct StickSlipSets
   {
     std::vector<TangentialVector<dim>> direction;
     std::vector<bool>                  held;
+    /// partly_held_component() of the nodes not held, dim for the others.
+    std::vector<unsigned int> held_component;
 
     void
-    initialize(const ContactInterface<dim> &interface)
+    initialize(const ContactInterface<dim> &interface, const bool free_tangents = true)
     {
       direction.assign(interface.nodes.size(), TangentialVector<dim>());
       held.assign(interface.nodes.size(), false);
+      held_component.assign(interface.nodes.size(), dim);
       for (unsigned int n = 0; n < held.size(); ++n)
-        for (unsigned int d = 0; d < dim; ++d)
-          held[n] = held[n] || interface.nodes[n].fixed[d];
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+            held[n] = held[n] || interface.nodes[n].fixed[d];
+          if (free_tangents && partly_held_component<dim>(interface.nodes[n]) < dim)
+            {
+              held[n]           = false;
+              held_component[n] = partly_held_component<dim>(interface.nodes[n]);
+            }
+        }
     }
 
     bool
