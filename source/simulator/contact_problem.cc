@@ -100,10 +100,19 @@ namespace contact_fem
                       std::vector<std::vector<int>> &sets_of_iteration)
     {
       sets_of_iteration.push_back(contact.contact_sets());
-      // An empty set: the formulation offers no detection.
-      if (changes == 0 || iteration < 2 || sets_of_iteration.back().empty())
+      // An empty set: the formulation offers no detection. The sets of the
+      // step's start (iteration 0) do not count: the first iterate takes the
+      // whole increment in one linear step and may push a node across its
+      // bound for one iteration, and coming back to the start's sets is then
+      // the iteration recovering, not a cycle (3D ironing with mu = 0.3: a
+      // slip node behind the die stuck after the first iterate only, whose
+      // slip pointed forward at every step size, and the step failed after
+      // 4 splits; the next iterates converged). A real cycle repeats the
+      // sets of its own iterates one iteration later.
+      constexpr unsigned int first_compared = 1;
+      if (changes == 0 || iteration < first_compared + 2 || sets_of_iteration.back().empty())
         return;
-      for (unsigned int k = 0; k + 1 < iteration; ++k)
+      for (unsigned int k = first_compared; k + 1 < iteration; ++k)
         if (sets_of_iteration[k] == sets_of_iteration.back())
           {
             unsigned int differing = 0;
