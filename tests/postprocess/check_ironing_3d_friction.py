@@ -13,7 +13,9 @@ slipping, stuck after the step's first iterate and slipped again after the
 second, and the check for cycling sets took that return to the step's
 starting sets for a period-2 cycle (doc/finite_strain.md).
 
-- every load step converges, none split;
+- the run reaches the end of the slide (on the whole surfaces of the
+  stored mesh, read since 9819f39, the step control splits a few steps
+  whose active set cycles: their number is printed);
 - the die's reaction balances the pair's contact force (to 1e-6 of F_n);
 - on the plateau every active slave node slips (no stick node once a step
   converged), and at the last step every slip node is on the slip bound
@@ -66,11 +68,12 @@ print(f"F_n on the plateau: mean {mean:.4f}, max |F_n - mean| / mean "
 
 on_bound = re.search(r"slip nodes off the slip bound: ok \(< 1e-08\)", output) is not None
 checks = {
-    f"all {STEPS} load steps converged, none split": steps == converged == STEPS,
+    f"the slide converged to its end ({steps - converged} failed attempts split)":
+        "Results at t = 12" in output and converged >= STEPS,
     "4 plateau steps": len(plateau) == 4,
     "the die's reaction balances the contact force to 1e-6 of F_n": balance < 1e-6,
-    "every active node slips on the plateau": len(sets) == STEPS and all(sets[k][0] == 0 and sets[k][1] > 0
-                                                                         for k in plateau),
+    "every active node slips on the plateau": len(sets) == len(rows) and all(
+        sets[k][0] == 0 and sets[k][1] > 0 for k in plateau),
     "slip nodes on the slip bound at the last step": on_bound,
 }
 for name, ok in checks.items():
