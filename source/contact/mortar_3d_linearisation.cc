@@ -122,8 +122,9 @@ namespace contact_fem
         }
 
         /// Adds @p factor times the derivatives of @p x to @p result.
+        template <typename AD>
         void
-        add(const ADNumber &x, const double factor, std::vector<double> &result) const
+        add(const AD &x, const double factor, std::vector<double> &result) const
         {
           if (x.size() == 0)
             return;
@@ -139,8 +140,9 @@ namespace contact_fem
                 }
         }
 
+        template <typename AD>
         Linearised
-        operator()(const ADNumber &x) const
+        operator()(const AD &x) const
         {
           Linearised result{x.val(), std::vector<double>(n_patch_variables, 0.)};
           add(x, 1., result.derivatives);
@@ -200,13 +202,15 @@ namespace contact_fem
         Table<2, Number>                        De, Me;
       };
 
-      /// linearise_slave_face() in numbers of type Number (double: values
-      /// only).
-      template <typename Number>
+      /// linearise_slave_face() with derivatives if @p ad: the nodal
+      /// normals in DFad numbers (as many variables as the slave faces have
+      /// coordinates), each master's part in PairADNumber.
+      template <bool ad>
       bool
       compute_face(const QuadFacePatch &patch, std::vector<LinearisedQuadPair> &pairs)
       {
-        constexpr bool     ad                = !std::is_same_v<Number, double>;
+        using NormalNumber                   = std::conditional_t<ad, ADNumber, double>;
+        using Number                         = std::conditional_t<ad, PairADNumber, double>;
         const unsigned int n_patch_variables = 3 * patch.points.size();
         const QuadFace     slave_values      = patch.quad_face(patch.slave_faces[0]);
 
@@ -216,14 +220,14 @@ namespace contact_fem
           for (const unsigned int i : f.nodes)
             if (std::find(slave_points.begin(), slave_points.end(), i) == slave_points.end())
               slave_points.push_back(i);
-        const Chain                   normal_chain(slave_points, n_patch_variables, nullptr);
-        std::vector<Point<3, Number>> x(patch.points.size());
+        const Chain                         normal_chain(slave_points, n_patch_variables, nullptr);
+        std::vector<Point<3, NormalNumber>> x(patch.points.size());
         for (unsigned int v = 0; v < normal_chain.coordinate.size(); ++v)
           {
             const unsigned int c = normal_chain.coordinate[v];
-            x[c / 3][c % 3]      = variable<Number>(normal_chain, v, patch.points[c / 3][c % 3]);
+            x[c / 3][c % 3] = variable<NormalNumber>(normal_chain, v, patch.points[c / 3][c % 3]);
           }
-        const Vectors<Number>                           normals = nodal_normals(patch, x);
+        const Vectors<NormalNumber>                     normals = nodal_normals(patch, x);
         const unsigned int                              n       = normals.size();
         std::vector<Tensor<1, 3>>                       normal_values(n);
         std::vector<std::array<std::vector<double>, 3>> normal_derivatives(n);
@@ -256,6 +260,11 @@ namespace contact_fem
                                     {},
                                     Table<2, Number>(n, n),
                                     Table<2, Number>(n, n)};
+            // Table leaves the derivatives of an SFad uninitialised.
+            part.De.fill(Number(0.));
+            part.Me.fill(Number(0.));
+            // PairADNumber's length: bilinear faces (linearise_slave_face()).
+            Assert(!ad || part.chain.size() == 36, ExcInternalError());
             part.slave  = face_variables<Number>(patch, patch.slave_faces[0], part.chain, 0);
             part.master = face_variables<Number>(patch, m, part.chain, 12);
             for (unsigned int j = 0; j < n; ++j)
@@ -423,8 +432,8 @@ namespace contact_fem
                     "The 3D contact linearisation supports bilinear (4-node) faces only."));
       pairs.clear();
       if (derivatives)
-        return compute_face<ADNumber>(patch, pairs);
-      return compute_face<double>(patch, pairs);
+        return compute_face<true>(patch, pairs);
+      return compute_face<false>(patch, pairs);
     }
   } // namespace Mortar
 } // namespace contact_fem
