@@ -80,8 +80,8 @@ namespace contact_fem
      * each master's overlap, its dual basis integrals and its operators
      * the slave face's and the master's coordinates and the 12 normal
      * components (in PairADNumber, then chained to the coordinates), at
-     * fixed dual basis coefficients: the operators are linear in them, so their part is
-     * added with the integrals of the standard basis.
+     * fixed dual basis coefficients: the operators are linear in them, so
+     * their part is added with the integrals of the standard basis.
      */
     bool
     linearise_slave_face(const QuadFacePatch             &patch,
