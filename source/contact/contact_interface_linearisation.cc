@@ -1,7 +1,8 @@
 // ContactInterface::linearise(): the derivatives of the weighted gaps and
 // contact forces of the paired slave nodes with respect to the
 // displacement DoFs, at the configuration of the last search, from
-// Mortar::linearise_pair() on every coupled face pair (2D and 3D). For
+// Mortar::linearise_pair() on every coupled face pair (2D) or
+// Mortar::linearise_slave_face() on every slave face with its masters (3D). For
 // Contact/Kinematics = current (doc/finite_strain.md).
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/contact/mortar_3d_linearisation.h>
@@ -39,7 +40,7 @@ namespace contact_fem
     template <>
     struct Linearisation<3>
     {
-      using Patch  = Mortar::QuadPairPatch;
+      using Patch  = Mortar::QuadFacePatch;
       using Result = Mortar::LinearisedQuadPair;
     };
 
@@ -158,30 +159,20 @@ namespace contact_fem
       node.has_normal = true;
     }
 
-    /// The derivatives of pair (@p f, @p m) added to the sums of the
-    /// paired nodes of slave face @p f.
+    /// The derivatives of pair (@p f, @p m), linearised in @p result on
+    /// the patch of @p builder, added to the sums of the paired nodes of
+    /// slave face @p f.
     template <int dim>
     void
-    add_pair(const ContactInterface<dim>       &interface,
-             const std::vector<Tensor<1, dim>> &u,
-             const unsigned int                 f,
-             const unsigned int                 m,
-             const std::vector<unsigned int>   &neighbours,
-             const std::vector<unsigned int>   &masters,
-             const bool                         frictional,
-             std::map<unsigned int, NodeSums>  &sums)
+    add_pair(const ContactInterface<dim>               &interface,
+             const std::vector<Tensor<1, dim>>         &u,
+             const PatchBuilder<dim>                   &builder,
+             const typename Linearisation<dim>::Result &result,
+             const unsigned int                         f,
+             const unsigned int                         m,
+             const bool                                 frictional,
+             std::map<unsigned int, NodeSums>          &sums)
     {
-      PatchBuilder<dim> builder(interface, u);
-      builder.patch.slave_faces.push_back(builder.add_face(f));
-      for (const unsigned int g : neighbours)
-        builder.patch.slave_faces.push_back(builder.add_face(g));
-      builder.patch.master = builder.add_face(m);
-      for (const unsigned int other : masters)
-        if (other != m)
-          builder.patch.other_masters.push_back(builder.add_face(other));
-      typename Linearisation<dim>::Result result;
-      if (!Mortar::linearise_pair(builder.patch, true, result))
-        return;
       const auto &slave_nodes  = interface.faces[f].nodes;
       const auto &master_nodes = interface.faces[m].nodes;
       for (unsigned int k = 0; k < result.D.size(); ++k)
@@ -209,6 +200,60 @@ namespace contact_fem
           if (frictional)
             add_frictional(interface, u, builder, result, k, slave_nodes, master_nodes, node);
         }
+    }
+
+    /// The derivatives of the pairs of slave face @p f with its @p masters
+    /// added to the sums of its paired nodes. 2D: each pair linearised on
+    /// its own patch (the slave face, its @p neighbours, the pair's master
+    /// and the others).
+    void
+    add_slave_face(const ContactInterface<2>        &interface,
+                   const std::vector<Tensor<1, 2>>  &u,
+                   const unsigned int                f,
+                   const std::vector<unsigned int>  &neighbours,
+                   const std::vector<unsigned int>  &masters,
+                   const bool                        frictional,
+                   std::map<unsigned int, NodeSums> &sums)
+    {
+      for (const unsigned int m : masters)
+        {
+          PatchBuilder<2> builder(interface, u);
+          builder.patch.slave_faces.push_back(builder.add_face(f));
+          for (const unsigned int g : neighbours)
+            builder.patch.slave_faces.push_back(builder.add_face(g));
+          builder.patch.master = builder.add_face(m);
+          for (const unsigned int other : masters)
+            if (other != m)
+              builder.patch.other_masters.push_back(builder.add_face(other));
+          Mortar::LinearisedPair result;
+          if (Mortar::linearise_pair(builder.patch, true, result))
+            add_pair(interface, u, builder, result, f, m, frictional, sums);
+        }
+    }
+
+    /// 3D: the slave face linearised once with all its masters (the nodal
+    /// normals and the dual basis are shared).
+    void
+    add_slave_face(const ContactInterface<3>        &interface,
+                   const std::vector<Tensor<1, 3>>  &u,
+                   const unsigned int                f,
+                   const std::vector<unsigned int>  &neighbours,
+                   const std::vector<unsigned int>  &masters,
+                   const bool                        frictional,
+                   std::map<unsigned int, NodeSums> &sums)
+    {
+      PatchBuilder<3> builder(interface, u);
+      builder.patch.slave_faces.push_back(builder.add_face(f));
+      for (const unsigned int g : neighbours)
+        builder.patch.slave_faces.push_back(builder.add_face(g));
+      for (const unsigned int m : masters)
+        builder.patch.masters.push_back(builder.add_face(m));
+      std::vector<Mortar::LinearisedQuadPair> results;
+      if (!Mortar::linearise_slave_face(builder.patch, true, results))
+        return;
+      for (unsigned int i = 0; i < masters.size(); ++i)
+        if (!results[i].D.empty())
+          add_pair(interface, u, builder, results[i], f, masters[i], frictional, sums);
     }
 
     /// The sums of one node as a LinearisedNode over the union of its DoFs.
@@ -265,17 +310,24 @@ namespace contact_fem
         if (faces[f].slave)
           for (const unsigned int n : faces[f].nodes)
             faces_of_node[n].push_back(f);
+      // Each slave face with its masters, in the order of the pairs.
+      std::vector<unsigned int> slave_faces;
       for (const auto &[f, m] : coupled_faces)
-        masters_of_face[f].push_back(m);
-      for (const auto &[f, m] : coupled_faces)
+        {
+          if (masters_of_face[f].empty())
+            slave_faces.push_back(f);
+          masters_of_face[f].push_back(m);
+        }
+      for (const unsigned int f : slave_faces)
         {
           std::set<unsigned int> neighbours;
           for (const unsigned int n : faces[f].nodes)
             for (const unsigned int g : faces_of_node[n])
               if (g != f)
                 neighbours.insert(g);
-          add_pair(*this, u, f, m, std::vector<unsigned int>(neighbours.begin(), neighbours.end()),
-                   masters_of_face[f], frictional, sums);
+          add_slave_face(*this, u, f,
+                         std::vector<unsigned int>(neighbours.begin(), neighbours.end()),
+                         masters_of_face[f], frictional, sums);
         }
       for (const auto &[n, node_sums] : sums)
         linearised_nodes[n] = linearised_node<dim>(node_sums);

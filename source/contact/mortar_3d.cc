@@ -1060,7 +1060,12 @@ namespace contact_fem
 
         result.D.assign(ns, Number(0.));
         result.weighted_gap.assign(ns, Tensor<1, 3, Number>());
+        // Filled explicitly: Table leaves the derivatives of a
+        // PairADNumber (SFad) uninitialised.
         result.M.reinit(ns, nm);
+        for (unsigned int j = 0; j < ns; ++j)
+          for (unsigned int l = 0; l < nm; ++l)
+            result.M(j, l) = Number(0.);
         result.overlap_area = 0.;
 
         std::vector<Number>            phi(ns);
@@ -1194,6 +1199,29 @@ namespace contact_fem
                                       const std::vector<ParameterPolygonOf<ADNumber>> &,
                                       Table<2, ADNumber> &,
                                       Table<2, ADNumber> &);
+    template bool
+    overlap_of<PairADNumber>(const QuadFaceOf<PairADNumber> &,
+                             const QuadFace &,
+                             const std::vector<Tensor<1, 3, PairADNumber>> &,
+                             const QuadFaceOf<PairADNumber> &,
+                             std::vector<ParameterPolygonOf<PairADNumber>> &);
+    template void
+    integrate_polygons_of<PairADNumber>(const QuadFaceOf<PairADNumber> &,
+                                        const QuadFace &,
+                                        const std::vector<Tensor<1, 3, PairADNumber>> &,
+                                        const Table<2, PairADNumber> &,
+                                        const QuadFaceOf<PairADNumber> &,
+                                        const QuadFace &,
+                                        const unsigned int,
+                                        const std::vector<ParameterPolygonOf<PairADNumber>> &,
+                                        QuadOperatorsOf<PairADNumber> &);
+    template void
+    dual_basis_integrals_of<PairADNumber>(const QuadFaceOf<PairADNumber> &,
+                                          const QuadFace &,
+                                          const std::vector<Tensor<1, 3, PairADNumber>> &,
+                                          const std::vector<ParameterPolygonOf<PairADNumber>> &,
+                                          Table<2, PairADNumber> &,
+                                          Table<2, PairADNumber> &);
 
     Point<2>
     closest_parameter(const QuadFace &quad, const Point<3> &x)

@@ -1,6 +1,7 @@
-// Linearisation of the 3D mortar operators of one face pair: the kernel of
-// mortar_3d_number.h evaluated in Sacado forward-AD numbers, one derivative
-// per node coordinate. See mortar_3d_linearisation.h.
+// Linearisation of the 3D mortar operators of a slave face with each of its
+// masters: the kernel of mortar_3d_number.h evaluated in Sacado forward-AD
+// numbers, each evaluation in the few variables its result depends on
+// directly, chained to the node coordinates. See mortar_3d_linearisation.h.
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/differentiation/ad.h>
 
@@ -8,12 +9,14 @@
 #include <contact_fem/contact/mortar_3d_number.h>
 #include <contact_fem/contact/mortar_number.h>
 
+#include <algorithm>
+
 namespace contact_fem
 {
   namespace Mortar
   {
     QuadFace
-    QuadPairPatch::quad_face(const Face &face) const
+    QuadFacePatch::quad_face(const Face &face) const
     {
       QuadFace result;
       for (const unsigned int i : face.nodes)
@@ -31,7 +34,7 @@ namespace contact_fem
 
       template <typename Number>
       QuadFaceFor<Number>
-      face_of(const std::vector<Point<3, Number>> &x, const QuadPairPatch::Face &face)
+      face_of(const std::vector<Point<3, Number>> &x, const QuadFacePatch::Face &face)
       {
         QuadFaceFor<Number> result;
         for (const unsigned int i : face.nodes)
@@ -53,7 +56,7 @@ namespace contact_fem
           {
             const Point<2, Number> xi(Number(2. * q.point(i)[0] - 1.),
                                       Number(2. * q.point(i)[1] - 1.));
-            const auto t = face.tangents(xi);
+            const auto             t = face.tangents(xi);
             area += 4. * q.weight(i) * length(Tensor<1, 3, Number>(cross_product_3d(t[0], t[1])));
           }
         return area;
@@ -64,11 +67,11 @@ namespace contact_fem
       /// (ContactInterface::surface_node_normals()).
       template <typename Number>
       Vectors<Number>
-      nodal_normals(const QuadPairPatch &patch, const std::vector<Point<3, Number>> &x)
+      nodal_normals(const QuadFacePatch &patch, const std::vector<Point<3, Number>> &x)
       {
-        const QuadPairPatch::Face &slave = patch.slave_faces[0];
+        const QuadFacePatch::Face &slave = patch.slave_faces[0];
         Vectors<Number>            normals(face_of(x, slave).n_shape_nodes());
-        for (const QuadPairPatch::Face &f : patch.slave_faces)
+        for (const QuadFacePatch::Face &f : patch.slave_faces)
           {
             const QuadFaceFor<Number> face = face_of(x, f);
             const Number              area = face_area(face);
@@ -88,141 +91,352 @@ namespace contact_fem
         return normals;
       }
 
-      /**
-       * The dual basis coefficients A = D_e M_e^{-1} on @p polygons
-       * (dual_basis_coefficients()). Values: those of the double path; the
-       * derivative: dual_coefficients_of().
-       */
-      template <typename Number>
-      Table<2, Number>
-      dual_coefficients(const QuadFaceFor<Number>                     &slave,
-                        const QuadFace                                &slave_values,
-                        const Vectors<Number>                         &normals,
-                        const std::vector<ParameterPolygonOf<Number>> &polygons)
+      /// The derivatives of one AD evaluation with respect to the patch
+      /// coordinates: variable v of the evaluation is coordinate
+      /// coordinate[v] of the patch, or for v >= coordinate.size() normal
+      /// component v - coordinate.size() (node (v - size) / 3), whose
+      /// derivatives are @p normal_derivatives.
+      struct Chain
       {
-        std::vector<Tensor<1, 3>>     normal_values;
-        std::vector<ParameterPolygon> polygon_values;
-        for (const Tensor<1, 3, Number> &n : normals)
-          normal_values.push_back(Tensor<1, 3>({value_of(n[0]), value_of(n[1]), value_of(n[2])}));
-        for (const ParameterPolygonOf<Number> &polygon : polygons)
-          {
-            polygon_values.emplace_back();
-            for (const Point<2, Number> &xi : polygon)
-              polygon_values.back().emplace_back(value_of(xi[0]), value_of(xi[1]));
-          }
-        const FullMatrix<double> A =
-          dual_basis_coefficients(slave_values, normal_values, polygon_values);
-        const unsigned int n = A.m();
-        Table<2, Number>   result(n, n);
+        std::vector<unsigned int>                              coordinate;
+        const std::vector<std::array<std::vector<double>, 3>> *normal_derivatives = nullptr;
+        unsigned int                                           n_patch_variables  = 0;
+
+        /// The variables: 3 per point of @p points, then (if
+        /// normal_derivatives) the normal components.
+        Chain(const std::vector<unsigned int>                       &points,
+              const unsigned int                                     n_patch_variables,
+              const std::vector<std::array<std::vector<double>, 3>> *normal_derivatives)
+          : normal_derivatives(normal_derivatives)
+          , n_patch_variables(n_patch_variables)
+        {
+          for (const unsigned int i : points)
+            for (unsigned int d = 0; d < 3; ++d)
+              coordinate.push_back(3 * i + d);
+        }
+
+        unsigned int
+        size() const
+        {
+          return coordinate.size() + (normal_derivatives ? 3 * normal_derivatives->size() : 0);
+        }
+
+        /// Adds @p factor times the derivatives of @p x to @p result.
+        template <typename AD>
+        void
+        add(const AD &x, const double factor, std::vector<double> &result) const
+        {
+          if (x.size() == 0)
+            return;
+          for (unsigned int v = 0; v < coordinate.size(); ++v)
+            result[coordinate[v]] += factor * x.dx(v);
+          if (normal_derivatives)
+            for (unsigned int c = 0; c < 3 * normal_derivatives->size(); ++c)
+              if (const double dn = factor * x.dx(coordinate.size() + c); dn != 0.)
+                {
+                  const std::vector<double> &dx = (*normal_derivatives)[c / 3][c % 3];
+                  for (unsigned int i = 0; i < dx.size(); ++i)
+                    result[i] += dn * dx[i];
+                }
+        }
+
+        template <typename AD>
+        Linearised
+        operator()(const AD &x) const
+        {
+          Linearised result{x.val(), std::vector<double>(n_patch_variables, 0.)};
+          add(x, 1., result.derivatives);
+          return result;
+        }
+      };
+
+      /// @p x as AD variable @p v of @p chain (a constant for double).
+      template <typename Number>
+      Number
+      variable(const Chain &chain, const unsigned int v, const double x)
+      {
         if constexpr (std::is_same_v<Number, double>)
-          {
-            for (unsigned int j = 0; j < n; ++j)
-              for (unsigned int k = 0; k < n; ++k)
-                result(j, k) = A(j, k);
-            return result;
-          }
+          return x;
         else
-          {
-            Table<2, Number> De(n, n), Me(n, n);
-            dual_basis_integrals_of<Number>(slave, slave_values, normals, polygons, De, Me);
-            return dual_coefficients_of(A, De, Me);
-          }
+          return Number(chain.size(), v, x);
       }
 
       template <typename Number>
-      Linearised
-      linearised(const Number &x, const unsigned int n_variables)
+      double
+      value(const Number &x)
       {
-        Linearised result;
-        result.value = value_of(x);
-        if constexpr (!std::is_same_v<Number, double>)
-          for (unsigned int i = 0; i < n_variables; ++i)
-            result.derivatives.push_back(x.size() > 0 ? x.dx(i) : 0.);
+        return value_of(x);
+      }
+
+      /// The face @p face with the coordinates of its nodes the AD
+      /// variables of @p chain from @p first on (3 per node).
+      template <typename Number>
+      QuadFaceFor<Number>
+      face_variables(const QuadFacePatch       &patch,
+                     const QuadFacePatch::Face &face,
+                     const Chain               &chain,
+                     const unsigned int         first)
+      {
+        QuadFaceFor<Number> result;
+        for (unsigned int i = 0; i < face.nodes.size(); ++i)
+          {
+            Point<3, Number> x;
+            for (unsigned int d = 0; d < 3; ++d)
+              x[d] = variable<Number>(chain, first + 3 * i + d, patch.points[face.nodes[i]][d]);
+            result.nodes.push_back(x);
+          }
+        result.element_degree = face.element_degree;
         return result;
       }
 
+      /// One master's part of the slave face (compute_face()), in the AD
+      /// variables of its chain: the slave face's coordinates, the nodal
+      /// normals, the master's coordinates.
       template <typename Number>
-      std::array<Linearised, 3>
-      linearised(const Tensor<1, 3, Number> &x, const unsigned int n_variables)
+      struct MasterPart
       {
-        return {{linearised(x[0], n_variables), linearised(x[1], n_variables),
-                 linearised(x[2], n_variables)}};
-      }
+        Chain                                   chain;
+        QuadFaceFor<Number>                     slave, master;
+        Vectors<Number>                         normals;
+        std::vector<ParameterPolygonOf<Number>> polygons;
+        Table<2, Number>                        De, Me;
+      };
 
-      /// linearise_pair() on the coordinates @p x.
-      template <typename Number>
+      /// linearise_slave_face() with derivatives if @p ad: the nodal
+      /// normals in DFad numbers (as many variables as the slave faces have
+      /// coordinates), each master's part in @p PairNumber (PairADNumber,
+      /// of fixed length, for bilinear faces; DFad for curved ones).
+      template <bool ad, typename PairNumber>
       bool
-      compute_pair(const QuadPairPatch                 &patch,
-                   const std::vector<Point<3, Number>> &x,
-                   LinearisedQuadPair                  &result)
+      compute_face(const QuadFacePatch &patch, std::vector<LinearisedQuadPair> &pairs)
       {
-        const QuadFaceFor<Number> slave = face_of(x, patch.slave_faces[0]),
-                                  master = face_of(x, patch.master);
-        const QuadFace slave_values  = patch.quad_face(patch.slave_faces[0]),
-                       master_values = patch.quad_face(patch.master);
-        const Vectors<Number>                   normals = nodal_normals(patch, x);
-        std::vector<ParameterPolygonOf<Number>> polygons, all;
-        if (!overlap_of<Number>(slave, slave_values, normals, master, polygons))
-          return false;
-        all = polygons;
-        for (const QuadPairPatch::Face &other : patch.other_masters)
-          {
-            std::vector<ParameterPolygonOf<Number>> more;
-            if (overlap_of<Number>(slave, slave_values, normals, face_of(x, other), more))
-              all.insert(all.end(), more.begin(), more.end());
-          }
-        result.polygon_sizes.clear();
-        for (const auto &polygon : all)
-          result.polygon_sizes.push_back(polygon.size());
+        using NormalNumber                   = std::conditional_t<ad, ADNumber, double>;
+        using Number                         = std::conditional_t<ad, PairNumber, double>;
+        const unsigned int n_patch_variables = 3 * patch.points.size();
+        const QuadFace     slave_values      = patch.quad_face(patch.slave_faces[0]);
 
-        const unsigned int      n = 3 * patch.points.size();
-        const Table<2, Number>  A = dual_coefficients(slave, slave_values, normals, all);
-        QuadOperatorsOf<Number> operators;
-        integrate_polygons_of<Number>(slave, slave_values, normals, A, master, master_values,
-                                      n_quadrature_points(slave_values, master_values), polygons,
-                                      operators);
-        result = LinearisedQuadPair{{}, result.polygon_sizes, {}, {}, {}, {}, {}};
-        for (unsigned int j = 0; j < normals.size(); ++j)
+        // The nodal normals, in the coordinates of the slave faces' nodes.
+        std::vector<unsigned int> slave_points;
+        for (const QuadFacePatch::Face &f : patch.slave_faces)
+          for (const unsigned int i : f.nodes)
+            if (std::find(slave_points.begin(), slave_points.end(), i) == slave_points.end())
+              slave_points.push_back(i);
+        const Chain                         normal_chain(slave_points, n_patch_variables, nullptr);
+        std::vector<Point<3, NormalNumber>> x(patch.points.size());
+        for (unsigned int v = 0; v < normal_chain.coordinate.size(); ++v)
           {
-            result.normals.push_back(linearised(normals[j], n));
-            result.D.push_back(linearised(operators.D[j], n));
-            result.weighted_gap.push_back(linearised(operators.weighted_gap[j], n));
-            const Number g = normals[j] * operators.weighted_gap[j];
-            result.normal_gap.push_back(linearised(g, n));
-            result.M.emplace_back();
-            for (unsigned int l = 0; l < operators.M.n_cols(); ++l)
-              result.M.back().push_back(linearised(operators.M(j, l), n));
-            result.dual_coefficients.emplace_back();
-            for (unsigned int k = 0; k < A.n_cols(); ++k)
-              result.dual_coefficients.back().push_back(linearised(A(j, k), n));
+            const unsigned int c = normal_chain.coordinate[v];
+            x[c / 3][c % 3] = variable<NormalNumber>(normal_chain, v, patch.points[c / 3][c % 3]);
+          }
+        const Vectors<NormalNumber>                     normals = nodal_normals(patch, x);
+        const unsigned int                              n       = normals.size();
+        std::vector<Tensor<1, 3>>                       normal_values(n);
+        std::vector<std::array<std::vector<double>, 3>> normal_derivatives(n);
+        std::vector<std::array<Linearised, 3>>          linearised_normals(n);
+        for (unsigned int j = 0; j < n; ++j)
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              normal_values[j][d] = value(normals[j][d]);
+              if constexpr (ad)
+                linearised_normals[j][d] = normal_chain(normals[j][d]);
+              else
+                linearised_normals[j][d].value = normals[j][d];
+              normal_derivatives[j][d] = linearised_normals[j][d].derivatives;
+            }
+
+        // Each master's overlap and dual basis integrals, in its own
+        // variables.
+        std::vector<MasterPart<Number>> parts;
+        std::vector<ParameterPolygon>   all_polygons;
+        std::vector<unsigned int>       polygon_sizes;
+        bool                            any = false;
+        for (const QuadFacePatch::Face &m : patch.masters)
+          {
+            std::vector<unsigned int> points = patch.slave_faces[0].nodes;
+            points.insert(points.end(), m.nodes.begin(), m.nodes.end());
+            MasterPart<Number> part{Chain(points, n_patch_variables, &normal_derivatives),
+                                    {},
+                                    {},
+                                    Vectors<Number>(n),
+                                    {},
+                                    Table<2, Number>(n, n),
+                                    Table<2, Number>(n, n)};
+            // Table leaves the derivatives of an SFad uninitialised.
+            part.De.fill(Number(0.));
+            part.Me.fill(Number(0.));
+            // PairADNumber's length: bilinear faces (linearise_slave_face()).
+            [[maybe_unused]] constexpr bool fixed_length = std::is_same_v<PairNumber, PairADNumber>;
+            Assert(!ad || !fixed_length || part.chain.size() == 36, ExcInternalError());
+            part.slave = face_variables<Number>(patch, patch.slave_faces[0], part.chain, 0);
+            part.master =
+              face_variables<Number>(patch, m, part.chain, 3 * patch.slave_faces[0].nodes.size());
+            for (unsigned int j = 0; j < n; ++j)
+              for (unsigned int d = 0; d < 3; ++d)
+                part.normals[j][d] =
+                  variable<Number>(part.chain, part.chain.coordinate.size() + 3 * j + d,
+                                   normal_values[j][d]);
+            if (overlap_of<Number>(part.slave, slave_values, part.normals, part.master,
+                                   part.polygons))
+              {
+                any = true;
+                for (const ParameterPolygonOf<Number> &polygon : part.polygons)
+                  {
+                    polygon_sizes.push_back(polygon.size());
+                    all_polygons.emplace_back();
+                    for (const Point<2, Number> &xi : polygon)
+                      all_polygons.back().emplace_back(value(xi[0]), value(xi[1]));
+                  }
+                if constexpr (ad)
+                  dual_basis_integrals_of<Number>(part.slave, slave_values, part.normals,
+                                                  part.polygons, part.De, part.Me);
+              }
+            parts.push_back(std::move(part));
+          }
+        if (!any)
+          return false;
+
+        // A = D_e M_e^{-1} in double (the double path's values); dA =
+        // (dD_e - A dM_e) M_e^{-1}, D_e and M_e summed over the masters.
+        const FullMatrix<double> A =
+          dual_basis_coefficients(slave_values, normal_values, all_polygons);
+        std::vector<std::vector<Linearised>> dual(n, std::vector<Linearised>(n));
+        for (unsigned int j = 0; j < n; ++j)
+          for (unsigned int k = 0; k < n; ++k)
+            dual[j][k] = {A(j, k),
+                          ad ? std::vector<double>(n_patch_variables, 0.) : std::vector<double>()};
+        if constexpr (ad)
+          {
+            FullMatrix<double> Me(n, n), Me_inverse(n, n);
+            for (const MasterPart<Number> &part : parts)
+              for (unsigned int i = 0; i < n; ++i)
+                for (unsigned int k = 0; k < n; ++k)
+                  Me(i, k) += value(part.Me(i, k));
+            Me_inverse.invert(Me);
+            for (const MasterPart<Number> &part : parts)
+              if (!part.polygons.empty())
+                for (unsigned int j = 0; j < n; ++j)
+                  for (unsigned int i = 0; i < n; ++i)
+                    {
+                      Number r = part.De(j, i);
+                      for (unsigned int l = 0; l < n; ++l)
+                        r -= A(j, l) * part.Me(l, i);
+                      for (unsigned int k = 0; k < n; ++k)
+                        part.chain.add(r, Me_inverse(i, k), dual[j][k].derivatives);
+                    }
+          }
+
+        // Each master's operators at fixed A, in its variables; they are
+        // linear in A: dD_j = ... + sum_k dA_jk int N_k (and so on), the
+        // integrals of the standard basis (A = identity) in double.
+        Table<2, Number> A_fixed(n, n);
+        Table<2, double> identity(n, n);
+        for (unsigned int j = 0; j < n; ++j)
+          {
+            identity(j, j) = 1.;
+            for (unsigned int k = 0; k < n; ++k)
+              A_fixed(j, k) = A(j, k);
+          }
+        pairs.assign(patch.masters.size(), LinearisedQuadPair());
+        for (unsigned int i = 0; i < parts.size(); ++i)
+          {
+            const MasterPart<Number> &part = parts[i];
+            if (part.polygons.empty())
+              continue;
+            const QuadFace          master_values = patch.quad_face(patch.masters[i]);
+            const unsigned int      n_points = n_quadrature_points(slave_values, master_values);
+            QuadOperatorsOf<Number> ops;
+            integrate_polygons_of<Number>(part.slave, slave_values, part.normals, A_fixed,
+                                          part.master, master_values, n_points, part.polygons, ops);
+            QuadOperatorsOf<double> basis;
+            if constexpr (ad)
+              {
+                std::vector<ParameterPolygon> polygons;
+                for (const ParameterPolygonOf<Number> &polygon : part.polygons)
+                  {
+                    polygons.emplace_back();
+                    for (const Point<2, Number> &xi : polygon)
+                      polygons.back().emplace_back(value(xi[0]), value(xi[1]));
+                  }
+                integrate_polygons_of<double>(slave_values, slave_values, normal_values, identity,
+                                              master_values, master_values, n_points, polygons,
+                                              basis);
+              }
+            // The value of x, its derivatives at fixed A plus those of
+            // sum_k A_jk basis_k.
+            const auto linearised = [&](const Number &x, const unsigned int j,
+                                        const auto &basis_k) {
+              Linearised result;
+              result.value = value(x);
+              if constexpr (ad)
+                {
+                  result = part.chain(x);
+                  for (unsigned int k = 0; k < n; ++k)
+                    if (const double b = basis_k(k); b != 0.)
+                      for (unsigned int v = 0; v < n_patch_variables; ++v)
+                        result.derivatives[v] += dual[j][k].derivatives[v] * b;
+                }
+              return result;
+            };
+            LinearisedQuadPair &pair = pairs[i];
+            pair.normals             = linearised_normals;
+            pair.polygon_sizes       = polygon_sizes;
+            pair.dual_coefficients   = dual;
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                pair.D.push_back(linearised(ops.D[j], j, [&](const unsigned int k) {
+                  return basis.D[k];
+                }));
+                pair.M.emplace_back();
+                for (unsigned int l = 0; l < ops.M.n_cols(); ++l)
+                  pair.M.back().push_back(linearised(ops.M(j, l), j, [&](const unsigned int k) {
+                    return basis.M(k, l);
+                  }));
+                pair.weighted_gap.emplace_back();
+                for (unsigned int d = 0; d < 3; ++d)
+                  pair.weighted_gap.back()[d] =
+                    linearised(ops.weighted_gap[j][d], j, [&](const unsigned int k) {
+                      return basis.weighted_gap[k][d];
+                    });
+                // g_j = n_j . weighted_gap_j, its value as in double.
+                Tensor<1, 3> gap;
+                for (unsigned int d = 0; d < 3; ++d)
+                  gap[d] = pair.weighted_gap[j][d].value;
+                Linearised g{normal_values[j] * gap, {}};
+                if constexpr (ad)
+                  {
+                    g.derivatives.assign(n_patch_variables, 0.);
+                    for (unsigned int d = 0; d < 3; ++d)
+                      for (unsigned int v = 0; v < n_patch_variables; ++v)
+                        g.derivatives[v] +=
+                          normal_values[j][d] * pair.weighted_gap[j][d].derivatives[v] +
+                          gap[d] * normal_derivatives[j][d][v];
+                  }
+                pair.normal_gap.push_back(g);
+              }
           }
         return true;
-      }
-
-      /// The coordinates of @p patch as numbers of type Number: with
-      /// derivatives (one per coordinate) for AD numbers.
-      template <typename Number>
-      std::vector<Point<3, Number>>
-      coordinates(const QuadPairPatch &patch)
-      {
-        const unsigned int            n = 3 * patch.points.size();
-        std::vector<Point<3, Number>> x(patch.points.size());
-        for (unsigned int i = 0; i < patch.points.size(); ++i)
-          for (unsigned int d = 0; d < 3; ++d)
-            if constexpr (std::is_same_v<Number, double>)
-              x[i][d] = patch.points[i][d];
-            else
-              x[i][d] = Number(n, 3 * i + d, patch.points[i][d]);
-        return x;
       }
     } // namespace
 
     bool
-    linearise_pair(const QuadPairPatch &patch, const bool derivatives, LinearisedQuadPair &result)
+    linearise_slave_face(const QuadFacePatch             &patch,
+                         const bool                       derivatives,
+                         std::vector<LinearisedQuadPair> &pairs)
     {
-      if (derivatives)
-        return compute_pair(patch, coordinates<ADNumber>(patch), result);
-      return compute_pair(patch, coordinates<double>(patch), result);
+      // Bilinear faces have 36 variables per master (PairADNumber, on the
+      // stack); curved ones more (DFad).
+      const auto bilinear = [&](const QuadFacePatch::Face &face) {
+        return face.nodes.size() == 4;
+      };
+      bool all_bilinear = bilinear(patch.slave_faces[0]);
+      for (const QuadFacePatch::Face &face : patch.masters)
+        all_bilinear = all_bilinear && bilinear(face);
+      pairs.clear();
+      if (!derivatives)
+        return compute_face<false, double>(patch, pairs);
+      if (all_bilinear)
+        return compute_face<true, PairADNumber>(patch, pairs);
+      return compute_face<true, ADNumber>(patch, pairs);
     }
   } // namespace Mortar
 } // namespace contact_fem

@@ -39,15 +39,15 @@ namespace
   /// The flat patch of 4 x 4 slave nodes (centre face first) and one
   /// master face over x in [a/2, 3a/2], y in [0, a], at height 1e-3 a,
   /// the y of its nodes moved by @p offsets ulps.
-  QuadPairPatch
+  QuadFacePatch
   patch_with_master(const std::array<int, 4> &offsets)
   {
-    QuadPairPatch patch;
+    QuadFacePatch patch;
     for (unsigned int j = 0; j < 4; ++j)
       for (unsigned int i = 0; i < 4; ++i)
         patch.points.emplace_back((i - 1.) * a, (j - 1.) * a, 0.);
     const auto face = [](const unsigned int i, const unsigned int j) {
-      QuadPairPatch::Face f;
+      QuadFacePatch::Face f;
       f.nodes = {4 * j + i, 4 * j + i + 1, 4 * (j + 1) + i, 4 * (j + 1) + i + 1};
       return f;
     };
@@ -57,9 +57,10 @@ namespace
         if (i != 1 || j != 1)
           patch.slave_faces.push_back(face(i, j));
     const double z = 1e-3 * a;
+    patch.masters.emplace_back();
     for (unsigned int v = 0; v < 4; ++v)
       {
-        patch.master.nodes.push_back(patch.points.size());
+        patch.masters[0].nodes.push_back(patch.points.size());
         patch.points.emplace_back((v % 2 == 0 ? 0.5 : 1.5) * a, ulps(v < 2 ? 0. : a, offsets[v]),
                                   z);
       }
@@ -75,11 +76,13 @@ main()
   for (unsigned int k = 0; k < 81; ++k)
     {
       ++cases;
-      const QuadPairPatch patch = patch_with_master(
+      const QuadFacePatch patch = patch_with_master(
         {{int(k % 3) - 1, int(k / 3 % 3) - 1, int(k / 9 % 3) - 1, int(k / 27) - 1}});
-      LinearisedQuadPair exact, values;
-      if (!linearise_pair(patch, true, exact) || !linearise_pair(patch, false, values))
+      std::vector<LinearisedQuadPair> exact_pairs, value_pairs;
+      if (!linearise_slave_face(patch, true, exact_pairs) ||
+          !linearise_slave_face(patch, false, value_pairs))
         continue;
+      const LinearisedQuadPair &exact = exact_pairs[0], &values = value_pairs[0];
       ++overlapping;
       // Largest |derivative| against the scale of D per length (the
       // overlap area over the face size: moving a node by one face

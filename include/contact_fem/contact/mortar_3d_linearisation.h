@@ -1,5 +1,5 @@
-// The 3D mortar operators of one slave/master quadrilateral face pair as
-// functions of the node coordinates, with their first derivatives: D, M,
+// The 3D mortar operators of a slave quadrilateral face with each of its
+// masters as functions of the node coordinates, with their first derivatives: D, M,
 // the weighted gap, its normal part and the averaged unit nodal normals,
 // and the dual basis they are built from. Forward automatic
 // differentiation (Sacado) of the kernel of mortar_3d_number.h; the values
@@ -27,37 +27,39 @@ namespace contact_fem
   namespace Mortar
   {
     /**
-     * A slave/master face pair and the slave faces next to it, by their
-     * nodes: indices into @p points, whose coordinates (x, y and z of each
-     * point, in this order) are the independent variables.
+     * A slave face with its masters and the slave faces next to it, by
+     * their nodes: indices into @p points, whose coordinates (x, y and z
+     * of each point, in this order) are the independent variables.
      */
-    struct QuadPairPatch
+    struct QuadFacePatch
     {
       /// Node indices in QuadFace order; orientation and element degree as
       /// in PairPatch::Face.
       using Face = PairPatch::Face;
       std::vector<Point<3>> points;
-      /// [0]: the slave face of the pair; others: slave faces sharing one of
-      /// its nodes, which enter its averaged nodal normals.
+      /// [0]: the slave face; others: slave faces sharing one of its
+      /// nodes, which enter its averaged nodal normals.
       std::vector<Face> slave_faces;
-      Face              master;
-      /// Further masters of the slave face: their overlaps join the pair's
-      /// in the support of the dual basis.
-      std::vector<Face> other_masters;
+      /// Every master of the slave face: their overlaps, in this order,
+      /// are the support of its dual basis (as ContactInterface builds it).
+      std::vector<Face> masters;
 
       /// A face as a QuadFace of the current coordinates.
       QuadFace
       quad_face(const Face &face) const;
     };
 
-    /// The operators of a QuadPairPatch; j: slave DoF node, l: master DoF node.
+    /// The operators of the slave face of a QuadFacePatch with one of its
+    /// masters; j: slave DoF node, l: master DoF node.
     struct LinearisedQuadPair
     {
       /// Unit nodal normals: the area-weighted mean of the normals of the
       /// slave faces at node j (as ContactInterface averages them).
       std::vector<std::array<Linearised, 3>> normals;
-      /// The number of vertices of each overlap polygon (the topology).
-      std::vector<unsigned int>              polygon_sizes;
+      /// The number of vertices of each overlap polygon of the slave face
+      /// (all masters, in order: the topology).
+      std::vector<unsigned int> polygon_sizes;
+      /// Dual basis coefficients A_jk on the overlaps of all masters.
       std::vector<std::vector<Linearised>>   dual_coefficients;
       std::vector<Linearised>                D;
       std::vector<std::vector<Linearised>>   M;
@@ -67,13 +69,26 @@ namespace contact_fem
     };
 
     /**
-     * The operators of @p patch (dual basis on the overlaps of the master
-     * and the other masters, Gauss points as n_quadrature_points()), with
-     * their derivatives if @p derivatives. Returns false if the faces do
-     * not overlap.
+     * The operators of the slave face of @p patch with each of its masters
+     * (dual basis on the overlaps of all masters, Gauss points as
+     * n_quadrature_points()), with their derivatives if @p derivatives:
+     * @p pairs[i] for masters[i], with empty D if that master does not
+     * overlap the slave face. Returns false if none does.
+     *
+     * The nodal normals and the dual basis are linearised once for all
+     * masters. Each AD evaluation has only the variables its result
+     * depends on directly: the normals those of the slave faces' nodes;
+     * each master's overlap, its dual basis integrals and its operators
+     * the slave face's and the master's coordinates and the normal
+     * components (for bilinear faces 36 variables in PairADNumber, for
+     * curved ones in DFad; then chained to the coordinates), at
+     * fixed dual basis coefficients: the operators are linear in them, so
+     * their part is added with the integrals of the standard basis.
      */
     bool
-    linearise_pair(const QuadPairPatch &patch, const bool derivatives, LinearisedQuadPair &result);
+    linearise_slave_face(const QuadFacePatch             &patch,
+                         const bool                       derivatives,
+                         std::vector<LinearisedQuadPair> &pairs);
   } // namespace Mortar
 } // namespace contact_fem
 

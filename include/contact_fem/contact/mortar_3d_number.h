@@ -5,11 +5,12 @@
 // (clipping sides, duplicate vertices, which points project) and every
 // Newton root is taken in double; an AD number only adds the derivatives
 // to those values. Instantiated in mortar_3d.cc for double and
-// Sacado::Fad::DFad<double>.
+// Sacado::Fad::DFad<double> and PairADNumber.
 #ifndef contact_fem_mortar_3d_number_h
 #define contact_fem_mortar_3d_number_h
 
 #include <deal.II/base/table.h>
+#include <deal.II/differentiation/ad.h>
 
 #include <contact_fem/contact/mortar.h>
 #include <contact_fem/contact/mortar_3d.h>
@@ -17,6 +18,46 @@
 #include <array>
 #include <type_traits>
 #include <vector>
+
+namespace contact_fem
+{
+  namespace Mortar
+  {
+    /// The AD number of one bilinear slave/master pair in its own
+    /// variables (mortar_3d_linearisation.cc): the 12 coordinates of each
+    /// face and the 12 components of the slave's nodal normals. Derivatives
+    /// of fixed length, on the stack: no allocation per operation.
+    using PairADNumber = Sacado::Fad::SFad<double, 36>;
+  } // namespace Mortar
+} // namespace contact_fem
+
+// deal.II knows the product types of DFad only (sacado_product_types.h).
+namespace dealii
+{
+  namespace internal
+  {
+    template <>
+    struct ProductTypeImpl<contact_fem::Mortar::PairADNumber, double>
+    {
+      using type = contact_fem::Mortar::PairADNumber;
+    };
+    template <>
+    struct ProductTypeImpl<double, contact_fem::Mortar::PairADNumber>
+    {
+      using type = contact_fem::Mortar::PairADNumber;
+    };
+    template <>
+    struct ProductTypeImpl<contact_fem::Mortar::PairADNumber, contact_fem::Mortar::PairADNumber>
+    {
+      using type = contact_fem::Mortar::PairADNumber;
+    };
+  } // namespace internal
+  template <>
+  struct EnableIfScalar<contact_fem::Mortar::PairADNumber>
+  {
+    using type = contact_fem::Mortar::PairADNumber;
+  };
+} // namespace dealii
 
 namespace contact_fem
 {
