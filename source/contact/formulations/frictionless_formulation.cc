@@ -207,6 +207,24 @@ namespace contact_fem
 
   template <int dim>
   void
+  FrictionlessFormulation<dim>::free_patch_dofs(
+    const ContactInterface<dim>                          &interface,
+    const typename ContactInterface<dim>::LinearisedNode &linearised,
+    std::vector<unsigned int>                            &kept,
+    std::vector<types::global_dof_index>                 &columns) const
+  {
+    kept.clear();
+    columns.clear();
+    for (unsigned int i = 0; i < linearised.dofs.size(); ++i)
+      if (!interface.dof_fixed(interface.position(linearised.dofs[i])))
+        {
+          kept.push_back(i);
+          columns.push_back(linearised.dofs[i]);
+        }
+  }
+
+  template <int dim>
+  void
   FrictionlessFormulation<dim>::eliminate_fixed(const ContactInterface<dim>          &interface,
                                                 std::vector<types::global_dof_index> &dofs,
                                                 FullMatrix<double>                   &matrix,

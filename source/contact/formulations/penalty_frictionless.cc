@@ -184,17 +184,10 @@ namespace contact_fem
                                              TrilinosWrappers::SparseMatrix  &matrix,
                                              TrilinosWrappers::MPI::Vector   &rhs) const
   {
-    const auto &linearised = interface.linearised_nodes.at(s.node);
-    // Dirichlet DoFs already hold their values in u_k: their columns (u -
-    // u_k = 0 there) and rows (zero test functions) drop out.
+    const auto                          &linearised = interface.linearised_nodes.at(s.node);
     std::vector<types::global_dof_index> columns;
     std::vector<unsigned int>            kept;
-    for (unsigned int i = 0; i < linearised.dofs.size(); ++i)
-      if (!interface.dof_fixed(interface.position(linearised.dofs[i])))
-        {
-          kept.push_back(i);
-          columns.push_back(linearised.dofs[i]);
-        }
+    this->free_patch_dofs(interface, linearised, kept, columns);
     // f_j at u_k on the rows of linearised.force (the node's DoFs and its
     // masters').
     std::map<types::global_dof_index, double> force;

@@ -168,6 +168,17 @@ namespace contact_fem
           active[n] = false;
     }
 
+    /// Contact/Kinematics = current: the DoFs of @p linearised that are not
+    /// Dirichlet components, as @p columns, with their indices into
+    /// linearised.dofs in @p kept. The Dirichlet DoFs already hold their
+    /// values in the iterate u_k, so their columns (u - u_k = 0 there) and
+    /// rows (zero test functions) drop out of the linearised terms.
+    void
+    free_patch_dofs(const ContactInterface<dim>                          &interface,
+                    const typename ContactInterface<dim>::LinearisedNode &linearised,
+                    std::vector<unsigned int>                            &kept,
+                    std::vector<types::global_dof_index>                 &columns) const;
+
     /// A local system over interface DoFs @p dofs without its Dirichlet
     /// components: their values (dirichlet_values) times their columns
     /// move to @p rhs, their rows and columns go. For assemblies that add
