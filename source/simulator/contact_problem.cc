@@ -703,16 +703,15 @@ namespace contact_fem
     const typename DoFHandler<dim>::active_cell_iterator &cell,
     const std::vector<types::global_dof_index>           &dofs,
     const Vector<double>                                 &local_u,
-    Vector<double>                                       &local_r)
+    Vector<double>                                       &local_r,
+    Vector<double>                                       &linear_minus_r)
   {
     const unsigned int index = cell->active_cell_index();
     // The last step's linear model at this u, K_T u + offset: with F-bar
     // the multipliers are recovered from its residual (linearised_residual).
-    Vector<double> linear_minus_r;
-    const bool     linear_model = f_bar() && cell_offsets[index].size() > 0;
+    const bool linear_model = f_bar() && cell_offsets[index].size() > 0;
     if (linear_model)
       {
-        linear_minus_r.reinit(local_u.size());
         cell_matrices[index].vmult(linear_minus_r, local_u);
         linear_minus_r += cell_offsets[index];
       }
@@ -739,9 +738,10 @@ namespace contact_fem
     if (f_bar())
       linearised_residual = 0.;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    Vector<double> local_u(fe.n_dofs_per_cell()), local_r(fe.n_dofs_per_cell());
-    double         local_strain = 0., local_work = 0.;
-    double         smallest_jacobian = std::numeric_limits<double>::max();
+    Vector<double> local_u(fe.n_dofs_per_cell()), local_r(fe.n_dofs_per_cell()),
+      linear_minus_r(fe.n_dofs_per_cell());
+    double local_strain = 0., local_work = 0.;
+    double smallest_jacobian = std::numeric_limits<double>::max();
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -762,7 +762,7 @@ namespace contact_fem
               else
                 {
                   const auto linearisation =
-                    relinearise_finite_strain_cell(cell, dofs, local_u, local_r);
+                    relinearise_finite_strain_cell(cell, dofs, local_u, local_r, linear_minus_r);
                   smallest_jacobian = std::min(smallest_jacobian, linearisation.smallest_jacobian);
                   local_strain += linearisation.energy;
                 }

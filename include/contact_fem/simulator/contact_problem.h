@@ -226,12 +226,14 @@ namespace contact_fem
     /// compute_residual() on a finite-strain cell: its residual at
     /// @p local_u into @p local_r, its tangent and offset at @p local_u kept
     /// for the next Newton step, and with F-bar the residual of the last
-    /// step's linear model added to linearised_residual.
+    /// step's linear model added to linearised_residual (@p linear_minus_r:
+    /// the caller's scratch of the cell's size).
     typename FiniteStrainBulk<dim>::CellLinearisation
     relinearise_finite_strain_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
                                    const std::vector<types::global_dof_index>           &dofs,
                                    const Vector<double>                                 &local_u,
-                                   Vector<double>                                       &local_r);
+                                   Vector<double>                                       &local_r,
+                                   Vector<double> &linear_minus_r);
     double
     equilibrium_residual_norm(const std::vector<double> &contact_force_at_interface) const;
     // --- adaptivity (contact_problem_refinement.cc)
