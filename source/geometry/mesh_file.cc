@@ -21,6 +21,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <set>
 #include <sstream>
 #include <unordered_map>
 #include <unordered_set>
@@ -943,30 +944,96 @@ namespace contact_fem
 
   namespace
   {
+    /// A tagged boundary element of the file on nodes that no cell uses
+    /// (below): its corners in the computing frame, its physical tag and
+    /// its name for messages.
+    template <int dim>
+    struct LooseFacet
+    {
+      std::vector<Point<dim>> corners;
+      int                     physical = 0;
+      std::string             element;
+    };
+
+    template <int dim>
+    Point<dim>
+    in_dim(const Point<3> &x)
+    {
+      Point<dim> p;
+      for (unsigned int d = 0; d < dim; ++d)
+        p[d] = x[d];
+      return p;
+    }
+
+    std::string
+    element_name(const GmshElement &e)
+    {
+      return "boundary element " + std::to_string(e.tag) + " (line " + std::to_string(e.line) +
+             ", physical tag " + std::to_string(e.physical) + ")";
+    }
+
+    /// The tagged facets of an unsplit mesh on nodes no cell uses.
+    template <int dim>
+    std::vector<LooseFacet<dim>>
+    loose_facets(const Contents &contents, const Point<3> &origin)
+    {
+      std::vector<LooseFacet<dim>> loose;
+      for (const GmshElement &facet : contents.tagged_facets)
+        if (std::any_of(facet.nodes.begin(), facet.nodes.end(), [&](const long n) {
+              return contents.cell_nodes.count(n) == 0;
+            }))
+          {
+            LooseFacet<dim> f{{}, facet.physical, element_name(facet)};
+            for (const long n : facet.nodes)
+              f.corners.push_back(in_dim<dim>(Point<3>(contents.node_coordinates.at(n) - origin)));
+            loose.push_back(std::move(f));
+          }
+      return loose;
+    }
+
+    /// The same for a split mesh: the pieces of tagged facets (dimension
+    /// dim - 1) with a point that no split cell uses.
+    template <int dim>
+    std::vector<LooseFacet<dim>>
+    loose_facets(const SplitMesh &split, const std::vector<GmshElement> &elements)
+    {
+      std::vector<bool> in_cell(split.points.size(), false);
+      for (const auto &piece : split.cells)
+        for (const unsigned int v : piece.vertices)
+          in_cell[v] = true;
+      std::vector<LooseFacet<dim>> loose;
+      for (const auto &piece : split.boundary)
+        if (piece.physical > 0 && piece.vertices.size() == (dim == 3 ? 4u : 2u) &&
+            std::any_of(piece.vertices.begin(), piece.vertices.end(), [&](const unsigned int v) {
+              return !in_cell[v];
+            }))
+          {
+            LooseFacet<dim> f{{}, piece.physical, element_name(elements[piece.parent])};
+            for (const unsigned int v : piece.vertices)
+              f.corners.push_back(in_dim<dim>(split.points[v]));
+            loose.push_back(std::move(f));
+          }
+      return loose;
+    }
+
     /**
      * Gmsh without coherence (the built-in kernel with Geometry.AutoCoherence
      * = 0, some extrusions) writes boundary elements on nodes of their own,
      * at the coordinates of the cells' nodes. deal.II's reader drops them
      * without a word, and their faces keep boundary id 0: a contact surface
      * or a support half missing (meshes/ironing_3d.msh lost 39 of its 78
-     * tagged faces). Such an element gets the face of the mesh whose
-     * vertices it meets, within 1e-6 of its size. Returns how many; throws
-     * for one that meets no face, or the faces of two bodies.
+     * tagged faces). Such an element (or each piece of it, in a split mesh)
+     * gets the face of the mesh whose vertices it meets, within 1e-6 of its
+     * size. Returns how many file elements; throws for one that meets no
+     * face, or the faces of two bodies.
      */
     template <int dim>
     unsigned int
-    assign_orphan_facets(const Contents     &contents,
-                         const Point<3>     &origin,
-                         const std::string  &file,
-                         Triangulation<dim> &coarse)
+    assign_loose_facets(const std::vector<LooseFacet<dim>> &loose,
+                        const std::string                  &file,
+                        Triangulation<dim>                 &coarse)
     {
-      std::vector<const GmshElement *> orphans;
-      for (const GmshElement &facet : contents.tagged_facets)
-        if (std::any_of(facet.nodes.begin(), facet.nodes.end(), [&](const long n) {
-              return contents.cell_nodes.count(n) == 0;
-            }))
-          orphans.push_back(&facet);
-      if (orphans.empty())
+      if (loose.empty())
         return 0;
       // The boundary faces by the x of their centres.
       std::vector<std::pair<double, typename Triangulation<dim>::face_iterator>> faces;
@@ -977,25 +1044,14 @@ namespace contact_fem
       std::sort(faces.begin(), faces.end(), [](const auto &a, const auto &b) {
         return a.first < b.first;
       });
-      const auto point_of = [&](const long node) {
-        Point<dim>      p;
-        const Point<3> &x = contents.node_coordinates.at(node);
-        for (unsigned int d = 0; d < dim; ++d)
-          p[d] = x[d] - origin[d];
-        return p;
-      };
-      unsigned int assigned = 0;
-      for (const GmshElement *facet : orphans)
+      std::set<std::string> elements;
+      for (const LooseFacet<dim> &facet : loose)
         {
-          std::vector<Point<dim>> points;
-          Point<dim>              centre;
-          for (const long n : facet->nodes)
-            {
-              points.push_back(point_of(n));
-              centre += points.back() / static_cast<double>(facet->nodes.size());
-            }
+          Point<dim> centre;
+          for (const auto &p : facet.corners)
+            centre += p / static_cast<double>(facet.corners.size());
           double size = 0.;
-          for (const auto &p : points)
+          for (const auto &p : facet.corners)
             size = std::max(size, p.distance(centre));
           const double                                            tolerance = 1e-6 * size;
           std::vector<typename Triangulation<dim>::face_iterator> matches;
@@ -1006,21 +1062,19 @@ namespace contact_fem
                it != faces.end() && it->first <= centre[0] + tolerance; ++it)
             {
               const auto &face = it->second;
-              const bool  same = face->n_vertices() == points.size() &&
-                                std::all_of(points.begin(), points.end(), [&](const Point<dim> &p) {
-                                  for (const auto v : face->vertex_indices())
-                                    if (face->vertex(v).distance(p) <= tolerance)
-                                      return true;
-                                  return false;
-                                });
+              const bool  same =
+                face->n_vertices() == facet.corners.size() &&
+                std::all_of(facet.corners.begin(), facet.corners.end(), [&](const Point<dim> &p) {
+                  for (const auto v : face->vertex_indices())
+                    if (face->vertex(v).distance(p) <= tolerance)
+                      return true;
+                  return false;
+                });
               if (same)
                 matches.push_back(face);
             }
-          const std::string element = "boundary element " + std::to_string(facet->tag) + " (line " +
-                                      std::to_string(facet->line) + ", physical tag " +
-                                      std::to_string(facet->physical) + ")";
           AssertThrow(matches.size() == 1,
-                      ExcMessage(mesh_key + ": '" + file + "': " + element +
+                      ExcMessage(mesh_key + ": '" + file + "': " + facet.element +
                                  " is on nodes that no cell uses, and " +
                                  (matches.empty() ?
                                     "no boundary face of the cells lies at its nodes' "
@@ -1028,10 +1082,10 @@ namespace contact_fem
                                     "the faces of two bodies lie at its nodes' coordinates") +
                                  "; expected boundary elements on the nodes of the cells "
                                  "(in Gmsh: Coherence, or Geometry.AutoCoherence = 1)."));
-          matches[0]->set_boundary_id(static_cast<types::boundary_id>(facet->physical));
-          ++assigned;
+          matches[0]->set_boundary_id(static_cast<types::boundary_id>(facet.physical));
+          elements.insert(facet.element);
         }
-      return assigned;
+      return elements.size();
     }
   } // namespace
 
@@ -1056,7 +1110,8 @@ namespace contact_fem
     info.physical_names   = contents.physical_names;
     const Point<3> origin = info.frame_origin =
       choose_frame_origin(contents.lower, contents.upper, dim);
-    std::string split_text; // the split mesh as a file for deal.II's reader
+    std::string                  split_text; // the split mesh as a file for deal.II's reader
+    std::vector<LooseFacet<dim>> loose;
     if (needs_split(contents.elements, dim))
       {
         contents = scan_gmsh(file, false, true);
@@ -1066,7 +1121,10 @@ namespace contact_fem
         info.first_new_vertex = split.n_file_nodes;
         info.split_note       = split_summary(split, dim);
         split_text            = msh22_text(split);
+        loose                 = loose_facets<dim>(split, contents.element_list);
       }
+    else
+      loose = loose_facets<dim>(contents, origin);
     GridIn<dim> grid_in;
     grid_in.attach_triangulation(coarse);
     try
@@ -1092,12 +1150,10 @@ namespace contact_fem
         AssertThrow(false, ExcMessage(mesh_key + ": cannot read '" + file +
                                       "' as a Gmsh mesh: " + user_message(e)));
       }
-    if (split_text.empty())
-      if (const unsigned int n = assign_orphan_facets(contents, origin, file, coarse); n > 0)
-        info.orphan_note = std::to_string(n) +
-                           (n == 1 ? " boundary element" : " boundary elements") +
-                           " on nodes of their own (Gmsh without coherence) took the faces of "
-                           "the cells at their coordinates";
+    if (const unsigned int n = assign_loose_facets(loose, file, coarse); n > 0)
+      info.orphan_note = std::to_string(n) + (n == 1 ? " boundary element" : " boundary elements") +
+                         " on nodes of their own (Gmsh without coherence) took the faces of "
+                         "the cells at their coordinates";
     return info;
   }
 
