@@ -40,7 +40,7 @@ def run(contact_fem, scene, dim):
                 "Boundary conditions/Pressure=", "Boundary conditions/Fixed points=",
                 f"Boundary conditions/Prescribed displacement={driven}",
                 "Load stepping/End time=2", "Load stepping/Number of load steps=2",
-                "Output/Displacement probes=", *perturbation()]
+                "Output/Displacement probes=", "Output/Print Newton iterations=true", *perturbation()]
     if dim == 2:
         settings += ["Output directory=results", "Geometry/Global refinements=0",
                      "Materials/Models=neo-hookean, neo-hookean", "Contact/Kinematics=current",

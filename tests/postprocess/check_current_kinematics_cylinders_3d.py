@@ -57,7 +57,7 @@ def results(dim):
 
 def run(contact_fem, scene, dim, kinematics):
     settings = [f"Contact/Kinematics={kinematics}", "Output/Write pressure profile=true",
-                *perturbation()]
+                "Output/Print Newton iterations=true", *perturbation()]
     if dim == 2:
         settings += ["Output directory=results", "Geometry/Global refinements=0",
                      "Materials/Models=neo-hookean, neo-hookean",
