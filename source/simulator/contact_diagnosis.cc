@@ -393,6 +393,83 @@ namespace contact_fem
 
   template <int dim>
   std::string
+  ContactDiagnosis<dim>::friction_held_translations() const
+  {
+    if (!run.interface || !run.contact)
+      return "";
+    const auto &tria = run.dof_handler.get_triangulation();
+    const auto  axis = [](const unsigned int c) {
+      Tensor<1, dim> e;
+      e[c] = 1.;
+      return e;
+    };
+    // The directions each body's supports hold.
+    std::map<types::material_id, std::vector<Tensor<1, dim>>> held;
+    for (const auto &condition : run.boundary_conditions.displacements)
+      for (const auto body : bodies_of_surface(tria, condition.boundary_id))
+        held[body].push_back(axis(condition.component));
+    for (const auto &condition : run.boundary_conditions.points)
+      held[condition.point.material_id].push_back(axis(condition.component));
+    for (const auto id : run.boundary_conditions.rollers)
+      {
+        const Tensor<1, dim> normal = surface_normal(id);
+        if (normal.norm() > 0.)
+          for (const auto body : bodies_of_surface(tria, id))
+            held[body].push_back(normal / normal.norm());
+      }
+    // The contact holds its bodies along the normal of its active nodes
+    // (the interface and its active set are the same on every rank).
+    std::vector<Tensor<1, dim>> pair_normal(run.contact_parameters.pairs.size());
+    for (const auto &s : run.interface->slave_nodes)
+      if (s.paired && run.contact->is_active(s.node))
+        pair_normal[s.pair] += s.D * s.normal;
+    std::map<types::material_id, std::vector<Tensor<1, dim>>> contact_normals;
+    for (unsigned int p = 0; p < pair_normal.size(); ++p)
+      if (pair_normal[p].norm() > 0.)
+        for (const auto id :
+             {run.contact_parameters.pairs[p].slave, run.contact_parameters.pairs[p].master})
+          for (const auto body : bodies_of_surface(tria, id))
+            contact_normals[body].push_back(pair_normal[p] / pair_normal[p].norm());
+    std::string result;
+    for (const auto &[body, directions] : held)
+      {
+        if (contact_normals.count(body) == 0)
+          continue;
+        // Gram-Schmidt on unit vectors: a direction within 1e-6 of the
+        // span so far adds nothing.
+        std::vector<Tensor<1, dim>> basis;
+        const auto                  add = [&basis](Tensor<1, dim> v) {
+          for (const auto &b : basis)
+            v -= (v * b) * b;
+          if (v.norm() < 1e-6)
+            return false;
+          basis.push_back(v / v.norm());
+          return true;
+        };
+        for (const auto &v : directions)
+          add(v);
+        for (const auto &v : contact_normals.at(body))
+          add(v);
+        std::string free;
+        for (unsigned int c = 0; c < dim; ++c)
+          if (add(axis(c)))
+            {
+              std::string components;
+              for (unsigned int d = 0; d < dim; ++d)
+                components +=
+                  (d == 0 ? "" : ", ") +
+                  significant(std::abs(basis.back()[d]) < 1e-10 ? 0. : basis.back()[d], 3);
+              free += (free.empty() ? "" : " and ") + ("(" + components + ")");
+            }
+        if (!free.empty())
+          result +=
+            (result.empty() ? "" : "; ") + ("body " + std::to_string(body) + " along " + free);
+      }
+    return result;
+  }
+
+  template <int dim>
+  std::string
   ContactDiagnosis<dim>::singular_system_hint() const
   {
     // Most specific first: what the input says, before the question.

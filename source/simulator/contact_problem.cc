@@ -891,7 +891,9 @@ namespace contact_fem
     catch (const LinearSolverFailure &e)
       {
         if (e.singular && contact && contact->slides_everywhere())
-          throw NewtonFailure(where + ": " + e.what() + ": " + exceeded_friction_capacity({}));
+          throw NewtonFailure(
+            where + ": " + e.what() + ": " +
+            exceeded_friction_capacity({}, diagnosis().friction_held_translations()));
         if (e.singular)
           throw singular_failure(where + ": " + e.what());
         throw NewtonFailure(where + ": " + e.what() + "." + diagnosis().precision_hint(), false);
@@ -905,7 +907,9 @@ namespace contact_fem
                                     std::string("the linear solver failed");
         // Split: an overshooting iterate near a load reversal slips everywhere.
         if (pos != std::string::npos && contact && contact->slides_everywhere())
-          throw NewtonFailure(where + ": " + cause + ": " + exceeded_friction_capacity({}));
+          throw NewtonFailure(
+            where + ": " + cause + ": " +
+            exceeded_friction_capacity({}, diagnosis().friction_held_translations()));
         if (pos != std::string::npos)
           throw singular_failure(where + ": " + cause);
         throw NewtonFailure(where + ": " + cause + "." + diagnosis().singular_system_hint(), false);
@@ -1133,10 +1137,17 @@ namespace contact_fem
     if (contact && contact->n_active() == 0 && !contact_parameters.allow_loss_of_contact)
       throw diagnosis().no_contact_failure(at, current_time, true, iteration == 1);
     // With every node slipping, a body that only friction holds is free
-    // to slide: the next solve would be (nearly) singular.
+    // to slide: the next solve would be (nearly) singular. Also a body
+    // that supports hold only in part (a half model on its symmetry plane,
+    // loaded along it): along a translation they leave free and tangential
+    // to the contact, friction holds it alone.
     if (contact && contact->slides_everywhere())
-      if (const auto free = diagnosis().problem_traits().unsupported_bodies; !free.empty())
-        throw NewtonFailure(at + ": " + exceeded_friction_capacity(free));
+      {
+        if (const auto free = diagnosis().problem_traits().unsupported_bodies; !free.empty())
+          throw NewtonFailure(at + ": " + exceeded_friction_capacity(free));
+        if (const auto along = diagnosis().friction_held_translations(); !along.empty())
+          throw NewtonFailure(at + ": " + exceeded_friction_capacity({}, along));
+      }
   }
 
   template <int dim>

@@ -94,6 +94,16 @@ namespace contact_fem
     /// Collective.
     ProblemTraits
     problem_traits() const;
+    /// The translations that only friction holds: per body that a
+    /// support holds and that is in contact, the rigid-body translations
+    /// that neither its supports (fixed or prescribed components, fixed
+    /// points, rollers) nor the contact's normal (the mean normal of the
+    /// active slave nodes of each of its pairs) hold, as "body 2 along (1,
+    /// 0, 0)" (a half model on its symmetry plane, loaded along it); ""
+    /// if none. Bodies without any support are problem_traits()'
+    /// unsupported_bodies. Collective.
+    std::string
+    friction_held_translations() const;
     /// The likely cause of a singular linear system (a penalty far above
     /// its automatic value, the precision limits, a body without supports)
     /// as a sentence for a failure message, or the question whether every

@@ -166,12 +166,7 @@ namespace contact_fem
   TangentialVector<dim>
   AlmFrictional<dim>::free_part(const SlaveNode &s, const TangentialVector<dim> &t) const
   {
-    const unsigned int f = sets.held_component[s.node];
-    if (f == dim)
-      return t;
-    const Tensor<1, dim>        n    = frame_normal(s);
-    const TangentialVector<dim> free = to_frame(free_tangent(n, f), n);
-    return (t * free) * free;
+    return contact_fem::free_part(t, frame_normal(s), sets.held_component[s.node]);
   }
 
   template <int dim>

@@ -12,7 +12,7 @@ namespace contact_fem
     NormalPart::initialize(interface);
     const unsigned int n = interface.nodes.size();
     tangential.assign(n, TangentialVector<dim>());
-    sets.initialize(interface, free_tangents);
+    sets.initialize(interface);
     last_step_slip.assign(n, TangentialVector<dim>());
     slip_history.initialize(n);
     converged_displacement.assign(interface.dofs().size(), 0.);

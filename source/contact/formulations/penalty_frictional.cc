@@ -54,10 +54,6 @@ namespace contact_fem
                            "e.g. 'coulomb 0.2' or 'tresca 0.01' (or per pair '3: coulomb "
                            "0.2'); for frictionless contact use Contact/Formulation = "
                            "penalty frictionless."));
-    // A node a support holds along one tangential direction only (3D
-    // symmetry plane) has no friction along the other here: the support
-    // holds it (alm / mpc frictional impose it).
-    this->free_tangents = false;
     prm.enter_subsection("Contact");
     tangential_penalty =
       parse_auto_or_positive(prm.get("Tangential penalty"), "Contact/Tangential penalty");
@@ -103,7 +99,10 @@ namespace contact_fem
   TangentialVector<dim>
   PenaltyFrictional<dim>::trial_traction(const SlaveNode &s, const TangentialVector<dim> &xi) const
   {
-    return accepted_tangential[s.node] - tangent_penalty[s.pair] * xi;
+    // A node a support holds along one tangent (3D symmetry plane): the
+    // support carries the other, friction only the free one.
+    return free_part(accepted_tangential[s.node] - tangent_penalty[s.pair] * xi, s.normal,
+                     sets.held_component[s.node]);
   }
 
   template <int dim>
@@ -142,7 +141,9 @@ namespace contact_fem
   {
     // T / |t*|: the derivative of the slip direction t* / |t*| across it
     // (3D; in 2D the direction is a sign).
-    if (dim == 2 || direction.norm_square() == 0. || frictionless_law(s))
+    // 0 too where a support holds one tangent: the direction is the other.
+    if (dim == 2 || direction.norm_square() == 0. || frictionless_law(s) ||
+        sets.held_component[s.node] < dim)
       return 0.;
     const double size = magnitude<dim>(trial_traction(s, xi));
     return size > 0. ? laws[s.pair]->threshold(std::max(p, 0.)) / size : 0.;
@@ -169,7 +170,7 @@ namespace contact_fem
         if (!this->active[s.node])
           continue;
         cone_factor[s.node] = 0.;
-        if (!carries_friction(interface, s, false))
+        if (!carries_friction(interface, s))
           {
             tangential[s.node]     = TangentialVector<dim>();
             sets.direction[s.node] = TangentialVector<dim>();
@@ -237,7 +238,7 @@ namespace contact_fem
     std::array<std::vector<double>, dim - 1> xi_gradient;
     for (const auto &s : interface.slave_nodes)
       {
-        if (!this->active[s.node] || !carries_friction(interface, s, false) ||
+        if (!this->active[s.node] || !carries_friction(interface, s) ||
             !owned.is_element(interface.nodes[s.node].dofs[0]))
           continue;
         const TangentialVector<dim> &direction = sets.direction[s.node];
@@ -254,16 +255,33 @@ namespace contact_fem
         const TangentialVector<dim> xi_reference = -slip_increment(interface, s, zero);
         const double                eps_t        = tangent_penalty[s.pair];
         if (!slips)
-          for (unsigned int k = 0; k < dim - 1; ++k)
-            {
-              const double load = s.D * (accepted_tangential[s.node][k] + eps_t * xi_reference[k]);
-              for (unsigned int a = 0; a < n; ++a)
-                {
-                  for (unsigned int b = 0; b < n; ++b)
-                    local_matrix(a, b) += eps_t * s.D * xi_gradient[k][a] * xi_gradient[k][b];
-                  local_rhs(a) += load * xi_gradient[k][a];
-                }
-            }
+          {
+            // t = Q (t_n - eps_t grad xi . (u - u_n)), Q the projection
+            // of trial_traction() (the identity unless a support holds one
+            // tangent).
+            const unsigned int          held = sets.held_component[s.node];
+            const TangentialVector<dim> free = held < dim ?
+                                                 to_frame(free_tangent(s.normal, held), s.normal) :
+                                                 TangentialVector<dim>();
+            const auto                  Q    = [&](const unsigned int k, const unsigned int l) {
+              return held < dim ? free[k] * free[l] : (k == l ? 1. : 0.);
+            };
+            const TangentialVector<dim> history =
+              trial_traction(s, -xi_reference); // Q (t_n + eps_t grad xi . u_n)
+            for (unsigned int k = 0; k < dim - 1; ++k)
+              {
+                const double load = s.D * history[k];
+                for (unsigned int a = 0; a < n; ++a)
+                  {
+                    for (unsigned int l = 0; l < dim - 1; ++l)
+                      if (Q(k, l) != 0.)
+                        for (unsigned int b = 0; b < n; ++b)
+                          local_matrix(a, b) +=
+                            eps_t * s.D * Q(k, l) * xi_gradient[k][a] * xi_gradient[l][b];
+                    local_rhs(a) += load * xi_gradient[k][a];
+                  }
+              }
+          }
         else
           {
             const double eps_n = this->penalty[s.pair];
@@ -313,7 +331,7 @@ namespace contact_fem
       {
         if (!s.paired)
           continue;
-        if (!this->active[s.node] || !carries_friction(interface, s, false))
+        if (!this->active[s.node] || !carries_friction(interface, s))
           {
             tangential[s.node]     = TangentialVector<dim>();
             sets.direction[s.node] = TangentialVector<dim>();
@@ -463,7 +481,7 @@ namespace contact_fem
             direction[0] = sets.direction[s.node][0];
           else
             direction = to_global(sets.direction[s.node], s.normal);
-          if (sets.direction[s.node].norm_square() == 0. || !carries_friction(interface, s, false))
+          if (sets.direction[s.node].norm_square() == 0. || !carries_friction(interface, s))
             all_slip = false;
           else if (first)
             {
@@ -482,7 +500,7 @@ namespace contact_fem
     // instead of mu = 0.2).
     double elastic_slip = 0.;
     for (const auto &s : interface.slave_nodes)
-      if (sets.sticks(s.node, this->active) && carries_friction(interface, s, false))
+      if (sets.sticks(s.node, this->active) && carries_friction(interface, s))
         elastic_slip = std::max(elastic_slip, magnitude<dim>(tangential[s.node]) /
                                                 tangent_penalty[s.pair] / s.size);
     constexpr double allowed_elastic_slip = 1e-2;

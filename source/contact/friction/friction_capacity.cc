@@ -3,9 +3,14 @@
 namespace contact_fem
 {
   std::string
-  exceeded_friction_capacity(const std::vector<unsigned int> &free_bodies)
+  exceeded_friction_capacity(const std::vector<unsigned int> &free_bodies,
+                             const std::string               &free_translations)
   {
     std::string held = "nothing holds the bodies tangentially";
+    if (free_bodies.empty() && !free_translations.empty())
+      held = "friction at its bound is all that holds " + free_translations +
+             " (the supports leave that translation free, and it is tangential to the "
+             "contact)";
     if (!free_bodies.empty())
       {
         std::string ids;

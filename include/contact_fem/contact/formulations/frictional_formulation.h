@@ -113,11 +113,6 @@ namespace contact_fem
 
     std::vector<std::shared_ptr<const FrictionalLaw>> laws; ///< per pair
     bool                                              pure_slip = false;
-    /// Whether a node a support holds along one tangential direction only
-    /// (3D, partly_held_component()) has friction along the other
-    /// (free_tangent()); otherwise the support holds it (penalty
-    /// frictional).
-    bool free_tangents = true;
 
     /// t_j per interface node, in the formulation's frame.
     std::vector<TangentialVector<dim>> tangential;

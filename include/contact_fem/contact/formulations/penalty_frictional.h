@@ -54,8 +54,13 @@ namespace contact_fem
    * A node whose law has no friction (mu = 0, or bound 0) slips with
    * T = 0: exactly the "penalty frictionless" system and results. Nodes
    * with a Dirichlet component carry no tangential penalty (the support
-   * holds them tangentially), as in "alm frictional". Adaptive penalties
-   * are refused (Contact/Adaptive penalty).
+   * holds them tangentially), as in "alm frictional", except a 3D node
+   * with exactly one (a roller on a symmetry plane,
+   * partly_held_component()): its trial traction is projected onto the
+   * tangent its support leaves free (free_part(), free_tangent()), so it
+   * sticks or slips along that tangent (no cone term) and the support
+   * carries the other. Adaptive penalties are refused (Contact/Adaptive
+   * penalty).
    */
   template <int dim>
   class PenaltyFrictional : public FrictionalFormulation<dim, PenaltyFrictionless<dim>>
@@ -162,7 +167,8 @@ namespace contact_fem
                    const SlaveNode             &s,
                    const std::vector<double>   &u) const;
 
-    /// t*_j = t_n,j - eps_t xi_j.
+    /// t*_j = t_n,j - eps_t xi_j (its free_part() where a support holds
+    /// one tangent).
     TangentialVector<dim>
     trial_traction(const SlaveNode &s, const TangentialVector<dim> &xi) const;
 

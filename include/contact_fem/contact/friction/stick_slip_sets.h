@@ -33,18 +33,16 @@ namespace contact_fem
 
   /// Whether slave node @p s carries a tangential condition: paired, and no
   /// Dirichlet component (a support holds it tangentially), or in 3D one
-  /// (partly_held_component(); with @p free_tangents, the formulations
-  /// that impose friction along free_tangent()).
+  /// (partly_held_component(): friction along free_tangent()).
   template <int dim>
   bool
   carries_friction(const ContactInterface<dim>                     &interface,
-                   const typename ContactInterface<dim>::SlaveNode &s,
-                   const bool                                       free_tangents = true)
+                   const typename ContactInterface<dim>::SlaveNode &s)
   {
     if (!s.paired)
       return false;
     const auto &node = interface.nodes[s.node];
-    if (free_tangents && partly_held_component<dim>(node) < dim)
+    if (partly_held_component<dim>(node) < dim)
       return true;
     for (unsigned int d = 0; d < dim; ++d)
       if (node.fixed[d])
@@ -163,6 +161,19 @@ namespace contact_fem
     return result;
   }
 
+  /// The part of the tangential vector @p t (in tangent_frame(@p n)) along
+  /// free_tangent(@p n, @p f), the direction a support fixing component
+  /// @p f leaves free; @p t for @p f = dim (no such support).
+  template <int dim>
+  TangentialVector<dim>
+  free_part(const TangentialVector<dim> &t, const Tensor<1, dim> &n, const unsigned int f)
+  {
+    if (f == dim)
+      return t;
+    const TangentialVector<dim> free = to_frame(free_tangent(n, f), n);
+    return (t * free) * free;
+  }
+
   /// The magnitude of @p t (in 2D |t[0]|, exactly).
   template <int dim>
   double
@@ -205,9 +216,9 @@ namespace contact_fem
    * The stick/slip sets of the interface nodes: per node the slip direction
    * of the trial traction (zero = stick; in 2D +1 / -1), meaningful for
    * active nodes, and whether a support holds the node (it then neither
-   * sticks nor slips; with @p free_tangents not a node a support holds
-   * along one tangential direction only, whose slip direction is then
-   * along free_tangent(), partly_held_component()).
+   * sticks nor slips; not a node a support holds along one tangential
+   * direction only, whose slip direction is then along free_tangent(),
+   * partly_held_component()).
    */
   template <int dim>
   struct StickSlipSets
@@ -218,7 +229,7 @@ namespace contact_fem
     std::vector<unsigned int> held_component;
 
     void
-    initialize(const ContactInterface<dim> &interface, const bool free_tangents = true)
+    initialize(const ContactInterface<dim> &interface)
     {
       direction.assign(interface.nodes.size(), TangentialVector<dim>());
       held.assign(interface.nodes.size(), false);
@@ -227,7 +238,7 @@ namespace contact_fem
         {
           for (unsigned int d = 0; d < dim; ++d)
             held[n] = held[n] || interface.nodes[n].fixed[d];
-          if (free_tangents && partly_held_component<dim>(interface.nodes[n]) < dim)
+          if (partly_held_component<dim>(interface.nodes[n]) < dim)
             {
               held[n]           = false;
               held_component[n] = partly_held_component<dim>(interface.nodes[n]);
