@@ -176,12 +176,13 @@ namespace contact_fem
   {
     // The linearisation of the mortar operators exists for 2D line faces
     // and 3D quadrilateral faces (bilinear or biquadratic); the alm
-    // formulations and the frictionless penalty use it.
+    // and penalty formulations use it.
     AssertThrow(!current_kinematics || formulation == "alm frictionless" ||
-                  formulation == "alm frictional" || formulation == "penalty frictionless",
+                  formulation == "alm frictional" || formulation == "penalty frictionless" ||
+                  formulation == "penalty frictional",
                 ExcMessage("Contact/Kinematics = current is implemented with "
-                           "Contact/Formulation = alm frictionless, alm frictional or "
-                           "penalty frictionless only (this scene: " +
+                           "Contact/Formulation = alm frictionless, alm frictional, "
+                           "penalty frictionless or penalty frictional only (this scene: " +
                            std::to_string(dim) + "D, " + formulation +
                            "). Use Kinematics = updated or small."));
   }
