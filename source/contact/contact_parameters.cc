@@ -113,9 +113,9 @@ namespace contact_fem
                       "Newton iterate, with their consistent linearisation in the "
                       "tangent (finite deformation, large sliding; Newton "
                       "converges quadratically; see doc/finite_strain.md). "
-                      "'alm frictionless', 'alm frictional' (objective slip) "
-                      "and 'penalty frictionless', in 2D and 3D (bilinear or "
-                      "curved faces).");
+                      "'alm frictionless', 'alm frictional' (objective slip), "
+                      "'penalty frictionless' and 'penalty frictional', in 2D and "
+                      "3D (bilinear or curved faces).");
     prm.declare_entry("Penetration tolerance", "0.05", Patterns::Double(0.),
                       "After a step converges, every slave node is located against "
                       "the whole master surface of its pair (R-tree, closest point). "

@@ -288,7 +288,7 @@ namespace contact_fem
       {
         const std::vector<double> &u = interface.search_configuration();
         for (const auto &s : interface.slave_nodes)
-          if (this->active[s.node] && carries_friction(interface, s, false) &&
+          if (s.paired && this->active[s.node] && carries_friction(interface, s, false) &&
               owned.is_element(interface.nodes[s.node].dofs[0]) &&
               !(sets.direction[s.node].norm_square() != 0. && frictionless_law(s)))
             assemble_current(interface, s, u, constraints, matrix, rhs);
