@@ -113,9 +113,9 @@ namespace contact_fem
                       "Newton iterate, with their consistent linearisation in the "
                       "tangent (finite deformation, large sliding; Newton "
                       "converges quadratically; see doc/finite_strain.md). "
-                      "'alm frictionless', 'alm frictional' (objective slip) "
-                      "and 'penalty frictionless', in 2D and 3D (bilinear or "
-                      "curved faces).");
+                      "'alm frictionless', 'alm frictional' (objective slip), "
+                      "'penalty frictionless' and 'penalty frictional', in 2D and "
+                      "3D (bilinear or curved faces).");
     prm.declare_entry("Penetration tolerance", "0.05", Patterns::Double(0.),
                       "After a step converges, every slave node is located against "
                       "the whole master surface of its pair (R-tree, closest point). "
@@ -176,12 +176,13 @@ namespace contact_fem
   {
     // The linearisation of the mortar operators exists for 2D line faces
     // and 3D quadrilateral faces (bilinear or biquadratic); the alm
-    // formulations and the frictionless penalty use it.
+    // and penalty formulations use it.
     AssertThrow(!current_kinematics || formulation == "alm frictionless" ||
-                  formulation == "alm frictional" || formulation == "penalty frictionless",
+                  formulation == "alm frictional" || formulation == "penalty frictionless" ||
+                  formulation == "penalty frictional",
                 ExcMessage("Contact/Kinematics = current is implemented with "
-                           "Contact/Formulation = alm frictionless, alm frictional or "
-                           "penalty frictionless only (this scene: " +
+                           "Contact/Formulation = alm frictionless, alm frictional, "
+                           "penalty frictionless or penalty frictional only (this scene: " +
                            std::to_string(dim) + "D, " + formulation +
                            "). Use Kinematics = updated or small."));
   }

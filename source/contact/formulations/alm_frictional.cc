@@ -47,7 +47,6 @@ namespace contact_fem
     released_pressure.assign(n, 0.);
     released_tangential.assign(n, TangentialVector<dim>());
     cone_stiffness.assign(n, 0.);
-    converged_operators.assign(n, Operators());
   }
 
   template <int dim>
@@ -60,63 +59,6 @@ namespace contact_fem
       return objective_slip(interface, s, u, nullptr);
     return to_frame(weighted_relative_displacement(interface, s, converged_displacement, u),
                     frame_normal(s));
-  }
-
-  template <int dim>
-  TangentialVector<dim>
-  AlmFrictional<dim>::objective_slip(const ContactInterface<dim> &interface,
-                                     const SlaveNode             &s,
-                                     const std::vector<double>   &u,
-                                     std::array<Row, dim - 1>    *derivatives) const
-  {
-    // xi_j = -P w_j / D_j, P the projection onto the tangent plane (in the
-    // frame tau_k of n_j), w_j = sum_a c_a x_a over the slave node (c = D_j
-    // - D_j^n) and its masters now and at the last accepted step (c =
-    // -(M_jl - M_jl^n)): the operators' change at the current positions,
-    // per unit D_j, a length like the small path's slip (weighted by D_j,
-    // c xi_j would fall with the face area, h^2 in 3D, and the stick/slip
-    // decision would follow the pressure's change instead of the slip).
-    const Operators               &old = converged_operators[s.node];
-    std::map<unsigned int, double> coefficient;
-    coefficient[s.node] += s.D - old.D;
-    for (const auto &[m, value] : s.M)
-      coefficient[m] -= value;
-    for (const auto &[m, value] : old.M)
-      coefficient[m] += value;
-    const auto     frame = tangent_frame(s.normal);
-    Tensor<1, dim> w;
-    for (const auto &[node, c] : coefficient)
-      w += c * (interface.nodes[node].reference + interface.displacement(node, u));
-    TangentialVector<dim> xi;
-    for (unsigned int k = 0; k < dim - 1; ++k)
-      xi[k] = -(frame[k] * w) / s.D;
-    if (!derivatives)
-      return xi;
-    // d xi_k = (-tau_k . dw - d tau_k . w) / D_j, the frame held in the
-    // tangent plane as n turns: d tau_k = -(tau_k . dn) n (in 2D the turn
-    // of tau). dw: c_a dx_a, and the operators' derivatives at held x. D_j
-    // is held: its part, -xi_k dD_j / D_j, vanishes where the derivative
-    // matters (xi = 0 on a stick node, e . xi = 0 across a slip direction).
-    const auto  &linearised  = interface.linearised_nodes.at(s.node);
-    const double normal_part = s.normal * w;
-    for (unsigned int k = 0; k < dim - 1; ++k)
-      {
-        Row &row = (*derivatives)[k];
-        for (const auto &[node, c] : coefficient)
-          for (unsigned int d = 0; d < dim; ++d)
-            row[interface.nodes[node].dofs[d]] -= c * frame[k][d] / s.D;
-        for (unsigned int i = 0; i < linearised.dofs.size(); ++i)
-          {
-            double tau_dn = 0., tau_dw = 0.;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                tau_dn += frame[k][d] * linearised.normal[d][i];
-                tau_dw += frame[k][d] * linearised.operators[d][i];
-              }
-            row[linearised.dofs[i]] += (tau_dn * normal_part - tau_dw) / s.D;
-          }
-      }
-    return xi;
   }
 
   template <int dim>
@@ -312,9 +254,7 @@ namespace contact_fem
     // Current kinematics: a node paired for the first time measures its
     // slip from the operators of this step's start.
     if (current)
-      for (const auto &s : interface.slave_nodes)
-        if (s.paired && converged_operators[s.node].M.empty())
-          converged_operators[s.node] = Operators{s.D, s.M};
+      this->keep_operators_of_new_pairs(interface);
     auto &pressure = this->pressure;
     auto &active   = this->active;
     for (const auto &s : interface.slave_nodes)
@@ -573,11 +513,8 @@ namespace contact_fem
     for (const auto &[node, linearised] : interface.linearised_nodes)
       if (owned.is_element(interface.nodes[node].dofs[0]))
         {
-          std::set<types::global_dof_index> unique(linearised.dofs.begin(), linearised.dofs.end());
-          for (const auto &[m, value] : converged_operators[node].M)
-            for (unsigned int d = 0; d < dim; ++d)
-              unique.insert(interface.nodes[m].dofs[d]);
-          const std::vector<types::global_dof_index> dofs(unique.begin(), unique.end());
+          const std::vector<types::global_dof_index> dofs =
+            this->objective_slip_patch(interface, node);
           for (const auto row : dofs)
             pattern.add_entries(row, dofs.begin(), dofs.end(), true);
         }
@@ -1027,8 +964,7 @@ namespace contact_fem
     slip_history.add(interface, *this, last_step_slip);
     converged_displacement = u;
     if (current)
-      for (const auto &s : interface.slave_nodes)
-        converged_operators[s.node] = s.paired ? Operators{s.D, s.M} : Operators();
+      this->keep_operators(interface);
   }
 
   template <int dim>

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace contact_fem
 {
@@ -66,6 +67,8 @@ namespace contact_fem
   {
     Base::initialize(interface);
     accepted_tangential.assign(interface.nodes.size(), TangentialVector<dim>());
+    accepted_traction.assign(interface.nodes.size(), Tensor<1, dim>());
+    accepted_normal.assign(interface.nodes.size(), Tensor<1, dim>());
     cone_factor.assign(interface.nodes.size(), 0.);
   }
 
@@ -75,6 +78,8 @@ namespace contact_fem
                                          const SlaveNode             &s,
                                          const std::vector<double>   &u) const
   {
+    if (this->current)
+      return this->objective_slip(interface, s, u, nullptr);
     return to_frame(weighted_relative_displacement(interface, s, converged_displacement, u),
                     s.normal);
   }
@@ -101,8 +106,48 @@ namespace contact_fem
   {
     // A node a support holds along one tangent (3D symmetry plane): the
     // support carries the other, friction only the free one.
-    return free_part(accepted_tangential[s.node] - tangent_penalty[s.pair] * xi, s.normal,
+    return free_part(history(s) - tangent_penalty[s.pair] * xi, s.normal,
                      sets.held_component[s.node]);
+  }
+
+  template <int dim>
+  TangentialVector<dim>
+  PenaltyFrictional<dim>::history(const SlaveNode &s) const
+  {
+    if (!this->current)
+      return accepted_tangential[s.node];
+    // The smallest rotation taking n^n to n, applied to t_n (normal to
+    // n^n): h = t_n - beta (n^n + n), beta = (n . t_n) / (1 + n^n . n).
+    const Tensor<1, dim> &t    = accepted_traction[s.node];
+    const Tensor<1, dim> &old  = accepted_normal[s.node];
+    const double          beta = (s.normal * t) / (1. + old * s.normal);
+    return to_frame(t - beta * (old + s.normal), s.normal);
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictional<dim>::add_history_derivative(const ContactInterface<dim> &interface,
+                                                 const SlaveNode             &s,
+                                                 std::array<Row, dim - 1>    &rows) const
+  {
+    // d h_k = tau_k . dh (dtau_k . h = 0: h is normal to n and the frame
+    // is held in the tangent plane), dh = -d beta (n^n + n) - beta dn,
+    // d beta = (dn . t_n - beta n^n . dn) / (1 + n^n . n).
+    const Tensor<1, dim> &t           = accepted_traction[s.node];
+    const Tensor<1, dim> &old         = accepted_normal[s.node];
+    const double          denominator = 1. + old * s.normal;
+    const double          beta        = (s.normal * t) / denominator;
+    const auto            frame       = tangent_frame(s.normal);
+    const auto           &linearised  = interface.linearised_nodes.at(s.node);
+    for (unsigned int i = 0; i < linearised.dofs.size(); ++i)
+      {
+        Tensor<1, dim> dn;
+        for (unsigned int d = 0; d < dim; ++d)
+          dn[d] = linearised.normal[d][i];
+        const double d_beta = (dn * t - beta * (old * dn)) / denominator;
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          rows[k][linearised.dofs[i]] += -d_beta * (frame[k] * old) - beta * (frame[k] * dn);
+      }
   }
 
   template <int dim>
@@ -156,6 +201,8 @@ namespace contact_fem
                                           const StepStart              start)
   {
     PenaltyFrictionless<dim>::start_load_step(interface, u, start);
+    if (this->current)
+      this->keep_operators_of_new_pairs(interface);
     tangent_penalty.resize(this->penalty.size());
     for (unsigned int p = 0; p < tangent_penalty.size(); ++p)
       tangent_penalty[p] = tangential_penalty > 0. ? tangential_penalty : this->penalty[p];
@@ -206,6 +253,16 @@ namespace contact_fem
         PenaltyFrictionless<dim>::add_sparsity(interface, constraints, owned, pattern);
         return;
       }
+    if (this->current)
+      {
+        // The linearised patch of every paired node and the masters of its
+        // last accepted step, closed over the hanging nodes.
+        for (const auto &[node, linearised] : interface.linearised_nodes)
+          if (owned.is_element(interface.nodes[node].dofs[0]))
+            constraints.add_entries_local_to_global(this->objective_slip_patch(interface, node),
+                                                    pattern, true);
+        return;
+      }
     std::vector<types::global_dof_index> dofs;
     std::vector<double>                  gradient;
     for (const auto &s : interface.slave_nodes)
@@ -228,6 +285,16 @@ namespace contact_fem
                                    TrilinosWrappers::MPI::Vector  &rhs) const
   {
     PenaltyFrictionless<dim>::assemble(interface, constraints, constraints, owned, matrix, rhs);
+    if (this->current)
+      {
+        const std::vector<double> &u = interface.search_configuration();
+        for (const auto &s : interface.slave_nodes)
+          if (s.paired && this->active[s.node] && carries_friction(interface, s) &&
+              owned.is_element(interface.nodes[s.node].dofs[0]) &&
+              !(sets.direction[s.node].norm_square() != 0. && frictionless_law(s)))
+            assemble_current(interface, s, u, constraints, matrix, rhs);
+        return;
+      }
     // The tangential force D_j t_j grad xi_j with t_j linear in u:
     // stick: t = t_n - eps_t grad xi . (u - u_n);
     // slip:  t = sigma (T(p_k) + T'(p_k) (p(u) - p_k)), p(u) = -eps_n (g(0) +
@@ -401,6 +468,151 @@ namespace contact_fem
     slip_history.add(interface, *this, last_step_slip);
     converged_displacement = u;
     accepted_tangential    = tangential;
+    if (this->current)
+      {
+        this->keep_operators(interface);
+        for (const auto &s : interface.slave_nodes)
+          {
+            accepted_traction[s.node] = to_global(tangential[s.node], s.normal);
+            accepted_normal[s.node]   = s.normal;
+          }
+      }
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictional<dim>::assemble_current(const ContactInterface<dim>     &interface,
+                                           const SlaveNode                 &s,
+                                           const std::vector<double>       &u,
+                                           const AffineConstraints<double> &constraints,
+                                           TrilinosWrappers::SparseMatrix  &matrix,
+                                           TrilinosWrappers::MPI::Vector   &rhs) const
+  {
+    const auto  &linearised = interface.linearised_nodes.at(s.node);
+    const auto   frame      = tangent_frame(s.normal);
+    const double eps_t      = tangent_penalty[s.pair];
+    // d t*_k = d h_k - eps_t d xi_k, xi_k with the change of D_j (-xi_k
+    // dD_j / D_j: a stick node slips elastically, xi = (h - t) / eps_t).
+    std::array<Row, dim - 1>    d_xi;
+    const TangentialVector<dim> xi = this->objective_slip(interface, s, u, &d_xi);
+    std::array<Row, dim - 1>    d_trial;
+    for (unsigned int k = 0; k < dim - 1; ++k)
+      {
+        for (const auto &[dof, value] : d_xi[k])
+          d_trial[k][dof] -= eps_t * value;
+        for (unsigned int i = 0; i < linearised.dofs.size(); ++i)
+          d_trial[k][linearised.dofs[i]] += eps_t * xi[k] * linearised.D[i] / s.D;
+      }
+    add_history_derivative(interface, s, d_trial);
+    // A node a support holds along one tangent: t* = Q t*_raw, Q the
+    // projection onto the free tangent (trial_traction()). Its turn with
+    // the normal, dQ t*_raw, is left out: t*_raw has no part across the
+    // free tangent while the node stays on its plane (no slip along the
+    // fixed component, the history projected), so the term vanishes there.
+    if (const unsigned int held = sets.held_component[s.node]; held < dim)
+      {
+        const TangentialVector<dim> free = to_frame(free_tangent(s.normal, held), s.normal);
+        Row                         along;
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          for (const auto &[dof, value] : d_trial[k])
+            along[dof] += free[k] * value;
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          {
+            d_trial[k].clear();
+            for (const auto &[dof, value] : along)
+              d_trial[k][dof] = free[k] * value;
+          }
+      }
+
+    // d t_k: stick d t*_k; slip T'(p) dp d_k + (T / |t*|) (P dt*)_k (3D),
+    // dp = -(eps_n dG_j + p dD_j) / D_j.
+    const TangentialVector<dim> &direction = sets.direction[s.node];
+    std::array<Row, dim - 1>     d_t;
+    if (direction.norm_square() == 0.)
+      d_t = d_trial;
+    else
+      {
+        const double p     = this->pressure[s.node];
+        const double eps_n = this->penalty[s.pair];
+        const double dT    = laws[s.pair]->threshold_derivative(std::max(p, 0.));
+        const double a     = cone_factor[s.node];
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          {
+            for (unsigned int i = 0; i < linearised.dofs.size(); ++i)
+              d_t[k][linearised.dofs[i]] +=
+                -dT * direction[k] * (eps_n * linearised.gap[i] + p * linearised.D[i]) / s.D;
+            if (a != 0.)
+              for (unsigned int l = 0; l < dim - 1; ++l)
+                for (const auto &[dof, value] : d_trial[l])
+                  d_t[k][dof] += a * ((k == l ? 1. : 0.) - direction[k] * direction[l]) * value;
+          }
+      }
+
+    // The columns: the free DoFs of the rows of d t and of the patch (u_k
+    // holds the Dirichlet values: their columns drop out).
+    std::map<types::global_dof_index, unsigned int> column_of;
+    for (const auto dof : this->objective_slip_patch(interface, s.node))
+      if (!interface.dof_fixed(interface.position(dof)))
+        column_of.emplace(dof, 0);
+    std::vector<types::global_dof_index> columns;
+    for (auto &[dof, index] : column_of)
+      {
+        index = columns.size();
+        columns.push_back(dof);
+      }
+    // The force t_j h_j: coefficient D_j (slave) or -M_jl (master l) times
+    // component c of t = sum_k t_k tau_k.
+    std::map<types::global_dof_index, std::pair<double, unsigned int>> coefficient;
+    for (unsigned int d = 0; d < dim; ++d)
+      coefficient[interface.nodes[s.node].dofs[d]] = {s.D, d};
+    for (const auto &[m, value] : s.M)
+      for (unsigned int d = 0; d < dim; ++d)
+        coefficient[interface.nodes[m].dofs[d]] = {-value, d};
+    const Tensor<1, dim> t = to_global(tangential[s.node], s.normal);
+
+    // Newton for the total u, as the normal part: K (u - u_k) = -r(u_k),
+    // r = -F the contact's internal force, K = -dF; right-hand side F + K
+    // u_k.
+    std::vector<types::global_dof_index> rows;
+    FullMatrix<double>                   stiffness;
+    std::vector<unsigned int>            force_rows;
+    for (unsigned int r = 0; r < linearised.force.size(); ++r)
+      if (!interface.dof_fixed(interface.position(linearised.force[r].first)))
+        {
+          rows.push_back(linearised.force[r].first);
+          force_rows.push_back(r);
+        }
+    stiffness.reinit(rows.size(), columns.size());
+    Vector<double> stiffness_rhs(rows.size());
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      {
+        const auto it = coefficient.find(rows[r]);
+        if (it != coefficient.end())
+          {
+            const auto [c, d] = it->second;
+            stiffness_rhs(r)  = c * t[d];
+            for (unsigned int k = 0; k < dim - 1; ++k)
+              for (const auto &[dof, value] : d_t[k])
+                {
+                  const auto column = column_of.find(dof);
+                  if (column != column_of.end())
+                    stiffness(r, column->second) -= c * frame[k][d] * value;
+                }
+          }
+        for (unsigned int i = 0; i < linearised.dofs.size(); ++i)
+          {
+            const auto column = column_of.find(linearised.dofs[i]);
+            if (column == column_of.end())
+              continue;
+            for (unsigned int c = 0; c < dim; ++c)
+              stiffness(r, column->second) -=
+                t[c] * linearised.tangent_force[c][force_rows[r]].second[i];
+          }
+        for (unsigned int b = 0; b < columns.size(); ++b)
+          stiffness_rhs(r) += stiffness(r, b) * u[interface.position(columns[b])];
+      }
+    constraints.distribute_local_to_global(stiffness, rows, constraints, columns, matrix);
+    constraints.distribute_local_to_global(stiffness_rhs, rows, rhs);
   }
 
   template <int dim>
@@ -415,6 +627,9 @@ namespace contact_fem
     state->accepted_tangential    = accepted_tangential;
     state->sets                   = sets;
     state->last_step_slip         = last_step_slip;
+    state->accepted_traction      = accepted_traction;
+    state->accepted_normal        = accepted_normal;
+    state->converged_operators    = converged_operators;
     return state;
   }
 
@@ -430,6 +645,9 @@ namespace contact_fem
     accepted_tangential    = saved.accepted_tangential;
     sets                   = saved.sets;
     last_step_slip         = saved.last_step_slip;
+    accepted_traction      = saved.accepted_traction;
+    accepted_normal        = saved.accepted_normal;
+    converged_operators    = saved.converged_operators;
   }
 
   template <int dim>

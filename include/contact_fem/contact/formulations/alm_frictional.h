@@ -333,26 +333,11 @@ namespace contact_fem
     bool pressure_dependent_slip = false;
 
     /// Contact/Kinematics = current (see the class comment).
-    bool current = false;
-    /// D_j and M_jl of every slave node at the last accepted load step
-    /// (current kinematics).
-    struct Operators
-    {
-      double                                       D = 0.;
-      std::vector<std::pair<unsigned int, double>> M;
-    };
-    std::vector<Operators> converged_operators;
-
-    using Row = std::map<types::global_dof_index, double>;
-
-    /// The objective slip xi_j of @p s at @p u in the tangent frame of its
-    /// normal and, if @p derivatives is not null, d xi_j / du by DoF per
-    /// frame component (current kinematics).
-    TangentialVector<dim>
-    objective_slip(const ContactInterface<dim> &interface,
-                   const SlaveNode             &s,
-                   const std::vector<double>   &u,
-                   std::array<Row, dim - 1>    *derivatives) const;
+    bool current    = false;
+    using Operators = typename Base::Operators;
+    using Row       = typename Base::Row;
+    using Base::converged_operators;
+    using Base::objective_slip;
 
     /// Current kinematics: the rows of the linearised gap and (stick) slip
     /// of active node @p s and its geometric stiffness, at @p u.

@@ -7,6 +7,8 @@
 #include <contact_fem/contact/friction/frictional_law.h>
 #include <contact_fem/contact/friction/stick_slip_sets.h>
 
+#include <array>
+#include <map>
 #include <utility>
 
 namespace contact_fem
@@ -111,6 +113,46 @@ namespace contact_fem
     Json
     law_names() const;
 
+    /// D_j and M_jl of a slave node at the last accepted load step
+    /// (Contact/Kinematics = current: the objective slip).
+    struct Operators
+    {
+      double                                       D = 0.;
+      std::vector<std::pair<unsigned int, double>> M;
+    };
+
+    /// A row of derivatives by DoF.
+    using Row = std::map<types::global_dof_index, double>;
+
+    /// Current kinematics: the objective slip of Gitterle, Popp et al. per
+    /// unit D_j, xi_j = -P_j ((D_j - D_j^n) x_j - sum_l (M_jl - M_jl^n)
+    /// x_l) / D_j, of @p s at @p u in the tangent frame of its normal (P_j
+    /// onto the tangent plane; ^n: converged_operators), zero under any
+    /// rigid motion of the pair; if @p derivatives is not null, also d xi_j
+    /// / du by DoF per frame component, with D_j held (the caller adds
+    /// -xi_j dD_j / D_j where xi_j need not vanish).
+    TangentialVector<dim>
+    objective_slip(const ContactInterface<dim> &interface,
+                   const SlaveNode             &s,
+                   const std::vector<double>   &u,
+                   std::array<Row, dim - 1>    *derivatives) const;
+
+    /// Current kinematics, at a step's start: a node paired for the first
+    /// time measures its slip from the operators of this start.
+    void
+    keep_operators_of_new_pairs(const ContactInterface<dim> &interface);
+
+    /// Current kinematics, when a step is accepted: every slave node's
+    /// operators become the reference of the objective slip.
+    void
+    keep_operators(const ContactInterface<dim> &interface);
+
+    /// Current kinematics: the DoFs the terms of linearised node @p node
+    /// couple, its patch and the masters of its last accepted step (the
+    /// objective slip), sorted.
+    std::vector<types::global_dof_index>
+    objective_slip_patch(const ContactInterface<dim> &interface, const unsigned int node) const;
+
     std::vector<std::shared_ptr<const FrictionalLaw>> laws; ///< per pair
     bool                                              pure_slip = false;
 
@@ -125,6 +167,9 @@ namespace contact_fem
     std::vector<double> converged_displacement;
     /// Stick/slip changes of the last update_active_set().
     unsigned int last_stick_slip_changes = 0;
+    /// Operators of every slave node at the last accepted load step
+    /// (current kinematics).
+    std::vector<Operators> converged_operators;
   };
 } // namespace contact_fem
 

@@ -61,6 +61,24 @@ namespace contact_fem
    * sticks or slips along that tangent (no cone term) and the support
    * carries the other. Adaptive penalties are refused (Contact/Adaptive
    * penalty).
+   *
+   * Contact/Kinematics = current: D_j, M_jl, n_j and the gaps are those of
+   * the iterate u_k (the normal part: "penalty frictionless"), xi_j is the
+   * objective slip (FrictionalFormulation::objective_slip(), as "alm
+   * frictional"), and the history traction t_n,j is carried from the
+   * normal n^n of the accepted step to the current one by the smallest
+   * rotation between them (parallel transport: h_j = t_n - (n . t_n) / (1
+   * + n^n . n) (n^n + n), in the frame of n), so that t*_j = h_j - eps_t
+   * xi_j is unchanged by a rotation of the scene and, in 2D, by any
+   * rigid rotation of the contact within a step (in 3D up to the spin
+   * about the normal). The tangential force t_j h_j (D_j t on the slave,
+   * -M_jl t on master l, t = sum_k t_k tau_k) is linearised in full
+   * (assemble_current()): d t_k from d xi_j (with the change of D_j), d h_j
+   * (the turn of n) and, on a slip node, T'(p) dp (dp of the penalty
+   * pressure eps_n (-G_j) / D_j) and (T / |t*|) P dt* (3D); the force's
+   * own change with D_j, M_jl and n_j comes from
+   * ContactInterface::LinearisedNode::tangent_force. The matrix is
+   * unsymmetric.
    */
   template <int dim>
   class PenaltyFrictional : public FrictionalFormulation<dim, PenaltyFrictionless<dim>>
@@ -71,6 +89,7 @@ namespace contact_fem
     using typename PenaltyFrictionless<dim>::Residuals;
     using State     = typename ContactFormulation<dim>::State;
     using SlaveNode = typename ContactInterface<dim>::SlaveNode;
+    using Row       = typename Base::Row;
 
     /// Tangential penalty (subsection Contact).
     static void
@@ -80,11 +99,12 @@ namespace contact_fem
     /// and Pure slip.
     PenaltyFrictional(ParameterHandler &prm, const FrictionParameters &friction);
 
-    /// False while a node slips: the slip terms are unsymmetric.
+    /// False while a node slips (the slip terms are unsymmetric) and with
+    /// current kinematics.
     bool
     matrix_symmetric() const override
     {
-      return this->n_slip() == 0;
+      return !this->current && this->n_slip() == 0;
     }
 
     void
@@ -167,10 +187,33 @@ namespace contact_fem
                    const SlaveNode             &s,
                    const std::vector<double>   &u) const;
 
-    /// t*_j = t_n,j - eps_t xi_j (its free_part() where a support holds
-    /// one tangent).
+    /// t*_j = t_n,j - eps_t xi_j (current kinematics: h_j - eps_t xi_j),
+    /// its free_part() where a support holds one tangent.
     TangentialVector<dim>
     trial_traction(const SlaveNode &s, const TangentialVector<dim> &xi) const;
+
+    /// The history traction of @p s in the frame of its normal: t_n,j, or
+    /// with current kinematics h_j, t_n,j transported to the current normal
+    /// (see the class comment).
+    TangentialVector<dim>
+    history(const SlaveNode &s) const;
+
+    /// Current kinematics: d h_j,k / du at the DoFs of the linearised patch
+    /// of @p s, added to @p rows.
+    void
+    add_history_derivative(const ContactInterface<dim> &interface,
+                           const SlaveNode             &s,
+                           std::array<Row, dim - 1>    &rows) const;
+
+    /// Current kinematics: the tangential force of active frictional node
+    /// @p s at the iterate @p u and its tangent (see the class comment).
+    void
+    assemble_current(const ContactInterface<dim>     &interface,
+                     const SlaveNode                 &s,
+                     const std::vector<double>       &u,
+                     const AffineConstraints<double> &constraints,
+                     TrilinosWrappers::SparseMatrix  &matrix,
+                     TrilinosWrappers::MPI::Vector   &rhs) const;
 
     /// The return mapping of active node @p s at pressure @p p and slip
     /// increment @p xi: zero = stick, else the unit direction of the trial
@@ -202,6 +245,7 @@ namespace contact_fem
                   std::vector<double>         &gradient) const;
 
     using Base::converged_displacement;
+    using Base::converged_operators;
     using Base::frictionless_law;
     using Base::last_step_slip;
     using Base::last_stick_slip_changes;
@@ -217,6 +261,9 @@ namespace contact_fem
     std::vector<double> tangent_penalty;         ///< eps_t per pair
     /// Tangential tractions of the last accepted load step (the history).
     std::vector<TangentialVector<dim>> accepted_tangential;
+    /// Current kinematics: the tangential traction (global) and the normal
+    /// of every node at the last accepted load step.
+    std::vector<Tensor<1, dim>> accepted_traction, accepted_normal;
     /// slip_cone_factor() per interface node, of the last update.
     std::vector<double> cone_factor;
     /// The elastic-slip warning was printed (once per run).
@@ -224,12 +271,14 @@ namespace contact_fem
 
     struct FrictionState : public State
     {
-      std::unique_ptr<State>             normal;
-      std::vector<TangentialVector<dim>> tangential, accepted_tangential;
-      std::vector<double>                converged_displacement;
-      SlipHistory<dim>                   slip_history;
-      StickSlipSets<dim>                 sets;
-      std::vector<TangentialVector<dim>> last_step_slip;
+      std::unique_ptr<State>                normal;
+      std::vector<TangentialVector<dim>>    tangential, accepted_tangential;
+      std::vector<double>                   converged_displacement;
+      SlipHistory<dim>                      slip_history;
+      StickSlipSets<dim>                    sets;
+      std::vector<TangentialVector<dim>>    last_step_slip;
+      std::vector<Tensor<1, dim>>           accepted_traction, accepted_normal;
+      std::vector<typename Base::Operators> converged_operators;
     };
   };
 } // namespace contact_fem

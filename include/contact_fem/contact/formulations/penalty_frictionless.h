@@ -103,6 +103,10 @@ namespace contact_fem
                   const Json                  &reaction,
                   std::ostream                &out) const override;
 
+  protected:
+    /// Contact/Kinematics = current.
+    bool current = false;
+
   private:
     /// Bussetta-Marceau-Ponthot update of a nodal penalty @p eps from the
     /// penetrations (> 0 when overlapping) of this and the previous iteration.
@@ -122,8 +126,6 @@ namespace contact_fem
                      TrilinosWrappers::SparseMatrix                  &matrix,
                      TrilinosWrappers::MPI::Vector                   &rhs) const;
 
-    /// Contact/Kinematics = current.
-    bool   current            = false;
     bool   adaptive           = false;
     double penetration_factor = 1e-3;
     /// eps_j per interface node (adapted or the pair's).
