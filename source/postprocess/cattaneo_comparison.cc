@@ -193,7 +193,8 @@ namespace contact_fem
       {
         const Json &cattaneo = record["cattaneo"];
         if (dim == 3)
-          out << cattaneo_steps_report(cattaneo["load_steps"]);
+          out << cattaneo_steps_report(cattaneo["load_steps"],
+                                       this->analytical.tangential_error_bounds);
         out << cattaneo_report(cattaneo);
       }
 

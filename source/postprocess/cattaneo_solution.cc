@@ -288,11 +288,12 @@ namespace contact_fem
   }
 
   std::string
-  cattaneo_steps_report(const Json &steps)
+  cattaneo_steps_report(const Json &steps, const std::vector<double> &bounds)
   {
     std::ostringstream out;
     out << "    load steps: Q/(mu P), c/a, c_h/a, |c_h - c| / slave h, tangential L2 error"
         << std::endl;
+    std::vector<std::size_t> compared;
     for (std::size_t k = 0; k < steps.size(); ++k)
       {
         const auto value = [&](const char *key) {
@@ -301,11 +302,43 @@ namespace contact_fem
         // Steps without a tangential load or a solution compare nothing.
         if (std::isnan(value("c")) || value("Q_over_mu_P") < CattaneoSolution::no_tangential_load)
           continue;
+        compared.push_back(k);
         out << std::fixed << std::setprecision(4) << "      step " << std::setw(2) << k + 1 << ":  "
             << value("Q_over_mu_P") << "  " << value("c_over_a") << "  " << value("c_h_over_a")
             << "  " << std::setprecision(3) << value("c_error_in_slave_elements") << "  "
             << value("tangential_l2_relative_error") << std::endl;
       }
+    if (bounds.empty())
+      return out.str();
+    out << "    every step within its bounds: ";
+    if (bounds.size() != 1 && bounds.size() != compared.size())
+      {
+        out << "no (" << compared.size() << " steps compared, " << bounds.size() << " bounds)"
+            << std::endl;
+        return out.str();
+      }
+    std::ostringstream failures;
+    failures << std::setprecision(3);
+    for (std::size_t i = 0; i < compared.size(); ++i)
+      {
+        const Json  &step  = steps[compared[i]];
+        const double c     = step["c_error_in_slave_elements"].number_value();
+        const double error = step["tangential_l2_relative_error"].number_value();
+        const double bound = bounds[bounds.size() == 1 ? 0 : i];
+        // As "c within one slave element": a stick zone, c_h within h of c.
+        if (!(step["stick_nodes"].number_value() > 0 && c <= 1.))
+          failures << "; step " << compared[i] + 1 << ": |c_h - c| / h = " << c;
+        if (!(error <= bound))
+          failures << "; step " << compared[i] + 1 << ": L2 error " << error << " > " << bound;
+      }
+    std::ostringstream list;
+    list << std::setprecision(3);
+    for (std::size_t i = 0; i < bounds.size(); ++i)
+      list << (i > 0 ? ", " : "") << bounds[i];
+    if (failures.str().empty())
+      out << "yes (c within one slave h, L2 error <= " << list.str() << ")" << std::endl;
+    else
+      out << "no (" << failures.str().substr(2) << ")" << std::endl;
     return out.str();
   }
 } // namespace contact_fem

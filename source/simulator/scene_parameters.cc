@@ -353,6 +353,15 @@ namespace contact_fem
                       "(summary.json: *_reference_l2_relative_error). Unlike the "
                       "Hertz half-space pressure, an overkill run of the same "
                       "finite bodies has no modelling error.");
+    prm.declare_entry("Tangential error bounds", "", Patterns::Anything(),
+                      "Type = cattaneo, 3D: upper bounds of the tangential "
+                      "traction's L2 relative error at the load steps that are "
+                      "compared (those with a tangential load), one per step "
+                      "or one for all, e.g. '0.8, 0.35, 0.25, 0.2'; empty for "
+                      "none. Then the run prints whether every step is within "
+                      "its bound with its stick radius within one slave nodal "
+                      "spacing of Mindlin's (a check for tests: a step out of "
+                      "bounds prints 'no' and the step).");
     prm.leave_subsection();
   }
 
@@ -446,7 +455,22 @@ namespace contact_fem
     symmetry_fraction           = prm.get_double("Symmetry fraction");
     const std::string reference = Utilities::trim(prm.get("Reference potential energy"));
     std::string       profile   = Utilities::trim(prm.get("Reference pressure profile"));
+    const std::string bounds    = prm.get("Tangential error bounds");
     prm.leave_subsection();
+    tangential_error_bounds.clear();
+    for (const std::string &bound : Utilities::split_string_list(bounds, ','))
+      {
+        char        *end   = nullptr;
+        const double value = std::strtod(bound.c_str(), &end);
+        AssertThrow(end != bound.c_str() && *end == '\0' && std::isfinite(value) && value > 0.,
+                    ExcMessage("Analytical solution/Tangential error bounds: '" + bound +
+                               "' is not a positive number (expected a comma-separated "
+                               "list of bounds, or empty)."));
+        tangential_error_bounds.push_back(value);
+      }
+    AssertThrow(tangential_error_bounds.empty() || (dim == 3 && type == "cattaneo"),
+                ExcMessage("Analytical solution/Tangential error bounds: only with Type = "
+                           "cattaneo in 3D, whose load steps are compared (leave it empty)."));
     // The cylinder solutions are functions of x (2D), the sphere's of the
     // distance from its axis (3D).
     AssertThrow(dim == 3 || type != "hertz sphere",

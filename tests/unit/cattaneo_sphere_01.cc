@@ -87,4 +87,22 @@ main()
   std::cout << "with 0.1 mu p0 across the load: L2 error = " << c.tangential_l2_relative_error
             << " (> 0: " << (c.tangential_l2_relative_error > 0.05 ? "yes" : "no") << ")"
             << std::endl;
+
+  // The check of the load steps (Analytical solution/Tangential error
+  // bounds): step 1 the exact traction, step 2 with the traction across
+  // the load (L2 error 0.28), step 3 the exact traction with a stick zone
+  // of half the radius (c 7.9 spacings off).
+  Json steps = Json::array();
+  for (auto &node : nodes)
+    node.t_across = 0.;
+  steps.push(to_json(compare_with_cattaneo(nodes, exact, 0., 0.5)));
+  steps.push(to_json(c));
+  std::cout << "steps 1, 2, bounds 0.3 for all:" << std::endl
+            << cattaneo_steps_report(steps, {0.3});
+  for (auto &node : nodes)
+    node.stick = node.x < 0.5 * exact.c;
+  steps.push(to_json(compare_with_cattaneo(nodes, exact, 0., 0.5)));
+  std::cout << "bounds 0.3, 0.1, 0.3:" << std::endl
+            << cattaneo_steps_report(steps, {0.3, 0.1, 0.3}) << "bounds 0.1, 0.3:" << std::endl
+            << cattaneo_steps_report(steps, {0.1, 0.3});
 }

@@ -207,9 +207,12 @@ namespace contact_fem
   cattaneo_report(const Json &cattaneo);
 
   /// A table of the load steps' comparisons (an array of to_json()):
-  /// Q/(mu P), c/a, c_h/a, |c_h - c| / h and the traction's L2 error.
+  /// Q/(mu P), c/a, c_h/a, |c_h - c| / h and the traction's L2 error. With
+  /// @p bounds (one per compared step, or one for all) also the check that
+  /// every compared step has its stick radius within one slave nodal
+  /// spacing and its L2 error within its bound.
   std::string
-  cattaneo_steps_report(const Json &steps);
+  cattaneo_steps_report(const Json &steps, const std::vector<double> &bounds = {});
 } // namespace contact_fem
 
 #endif

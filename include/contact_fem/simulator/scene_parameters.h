@@ -101,6 +101,9 @@ namespace contact_fem
     /// none was given. In 3D (hertz sphere) x is the distance from the
     /// axis: the reference is taken as axisymmetric.
     std::vector<std::pair<double, double>> reference_pressure_profile;
+    /// Type = cattaneo, 3D: bounds of the tangential L2 error at the
+    /// compared load steps (one per step, or one for all; empty: no check).
+    std::vector<double> tangential_error_bounds;
 
     /// 3D: the distance of (x, y) from the axis of the Hertz sphere, which
     /// its pressure and the (axisymmetric) reference profile are functions of.
