@@ -273,7 +273,8 @@ namespace contact_fem
   ContactInterface<dim>::stop_on_every_rank(const std::string &error) const
   {
     for (const std::string &message : Utilities::MPI::all_gather(communicator, error))
-      AssertThrow(message.empty(), ExcMessage(message));
+      if (!message.empty())
+        throw GeometryFailure(message);
   }
 
   template <int dim>

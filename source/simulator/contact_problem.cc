@@ -960,7 +960,16 @@ namespace contact_fem
     // configuration (the search then always reaches the iterate).
     if (iteration > 0 && contact_parameters.current_kinematics)
       {
-        if (search->follow(interface_displacement))
+        bool searched_again = false;
+        try
+          {
+            searched_again = search->follow(interface_displacement);
+          }
+        catch (const GeometryFailure &failure) // a distorted iterate: split
+          {
+            throw NewtonFailure("its contact surfaces: " + std::string(failure.what()));
+          }
+        if (searched_again)
           {
             update.searched_again = true;
             make_sparsity_pattern();
@@ -1082,7 +1091,15 @@ namespace contact_fem
           {
             throw NewtonFailure(at + ": " + failure.what(), failure.splittable);
           }
-        const ContactUpdate update      = update_contact(iteration);
+        ContactUpdate update;
+        try
+          {
+            update = update_contact(iteration);
+          }
+        catch (const NewtonFailure &failure) // a distorted iterate: say where
+          {
+            throw NewtonFailure(at + ": " + failure.what(), failure.splittable);
+          }
         const unsigned int bond_changes = tying && iteration > 0 ? update_bonds(at, iteration) : 0u;
         const unsigned int changes      = update.changes + bond_changes;
         const double       r_u          = equilibrium_residual_norm(update.residuals.contact_force);

@@ -17,12 +17,23 @@
 
 #include <array>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace contact_fem
 {
+  /// A check of the contact surfaces' geometry failed on some rank (a
+  /// slave face that its facing master faces do not tile, ...): fatal on
+  /// the configuration a step starts from, but on a Newton iterate of
+  /// current kinematics a property of that iterate, and the step is split
+  /// (ContactProblem::update_contact()).
+  struct GeometryFailure : public std::runtime_error
+  {
+    using std::runtime_error::runtime_error;
+  };
+
   using namespace dealii;
 
   /**
