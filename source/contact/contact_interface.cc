@@ -262,6 +262,7 @@ namespace contact_fem
           fixed_positions[dof_position[node.dofs[d]]] = true;
     find_hanging_vertices(hanging);
     find_pair_materials();
+    count_own_slave_nodes();
     slave_nodes.clear();
     hanging_slave_vertices.clear();
     coupled_faces.clear();
@@ -448,6 +449,26 @@ namespace contact_fem
     const auto &E  = pair_materials.at(pair).youngs_modulus;
     const auto &nu = pair_materials.at(pair).poisson_ratio;
     return 1. / ((1. - nu[0] * nu[0]) / E[0] + (1. - nu[1] * nu[1]) / E[1]);
+  }
+
+  template <int dim>
+  void
+  ContactInterface<dim>::count_own_slave_nodes()
+  {
+    // A node belongs to the first face holding it, which a rank that holds
+    // the faces sharing a node with its own can also tell.
+    std::vector<unsigned int> first_face(nodes.size(), numbers::invalid_unsigned_int);
+    for (unsigned int f = 0; f < faces.size(); ++f)
+      for (const unsigned int n : faces[f].nodes)
+        if (first_face[n] == numbers::invalid_unsigned_int)
+          first_face[n] = f;
+    std::array<unsigned int, 2> counts = {{0, 0}};
+    for (unsigned int f = own_faces.first; f < own_faces.second; ++f)
+      for (const unsigned int n : faces[f].nodes)
+        if (first_face[n] == f && nodes[n].slave)
+          ++counts[nodes[n].parents.empty() ? 0 : 1];
+    slave_node_counts = {Utilities::MPI::sum(counts[0], mpi_communicator),
+                         Utilities::MPI::sum(counts[1], mpi_communicator)};
   }
 
   template <int dim>

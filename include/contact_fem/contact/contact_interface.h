@@ -218,15 +218,12 @@ namespace contact_fem
     }
 
     /// The number of slave nodes that carry a multiplier (first) and of
-    /// hanging slave vertices (second).
+    /// hanging slave vertices (second), counted at initialize(); not
+    /// collective.
     std::pair<unsigned int, unsigned int>
     count_slave_nodes() const
     {
-      std::pair<unsigned int, unsigned int> counts(0, 0);
-      for (const auto &node : nodes)
-        if (node.slave)
-          ++(node.parents.empty() ? counts.first : counts.second);
-      return counts;
+      return slave_node_counts;
     }
 
     /// The values of @p v at dofs(), from their owners, on every rank.
@@ -371,6 +368,11 @@ namespace contact_fem
     std::pair<unsigned int, unsigned int> own_faces = {0, 0};
 
   private:
+    /// Sets slave_node_counts: each rank counts the nodes whose first face
+    /// (in face order) is its own, the counts are summed.
+    void
+    count_own_slave_nodes();
+
     /// Sets pair_materials from the faces of every rank.
     void
     find_pair_materials();
@@ -527,7 +529,8 @@ namespace contact_fem
       std::array<double, 2> youngs_modulus = {{0., 0.}}, poisson_ratio = {{0., 0.}},
                             largest_youngs_modulus = {{0., 0.}};
     };
-    std::vector<PairMaterials> pair_materials;
+    std::vector<PairMaterials>            pair_materials;
+    std::pair<unsigned int, unsigned int> slave_node_counts = {0, 0};
     /// Displacement at dofs() of the last search, and its reach per pair.
     std::vector<double>                             search_displacement;
     std::vector<double>                             reach_of_search;
