@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <vector>
 
 namespace contact_fem::Marking
@@ -107,10 +108,12 @@ namespace contact_fem::Marking
                                                  const ContactInterface<dim> &interface)
   {
     // An interface face is known by the DoFs of the first component of its
-    // nodes, which the cell faces of every rank can name.
-    const FiniteElement<dim>                                    &fe = dof_handler.get_fe();
+    // nodes. The faces of this rank's cells are the ones it contributed
+    // (ContactInterface::own_faces).
+    const FiniteElement<dim> &fe    = dof_handler.get_fe();
+    const auto [first_own, end_own] = interface.own_faces;
     std::map<std::vector<types::global_dof_index>, unsigned int> face_of_dofs;
-    for (unsigned int i = 0; i < interface.faces.size(); ++i)
+    for (unsigned int i = first_own; i < end_own; ++i)
       {
         std::vector<types::global_dof_index> key;
         for (const unsigned int n : interface.faces[i].nodes)
@@ -130,34 +133,38 @@ namespace contact_fem::Marking
       return it == face_of_dofs.end() ? numbers::invalid_unsigned_int : it->second;
     };
 
-    // The flagged slave faces of all ranks, so that every rank takes the
-    // same decision for the master faces it owns, whoever owns the slave.
-    std::vector<unsigned int> slave_flagged(interface.faces.size(), 0);
+    // This rank's flagged slave faces.
+    std::set<unsigned int> slave_flagged;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && cell->refine_flag_set())
         for (const auto f : cell->face_indices())
           if (cell->face(f)->at_boundary())
             if (const unsigned int i = interface_face(cell, f);
                 i != numbers::invalid_unsigned_int && interface.faces[i].slave)
-              slave_flagged[i] = 1;
-    Utilities::MPI::max(slave_flagged, dof_handler.get_communicator(), slave_flagged);
+              slave_flagged.insert(i);
 
     // Refinement halves a face, so a master face is "comparable" to the
     // children of its slave face unless it is nearer (on the log scale)
-    // to twice their length than to their length.
-    const double      largest_ratio = std::sqrt(2.);
-    std::vector<bool> refine_master(interface.faces.size(), false);
+    // to twice their length than to their length. Each rank decides for
+    // the masters of its flagged slave faces; the master faces so marked
+    // are exchanged, so the owner of a master face refines it whoever owns
+    // the slave.
+    const double              largest_ratio = std::sqrt(2.);
+    std::vector<unsigned int> marked;
     for (const auto &[slave, master] : interface.coupled_faces)
-      if (slave_flagged[slave] &&
+      if (slave_flagged.count(slave) &&
           interface.face_lengths[master] > largest_ratio * 0.5 * interface.face_lengths[slave])
-        refine_master[master] = true;
+        marked.push_back(master);
+    std::set<unsigned int> refine_master;
+    for (const auto &rank : Utilities::MPI::all_gather(dof_handler.get_communicator(), marked))
+      refine_master.insert(rank.begin(), rank.end());
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && !cell->refine_flag_set())
         for (const auto f : cell->face_indices())
           if (cell->face(f)->at_boundary())
             if (const unsigned int i = interface_face(cell, f);
-                i != numbers::invalid_unsigned_int && refine_master[i])
+                i != numbers::invalid_unsigned_int && refine_master.count(i))
               {
                 cell->clear_coarsen_flag();
                 cell->set_refine_flag();

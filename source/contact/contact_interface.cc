@@ -35,7 +35,7 @@ namespace contact_fem
     master_faces_per_rank.clear();
     std::map<types::global_dof_index, unsigned int> node_of_dof;
     const unsigned int record = 5 + nodes_per_face * 3 * dim + n_geometry_points * dim;
-    const unsigned int rank   = Utilities::MPI::this_mpi_process(communicator);
+    const unsigned int rank   = Utilities::MPI::this_mpi_process(mpi_communicator);
     for (const auto &chunk : all)
       {
         if (slave_faces_per_rank.size() == rank)
@@ -129,7 +129,7 @@ namespace contact_fem
                                     const MPI_Comm                   comm)
   {
     pairs                        = contact_pairs;
-    communicator                 = comm;
+    mpi_communicator             = comm;
     owned_dofs                   = dof_handler.locally_owned_dofs();
     const FiniteElement<dim> &fe = dof_handler.get_fe();
     degree                       = fe.degree;
@@ -261,6 +261,8 @@ namespace contact_fem
         if (node.fixed[d])
           fixed_positions[dof_position[node.dofs[d]]] = true;
     find_hanging_vertices(hanging);
+    find_pair_materials();
+    count_own_slave_nodes();
     slave_nodes.clear();
     hanging_slave_vertices.clear();
     coupled_faces.clear();
@@ -272,7 +274,7 @@ namespace contact_fem
   void
   ContactInterface<dim>::stop_on_every_rank(const std::string &error) const
   {
-    for (const std::string &message : Utilities::MPI::all_gather(communicator, error))
+    for (const std::string &message : Utilities::MPI::all_gather(mpi_communicator, error))
       if (!message.empty())
         throw GeometryFailure(message);
   }
@@ -296,7 +298,7 @@ namespace contact_fem
     for (unsigned int n = 0; n < nodes.size(); ++n)
       node_of_dof[nodes[n].dofs[0]] = n;
     std::map<unsigned int, std::map<unsigned int, double>> parents_of_node;
-    for (const auto &chunk : Utilities::MPI::all_gather(communicator, triples))
+    for (const auto &chunk : Utilities::MPI::all_gather(mpi_communicator, triples))
       for (unsigned int i = 0; i + 3 <= chunk.size(); i += 3)
         {
           const unsigned int n = node_of_dof.at(static_cast<types::global_dof_index>(chunk[i]));
@@ -390,7 +392,8 @@ namespace contact_fem
         values[i] = value_on_owner(interface_dofs[i]);
     // Each value has exactly one owner, so the sum is exact.
     std::vector<double> result(values.size());
-    Utilities::MPI::sum(ArrayView<const double>(values), communicator, ArrayView<double>(result));
+    Utilities::MPI::sum(ArrayView<const double>(values), mpi_communicator,
+                        ArrayView<double>(result));
     return result;
   }
 
@@ -444,14 +447,64 @@ namespace contact_fem
   double
   ContactInterface<dim>::contact_modulus(const unsigned int pair) const
   {
-    double E[2] = {0., 0.}, nu[2] = {0., 0.};
-    for (const auto &face : faces)
-      if (face.pair == pair)
-        {
-          E[face.slave]  = face.youngs_modulus;
-          nu[face.slave] = face.poisson_ratio;
-        }
+    const auto &E  = pair_materials.at(pair).youngs_modulus;
+    const auto &nu = pair_materials.at(pair).poisson_ratio;
     return 1. / ((1. - nu[0] * nu[0]) / E[0] + (1. - nu[1] * nu[1]) / E[1]);
+  }
+
+  template <int dim>
+  void
+  ContactInterface<dim>::count_own_slave_nodes()
+  {
+    // A node belongs to the first face holding it, which a rank that holds
+    // the faces sharing a node with its own can also tell.
+    std::vector<unsigned int> first_face(nodes.size(), numbers::invalid_unsigned_int);
+    for (unsigned int f = 0; f < faces.size(); ++f)
+      for (const unsigned int n : faces[f].nodes)
+        if (first_face[n] == numbers::invalid_unsigned_int)
+          first_face[n] = f;
+    std::array<unsigned int, 2> counts = {{0, 0}};
+    for (unsigned int f = own_faces.first; f < own_faces.second; ++f)
+      for (const unsigned int n : faces[f].nodes)
+        if (first_face[n] == f && nodes[n].slave)
+          ++counts[nodes[n].parents.empty() ? 0 : 1];
+    slave_node_counts = {Utilities::MPI::sum(counts[0], mpi_communicator),
+                         Utilities::MPI::sum(counts[1], mpi_communicator)};
+  }
+
+  template <int dim>
+  void
+  ContactInterface<dim>::find_pair_materials()
+  {
+    // Per pair and side (0 master, 1 slave) of this rank's faces: E and nu
+    // of the last face, whether there is one, the largest E. The last face
+    // in face order decides E and nu, as a loop over the whole surface
+    // would (faces are in rank order).
+    constexpr unsigned int n_values = 4;
+    std::vector<double>    own(pairs.size() * 2 * n_values, 0.);
+    for (unsigned int f = own_faces.first; f < own_faces.second; ++f)
+      {
+        const Face   &face  = faces[f];
+        double *const entry = &own[(face.pair * 2 + face.slave) * n_values];
+        entry[0]            = face.youngs_modulus;
+        entry[1]            = face.poisson_ratio;
+        entry[2]            = 1.;
+        entry[3]            = std::max(entry[3], face.youngs_modulus);
+      }
+    pair_materials.assign(pairs.size(), PairMaterials());
+    for (const auto &rank : Utilities::MPI::all_gather(mpi_communicator, own))
+      for (unsigned int p = 0; p < pairs.size(); ++p)
+        for (unsigned int side = 0; side < 2; ++side)
+          {
+            const double *const entry = &rank[(p * 2 + side) * n_values];
+            PairMaterials      &m     = pair_materials[p];
+            if (entry[2] > 0.5)
+              {
+                m.youngs_modulus[side] = entry[0];
+                m.poisson_ratio[side]  = entry[1];
+              }
+            m.largest_youngs_modulus[side] = std::max(m.largest_youngs_modulus[side], entry[3]);
+          }
   }
 
   template <int dim>
@@ -632,14 +685,18 @@ namespace contact_fem
   ContactInterface<dim>::relative_motion(const std::vector<double> &from,
                                          const std::vector<double> &to) const
   {
+    // Over the faces of this rank, then the largest over the ranks (exact).
     std::vector<double> slave_motion(pairs.size(), 0.), master_motion(pairs.size(), 0.);
-    for (const auto &face : faces)
-      for (const unsigned int n : face.nodes)
+    for (unsigned int f = own_faces.first; f < own_faces.second; ++f)
+      for (const unsigned int n : faces[f].nodes)
         {
-          const double change  = (displacement(n, to) - displacement(n, from)).norm();
-          double      &largest = face.slave ? slave_motion[face.pair] : master_motion[face.pair];
-          largest              = std::max(largest, change);
+          const double change = (displacement(n, to) - displacement(n, from)).norm();
+          double      &largest =
+            faces[f].slave ? slave_motion[faces[f].pair] : master_motion[faces[f].pair];
+          largest = std::max(largest, change);
         }
+    Utilities::MPI::max(slave_motion, mpi_communicator, slave_motion);
+    Utilities::MPI::max(master_motion, mpi_communicator, master_motion);
     for (unsigned int p = 0; p < pairs.size(); ++p)
       slave_motion[p] += master_motion[p];
     return slave_motion;

@@ -339,15 +339,16 @@ namespace contact_fem
               candidate_masters<dim>(tree, slave_box(geometries[f].nodes, reach[f])).size())
           own_costs.insert(own_costs.end(), {f, static_cast<unsigned int>(n)});
     std::vector<std::pair<unsigned int, unsigned int>> costs;
-    for (const auto &chunk : Utilities::MPI::all_gather(communicator, own_costs))
+    for (const auto &chunk : Utilities::MPI::all_gather(mpi_communicator, own_costs))
       for (unsigned int i = 0; i + 1 < chunk.size(); i += 2)
         costs.emplace_back(chunk[i], chunk[i + 1]);
     std::string error;
-    const auto  share = share_of_faces(costs, Utilities::MPI::this_mpi_process(communicator),
-                                       Utilities::MPI::n_mpi_processes(communicator));
+    const auto  share = share_of_faces(costs, Utilities::MPI::this_mpi_process(mpi_communicator),
+                                       Utilities::MPI::n_mpi_processes(mpi_communicator));
     const auto  mine  = integrate_faces(share, geometries, tree, reach, slave_data, error);
     stop_on_every_rank(error);
-    const auto segments_of_face = unpack_segments(Utilities::MPI::all_gather(communicator, mine));
+    const auto segments_of_face =
+      unpack_segments(Utilities::MPI::all_gather(mpi_communicator, mine));
 
     std::vector<bool> master_is_candidate(faces.size(), false);
     double            slave_measure = 0., slave_modulus = 0.;
@@ -442,8 +443,8 @@ namespace contact_fem
   {
     using Kernel = Mortar::Kernel<dim>;
     // The nodes are shared out over the ranks (every n_ranks-th).
-    const unsigned int          rank    = Utilities::MPI::this_mpi_process(communicator);
-    const unsigned int          n_ranks = Utilities::MPI::n_mpi_processes(communicator);
+    const unsigned int          rank    = Utilities::MPI::this_mpi_process(mpi_communicator);
+    const unsigned int          n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
     std::vector<double>         distances(points.size(), std::numeric_limits<double>::infinity());
     std::vector<Tensor<1, dim>> u(nodes.size());
     for (unsigned int n = 0; n < nodes.size(); ++n)
@@ -530,7 +531,7 @@ namespace contact_fem
       }
     // Each node's distance is on one rank, +infinity on the others.
     std::vector<double> all_distances(points.size());
-    Utilities::MPI::min(ArrayView<const double>(distances), communicator,
+    Utilities::MPI::min(ArrayView<const double>(distances), mpi_communicator,
                         ArrayView<double>(all_distances));
     return all_distances;
   }

@@ -502,11 +502,8 @@ namespace contact_fem
   double
   ContactDiagnosis<dim>::slave_stiffness_ratio(const unsigned int pair) const
   {
-    double slave_E = 0., master_E = 0.;
-    for (const auto &face : run.interface->faces)
-      if (face.pair == pair)
-        (face.slave ? slave_E : master_E) =
-          std::max(face.slave ? slave_E : master_E, face.youngs_modulus);
+    const double slave_E  = run.interface->largest_youngs_modulus(pair, true);
+    const double master_E = run.interface->largest_youngs_modulus(pair, false);
     return master_E > 0. ? slave_E / master_E : 0.;
   }
 

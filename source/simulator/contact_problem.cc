@@ -1500,9 +1500,8 @@ namespace contact_fem
     if (interface)
       {
         interface_dof_fixed.assign(interface->dofs().size(), false);
-        for (const auto &node : interface->nodes)
-          for (unsigned int d = 0; d < dim; ++d)
-            interface_dof_fixed[interface->position(node.dofs[d])] = node.fixed[d];
+        for (unsigned int i = 0; i < interface_dof_fixed.size(); ++i)
+          interface_dof_fixed[i] = interface->dof_fixed(i);
       }
     compute_cell_matrices();
     pcout << "Cycle " << cycle << ": " << triangulation.n_global_active_cells() << " cells, "

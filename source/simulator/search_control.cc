@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <contact_fem/core/format.h>
 #include <contact_fem/simulator/search_control.h>
 
@@ -74,10 +76,20 @@ namespace contact_fem
           result.push_back(s.node);
       return result;
     };
-    const auto coupled = interface.coupled_faces;
+    // The face pairs of this rank's slave faces (the couplings are in
+    // slave face order, so the whole list changed if one rank's did).
+    const auto own_coupled_faces = [this] {
+      std::vector<std::pair<unsigned int, unsigned int>> result;
+      for (const auto &faces : interface.coupled_faces)
+        if (faces.first >= interface.own_faces.first && faces.first < interface.own_faces.second)
+          result.push_back(faces);
+      return result;
+    };
+    const auto coupled = own_coupled_faces();
     const auto paired  = paired_nodes();
     search(displacement);
-    return interface.coupled_faces != coupled || paired_nodes() != paired;
+    const bool changed = own_coupled_faces() != coupled || paired_nodes() != paired;
+    return Utilities::MPI::max(changed ? 1 : 0, interface.communicator()) > 0;
   }
 
   template <int dim>
@@ -184,8 +196,8 @@ namespace contact_fem
         return false;
       };
       if (tie ? precedes(interface.nodes[s.node].reference,
-                         interface.nodes[check.node.node].reference) :
-                excess > check.excess)
+                               interface.nodes[check.node.node].reference) :
+                      excess > check.excess)
         {
           check.excess      = excess;
           check.node        = s;

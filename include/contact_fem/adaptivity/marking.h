@@ -45,8 +45,9 @@ namespace contact_fem
      * right mean (the adaptive Cattaneo spike, doc/validation.md). So a
      * flagged slave face takes along the master faces the last search
      * coupled it with, where these would be more than sqrt(2) times as
-     * long as its children. The flagged slave faces are gathered from all
-     * ranks, so the result does not depend on the partition. Collective.
+     * long as its children. Each rank decides for its own flagged slave
+     * faces and the master faces so marked are exchanged, so the result
+     * does not depend on the partition. Collective.
      */
     template <int dim>
     void

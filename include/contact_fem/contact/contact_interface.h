@@ -199,6 +199,13 @@ namespace contact_fem
                const Materials<dim>            &materials,
                const MPI_Comm                   comm);
 
+    /// The communicator of the ranks sharing the interface.
+    MPI_Comm
+    communicator() const
+    {
+      return mpi_communicator;
+    }
+
     /// Sorted DoF indices of all interface nodes.
     const std::vector<types::global_dof_index> &
     dofs() const
@@ -222,15 +229,12 @@ namespace contact_fem
     }
 
     /// The number of slave nodes that carry a multiplier (first) and of
-    /// hanging slave vertices (second).
+    /// hanging slave vertices (second), counted at initialize(); not
+    /// collective.
     std::pair<unsigned int, unsigned int>
     count_slave_nodes() const
     {
-      std::pair<unsigned int, unsigned int> counts(0, 0);
-      for (const auto &node : nodes)
-        if (node.slave)
-          ++(node.parents.empty() ? counts.first : counts.second);
-      return counts;
+      return slave_node_counts;
     }
 
     /// The values of @p v at dofs(), from their owners, on every rank.
@@ -261,7 +265,8 @@ namespace contact_fem
 
     /// Per pair: a bound of how far the slave surface moved relative to the
     /// master from @p from to @p to (both at dofs()): the largest slave plus
-    /// the largest master displacement change.
+    /// the largest master displacement change. Collective (over the faces
+    /// of each rank, then an MPI max).
     std::vector<double>
     relative_motion(const std::vector<double> &from, const std::vector<double> &to) const;
 
@@ -319,9 +324,18 @@ namespace contact_fem
 
     /// E* = 1 / ((1 - nu_s^2) / E_s + (1 - nu_m^2) / E_m) of the two sides of
     /// pair @p pair (the materials of the pair's faces; each side one body):
-    /// the modulus of Hertz' theory.
+    /// the modulus of Hertz' theory. Found at initialize() from the faces
+    /// of every rank; not collective.
     double
     contact_modulus(const unsigned int pair = 0) const;
+
+    /// The largest Young's modulus of the slave (@p slave) or master faces of
+    /// pair @p pair (0 without faces); not collective.
+    double
+    largest_youngs_modulus(const unsigned int pair, const bool slave) const
+    {
+      return pair_materials.at(pair).largest_youngs_modulus[slave];
+    }
 
     /// The geometry of @p face at X + u (@p u per interface node; empty:
     /// the reference configuration). Its geometry points move with the
@@ -365,6 +379,15 @@ namespace contact_fem
     std::pair<unsigned int, unsigned int> own_faces = {0, 0};
 
   private:
+    /// Sets slave_node_counts: each rank counts the nodes whose first face
+    /// (in face order) is its own, the counts are summed.
+    void
+    count_own_slave_nodes();
+
+    /// Sets pair_materials from the faces of every rank.
+    void
+    find_pair_materials();
+
     /// Builds nodes and faces from the face records of every rank (@p all,
     /// as packed by initialize()), counting the faces per rank.
     void
@@ -510,6 +533,15 @@ namespace contact_fem
     std::map<unsigned int, Segments>
     unpack_segments(const std::vector<std::vector<double>> &packed) const;
 
+    /// Per pair, of its master (0) and slave (1) faces: E and nu of the
+    /// last face (each side one body), the largest E.
+    struct PairMaterials
+    {
+      std::array<double, 2> youngs_modulus = {{0., 0.}}, poisson_ratio = {{0., 0.}},
+                            largest_youngs_modulus = {{0., 0.}};
+    };
+    std::vector<PairMaterials>            pair_materials;
+    std::pair<unsigned int, unsigned int> slave_node_counts = {0, 0};
     /// Displacement at dofs() of the last search, and its reach per pair.
     std::vector<double>                             search_displacement;
     std::vector<double>                             reach_of_search;
@@ -517,7 +549,7 @@ namespace contact_fem
     std::map<types::global_dof_index, unsigned int> dof_position;
     std::vector<bool>                               fixed_positions; ///< by position in dofs()
     IndexSet                                        owned_dofs;
-    MPI_Comm                                        communicator;
+    MPI_Comm                                        mpi_communicator;
   };
   // The tiling checks differ by dimension (contact_interface_tiling.cc).
   template <>
