@@ -1044,8 +1044,9 @@ run_case $G sphere-alm-k1e6 "$HERTZ3D" 60 "Hertz sphere, alm, Stiffness factor 1
 # the state non-uniform: cone checks only). Hertz sphere (Q1, Sphere
 # refinements = 3, as tests/scenes/frictional_hertz_3d_01): the quarter
 # model's tangential force is the radial traction of a quarter (not zero:
-# no ratio check). 3D Cattaneo (prm/cattaneo_3d.prm): P, then
-# Q up to 0.875 mu P.
+# no ratio check). 3D Cattaneo (prm/cattaneo_3d.prm, Q2 on Contact
+# refinements 2): P, then Q up to 0.875 mu P. The nodes on the symmetry
+# planes (one fixed component) carry friction along their free tangent.
 G=3d-friction
 FP3D="$script_dir/frictional_patch_3d.prm"
 FQ13D=("Finite element/Degree=1" "Geometry/Hertz sphere/Sphere refinements=3" "Geometry/Hertz sphere/Contact refinements=0")
@@ -1144,7 +1145,7 @@ run_case $G hertz-penalty-mu0.2 "$HERTZ3D" 60 "Hertz sphere (Q1), penalty fricti
   "${FQ13D[@]}" "Contact/Formulation=penalty frictional" "Contact/Friction=coulomb 0.2"
 run_case $G hertz-sphere-1e4 "$HERTZ3D" 60 "Hertz sphere (Q1), mu = 0.2, sphere 1e4 x stiffer than the plate (stiff slave), plate refined twice" "hertz-approx warn=stiffer $P3 cone" \
   "${FQ13D[@]}" "Contact/Formulation=alm frictional" "Contact/Friction=coulomb 0.2" "Materials/Young's moduli=1e12, 1e8" "Geometry/Hertz sphere/Plate refinements=2"
-run_case $G cattaneo       "$CATT3D" 120 "prm/cattaneo_3d.prm (Q up to 0.875 mu P)" "hertz-approx cone"
+run_case $G cattaneo       "$CATT3D" 120 "prm/cattaneo_3d.prm (Q2, Q up to 0.875 mu P)" "hertz-approx cone"
 
 # --- 21. 3D iterative linear solver ----------------------------------------
 # Linear solver/Type = iterative on the stiff and nearly incompressible 3D
