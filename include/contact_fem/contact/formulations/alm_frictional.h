@@ -243,6 +243,8 @@ namespace contact_fem
     /// stick nodes inside it (|t| - T(p)), relative to the largest bound.
     void
     print_cone_check(const ContactInterface<dim> &interface, std::ostream &out) const;
+    /// Whether print_cone_check() has warned (once per run).
+    mutable bool cone_check_warned = false;
 
     /// The weighted tangential slip of slave node @p s at @p u since the
     /// last accepted load step, in the tangent frame of frame_normal(s).
