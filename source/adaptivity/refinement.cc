@@ -23,8 +23,10 @@ namespace contact_fem
                       "reported).");
     prm.declare_entry("Strategy", "fixed fraction",
                       Patterns::Selection("fixed fraction|fixed number|maximum"),
-                      "Marking: 'fixed fraction' refines the cells holding the "
-                      "refine fraction of the total squared error, 'fixed "
+                      "Marking: 'fixed fraction' refines the fewest cells whose "
+                      "indicators eta_K sum to the refine fraction of the sum "
+                      "over all cells (deal.II's L1 norm: a sum of eta_K, not of "
+                      "eta_K^2, so more cells than that fraction of eta^2), 'fixed "
                       "number' that fraction of the cells, 'maximum' the cells "
                       "whose indicator exceeds the fraction times the largest.");
     prm.declare_entry("Refine fraction", "0.3", Patterns::Double(0., 1.),
