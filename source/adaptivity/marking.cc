@@ -52,20 +52,15 @@ namespace contact_fem::Marking
     if (contact_ids.empty())
       return;
 
-    // The front: the cells flagged in the last layer, each with the faces
-    // it passes the refinement on through (a bit per face): those opposite
-    // its contact faces, then those opposite the face it was reached by.
-    // So the layers go straight into the body, the column behind each
-    // flagged surface cell, and not sideways along the surface (which
-    // would refine unmarked surface cells). Each process pulls the front
-    // from the cells next to its cells, ghosts included, so the result
-    // does not depend on the partition.
-    std::vector<unsigned char> front(triangulation.n_active_cells(), 0);
+    // The front: the cells flagged in the last layer. Each process pulls
+    // the flags of its cells from the front cells next to them, ghosts
+    // included, so the result does not depend on the partition.
+    std::vector<bool> in_front(triangulation.n_active_cells(), false);
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned() && cell->refine_flag_set())
         for (const auto f : cell->face_indices())
           if (cell->face(f)->at_boundary() && contact_ids.count(cell->face(f)->boundary_id()))
-            front[cell->active_cell_index()] |= 1u << GeometryInfo<dim>::opposite_face[f];
+            in_front[cell->active_cell_index()] = true;
 
     using CellIterator = typename Triangulation<dim>::active_cell_iterator;
     for (unsigned int layer = 1; layer < layers; ++layer)
@@ -73,17 +68,16 @@ namespace contact_fem::Marking
         GridTools::exchange_cell_data_to_ghosts<unsigned char, Triangulation<dim>>(
           triangulation,
           [&](const CellIterator &cell) -> std_cxx17::optional<unsigned char> {
-            return front[cell->active_cell_index()];
+            return static_cast<unsigned char>(in_front[cell->active_cell_index()]);
           },
           [&](const CellIterator &cell, const unsigned char &value) {
-            front[cell->active_cell_index()] = value;
+            in_front[cell->active_cell_index()] = value != 0;
           });
-        // A cell joins through its face f if a front cell of its level or
-        // finer across f passes the refinement on through that face.
-        const auto passes = [&](const CellIterator &neighbor, const unsigned int face) {
-          return neighbor->is_active() && (front[neighbor->active_cell_index()] >> face) & 1u;
+        // A cell joins if a front cell of its level or finer shares a face.
+        const auto in_front_cell = [&](const CellIterator &neighbor) {
+          return neighbor->is_active() && in_front[neighbor->active_cell_index()];
         };
-        std::vector<unsigned char> next(front.size(), 0);
+        std::vector<bool> next(in_front.size(), false);
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned() && !cell->refine_flag_set())
             for (const auto f : cell->face_indices())
@@ -93,21 +87,17 @@ namespace contact_fem::Marking
                 const auto neighbor = cell->neighbor(f);
                 bool       joins    = false;
                 if (!neighbor->has_children())
-                  joins = neighbor->level() == cell->level() &&
-                          passes(neighbor, cell->neighbor_of_neighbor(f));
+                  joins = neighbor->level() == cell->level() && in_front_cell(neighbor);
                 else
-                  // The children of the neighbor on this face number it
-                  // as their parent does.
                   for (unsigned int sf = 0; sf < cell->face(f)->n_children(); ++sf)
-                    joins = joins || passes(cell->neighbor_child_on_subface(f, sf),
-                                            cell->neighbor_of_neighbor(f));
+                    joins = joins || in_front_cell(cell->neighbor_child_on_subface(f, sf));
                 if (joins)
-                  next[cell->active_cell_index()] |= 1u << GeometryInfo<dim>::opposite_face[f];
+                  next[cell->active_cell_index()] = true;
               }
         for (const auto &cell : triangulation.active_cell_iterators())
           if (next[cell->active_cell_index()])
             cell->set_refine_flag();
-        front = std::move(next);
+        in_front = std::move(next);
       }
   }
 
