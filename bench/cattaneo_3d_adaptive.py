@@ -27,8 +27,8 @@ each flagged cell sideways along the contact surface; --set "Refinement/
 Contact layers along the surface=false" makes the refinement follow the
 marking (doc/validation.md, "Which rule spreads the refinement"): the
 grading toward r ~ c was shown with
-  --level 2 --cycles 3 --fraction 0.1 \
-  --set "Refinement/Contact layers along the surface=false" \
+  --level 2 --cycles 3 --fraction 0.1
+  --set "Refinement/Contact layers along the surface=false"
   --set "Model range/Accept results outside the small-strain range=true"
 (cycle 2: spacing 0.134 in the stick core, 0.067 at r ~ c, 0.132 outside).
 
