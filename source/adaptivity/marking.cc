@@ -48,20 +48,29 @@ namespace contact_fem::Marking
   void
   flag_layers_behind_faces(parallel::distributed::Triangulation<dim> &triangulation,
                            const std::set<types::boundary_id>        &contact_ids,
-                           const unsigned int                         layers)
+                           const unsigned int                         layers,
+                           const bool                                 along_surface)
   {
     if (contact_ids.empty())
       return;
 
-    // The front: the cells flagged in the last layer. Each process pulls
-    // the flags of its cells from the front cells next to them, ghosts
-    // included, so the result does not depend on the partition.
-    std::vector<bool> in_front(triangulation.n_active_cells(), false);
+    // The front: the cells flagged in the last layer, each with the faces
+    // it passes the refinement on through (a bit per face). Straight
+    // behind (@p along_surface false): the face opposite its contact faces,
+    // then the one opposite the face it was reached by, i.e. the column
+    // behind a flagged contact cell. Along the surface: every face, so
+    // each layer also takes the neighbours along the contact surface.
+    // Each process pulls the front from the cells next to its cells,
+    // ghosts included, so the result does not depend on the partition.
+    const auto passed_on = [&](const unsigned int f) -> unsigned char {
+      return along_surface ? 0xff : 1u << GeometryInfo<dim>::opposite_face[f];
+    };
+    std::vector<unsigned char> front(triangulation.n_active_cells(), 0);
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned() && cell->refine_flag_set())
         for (const auto f : cell->face_indices())
           if (cell->face(f)->at_boundary() && contact_ids.count(cell->face(f)->boundary_id()))
-            in_front[cell->active_cell_index()] = true;
+            front[cell->active_cell_index()] |= passed_on(f);
 
     using CellIterator = typename Triangulation<dim>::active_cell_iterator;
     for (unsigned int layer = 1; layer < layers; ++layer)
@@ -69,16 +78,17 @@ namespace contact_fem::Marking
         GridTools::exchange_cell_data_to_ghosts<unsigned char, Triangulation<dim>>(
           triangulation,
           [&](const CellIterator &cell) -> std_cxx17::optional<unsigned char> {
-            return static_cast<unsigned char>(in_front[cell->active_cell_index()]);
+            return front[cell->active_cell_index()];
           },
           [&](const CellIterator &cell, const unsigned char &value) {
-            in_front[cell->active_cell_index()] = value != 0;
+            front[cell->active_cell_index()] = value;
           });
-        // A cell joins if a front cell of its level or finer shares a face.
-        const auto in_front_cell = [&](const CellIterator &neighbor) {
-          return neighbor->is_active() && in_front[neighbor->active_cell_index()];
+        // A cell joins through its face f if a front cell of its level or
+        // finer across f passes the refinement on through that face.
+        const auto passes = [&](const CellIterator &neighbor, const unsigned int face) {
+          return neighbor->is_active() && (front[neighbor->active_cell_index()] >> face) & 1u;
         };
-        std::vector<bool> next(in_front.size(), false);
+        std::vector<unsigned char> next(front.size(), 0);
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned() && !cell->refine_flag_set())
             for (const auto f : cell->face_indices())
@@ -88,17 +98,21 @@ namespace contact_fem::Marking
                 const auto neighbor = cell->neighbor(f);
                 bool       joins    = false;
                 if (!neighbor->has_children())
-                  joins = neighbor->level() == cell->level() && in_front_cell(neighbor);
+                  joins = neighbor->level() == cell->level() &&
+                          passes(neighbor, cell->neighbor_of_neighbor(f));
                 else
+                  // The children of the neighbor on this face number it
+                  // as their parent does.
                   for (unsigned int sf = 0; sf < cell->face(f)->n_children(); ++sf)
-                    joins = joins || in_front_cell(cell->neighbor_child_on_subface(f, sf));
+                    joins = joins || passes(cell->neighbor_child_on_subface(f, sf),
+                                            cell->neighbor_of_neighbor(f));
                 if (joins)
-                  next[cell->active_cell_index()] = true;
+                  next[cell->active_cell_index()] |= passed_on(f);
               }
         for (const auto &cell : triangulation.active_cell_iterators())
           if (next[cell->active_cell_index()])
             cell->set_refine_flag();
-        in_front = std::move(next);
+        front = std::move(next);
       }
   }
 
@@ -182,11 +196,13 @@ namespace contact_fem::Marking
   template void
   flag_layers_behind_faces(parallel::distributed::Triangulation<2> &,
                            const std::set<types::boundary_id> &,
-                           const unsigned int);
+                           const unsigned int,
+                           const bool);
   template void
   flag_layers_behind_faces(parallel::distributed::Triangulation<3> &,
                            const std::set<types::boundary_id> &,
-                           const unsigned int);
+                           const unsigned int,
+                           const bool);
   template void
   flag_master_faces_opposite_flagged_slave_faces(DoFHandler<2> &, const ContactInterface<2> &);
   template void

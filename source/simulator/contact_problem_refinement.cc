@@ -122,9 +122,8 @@ namespace contact_fem
               traction = (s.D / reference) * contact.traction(s);
             else if (active)
               traction = -contact.normal_pressure(s.node) * s.D / reference * s.normal;
-            tractions.push_back(
-              {interface.nodes[s.node].reference, s.normal, traction, samples, active,
-               interface.nodes[s.node].dofs[0]});
+            tractions.push_back({interface.nodes[s.node].reference, s.normal, traction, samples,
+                                 active, interface.nodes[s.node].dofs[0]});
           }
       return tractions;
     }
@@ -369,7 +368,8 @@ namespace contact_fem
         std::set<types::boundary_id> contact_ids;
         for (const auto &pair : contact_parameters.pairs)
           contact_ids.insert({pair.slave, pair.master});
-        Marking::flag_layers_behind_faces(triangulation, contact_ids, refinement.contact_layers);
+        Marking::flag_layers_behind_faces(triangulation, contact_ids, refinement.contact_layers,
+                                          refinement.layers_along_surface);
       }
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned() && cell->level() >= int(refinement.max_level))

@@ -30,13 +30,17 @@ namespace contact_fem
 
     /// Refinement/Contact layers: a flagged cell with a face on one of
     /// @p contact_ids takes the cells behind it along, @p layers deep in
-    /// all (1: nothing more). The front is exchanged with the ghosts, so
-    /// the result does not depend on the partition. Collective.
+    /// all (1: nothing more); with @p along_surface (Refinement/Contact
+    /// layers along the surface) each layer also takes the front's
+    /// neighbours along the surface, else only the column straight
+    /// behind. The front is exchanged with the ghosts, so the result does
+    /// not depend on the partition. Collective.
     template <int dim>
     void
     flag_layers_behind_faces(parallel::distributed::Triangulation<dim> &triangulation,
                              const std::set<types::boundary_id>        &contact_ids,
-                             const unsigned int                         layers);
+                             const unsigned int                         layers,
+                             const bool                                 along_surface = true);
 
     /**
      * Used with friction: stick ties a slave node to the master face it
