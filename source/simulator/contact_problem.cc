@@ -960,16 +960,7 @@ namespace contact_fem
     // configuration (the search then always reaches the iterate).
     if (iteration > 0 && contact_parameters.current_kinematics)
       {
-        bool searched_again = false;
-        try
-          {
-            searched_again = search->follow(interface_displacement);
-          }
-        catch (const GeometryFailure &failure) // a distorted iterate: split
-          {
-            throw NewtonFailure("its contact surfaces: " + std::string(failure.what()));
-          }
-        if (searched_again)
+        if (search->follow(interface_displacement))
           {
             update.searched_again = true;
             make_sparsity_pattern();
@@ -1096,9 +1087,15 @@ namespace contact_fem
           {
             update = update_contact(iteration);
           }
-        catch (const NewtonFailure &failure) // a distorted iterate: say where
+        catch (const GeometryFailure &failure)
           {
-            throw NewtonFailure(at + ": " + failure.what(), failure.splittable);
+            // Current kinematics rebuilds the operators on every iterate:
+            // surfaces the segmentation refuses are this iterate's (split).
+            // Otherwise the search runs on the step start's configuration:
+            // fatal there.
+            if (!contact_parameters.current_kinematics)
+              throw;
+            throw NewtonFailure(at + ": its contact surfaces: " + failure.what());
           }
         const unsigned int bond_changes = tying && iteration > 0 ? update_bonds(at, iteration) : 0u;
         const unsigned int changes      = update.changes + bond_changes;

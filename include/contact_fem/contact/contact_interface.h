@@ -28,7 +28,7 @@ namespace contact_fem
   /// slave face that its facing master faces do not tile, ...): fatal on
   /// the configuration a step starts from, but on a Newton iterate of
   /// current kinematics a property of that iterate, and the step is split
-  /// (ContactProblem::update_contact()).
+  /// (ContactProblem::newton_iterations()).
   struct GeometryFailure : public std::runtime_error
   {
     using std::runtime_error::runtime_error;
