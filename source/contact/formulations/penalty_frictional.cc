@@ -29,6 +29,17 @@ namespace contact_fem
                              "penalty frictionless."));
       return prm;
     }
+
+    /// a x b in 3D; unused in 2D (the spin about the normal is 3D only).
+    template <int dim>
+    Tensor<1, dim>
+    cross(const Tensor<1, dim> &a, const Tensor<1, dim> &b)
+    {
+      if constexpr (dim == 3)
+        return cross_product_3d(a, b);
+      else
+        return Tensor<1, dim>();
+    }
   } // namespace
 
   template <int dim>
@@ -69,6 +80,12 @@ namespace contact_fem
     accepted_tangential.assign(interface.nodes.size(), TangentialVector<dim>());
     accepted_traction.assign(interface.nodes.size(), Tensor<1, dim>());
     accepted_normal.assign(interface.nodes.size(), Tensor<1, dim>());
+    accepted_chords.assign(interface.nodes.size(), {});
+    slave_faces_of_node.assign(interface.nodes.size(), {});
+    for (unsigned int f = 0; f < interface.faces.size(); ++f)
+      if (interface.faces[f].slave)
+        for (const unsigned int n : interface.faces[f].nodes)
+          slave_faces_of_node[n].push_back(f);
     cone_factor.assign(interface.nodes.size(), 0.);
   }
 
@@ -102,17 +119,63 @@ namespace contact_fem
 
   template <int dim>
   TangentialVector<dim>
-  PenaltyFrictional<dim>::trial_traction(const SlaveNode &s, const TangentialVector<dim> &xi) const
+  PenaltyFrictional<dim>::trial_traction(const ContactInterface<dim> &interface,
+                                         const SlaveNode             &s,
+                                         const TangentialVector<dim> &xi) const
   {
     // A node a support holds along one tangent (3D symmetry plane): the
     // support carries the other, friction only the free one.
-    return free_part(history(s) - tangent_penalty[s.pair] * xi, s.normal,
+    return free_part(history(interface, s) - tangent_penalty[s.pair] * xi, s.normal,
                      sets.held_component[s.node]);
   }
 
   template <int dim>
+  std::vector<Tensor<1, dim>>
+  PenaltyFrictional<dim>::face_chords(const ContactInterface<dim> &interface,
+                                      const unsigned int           node) const
+  {
+    const std::vector<double> &u = interface.search_configuration();
+    const Tensor<1, dim> x = interface.nodes[node].reference + interface.displacement(node, u);
+    std::vector<Tensor<1, dim>> chords;
+    for (const unsigned int f : slave_faces_of_node[node])
+      {
+        const auto    &nodes = interface.faces[f].nodes;
+        Tensor<1, dim> centroid;
+        for (const unsigned int m : nodes)
+          centroid += interface.nodes[m].reference + interface.displacement(m, u);
+        chords.push_back(centroid / double(nodes.size()) - x);
+      }
+    return chords;
+  }
+
+  template <int dim>
+  typename PenaltyFrictional<dim>::Spin
+  PenaltyFrictional<dim>::spin_about_normal(const ContactInterface<dim> &interface,
+                                            const SlaveNode             &s) const
+  {
+    Spin                  spin;
+    const auto           &before = accepted_chords[s.node];
+    const Tensor<1, dim> &old    = accepted_normal[s.node];
+    spin.now                     = face_chords(interface, s.node);
+    if (dim == 2 || before.size() != spin.now.size())
+      return spin;
+    spin.X = 0.;
+    for (unsigned int f = 0; f < before.size(); ++f)
+      {
+        // b_f = S A_f (A_f normal to n^n, as t_n in history()).
+        const double beta = (s.normal * before[f]) / (1. + old * s.normal);
+        spin.before.push_back(before[f] - beta * (old + s.normal));
+        spin.X += spin.before[f] * spin.now[f];
+        spin.Y += s.normal * cross<dim>(spin.before[f], spin.now[f]);
+      }
+    if (spin.X * spin.X + spin.Y * spin.Y == 0.)
+      spin.X = 1.;
+    return spin;
+  }
+
+  template <int dim>
   TangentialVector<dim>
-  PenaltyFrictional<dim>::history(const SlaveNode &s) const
+  PenaltyFrictional<dim>::history(const ContactInterface<dim> &interface, const SlaveNode &s) const
   {
     if (!this->current)
       return accepted_tangential[s.node];
@@ -121,7 +184,13 @@ namespace contact_fem
     const Tensor<1, dim> &t    = accepted_traction[s.node];
     const Tensor<1, dim> &old  = accepted_normal[s.node];
     const double          beta = (s.normal * t) / (1. + old * s.normal);
-    return to_frame(t - beta * (old + s.normal), s.normal);
+    const Tensor<1, dim>  h    = t - beta * (old + s.normal);
+    if (dim == 2 || t.norm_square() == 0.)
+      return to_frame(h, s.normal);
+    // 3D: then the spin about n, cos phi h + sin phi n x h.
+    const Spin   spin = spin_about_normal(interface, s);
+    const double r    = std::hypot(spin.X, spin.Y);
+    return to_frame(spin.X / r * h + spin.Y / r * cross<dim>(s.normal, h), s.normal);
   }
 
   template <int dim>
@@ -139,24 +208,90 @@ namespace contact_fem
     const double          beta        = (s.normal * t) / denominator;
     const auto            frame       = tangent_frame(s.normal);
     const auto           &linearised  = interface.linearised_nodes.at(s.node);
+    const Tensor<1, dim>  h           = t - beta * (old + s.normal);
+    if (dim == 2 || t.norm_square() == 0.)
+      {
+        for (unsigned int i = 0; i < linearised.dofs.size(); ++i)
+          {
+            Tensor<1, dim> dn;
+            for (unsigned int d = 0; d < dim; ++d)
+              dn[d] = linearised.normal[d][i];
+            const double d_beta = (dn * t - beta * (old * dn)) / denominator;
+            for (unsigned int k = 0; k < dim - 1; ++k)
+              rows[k][linearised.dofs[i]] += -d_beta * (frame[k] * old) - beta * (frame[k] * dn);
+          }
+        return;
+      }
+    // 3D: h_spun = C h + S n x h, C = X / r, S = Y / r (spin_about_normal());
+    // d h_spun = C dh + S (dn x h + n x dh) + d phi (-S h + C n x h), d phi
+    // = (X dY - Y dX) / r^2, with dX, dY from dn (through b_f = S A_f) and
+    // from the chords a_f (the positions of the slave faces' nodes).
+    const Spin           spin = spin_about_normal(interface, s);
+    const double         r2   = spin.X * spin.X + spin.Y * spin.Y;
+    const double         C = spin.X / std::sqrt(r2), S = spin.Y / std::sqrt(r2);
+    const Tensor<1, dim> n_h = cross<dim>(s.normal, h);
+    const auto           add = [&](const types::global_dof_index dof, const Tensor<1, dim> &dn,
+                         const Tensor<1, dim> &dh, const double dX, const double dY) {
+      const double         d_phi = (spin.X * dY - spin.Y * dX) / r2;
+      const Tensor<1, dim> d_spun =
+        C * dh + S * (cross<dim>(dn, h) + cross<dim>(s.normal, dh)) + d_phi * (-S * h + C * n_h);
+      for (unsigned int k = 0; k < dim - 1; ++k)
+        rows[k][dof] += frame[k] * d_spun;
+    };
+    // The normal's part.
+    const auto &before = accepted_chords[s.node];
     for (unsigned int i = 0; i < linearised.dofs.size(); ++i)
       {
         Tensor<1, dim> dn;
         for (unsigned int d = 0; d < dim; ++d)
           dn[d] = linearised.normal[d][i];
-        const double d_beta = (dn * t - beta * (old * dn)) / denominator;
-        for (unsigned int k = 0; k < dim - 1; ++k)
-          rows[k][linearised.dofs[i]] += -d_beta * (frame[k] * old) - beta * (frame[k] * dn);
+        const double         d_beta = (dn * t - beta * (old * dn)) / denominator;
+        const Tensor<1, dim> dh     = -d_beta * (old + s.normal) - beta * dn;
+        double               dX = 0., dY = 0.;
+        for (unsigned int f = 0; f < spin.before.size(); ++f)
+          {
+            const double         beta_f   = (s.normal * before[f]) / denominator;
+            const double         d_beta_f = (dn * before[f] - beta_f * (old * dn)) / denominator;
+            const Tensor<1, dim> db       = -d_beta_f * (old + s.normal) - beta_f * dn;
+            dX += db * spin.now[f];
+            dY +=
+              dn * cross<dim>(spin.before[f], spin.now[f]) + s.normal * cross<dim>(db, spin.now[f]);
+          }
+        add(linearised.dofs[i], dn, dh, dX, dY);
       }
+    // The chords' part: a_f = (sum of the face's node positions) / N_f - x_j.
+    if (spin.before.empty())
+      return;
+    // Per node: the gradients of X and Y by its position (dX = b_f . da_f,
+    // dY = n . (b_f x da_f) = da_f . (n x b_f)).
+    std::map<unsigned int, std::pair<Tensor<1, dim>, Tensor<1, dim>>> by_node;
+    for (unsigned int f = 0; f < spin.before.size(); ++f)
+      {
+        const Tensor<1, dim> gX    = spin.before[f];
+        const Tensor<1, dim> gY    = cross<dim>(s.normal, spin.before[f]);
+        const auto          &nodes = interface.faces[slave_faces_of_node[s.node][f]].nodes;
+        for (const unsigned int m : nodes)
+          {
+            by_node[m].first += gX / double(nodes.size());
+            by_node[m].second += gY / double(nodes.size());
+          }
+        by_node[s.node].first -= gX;
+        by_node[s.node].second -= gY;
+      }
+    for (const auto &[m, g] : by_node)
+      for (unsigned int d = 0; d < dim; ++d)
+        add(interface.nodes[m].dofs[d], Tensor<1, dim>(), Tensor<1, dim>(), g.first[d],
+            g.second[d]);
   }
 
   template <int dim>
   TangentialVector<dim>
-  PenaltyFrictional<dim>::stick_or_slip(const SlaveNode             &s,
+  PenaltyFrictional<dim>::stick_or_slip(const ContactInterface<dim> &interface,
+                                        const SlaveNode             &s,
                                         const double                 p,
                                         const TangentialVector<dim> &xi) const
   {
-    const TangentialVector<dim> trial     = trial_traction(s, xi);
+    const TangentialVector<dim> trial     = trial_traction(interface, s, xi);
     const double                size      = magnitude<dim>(trial);
     const TangentialVector<dim> direction = unit_direction<dim>(trial, size);
     if (pure_slip || frictionless_law(s))
@@ -167,19 +302,21 @@ namespace contact_fem
 
   template <int dim>
   TangentialVector<dim>
-  PenaltyFrictional<dim>::tangential_traction(const SlaveNode             &s,
+  PenaltyFrictional<dim>::tangential_traction(const ContactInterface<dim> &interface,
+                                              const SlaveNode             &s,
                                               const TangentialVector<dim> &direction,
                                               const double                 p,
                                               const TangentialVector<dim> &xi) const
   {
     if (direction.norm_square() == 0.)
-      return trial_traction(s, xi);
+      return trial_traction(interface, s, xi);
     return laws[s.pair]->threshold(std::max(p, 0.)) * direction;
   }
 
   template <int dim>
   double
-  PenaltyFrictional<dim>::slip_cone_factor(const SlaveNode             &s,
+  PenaltyFrictional<dim>::slip_cone_factor(const ContactInterface<dim> &interface,
+                                           const SlaveNode             &s,
                                            const TangentialVector<dim> &direction,
                                            const double                 p,
                                            const TangentialVector<dim> &xi) const
@@ -190,7 +327,7 @@ namespace contact_fem
     if (dim == 2 || direction.norm_square() == 0. || frictionless_law(s) ||
         sets.held_component[s.node] < dim)
       return 0.;
-    const double size = magnitude<dim>(trial_traction(s, xi));
+    const double size = magnitude<dim>(trial_traction(interface, s, xi));
     return size > 0. ? laws[s.pair]->threshold(std::max(p, 0.)) / size : 0.;
   }
 
@@ -232,8 +369,8 @@ namespace contact_fem
           {
             const double                p  = this->penalty[s.pair] * (-interface.gap(s, u));
             const TangentialVector<dim> xi = slip_increment(interface, s, u);
-            sets.direction[s.node]         = stick_or_slip(s, p, xi);
-            cone_factor[s.node]            = slip_cone_factor(s, sets.direction[s.node], p, xi);
+            sets.direction[s.node]         = stick_or_slip(interface, s, p, xi);
+            cone_factor[s.node] = slip_cone_factor(interface, s, sets.direction[s.node], p, xi);
           }
       }
   }
@@ -334,7 +471,7 @@ namespace contact_fem
               return held < dim ? free[k] * free[l] : (k == l ? 1. : 0.);
             };
             const TangentialVector<dim> history =
-              trial_traction(s, -xi_reference); // Q (t_n + eps_t grad xi . u_n)
+              trial_traction(interface, s, -xi_reference); // Q (t_n + eps_t grad xi . u_n)
             for (unsigned int k = 0; k < dim - 1; ++k)
               {
                 const double load = s.D * history[k];
@@ -406,7 +543,7 @@ namespace contact_fem
           }
         const double                 p         = this->pressure[s.node];
         const TangentialVector<dim>  xi        = slip_increment(interface, s, u);
-        TangentialVector<dim>        direction = stick_or_slip(s, p, xi);
+        TangentialVector<dim>        direction = stick_or_slip(interface, s, p, xi);
         const TangentialVector<dim> &old       = sets.direction[s.node];
         // A slipping node reverses (3D: turns by more than 90 degrees)
         // through stick: its slip solve overshoots (with eps_t ~ 1e4 E/h a
@@ -422,8 +559,8 @@ namespace contact_fem
             ++last_stick_slip_changes;
           }
         sets.direction[s.node] = direction;
-        tangential[s.node]     = tangential_traction(s, direction, p, xi);
-        cone_factor[s.node]    = slip_cone_factor(s, direction, p, xi);
+        tangential[s.node]     = tangential_traction(interface, s, direction, p, xi);
+        cone_factor[s.node]    = slip_cone_factor(interface, s, direction, p, xi);
       }
     return changes;
   }
@@ -475,6 +612,13 @@ namespace contact_fem
           {
             accepted_traction[s.node] = to_global(tangential[s.node], s.normal);
             accepted_normal[s.node]   = s.normal;
+            if (dim == 3)
+              {
+                // In the plane of the normal, as the traction.
+                accepted_chords[s.node] = face_chords(interface, s.node);
+                for (auto &chord : accepted_chords[s.node])
+                  chord -= (chord * s.normal) * s.normal;
+              }
           }
       }
   }
@@ -629,6 +773,7 @@ namespace contact_fem
     state->last_step_slip         = last_step_slip;
     state->accepted_traction      = accepted_traction;
     state->accepted_normal        = accepted_normal;
+    state->accepted_chords        = accepted_chords;
     state->converged_operators    = converged_operators;
     return state;
   }
@@ -647,6 +792,7 @@ namespace contact_fem
     last_step_slip         = saved.last_step_slip;
     accepted_traction      = saved.accepted_traction;
     accepted_normal        = saved.accepted_normal;
+    accepted_chords        = saved.accepted_chords;
     converged_operators    = saved.converged_operators;
   }
 

@@ -68,10 +68,11 @@ namespace contact_fem
    * frictional"), and the history traction t_n,j is carried from the
    * normal n^n of the accepted step to the current one by the smallest
    * rotation between them (parallel transport: h_j = t_n - (n . t_n) / (1
-   * + n^n . n) (n^n + n), in the frame of n), so that t*_j = h_j - eps_t
-   * xi_j is unchanged by a rotation of the scene and, in 2D, by any
-   * rigid rotation of the contact within a step (in 3D up to the spin
-   * about the normal). The tangential force t_j h_j (D_j t on the slave,
+   * + n^n . n) (n^n + n), in the frame of n), in 3D followed by the spin
+   * of the slave surface about n since that step (spin_about_normal()), so
+   * that t*_j = h_j - eps_t xi_j is unchanged by any rigid rotation of the
+   * contact within a step (frame indifference; in 2D the transport alone
+   * is that rotation). The tangential force t_j h_j (D_j t on the slave,
    * -M_jl t on master l, t = sum_k t_k tau_k) is linearised in full
    * (assemble_current()): d t_k from d xi_j (with the change of D_j), d h_j
    * (the turn of n) and, on a slip node, T'(p) dp (dp of the penalty
@@ -190,13 +191,38 @@ namespace contact_fem
     /// t*_j = t_n,j - eps_t xi_j (current kinematics: h_j - eps_t xi_j),
     /// its free_part() where a support holds one tangent.
     TangentialVector<dim>
-    trial_traction(const SlaveNode &s, const TangentialVector<dim> &xi) const;
+    trial_traction(const ContactInterface<dim> &interface,
+                   const SlaveNode             &s,
+                   const TangentialVector<dim> &xi) const;
 
     /// The history traction of @p s in the frame of its normal: t_n,j, or
     /// with current kinematics h_j, t_n,j transported to the current normal
-    /// (see the class comment).
+    /// and, in 3D, turned by the spin about it (see the class comment).
     TangentialVector<dim>
-    history(const SlaveNode &s) const;
+    history(const ContactInterface<dim> &interface, const SlaveNode &s) const;
+
+    /// Current kinematics, 3D: the rotation of the slave surface about the
+    /// current normal n_j since the last accepted step, after the smallest
+    /// rotation S taking n^n to n_j. Its angle phi maximises sum_f a_f .
+    /// Rot_n(phi) S A_f over the chords A_f (then), a_f (now) from node j
+    /// to the centroids of its slave faces (the rotation of the polar
+    /// decomposition of the surface's deformation, Kabsch): phi =
+    /// atan2(Y, X), X = sum_f b_f . a_f, Y = sum_f n . (b_f x a_f), b_f = S
+    /// A_f. The rotation of n^n to n_j with the least in-plane turn of the
+    /// chords: a rigid rotation R of the contact gives R exactly, whatever
+    /// the axis. Returns (X, Y) and the chords (b_f, a_f).
+    struct Spin
+    {
+      double                      X = 1., Y = 0.;
+      std::vector<Tensor<1, dim>> before, now;
+    };
+    Spin
+    spin_about_normal(const ContactInterface<dim> &interface, const SlaveNode &s) const;
+
+    /// The chords from slave node @p node to the centroids of its slave
+    /// faces at the search configuration.
+    std::vector<Tensor<1, dim>>
+    face_chords(const ContactInterface<dim> &interface, const unsigned int node) const;
 
     /// Current kinematics: d h_j,k / du at the DoFs of the linearised patch
     /// of @p s, added to @p rows.
@@ -220,18 +246,23 @@ namespace contact_fem
     /// traction (2D: +1 / -1; a frictionless law always "slips", with T =
     /// 0).
     TangentialVector<dim>
-    stick_or_slip(const SlaveNode &s, const double p, const TangentialVector<dim> &xi) const;
+    stick_or_slip(const ContactInterface<dim> &interface,
+                  const SlaveNode             &s,
+                  const double                 p,
+                  const TangentialVector<dim> &xi) const;
 
     /// The tangential traction of the return mapping with @p direction.
     TangentialVector<dim>
-    tangential_traction(const SlaveNode             &s,
+    tangential_traction(const ContactInterface<dim> &interface,
+                        const SlaveNode             &s,
                         const TangentialVector<dim> &direction,
                         const double                 p,
                         const TangentialVector<dim> &xi) const;
 
     /// T / |t*| of a 3D slip node (the linearised slip direction), else 0.
     double
-    slip_cone_factor(const SlaveNode             &s,
+    slip_cone_factor(const ContactInterface<dim> &interface,
+                     const SlaveNode             &s,
                      const TangentialVector<dim> &direction,
                      const double                 p,
                      const TangentialVector<dim> &xi) const;
@@ -264,6 +295,11 @@ namespace contact_fem
     /// Current kinematics: the tangential traction (global) and the normal
     /// of every node at the last accepted load step.
     std::vector<Tensor<1, dim>> accepted_traction, accepted_normal;
+    /// Current kinematics, 3D: per node the face_chords() of the last
+    /// accepted step, projected onto the plane of its normal.
+    std::vector<std::vector<Tensor<1, dim>>> accepted_chords;
+    /// The slave faces (indices in interface.faces) of every node.
+    std::vector<std::vector<unsigned int>> slave_faces_of_node;
     /// slip_cone_factor() per interface node, of the last update.
     std::vector<double> cone_factor;
     /// The elastic-slip warning was printed (once per run).
@@ -271,14 +307,15 @@ namespace contact_fem
 
     struct FrictionState : public State
     {
-      std::unique_ptr<State>                normal;
-      std::vector<TangentialVector<dim>>    tangential, accepted_tangential;
-      std::vector<double>                   converged_displacement;
-      SlipHistory<dim>                      slip_history;
-      StickSlipSets<dim>                    sets;
-      std::vector<TangentialVector<dim>>    last_step_slip;
-      std::vector<Tensor<1, dim>>           accepted_traction, accepted_normal;
-      std::vector<typename Base::Operators> converged_operators;
+      std::unique_ptr<State>                   normal;
+      std::vector<TangentialVector<dim>>       tangential, accepted_tangential;
+      std::vector<double>                      converged_displacement;
+      SlipHistory<dim>                         slip_history;
+      StickSlipSets<dim>                       sets;
+      std::vector<TangentialVector<dim>>       last_step_slip;
+      std::vector<Tensor<1, dim>>              accepted_traction, accepted_normal;
+      std::vector<std::vector<Tensor<1, dim>>> accepted_chords;
+      std::vector<typename Base::Operators>    converged_operators;
     };
   };
 } // namespace contact_fem
