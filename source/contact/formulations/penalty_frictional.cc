@@ -272,8 +272,19 @@ namespace contact_fem
         const auto          &nodes = interface.faces[slave_faces_of_node[s.node][f]].nodes;
         for (const unsigned int m : nodes)
           {
-            by_node[m].first += gX / double(nodes.size());
-            by_node[m].second += gY / double(nodes.size());
+            // A hanging vertex moves with its parents (its DoFs are
+            // constrained to theirs; the patch holds the parents).
+            const auto &parents = interface.nodes[m].parents;
+            if (parents.empty())
+              {
+                by_node[m].first += gX / double(nodes.size());
+                by_node[m].second += gY / double(nodes.size());
+              }
+            for (const auto &[parent, weight] : parents)
+              {
+                by_node[parent].first += weight * gX / double(nodes.size());
+                by_node[parent].second += weight * gY / double(nodes.size());
+              }
           }
         by_node[s.node].first -= gX;
         by_node[s.node].second -= gY;
