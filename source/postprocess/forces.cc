@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe.h>
 
+#include <contact_fem/contact/friction/stick_slip_sets.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/postprocess/forces.h>
 #include <contact_fem/postprocess/output_files.h>
@@ -230,7 +231,10 @@ namespace contact_fem
         report.pairs.resize(in.pairs.size());
         std::vector<Tensor<1, dim>> total(in.pairs.size());
         // Stick and slip by the formulation's set codes (1 stick, 2 and 3
-        // slip), as the VTU's contact_state.
+        // slip), as the VTU's contact_state, over the nodes that carry
+        // friction: a node a support holds tangentially (on the axis of a
+        // symmetric model) neither sticks nor slips, as in the contact
+        // summary (n_stick(), n_slip()).
         const std::vector<int> sets     = in.contact->contact_sets();
         const bool             friction = in.contact->transmits_shear();
         for (unsigned int p = 0; p < in.pairs.size(); ++p)
@@ -240,7 +244,7 @@ namespace contact_fem
               report.pairs[p].n_stick = report.pairs[p].n_slip = 0;
           }
         for (const auto &s : in.interface->slave_nodes)
-          if (friction && s.paired && s.node < sets.size())
+          if (friction && s.node < sets.size() && carries_friction(*in.interface, s))
             {
               report.pairs[s.pair].n_stick += sets[s.node] == 1;
               report.pairs[s.pair].n_slip += sets[s.node] >= 2;

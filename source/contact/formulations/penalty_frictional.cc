@@ -815,7 +815,7 @@ namespace contact_fem
     contact.set("friction", this->law_names())
       .set("tangential_penalty", tangent_penalty.empty() ? 0. : tangent_penalty[0])
       .set("stick_nodes", n_stick())
-      .set("slip_nodes", this->n_active() - n_stick());
+      .set("slip_nodes", n_slip());
     add_friction_totals(interface, *this, last_step_slip, slip_history, contact);
   }
 
