@@ -179,8 +179,9 @@ main(int argc, char **argv)
     return F;
   };
   // The bound: the differences' truncation error (h^2) at h = 1e-6, their
-  // round-off at 1e-7 (measured 5e-8 and 2e-9 of |K v|; without the
-  // history traction's turn with n the error is 2.5e-6, without the slip
+  // round-off at 1e-7 (measured 5.5e-8 and 2.1e-9 of |K v|; without the
+  // history traction's derivative (its turn with n and spin) the error is
+  // 8.6e-4, without the D_j change of xi 2e-3, without the slip
   // direction's derivative 0.6).
   for (const auto [h, bound] : {std::pair(1e-6, 1e-6), std::pair(1e-7, 1e-7)})
     {
