@@ -113,9 +113,8 @@ namespace contact_fem
                       "Newton iterate, with their consistent linearisation in the "
                       "tangent (finite deformation, large sliding; Newton "
                       "converges quadratically; see doc/finite_strain.md). "
-                      "'alm frictionless', 'alm frictional' (objective slip), "
-                      "'penalty frictionless' and 'penalty frictional', in 2D and "
-                      "3D (bilinear or curved faces).");
+                      "Every formulation (the frictional ones with an objective "
+                      "slip), in 2D and 3D (bilinear or curved faces).");
     prm.declare_entry("Penetration tolerance", "0.05", Patterns::Double(0.),
                       "After a step converges, every slave node is located against "
                       "the whole master surface of its pair (R-tree, closest point). "
@@ -169,21 +168,5 @@ namespace contact_fem
     AssertThrow(search_factor > 0., ExcMessage("Contact/Search factor: expected a value > 0."));
     AssertThrow(penetration_tolerance > 0.,
                 ExcMessage("Contact/Penetration tolerance: expected a value > 0."));
-  }
-
-  void
-  ContactParameters::check_kinematics(const unsigned int dim, const std::string &formulation) const
-  {
-    // The linearisation of the mortar operators exists for 2D line faces
-    // and 3D quadrilateral faces (bilinear or biquadratic); the alm
-    // and penalty formulations use it.
-    AssertThrow(!current_kinematics || formulation == "alm frictionless" ||
-                  formulation == "alm frictional" || formulation == "penalty frictionless" ||
-                  formulation == "penalty frictional",
-                ExcMessage("Contact/Kinematics = current is implemented with "
-                           "Contact/Formulation = alm frictionless, alm frictional, "
-                           "penalty frictionless or penalty frictional only (this scene: " +
-                           std::to_string(dim) + "D, " + formulation +
-                           "). Use Kinematics = updated or small."));
   }
 } // namespace contact_fem

@@ -293,7 +293,6 @@ namespace contact_fem
     boundary_conditions.parse_parameters(prm, dim);
     load_stepping.parse_parameters(prm);
     contact_parameters.parse_parameters(prm);
-    contact_parameters.check_kinematics(dim, read_entry(prm, "Contact", "Formulation"));
     // Read (and checked) whether or not the scene has contact pairs; kept
     // only if it has.
     auto formulation = ContactFormulation<dim>::create(prm);

@@ -44,10 +44,6 @@ namespace contact_fem
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
-    /// Refuses Kinematics = current where it is not implemented: a scene
-    /// of dimension @p dim with Contact/Formulation = @p formulation.
-    void
-    check_kinematics(const unsigned int dim, const std::string &formulation) const;
   };
 } // namespace contact_fem
 

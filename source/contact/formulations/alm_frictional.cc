@@ -17,18 +17,17 @@ namespace contact_fem
     : AlmFrictional(friction,
                     FrictionlessFormulation<dim>::Parameters::parse_for_exact_gap(prm,
                                                                                   "alm frictional"),
-                    "alm")
-  {
-    prm.enter_subsection("Contact");
-    current = prm.get("Kinematics") == "current";
-    prm.leave_subsection();
-  }
+                    "alm",
+                    current_kinematics(prm))
+  {}
 
   template <int dim>
   AlmFrictional<dim>::AlmFrictional(const FrictionParameters &friction,
                                     const Parameters         &parameters,
-                                    const std::string        &name)
+                                    const std::string        &name,
+                                    const bool                current_kinematics)
     : Base(friction, parameters)
+    , current(current_kinematics)
   {
     AssertThrow(!laws.empty(),
                 ExcMessage("Contact/Friction: '" + name +

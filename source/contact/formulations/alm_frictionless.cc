@@ -12,17 +12,15 @@ namespace contact_fem
 
   template <int dim>
   AlmFrictionless<dim>::AlmFrictionless(ParameterHandler &prm)
-    : FrictionlessFormulation<dim>(
-        FrictionlessFormulation<dim>::Parameters::parse_for_exact_gap(prm, "alm frictionless"))
-  {
-    prm.enter_subsection("Contact");
-    current = prm.get("Kinematics") == "current";
-    prm.leave_subsection();
-  }
+    : AlmFrictionless(
+        FrictionlessFormulation<dim>::Parameters::parse_for_exact_gap(prm, "alm frictionless"),
+        current_kinematics(prm))
+  {}
 
   template <int dim>
-  AlmFrictionless<dim>::AlmFrictionless(const Parameters &parameters)
+  AlmFrictionless<dim>::AlmFrictionless(const Parameters &parameters, const bool current_kinematics)
     : FrictionlessFormulation<dim>(parameters)
+    , current(current_kinematics)
   {}
 
   template <int dim>

@@ -31,6 +31,15 @@ namespace contact_fem
     return value;
   }
 
+  bool
+  current_kinematics(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    const bool current = prm.get("Kinematics") == "current";
+    prm.leave_subsection();
+    return current;
+  }
+
   template <int dim>
   void
   FrictionlessFormulation<dim>::Parameters::declare_parameters(ParameterHandler &prm)

@@ -9,7 +9,8 @@ namespace contact_fem
     : AlmFrictional<dim>(
         friction,
         FrictionlessFormulation<dim>::Parameters::parse_without_penalty(prm, "mpc frictional"),
-        "mpc")
+        "mpc",
+        current_kinematics(prm))
   {}
 
   template <int dim>

@@ -5,7 +5,8 @@ namespace contact_fem
   template <int dim>
   MpcFrictionless<dim>::MpcFrictionless(ParameterHandler &prm)
     : AlmFrictionless<dim>(
-        FrictionlessFormulation<dim>::Parameters::parse_without_penalty(prm, "mpc frictionless"))
+        FrictionlessFormulation<dim>::Parameters::parse_without_penalty(prm, "mpc frictionless"),
+        current_kinematics(prm))
   {}
 
   template <int dim>

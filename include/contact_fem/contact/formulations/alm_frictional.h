@@ -180,10 +180,12 @@ namespace contact_fem
     /// penalty's), which sets the largest beta (slip_cone_stiffness()).
     std::vector<double> stiffness_ratio;
     /// For a formulation that shares the constraints and only decides the
-    /// sets otherwise (mpc frictional); @p name for the messages.
+    /// sets otherwise (mpc frictional); @p name for the messages; @p
+    /// current: Contact/Kinematics = current.
     AlmFrictional(const FrictionParameters &friction,
                   const Parameters         &parameters,
-                  const std::string        &name);
+                  const std::string        &name,
+                  const bool                current_kinematics);
 
     /// Whether paired slave node @p s is active at gap @p g (see
     /// FrictionlessFormulation::augmented_rule()).

@@ -93,8 +93,9 @@ namespace contact_fem
 
   protected:
     /// For a formulation that shares the exact gap constraints and only
-    /// decides the active set otherwise (mpc frictionless).
-    explicit AlmFrictionless(const Parameters &parameters);
+    /// decides the active set otherwise (mpc frictionless); @p current:
+    /// Contact/Kinematics = current.
+    AlmFrictionless(const Parameters &parameters, const bool current_kinematics);
 
     /// Whether paired slave node @p s is active at gap @p g, from the
     /// current pressures and active set: lambda - eps g > 0, and at the

@@ -13,6 +13,11 @@ namespace contact_fem
   double
   parse_auto_or_positive(const std::string &text, const std::string &key);
 
+  /// Whether Contact/Kinematics = current: the operators of every Newton
+  /// iterate on its configuration, linearised in the tangent.
+  bool
+  current_kinematics(ParameterHandler &prm);
+
   /**
    * Base of the frictionless formulations: the contact pressure lambda_j of
    * every slave node j (positive in compression), the active set, and

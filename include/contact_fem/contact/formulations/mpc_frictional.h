@@ -31,6 +31,8 @@ namespace contact_fem
    *   place of the last step), else (Tresca) it sticks.
    * In 3D the cone term's stiffness is T(p) / |xi|, the derivative of
    * -T xi / |xi| across the slip (alm's c a / (1 - a) as c grows).
+   * With Contact/Kinematics = current the Newton system is the alm's on
+   * the iterate's configuration, xi the alm's objective slip.
    */
   template <int dim>
   class MpcFrictional : public AlmFrictional<dim>

@@ -25,7 +25,9 @@ namespace contact_fem
    * (FrictionlessFormulation::about_to_touch()).
    * The converged state is the one of "alm frictionless" (both satisfy
    * g >= 0, lambda >= 0, lambda g = 0 with the same constraints); only the
-   * path of the active set may differ.
+   * path of the active set may differ. With Contact/Kinematics = current
+   * the Newton system is the alm's on the iterate's configuration, and
+   * lambda_j and g_j are that configuration's (the Cauchy pressure).
    */
   template <int dim>
   class MpcFrictionless : public AlmFrictionless<dim>
