@@ -1053,7 +1053,12 @@ namespace contact_fem
     // residual (gap of active nodes, multiplier / k of the others). With
     // it > 0 the multipliers are first recovered from the solution of
     // iteration it and the active set is updated.
-    NewtonMonitor monitor(newton_parameters, finite_strain != nullptr);
+    // Nonlinear beyond the active set: the bulk (finite strain), the
+    // contact geometry (current kinematics) or the 3D slip directions.
+    const bool nonlinear =
+      finite_strain != nullptr || (contact && (contact_parameters.current_kinematics ||
+                                               (dim == 3 && contact->transmits_shear())));
+    NewtonMonitor monitor(newton_parameters, nonlinear);
     {
       const double extent = model_extent(triangulation);
       monitor.set_scene_units(materials.youngs_modulus_range().second * std::pow(extent, dim - 1),

@@ -23,11 +23,12 @@ namespace contact_fem
   class NewtonMonitor
   {
   public:
-    /// @p nonlinear_bulk: the bulk is nonlinear (finite-strain bodies),
-    /// so a slowly falling residual is Newton's pre-asymptotic phase, not
-    /// the accuracy of the linear solver: stagnation then only counts at
-    /// round-off (ratio 1e-8).
-    explicit NewtonMonitor(const NewtonParameters &parameters, const bool nonlinear_bulk = false);
+    /// @p nonlinear: the problem is nonlinear beyond its active set
+    /// (finite-strain bodies, contact on the current configuration, 3D
+    /// slip directions), so a slowly falling residual is Newton's
+    /// pre-asymptotic phase, not the accuracy of the linear solver:
+    /// stagnation then only counts at round-off (ratio 1e-8).
+    explicit NewtonMonitor(const NewtonParameters &parameters, const bool nonlinear = false);
 
     /// The scene's own units: @p force = E_max L^(dim-1), the force a unit
     /// strain of the stiffest body carries over the model size L, and
@@ -104,7 +105,7 @@ namespace contact_fem
 
   private:
     NewtonParameters parameters;
-    bool             nonlinear_bulk;
+    bool             nonlinear;
     /// The absolute tolerances in use: the parameters', capped by
     /// set_scene_units().
     double       absolute_u, absolute_lambda;
