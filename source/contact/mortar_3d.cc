@@ -248,6 +248,51 @@ namespace contact_fem
         return result;
       }
 
+      /**
+       * Removes the vertices of the closed polygon @p values (and the same
+       * entries of @p numbers) that lie on the straight segment between
+       * their neighbours, up to @p tolerance: the clipping leaves such
+       * vertices where edges coincide up to round-off (a master node on a
+       * slave rim that the master shares, a crossing of two collinear
+       * chords, put anywhere along them by round-off over round-off), and
+       * whether it does is decided by round-off. The region is the same
+       * without them, but the fan integration of for_each_point() (its
+       * centre, the vertex centroid, and its triangles) is not, and on
+       * curved faces its error, far above round-off, then followed the
+       * DoF numbering (current_kinematics_cylinders_3d_01). A vertex where
+       * the polygon turns back (the zero-width joins of clip_convex()) is
+       * not between its neighbours and stays.
+       */
+      template <typename Number>
+      void
+      remove_straight_vertices(std::vector<Point<2>>         &values,
+                               std::vector<Point<2, Number>> &numbers,
+                               const double                   tolerance)
+      {
+        for (bool removed = true; removed && values.size() > 3;)
+          {
+            removed = false;
+            for (unsigned int k = 0; k < values.size(); ++k)
+              {
+                const unsigned int m = values.size();
+                const Point<2>    &a = values[(k + m - 1) % m], &b = values[(k + 1) % m];
+                const Tensor<1, 2> ab = b - a, av = values[k] - a;
+                const double       length_ab = ab.norm();
+                if (!(length_ab > 0.))
+                  continue;
+                const double along = (av * ab) / length_ab;
+                if (std::abs(cross_2d(ab, av)) <= tolerance * length_ab && along > 0. &&
+                    along < length_ab)
+                  {
+                    values.erase(values.begin() + k);
+                    numbers.erase(numbers.begin() + k);
+                    removed = true;
+                    break;
+                  }
+              }
+          }
+      }
+
       /// Interpolated (not normalised) nodal normal field at @p xi.
       template <typename Face, typename Number>
       Tensor<1, 3, Number>
@@ -981,6 +1026,7 @@ namespace contact_fem
               piece.pop_back();
               values.pop_back();
             }
+          remove_straight_vertices(values, piece, 1e-10 * length);
           ParameterPolygonOf<Number> polygon;
           ParameterPolygon           polygon_values;
           for (unsigned int k = 0; k < piece.size(); ++k)
