@@ -463,11 +463,16 @@ namespace contact_fem
       for (const unsigned int n : faces[f].nodes)
         if (first_face[n] == numbers::invalid_unsigned_int)
           first_face[n] = f;
+    own_nodes.assign(nodes.size(), false);
     std::array<unsigned int, 2> counts = {{0, 0}};
     for (unsigned int f = own_faces.first; f < own_faces.second; ++f)
       for (const unsigned int n : faces[f].nodes)
-        if (first_face[n] == f && nodes[n].slave)
-          ++counts[nodes[n].parents.empty() ? 0 : 1];
+        if (first_face[n] == f)
+          {
+            own_nodes[n] = true;
+            if (nodes[n].slave)
+              ++counts[nodes[n].parents.empty() ? 0 : 1];
+          }
     slave_node_counts = {Utilities::MPI::sum(counts[0], mpi_communicator),
                          Utilities::MPI::sum(counts[1], mpi_communicator)};
   }

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <set>
 #include <tuple>
 
@@ -441,11 +442,19 @@ namespace contact_fem
   ContactInterface<dim>::surface_distances(const std::vector<SlaveNode> &points,
                                            const std::vector<double>    &u_at_dofs) const
   {
+    std::vector<unsigned int> all(points.size());
+    std::iota(all.begin(), all.end(), 0u);
+    return surface_distances(points, all, u_at_dofs);
+  }
+
+  template <int dim>
+  std::vector<double>
+  ContactInterface<dim>::surface_distances(const std::vector<SlaveNode>    &points,
+                                           const std::vector<unsigned int> &which,
+                                           const std::vector<double>       &u_at_dofs) const
+  {
     using Kernel = Mortar::Kernel<dim>;
-    // The nodes are shared out over the ranks (every n_ranks-th).
-    const unsigned int          rank    = Utilities::MPI::this_mpi_process(mpi_communicator);
-    const unsigned int          n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
-    std::vector<double>         distances(points.size(), std::numeric_limits<double>::infinity());
+    std::vector<double>         distances(which.size(), std::numeric_limits<double>::infinity());
     std::vector<Tensor<1, dim>> u(nodes.size());
     for (unsigned int n = 0; n < nodes.size(); ++n)
       u[n] = displacement(n, u_at_dofs);
@@ -473,6 +482,10 @@ namespace contact_fem
 
     for (unsigned int p = 0; p < pairs.size(); ++p)
       {
+        if (std::none_of(which.begin(), which.end(), [&](const unsigned int i) {
+              return points[i].pair == p;
+            }))
+          continue;
         std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
         for (unsigned int f = 0; f < faces.size(); ++f)
           if (!faces[f].slave && faces[f].pair == p)
@@ -480,9 +493,9 @@ namespace contact_fem
         if (boxes.empty())
           continue;
         const auto tree = pack_rtree(boxes);
-        for (unsigned int i = rank; i < points.size(); i += n_ranks)
+        for (unsigned int i = 0; i < which.size(); ++i)
           {
-            const SlaveNode &s = points[i];
+            const SlaveNode &s = points[which[i]];
             if (s.pair != p)
               continue;
             const Point<dim> x                    = nodes[s.node].reference + u[s.node];
@@ -529,11 +542,7 @@ namespace contact_fem
             distances[i]      = side < 0. ? -best : best;
           }
       }
-    // Each node's distance is on one rank, +infinity on the others.
-    std::vector<double> all_distances(points.size());
-    Utilities::MPI::min(ArrayView<const double>(distances), mpi_communicator,
-                        ArrayView<double>(all_distances));
-    return all_distances;
+    return distances;
   }
 
   // The members defined here, for both dimensions; the class itself is
@@ -545,11 +554,19 @@ namespace contact_fem
   template std::vector<double>
   ContactInterface<2>::surface_distances(const std::vector<SlaveNode> &,
                                          const std::vector<double> &) const;
+  template std::vector<double>
+  ContactInterface<2>::surface_distances(const std::vector<SlaveNode> &,
+                                         const std::vector<unsigned int> &,
+                                         const std::vector<double> &) const;
   template void
   ContactInterface<3>::update(const std::vector<double> &,
                               const double,
                               const std::vector<double> &);
   template std::vector<double>
   ContactInterface<3>::surface_distances(const std::vector<SlaveNode> &,
+                                         const std::vector<double> &) const;
+  template std::vector<double>
+  ContactInterface<3>::surface_distances(const std::vector<SlaveNode> &,
+                                         const std::vector<unsigned int> &,
                                          const std::vector<double> &) const;
 } // namespace contact_fem

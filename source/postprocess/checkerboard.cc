@@ -3,6 +3,8 @@
 // slave faces). A smooth profile has r of one sign over whole regions
 // (negative under a Hertz peak, positive toward a punch's edges, zero in a
 // patch test); a checkerboard flips the sign from node to node.
+#include <deal.II/base/mpi.h>
+
 #include <contact_fem/core/format.h>
 #include <contact_fem/postprocess/checkerboard.h>
 #include <contact_fem/postprocess/postprocessor.h>
@@ -10,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -26,60 +29,93 @@ namespace contact_fem
   std::vector<CheckerboardFinding>
   find_checkerboards(const ContactInterface<dim> &interface, const ContactFormulation<dim> &contact)
   {
+    // Each rank counts the neighbour pairs whose lower node it owns
+    // (ContactInterface::owns_node()); the deviations of both come from the
+    // pressures of the nodes around them. Counts are summed and maxima
+    // taken over the ranks, so the findings are those of one rank going
+    // over the whole surface.
+    const MPI_Comm                   comm = interface.communicator();
     std::vector<CheckerboardFinding> findings;
     const unsigned int               q1_face_nodes = dim == 2 ? 2 : 4;
     for (unsigned int p = 0; p < interface.pairs.size(); ++p)
       {
         std::map<unsigned int, double> pressure; // active slave nodes of the pair
+        unsigned int                   own_active = 0;
+        double                         p_max      = 0.;
         for (const auto &s : interface.slave_nodes)
           if (s.pair == p && s.paired && contact.is_active(s.node) &&
               interface.nodes[s.node].parents.empty())
-            pressure[s.node] = contact.normal_pressure(s.node);
+            {
+              pressure[s.node] = contact.normal_pressure(s.node);
+              if (interface.owns_node(s.node))
+                {
+                  ++own_active;
+                  p_max = std::max(p_max, pressure[s.node]);
+                }
+            }
         std::map<unsigned int, std::set<unsigned int>> neighbours;
-        bool                                           q1 = true;
         for (const auto &face : interface.faces)
           if (face.slave && face.pair == p)
-            {
-              q1 = q1 && face.nodes.size() == q1_face_nodes;
-              for (const unsigned int a : face.nodes)
-                for (const unsigned int b : face.nodes)
-                  if (a != b)
-                    neighbours[a].insert(b);
-            }
-        if (!q1 || pressure.size() < 3)
+            for (const unsigned int a : face.nodes)
+              for (const unsigned int b : face.nodes)
+                if (a != b)
+                  neighbours[a].insert(b);
+        bool q1 = true;
+        for (unsigned int f = interface.own_faces.first; f < interface.own_faces.second; ++f)
+          if (interface.faces[f].slave && interface.faces[f].pair == p)
+            q1 = q1 && interface.faces[f].nodes.size() == q1_face_nodes;
+        q1 = Utilities::MPI::min(q1 ? 1u : 0u, comm) == 1u;
+        if (!q1 || Utilities::MPI::sum(own_active, comm) < 3)
           continue;
-        double p_max = 0.;
-        for (const auto &[node, value] : pressure)
-          p_max = std::max(p_max, value);
-        std::map<unsigned int, double> deviation; // of the interior nodes
-        for (const auto &[node, value] : pressure)
-          {
-            double sum      = 0.;
-            bool   interior = !neighbours[node].empty();
-            for (const unsigned int k : neighbours[node])
-              {
-                interior = interior && pressure.count(k);
-                sum += interior ? pressure.at(k) : 0.;
-              }
-            if (interior)
-              deviation[node] = value - sum / neighbours[node].size();
-          }
+        p_max = Utilities::MPI::max(p_max, comm);
+        // The deviation of an interior active node (one whose neighbours
+        // are all active), on first use.
+        std::map<unsigned int, std::optional<double>> deviations;
+        const auto deviation = [&](const unsigned int node) -> std::optional<double> {
+          const auto known = deviations.find(node);
+          if (known != deviations.end())
+            return known->second;
+          std::optional<double> r;
+          const auto            value = pressure.find(node);
+          if (value != pressure.end())
+            {
+              double sum      = 0.;
+              bool   interior = !neighbours[node].empty();
+              for (const unsigned int k : neighbours[node])
+                {
+                  interior = interior && pressure.count(k);
+                  sum += interior ? pressure.at(k) : 0.;
+                }
+              if (interior)
+                r = value->second - sum / neighbours[node].size();
+            }
+          return deviations[node] = r;
+        };
         CheckerboardFinding finding;
         finding.pair = p;
-        for (const auto &[node, r] : deviation)
-          for (const unsigned int k : neighbours[node])
-            if (k > node && deviation.count(k))
-              {
-                ++finding.neighbour_pairs;
-                const double other = deviation.at(k);
-                if (r * other < 0. &&
-                    std::min(std::abs(r), std::abs(other)) > relative_threshold * p_max)
-                  {
-                    ++finding.alternating;
-                    finding.amplitude =
-                      std::max(finding.amplitude, std::max(std::abs(r), std::abs(other)) / p_max);
-                  }
-              }
+        for (const auto &entry : pressure)
+          {
+            const unsigned int node = entry.first;
+            if (!interface.owns_node(node) || !deviation(node))
+              continue;
+            const double r = *deviation(node);
+            for (const unsigned int k : neighbours[node])
+              if (k > node && deviation(k))
+                {
+                  ++finding.neighbour_pairs;
+                  const double other = *deviation(k);
+                  if (r * other < 0. &&
+                      std::min(std::abs(r), std::abs(other)) > relative_threshold * p_max)
+                    {
+                      ++finding.alternating;
+                      finding.amplitude =
+                        std::max(finding.amplitude, std::max(std::abs(r), std::abs(other)) / p_max);
+                    }
+                }
+          }
+        finding.neighbour_pairs = Utilities::MPI::sum(finding.neighbour_pairs, comm);
+        finding.alternating     = Utilities::MPI::sum(finding.alternating, comm);
+        finding.amplitude       = Utilities::MPI::max(finding.amplitude, comm);
         if (finding.alternating >= least_alternating &&
             finding.alternating >= alternating_fraction * finding.neighbour_pairs)
           findings.push_back(finding);

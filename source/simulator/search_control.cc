@@ -4,6 +4,7 @@
 #include <contact_fem/simulator/search_control.h>
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <sstream>
 
@@ -181,50 +182,85 @@ namespace contact_fem
                           max_sliding_angle * interface.slip_since_search(s, displacement) :
                         0.;
     };
-    PenetrationCheck check;
-    const auto       consider = [&](const typename ContactInterface<dim>::SlaveNode &s,
-                              const double distance, const double allowed, const bool hanging) {
-      const double penetration = std::max(0., -distance);
-      const double excess      = (penetration - allowed) / s.size;
-      // Symmetric nodes penetrate alike: the tie goes to the smaller
-      // reference coordinates, not to the last bit of the excess.
-      const bool tie = check.excess > 0. && std::abs(excess - check.excess) <= 1e-9 * check.excess;
-      const auto precedes = [](const Point<dim> &a, const Point<dim> &b) {
-        for (unsigned int d = 0; d < dim; ++d)
-          if (a[d] != b[d])
-            return a[d] < b[d];
-        return false;
-      };
-      if (tie ? precedes(interface.nodes[s.node].reference,
-                               interface.nodes[check.node.node].reference) :
-                      excess > check.excess)
+    // Each rank checks the slave nodes and hanging slave vertices it owns
+    // (ContactInterface::owns_node()). Only a node whose excess is positive
+    // can become the worst (the scan below starts from zero), so those are
+    // exchanged, and every rank scans them in the order of a serial run
+    // (slave nodes, then hanging vertices): the tie rule makes the scan
+    // depend on that order. Per candidate: its place in that order, the
+    // excess, penetration and allowed penetration.
+    using SlaveNode          = typename ContactInterface<dim>::SlaveNode;
+    const auto &slave_nodes  = interface.slave_nodes;
+    const auto &hanging      = interface.hanging_slave_vertices;
+    const auto  own_excesses = [&](const std::vector<SlaveNode> &points,
+                                  const unsigned int first_place, const auto &allowed_of,
+                                  std::vector<double> &candidates) {
+      std::vector<unsigned int> own;
+      for (unsigned int i = 0; i < points.size(); ++i)
+        if (interface.owns_node(points[i].node))
+          own.push_back(i);
+      const std::vector<double> distance = interface.surface_distances(points, own, displacement);
+      for (unsigned int k = 0; k < own.size(); ++k)
         {
-          check.excess      = excess;
-          check.node        = s;
-          check.hanging     = hanging;
-          check.penetration = penetration;
-          check.allowed     = allowed;
+          const SlaveNode &s           = points[own[k]];
+          const double     penetration = std::max(0., -distance[k]);
+          const double     allowed     = allowed_of(s);
+          const double     excess      = (penetration - allowed) / s.size;
+          if (excess > 0.)
+            candidates.insert(candidates.end(), {static_cast<double>(first_place + own[k]), excess,
+                                                 penetration, allowed});
         }
     };
-    const auto                    &slave_nodes = interface.slave_nodes;
-    std::map<unsigned int, double> allowed_of_node;
-    const std::vector<double> distance = interface.surface_distances(slave_nodes, displacement);
-    for (unsigned int i = 0; i < slave_nodes.size(); ++i)
-      {
-        const double allowed                 = allowed_at(slave_nodes[i]);
-        allowed_of_node[slave_nodes[i].node] = allowed;
-        consider(slave_nodes[i], distance[i], allowed, false);
-      }
+    std::vector<double> candidates;
+    own_excesses(slave_nodes, 0, allowed_at, candidates);
     // A hanging vertex moves with its parents: it may lie inside by what
     // their gaps allow, in proportion to its weights.
-    const auto               &hanging          = interface.hanging_slave_vertices;
-    const std::vector<double> hanging_distance = interface.surface_distances(hanging, displacement);
-    for (unsigned int i = 0; i < hanging.size(); ++i)
+    std::map<unsigned int, unsigned int> slave_node_at;
+    if (!hanging.empty())
+      for (unsigned int i = 0; i < slave_nodes.size(); ++i)
+        slave_node_at[slave_nodes[i].node] = i;
+    const auto allowed_of_hanging = [&](const SlaveNode &s) {
+      double allowed = 0.;
+      for (const auto &[parent, weight] : interface.nodes[s.node].parents)
+        allowed += std::abs(weight) * allowed_at(slave_nodes[slave_node_at.at(parent)]);
+      return allowed;
+    };
+    own_excesses(hanging, slave_nodes.size(), allowed_of_hanging, candidates);
+
+    std::vector<std::array<double, 4>> all;
+    for (const auto &chunk : Utilities::MPI::all_gather(interface.communicator(), candidates))
+      for (unsigned int i = 0; i + 4 <= chunk.size(); i += 4)
+        all.push_back({{chunk[i], chunk[i + 1], chunk[i + 2], chunk[i + 3]}});
+    std::sort(all.begin(), all.end(), [](const auto &a, const auto &b) {
+      return a[0] < b[0];
+    });
+
+    PenetrationCheck check;
+    for (const auto &[place_value, excess, penetration, allowed] : all)
       {
-        double allowed = 0.;
-        for (const auto &[parent, weight] : interface.nodes[hanging[i].node].parents)
-          allowed += std::abs(weight) * allowed_of_node.at(parent);
-        consider(hanging[i], hanging_distance[i], allowed, true);
+        const unsigned int place      = static_cast<unsigned int>(place_value);
+        const bool         is_hanging = place >= slave_nodes.size();
+        const SlaveNode &s = is_hanging ? hanging[place - slave_nodes.size()] : slave_nodes[place];
+        // Symmetric nodes penetrate alike: the tie goes to the smaller
+        // reference coordinates, not to the last bit of the excess.
+        const bool tie =
+          check.excess > 0. && std::abs(excess - check.excess) <= 1e-9 * check.excess;
+        const auto precedes = [](const Point<dim> &a, const Point<dim> &b) {
+          for (unsigned int d = 0; d < dim; ++d)
+            if (a[d] != b[d])
+              return a[d] < b[d];
+          return false;
+        };
+        if (tie ? precedes(interface.nodes[s.node].reference,
+                           interface.nodes[check.node.node].reference) :
+                  excess > check.excess)
+          {
+            check.excess      = excess;
+            check.node        = s;
+            check.hanging     = is_hanging;
+            check.penetration = penetration;
+            check.allowed     = allowed;
+          }
       }
     return check;
   }

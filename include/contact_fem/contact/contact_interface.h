@@ -293,14 +293,21 @@ namespace contact_fem
     }
 
     /**
-     * Independent check of the contact: the signed distance of every node
-     * of @p points (slave_nodes or hanging_slave_vertices, in that order) at
-     * X + u to the whole master surface of its pair, on the true face
+     * Independent check of the contact: the signed distance of the nodes
+     * @p points[i], i in @p which, (slave_nodes or hanging_slave_vertices)
+     * at X + u to the whole master surface of its pair, on the true face
      * geometry, by an R-tree of the master faces and the closest point;
      * negative when the node is inside the master body. +infinity where the
      * closest point lies beyond the rim of the master surface. Does not use
-     * the mortar operators.
+     * the mortar operators. Not collective: a rank asks for the nodes it
+     * owns (SearchControl::check_penetration()).
      */
+    std::vector<double>
+    surface_distances(const std::vector<SlaveNode>    &points,
+                      const std::vector<unsigned int> &which,
+                      const std::vector<double>       &u) const;
+
+    /// surface_distances() of every node of @p points.
     std::vector<double>
     surface_distances(const std::vector<SlaveNode> &points, const std::vector<double> &u) const;
 
@@ -378,9 +385,17 @@ namespace contact_fem
     /// [first, second).
     std::pair<unsigned int, unsigned int> own_faces = {0, 0};
 
+    /// Whether this rank owns node @p n: a node belongs to the rank of the
+    /// first face (in face order) holding it, so every node has one owner.
+    bool
+    owns_node(const unsigned int n) const
+    {
+      return own_nodes[n];
+    }
+
   private:
-    /// Sets slave_node_counts: each rank counts the nodes whose first face
-    /// (in face order) is its own, the counts are summed.
+    /// Sets own_nodes and slave_node_counts: each rank counts the nodes
+    /// whose first face (in face order) is its own, the counts are summed.
     void
     count_own_slave_nodes();
 
@@ -542,6 +557,7 @@ namespace contact_fem
     };
     std::vector<PairMaterials>            pair_materials;
     std::pair<unsigned int, unsigned int> slave_node_counts = {0, 0};
+    std::vector<bool>                     own_nodes; ///< owns_node(), per node
     /// Displacement at dofs() of the last search, and its reach per pair.
     std::vector<double>                             search_displacement;
     std::vector<double>                             reach_of_search;

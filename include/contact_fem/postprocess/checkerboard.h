@@ -35,7 +35,10 @@ namespace contact_fem
    * flat punch, patch test) deviates in one direction over whole regions;
    * the irregular nodal weights of an unstructured (split tetrahedral)
    * surface alternate at about a third of the pairs and are not flagged.
-   * The interface is the same on every rank, and so is the result.
+   * Collective: each rank counts the neighbour pairs whose lower node it
+   * owns (ContactInterface::owns_node()), the counts are summed and the
+   * largest values taken over the ranks; the result is the same on every
+   * rank and on any number of ranks.
    */
   template <int dim>
   std::vector<CheckerboardFinding>

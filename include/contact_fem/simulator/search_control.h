@@ -88,7 +88,8 @@ namespace contact_fem
       double                                    penetration = 0., allowed = 0.;
     };
     /// Every slave node and hanging slave vertex against the whole master
-    /// surface (ContactInterface::surface_distances()).
+    /// surface (ContactInterface::surface_distances()), each rank those it
+    /// owns; the same on every rank. Collective.
     PenetrationCheck
     check_penetration(const std::vector<double> &displacement) const;
     /// The diagnosis of a failed check_penetration(); splittable with
