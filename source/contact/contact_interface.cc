@@ -535,29 +535,20 @@ namespace contact_fem
 
 
   template <int dim>
-  bool
-  ContactInterface<dim>::add_constrained_face(
-    const unsigned int                                                                   f,
-    const std::vector<std::pair<unsigned int, typename Mortar::Kernel<dim>::Operators>> &segments,
-    std::map<unsigned int, SlaveNode>                                                   &slave_data,
-    std::map<unsigned int, std::map<unsigned int, double>>                              &M_of_node,
-    std::map<unsigned int, Tensor<1, dim>> &weighted_gap_of_node)
+  typename ContactInterface<dim>::FaceTrace
+  ContactInterface<dim>::face_trace(const unsigned int f) const
   {
     const std::vector<unsigned int> &local = faces[f].nodes;
-    const bool has_hanging_vertex          = std::any_of(local.begin(), local.end(), [&](auto n) {
-      return !nodes[n].parents.empty();
-    });
-    if (segments.empty() || !has_hanging_vertex)
-      return false;
-
-    // The owners of the face's trace: its regular nodes and the parents of
-    // its hanging vertices; T(q, a) is the weight of owner q in node a.
-    std::vector<unsigned int>            owners;
+    FaceTrace                        trace;
+    if (std::all_of(local.begin(), local.end(), [&](auto n) {
+          return nodes[n].parents.empty();
+        }))
+      return trace;
     std::map<unsigned int, unsigned int> owner_index;
     const auto                           owner = [&](const unsigned int n) {
-      const auto [it, inserted] = owner_index.emplace(n, owners.size());
+      const auto [it, inserted] = owner_index.emplace(n, trace.owners.size());
       if (inserted)
-        owners.push_back(n);
+        trace.owners.push_back(n);
       return it->second;
     };
     std::vector<std::vector<std::pair<unsigned int, double>>> weights(local.size());
@@ -567,27 +558,52 @@ namespace contact_fem
       else
         for (const auto &[parent, weight] : nodes[local[a]].parents)
           weights[a].emplace_back(owner(parent), weight);
-    const unsigned int n = local.size();
-    // A face whose owners outnumber its nodes has a dependent trace basis
-    // and no dual basis of its own: its hanging rows are lumped instead.
-    if (owners.size() != n)
-      return false;
-    FullMatrix<double> T(n, n);
-    for (unsigned int a = 0; a < n; ++a)
+    trace.T.reinit(trace.owners.size(), local.size());
+    for (unsigned int a = 0; a < local.size(); ++a)
       for (const auto &[q, weight] : weights[a])
-        T(q, a) += weight;
+        trace.T(q, a) += weight;
+    return trace;
+  }
 
-    std::vector<double> D(n, 0.);
-    double              D_sum = 0.;
-    for (const auto &segment : segments)
-      for (unsigned int a = 0; a < n; ++a)
-        D[a] += segment.second.D[a];
+  template <int dim>
+  bool
+  ContactInterface<dim>::has_owner_duals(const FaceTrace &trace, const std::vector<double> &D)
+  {
+    // A face whose owners outnumber its nodes has a dependent trace basis
+    // and no dual basis of its own.
+    if (trace.owners.size() != D.size())
+      return false;
+    double D_sum = 0.;
     for (const double d : D)
       D_sum += std::abs(d);
     constexpr double least_nodal_weight = 1e-12;
-    if (std::any_of(D.begin(), D.end(), [&](const double d) {
-          return std::abs(d) <= least_nodal_weight * D_sum;
-        }))
+    return std::none_of(D.begin(), D.end(), [&](const double d) {
+      return std::abs(d) <= least_nodal_weight * D_sum;
+    });
+  }
+
+  template <int dim>
+  bool
+  ContactInterface<dim>::add_constrained_face(
+    const unsigned int                                                                   f,
+    const std::vector<std::pair<unsigned int, typename Mortar::Kernel<dim>::Operators>> &segments,
+    std::map<unsigned int, SlaveNode>                                                   &slave_data,
+    std::map<unsigned int, std::map<unsigned int, double>>                              &M_of_node,
+    std::map<unsigned int, Tensor<1, dim>> &weighted_gap_of_node)
+  {
+    // The owners of the face's trace: its regular nodes and the parents of
+    // its hanging vertices; T(q, a) is the weight of owner q in node a.
+    const FaceTrace trace = face_trace(f);
+    if (segments.empty() || trace.owners.empty())
+      return false;
+    const std::vector<unsigned int> &owners = trace.owners;
+    const FullMatrix<double>        &T      = trace.T;
+    const unsigned int               n      = faces[f].nodes.size();
+    std::vector<double>              D(n, 0.);
+    for (const auto &segment : segments)
+      for (unsigned int a = 0; a < n; ++a)
+        D[a] += segment.second.D[a];
+    if (!has_owner_duals(trace, D))
       return false;
 
     // The dual functions of the owners, Psi~_q = sum_a S(q, a) Psi_a, are

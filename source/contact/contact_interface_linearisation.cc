@@ -28,7 +28,49 @@ namespace contact_fem
       /// holds every slave face at the node); the operators' are summed.
       bool                  has_normal = false;
       std::array<DofMap, 3> normal, operators;
+
+      /// The parts from slave faces with hanging vertices, which go to the
+      /// owners of the face's trace (ContactInterface::face_trace(); the
+      /// node need not be on the face): D, M by master node and the
+      /// weighted gap vector with their derivatives, the node's normal
+      /// applied at the end (add_owner_parts()).
+      struct OwnerParts
+      {
+        bool                           any = false;
+        double                         D   = 0.;
+        DofMap                         dD;
+        std::map<unsigned int, double> M;
+        std::map<unsigned int, DofMap> dM;
+        std::array<double, 3>          weighted_gap = {{0., 0., 0.}};
+        std::array<DofMap, 3>          d_weighted_gap;
+      } owned;
     };
+
+    /// @p to += @p factor * @p from (every entry of @p from, zero or not).
+    void
+    add_to(DofMap &to, const DofMap &from, const double factor)
+    {
+      for (const auto &[dof, value] : from)
+        to[dof] += factor * value;
+    }
+
+    /// The position of interface node @p l at @p u, for a hanging vertex
+    /// the interpolation of its parents': the operators' columns of hanging
+    /// master vertices are those of their parents (condensed at update()).
+    template <int dim>
+    Point<dim>
+    column_position(const ContactInterface<dim>       &interface,
+                    const std::vector<Tensor<1, dim>> &u,
+                    const unsigned int                 l)
+    {
+      const auto &parents = interface.nodes[l].parents;
+      if (parents.empty())
+        return interface.nodes[l].reference + u[l];
+      Point<dim> x;
+      for (const auto &[parent, weight] : parents)
+        x += weight * (interface.nodes[parent].reference + u[parent]);
+      return x;
+    }
 
     /// The face-pair patch and its linearised operators of each dimension.
     template <int dim>
@@ -152,7 +194,8 @@ namespace contact_fem
         {
           builder.add(result.D[k].derivatives, x(slave_nodes[k])[d], node.operators[d]);
           for (unsigned int l = 0; l < result.M[k].size(); ++l)
-            builder.add(result.M[k][l].derivatives, -x(master_nodes[l])[d], node.operators[d]);
+            builder.add(result.M[k][l].derivatives,
+                        -column_position(interface, u, master_nodes[l])[d], node.operators[d]);
           if (!node.has_normal)
             builder.add(n[d].derivatives, 1., node.normal[d]);
         }
@@ -202,6 +245,192 @@ namespace contact_fem
         }
     }
 
+    /**
+     * The derivatives of the operators of slave face @p f with hanging
+     * vertices (its pairs @p results with @p masters, linearised on the
+     * patch of @p builder) in the basis of its owners (@p trace), as
+     * ContactInterface::add_constrained_face() builds them, or lumped onto
+     * them as condense_hanging_vertices() does, added to the OwnerParts of
+     * the paired owners: D_q = sum_a T(q, a) D_a, M_ql = sum_a S(q, a)
+     * M_al and the weighted gap likewise, with S = D~ T^-T D^-1 (D~ = T D,
+     * D summed over the masters) for the owners' dual basis and S = T
+     * lumped. S depends on the configuration through D: dS(q, a) =
+     * T^-T(q, a) (dD~_q / D_a - D~_q dD_a / D_a^2).
+     */
+    void
+    add_owner_face(const ContactInterface<3>                     &interface,
+                   const PatchBuilder<3>                         &builder,
+                   const std::vector<Mortar::LinearisedQuadPair> &results,
+                   const std::vector<unsigned int>               &masters,
+                   const unsigned int                             f,
+                   const ContactInterface<3>::FaceTrace          &trace,
+                   std::map<unsigned int, NodeSums>              &sums)
+    {
+      const unsigned int        n           = interface.faces[f].nodes.size();
+      const unsigned int        n_owners    = trace.owners.size();
+      const unsigned int        n_variables = 3 * builder.patch.points.size();
+      const FullMatrix<double> &T           = trace.T;
+      const auto                zero        = [&]() {
+        return Mortar::Linearised{0., std::vector<double>(n_variables, 0.)};
+      };
+      std::vector<Mortar::Linearised> D(n, zero());
+      for (const auto &result : results)
+        for (unsigned int a = 0; a < result.D.size(); ++a)
+          {
+            D[a].value += result.D[a].value;
+            for (unsigned int v = 0; v < n_variables; ++v)
+              D[a].derivatives[v] += result.D[a].derivatives[v];
+          }
+      std::vector<double> D_values(n);
+      for (unsigned int a = 0; a < n; ++a)
+        D_values[a] = D[a].value;
+      std::vector<std::vector<Mortar::Linearised>> S(n_owners, std::vector<Mortar::Linearised>(n));
+      if (ContactInterface<3>::has_owner_duals(trace, D_values))
+        {
+          FullMatrix<double> T_inverse_transpose(n, n);
+          T_inverse_transpose.copy_transposed(T);
+          T_inverse_transpose.gauss_jordan();
+          for (unsigned int q = 0; q < n; ++q)
+            {
+              Mortar::Linearised D_owner = zero();
+              for (unsigned int a = 0; a < n; ++a)
+                {
+                  D_owner.value += T(q, a) * D[a].value;
+                  for (unsigned int v = 0; v < n_variables; ++v)
+                    D_owner.derivatives[v] += T(q, a) * D[a].derivatives[v];
+                }
+              for (unsigned int a = 0; a < n; ++a)
+                {
+                  const double t  = T_inverse_transpose(q, a);
+                  const double Da = D[a].value;
+                  S[q][a]         = zero();
+                  S[q][a].value   = D_owner.value * t / Da;
+                  for (unsigned int v = 0; v < n_variables; ++v)
+                    S[q][a].derivatives[v] =
+                      t * (D_owner.derivatives[v] - D_owner.value * D[a].derivatives[v] / Da) / Da;
+                }
+            }
+        }
+      else
+        for (unsigned int q = 0; q < n_owners; ++q)
+          for (unsigned int a = 0; a < n; ++a)
+            {
+              S[q][a]       = zero();
+              S[q][a].value = T(q, a);
+            }
+
+      for (unsigned int i = 0; i < masters.size(); ++i)
+        {
+          const Mortar::LinearisedQuadPair &result = results[i];
+          if (result.D.empty())
+            continue;
+          const auto &master_nodes = interface.faces[masters[i]].nodes;
+          for (unsigned int q = 0; q < n_owners; ++q)
+            {
+              const auto it = sums.find(trace.owners[q]);
+              if (it == sums.end())
+                continue;
+              NodeSums::OwnerParts &owned = it->second.owned;
+              owned.any                   = true;
+              for (unsigned int a = 0; a < n; ++a)
+                {
+                  owned.D += T(q, a) * result.D[a].value;
+                  builder.add(result.D[a].derivatives, T(q, a), owned.dD);
+                  for (unsigned int l = 0; l < master_nodes.size(); ++l)
+                    {
+                      const Mortar::Linearised &M = result.M[a][l];
+                      owned.M[master_nodes[l]] += S[q][a].value * M.value;
+                      DofMap &dM = owned.dM[master_nodes[l]];
+                      builder.add(M.derivatives, S[q][a].value, dM);
+                      builder.add(S[q][a].derivatives, M.value, dM);
+                    }
+                  for (unsigned int d = 0; d < 3; ++d)
+                    {
+                      const Mortar::Linearised &g = result.weighted_gap[a][d];
+                      owned.weighted_gap[d] += S[q][a].value * g.value;
+                      builder.add(g.derivatives, S[q][a].value, owned.d_weighted_gap[d]);
+                      builder.add(S[q][a].derivatives, g.value, owned.d_weighted_gap[d]);
+                    }
+                }
+            }
+        }
+    }
+
+    /**
+     * The OwnerParts of paired slave node @p q added to its sums, with its
+     * unit normal n_q and dn_q from the slave faces at it (@p faces_at_q),
+     * as add_pair() and add_frictional() add those of a face node: G_q =
+     * n_q . weighted gap, f_q = -D_q n_q on the node and M_ql n_q on master
+     * l, the held tangential traction's force, D_q x_q - sum_l M_ql x_l.
+     */
+    template <int dim>
+    void
+    add_owner_parts(const ContactInterface<dim>       &interface,
+                    const std::vector<Tensor<1, dim>> &u,
+                    const unsigned int                 q,
+                    const std::vector<unsigned int>   &faces_at_q,
+                    const bool                         frictional,
+                    NodeSums                          &node)
+    {
+      PatchBuilder<dim> builder(interface, u);
+      for (const unsigned int g : faces_at_q)
+        builder.patch.slave_faces.push_back(builder.add_face(g));
+      const auto     normals = Mortar::linearise_nodal_normals(builder.patch);
+      const auto    &first   = interface.faces[faces_at_q[0]].nodes;
+      const auto    &n_q     = normals[std::find(first.begin(), first.end(), q) - first.begin()];
+      Tensor<1, dim> n;
+      std::array<DofMap, dim> dn;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          n[d] = n_q[d].value;
+          builder.add(n_q[d].derivatives, 1., dn[d]);
+        }
+      const NodeSums::OwnerParts &o    = node.owned;
+      const auto                 &dofs = interface.nodes[q].dofs;
+      add_to(node.D, o.dD, 1.);
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          add_to(node.gap, o.d_weighted_gap[d], n[d]);
+          add_to(node.gap, dn[d], o.weighted_gap[d]);
+          DofMap &row = node.force[dofs[d]];
+          add_to(row, o.dD, -n[d]);
+          add_to(row, dn[d], -o.D);
+          for (const auto &[l, dM] : o.dM)
+            {
+              DofMap &master_row = node.force[interface.nodes[l].dofs[d]];
+              add_to(master_row, dM, n[d]);
+              add_to(master_row, dn[d], o.M.at(l));
+            }
+        }
+      if (!frictional)
+        return;
+      const Point<dim> x = interface.nodes[q].reference + u[q];
+      for (unsigned int c = 0; c < dim; ++c)
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            DofMap &row = node.tangent_force[c][dofs[d]];
+            if (c == d)
+              add_to(row, o.dD, 1.);
+            add_to(row, dn[c], -o.D * n[d]);
+            for (const auto &[l, dM] : o.dM)
+              {
+                DofMap &master_row = node.tangent_force[c][interface.nodes[l].dofs[d]];
+                if (c == d)
+                  add_to(master_row, dM, -1.);
+                add_to(master_row, dn[c], o.M.at(l) * n[d]);
+              }
+          }
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          add_to(node.operators[d], o.dD, x[d]);
+          for (const auto &[l, dM] : o.dM)
+            add_to(node.operators[d], dM, -column_position(interface, u, l)[d]);
+          if (!node.has_normal)
+            add_to(node.normal[d], dn[d], 1.);
+        }
+      node.has_normal = true;
+    }
+
     /// The derivatives of the pairs of slave face @p f with its @p masters
     /// added to the sums of its paired nodes. 2D: each pair linearised on
     /// its own patch (the slave face, its @p neighbours, the pair's master
@@ -215,6 +444,9 @@ namespace contact_fem
                    const bool                        frictional,
                    std::map<unsigned int, NodeSums> &sums)
     {
+      // A 2D contact surface has no hanging vertices (they lie inside the
+      // body, on the edges between cells of different levels).
+      AssertThrow(interface.face_trace(f).owners.empty(), ExcInternalError());
       for (const unsigned int m : masters)
         {
           PatchBuilder<2> builder(interface, u);
@@ -251,6 +483,11 @@ namespace contact_fem
       std::vector<Mortar::LinearisedQuadPair> results;
       if (!Mortar::linearise_slave_face(builder.patch, true, results))
         return;
+      if (const auto trace = interface.face_trace(f); !trace.owners.empty())
+        {
+          add_owner_face(interface, builder, results, masters, f, trace, sums);
+          return;
+        }
       for (unsigned int i = 0; i < masters.size(); ++i)
         if (!results[i].D.empty())
           add_pair(interface, u, builder, results[i], f, masters[i], frictional, sums);
@@ -329,6 +566,9 @@ namespace contact_fem
                          std::vector<unsigned int>(neighbours.begin(), neighbours.end()),
                          masters_of_face[f], frictional, sums);
         }
+      for (auto &[n, node_sums] : sums)
+        if (node_sums.owned.any)
+          add_owner_parts(*this, u, n, faces_of_node.at(n), frictional, node_sums);
       for (const auto &[n, node_sums] : sums)
         linearised_nodes[n] = linearised_node<dim>(node_sums);
     }

@@ -438,5 +438,22 @@ namespace contact_fem
         return compute_face<true, PairADNumber>(patch, pairs);
       return compute_face<true, ADNumber>(patch, pairs);
     }
+
+    std::vector<std::array<Linearised, 3>>
+    linearise_nodal_normals(const QuadFacePatch &patch)
+    {
+      const unsigned int        n = 3 * patch.points.size();
+      std::vector<unsigned int> all(patch.points.size());
+      for (unsigned int i = 0; i < all.size(); ++i)
+        all[i] = i;
+      const Chain                     chain(all, n, nullptr);
+      std::vector<Point<3, ADNumber>> x(patch.points.size());
+      for (unsigned int v = 0; v < n; ++v)
+        x[v / 3][v % 3] = variable<ADNumber>(chain, v, patch.points[v / 3][v % 3]);
+      std::vector<std::array<Linearised, 3>> result;
+      for (const Tensor<1, 3, ADNumber> &normal : nodal_normals(patch, x))
+        result.push_back({{chain(normal[0]), chain(normal[1]), chain(normal[2])}});
+      return result;
+    }
   } // namespace Mortar
 } // namespace contact_fem

@@ -326,5 +326,16 @@ namespace contact_fem
         return compute_pair(patch, coordinates<ADNumber>(patch), result);
       return compute_pair(patch, coordinates<double>(patch), result);
     }
+
+    std::vector<std::array<Linearised, 2>>
+    linearise_nodal_normals(const PairPatch &patch)
+    {
+      const unsigned int      n       = 2 * patch.points.size();
+      const Vectors<ADNumber> normals = nodal_normals(patch, coordinates<ADNumber>(patch));
+      std::vector<std::array<Linearised, 2>> result;
+      for (const Tensor<1, 2, ADNumber> &normal : normals)
+        result.push_back(linearised(normal, n));
+      return result;
+    }
   } // namespace Mortar
 } // namespace contact_fem

@@ -9,6 +9,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <contact_fem/material/material.h>
@@ -343,6 +344,26 @@ namespace contact_fem
     {
       return pair_materials.at(pair).largest_youngs_modulus[slave];
     }
+
+    /// The trace of a slave face on its owners (its regular nodes and the
+    /// parents of its hanging vertices, in the order of its nodes): T(q, a)
+    /// is the weight of owner q in node a.
+    struct FaceTrace
+    {
+      std::vector<unsigned int> owners;
+      FullMatrix<double>        T;
+    };
+
+    /// The trace of slave face @p f; no owners if it has no hanging vertex.
+    FaceTrace
+    face_trace(const unsigned int f) const;
+
+    /// Whether a face of @p trace whose nodes have the dual weights @p D
+    /// (summed over its masters) gets dual functions of its owners
+    /// (add_constrained_face()): its owners form a basis of its trace and
+    /// no D is negligible. Otherwise its hanging rows are lumped.
+    static bool
+    has_owner_duals(const FaceTrace &trace, const std::vector<double> &D);
 
     /// The geometry of @p face at X + u (@p u per interface node; empty:
     /// the reference configuration). Its geometry points move with the

@@ -89,6 +89,13 @@ namespace contact_fem
     linearise_slave_face(const QuadFacePatch             &patch,
                          const bool                       derivatives,
                          std::vector<LinearisedQuadPair> &pairs);
+
+    /// The unit nodal normals at the nodes of the slave face
+    /// (slave_faces[0]) of @p patch, from its slave faces
+    /// (LinearisedQuadPair::normals without masters), with their
+    /// derivatives.
+    std::vector<std::array<Linearised, 3>>
+    linearise_nodal_normals(const QuadFacePatch &patch);
   } // namespace Mortar
 } // namespace contact_fem
 

@@ -147,7 +147,8 @@ namespace contact_fem
 
     /// The face type of the kernel for numbers of type Number.
     template <typename Number>
-    using QuadFaceFor = std::conditional_t<std::is_same_v<Number, double>, QuadFace, QuadFaceOf<Number>>;
+    using QuadFaceFor =
+      std::conditional_t<std::is_same_v<Number, double>, QuadFace, QuadFaceOf<Number>>;
 
     template <typename Number>
     using ParameterPolygonOf = std::vector<Point<2, Number>>;
@@ -172,11 +173,11 @@ namespace contact_fem
      */
     template <typename Number>
     bool
-    overlap_of(const QuadFaceFor<Number>                     &slave,
-               const QuadFace                                &slave_values,
-               const std::vector<Tensor<1, 3, Number>>       &slave_normals,
-               const QuadFaceFor<Number>                     &master,
-               std::vector<ParameterPolygonOf<Number>>       &polygons);
+    overlap_of(const QuadFaceFor<Number>               &slave,
+               const QuadFace                          &slave_values,
+               const std::vector<Tensor<1, 3, Number>> &slave_normals,
+               const QuadFaceFor<Number>               &master,
+               std::vector<ParameterPolygonOf<Number>> &polygons);
 
     /// D_e = diag(int N_j) and M_e = (int N_j N_k) over @p polygons, as
     /// dual_basis_coefficients() integrates them. @p De, @p Me: zero n x n.

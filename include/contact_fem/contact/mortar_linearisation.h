@@ -89,6 +89,12 @@ namespace contact_fem
      */
     bool
     linearise_pair(const PairPatch &patch, const bool derivatives, LinearisedPair &result);
+
+    /// The unit nodal normals at the nodes of the slave face
+    /// (slave_faces[0]) of @p patch, from the slave faces of @p patch
+    /// (LinearisedPair::normals without a master), with their derivatives.
+    std::vector<std::array<Linearised, 2>>
+    linearise_nodal_normals(const PairPatch &patch);
   } // namespace Mortar
 } // namespace contact_fem
 

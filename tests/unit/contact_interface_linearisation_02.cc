@@ -1,0 +1,438 @@
+// ContactInterface::linearise() (Contact/Kinematics = current) on locally
+// refined surfaces, against central differences of the interface's own
+// operators, as contact_interface_linearisation_01 checks them on uniform
+// ones: dG_j/du, dD_j/du, df_j/du, dh_j/du, dn_j/du and d(D_j x_j - sum_l
+// M_jl x_l)/du of every paired slave node j. In 3D the lower block's top
+// (the slave, 3 x 3 cells) has its corner cell at the origin and its centre
+// cell refined once, the upper block's base (the master, 2 x 2 cells,
+// overhanging by 0.1) its cell at the origin: hanging vertices on both
+// surfaces (a fine slave face with one or two hanging vertices). A hanging
+// vertex carries no multiplier: the operators of its faces go to the
+// owners of the face's trace (its regular nodes and the parents of its
+// hanging vertices) in their dual basis, which depends on the
+// configuration through D (or lumped, where the owners outnumber a face's
+// nodes). The differences are taken in the constrained space, as Newton
+// moves: a regular DoF moves the hanging DoFs tied to it by their weights
+// (the configuration is conforming); the linearisation's derivatives by a
+// hanging DoF, and its force rows on hanging master DoFs, are taken to the
+// parents by the same weights, as AffineConstraints::
+// distribute_local_to_global() assembles them. 3D Q1. In 2D a locally
+// refined surface has no hanging vertices (they lie inside the body): the
+// lower block (4 cells) with its second cell refined and the upper block
+// (3 cells) with its first, Q1 and Q2. The checks of
+// contact_interface_linearisation_01: error below 1e-6 of the node's
+// largest derivative of that quantity at h = 1e-5, falling as h^2 from h =
+// 4e-5 to h/2, no coupling outside the node's patch, the same face pairs at
+// every perturbed configuration. Not here: 3D Q2 (a random configuration
+// fails the tiling check) and Q1 on a quadratic mapping (update()'s curved
+// path is noisy at 1e-9 in the gap on the refined faces, so differences at
+// h = 1e-5 do not resolve 1e-6; at h = 1e-3 they agree to 1e-4).
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <contact_fem/contact/contact_interface.h>
+#include <contact_fem/contact/friction/stick_slip_sets.h>
+#include <contact_fem/material/material.h>
+
+#include "unit_test_blocks.h"
+#include "unit_test_materials.h"
+#include "unit_test_random.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iostream>
+#include <map>
+
+using namespace dealii;
+using namespace contact_fem;
+
+namespace
+{
+  /// The quantities of a node: (kind, index), kind gap (index 0), force
+  /// or tangent_force + k (tangent k of the frame; index the row DoF),
+  /// normal or operators (index the component).
+  enum Kind
+  {
+    gap,
+    force,
+    normal,
+    operators,
+    weight, ///< D_j (index 0)
+    tangent_force
+  };
+  using Key = std::pair<int, types::global_dof_index>;
+
+  /// Per paired slave node: the quantities by key, at the last update().
+  using Values = std::map<unsigned int, std::map<Key, double>>;
+
+  /// The tangents of the frame of every paired slave node at the
+  /// linearisation's configuration.
+  template <int dim>
+  using Frames = std::map<unsigned int, std::array<Tensor<1, dim>, dim - 1>>;
+
+  template <int dim>
+  Values
+  values_of(const ContactInterface<dim> &interface,
+            const std::vector<double>   &u,
+            const Frames<dim>           &frames)
+  {
+    Values result;
+    for (const auto &s : interface.slave_nodes)
+      if (s.paired)
+        {
+          auto &node        = result[s.node];
+          node[{gap, 0}]    = s.D * interface.gap(s, u);
+          node[{weight, 0}] = s.D;
+          const auto x      = [&](const unsigned int n) {
+            return interface.nodes[n].reference + interface.displacement(n, u);
+          };
+          for (unsigned int k = 0; k < dim - 1; ++k)
+            {
+              // The frame tangent held in the tangent plane of n(u).
+              const Tensor<1, dim> &tau = frames.at(s.node)[k];
+              const Tensor<1, dim>  t   = tau - (tau * s.normal) * s.normal;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  node[{tangent_force + k, interface.nodes[s.node].dofs[d]}] += s.D * t[d];
+                  for (const auto &[m, value] : s.M)
+                    node[{tangent_force + k, interface.nodes[m].dofs[d]}] += -value * t[d];
+                }
+            }
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              node[{force, interface.nodes[s.node].dofs[d]}] += -s.D * s.normal[d];
+              node[{normal, d}]    = s.normal[d];
+              node[{operators, d}] = s.D * x(s.node)[d];
+              for (const auto &[m, value] : s.M)
+                {
+                  node[{force, interface.nodes[m].dofs[d]}] += value * s.normal[d];
+                  node[{operators, d}] -= value * x(m)[d];
+                }
+            }
+        }
+    return result;
+  }
+
+  /// The derivative of component @p d of D_j x_j - sum_l M_jl x_l along
+  /// @p dof through the positions themselves (the linearisation holds them).
+  template <int dim>
+  double
+  direct_part(const ContactInterface<dim>                     &interface,
+              const typename ContactInterface<dim>::SlaveNode &s,
+              const unsigned int                               d,
+              const types::global_dof_index                    dof)
+  {
+    double result = interface.nodes[s.node].dofs[d] == dof ? s.D : 0.;
+    for (const auto &[m, value] : s.M)
+      if (interface.nodes[m].dofs[d] == dof)
+        result -= value;
+    return result;
+  }
+
+  /// The hanging DoFs tied to each regular interface DoF, with their
+  /// weights (a hanging vertex's component d follows component d of its
+  /// parents).
+  template <int dim>
+  std::map<types::global_dof_index, std::vector<std::pair<types::global_dof_index, double>>>
+  children_of(const ContactInterface<dim> &interface)
+  {
+    std::map<types::global_dof_index, std::vector<std::pair<types::global_dof_index, double>>>
+      result;
+    for (const auto &node : interface.nodes)
+      for (const auto &[parent, weight] : node.parents)
+        for (unsigned int d = 0; d < dim; ++d)
+          result[interface.nodes[parent].dofs[d]].emplace_back(node.dofs[d], weight);
+    return result;
+  }
+
+  /// A DoF with the hanging DoFs that move with it: (DoF, weight).
+  std::vector<std::pair<types::global_dof_index, double>>
+  moving_with(const types::global_dof_index                                            dof,
+              const std::map<types::global_dof_index,
+                             std::vector<std::pair<types::global_dof_index, double>>> &children)
+  {
+    std::vector<std::pair<types::global_dof_index, double>> result{{dof, 1.}};
+    if (const auto it = children.find(dof); it != children.end())
+      result.insert(result.end(), it->second.begin(), it->second.end());
+    return result;
+  }
+
+  /// The analytic derivative of entry @p key of node @p n along regular
+  /// DoF @p dof (moving its hanging DoFs with it): the linearisation's
+  /// columns, and rows, of @p dof and of its hanging DoFs by their weights
+  /// (0 outside the node's patch).
+  template <int dim>
+  double
+  analytic(const ContactInterface<dim>                                             &interface,
+           const Frames<dim>                                                       &frames,
+           const unsigned int                                                       n,
+           const Key                                                               &key,
+           const types::global_dof_index                                            dof,
+           const std::map<types::global_dof_index,
+                          std::vector<std::pair<types::global_dof_index, double>>> &children)
+  {
+    const auto &node = interface.linearised_nodes.at(n);
+    double      held = 0.;
+    if (key.first == operators)
+      for (const auto &s : interface.slave_nodes)
+        if (s.node == n)
+          held = direct_part(interface, s, key.second, dof);
+    double result = held;
+    for (const auto &[column, column_weight] : moving_with(dof, children))
+      {
+        const auto it = std::find(node.dofs.begin(), node.dofs.end(), column);
+        if (it == node.dofs.end())
+          continue;
+        const unsigned int i   = it - node.dofs.begin();
+        const auto         row = [&](const auto &rows) {
+          double sum = 0.;
+          for (const auto &[row_dof, row_weight] : moving_with(key.second, children))
+            for (const auto &[r, values] : rows)
+              if (r == row_dof)
+                sum += row_weight * values[i];
+          return sum;
+        };
+        double value = 0.;
+        switch (key.first)
+          {
+            case gap:
+              value = node.gap[i];
+              break;
+            case weight:
+              value = node.D[i];
+              break;
+            case normal:
+              value = node.normal[key.second][i];
+              break;
+            case operators:
+              value = node.operators[key.second][i];
+              break;
+            case force:
+              value = row(node.force);
+              break;
+            default:
+              {
+                // Per global component c of the held traction, combined.
+                const Tensor<1, dim> &tau = frames.at(n)[key.first - tangent_force];
+                for (unsigned int c = 0; c < dim; ++c)
+                  value += tau[c] * row(node.tangent_force[c]);
+              }
+          }
+        result += column_weight * value;
+      }
+    return result;
+  }
+
+  /// Whether @p dof or a hanging DoF moving with it is in the patch of
+  /// node @p n.
+  template <int dim>
+  bool
+  in_patch(const ContactInterface<dim>                                             &interface,
+           const unsigned int                                                       n,
+           const types::global_dof_index                                            dof,
+           const std::map<types::global_dof_index,
+                          std::vector<std::pair<types::global_dof_index, double>>> &children)
+  {
+    const auto &dofs = interface.linearised_nodes.at(n).dofs;
+    for (const auto &[moved, weight] : moving_with(dof, children))
+      if (std::find(dofs.begin(), dofs.end(), moved) != dofs.end())
+        return true;
+    return false;
+  }
+
+  /// The two stacked blocks of the test in @p tria, locally refined.
+  void
+  make_blocks(Triangulation<2> &tria)
+  {
+    Triangulation<2> lower, upper;
+    GridGenerator::subdivided_hyper_rectangle(lower, {4, 1}, Point<2>(0., 0.), Point<2>(1., 1.));
+    GridGenerator::subdivided_hyper_rectangle(upper, {3, 1}, Point<2>(-0.05, 1.05),
+                                              Point<2>(1.05, 2.05));
+    GridGenerator::merge_triangulations(lower, upper, tria);
+    label_stacked_blocks(tria, 0.05);
+    for (const auto &cell : tria.active_cell_iterators())
+      if ((cell->material_id() == 1 && std::abs(cell->center()[0] - 0.375) < 0.1) ||
+          (cell->material_id() == 2 && cell->center()[0] < 0.3))
+        cell->set_refine_flag();
+    tria.execute_coarsening_and_refinement();
+  }
+
+  void
+  make_blocks(Triangulation<3> &tria)
+  {
+    Triangulation<3> lower, upper;
+    GridGenerator::subdivided_hyper_rectangle(lower, {3, 3, 1}, Point<3>(0., 0., 0.),
+                                              Point<3>(1., 1., 1.));
+    GridGenerator::subdivided_hyper_rectangle(upper, {2, 2, 1}, Point<3>(-0.1, -0.1, 1.05),
+                                              Point<3>(1.1, 1.1, 2.05));
+    GridGenerator::merge_triangulations(lower, upper, tria);
+    label_stacked_blocks(tria, 0.05);
+    for (const auto &cell : tria.active_cell_iterators())
+      {
+        const Point<3> c     = cell->center();
+        const bool     lower = cell->material_id() == 1;
+        if ((lower && c[0] < 1. / 3 && c[1] < 1. / 3) ||
+            (lower && std::abs(c[0] - 0.5) < 0.1 && std::abs(c[1] - 0.5) < 0.1) ||
+            (!lower && c[0] < 0.5 && c[1] < 0.5))
+          cell->set_refine_flag();
+      }
+    tria.execute_coarsening_and_refinement();
+  }
+
+  template <int dim>
+  void
+  run(const unsigned int degree, const unsigned int mapping_degree)
+  {
+    Triangulation<dim> tria;
+    make_blocks(tria);
+    const FESystem<dim> fe(FE_Q<dim>(degree), dim);
+    DoFHandler<dim>     dof_handler(tria);
+    dof_handler.distribute_dofs(fe);
+    const MappingQ<dim>       mapping(mapping_degree);
+    const Materials<dim>      materials = make_materials<dim>("1, 2", "100, 200", "0.3, 0.3");
+    AffineConstraints<double> none, hanging;
+    none.close();
+    DoFTools::make_hanging_node_constraints(dof_handler, hanging);
+    hanging.close();
+    ContactInterface<dim> interface;
+    interface.initialize(mapping, dof_handler, {ContactPair{3, 4}}, none, hanging, materials,
+                         MPI_COMM_WORLD);
+    const auto   children        = children_of(interface);
+    unsigned int n_hanging_slave = 0, n_hanging_master = 0;
+    for (const auto &node : interface.nodes)
+      if (!node.parents.empty())
+        ++(node.slave ? n_hanging_slave : n_hanging_master);
+
+    // A conforming configuration: random regular DoFs, the hanging ones
+    // interpolated from their parents.
+    Random              random(29);
+    std::vector<double> u(interface.dofs().size());
+    for (double &value : u)
+      value = 0.02 * random.next();
+    const auto conform = [&](std::vector<double> &v) {
+      for (const auto &node : interface.nodes)
+        if (!node.parents.empty())
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              double &value = v[interface.position(node.dofs[d])];
+              value         = 0.;
+              for (const auto &[parent, weight] : node.parents)
+                value += weight * v[interface.position(interface.nodes[parent].dofs[d])];
+            }
+    };
+    conform(u);
+    interface.update(u, 3.);
+    interface.linearise(true);
+    const auto  coupled = interface.coupled_faces;
+    const auto &linear  = interface.linearised_nodes;
+    Frames<dim> frames;
+    for (const auto &s : interface.slave_nodes)
+      if (s.paired)
+        frames[s.node] = tangent_frame(s.normal);
+
+    // Differences at h and h / 2 of every entry along every regular DoF,
+    // its hanging DoFs moving with it, and at h = 1e-5. h = 4e-5 and 2e-5
+    // for the order: the fine faces of the refined cells bring topology
+    // switches of the clipping (one-sided derivatives) within 2e-4 of the
+    // configuration; the error at those h is second order (its ratio 2 at
+    // h = 2e-4 and 1e-4, measured, is the switch's).
+    std::vector<bool> is_hanging(u.size(), false);
+    for (const auto &node : interface.nodes)
+      if (!node.parents.empty())
+        for (unsigned int d = 0; d < dim; ++d)
+          is_hanging[interface.position(node.dofs[d])] = true;
+    const auto differences = [&](const double h) {
+      std::map<std::pair<unsigned int, Key>, std::map<types::global_dof_index, double>> result;
+      bool same_pairs = true;
+      for (unsigned int i = 0; i < u.size(); ++i)
+        {
+          if (is_hanging[i])
+            continue;
+          std::array<Values, 2> at;
+          for (const int side : {0, 1})
+            {
+              std::vector<double> v = u;
+              v[i] += side == 0 ? h : -h;
+              conform(v);
+              ContactInterface<dim> moved = interface;
+              moved.update(v, 3.);
+              same_pairs = same_pairs && moved.coupled_faces == coupled;
+              at[side]   = values_of(moved, v, frames);
+            }
+          for (const auto &[n, entries] : at[0])
+            for (const auto &[key, value] : entries)
+              result[{n, key}][interface.dofs()[i]] = (value - at[1][n][key]) / (2. * h);
+        }
+      return std::make_pair(result, same_pairs);
+    };
+    const auto [coarse, coarse_pairs] = differences(4e-5);
+    const auto [fine, fine_pairs]     = differences(2e-5);
+    const auto [tight, tight_pairs]   = differences(1e-5);
+    bool   small = true, second_order = true, complete = true;
+    double worst = 0.;
+    // The scale of an entry: the node's largest derivative of that
+    // quantity (over all rows of a force: a master row of a node at the
+    // rim of the contact carries derivatives near round-off of the node's).
+    std::map<std::pair<unsigned int, int>, double> scales;
+    for (const auto &[entry, by_dof] : coarse)
+      for (const auto &[dof, value] : by_dof)
+        {
+          double &scale = scales[{entry.first, entry.second.first}];
+          scale = std::max(scale, std::abs(analytic(interface, frames, entry.first, entry.second,
+                                                    dof, children)));
+        }
+    for (const auto &[entry, by_dof] : coarse)
+      {
+        const auto exact = [&](const types::global_dof_index dof) {
+          return analytic(interface, frames, entry.first, entry.second, dof, children);
+        };
+        const double scale = scales.at({entry.first, entry.second.first});
+        for (const auto &[dof, value] : by_dof)
+          {
+            const double a  = exact(dof);
+            const double e1 = std::abs(value - a) / scale;
+            const double e2 = std::abs(fine.at(entry).at(dof) - a) / scale;
+            const double e3 = std::abs(tight.at(entry).at(dof) - a) / scale;
+            complete        = complete && (in_patch(interface, entry.first, dof, children) ||
+                                    std::abs(value - a) < 1e-10 * scale);
+            small           = small && e3 < 1e-6;
+            worst           = std::max(worst, e3);
+            if (e1 > 1e-8)
+              second_order = second_order && e1 / e2 > 3.5 && e1 / e2 < 4.5;
+          }
+      }
+    std::cout << dim << "D, Q" << degree << " on a mapping of degree " << mapping_degree << ": "
+              << n_hanging_slave << " hanging slave and " << n_hanging_master
+              << " hanging master vertices, " << linear.size() << " paired slave nodes, "
+              << interface.coupled_faces.size() << " coupled face pairs" << std::endl
+              << "  same face pairs at every perturbed configuration: "
+              << (coarse_pairs && fine_pairs && tight_pairs ? "yes" : "no") << std::endl
+              << "  dG/du, dD/du, df/du, dh/du, dn/du and d(D x - M x)/du against central "
+                 "differences, error below 1e-6 of the node's largest derivative: "
+              << (small ? "yes" : "no") << std::endl
+              << "  error falling at second order (or round-off): " << (second_order ? "yes" : "no")
+              << std::endl
+              << "  no coupling outside the node's patch: " << (complete ? "yes" : "no")
+              << std::endl;
+    if (!small)
+      std::cout << "  largest error " << worst << std::endl;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  run<2>(1, 1);
+  run<2>(2, 2);
+  run<3>(1, 1);
+}
