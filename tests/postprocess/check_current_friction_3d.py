@@ -17,8 +17,10 @@ flag) and the Newton tables:
   1e-3 rad at t = 7); at t = 7 every active node slips, its tangential
   traction is mu p_j to 1e-8 (of the largest mu p) and opposes its slip,
   which follows the pull direction (within 1e-2 rad);
-- run to t = 3 (pulled by 0.03): nodes stick, each inside the cone
-  (|t_j| < mu p_j), the slip nodes on it to 1e-8, and 0 < |F_t| / F_n < mu;
+- at t = 3 (pulled by 0.03), step 3 of the same run (its contact-surface
+  VTU, the same 10 digits as the pressure profile of a run that ends there):
+  nodes stick, each inside the cone (|t_j| < mu p_j), the slip nodes on it
+  to 1e-8, and 0 < |F_t| / F_n < mu;
 - mu = 0 is alm frictionless on the current configuration: run to t = 4
   with coulomb 0 and with alm frictionless, the same forces at every step
   to 1e-10 of the largest and the same Newton iterations.
@@ -29,6 +31,7 @@ import re
 import sys
 
 from scene_run import check_quadratic, newton_ratios, run_scene
+from vtu_files import collection, read_surface
 
 MU = 0.3
 PULL = math.radians(30.0)
@@ -61,8 +64,8 @@ def report(name, good, detail):
 
 contact_fem, scene = sys.argv[1:3]
 write_profile = "Output/Write pressure profile=true"
-output = run_scene(contact_fem, scene, write_profile, "Load stepping/End time=7",
-                   "Load stepping/Number of load steps=7")
+output = run_scene(contact_fem, scene, write_profile, "Output/Write VTU=true",
+                   "Load stepping/End time=7", "Load stepping/Number of load steps=7")
 ok = check_quadratic("block pulled at 30 degrees", output, 10.0)
 rows = forces()
 ok = report("steps converged", len(rows) == 7 == output.count("| converged"),
@@ -91,10 +94,14 @@ ok = report("t = 7, every active node slips, |t_j| = mu p_j to 1e-8, against its
             "slip along the pull within 1e-2 rad", every and off < 1e-8 and opposed and
             turn < 1e-2, f"{len(nodes)} nodes, |t| off mu p {off:.1e}, slip turned {turn:.1e}") and ok
 
-run_scene(contact_fem, scene, write_profile, "Load stepping/End time=3",
-          "Load stepping/Number of load steps=3")
-normal, tangential, _ = pair(forces()[-1])
-nodes = [n for n in profile() if n["active"] == 1]
+# t = 3: step 3 of the run to t = 7 (the same steps as a run to t = 3).
+normal, tangential, _ = pair(rows[2])
+_, _, surface, _ = read_surface(dict(collection("contact_surface.pvd"))[3.0])
+nodes = [{"pressure": p[0], "stick": s[0], "tangential_traction_x": tx[0],
+          "tangential_traction_y": ty[0]}
+         for p, a, s, tx, ty in zip(surface["contact_pressure"], surface["active"],
+                                    surface["stick"], surface["tangential_traction_x"],
+                                    surface["tangential_traction_y"]) if a[0] == 1]
 stick = [n for n in nodes if n["stick"] == 1]
 inside = all(math.hypot(n["tangential_traction_x"], n["tangential_traction_y"]) <
              MU * n["pressure"] for n in stick)

@@ -51,8 +51,10 @@ block pressed by 22 % on a rigid base (two steps), pulled at 30 degrees by
   r_(k-1) constant instead);
 - t = 4: every active node slips, |t_j| = mu p_j to 1e-8 (of the largest
   mu p), t_j against the node's slip, and 0 < |F_t| / F_n <= mu;
-- t = 3: stick nodes inside the cone (|t_j| < mu p_j), slip nodes on it to
-  1e-8, 0 < |F_t| / F_n < mu.
+- t = 3 (step 3 of the same run: its contact-surface VTU, the same 10
+  digits as the pressure profile of a run that ends there): stick nodes
+  inside the cone (|t_j| < mu p_j), slip nodes on it to 1e-8, 0 < |F_t| /
+  F_n < mu.
 """
 import csv
 import json
@@ -60,6 +62,7 @@ import math
 import sys
 
 from scene_run import check_quadratic, converged_sets, newton_ratios, run_scene
+from vtu_files import collection, read_surface
 
 MU = 0.3
 
@@ -151,7 +154,7 @@ def traction(n):
 
 def check_3d(contact_fem, scene):
     write_profile = "Output/Write pressure profile=true"
-    output = run_scene(contact_fem, scene, write_profile)
+    output = run_scene(contact_fem, scene, write_profile, "Output/Write VTU=true")
     rows = forces()
     ok = report("3D: every step converged, no split",
                 len(rows) == 4 == output.count("| converged") and "Splitting" not in output,
@@ -172,10 +175,14 @@ def check_3d(contact_fem, scene):
                 f"{len(nodes)} nodes, |t| off mu p {off:.1e}, |F_t| / F_n = "
                 f"{tangential / normal:.6f}") and ok
 
-    short = ("Load stepping/End time=3", "Load stepping/Number of load steps=3")
-    run_scene(contact_fem, scene, write_profile, *short)
-    normal, tangential = pair(forces()[-1])
-    nodes = [n for n in profile() if n["active"] == 1]
+    # t = 3: step 3 of the run (the same steps as a run to t = 3).
+    normal, tangential = pair(rows[2])
+    _, _, surface, _ = read_surface(dict(collection("contact_surface.pvd"))[3.0])
+    nodes = [{"pressure": p[0], "stick": s[0], "tangential_traction_x": tx[0],
+              "tangential_traction_y": ty[0]}
+             for p, a, s, tx, ty in zip(surface["contact_pressure"], surface["active"],
+                                        surface["stick"], surface["tangential_traction_x"],
+                                        surface["tangential_traction_y"]) if a[0] == 1]
     stick = [n for n in nodes if n["stick"] == 1]
     inside = all(traction(n) < MU * n["pressure"] for n in stick)
     off = max((abs(traction(n) - MU * n["pressure"]) for n in nodes if n["stick"] == 0),
@@ -186,6 +193,7 @@ def check_3d(contact_fem, scene):
                 0 < tangential / normal < MU,
                 f"{len(stick)} of {len(nodes)} stick, |F_t| / F_n = {tangential / normal:.4f}") and ok
 
+    short = ("Load stepping/End time=3", "Load stepping/Number of load steps=3")
     small = newton_ratios(run_scene(contact_fem, scene, "Contact/Kinematics=small", *short))
 
     def constants(ratios):

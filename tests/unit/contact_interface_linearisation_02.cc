@@ -22,7 +22,7 @@
 // (3 cells) with its first, Q1 and Q2. The checks of
 // contact_interface_linearisation_01: error below 1e-6 of the node's
 // largest derivative of that quantity at h = 1e-5, falling as h^2 from h =
-// 4e-5 to h/2, no coupling outside the node's patch, the same face pairs at
+// 4e-5 to h/4, no coupling outside the node's patch, the same face pairs at
 // every perturbed configuration. Not here: 3D Q2 (a random configuration
 // fails the tiling check) and Q1 on a quadratic mapping (update()'s curved
 // path is noisy at 1e-9 in the gap on the refined faces, so differences at
@@ -260,12 +260,14 @@ namespace
       if (s.paired)
         frames[s.node] = tangent_frame(s.normal);
 
-    // Differences at h and h / 2 of every entry along every regular DoF,
-    // its hanging DoFs moving with it, and at h = 1e-5. h = 4e-5 and 2e-5
-    // for the order: the fine faces of the refined cells bring topology
-    // switches of the clipping (one-sided derivatives) within 2e-4 of the
-    // configuration; the error at those h is second order (its ratio 2 at
-    // h = 2e-4 and 1e-4, measured, is the switch's).
+    // Differences at h = 4e-5 and h / 4 = 1e-5 of every entry along every
+    // regular DoF, its hanging DoFs moving with it: the order from the two,
+    // the error bound at 1e-5. Steps this small since the fine faces of the
+    // refined cells bring topology switches of the clipping (one-sided
+    // derivatives) within 2e-4 of the configuration; the error at those h
+    // is second order (its ratio 2 at h = 2e-4 and 1e-4, measured, is the
+    // switch's). (h = 2e-5 as well, before: the order shown twice, at
+    // 4/3 of this test's cost.)
     std::vector<bool> is_hanging(u.size(), false);
     for (const auto &node : interface.nodes)
       if (!node.parents.empty())
@@ -296,7 +298,6 @@ namespace
       return std::make_pair(result, same_pairs);
     };
     const auto [coarse, coarse_pairs] = differences(4e-5);
-    const auto [fine, fine_pairs]     = differences(2e-5);
     const auto [tight, tight_pairs]   = differences(1e-5);
     bool   small = true, second_order = true, complete = true;
     double worst = 0.;
@@ -321,14 +322,15 @@ namespace
           {
             const double a  = exact(dof);
             const double e1 = std::abs(value - a) / scale;
-            const double e2 = std::abs(fine.at(entry).at(dof) - a) / scale;
             const double e3 = std::abs(tight.at(entry).at(dof) - a) / scale;
             complete        = complete && (in_patch(interface, entry.first, dof, children) ||
                                     std::abs(value - a) < 1e-10 * scale);
             small           = small && e3 < 1e-6;
             worst           = std::max(worst, e3);
+            // The order over the factor 4 within 1.81 to 2.17 (a ratio 3.5
+            // to 4.5 per halving).
             if (e1 > 1e-8)
-              second_order = second_order && e1 / e2 > 3.5 && e1 / e2 < 4.5;
+              second_order = second_order && e1 / e3 > 3.5 * 3.5 && e1 / e3 < 4.5 * 4.5;
           }
       }
     std::cout << dim << "D, Q" << degree << " on a mapping of degree " << mapping_degree << ": "
@@ -336,7 +338,7 @@ namespace
               << " hanging master vertices, " << linear.size() << " paired slave nodes, "
               << interface.coupled_faces.size() << " coupled face pairs" << std::endl
               << "  same face pairs at every perturbed configuration: "
-              << (coarse_pairs && fine_pairs && tight_pairs ? "yes" : "no") << std::endl
+              << (coarse_pairs && tight_pairs ? "yes" : "no") << std::endl
               << "  dG/du, dD/du, df/du, dh/du, dn/du and d(D x - M x)/du against central "
                  "differences, error below 1e-6 of the node's largest derivative: "
               << (small ? "yes" : "no") << std::endl

@@ -20,8 +20,9 @@
 //    slave edges);
 //  - Q2, two masters meeting inside the slave face (dual basis on both).
 // Quantities and checks as in mortar_linearisation_3d_01: every
-// derivative's finite-difference error at h, h/2, h/4 (h = 2e-3 face
-// diagonal) falls at second order (observed orders in [1.8, 2.2]) unless it
+// derivative's finite-difference error from h to h/4 (h = 2e-3 face
+// diagonal) falls at second order (observed order in [1.8, 2.2]; before
+// 2026-11-27 also at h/2, the order shown twice at 3/2 of the cost) unless it
 // is round-off already at h (below 1e-8 of the group's scale: the double
 // path's Newton projections stop at parameter steps of 1e-13, which leaves
 // about 1e-11 of the scale in a difference quotient at h/4), and at h/4 it
@@ -239,22 +240,22 @@ namespace
     return true;
   }
 
-  /// Central-difference errors |FD(h_k) - derivative| for h_k = h, h/2,
-  /// h/4, per quantity of @p exact and coordinate; false if a perturbed
-  /// point has another topology.
+  /// Central-difference errors |FD(h_k) - derivative| for h_k = h, h/4,
+  /// per quantity of @p exact and coordinate; false if a perturbed point
+  /// has another topology.
   bool
   difference_errors(const QuadFacePatch                             &patch,
                     const LinearisedQuadPair                        &exact,
                     const double                                     h,
-                    std::vector<std::vector<std::array<double, 3>>> &errors)
+                    std::vector<std::vector<std::array<double, 2>>> &errors)
   {
     const auto         list = quantities(exact);
     const unsigned int n    = 3 * patch.points.size();
-    errors.assign(list.size(), std::vector<std::array<double, 3>>(n));
+    errors.assign(list.size(), std::vector<std::array<double, 2>>(n));
     for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int k = 0; k < 3; ++k)
+      for (unsigned int k = 0; k < 2; ++k)
         {
-          const double        hk = h / (1 << k);
+          const double        hk = h / (1 << (2 * k));
           std::vector<double> plus, minus;
           if (!perturbed_values(patch, i, hk, exact.polygon_sizes, plus) ||
               !perturbed_values(patch, i, -hk, exact.polygon_sizes, minus))
@@ -281,7 +282,7 @@ namespace
 
     const std::vector<unsigned int> &s    = patch.slave_faces[0].nodes;
     const double                     size = (patch.points[s[3]] - patch.points[s[0]]).norm();
-    std::vector<std::vector<std::array<double, 3>>> errors;
+    std::vector<std::vector<std::array<double, 2>>> errors;
     const bool same_topology = difference_errors(patch, exact, 2e-3 * size, errors);
     std::cout << "  same topology at every perturbed point: " << (same_topology ? "yes" : "NO")
               << std::endl;
@@ -308,15 +309,13 @@ namespace
             for (unsigned int i = 0; i < n; ++i, ++count)
               {
                 const auto  &e         = errors[q][i];
-                const double order_1   = std::log2(e[0] / e[1]);
-                const double order_2   = std::log2(e[1] / e[2]);
+                const double order     = 0.5 * std::log2(e[0] / e[1]);
                 const bool   round_off = e[0] <= 1e-8 * scale[group];
-                const bool   second =
-                  order_1 >= 1.8 && order_1 <= 2.2 && order_2 >= 1.8 && order_2 <= 2.2;
-                worst = std::max(worst, e[2] / scale[group]);
+                const bool   second    = order >= 1.8 && order <= 2.2;
+                worst                  = std::max(worst, e[1] / scale[group]);
                 if (!round_off && !second && ++bad <= 3)
                   std::cout << "    " << group << " #" << q << " coordinate " << i << ": errors "
-                            << e[0] << " " << e[1] << " " << e[2] << std::endl;
+                            << e[0] << " " << e[1] << std::endl;
               }
         std::cout << "  " << group << ": " << count
                   << " derivatives, error at second order or round-off: "
