@@ -200,13 +200,17 @@ def check_3d(contact_fem, scene):
         return [b / a**2 for a, b in zip(ratios, ratios[1:])
                 if a is not None and b is not None and a <= 0.1]
 
-    same = [len(r) for r in current[:3]] == [len(r) for r in small]
-    pairs = [(c, d) for a, b in zip(current[:3], small)
+    # The current run's first update of a step keeps every stick node
+    # sticking (PenaltyFrictional: its predictor is too far off to decide
+    # the slip): one iteration more, then those of Kinematics = small.
+    held = [r[1:] for r in current[:3]]
+    same = [len(r) for r in held] == [len(r) for r in small]
+    pairs = [(c, d) for a, b in zip(held, small)
              for c, d in zip(constants(a), constants(b))]
-    ok = report("3D steps with stick and slip nodes: the iterations of Kinematics = small, each "
-                "r_k / r_(k-1)^2 within a factor 2 of its",
+    ok = report("3D steps with stick and slip nodes: after the held first update the iterations "
+                "of Kinematics = small, each r_k / r_(k-1)^2 within a factor 2 of its",
                 same and pairs and all(0.5 < c / d < 2 for c, d in pairs),
-                f"iterations {[len(r) - 1 for r in current[:3]]} and "
+                f"iterations {[len(r) - 1 for r in held]} and "
                 f"{[len(r) - 1 for r in small]}, constants (current, small) "
                 f"{', '.join(f'({c:.3g}, {d:.3g})' for c, d in pairs)}") and ok
     return ok

@@ -349,6 +349,7 @@ namespace contact_fem
                                           const StepStart              start)
   {
     PenaltyFrictionless<dim>::start_load_step(interface, u, start);
+    updates_in_step = 0;
     if (this->current)
       this->keep_operators_of_new_pairs(interface);
     tangent_penalty.resize(this->penalty.size());
@@ -542,6 +543,7 @@ namespace contact_fem
     // Active set and p_j = eps_n (-g_j) of the new iterate.
     unsigned int changes    = PenaltyFrictionless<dim>::update_active_set(interface, u);
     last_stick_slip_changes = 0;
+    const bool hold_stick   = this->current && ++updates_in_step == 1;
     for (const auto &s : interface.slave_nodes)
       {
         if (!s.paired)
@@ -562,6 +564,10 @@ namespace contact_fem
         // 2, if the direction may flip directly).
         if (was_active[s.node] && old.norm_square() != 0. && direction * old < 0. && !pure_slip &&
             !frictionless_law(s))
+          direction = TangentialVector<dim>();
+        // Current kinematics: the step's first iterate is the stick
+        // problem's linear predictor, too far off to decide who slips.
+        if (hold_stick && old.norm_square() == 0. && !pure_slip && !frictionless_law(s))
           direction = TangentialVector<dim>();
         // Under a law without friction the direction changes nothing.
         if (was_active[s.node] && stick_slip_changed<dim>(old, direction) && !frictionless_law(s))

@@ -50,6 +50,18 @@ namespace contact_fem
    * first instead of reversing at once: with eps_t ~ 1e4 E/h the slip
    * solve of a node that should stick overshoots, and direct reversals
    * swing it between +T and -T forever (period 2).
+   * With Contact/Kinematics = current the stick problem is nonlinear
+   * too, and its first iterate (the step's predictor: the linearised
+   * response to the new Dirichlet data) is off at second order in the
+   * increment; eps_t turns that into trial tractions far outside the cone
+   * (a rigid rotation of 5 degrees per step: nodes that stick slip at
+   * iteration 1, the next correction is 10 to 1e4 times the step's and an
+   * element inverts). So the step's first update keeps every sticking
+   * node sticking: the second solve is the stick problem's Newton step,
+   * and the return mapping decides from its iterate
+   * (doc/finite_strain.md, "Penalty frictional under large rotation
+   * steps"). With small kinematics the stick problem is linear, its first
+   * iterate exact, and the sets are decided at once.
    *
    * A node whose law has no friction (mu = 0, or bound 0) slips with
    * T = 0: exactly the "penalty frictionless" system and results. Nodes
@@ -304,6 +316,9 @@ namespace contact_fem
     std::vector<double> cone_factor;
     /// The elastic-slip warning was printed (once per run).
     mutable bool elastic_slip_warned = false;
+    /// update_active_set() calls since the step's start (current
+    /// kinematics: the first keeps every sticking node sticking).
+    unsigned int updates_in_step = 0;
 
     struct FrictionState : public State
     {
