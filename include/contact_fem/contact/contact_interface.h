@@ -258,9 +258,11 @@ namespace contact_fem
            const double               search_factor,
            const std::vector<double> &motion_allowance = {});
 
-    /// linearised_nodes of the paired slave nodes at the configuration of
-    /// the last update() (contact_interface_linearisation.cc); with the
-    /// quantities of the frictional conditions if @p frictional.
+    /// linearised_nodes of the paired slave nodes whose x DoF this rank
+    /// owns (the rows it assembles), at the configuration of the last
+    /// update() (contact_interface_linearisation.cc); with the quantities
+    /// of the frictional conditions if @p frictional. Only the slave faces
+    /// at those nodes are linearised. Not collective.
     void
     linearise(const bool frictional);
 
@@ -383,7 +385,8 @@ namespace contact_fem
     std::vector<Node>        nodes;
     std::vector<Face>        faces;
     std::vector<SlaveNode>   slave_nodes;
-    /// Per paired slave node (by node index), after linearise().
+    /// Per paired slave node (by node index) whose x DoF this rank owns,
+    /// after linearise().
     std::map<unsigned int, LinearisedNode> linearised_nodes;
     /// The hanging vertices of the slave surfaces at the last search (3D
     /// adaptive meshes): no multiplier, but checked against penetration like
