@@ -255,6 +255,15 @@ namespace contact_fem
     dof_position.clear();
     for (unsigned int i = 0; i < interface_dofs.size(); ++i)
       dof_position[interface_dofs[i]] = i;
+    owned_interface_dofs = IndexSet(owned_dofs.size());
+    ghost_interface_dofs = IndexSet(owned_dofs.size());
+    for (const auto dof : interface_dofs)
+      (owned_dofs.is_element(dof) ? owned_interface_dofs : ghost_interface_dofs).add_index(dof);
+    owned_interface_dofs.compress();
+    ghost_interface_dofs.compress();
+    ghost_import =
+      std::make_shared<const Utilities::MPI::NoncontiguousPartitioner>(owned_interface_dofs,
+                                                                       ghost_interface_dofs, comm);
     fixed_positions.assign(interface_dofs.size(), false);
     for (const auto &node : nodes)
       for (unsigned int d = 0; d < dim; ++d)
@@ -386,14 +395,19 @@ namespace contact_fem
   ContactInterface<dim>::gather(
     const std::function<double(types::global_dof_index)> &value_on_owner) const
   {
-    std::vector<double> values(interface_dofs.size(), 0.);
+    // The owned values, then the ghosts' from their owners: copies, so
+    // every rank has the owners' values exactly.
+    std::vector<double> own, ghosts(ghost_interface_dofs.n_elements());
+    own.reserve(owned_interface_dofs.n_elements());
+    for (const auto dof : owned_interface_dofs)
+      own.push_back(value_on_owner(dof));
+    ghost_import->export_to_ghosted_array(ArrayView<const double>(own), ArrayView<double>(ghosts));
+    // Both sets are sorted, as dofs() is: merge them.
+    std::vector<double> result(interface_dofs.size());
+    unsigned int        next_own = 0, next_ghost = 0;
     for (unsigned int i = 0; i < interface_dofs.size(); ++i)
-      if (owned_dofs.is_element(interface_dofs[i]))
-        values[i] = value_on_owner(interface_dofs[i]);
-    // Each value has exactly one owner, so the sum is exact.
-    std::vector<double> result(values.size());
-    Utilities::MPI::sum(ArrayView<const double>(values), mpi_communicator,
-                        ArrayView<double>(result));
+      result[i] =
+        owned_interface_dofs.is_element(interface_dofs[i]) ? own[next_own++] : ghosts[next_ghost++];
     return result;
   }
 

@@ -537,9 +537,13 @@ namespace contact_fem
       std::vector<Tensor<1, dim>> u(nodes.size());
       for (unsigned int n = 0; n < nodes.size(); ++n)
         u[n] = displacement(n, search_displacement);
+      // Only the nodes whose rows this rank assembles (x DoF owned, as the
+      // formulations test): a node's sums are those of its own slave faces
+      // in face order, whichever other nodes are left out, so they are the
+      // serial ones bit for bit.
       std::map<unsigned int, NodeSums> sums;
       for (const auto &s : slave_nodes)
-        if (s.paired)
+        if (s.paired && owned_dofs.is_element(nodes[s.node].dofs[0]))
           sums[s.node];
       // The slave faces at every node, and the masters of every slave face.
       std::map<unsigned int, std::vector<unsigned int>> faces_of_node, masters_of_face;
@@ -555,8 +559,24 @@ namespace contact_fem
             slave_faces.push_back(f);
           masters_of_face[f].push_back(m);
         }
+      // A face adds to its nodes and to the owners of its trace (the
+      // parents of its hanging vertices); one adding to none of the sums
+      // is skipped.
+      const auto adds_to_sums = [&](const unsigned int f) {
+        for (const unsigned int n : faces[f].nodes)
+          {
+            if (sums.count(n) > 0)
+              return true;
+            for (const auto &[parent, weight] : nodes[n].parents)
+              if (sums.count(parent) > 0)
+                return true;
+          }
+        return false;
+      };
       for (const unsigned int f : slave_faces)
         {
+          if (!adds_to_sums(f))
+            continue;
           std::set<unsigned int> neighbours;
           for (const unsigned int n : faces[f].nodes)
             for (const unsigned int g : faces_of_node[n])

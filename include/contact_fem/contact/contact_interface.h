@@ -4,6 +4,7 @@
 #define contact_fem_contact_interface_h
 
 #include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi_noncontiguous_partitioner.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -18,6 +19,7 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -239,11 +241,14 @@ namespace contact_fem
     }
 
     /// The values of @p v at dofs(), from their owners, on every rank.
+    /// Collective.
     std::vector<double>
     gather(const TrilinosWrappers::MPI::Vector &v) const;
 
     /// The values of @p value_on_owner at dofs(), evaluated by the owner of
-    /// each DoF, on every rank.
+    /// each DoF, on every rank: each rank evaluates the DoFs it owns and
+    /// imports the others from their owners (point to point, the pattern
+    /// built once per mesh). Collective.
     std::vector<double>
     gather(const std::function<double(types::global_dof_index)> &value_on_owner) const;
 
@@ -258,9 +263,11 @@ namespace contact_fem
            const double               search_factor,
            const std::vector<double> &motion_allowance = {});
 
-    /// linearised_nodes of the paired slave nodes at the configuration of
-    /// the last update() (contact_interface_linearisation.cc); with the
-    /// quantities of the frictional conditions if @p frictional.
+    /// linearised_nodes of the paired slave nodes whose x DoF this rank
+    /// owns (the rows it assembles), at the configuration of the last
+    /// update() (contact_interface_linearisation.cc); with the quantities
+    /// of the frictional conditions if @p frictional. Only the slave faces
+    /// at those nodes are linearised. Not collective.
     void
     linearise(const bool frictional);
 
@@ -383,7 +390,8 @@ namespace contact_fem
     std::vector<Node>        nodes;
     std::vector<Face>        faces;
     std::vector<SlaveNode>   slave_nodes;
-    /// Per paired slave node (by node index), after linearise().
+    /// Per paired slave node (by node index) whose x DoF this rank owns,
+    /// after linearise().
     std::map<unsigned int, LinearisedNode> linearised_nodes;
     /// The hanging vertices of the slave surfaces at the last search (3D
     /// adaptive meshes): no multiplier, but checked against penetration like
@@ -586,7 +594,13 @@ namespace contact_fem
     std::map<types::global_dof_index, unsigned int> dof_position;
     std::vector<bool>                               fixed_positions; ///< by position in dofs()
     IndexSet                                        owned_dofs;
-    MPI_Comm                                        mpi_communicator;
+    /// The DoFs of dofs() this rank owns, the others (its ghosts), and the
+    /// import of the ghosts' values from their owners (gather()); shared
+    /// by copies of the interface, since it does not change until the next
+    /// initialize().
+    IndexSet owned_interface_dofs, ghost_interface_dofs;
+    std::shared_ptr<const Utilities::MPI::NoncontiguousPartitioner> ghost_import;
+    MPI_Comm                                                        mpi_communicator;
   };
   // The tiling checks differ by dimension (contact_interface_tiling.cc).
   template <>
