@@ -823,23 +823,35 @@ namespace contact_fem
       /// along n0 in numbers of type Number, a coordinate on the slave
       /// boundary held there. Exact for bilinear faces, whose edges project
       /// to the chords (a crossing of a curved edge: crossing_parameter()).
+      /// @p projected: the projection before overlap() put it on the
+      /// boundary, where the implicit-function step is taken. A vertex
+      /// between a boundary chord and a curved edge that bends inward
+      /// projects outside the face (a master node just inside the chord:
+      /// the rim of a hanging master edge whose chords differ from its
+      /// neighbour's) and is put on the boundary; the step taken there
+      /// instead of at the projection gave the free coordinate the
+      /// derivative of another point (errors of 1e-3 of D's scale).
       template <typename Face, typename Number>
       Point<2, Number>
       vertex_parameter(const Face                     &slave,
                        const QuadFace                 &slave_values,
                        const AuxiliaryPlaneOf<Number> &plane,
                        const Point<2, Number>         &u,
-                       const Point<2>                 &xi_value)
+                       const Point<2>                 &xi_value,
+                       const Point<2>                 &projected)
       {
         if constexpr (std::is_same_v<Number, double>)
           return xi_value;
         else
           {
             Point<2, Number> xi =
-              projected_parameter(slave, slave_values, plane.point(u), plane.normal, xi_value);
+              projected_parameter(slave, slave_values, plane.point(u), plane.normal, projected);
             for (unsigned int d = 0; d < 2; ++d)
-              if (std::abs(xi_value[d]) == 1.)
-                xi[d] = Number(xi_value[d]);
+              {
+                if (std::abs(xi_value[d]) == 1.)
+                  xi[d] = Number(xi_value[d]);
+                xi[d].val() = xi_value[d];
+              }
             return xi;
           }
       }
@@ -915,8 +927,9 @@ namespace contact_fem
       /// @p piece after @p prev and before @p next (overlap()): where a
       /// master edge crosses the slave edge for a vertex inside a boundary
       /// chord (described in @p crossing), the projection along n0
-      /// otherwise, put on the boundary within 1e-10. False if it does not
-      /// project.
+      /// otherwise, put on the boundary within 1e-10 or beyond it; @p
+      /// projected: the parameter before that.
+      /// False if it does not project.
       bool
       vertex_parameter_value(const QuadFace                   &slave,
                              const AuxiliaryPlane             &plane,
@@ -925,6 +938,7 @@ namespace contact_fem
                              const Point<2>                   &prev,
                              const Point<2>                   &next,
                              Point<2>                         &xi,
+                             Point<2>                         &projected,
                              EdgeCrossing                     &crossing)
       {
         // A vertex inside a boundary chord, between a neighbour on the
@@ -951,6 +965,7 @@ namespace contact_fem
           }
         if (!crossing.found && !project_along(slave, plane.point(u), plane.normal, xi))
           return false;
+        projected = xi;
         // Vertices on the slave boundary come back up to round-off:
         // put them on it (for_each_point() recognises its edges).
         for (unsigned int d = 0; d < 2; ++d)
@@ -1031,12 +1046,13 @@ namespace contact_fem
           ParameterPolygon           polygon_values;
           for (unsigned int k = 0; k < piece.size(); ++k)
             {
-              Point<2>           xi;
+              Point<2>           xi, projected;
               EdgeCrossing       crossing;
               const unsigned int prev = (k + values.size() - 1) % values.size(),
                                  next = (k + 1) % values.size();
               if (!vertex_parameter_value(slave_values, plane_values, chords, values[k],
-                                          values[prev], values[next], xi, crossing))
+                                          values[prev], values[next], xi, projected,
+                                          crossing))
                 {
                   polygons.clear();
                   return false;
@@ -1052,7 +1068,7 @@ namespace contact_fem
                       crossing_parameter(slave, slave_values, plane, chords[crossing.chord],
                                          crossing, piece[k],
                                          piece[crossing.other_is_next ? next : prev], xi) :
-                      vertex_parameter(slave, slave_values, plane, piece[k], xi));
+                      vertex_parameter(slave, slave_values, plane, piece[k], xi, projected));
                 }
             }
           while (polygon_values.size() > 1 &&
