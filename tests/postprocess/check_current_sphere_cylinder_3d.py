@@ -243,6 +243,7 @@ def frictional(contact_fem, scene, mesh_script):
 
 def main():
     contact_fem, scene, script, mode = sys.argv[1:5]
+    sys.dont_write_bytecode = True  # no __pycache__ in the source tree's meshes/
     spec = importlib.util.spec_from_file_location("sphere_on_cylinder_3d", script)
     mesh_script = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mesh_script)
