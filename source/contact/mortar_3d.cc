@@ -236,8 +236,8 @@ namespace contact_fem
             for (unsigned int k = 0; k < input.size(); ++k)
               {
                 const Point<2, Number> &p = input[k], &q = input[(k + 1) % input.size()];
-                const Number sp = cross_2d(edge, Tensor<1, 2, Number>(p - a)),
-                             sq = cross_2d(edge, Tensor<1, 2, Number>(q - a));
+                const Number            sp = cross_2d(edge, Tensor<1, 2, Number>(p - a)),
+                             sq            = cross_2d(edge, Tensor<1, 2, Number>(q - a));
                 const bool p_in = value_of(sp) >= 0., q_in = value_of(sq) >= 0.;
                 if (p_in)
                   result.push_back(p);
@@ -343,8 +343,7 @@ namespace contact_fem
           if constexpr (std::is_same_v<Number, double>)
             return *this;
           else
-            return {point_value(origin), vector_value(normal), vector_value(e1),
-                    vector_value(e2)};
+            return {point_value(origin), vector_value(normal), vector_value(e1), vector_value(e2)};
         }
       };
       using AuxiliaryPlane = AuxiliaryPlaneOf<double>;
@@ -399,8 +398,9 @@ namespace contact_fem
                 J[i][2] = -dv[i];
               }
             const Tensor<2, 3>   J_inverse = invert(J);
-            Tensor<1, 3, Number> r = face.point(Point<2, Number>(Number(eta[0]), Number(eta[1]))) - x;
-            const double         along = (vector_value(r) * dv) / dv.norm_square();
+            Tensor<1, 3, Number> r =
+              face.point(Point<2, Number>(Number(eta[0]), Number(eta[1]))) - x;
+            const double along = (vector_value(r) * dv) / dv.norm_square();
             r -= along * d;
             Point<2, Number> result;
             for (unsigned int c = 0; c < 2; ++c)
@@ -564,11 +564,10 @@ namespace contact_fem
                       {
                         const Point<2, Number>     xi = xa + v * (xb - xa);
                         const auto                 t  = slave.tangents(xi);
-                        const Tensor<1, 3, Number> T =
-                          (xb - xa)[0] * t[0] + (xb - xa)[1] * t[1];
-                        E     = plane.coordinates(slave.point(xi));
-                        dE[0] = T * plane.e1;
-                        dE[1] = T * plane.e2;
+                        const Tensor<1, 3, Number> T  = (xb - xa)[0] * t[0] + (xb - xa)[1] * t[1];
+                        E                             = plane.coordinates(slave.point(xi));
+                        dE[0]                         = T * plane.e1;
+                        dE[1]                         = T * plane.e2;
                       }
                     else
                       {
@@ -591,9 +590,8 @@ namespace contact_fem
                         // Plane area to slave area: |t_xi x t_eta| / |n0 . (t_xi x t_eta)|.
                         const auto                 t  = slave.tangents(xi);
                         const Tensor<1, 3, Number> nt = cross_product_3d(t[0], t[1]);
-                        const Number               jxw =
-                          gauss.weight(i) * gauss.weight(j) * u * det * length(nt) /
-                          abs_of(Number(nt * plane.normal));
+                        const Number jxw = gauss.weight(i) * gauss.weight(j) * u * det *
+                                           length(nt) / abs_of(Number(nt * plane.normal));
                         f(xi, jxw);
                       }
                   }
@@ -944,8 +942,8 @@ namespace contact_fem
               continue;
             crossing.chord         = k;
             crossing.other_is_next = on_line(prev);
-            const Point<2> &along = on_line(prev) ? prev : next,
-                           &other = on_line(prev) ? next : prev;
+            const Point<2> &along  = on_line(prev) ? prev : next,
+                           &other  = on_line(prev) ? next : prev;
             crossing.found = edge_crossing(slave, plane, chord, u, along, other, xi, crossing.s);
             break;
           }
@@ -1115,21 +1113,20 @@ namespace contact_fem
         result.overlap_area = 0.;
 
         std::vector<Number>            phi(ns);
-        const AuxiliaryPlaneOf<Number> plane     = auxiliary_plane(slave, slave_normals);
-        const auto                     add_point = [&](const Point<2, Number> &xi,
-                                   const Number           &jxw) {
+        const AuxiliaryPlaneOf<Number> plane = auxiliary_plane(slave, slave_normals);
+        const auto add_point                 = [&](const Point<2, Number> &xi, const Number &jxw) {
           const Point<3, Number>     x_slave = slave.point(xi);
           const Tensor<1, 3, Number> n       = interpolated_normal(slave, slave_normals, xi);
           Point<2>                   eta_value;
           // The overlap's points project onto the master: a failure here is
           // not a geometric fact, and skipping the point would shrink D.
           AssertThrow(project_along(master_values, point_value(x_slave), vector_value(n),
-                                    eta_value),
-                      ExcMessage("Mortar integration: a quadrature point of the slave face "
-                                 "centred at " +
-                                 coordinates_text(slave_values.point(Point<2>())) +
-                                 " does not project onto the master face centred at " +
-                                 coordinates_text(master_values.point(Point<2>())) + "."));
+                                                    eta_value),
+                                      ExcMessage("Mortar integration: a quadrature point of the slave face "
+                                                                 "centred at " +
+                                                 coordinates_text(slave_values.point(Point<2>())) +
+                                                 " does not project onto the master face centred at " +
+                                                 coordinates_text(master_values.point(Point<2>())) + "."));
           // The segmentation projected along n0, the normal field may differ
           // slightly: stay on the master face (partition of unity kept).
           const Point<2, Number> eta =
@@ -1137,8 +1134,7 @@ namespace contact_fem
           const Tensor<1, 3, Number> separation = master.point(eta) - x_slave;
 
           result.overlap_area += jxw;
-          add_quadrature_point<3>(dual_coefficients, ps, pm, xi, eta, jxw, separation, phi,
-                                  result);
+          add_quadrature_point<3>(dual_coefficients, ps, pm, xi, eta, jxw, separation, phi, result);
         };
         for_each_point(slave, slave_values, plane, polygons, n_quadrature_points, add_point);
       }
@@ -1185,8 +1181,8 @@ namespace contact_fem
                             Table<2, Number>                              &Me)
     {
       const unsigned int p = slave.shape_degree(), n = slave.n_shape_nodes();
-      for_each_point(slave, slave_values, auxiliary_plane(slave, slave_normals), polygons,
-                     p + 5, [&](const Point<2, Number> &xi, const Number &jxw) {
+      for_each_point(slave, slave_values, auxiliary_plane(slave, slave_normals), polygons, p + 5,
+                     [&](const Point<2, Number> &xi, const Number &jxw) {
                        for (unsigned int j = 0; j < n; ++j)
                          {
                            const Number Nj = quad_shape_value_of(p, j, xi);
