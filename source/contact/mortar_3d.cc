@@ -398,9 +398,8 @@ namespace contact_fem
                 J[i][2] = -dv[i];
               }
             const Tensor<2, 3>   J_inverse = invert(J);
-            Tensor<1, 3, Number> r =
-              face.point(Point<2, Number>(Number(eta[0]), Number(eta[1]))) - x;
-            const double along = (vector_value(r) * dv) / dv.norm_square();
+            Tensor<1, 3, Number> r         = face.point(eta) - x;
+            const double         along     = (vector_value(r) * dv) / dv.norm_square();
             r -= along * d;
             Point<2, Number> result;
             for (unsigned int c = 0; c < 2; ++c)
@@ -651,9 +650,20 @@ namespace contact_fem
     QuadFace::point(const Point<2> &xi) const
     {
       Assert(nodes.size() == 4 || nodes.size() == 9, ExcNotImplemented());
+      // The 1D shapes once per direction (the nodes share them).
+      const unsigned int    p = degree();
+      std::array<double, 3> l0, l1;
+      for (unsigned int a = 0; a <= p; ++a)
+        {
+          l0[a] = shape_value(p, a, xi[0]);
+          l1[a] = shape_value(p, a, xi[1]);
+        }
       Point<3> x;
       for (unsigned int i = 0; i < nodes.size(); ++i)
-        x += quad_shape_value(degree(), i, xi) * nodes[i];
+        {
+          const auto [a, b] = line_indices(p, i);
+          x += (l0[a] * l1[b]) * nodes[i];
+        }
       return x;
     }
 
@@ -661,12 +671,21 @@ namespace contact_fem
     QuadFace::tangents(const Point<2> &xi) const
     {
       Assert(nodes.size() == 4 || nodes.size() == 9, ExcNotImplemented());
+      const unsigned int    p = degree();
+      std::array<double, 3> l0, l1, dl0, dl1;
+      for (unsigned int a = 0; a <= p; ++a)
+        {
+          l0[a]  = shape_value(p, a, xi[0]);
+          l1[a]  = shape_value(p, a, xi[1]);
+          dl0[a] = shape_derivative(p, a, xi[0]);
+          dl1[a] = shape_derivative(p, a, xi[1]);
+        }
       std::array<Tensor<1, 3>, 2> t;
       for (unsigned int i = 0; i < nodes.size(); ++i)
         {
-          const Tensor<1, 2> g = quad_shape_gradient(degree(), i, xi);
-          t[0] += g[0] * nodes[i];
-          t[1] += g[1] * nodes[i];
+          const auto [a, b] = line_indices(p, i);
+          t[0] += (dl0[a] * l1[b]) * nodes[i];
+          t[1] += (l0[a] * dl1[b]) * nodes[i];
         }
       return t;
     }
@@ -883,9 +902,7 @@ namespace contact_fem
             const Point<2>             xi_s = chord.xi_a + crossing.s * dxi;
             const Tensor<1, 2, Number> d    = other - u;
             const Number               f =
-              cross_2d(d,
-                       Tensor<1, 2, Number>(
-                         plane.coordinates(slave.point(Point<2, Number>(xi_s[0], xi_s[1]))) - u));
+              cross_2d(d, Tensor<1, 2, Number>(plane.coordinates(slave.point(xi_s)) - u));
             const auto           t            = slave_values.tangents(xi_s);
             const Tensor<1, 3>   T            = dxi[0] * t[0] + dxi[1] * t[1];
             const AuxiliaryPlane plane_values = plane.values();
@@ -1105,7 +1122,7 @@ namespace contact_fem
         result.D.assign(ns, Number(0.));
         result.weighted_gap.assign(ns, Tensor<1, 3, Number>());
         // Filled explicitly: Table leaves the derivatives of a
-        // PairADNumber (SFad) uninitialised.
+        // FixedADNumber (SFad) uninitialised.
         result.M.reinit(ns, nm);
         for (unsigned int j = 0; j < ns; ++j)
           for (unsigned int l = 0; l < nm; ++l)
@@ -1180,17 +1197,24 @@ namespace contact_fem
                             Table<2, Number>                              &De,
                             Table<2, Number>                              &Me)
     {
-      const unsigned int p = slave.shape_degree(), n = slave.n_shape_nodes();
+      const unsigned int  p = slave.shape_degree(), n = slave.n_shape_nodes();
+      std::vector<Number> N(n);
       for_each_point(slave, slave_values, auxiliary_plane(slave, slave_normals), polygons, p + 5,
                      [&](const Point<2, Number> &xi, const Number &jxw) {
+                       for (unsigned int k = 0; k < n; ++k)
+                         N[k] = quad_shape_value_of(p, k, xi);
+                       // M_e is symmetric: N_j N_k and N_k N_j are the same
+                       // number (products and sums commute exactly).
                        for (unsigned int j = 0; j < n; ++j)
                          {
-                           const Number Nj = quad_shape_value_of(p, j, xi);
-                           De(j, j) += Nj * jxw;
-                           for (unsigned int k = 0; k < n; ++k)
-                             Me(j, k) += Nj * quad_shape_value_of(p, k, xi) * jxw;
+                           De(j, j) += N[j] * jxw;
+                           for (unsigned int k = j; k < n; ++k)
+                             Me(j, k) += N[j] * N[k] * jxw;
                          }
                      });
+      for (unsigned int j = 0; j < n; ++j)
+        for (unsigned int k = 0; k < j; ++k)
+          Me(j, k) = Me(k, j);
     }
 
     template bool
@@ -1217,53 +1241,25 @@ namespace contact_fem
                                     Table<2, double> &,
                                     Table<2, double> &);
 
-    using ADNumber = Sacado::Fad::DFad<double>;
-    template bool
-    overlap_of<ADNumber>(const QuadFaceOf<ADNumber> &,
-                         const QuadFace &,
-                         const std::vector<Tensor<1, 3, ADNumber>> &,
-                         const QuadFaceOf<ADNumber> &,
-                         std::vector<ParameterPolygonOf<ADNumber>> &);
-    template void
-    integrate_polygons_of<ADNumber>(const QuadFaceOf<ADNumber> &,
-                                    const QuadFace &,
-                                    const std::vector<Tensor<1, 3, ADNumber>> &,
-                                    const Table<2, ADNumber> &,
-                                    const QuadFaceOf<ADNumber> &,
-                                    const QuadFace &,
-                                    const unsigned int,
-                                    const std::vector<ParameterPolygonOf<ADNumber>> &,
-                                    QuadOperatorsOf<ADNumber> &);
-    template void
-    dual_basis_integrals_of<ADNumber>(const QuadFaceOf<ADNumber> &,
-                                      const QuadFace &,
-                                      const std::vector<Tensor<1, 3, ADNumber>> &,
-                                      const std::vector<ParameterPolygonOf<ADNumber>> &,
-                                      Table<2, ADNumber> &,
-                                      Table<2, ADNumber> &);
-    template bool
-    overlap_of<PairADNumber>(const QuadFaceOf<PairADNumber> &,
-                             const QuadFace &,
-                             const std::vector<Tensor<1, 3, PairADNumber>> &,
-                             const QuadFaceOf<PairADNumber> &,
-                             std::vector<ParameterPolygonOf<PairADNumber>> &);
-    template void
-    integrate_polygons_of<PairADNumber>(const QuadFaceOf<PairADNumber> &,
-                                        const QuadFace &,
-                                        const std::vector<Tensor<1, 3, PairADNumber>> &,
-                                        const Table<2, PairADNumber> &,
-                                        const QuadFaceOf<PairADNumber> &,
-                                        const QuadFace &,
-                                        const unsigned int,
-                                        const std::vector<ParameterPolygonOf<PairADNumber>> &,
-                                        QuadOperatorsOf<PairADNumber> &);
-    template void
-    dual_basis_integrals_of<PairADNumber>(const QuadFaceOf<PairADNumber> &,
-                                          const QuadFace &,
-                                          const std::vector<Tensor<1, 3, PairADNumber>> &,
-                                          const std::vector<ParameterPolygonOf<PairADNumber>> &,
-                                          Table<2, PairADNumber> &,
-                                          Table<2, PairADNumber> &);
+    // The AD numbers of linearise_slave_face(), by the pair's number of
+    // variables.
+#define CONTACT_FEM_INSTANTIATE_AD(Number)                                                       \
+  template bool overlap_of<Number>(const QuadFaceOf<Number> &, const QuadFace &,                 \
+                                   const std::vector<Tensor<1, 3, Number>> &,                    \
+                                   const QuadFaceOf<Number> &,                                   \
+                                   std::vector<ParameterPolygonOf<Number>> &);                   \
+  template void integrate_polygons_of<Number>(                                                   \
+    const QuadFaceOf<Number> &, const QuadFace &, const std::vector<Tensor<1, 3, Number>> &,     \
+    const Table<2, Number> &, const QuadFaceOf<Number> &, const QuadFace &, const unsigned int,  \
+    const std::vector<ParameterPolygonOf<Number>> &, QuadOperatorsOf<Number> &);                 \
+  template void dual_basis_integrals_of<Number>(const QuadFaceOf<Number> &, const QuadFace &,    \
+                                                const std::vector<Tensor<1, 3, Number>> &,       \
+                                                const std::vector<ParameterPolygonOf<Number>> &, \
+                                                Table<2, Number> &, Table<2, Number> &)
+    CONTACT_FEM_INSTANTIATE_AD(PairADNumber);
+    CONTACT_FEM_INSTANTIATE_AD(CurvedPairADNumber);
+    CONTACT_FEM_INSTANTIATE_AD(QuadraticPairADNumber);
+#undef CONTACT_FEM_INSTANTIATE_AD
 
     Point<2>
     closest_parameter(const QuadFace &quad, const Point<3> &x)
