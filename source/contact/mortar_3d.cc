@@ -236,8 +236,8 @@ namespace contact_fem
             for (unsigned int k = 0; k < input.size(); ++k)
               {
                 const Point<2, Number> &p = input[k], &q = input[(k + 1) % input.size()];
-                const Number sp = cross_2d(edge, Tensor<1, 2, Number>(p - a)),
-                             sq = cross_2d(edge, Tensor<1, 2, Number>(q - a));
+                const Number            sp = cross_2d(edge, Tensor<1, 2, Number>(p - a)),
+                             sq            = cross_2d(edge, Tensor<1, 2, Number>(q - a));
                 const bool p_in = value_of(sp) >= 0., q_in = value_of(sq) >= 0.;
                 if (p_in)
                   result.push_back(p);
@@ -343,8 +343,7 @@ namespace contact_fem
           if constexpr (std::is_same_v<Number, double>)
             return *this;
           else
-            return {point_value(origin), vector_value(normal), vector_value(e1),
-                    vector_value(e2)};
+            return {point_value(origin), vector_value(normal), vector_value(e1), vector_value(e2)};
         }
       };
       using AuxiliaryPlane = AuxiliaryPlaneOf<double>;
@@ -399,8 +398,8 @@ namespace contact_fem
                 J[i][2] = -dv[i];
               }
             const Tensor<2, 3>   J_inverse = invert(J);
-            Tensor<1, 3, Number> r = face.point(Point<2, Number>(Number(eta[0]), Number(eta[1]))) - x;
-            const double         along = (vector_value(r) * dv) / dv.norm_square();
+            Tensor<1, 3, Number> r         = face.point(eta) - x;
+            const double         along     = (vector_value(r) * dv) / dv.norm_square();
             r -= along * d;
             Point<2, Number> result;
             for (unsigned int c = 0; c < 2; ++c)
@@ -564,11 +563,10 @@ namespace contact_fem
                       {
                         const Point<2, Number>     xi = xa + v * (xb - xa);
                         const auto                 t  = slave.tangents(xi);
-                        const Tensor<1, 3, Number> T =
-                          (xb - xa)[0] * t[0] + (xb - xa)[1] * t[1];
-                        E     = plane.coordinates(slave.point(xi));
-                        dE[0] = T * plane.e1;
-                        dE[1] = T * plane.e2;
+                        const Tensor<1, 3, Number> T  = (xb - xa)[0] * t[0] + (xb - xa)[1] * t[1];
+                        E                             = plane.coordinates(slave.point(xi));
+                        dE[0]                         = T * plane.e1;
+                        dE[1]                         = T * plane.e2;
                       }
                     else
                       {
@@ -591,9 +589,8 @@ namespace contact_fem
                         // Plane area to slave area: |t_xi x t_eta| / |n0 . (t_xi x t_eta)|.
                         const auto                 t  = slave.tangents(xi);
                         const Tensor<1, 3, Number> nt = cross_product_3d(t[0], t[1]);
-                        const Number               jxw =
-                          gauss.weight(i) * gauss.weight(j) * u * det * length(nt) /
-                          abs_of(Number(nt * plane.normal));
+                        const Number jxw = gauss.weight(i) * gauss.weight(j) * u * det *
+                                           length(nt) / abs_of(Number(nt * plane.normal));
                         f(xi, jxw);
                       }
                   }
@@ -653,9 +650,20 @@ namespace contact_fem
     QuadFace::point(const Point<2> &xi) const
     {
       Assert(nodes.size() == 4 || nodes.size() == 9, ExcNotImplemented());
+      // The 1D shapes once per direction (the nodes share them).
+      const unsigned int    p = degree();
+      std::array<double, 3> l0, l1;
+      for (unsigned int a = 0; a <= p; ++a)
+        {
+          l0[a] = shape_value(p, a, xi[0]);
+          l1[a] = shape_value(p, a, xi[1]);
+        }
       Point<3> x;
       for (unsigned int i = 0; i < nodes.size(); ++i)
-        x += quad_shape_value(degree(), i, xi) * nodes[i];
+        {
+          const auto [a, b] = line_indices(p, i);
+          x += (l0[a] * l1[b]) * nodes[i];
+        }
       return x;
     }
 
@@ -663,12 +671,21 @@ namespace contact_fem
     QuadFace::tangents(const Point<2> &xi) const
     {
       Assert(nodes.size() == 4 || nodes.size() == 9, ExcNotImplemented());
+      const unsigned int    p = degree();
+      std::array<double, 3> l0, l1, dl0, dl1;
+      for (unsigned int a = 0; a <= p; ++a)
+        {
+          l0[a]  = shape_value(p, a, xi[0]);
+          l1[a]  = shape_value(p, a, xi[1]);
+          dl0[a] = shape_derivative(p, a, xi[0]);
+          dl1[a] = shape_derivative(p, a, xi[1]);
+        }
       std::array<Tensor<1, 3>, 2> t;
       for (unsigned int i = 0; i < nodes.size(); ++i)
         {
-          const Tensor<1, 2> g = quad_shape_gradient(degree(), i, xi);
-          t[0] += g[0] * nodes[i];
-          t[1] += g[1] * nodes[i];
+          const auto [a, b] = line_indices(p, i);
+          t[0] += (dl0[a] * l1[b]) * nodes[i];
+          t[1] += (l0[a] * dl1[b]) * nodes[i];
         }
       return t;
     }
@@ -897,9 +914,7 @@ namespace contact_fem
             const Point<2>             xi_s = chord.xi_a + crossing.s * dxi;
             const Tensor<1, 2, Number> d    = other - u;
             const Number               f =
-              cross_2d(d,
-                       Tensor<1, 2, Number>(
-                         plane.coordinates(slave.point(Point<2, Number>(xi_s[0], xi_s[1]))) - u));
+              cross_2d(d, Tensor<1, 2, Number>(plane.coordinates(slave.point(xi_s)) - u));
             const auto           t            = slave_values.tangents(xi_s);
             const Tensor<1, 3>   T            = dxi[0] * t[0] + dxi[1] * t[1];
             const AuxiliaryPlane plane_values = plane.values();
@@ -958,8 +973,8 @@ namespace contact_fem
               continue;
             crossing.chord         = k;
             crossing.other_is_next = on_line(prev);
-            const Point<2> &along = on_line(prev) ? prev : next,
-                           &other = on_line(prev) ? next : prev;
+            const Point<2> &along  = on_line(prev) ? prev : next,
+                           &other  = on_line(prev) ? next : prev;
             crossing.found = edge_crossing(slave, plane, chord, u, along, other, xi, crossing.s);
             break;
           }
@@ -1123,7 +1138,7 @@ namespace contact_fem
         result.D.assign(ns, Number(0.));
         result.weighted_gap.assign(ns, Tensor<1, 3, Number>());
         // Filled explicitly: Table leaves the derivatives of a
-        // PairADNumber (SFad) uninitialised.
+        // FixedADNumber (SFad) uninitialised.
         result.M.reinit(ns, nm);
         for (unsigned int j = 0; j < ns; ++j)
           for (unsigned int l = 0; l < nm; ++l)
@@ -1131,21 +1146,20 @@ namespace contact_fem
         result.overlap_area = 0.;
 
         std::vector<Number>            phi(ns);
-        const AuxiliaryPlaneOf<Number> plane     = auxiliary_plane(slave, slave_normals);
-        const auto                     add_point = [&](const Point<2, Number> &xi,
-                                   const Number           &jxw) {
+        const AuxiliaryPlaneOf<Number> plane = auxiliary_plane(slave, slave_normals);
+        const auto add_point                 = [&](const Point<2, Number> &xi, const Number &jxw) {
           const Point<3, Number>     x_slave = slave.point(xi);
           const Tensor<1, 3, Number> n       = interpolated_normal(slave, slave_normals, xi);
           Point<2>                   eta_value;
           // The overlap's points project onto the master: a failure here is
           // not a geometric fact, and skipping the point would shrink D.
           AssertThrow(project_along(master_values, point_value(x_slave), vector_value(n),
-                                    eta_value),
-                      ExcMessage("Mortar integration: a quadrature point of the slave face "
-                                 "centred at " +
-                                 coordinates_text(slave_values.point(Point<2>())) +
-                                 " does not project onto the master face centred at " +
-                                 coordinates_text(master_values.point(Point<2>())) + "."));
+                                                    eta_value),
+                                      ExcMessage("Mortar integration: a quadrature point of the slave face "
+                                                                 "centred at " +
+                                                 coordinates_text(slave_values.point(Point<2>())) +
+                                                 " does not project onto the master face centred at " +
+                                                 coordinates_text(master_values.point(Point<2>())) + "."));
           // The segmentation projected along n0, the normal field may differ
           // slightly: stay on the master face (partition of unity kept).
           const Point<2, Number> eta =
@@ -1153,8 +1167,7 @@ namespace contact_fem
           const Tensor<1, 3, Number> separation = master.point(eta) - x_slave;
 
           result.overlap_area += jxw;
-          add_quadrature_point<3>(dual_coefficients, ps, pm, xi, eta, jxw, separation, phi,
-                                  result);
+          add_quadrature_point<3>(dual_coefficients, ps, pm, xi, eta, jxw, separation, phi, result);
         };
         for_each_point(slave, slave_values, plane, polygons, n_quadrature_points, add_point);
       }
@@ -1200,17 +1213,24 @@ namespace contact_fem
                             Table<2, Number>                              &De,
                             Table<2, Number>                              &Me)
     {
-      const unsigned int p = slave.shape_degree(), n = slave.n_shape_nodes();
-      for_each_point(slave, slave_values, auxiliary_plane(slave, slave_normals), polygons,
-                     p + 5, [&](const Point<2, Number> &xi, const Number &jxw) {
+      const unsigned int  p = slave.shape_degree(), n = slave.n_shape_nodes();
+      std::vector<Number> N(n);
+      for_each_point(slave, slave_values, auxiliary_plane(slave, slave_normals), polygons, p + 5,
+                     [&](const Point<2, Number> &xi, const Number &jxw) {
+                       for (unsigned int k = 0; k < n; ++k)
+                         N[k] = quad_shape_value_of(p, k, xi);
+                       // M_e is symmetric: N_j N_k and N_k N_j are the same
+                       // number (products and sums commute exactly).
                        for (unsigned int j = 0; j < n; ++j)
                          {
-                           const Number Nj = quad_shape_value_of(p, j, xi);
-                           De(j, j) += Nj * jxw;
-                           for (unsigned int k = 0; k < n; ++k)
-                             Me(j, k) += Nj * quad_shape_value_of(p, k, xi) * jxw;
+                           De(j, j) += N[j] * jxw;
+                           for (unsigned int k = j; k < n; ++k)
+                             Me(j, k) += N[j] * N[k] * jxw;
                          }
                      });
+      for (unsigned int j = 0; j < n; ++j)
+        for (unsigned int k = 0; k < j; ++k)
+          Me(j, k) = Me(k, j);
     }
 
     template bool
@@ -1237,53 +1257,25 @@ namespace contact_fem
                                     Table<2, double> &,
                                     Table<2, double> &);
 
-    using ADNumber = Sacado::Fad::DFad<double>;
-    template bool
-    overlap_of<ADNumber>(const QuadFaceOf<ADNumber> &,
-                         const QuadFace &,
-                         const std::vector<Tensor<1, 3, ADNumber>> &,
-                         const QuadFaceOf<ADNumber> &,
-                         std::vector<ParameterPolygonOf<ADNumber>> &);
-    template void
-    integrate_polygons_of<ADNumber>(const QuadFaceOf<ADNumber> &,
-                                    const QuadFace &,
-                                    const std::vector<Tensor<1, 3, ADNumber>> &,
-                                    const Table<2, ADNumber> &,
-                                    const QuadFaceOf<ADNumber> &,
-                                    const QuadFace &,
-                                    const unsigned int,
-                                    const std::vector<ParameterPolygonOf<ADNumber>> &,
-                                    QuadOperatorsOf<ADNumber> &);
-    template void
-    dual_basis_integrals_of<ADNumber>(const QuadFaceOf<ADNumber> &,
-                                      const QuadFace &,
-                                      const std::vector<Tensor<1, 3, ADNumber>> &,
-                                      const std::vector<ParameterPolygonOf<ADNumber>> &,
-                                      Table<2, ADNumber> &,
-                                      Table<2, ADNumber> &);
-    template bool
-    overlap_of<PairADNumber>(const QuadFaceOf<PairADNumber> &,
-                             const QuadFace &,
-                             const std::vector<Tensor<1, 3, PairADNumber>> &,
-                             const QuadFaceOf<PairADNumber> &,
-                             std::vector<ParameterPolygonOf<PairADNumber>> &);
-    template void
-    integrate_polygons_of<PairADNumber>(const QuadFaceOf<PairADNumber> &,
-                                        const QuadFace &,
-                                        const std::vector<Tensor<1, 3, PairADNumber>> &,
-                                        const Table<2, PairADNumber> &,
-                                        const QuadFaceOf<PairADNumber> &,
-                                        const QuadFace &,
-                                        const unsigned int,
-                                        const std::vector<ParameterPolygonOf<PairADNumber>> &,
-                                        QuadOperatorsOf<PairADNumber> &);
-    template void
-    dual_basis_integrals_of<PairADNumber>(const QuadFaceOf<PairADNumber> &,
-                                          const QuadFace &,
-                                          const std::vector<Tensor<1, 3, PairADNumber>> &,
-                                          const std::vector<ParameterPolygonOf<PairADNumber>> &,
-                                          Table<2, PairADNumber> &,
-                                          Table<2, PairADNumber> &);
+    // The AD numbers of linearise_slave_face(), by the pair's number of
+    // variables.
+#define CONTACT_FEM_INSTANTIATE_AD(Number)                                                       \
+  template bool overlap_of<Number>(const QuadFaceOf<Number> &, const QuadFace &,                 \
+                                   const std::vector<Tensor<1, 3, Number>> &,                    \
+                                   const QuadFaceOf<Number> &,                                   \
+                                   std::vector<ParameterPolygonOf<Number>> &);                   \
+  template void integrate_polygons_of<Number>(                                                   \
+    const QuadFaceOf<Number> &, const QuadFace &, const std::vector<Tensor<1, 3, Number>> &,     \
+    const Table<2, Number> &, const QuadFaceOf<Number> &, const QuadFace &, const unsigned int,  \
+    const std::vector<ParameterPolygonOf<Number>> &, QuadOperatorsOf<Number> &);                 \
+  template void dual_basis_integrals_of<Number>(const QuadFaceOf<Number> &, const QuadFace &,    \
+                                                const std::vector<Tensor<1, 3, Number>> &,       \
+                                                const std::vector<ParameterPolygonOf<Number>> &, \
+                                                Table<2, Number> &, Table<2, Number> &)
+    CONTACT_FEM_INSTANTIATE_AD(PairADNumber);
+    CONTACT_FEM_INSTANTIATE_AD(CurvedPairADNumber);
+    CONTACT_FEM_INSTANTIATE_AD(QuadraticPairADNumber);
+#undef CONTACT_FEM_INSTANTIATE_AD
 
     Point<2>
     closest_parameter(const QuadFace &quad, const Point<3> &x)

@@ -157,8 +157,17 @@ namespace contact_fem
       {
         if constexpr (std::is_same_v<Number, double>)
           return x;
-        else
+        else if constexpr (std::is_same_v<Number, ADNumber>)
           return Number(chain.size(), v, x);
+        else
+          {
+            // A FixedADNumber may have more derivatives than the chain
+            // variables: those stay zero.
+            AssertIndexRange(v, Number().size());
+            Number result(x);
+            result.fastAccessDx(v) = 1.;
+            return result;
+          }
       }
 
       template <typename Number>
@@ -204,8 +213,9 @@ namespace contact_fem
 
       /// linearise_slave_face() with derivatives if @p ad: the nodal
       /// normals in DFad numbers (as many variables as the slave faces have
-      /// coordinates), each master's part in @p PairNumber (PairADNumber,
-      /// of fixed length, for bilinear faces; DFad for curved ones).
+      /// coordinates), each master's part in @p PairNumber (a
+      /// FixedADNumber with at least as many derivatives as the part has
+      /// variables).
       template <bool ad, typename PairNumber>
       bool
       compute_face(const QuadFacePatch &patch, std::vector<LinearisedQuadPair> &pairs)
@@ -264,9 +274,8 @@ namespace contact_fem
             // Table leaves the derivatives of an SFad uninitialised.
             part.De.fill(Number(0.));
             part.Me.fill(Number(0.));
-            // PairADNumber's length: bilinear faces (linearise_slave_face()).
-            [[maybe_unused]] constexpr bool fixed_length = std::is_same_v<PairNumber, PairADNumber>;
-            Assert(!ad || !fixed_length || part.chain.size() == 36, ExcInternalError());
+            if constexpr (ad)
+              AssertThrow(part.chain.size() <= PairNumber().size(), ExcInternalError());
             part.slave = face_variables<Number>(patch, patch.slave_faces[0], part.chain, 0);
             part.master =
               face_variables<Number>(patch, m, part.chain, 3 * patch.slave_faces[0].nodes.size());
@@ -423,20 +432,23 @@ namespace contact_fem
                          const bool                       derivatives,
                          std::vector<LinearisedQuadPair> &pairs)
     {
-      // Bilinear faces have 36 variables per master (PairADNumber, on the
-      // stack); curved ones more (DFad).
-      const auto bilinear = [&](const QuadFacePatch::Face &face) {
-        return face.nodes.size() == 4;
-      };
-      bool all_bilinear = bilinear(patch.slave_faces[0]);
+      // The AD number by the largest number of variables of a master's
+      // part: the coordinates of the slave face and the master, and the
+      // components of the slave's nodal normals.
+      const unsigned int n_normals = patch.quad_face(patch.slave_faces[0]).n_shape_nodes();
+      unsigned int       n_pair    = 0;
       for (const QuadFacePatch::Face &face : patch.masters)
-        all_bilinear = all_bilinear && bilinear(face);
+        n_pair = std::max<unsigned int>(n_pair, 3 * (patch.slave_faces[0].nodes.size() +
+                                                     face.nodes.size() + n_normals));
       pairs.clear();
       if (!derivatives)
         return compute_face<false, double>(patch, pairs);
-      if (all_bilinear)
+      if (n_pair <= PairADNumber().size())
         return compute_face<true, PairADNumber>(patch, pairs);
-      return compute_face<true, ADNumber>(patch, pairs);
+      if (n_pair <= CurvedPairADNumber().size())
+        return compute_face<true, CurvedPairADNumber>(patch, pairs);
+      AssertThrow(n_pair <= QuadraticPairADNumber().size(), ExcNotImplemented());
+      return compute_face<true, QuadraticPairADNumber>(patch, pairs);
     }
 
     std::vector<std::array<Linearised, 3>>

@@ -80,8 +80,9 @@ namespace contact_fem
      * depends on directly: the normals those of the slave faces' nodes;
      * each master's overlap, its dual basis integrals and its operators
      * the slave face's and the master's coordinates and the normal
-     * components (for bilinear faces 36 variables in PairADNumber, for
-     * curved ones in DFad; then chained to the coordinates), at
+     * components (36 for bilinear faces, 66 for 9-node faces with a
+     * bilinear shape, 81 for biquadratic ones: a FixedADNumber, whose
+     * derivatives are on the stack; then chained to the coordinates), at
      * fixed dual basis coefficients: the operators are linear in them, so
      * their part is added with the integrals of the standard basis.
      */

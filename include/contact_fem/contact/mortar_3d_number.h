@@ -5,7 +5,7 @@
 // (clipping sides, duplicate vertices, which points project) and every
 // Newton root is taken in double; an AD number only adds the derivatives
 // to those values. Instantiated in mortar_3d.cc for double and
-// Sacado::Fad::DFad<double> and PairADNumber.
+// Sacado::Fad::DFad<double> and the FixedADNumber types.
 #ifndef contact_fem_mortar_3d_number_h
 #define contact_fem_mortar_3d_number_h
 
@@ -23,11 +23,21 @@ namespace contact_fem
 {
   namespace Mortar
   {
-    /// The AD number of one bilinear slave/master pair in its own
-    /// variables (mortar_3d_linearisation.cc): the 12 coordinates of each
-    /// face and the 12 components of the slave's nodal normals. Derivatives
-    /// of fixed length, on the stack: no allocation per operation.
-    using PairADNumber = Sacado::Fad::SFad<double, 36>;
+    /// The AD number of one slave/master pair in its own variables
+    /// (mortar_3d_linearisation.cc): the coordinates of both faces and the
+    /// components of the slave's nodal normals, at most @p N of them.
+    /// Derivatives of fixed length, on the stack: no allocation per
+    /// operation (DFad allocates for every temporary).
+    template <int N>
+    using FixedADNumber = Sacado::Fad::SFad<double, N>;
+
+    /// Bilinear faces: 12 + 12 + 12 variables.
+    using PairADNumber = FixedADNumber<36>;
+    /// 9-node faces with a bilinear shape (Q1 on a quadratic mapping):
+    /// 27 + 27 + 12 (a bilinear face with a 9-node one: 51, padded).
+    using CurvedPairADNumber = FixedADNumber<66>;
+    /// Biquadratic faces (Q2): 27 + 27 + 27.
+    using QuadraticPairADNumber = FixedADNumber<81>;
   } // namespace Mortar
 } // namespace contact_fem
 
@@ -36,26 +46,27 @@ namespace dealii
 {
   namespace internal
   {
-    template <>
-    struct ProductTypeImpl<contact_fem::Mortar::PairADNumber, double>
+    template <int N>
+    struct ProductTypeImpl<contact_fem::Mortar::FixedADNumber<N>, double>
     {
-      using type = contact_fem::Mortar::PairADNumber;
+      using type = contact_fem::Mortar::FixedADNumber<N>;
     };
-    template <>
-    struct ProductTypeImpl<double, contact_fem::Mortar::PairADNumber>
+    template <int N>
+    struct ProductTypeImpl<double, contact_fem::Mortar::FixedADNumber<N>>
     {
-      using type = contact_fem::Mortar::PairADNumber;
+      using type = contact_fem::Mortar::FixedADNumber<N>;
     };
-    template <>
-    struct ProductTypeImpl<contact_fem::Mortar::PairADNumber, contact_fem::Mortar::PairADNumber>
+    template <int N>
+    struct ProductTypeImpl<contact_fem::Mortar::FixedADNumber<N>,
+                           contact_fem::Mortar::FixedADNumber<N>>
     {
-      using type = contact_fem::Mortar::PairADNumber;
+      using type = contact_fem::Mortar::FixedADNumber<N>;
     };
   } // namespace internal
-  template <>
-  struct EnableIfScalar<contact_fem::Mortar::PairADNumber>
+  template <int N>
+  struct EnableIfScalar<contact_fem::Mortar::FixedADNumber<N>>
   {
-    using type = contact_fem::Mortar::PairADNumber;
+    using type = contact_fem::Mortar::FixedADNumber<N>;
   };
 } // namespace dealii
 
@@ -123,23 +134,67 @@ namespace contact_fem
       {
         return (shape_degree() + 1) * (shape_degree() + 1);
       }
+      // point() and tangents() evaluate the 1D shapes once per direction
+      // (the nodes share them) and add component by component, without
+      // temporary vectors: the same operations on each number as
+      // quad_shape_value_of() and quad_shape_gradient_of() node by node.
       Point<3, Number>
       point(const Point<2, Number> &xi) const
       {
+        const unsigned int    p = degree();
+        std::array<Number, 3> l0, l1;
+        for (unsigned int a = 0; a <= p; ++a)
+          {
+            l0[a] = lagrange_value(p, a, xi[0]);
+            l1[a] = lagrange_value(p, a, xi[1]);
+          }
         Point<3, Number> x;
         for (unsigned int i = 0; i < nodes.size(); ++i)
-          x += quad_shape_value_of(degree(), i, xi) * nodes[i];
+          {
+            const auto [a, b] = quad_line_indices(p, i);
+            const Number N    = l0[a] * l1[b];
+            for (unsigned int d = 0; d < 3; ++d)
+              x[d] += N * nodes[i][d];
+          }
+        return x;
+      }
+      /// The point at a parameter @p xi that is not differentiated (a root
+      /// found in double): the shapes in double.
+      Point<3, Number>
+      point(const Point<2> &xi) const
+      {
+        Point<3, Number> x;
+        for (unsigned int i = 0; i < nodes.size(); ++i)
+          {
+            const double N = quad_shape_value(degree(), i, xi);
+            for (unsigned int d = 0; d < 3; ++d)
+              x[d] += N * nodes[i][d];
+          }
         return x;
       }
       std::array<Tensor<1, 3, Number>, 2>
       tangents(const Point<2, Number> &xi) const
       {
+        const unsigned int    p = degree();
+        std::array<Number, 3> l0, l1, dl0, dl1;
+        for (unsigned int a = 0; a <= p; ++a)
+          {
+            l0[a]  = lagrange_value(p, a, xi[0]);
+            l1[a]  = lagrange_value(p, a, xi[1]);
+            dl0[a] = lagrange_derivative(p, a, xi[0]);
+            dl1[a] = lagrange_derivative(p, a, xi[1]);
+          }
         std::array<Tensor<1, 3, Number>, 2> t;
         for (unsigned int i = 0; i < nodes.size(); ++i)
           {
-            const Tensor<1, 2, Number> g = quad_shape_gradient_of(degree(), i, xi);
-            t[0] += g[0] * nodes[i];
-            t[1] += g[1] * nodes[i];
+            const auto [a, b] = quad_line_indices(p, i);
+            const Number g0   = dl0[a] * l1[b];
+            const Number g1   = l0[a] * dl1[b];
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                t[0][d] += g0 * nodes[i][d];
+                t[1][d] += g1 * nodes[i][d];
+              }
           }
         return t;
       }

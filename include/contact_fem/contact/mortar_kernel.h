@@ -227,11 +227,16 @@ namespace contact_fem
                          std::vector<Number>          &phi,
                          Operators                    &result)
     {
+      // The slave's shapes once (at most 9 nodes), not once per dual function.
+      std::array<Number, 9> shapes;
+      AssertIndexRange(result.D.size(), shapes.size() + 1);
+      for (unsigned int k = 0; k < result.D.size(); ++k)
+        shapes[k] = Kernel<dim>::shape_value(slave_degree, k, xi);
       for (unsigned int j = 0; j < result.D.size(); ++j)
         {
           phi[j] = 0.;
           for (unsigned int k = 0; k < result.D.size(); ++k)
-            phi[j] += dual_coefficients(j, k) * Kernel<dim>::shape_value(slave_degree, k, xi);
+            phi[j] += dual_coefficients(j, k) * shapes[k];
           result.D[j] += phi[j] * jxw;
           result.weighted_gap[j] += Number(phi[j] * jxw) * separation;
         }
