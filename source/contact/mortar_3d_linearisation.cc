@@ -443,11 +443,12 @@ namespace contact_fem
       pairs.clear();
       if (!derivatives)
         return compute_face<false, double>(patch, pairs);
-      if (n_pair <= PairADNumber().size())
+      if (n_pair <= static_cast<unsigned int>(PairADNumber().size()))
         return compute_face<true, PairADNumber>(patch, pairs);
-      if (n_pair <= CurvedPairADNumber().size())
+      if (n_pair <= static_cast<unsigned int>(CurvedPairADNumber().size()))
         return compute_face<true, CurvedPairADNumber>(patch, pairs);
-      AssertThrow(n_pair <= QuadraticPairADNumber().size(), ExcNotImplemented());
+      AssertThrow(n_pair <= static_cast<unsigned int>(QuadraticPairADNumber().size()),
+                  ExcNotImplemented());
       return compute_face<true, QuadraticPairADNumber>(patch, pairs);
     }
 
