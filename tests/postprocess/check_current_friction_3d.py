@@ -31,7 +31,7 @@ import re
 import sys
 
 from scene_run import check_quadratic, newton_ratios, run_scene
-from vtu_files import collection, read_surface
+from vtu_files import active_nodes, collection, read_surface
 
 MU = 0.3
 PULL = math.radians(30.0)
@@ -97,11 +97,7 @@ ok = report("t = 7, every active node slips, |t_j| = mu p_j to 1e-8, against its
 # t = 3: step 3 of the run to t = 7 (the same steps as a run to t = 3).
 normal, tangential, _ = pair(rows[2])
 _, _, surface, _ = read_surface(dict(collection("contact_surface.pvd"))[3.0])
-nodes = [{"pressure": p[0], "stick": s[0], "tangential_traction_x": tx[0],
-          "tangential_traction_y": ty[0]}
-         for p, a, s, tx, ty in zip(surface["contact_pressure"], surface["active"],
-                                    surface["stick"], surface["tangential_traction_x"],
-                                    surface["tangential_traction_y"]) if a[0] == 1]
+nodes = active_nodes(surface)
 stick = [n for n in nodes if n["stick"] == 1]
 inside = all(math.hypot(n["tangential_traction_x"], n["tangential_traction_y"]) <
              MU * n["pressure"] for n in stick)

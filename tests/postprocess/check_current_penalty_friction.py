@@ -62,7 +62,7 @@ import math
 import sys
 
 from scene_run import check_quadratic, converged_sets, newton_ratios, run_scene
-from vtu_files import collection, read_surface
+from vtu_files import active_nodes, collection, read_surface
 
 MU = 0.3
 
@@ -178,11 +178,7 @@ def check_3d(contact_fem, scene):
     # t = 3: step 3 of the run (the same steps as a run to t = 3).
     normal, tangential = pair(rows[2])
     _, _, surface, _ = read_surface(dict(collection("contact_surface.pvd"))[3.0])
-    nodes = [{"pressure": p[0], "stick": s[0], "tangential_traction_x": tx[0],
-              "tangential_traction_y": ty[0]}
-             for p, a, s, tx, ty in zip(surface["contact_pressure"], surface["active"],
-                                        surface["stick"], surface["tangential_traction_x"],
-                                        surface["tangential_traction_y"]) if a[0] == 1]
+    nodes = active_nodes(surface)
     stick = [n for n in nodes if n["stick"] == 1]
     inside = all(traction(n) < MU * n["pressure"] for n in stick)
     off = max((abs(traction(n) - MU * n["pressure"]) for n in nodes if n["stick"] == 0),

@@ -36,6 +36,16 @@ def read_surface(name, directory="results"):
     return points, cells, fields, wrong
 
 
+def active_nodes(surface):
+    """The active nodes of a contact-surface VTU's point fields (read_surface()),
+    each a dict of its pressure, stick flag and tangential traction (x, y)."""
+    return [{"pressure": p[0], "stick": s[0], "tangential_traction_x": tx[0],
+             "tangential_traction_y": ty[0]}
+            for p, a, s, tx, ty in zip(surface["contact_pressure"], surface["active"],
+                                       surface["stick"], surface["tangential_traction_x"],
+                                       surface["tangential_traction_y"]) if a[0] == 1]
+
+
 def _decode(text, kind):
     """A data array of deal.II's compressed binary VTU: a base64 header of
     UInt32 (number of blocks, block size, last block size, the compressed
