@@ -45,13 +45,13 @@ MODE 'frictional' (the scene as it is):
 
 CONTACT_FEM_PERTURBATION_SEED, if set, renumbers the DoFs.
 """
-import csv
 import importlib.util
 import math
 import os
 import sys
 
-from scene_run import check_quadratic, converged_sets, newton_table, perturbation, run_scene
+from scene_run import (check_quadratic, converged_sets, csv_numbers, newton_table, perturbation,
+                       run_scene)
 
 TOLERANCE = 1e-8
 MU = 0.3
@@ -71,11 +71,6 @@ PATHS = {"x then y": ((ramp(1), ramp(2), PRESS), 3),
 def report(name, good, detail=""):
     print(f"{name}: {'ok' if good else 'FAILED'}" + (f" ({detail})" if detail else ""))
     return good
-
-
-def read(name):
-    with open(name) as f:
-        return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
 
 
 def vector(row, prefix):
@@ -115,7 +110,7 @@ def run(contact_fem, scene, path, extra=(), R=None, mesh_script=None):
         manifolds = mesh_script.write(os.path.abspath("turned.msh"), R)
         settings += [f"Geometry/Mesh file={os.path.abspath('turned.msh')}", f"Geometry/Manifolds={manifolds}"]
     output = run_scene(contact_fem, scene, *settings)
-    return output, read("results/forces.csv"), read("results/pressure_profile.csv")
+    return output, csv_numbers("results/forces.csv"), csv_numbers("results/pressure_profile.csv")
 
 
 def newton_and_balance(name, output, rows, steps):

@@ -25,11 +25,10 @@ steps at t = 3.5 and 4 once, in both runs alike), per load step the same
 active, stick and slip counts, and the pair's forces R^T F equal to the unrotated ones to 1e-7 of |F_n|; at t = 5
 per node the same flags, p_j and R^T t_j to 1e-7 of the largest p.
 """
-import csv
 import math
 import sys
 
-from scene_run import converged_sets, perturbation, run_scene
+from scene_run import converged_sets, csv_numbers, perturbation, run_scene
 
 CENTRE = (2.0, 1.0)
 END, STEPS = 5, 10
@@ -67,11 +66,6 @@ def settings(formulation, rotated):
                      f"Boundary conditions/Prescribed displacement={data}"]
 
 
-def read(name):
-    with open(name) as f:
-        return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
-
-
 def back(t, v):
     a = angle(t)
     return [math.cos(a) * v[0] + math.sin(a) * v[1], -math.sin(a) * v[0] + math.cos(a) * v[1]]
@@ -90,7 +84,7 @@ EXTRA = {"penalty frictional": ("Contact/Stiffness factor=1e-2",)}
 def run(contact_fem, scene, formulation, rotated):
     output = run_scene(contact_fem, scene, *perturbation(), *EXTRA.get(formulation, ()),
                        *settings(formulation, rotated))
-    return output, read("results/forces.csv"), read("results/pressure_profile.csv")
+    return output, csv_numbers("results/forces.csv"), csv_numbers("results/pressure_profile.csv")
 
 
 def main():

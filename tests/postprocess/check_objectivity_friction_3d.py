@@ -41,11 +41,10 @@ about the normal was added, is off by 1e-4 of |F_n| after the spin and
 4e-4 of p at the nodes; alm frictional and the penalty now agree to
 3e-10).
 """
-import csv
 import math
 import sys
 
-from scene_run import converged_sets, perturbation, run_scene
+from scene_run import converged_sets, csv_numbers, perturbation, run_scene
 
 CENTRE = (0.0, 0.0, 0.25)
 SPIN_STEPS, TILT_STEPS = 2, 2
@@ -115,11 +114,6 @@ def settings(formulation, rotated, extra=()):
                      f"Boundary conditions/Prescribed displacement={data}"]
 
 
-def read(name):
-    with open(name) as f:
-        return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
-
-
 def back(t, v):
     """R(t)^T v."""
     R = rotation(t)
@@ -133,7 +127,7 @@ def vector(row, prefix):
 def run(contact_fem, scene, formulation, rotated):
     output = run_scene(contact_fem, scene, *perturbation(),
                        *settings(formulation, rotated, EXTRA.get(formulation, ())))
-    return output, read("results/forces.csv"), read("results/pressure_profile.csv")
+    return output, csv_numbers("results/forces.csv"), csv_numbers("results/pressure_profile.csv")
 
 
 def check(contact_fem, scene, formulation):

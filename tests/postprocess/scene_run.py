@@ -1,4 +1,5 @@
 """Running contact_fem (or a tool) from the postprocess test scripts."""
+import csv
 import os
 import re
 import subprocess
@@ -96,3 +97,10 @@ def check_quadratic(name, output, bound):
           f"quadratic rate "
           f"r_k <= {bound} r_(k-1)^2: {'ok' if ok else f'FAILED (largest ratio {worst:.3g})'}")
     return ok
+
+
+def csv_numbers(name):
+    """The rows of the CSV file name (a run's forces.csv or
+    pressure_profile.csv), each a dict of its columns as numbers."""
+    with open(name) as f:
+        return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]

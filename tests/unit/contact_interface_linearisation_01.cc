@@ -45,6 +45,7 @@
 #include <cmath>
 #include <iostream>
 #include <map>
+#include <numeric>
 
 using namespace dealii;
 using namespace contact_fem;
@@ -158,26 +159,11 @@ namespace
         frames[s.node] = tangent_frame(s.normal);
 
     // Differences at h and h / 2 of every entry along every DoF.
+    std::vector<unsigned int> every_dof(u.size());
+    std::iota(every_dof.begin(), every_dof.end(), 0u);
     const auto differences = [&](const double h) {
-      std::map<std::pair<unsigned int, Key>, std::map<types::global_dof_index, double>> result;
-      bool same_pairs = true;
-      for (unsigned int i = 0; i < u.size(); ++i)
-        {
-          std::array<Values, 2> at;
-          for (const int side : {0, 1})
-            {
-              std::vector<double> v = u;
-              v[i] += side == 0 ? h : -h;
-              ContactInterface<dim> moved = interface;
-              moved.update(v, 3.);
-              same_pairs = same_pairs && moved.coupled_faces == coupled;
-              at[side]   = values_of(moved, v, frames);
-            }
-          for (const auto &[n, entries] : at[0])
-            for (const auto &[key, value] : entries)
-              result[{n, key}][interface.dofs()[i]] = (value - at[1][n][key]) / (2. * h);
-        }
-      return std::make_pair(result, same_pairs);
+      return central_differences(interface, u, every_dof, frames, coupled, h,
+                                 [](std::vector<double> &) {});
     };
     // The order from h = 1e-3 and h / 2 (above the noise of the double
     // path's iterative roots), the accuracy at h = 1e-5.

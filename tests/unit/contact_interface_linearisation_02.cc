@@ -345,26 +345,7 @@ namespace
       if (!is_hanging[i] && (!few_directions || (is_parent[i] ? p++ % 2 == 0 : k++ % 16 == 0)))
         directions.push_back(i);
     const auto differences = [&](const double h) {
-      std::map<std::pair<unsigned int, Key>, std::map<types::global_dof_index, double>> result;
-      bool same_pairs = true;
-      for (const unsigned int i : directions)
-        {
-          std::array<Values, 2> at;
-          for (const int side : {0, 1})
-            {
-              std::vector<double> v = u;
-              v[i] += side == 0 ? h : -h;
-              conform(v);
-              ContactInterface<dim> moved = interface;
-              moved.update(v, 3.);
-              same_pairs = same_pairs && moved.coupled_faces == coupled;
-              at[side]   = values_of(moved, v, frames);
-            }
-          for (const auto &[n, entries] : at[0])
-            for (const auto &[key, value] : entries)
-              result[{n, key}][interface.dofs()[i]] = (value - at[1][n][key]) / (2. * h);
-        }
-      return std::make_pair(result, same_pairs);
+      return central_differences(interface, u, directions, frames, coupled, h, conform);
     };
     const auto [coarse, coarse_pairs] = differences(2e-5);
     const auto [fine, fine_pairs]     = differences(1e-5);

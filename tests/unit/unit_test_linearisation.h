@@ -100,6 +100,43 @@ namespace unit_test_linearisation
     return result;
   }
 
+  /// Central differences at step @p h of every entry of values_of() along
+  /// each of @p directions (positions in the interface vector @p u; @p
+  /// conform moves the DoFs that follow a perturbed one), by entry and DoF;
+  /// and whether every perturbed configuration found the face pairs @p
+  /// coupled.
+  template <int dim, typename Conform>
+  std::pair<std::map<std::pair<unsigned int, Key>, std::map<types::global_dof_index, double>>, bool>
+  central_differences(const ContactInterface<dim>                              &interface,
+                      const std::vector<double>                                &u,
+                      const std::vector<unsigned int>                          &directions,
+                      const Frames<dim>                                        &frames,
+                      const std::vector<std::pair<unsigned int, unsigned int>> &coupled,
+                      const double                                              h,
+                      const Conform                                            &conform)
+  {
+    std::map<std::pair<unsigned int, Key>, std::map<types::global_dof_index, double>> result;
+    bool same_pairs = true;
+    for (const unsigned int i : directions)
+      {
+        std::array<Values, 2> at;
+        for (const int side : {0, 1})
+          {
+            std::vector<double> v = u;
+            v[i] += side == 0 ? h : -h;
+            conform(v);
+            ContactInterface<dim> moved = interface;
+            moved.update(v, 3.);
+            same_pairs = same_pairs && moved.coupled_faces == coupled;
+            at[side]   = values_of(moved, v, frames);
+          }
+        for (const auto &[n, entries] : at[0])
+          for (const auto &[key, value] : entries)
+            result[{n, key}][interface.dofs()[i]] = (value - at[1][n][key]) / (2. * h);
+      }
+    return std::make_pair(result, same_pairs);
+  }
+
 } // namespace unit_test_linearisation
 
 #endif
