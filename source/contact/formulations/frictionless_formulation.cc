@@ -199,18 +199,30 @@ namespace contact_fem
                                              std::vector<types::global_dof_index>            &dofs,
                                              std::vector<double> &gradient) const
   {
+    gap_gradient_along(interface, s, s.normal, dofs, gradient);
+  }
+
+  template <int dim>
+  void
+  FrictionlessFormulation<dim>::gap_gradient_along(
+    const ContactInterface<dim>                     &interface,
+    const typename ContactInterface<dim>::SlaveNode &s,
+    const Tensor<1, dim>                            &n,
+    std::vector<types::global_dof_index>            &dofs,
+    std::vector<double>                             &gradient) const
+  {
     dofs.clear();
     gradient.clear();
     for (unsigned int d = 0; d < dim; ++d)
       {
         dofs.push_back(interface.nodes[s.node].dofs[d]);
-        gradient.push_back(-s.normal[d]);
+        gradient.push_back(-n[d]);
       }
     for (const auto &[m, value] : s.M)
       for (unsigned int d = 0; d < dim; ++d)
         {
           dofs.push_back(interface.nodes[m].dofs[d]);
-          gradient.push_back(value * s.normal[d] / s.D);
+          gradient.push_back(value * n[d] / s.D);
         }
   }
 
@@ -336,11 +348,12 @@ namespace contact_fem
         const double lambda = pressure[s.node];
         if (!s.paired || lambda == 0.)
           continue;
+        const Tensor<1, dim> n = this->frame_normal(s);
         for (unsigned int d = 0; d < dim; ++d)
-          force[interface.position(interface.nodes[s.node].dofs[d])] -= lambda * s.D * s.normal[d];
+          force[interface.position(interface.nodes[s.node].dofs[d])] -= lambda * s.D * n[d];
         for (const auto &[m, value] : s.M)
           for (unsigned int d = 0; d < dim; ++d)
-            force[interface.position(interface.nodes[m].dofs[d])] += lambda * value * s.normal[d];
+            force[interface.position(interface.nodes[m].dofs[d])] += lambda * value * n[d];
       }
     return force;
   }

@@ -98,7 +98,7 @@ namespace contact_fem
     if (this->current)
       return this->objective_slip(interface, s, u, nullptr);
     return to_frame(weighted_relative_displacement(interface, s, converged_displacement, u),
-                    s.normal);
+                    frame_normal(s));
   }
 
   template <int dim>
@@ -108,7 +108,7 @@ namespace contact_fem
                                         const unsigned int   k,
                                         std::vector<double> &gradient) const
   {
-    const Tensor<1, dim> tau = tangent_frame(s.normal)[k];
+    const Tensor<1, dim> tau = tangent_frame(frame_normal(s))[k];
     gradient.clear();
     for (unsigned int d = 0; d < dim; ++d)
       gradient.push_back(tau[d]);
@@ -125,7 +125,7 @@ namespace contact_fem
   {
     // A node a support holds along one tangent (3D symmetry plane): the
     // support carries the other, friction only the free one.
-    return free_part(history(interface, s) - tangent_penalty[s.pair] * xi, s.normal,
+    return free_part(history(interface, s) - tangent_penalty[s.pair] * xi, frame_normal(s),
                      sets.held_component[s.node]);
   }
 
@@ -385,6 +385,18 @@ namespace contact_fem
             cone_factor[s.node] = slip_cone_factor(interface, s, sets.direction[s.node], p, xi);
           }
       }
+    set_frame_turned(interface);
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictional<dim>::set_frame_turned(const ContactInterface<dim> &interface)
+  {
+    // Every rank holds every slave node: the same answer on each.
+    frame_turned = false;
+    for (const auto &s : interface.slave_nodes)
+      if (s.paired && this->active[s.node] && frame_normal(s) != s.normal)
+        frame_turned = true;
   }
 
   template <int dim>
@@ -476,10 +488,10 @@ namespace contact_fem
             // of trial_traction() (the identity unless a support holds one
             // tangent).
             const unsigned int          held = sets.held_component[s.node];
-            const TangentialVector<dim> free = held < dim ?
-                                                 to_frame(free_tangent(s.normal, held), s.normal) :
-                                                 TangentialVector<dim>();
-            const auto                  Q    = [&](const unsigned int k, const unsigned int l) {
+            const TangentialVector<dim> free =
+              held < dim ? to_frame(free_tangent(frame_normal(s), held), frame_normal(s)) :
+                           TangentialVector<dim>();
+            const auto Q = [&](const unsigned int k, const unsigned int l) {
               return held < dim ? free[k] * free[l] : (k == l ? 1. : 0.);
             };
             const TangentialVector<dim> history =
@@ -579,6 +591,7 @@ namespace contact_fem
         tangential[s.node]     = tangential_traction(interface, s, direction, p, xi);
         cone_factor[s.node]    = slip_cone_factor(interface, s, direction, p, xi);
       }
+    set_frame_turned(interface);
     return changes;
   }
 
@@ -595,7 +608,7 @@ namespace contact_fem
         const TangentialVector<dim> &t = tangential[s.node];
         if (!s.paired || !this->active[s.node] || t.norm_square() == 0.)
           continue;
-        const auto frame = tangent_frame(s.normal);
+        const auto frame = tangent_frame(frame_normal(s));
         for (unsigned int k = 0; k < dim - 1; ++k)
           {
             for (unsigned int d = 0; d < dim; ++d)
@@ -854,14 +867,14 @@ namespace contact_fem
       if (s.paired && this->active[s.node])
         {
           tangential_force += s.D * tangential[s.node][0];
-          tangential_vector += s.D * to_global(tangential[s.node], s.normal);
+          tangential_vector += s.D * to_global(tangential[s.node], frame_normal(s));
           normal_force += s.D * this->pressure[s.node];
           // 2D: the sign, in the node's own frame.
           Tensor<1, dim> direction;
           if (dim == 2)
             direction[0] = sets.direction[s.node][0];
           else
-            direction = to_global(sets.direction[s.node], s.normal);
+            direction = to_global(sets.direction[s.node], frame_normal(s));
           if (sets.direction[s.node].norm_square() == 0. || !carries_friction(interface, s))
             all_slip = false;
           else if (first)

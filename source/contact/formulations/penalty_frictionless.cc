@@ -152,13 +152,21 @@ namespace contact_fem
     // g_j is affine in u within a load step: g_j(u) = g_j(0) + grad g_j . u.
     const std::vector<double>            zero(interface.dofs().size(), 0.);
     std::vector<types::global_dof_index> dofs;
-    std::vector<double>                  gradient;
+    std::vector<double>                  gradient, force_gradient;
     for (const auto &s : interface.slave_nodes)
       {
         if (!s.paired || !this->active[s.node] ||
             !owned.is_element(interface.nodes[s.node].dofs[0]))
           continue;
         this->gap_gradient(interface, s, dofs, gradient);
+        // The force -p n_f acts along the frame's normal n_f, the pressure
+        // p = eps (-g) is of the slave-normal gap: the rows take the gap
+        // gradient along n_f (unsymmetric unless n_f is the slave normal).
+        const Tensor<1, dim> n_f = this->frame_normal(s);
+        if (n_f == s.normal)
+          force_gradient = gradient;
+        else
+          this->gap_gradient_along(interface, s, n_f, dofs, force_gradient);
         const double       stiffness = node_penalty[s.node] * s.D;
         const double       g0        = interface.gap(s, zero);
         const unsigned int n         = dofs.size();
@@ -167,8 +175,8 @@ namespace contact_fem
         for (unsigned int a = 0; a < n; ++a)
           {
             for (unsigned int b = 0; b < n; ++b)
-              local_matrix(a, b) = stiffness * gradient[a] * gradient[b];
-            local_rhs(a) = -stiffness * g0 * gradient[a];
+              local_matrix(a, b) = stiffness * force_gradient[a] * gradient[b];
+            local_rhs(a) = -stiffness * g0 * force_gradient[a];
           }
         this->eliminate_fixed(interface, dofs, local_matrix, local_rhs);
         constraints.distribute_local_to_global(local_matrix, local_rhs, dofs, matrix, rhs);

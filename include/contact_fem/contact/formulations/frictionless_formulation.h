@@ -211,6 +211,17 @@ namespace contact_fem
                  std::vector<types::global_dof_index>            &dofs,
                  std::vector<double>                             &gradient) const;
 
+    /// The same DoFs as gap_gradient() with the gradient of the gap
+    /// measured along the fixed unit vector @p n instead of n_j: -n at the
+    /// slave node, n M_jl / D_j at master l (the direction of the normal
+    /// force when the frame's normal is not the slave normal).
+    void
+    gap_gradient_along(const ContactInterface<dim>                     &interface,
+                       const typename ContactInterface<dim>::SlaveNode &s,
+                       const Tensor<1, dim>                            &n,
+                       std::vector<types::global_dof_index>            &dofs,
+                       std::vector<double>                             &gradient) const;
+
     /// The component eliminated for an active node, or dim if none can be:
     /// the free component with the largest normal part (a node whose free
     /// components are nearly tangential cannot carry a normal constraint).
@@ -238,7 +249,9 @@ namespace contact_fem
                  const std::vector<double>                       &fixed_values,
                  AffineConstraints<double>                       &constraints) const;
 
-    /// The contact forces of the current pressures at the interface DoFs.
+    /// The contact forces of the current pressures at the interface DoFs,
+    /// along frame_normal() (the slave normal unless a frictional
+    /// formulation takes the interface normal).
     std::vector<double>
     contact_forces(const ContactInterface<dim> &interface) const;
 

@@ -112,12 +112,14 @@ namespace contact_fem
     /// and Pure slip.
     PenaltyFrictional(ParameterHandler &prm, const FrictionParameters &friction);
 
-    /// False while a node slips (the slip terms are unsymmetric) and with
-    /// current kinematics.
+    /// False while a node slips (the slip terms are unsymmetric), while an
+    /// active node's frame is the interface normal (the normal force along
+    /// it, the pressure from the slave-normal gap) and with current
+    /// kinematics.
     bool
     matrix_symmetric() const override
     {
-      return !this->current && this->n_slip() == 0;
+      return !this->current && this->n_slip() == 0 && !frame_turned;
     }
 
     void
@@ -159,7 +161,21 @@ namespace contact_fem
     Tensor<1, dim>
     traction(const SlaveNode &s) const override
     {
-      return -this->pressure[s.node] * s.normal + to_global(tangential[s.node], s.normal);
+      const Tensor<1, dim> n = frame_normal(s);
+      return -this->pressure[s.node] * n + to_global(tangential[s.node], n);
+    }
+
+    /// The shared interface normal where the law has friction (small and
+    /// updated kinematics), as "alm frictional": the frame of the slip, of
+    /// the tangential traction and of the normal force. The slave normal
+    /// at nodes held by a support, under a law without friction (mu = 0
+    /// then is exactly "penalty frictionless") and with current kinematics
+    /// (the interface normal has no linearisation).
+    Tensor<1, dim>
+    frame_normal(const SlaveNode &s) const override
+    {
+      return this->current || sets.held[s.node] || frictionless_law(s) ? s.normal :
+                                                                         s.interface_normal;
     }
 
     /// The slip reference (interface displacement) and the tangential
@@ -316,6 +332,12 @@ namespace contact_fem
     std::vector<double> cone_factor;
     /// The elastic-slip warning was printed (once per run).
     mutable bool elastic_slip_warned = false;
+    /// Some active node's frame_normal() is not its slave normal (the
+    /// normal penalty is then unsymmetric): set by set_frame_turned().
+    bool frame_turned = false;
+    /// Sets frame_turned from the active set.
+    void
+    set_frame_turned(const ContactInterface<dim> &interface);
     /// update_active_set() calls since the step's start (current
     /// kinematics: the first keeps every sticking node sticking).
     unsigned int updates_in_step = 0;
