@@ -14,8 +14,12 @@ namespace contact_fem
    * is lambda_j = -p_j n_j + t_j (t_j in the tangent plane, dim - 1
    * components in tangent_frame(n_j)),
    * whose force is D_j lambda_j on the slave node and -M_jl lambda_j on
-   * master node l. The normal part is that of "penalty frictionless" (the
-   * base class): p_j = eps_n (-g_j) on active nodes (g_j < 0). The tangential
+   * master node l. n_j is frame_normal(): under a law with friction the
+   * shared interface normal, as "alm frictional" (the slave normal at held
+   * nodes, for laws without friction and with current kinematics). The
+   * pressure is that of "penalty frictionless" (the base class): p_j =
+   * eps_n (-g_j) on active nodes (g_j < 0, the gap along the slave
+   * normal). The tangential
    * part is a penalty on the weighted slip increment xi_j since the last
    * accepted load step (slip_increment()), with the return mapping
    *
@@ -30,7 +34,8 @@ namespace contact_fem
    * signs are fixed, every term is linear in u (Coulomb: T = mu p, p linear
    * in u; Tresca: T constant), so each iteration is one linear solve of the
    * total displacement; assemble() adds per active node
-   *   normal: eps_n D grad g grad g^T (symmetric),
+   *   normal: eps_n D grad_n g grad g^T (grad_n g: grad g with n_j for
+   *           the slave normal; symmetric where they coincide),
    *   stick:  eps_t D grad xi grad xi^T (symmetric),
    *   slip:   sigma T'(p) eps_n D grad xi grad g^T (unsymmetric) and the load
    *           D sigma (T - T' p - T' eps_n g(0)) grad xi,
@@ -38,7 +43,8 @@ namespace contact_fem
    * tangent in 3D, sigma -> d). In 3D the slip direction d(t*) is
    * linearised too: T d(t*(u)) ~ T d + (T / |t*|) P t*(u), P = I - d d^T,
    * which adds (T / |t*|) eps_t D P grad xi grad xi^T and its load. The
-   * matrix is unsymmetric while a node slips (matrix_symmetric(): the
+   * matrix is unsymmetric while a node slips or an active node's frame is
+   * turned off its slave normal (matrix_symmetric(): the
    * iterative solver then takes GMRES instead of CG); no test-space
    * constraints are used (symmetric() stays true: it concerns constraints
    * only).
