@@ -11,7 +11,7 @@ depth: the die's mean F_t / F_n, its offset from mu, the lean of the
 pair's normal force along the slide over F_n, the pair's |T| / |N|, and
 the Newton iterations.
 
-Usage: bench/ironing/ironing_3d_depth.py [--depths D...] [--binary B] [--out DIR]
+Usage: bench/ironing/ironing_3d_depth.py [--depths D...] [--level L] [--binary B] [--out DIR]
 """
 
 import argparse
@@ -32,14 +32,26 @@ def main():
     parser.add_argument("--binary", default=os.path.join(REPO, "build", "contact_fem"))
     parser.add_argument("--out", default="/tmp/ironing_3d_depth")
     parser.add_argument("--depths", type=float, nargs="*", default=[0.7, 0.35])
+    parser.add_argument("--level", type=int, default=0,
+                        help="0: the stored mesh (h = 1); 1: Gmsh's h = 0.5 mesh, as "
+                             "bench/finite_strain/ironing_3d.py makes it")
     args = parser.parse_args()
     print(f"# 3D ironing depths, {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}, load "
           f"{os.getloadavg()[0]:.1f}")
-    print("| d | d / R | converged / attempts | Newton its | mean F_n | die F_t / F_n | offset | "
-          "lean / F_n | pair abs(T) / abs(N) | wall |\n|" + "---|" * 10, flush=True)
+    print("| d | d / R | h | converged / attempts | Newton its | mean F_n | die F_t / F_n | offset | "
+          "lean / F_n | pair abs(T) / abs(N) | wall |\n|" + "---|" * 11, flush=True)
     for depth in args.depths:
-        out = os.path.join(args.out, f"d_{depth}")
+        out = os.path.join(args.out, f"d_{depth}_level_{args.level}")
+        os.makedirs(out, exist_ok=True)
         command = [args.binary, SCENE]
+        if args.level > 0:
+            path = os.path.join(out, "ironing_3d.msh")
+            subprocess.run(["gmsh", "-3", "-format", "msh22",
+                            os.path.join(REPO, "meshes", "ironing_3d.geo"), "-setnumber", "h",
+                            str(0.5 ** args.level), "-setnumber", "ny",
+                            str(2 ** (args.level + 1)), "-o", path],
+                           check=True, capture_output=True)
+            command += ["--set", f"Geometry/Mesh file={path}"]
         for setting in (f"Output directory={out}", "Geometry/Global refinements=0",
                         "Contact/Formulation=alm frictional", "Contact/Friction=coulomb 0.3",
                         "Boundary conditions/Prescribed displacement=die top: x = "
@@ -68,7 +80,7 @@ def main():
         its = sum(1 for line in result.stdout.splitlines()
                   if line.strip().startswith("|") and line.split("|")[1].strip().isdigit()) \
             - result.stdout.count("  Load step ")
-        print(f"| {depth} | {depth / 3:.3f} | {result.stdout.count('| converged')} / "
+        print(f"| {depth} | {depth / 3:.3f} | {0.5 ** args.level} | {result.stdout.count('| converged')} / "
               f"{result.stdout.count('  Load step ')} | {its} | {mean(fn):.4f} | "
               f"{mean(ratio):.4f} | {100 * (mean(ratio) / MU - 1):+.1f} % | "
               f"{100 * mean(lean):+.2f} % | {min(pair):.4f} to {max(pair):.4f} | {wall:.0f} s |",
