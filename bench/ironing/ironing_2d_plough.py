@@ -29,6 +29,8 @@ Studies (--study):
   stored energy plus the frictional dissipation sum_j D_j mu p_j |s_j|
   (D_j from the deformed slave edges of contact_surface_NNN.vtu, s_j the
   slip increment of the step), refinements 0, 1, 2 at d = 0.2;
+- energy_steps: the same balance per plateau step (h = 0.25, 36 steps; W
+  from a run stopped at every step);
 - chatter: the die's force with 4 slide steps per block element length
   (frictionless and mu = 0.3), refinements 0, 1, 2.
 
@@ -250,7 +252,7 @@ def main():
     parser.add_argument("--binary", default=os.path.join(REPO, "build", "contact_fem"))
     parser.add_argument("--out", default="/tmp/ironing_2d_plough")
     parser.add_argument("--study", required=True,
-                        choices=["depth", "material", "energy", "chatter", "mu"])
+                        choices=["depth", "material", "energy", "energy_steps", "chatter", "mu"])
     parser.add_argument("--refinements", type=int, nargs="*")
     parser.add_argument("--depths", type=float, nargs="*")
     parser.add_argument("--steps", type=int, nargs="*", default=[36],
@@ -299,6 +301,31 @@ def main():
                       f"{e['kinematic_imbalance']:+.2e} | "
                       f"{e['ratio_measured']:.5f} | {e['ratio_from_energy']:.5f} | "
                       f"{e['slip_over_advance']:.5f} | {e['weight_check']:.1e} |", flush=True)
+    elif args.study == "energy_steps":
+        steps = args.steps[0]
+        dt = END_TIME / steps
+        dx = SLIDE_PER_TIME * dt
+        full = os.path.join(args.out, "energy_steps", "full")
+        run(args.binary, full, 0, 0.2, steps=steps, vtu=True)
+        rows = plateau_rows(full)
+        energy = {}
+        for n in range(int(rows[0]["step"]) - 1, steps + 1):
+            out = os.path.join(args.out, "energy_steps", str(n))
+            run(args.binary, out, 0, 0.2, steps=n, end_time=dt * n)
+            energy[n] = strain_energy(out)
+        print("| step | slide | die F_x / F_y | stored energy change / work | dissipation / "
+              "work | imbalance / work |\n|" + "---|" * 6, flush=True)
+        for r in rows:
+            n = int(r["step"])
+            _, dissipated, _, _ = dissipation(
+                os.path.join(full, f"contact_surface_{n:03d}.vtu"),
+                os.path.join(full, f"contact_surface_{n - 1:03d}.vtu"), dx, 0.3)
+            work = abs(r["boundary_1_x"]) * dx
+            stored = energy[n] - energy[n - 1]
+            print(f"| {n} | {SLIDE_PER_TIME * (r['t'] - 1.):.4f} | "
+                  f"{abs(r['boundary_1_x'] / r['boundary_1_y']):.5f} | "
+                  f"{100 * stored / work:+.3f} % | {100 * dissipated / work:.3f} % | "
+                  f"{100 * (work - stored - dissipated) / work:+.3f} % |", flush=True)
     elif args.study == "chatter":
         print("| run | h | slide step / h | plateau steps | Newton its | mean F_y | chatter F_y "
               "(max dev. / mean) | peak to peak / mean | die ratio (mean) | chatter ratio | "
