@@ -545,6 +545,27 @@ namespace contact_fem
 
   template <int dim>
   void
+  ContactProblem<dim>::add_interface_hanging_constraints(
+    AffineConstraints<double> &constraints) const
+  {
+    // A contact patch couples DoFs of the whole surface: on 2 ranks a hanging
+    // vertex off this rank's cells kept its raw row and column, and the
+    // owner dropped them (3D adaptive current kinematics stalled).
+    if (!interface)
+      return;
+    for (const auto &node : interface->nodes)
+      if (!node.parents.empty())
+        for (unsigned int d = 0; d < dim; ++d)
+          if (constraints.can_store_line(node.dofs[d]) && !constraints.is_constrained(node.dofs[d]))
+            {
+              constraints.add_line(node.dofs[d]);
+              for (const auto &[parent, weight] : node.parents)
+                constraints.add_entry(node.dofs[d], interface->nodes[parent].dofs[d], weight);
+            }
+  }
+
+  template <int dim>
+  void
   ContactProblem<dim>::make_sparsity_pattern()
   {
     TimerOutput::Scope t(*timer, "Setup: sparsity");
@@ -554,6 +575,7 @@ namespace contact_fem
     AffineConstraints<double> candidates;
     candidates.reinit(writable_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, candidates);
+    add_interface_hanging_constraints(candidates);
     if (tying)
       tying->add_constraints(candidates, false, true);
     if (contact)
@@ -603,6 +625,7 @@ namespace contact_fem
     constraints.clear();
     constraints.reinit(writable_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    add_interface_hanging_constraints(constraints);
     if (tying)
       tying->add_constraints(constraints);
     if (contact)
@@ -614,6 +637,7 @@ namespace contact_fem
         test_constraints.clear();
         test_constraints.reinit(writable_dofs);
         DoFTools::make_hanging_node_constraints(dof_handler, test_constraints);
+        add_interface_hanging_constraints(test_constraints);
         if (tying)
           tying->add_constraints(test_constraints, true);
         contact->add_test_constraints(*interface, interface_fixed_values, test_constraints);

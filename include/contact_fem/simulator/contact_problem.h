@@ -148,6 +148,12 @@ namespace contact_fem
     make_sparsity_pattern();
     void
     make_constraints();
+    /// The hanging-node lines of the contact surfaces' DoFs that
+    /// make_hanging_node_constraints() leaves out on this rank (DoFs away
+    /// from its cells, which the contact rows still reach), from the
+    /// interface's parents.
+    void
+    add_interface_hanging_constraints(AffineConstraints<double> &constraints) const;
     // --- Newton (contact_problem.cc)
     void
     solve_load_step(const unsigned int step,

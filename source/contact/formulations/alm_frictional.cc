@@ -502,21 +502,18 @@ namespace contact_fem
 
   template <int dim>
   void
-  AlmFrictional<dim>::add_sparsity(const ContactInterface<dim> &interface,
-                                   const AffineConstraints<double> &,
-                                   const IndexSet         &owned,
-                                   DynamicSparsityPattern &pattern) const
+  AlmFrictional<dim>::add_sparsity(const ContactInterface<dim>     &interface,
+                                   const AffineConstraints<double> &constraints,
+                                   const IndexSet                  &owned,
+                                   DynamicSparsityPattern          &pattern) const
   {
     if (!current)
       return;
+    // Closed over the candidate constraints, as AlmFrictionless::add_sparsity().
     for (const auto &[node, linearised] : interface.linearised_nodes)
       if (owned.is_element(interface.nodes[node].dofs[0]))
-        {
-          const std::vector<types::global_dof_index> dofs =
-            this->objective_slip_patch(interface, node);
-          for (const auto row : dofs)
-            pattern.add_entries(row, dofs.begin(), dofs.end(), true);
-        }
+        this->add_closed_couplings(this->objective_slip_patch(interface, node), constraints,
+                                   pattern);
   }
 
   template <int dim>

@@ -6,6 +6,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <set>
 #include <utility>
 
 namespace contact_fem
@@ -50,6 +51,23 @@ namespace contact_fem
                                         const IndexSet &,
                                         DynamicSparsityPattern &) const
   {}
+
+  template <int dim>
+  void
+  ContactFormulation<dim>::add_closed_couplings(const std::vector<types::global_dof_index> &dofs,
+                                                const AffineConstraints<double> &constraints,
+                                                DynamicSparsityPattern          &pattern)
+  {
+    std::set<types::global_dof_index> closure(dofs.begin(), dofs.end());
+    for (const auto dof : dofs)
+      if (constraints.can_store_line(dof))
+        if (const auto *entries = constraints.get_constraint_entries(dof))
+          for (const auto &entry : *entries)
+            closure.insert(entry.first);
+    const std::vector<types::global_dof_index> all(closure.begin(), closure.end());
+    for (const auto row : all)
+      pattern.add_entries(row, all.begin(), all.end(), true);
+  }
 
   template <int dim>
   void

@@ -297,6 +297,17 @@ namespace contact_fem
     static Tensor<1, dim>
     tangent(const Tensor<1, dim> &normal);
 
+    /// Couples every pair of @p dofs and of the masters @p constraints
+    /// (the candidate constraints of the pattern) give them, both ways:
+    /// the couplings of any subset of those constraints, with rows and
+    /// columns distributed through it or not (add_entries_local_to_global()
+    /// replaces a constrained DoF by its masters, and misses a column that
+    /// the assembly's own constraints leave free).
+    static void
+    add_closed_couplings(const std::vector<types::global_dof_index> &dofs,
+                         const AffineConstraints<double>            &constraints,
+                         DynamicSparsityPattern                     &pattern);
+
     virtual std::unique_ptr<State>
     save_state() const = 0;
 
