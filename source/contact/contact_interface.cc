@@ -399,12 +399,10 @@ namespace contact_fem
     owned_row_nodes.clear();
     ghost_row_nodes.clear();
     row_holder.assign(nodes.size(), 0);
-    IndexSet own_rows(owned_dofs.size()), ghost_rows(owned_dofs.size());
     for (const auto &[row, n] : node_of_row)
       if (owned_dofs.is_element(row))
         {
           owned_row_nodes.push_back(n);
-          own_rows.add_index(row);
           row_holder[n] = 1;
         }
       else if (std::any_of(nodes[n].dofs.begin(), nodes[n].dofs.end(), [&](const auto dof) {
@@ -412,14 +410,10 @@ namespace contact_fem
                }))
         {
           ghost_row_nodes.push_back(n);
-          ghost_rows.add_index(row);
           row_holder[n] = 2;
         }
-    own_rows.compress();
-    ghost_rows.compress();
-    row_import =
-      std::make_shared<const Utilities::MPI::NoncontiguousPartitioner>(own_rows, ghost_rows,
-                                                                       mpi_communicator);
+    row_imports = std::make_shared<
+      std::map<unsigned int, std::shared_ptr<const Utilities::MPI::NoncontiguousPartitioner>>>();
   }
 
   template <int dim>
@@ -429,17 +423,32 @@ namespace contact_fem
   {
     if (Utilities::MPI::n_mpi_processes(mpi_communicator) == 1)
       return;
-    // The ghosts: from their owners, point to point.
-    std::vector<double> own(owned_row_nodes.size()), ghosts(ghost_row_nodes.size());
-    for (auto *field : fields)
+    // The ghosts: from their owners, point to point, all fields at once
+    // (index K x DoF + k of field k of K), so the ranks meet once.
+    const unsigned int K      = fields.size();
+    auto              &import = (*row_imports)[K];
+    if (!import)
       {
-        for (unsigned int i = 0; i < owned_row_nodes.size(); ++i)
-          own[i] = (*field)[owned_row_nodes[i]];
-        row_import->export_to_ghosted_array(ArrayView<const double>(own),
-                                            ArrayView<double>(ghosts));
-        for (unsigned int i = 0; i < ghost_row_nodes.size(); ++i)
-          (*field)[ghost_row_nodes[i]] = ghosts[i];
+        IndexSet own_rows(owned_dofs.size() * K), ghost_rows(owned_dofs.size() * K);
+        for (const auto *held : {&owned_row_nodes, &ghost_row_nodes})
+          for (const unsigned int n : *held)
+            for (unsigned int k = 0; k < K; ++k)
+              (held == &owned_row_nodes ? own_rows : ghost_rows)
+                .add_index(nodes[n].dofs[0] * K + k);
+        own_rows.compress();
+        ghost_rows.compress();
+        import =
+          std::make_shared<const Utilities::MPI::NoncontiguousPartitioner>(own_rows, ghost_rows,
+                                                                           mpi_communicator);
       }
+    std::vector<double> own(owned_row_nodes.size() * K), ghosts(ghost_row_nodes.size() * K);
+    for (unsigned int i = 0; i < owned_row_nodes.size(); ++i)
+      for (unsigned int k = 0; k < K; ++k)
+        own[i * K + k] = (*fields[k])[owned_row_nodes[i]];
+    import->export_to_ghosted_array(ArrayView<const double>(own), ArrayView<double>(ghosts));
+    for (unsigned int i = 0; i < ghost_row_nodes.size(); ++i)
+      for (unsigned int k = 0; k < K; ++k)
+        (*fields[k])[ghost_row_nodes[i]] = ghosts[i * K + k];
     // The rest: the owned nodes with a key value other than +0 (a -0 too,
     // so the copies are exact), all-gathered; every other node gets +0.
     const auto is_set = [](const double v) {
@@ -459,13 +468,12 @@ namespace contact_fem
       if (row_holder[n] == 0 && nodes[n].slave && nodes[n].parents.empty())
         for (auto *field : fields)
           (*field)[n] = 0.;
-    const unsigned int stride = 1 + fields.size();
     for (const auto &chunk : Utilities::MPI::all_gather(mpi_communicator, zone))
-      for (unsigned int i = 0; i < chunk.size(); i += stride)
+      for (unsigned int i = 0; i < chunk.size(); i += 1 + K)
         {
           const auto n = static_cast<unsigned int>(chunk[i]);
           if (row_holder[n] == 0)
-            for (unsigned int k = 0; k < fields.size(); ++k)
+            for (unsigned int k = 0; k < K; ++k)
               (*fields[k])[n] = chunk[i + 1 + k];
         }
   }

@@ -463,8 +463,8 @@ namespace contact_fem
     count_own_slave_nodes();
 
     /// Sets the row holders of the regular slave nodes (owned_row_nodes,
-    /// ghost_row_nodes, row_holder) and the import of the ghosts' values
-    /// (share_node_values()), from the locally relevant DoFs @p relevant.
+    /// ghost_row_nodes, row_holder) from the locally relevant DoFs
+    /// @p relevant, and empties the imports of share_node_values().
     void
     find_row_holders(const IndexSet &relevant);
 
@@ -645,8 +645,12 @@ namespace contact_fem
     /// row is owned here, 2 if a ghost, 0 otherwise (and for other nodes).
     std::vector<unsigned int> owned_row_nodes, ghost_row_nodes;
     std::vector<char>         row_holder;
-    std::shared_ptr<const Utilities::MPI::NoncontiguousPartitioner> row_import;
-    MPI_Comm                                                        mpi_communicator;
+    /// The imports of share_node_values(), per number of fields, built at
+    /// the first call (collective, as the call is); shared by copies.
+    std::shared_ptr<
+      std::map<unsigned int, std::shared_ptr<const Utilities::MPI::NoncontiguousPartitioner>>>
+             row_imports;
+    MPI_Comm mpi_communicator;
   };
   // The tiling checks differ by dimension (contact_interface_tiling.cc).
   template <>
