@@ -4,6 +4,7 @@
 // contact_interface_tiling.cc.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
 
 #include <contact_fem/contact/contact_interface.h>
@@ -270,6 +271,11 @@ namespace contact_fem
         if (node.fixed[d])
           fixed_positions[dof_position[node.dofs[d]]] = true;
     find_hanging_vertices(hanging);
+    {
+      IndexSet relevant;
+      DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+      find_row_holders(relevant);
+    }
     find_pair_materials();
     count_own_slave_nodes();
     slave_nodes.clear();
@@ -379,6 +385,97 @@ namespace contact_fem
         M_of_node.erase(h);
         it = slave_data.erase(it);
       }
+  }
+
+  template <int dim>
+  void
+  ContactInterface<dim>::find_row_holders(const IndexSet &relevant)
+  {
+    // The regular slave nodes by x DoF: the import's order.
+    std::map<types::global_dof_index, unsigned int> node_of_row;
+    for (unsigned int n = 0; n < nodes.size(); ++n)
+      if (nodes[n].slave && nodes[n].parents.empty())
+        node_of_row[nodes[n].dofs[0]] = n;
+    owned_row_nodes.clear();
+    ghost_row_nodes.clear();
+    row_holder.assign(nodes.size(), 0);
+    for (const auto &[row, n] : node_of_row)
+      if (owned_dofs.is_element(row))
+        {
+          owned_row_nodes.push_back(n);
+          row_holder[n] = 1;
+        }
+      else if (std::any_of(nodes[n].dofs.begin(), nodes[n].dofs.end(), [&](const auto dof) {
+                 return relevant.is_element(dof);
+               }))
+        {
+          ghost_row_nodes.push_back(n);
+          row_holder[n] = 2;
+        }
+    row_imports = std::make_shared<
+      std::map<unsigned int, std::shared_ptr<const Utilities::MPI::NoncontiguousPartitioner>>>();
+  }
+
+  template <int dim>
+  void
+  ContactInterface<dim>::share_node_values(const std::vector<std::vector<double> *> &fields,
+                                           const unsigned int                        n_key) const
+  {
+    if (Utilities::MPI::n_mpi_processes(mpi_communicator) == 1)
+      return;
+    // The ghosts: from their owners, point to point, all fields at once
+    // (index K x DoF + k of field k of K), so the ranks meet once.
+    const unsigned int K      = fields.size();
+    auto              &import = (*row_imports)[K];
+    if (!import)
+      {
+        IndexSet own_rows(owned_dofs.size() * K), ghost_rows(owned_dofs.size() * K);
+        for (const auto *held : {&owned_row_nodes, &ghost_row_nodes})
+          for (const unsigned int n : *held)
+            for (unsigned int k = 0; k < K; ++k)
+              (held == &owned_row_nodes ? own_rows : ghost_rows)
+                .add_index(nodes[n].dofs[0] * K + k);
+        own_rows.compress();
+        ghost_rows.compress();
+        import =
+          std::make_shared<const Utilities::MPI::NoncontiguousPartitioner>(own_rows, ghost_rows,
+                                                                           mpi_communicator);
+      }
+    std::vector<double> own(owned_row_nodes.size() * K), ghosts(ghost_row_nodes.size() * K);
+    for (unsigned int i = 0; i < owned_row_nodes.size(); ++i)
+      for (unsigned int k = 0; k < K; ++k)
+        own[i * K + k] = (*fields[k])[owned_row_nodes[i]];
+    import->export_to_ghosted_array(ArrayView<const double>(own), ArrayView<double>(ghosts));
+    for (unsigned int i = 0; i < ghost_row_nodes.size(); ++i)
+      for (unsigned int k = 0; k < K; ++k)
+        (*fields[k])[ghost_row_nodes[i]] = ghosts[i * K + k];
+    // The rest: the owned nodes with a key value other than +0 (a -0 too,
+    // so the copies are exact), all-gathered; every other node gets +0.
+    const auto is_set = [](const double v) {
+      return v != 0. || std::signbit(v);
+    };
+    std::vector<double> zone;
+    for (const unsigned int n : owned_row_nodes)
+      if (std::any_of(fields.begin(), fields.begin() + n_key, [&](const auto *field) {
+            return is_set((*field)[n]);
+          }))
+        {
+          zone.push_back(n);
+          for (const auto *field : fields)
+            zone.push_back((*field)[n]);
+        }
+    for (unsigned int n = 0; n < nodes.size(); ++n)
+      if (row_holder[n] == 0 && nodes[n].slave && nodes[n].parents.empty())
+        for (auto *field : fields)
+          (*field)[n] = 0.;
+    for (const auto &chunk : Utilities::MPI::all_gather(mpi_communicator, zone))
+      for (unsigned int i = 0; i < chunk.size(); i += 1 + K)
+        {
+          const auto n = static_cast<unsigned int>(chunk[i]);
+          if (row_holder[n] == 0)
+            for (unsigned int k = 0; k < K; ++k)
+              (*fields[k])[n] = chunk[i + 1 + k];
+        }
   }
 
   template <int dim>

@@ -252,6 +252,40 @@ namespace contact_fem
     std::vector<double>
     gather(const std::function<double(types::global_dof_index)> &value_on_owner) const;
 
+    /// Whether this rank owns the row of slave node @p s (its x DoF): it
+    /// assembles it and makes the node's decisions (active set,
+    /// multipliers), which the others receive (share_node_values()).
+    bool
+    owns_row(const SlaveNode &s) const
+    {
+      return owned_dofs.is_element(nodes[s.node].dofs[0]);
+    }
+
+    /**
+     * Per-node values of the formulation's state (@p fields, each indexed
+     * by node) of the regular slave nodes, decided by the owners of their
+     * rows (owns_row()), copied to the other ranks: to the ghosts (slave
+     * nodes with a locally relevant DoF whose row another rank owns) point
+     * to point from their owners; to the other slave nodes (the readers
+     * that still read the whole interface: the residuals' sums in node
+     * order, the constraint lines of every rank, the postprocessors) by an
+     * all-gather of the owned nodes where one of the first @p n_key fields
+     * is not +0 (the contact zone), the others set to +0. Exact copies.
+     * Collective.
+     */
+    void
+    share_node_values(const std::vector<std::vector<double> *> &fields,
+                      const unsigned int                        n_key) const;
+
+    /// The numbers of regular slave nodes whose row this rank owns (first)
+    /// and of its ghosts (second); share_node_values().
+    std::pair<unsigned int, unsigned int>
+    count_held_rows() const
+    {
+      return {static_cast<unsigned int>(owned_row_nodes.size()),
+              static_cast<unsigned int>(ghost_row_nodes.size())};
+    }
+
     /**
      * Search and mortar integration on X + u, @p u given at dofs(). The box
      * of a slave face of pair p is enlarged by @p search_factor times its
@@ -428,6 +462,12 @@ namespace contact_fem
     void
     count_own_slave_nodes();
 
+    /// Sets the row holders of the regular slave nodes (owned_row_nodes,
+    /// ghost_row_nodes, row_holder) from the locally relevant DoFs
+    /// @p relevant, and empties the imports of share_node_values().
+    void
+    find_row_holders(const IndexSet &relevant);
+
     /// Sets pair_materials from the faces of every rank.
     void
     find_pair_materials();
@@ -600,7 +640,17 @@ namespace contact_fem
     /// initialize().
     IndexSet owned_interface_dofs, ghost_interface_dofs;
     std::shared_ptr<const Utilities::MPI::NoncontiguousPartitioner> ghost_import;
-    MPI_Comm                                                        mpi_communicator;
+    /// The regular slave nodes whose row this rank owns and its ghosts,
+    /// each sorted by x DoF (the order of the import); per node 1 if its
+    /// row is owned here, 2 if a ghost, 0 otherwise (and for other nodes).
+    std::vector<unsigned int> owned_row_nodes, ghost_row_nodes;
+    std::vector<char>         row_holder;
+    /// The imports of share_node_values(), per number of fields, built at
+    /// the first call (collective, as the call is); shared by copies.
+    std::shared_ptr<
+      std::map<unsigned int, std::shared_ptr<const Utilities::MPI::NoncontiguousPartitioner>>>
+             row_imports;
+    MPI_Comm mpi_communicator;
   };
   // The tiling checks differ by dimension (contact_interface_tiling.cc).
   template <>

@@ -1,3 +1,4 @@
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -51,8 +52,11 @@ namespace contact_fem
     std::fill(released_pressure.begin(), released_pressure.end(), 0.);
     auto &pressure = this->pressure;
     auto &active   = this->active;
+    // Each rank decides the nodes whose rows it owns (share_states()).
     for (const auto &s : interface.slave_nodes)
       {
+        if (!interface.owns_row(s))
+          continue;
         if (!s.paired)
           {
             active[s.node]   = false;
@@ -68,6 +72,7 @@ namespace contact_fem
             pressure[s.node]          = 0.;
           }
       }
+    this->share_states(interface, {&released_pressure});
     this->deactivate_master_nodes(interface);
   }
 
@@ -125,6 +130,8 @@ namespace contact_fem
   {
     for (const auto &s : interface.slave_nodes)
       {
+        if (!interface.owns_row(s))
+          continue;
         if (!s.paired || !this->active[s.node])
           {
             this->pressure[s.node] = 0.;
@@ -134,6 +141,7 @@ namespace contact_fem
         const double       r   = residual[interface.position(interface.nodes[s.node].dofs[c])];
         this->pressure[s.node] = -r / (s.D * s.normal[c]);
       }
+    this->share_states(interface, {&released_pressure});
   }
 
   template <int dim>
@@ -147,6 +155,8 @@ namespace contact_fem
     auto &active   = this->active;
     for (const auto &s : interface.slave_nodes)
       {
+        if (!interface.owns_row(s))
+          continue;
         if (!s.paired)
           {
             // Current kinematics: a node may leave its masters during Newton.
@@ -168,7 +178,8 @@ namespace contact_fem
           }
         active[s.node] = now_active;
       }
-    return changes;
+    this->share_states(interface, {&released_pressure});
+    return Utilities::MPI::sum(changes, interface.communicator());
   }
 
   template <int dim>

@@ -358,6 +358,22 @@ namespace contact_fem
     return force;
   }
 
+  template <int dim>
+  void
+  FrictionlessFormulation<dim>::share_states(const ContactInterface<dim>              &interface,
+                                             const std::vector<std::vector<double> *> &key_fields,
+                                             const std::vector<std::vector<double> *> &other_fields)
+  {
+    std::vector<double>                active_values(active.begin(), active.end());
+    std::vector<std::vector<double> *> fields = {&active_values, &pressure};
+    fields.insert(fields.end(), key_fields.begin(), key_fields.end());
+    const unsigned int n_key = fields.size();
+    fields.insert(fields.end(), other_fields.begin(), other_fields.end());
+    interface.share_node_values(fields, n_key);
+    for (unsigned int n = 0; n < active.size(); ++n)
+      active[n] = active_values[n] != 0.;
+  }
+
   template class FrictionlessFormulation<2>;
   template class FrictionlessFormulation<3>;
 } // namespace contact_fem

@@ -1,3 +1,4 @@
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -71,8 +72,11 @@ namespace contact_fem
     this->set_pair_scaling(interface, adaptive ? 1. : 1e4);
     auto &pressure = this->pressure;
     auto &active   = this->active;
+    // Each rank decides the nodes whose rows it owns (share_states()).
     for (const auto &s : interface.slave_nodes)
       {
+        if (!interface.owns_row(s))
+          continue;
         if (!s.paired)
           {
             active[s.node]   = false;
@@ -88,6 +92,9 @@ namespace contact_fem
         if (!active[s.node])
           pressure[s.node] = 0.;
       }
+    // The penalties are read only at active nodes (add_results()); the
+    // previous gaps only by the owner.
+    this->share_states(interface, {}, {&node_penalty});
     this->deactivate_master_nodes(interface);
   }
 
@@ -254,7 +261,7 @@ namespace contact_fem
     unsigned int changes = 0;
     for (const auto &s : interface.slave_nodes)
       {
-        if (!s.paired)
+        if (!s.paired || !interface.owns_row(s))
           continue;
         const double g          = interface.gap(s, u);
         const bool   now_active = g < 0.;
@@ -277,7 +284,8 @@ namespace contact_fem
         previous_gap[s.node] = g;
         this->active[s.node] = now_active;
       }
-    return changes;
+    this->share_states(interface, {}, {&node_penalty});
+    return Utilities::MPI::sum(changes, interface.communicator());
   }
 
   template <int dim>

@@ -255,6 +255,15 @@ namespace contact_fem
     std::vector<double>
     contact_forces(const ContactInterface<dim> &interface) const;
 
+    /// After the owners of the rows decided their nodes (active, pressure
+    /// and the derived class's @p key_fields, per node; @p other_fields
+    /// read only where a key value is set), the other ranks get them
+    /// (ContactInterface::share_node_values()). Collective.
+    void
+    share_states(const ContactInterface<dim>              &interface,
+                 const std::vector<std::vector<double> *> &key_fields   = {},
+                 const std::vector<std::vector<double> *> &other_fields = {});
+
     Parameters          parameters;
     std::vector<double> pressure;           ///< lambda per interface node
     std::vector<bool>   active;             ///< per interface node
