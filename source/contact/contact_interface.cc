@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -429,6 +430,13 @@ namespace contact_fem
     auto              &import = (*row_imports)[K];
     if (!import)
       {
+        // The K x DoF numbering must fit the index type.
+        AssertThrow(owned_dofs.size() <= std::numeric_limits<types::global_dof_index>::max() / K,
+                    ExcMessage("The contact interface's node-state exchange numbers " +
+                               std::to_string(K) + " fields per DoF; " +
+                               std::to_string(owned_dofs.size()) +
+                               " DoFs exceed the DoF index type (build deal.II with "
+                               "64-bit indices)."));
         IndexSet own_rows(owned_dofs.size() * K), ghost_rows(owned_dofs.size() * K);
         for (const auto *held : {&owned_row_nodes, &ghost_row_nodes})
           for (const unsigned int n : *held)
