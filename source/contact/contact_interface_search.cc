@@ -228,7 +228,7 @@ namespace contact_fem
               }
             if (masters.empty())
               continue;
-            check_tiling(f, geometries, masters, overlaps, facing);
+            check_tiling(f, geometries, normals, masters, overlaps, facing);
             const FullMatrix<double> A = Kernel::dual_basis(geometries[f], normals, overlaps);
             const std::size_t        count_at = packed.size() + 1;
             packed.push_back(f);

@@ -752,6 +752,48 @@ namespace contact_fem
       });
     }
 
+    double
+    projected_area(const QuadFace                      &slave,
+                   const std::vector<Tensor<1, 3>>     &slave_normals,
+                   const std::vector<ParameterPolygon> &polygons)
+    {
+      // Green's theorem, area = 1/2 sum over the edges of (x dy - y dx), in
+      // the auxiliary plane, where the overlap's edges are straight (and a
+      // zero-width join of clip_convex() has no area), but for edges on the
+      // slave boundary (both ends on xi = +-1 or on eta = +-1), which
+      // follow the face: along such an edge the projected point is a
+      // polynomial of degree <= 2 in its parameter, the integrand of degree
+      // <= 3, which 3 Gauss points integrate exactly.
+      const AuxiliaryPlane plane = auxiliary_plane(slave, slave_normals);
+      const QGauss<1>      gauss(3);
+      double               area = 0.;
+      for (const ParameterPolygon &polygon : polygons)
+        for (std::size_t k = 0; k < polygon.size(); ++k)
+          {
+            const Point<2> &a = polygon[k], &b = polygon[(k + 1) % polygon.size()];
+            bool            on_boundary = false;
+            for (unsigned int d = 0; d < 2; ++d)
+              on_boundary |= std::abs(a[d]) == 1. && b[d] == a[d];
+            if (!on_boundary)
+              {
+                area += 0.5 * cross_2d(plane.coordinates(slave.point(a)),
+                                       plane.coordinates(slave.point(b)));
+                continue;
+              }
+            for (unsigned int q = 0; q < gauss.size(); ++q)
+              {
+                const double   s = gauss.point(q)[0];
+                const Point<2> x = plane.coordinates(slave.point(a + s * (b - a)));
+                // d/ds of the projected point, by the face's tangents.
+                const Tensor<1, 3> dx_3d = slave.tangents(a + s * (b - a))[0] * (b[0] - a[0]) +
+                                           slave.tangents(a + s * (b - a))[1] * (b[1] - a[1]);
+                const Tensor<1, 2> dx({dx_3d * plane.e1, dx_3d * plane.e2});
+                area += 0.5 * gauss.weight(q) * (x[0] * dx[1] - x[1] * dx[0]);
+              }
+          }
+      return area;
+    }
+
     bool
     project_along(const QuadFace     &face,
                   const Point<3>     &x,
@@ -1066,8 +1108,7 @@ namespace contact_fem
               const unsigned int prev = (k + values.size() - 1) % values.size(),
                                  next = (k + 1) % values.size();
               if (!vertex_parameter_value(slave_values, plane_values, chords, values[k],
-                                          values[prev], values[next], xi, projected,
-                                          crossing))
+                                          values[prev], values[next], xi, projected, crossing))
                 {
                   polygons.clear();
                   return false;

@@ -266,8 +266,10 @@ namespace contact_fem
                       "or not at all (doc/stability.md).");
     prm.declare_entry("Direct solver", "Amesos_Mumps",
                       Patterns::Selection("Amesos_Klu|Amesos_Mumps"),
-                      "Trilinos Amesos direct solver of the condensed system: "
-                      "MUMPS (METIS ordering, distributed under MPI) or KLU "
+                      "Direct solver of the condensed system: MUMPS (METIS "
+                      "ordering; under MPI on the first process, the matrix "
+                      "gathered there: its parallel factorisation is not "
+                      "deterministic, doc/stability.md) or Trilinos Amesos KLU "
                       "(gathers the matrix on one process). MUMPS is the faster "
                       "from 5k DoFs on, 7x at 74k DoFs (doc/performance.md), and "
                       "the only one that detects zero pivots (free rigid-body "

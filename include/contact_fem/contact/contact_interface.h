@@ -506,6 +506,7 @@ namespace contact_fem
     void
     check_tiling(const unsigned int                            f,
                  const std::vector<FaceGeometry>              &geometries,
+                 const std::vector<Tensor<1, dim>>            &normals,
                  const std::vector<unsigned int>              &masters,
                  const typename Mortar::Kernel<dim>::Overlaps &overlaps,
                  const std::vector<unsigned int>              &facing) const;
@@ -657,6 +658,7 @@ namespace contact_fem
   void
   ContactInterface<2>::check_tiling(const unsigned int,
                                     const std::vector<Mortar::LineFace> &,
+                                    const std::vector<Tensor<1, 2>> &,
                                     const std::vector<unsigned int> &,
                                     const Mortar::Kernel<2>::Overlaps &,
                                     const std::vector<unsigned int> &) const;
@@ -664,6 +666,7 @@ namespace contact_fem
   void
   ContactInterface<3>::check_tiling(const unsigned int,
                                     const std::vector<Mortar::QuadFace> &,
+                                    const std::vector<Tensor<1, 3>> &,
                                     const std::vector<unsigned int> &,
                                     const Mortar::Kernel<3>::Overlaps &,
                                     const std::vector<unsigned int> &) const;

@@ -121,6 +121,22 @@ namespace contact_fem
                             const std::vector<ParameterPolygon> &polygons);
 
     /**
+     * The area of the overlap @p polygons (slave parameters) projected along
+     * n0 into the auxiliary plane of @p slave, the region
+     * integrate_pair() integrates: edges straight in that plane, but edges
+     * on the slave boundary following the face. Exact up to round-off for
+     * Q1 and Q2 faces. {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}} gives the whole
+     * face's. (The same polygons' area in the slave parameters is not the
+     * region's on a curved face: an edge straight in the plane is curved
+     * in the parameters, and the zero-width joins of the clipping, which
+     * have no area in the plane, have some there.)
+     */
+    double
+    projected_area(const QuadFace                      &slave,
+                   const std::vector<Tensor<1, 3>>     &slave_normals,
+                   const std::vector<ParameterPolygon> &polygons);
+
+    /**
      * Projects a point @p x along @p direction onto the surface of @p face:
      * returns the parameter eta with face(eta) = x + t direction for some t,
      * found by Newton's method on (eta, t) from eta = 0 (exact after one

@@ -16,6 +16,8 @@ namespace contact_fem
 {
   using namespace dealii;
 
+  class RankZeroMumps;
+
 
   /**
    * A Trilinos Amesos direct solver (KLU or MUMPS) for one sparsity pattern.
@@ -83,10 +85,7 @@ namespace contact_fem
                             const TrilinosWrappers::MPI::Vector &rhs);
 
     bool
-    has_factorisation() const
-    {
-      return solver != nullptr && factorised_matrix != nullptr;
-    }
+    has_factorisation() const;
 
     bool
     detects_null_pivots() const override
@@ -115,7 +114,10 @@ namespace contact_fem
     /// default.
     int                                   workspace_percent = 0;
     std::unique_ptr<Epetra_LinearProblem> problem;
-    std::unique_ptr<Amesos_BaseSolver>    solver;
+    /// KLU (Amesos).
+    std::unique_ptr<Amesos_BaseSolver> solver;
+    /// MUMPS, on process 0 (rank_zero_mumps.h: deterministic under MPI).
+    std::unique_ptr<RankZeroMumps> mumps;
     /// The matrix whose pattern the symbolic factorisation belongs to.
     const Epetra_CrsMatrix *factorised_matrix   = nullptr;
     std::size_t             factorised_nonzeros = 0;
