@@ -111,7 +111,7 @@ namespace contact_fem
             if (inserted)
               {
                 patch.points.push_back(interface.nodes[n].reference + u[n]);
-                chain.push_back({{n, 1.}});
+                add_terms(it->second, {{n, 1.}});
               }
             result.nodes.push_back(it->second);
           }
@@ -119,15 +119,16 @@ namespace contact_fem
           {
             const auto xi = Mortar::Kernel<dim>::node_parameter(2, face.nodes.size() + k);
             Point<dim> x  = face.geometry_points[k];
-            chain.emplace_back();
+            std::vector<std::pair<unsigned int, double>> weights;
             for (unsigned int v = 0; v < face.nodes.size(); ++v)
               {
                 const double w = Mortar::Kernel<dim>::shape_value(1, v, xi);
                 x += w * u[face.nodes[v]];
-                chain.back().emplace_back(face.nodes[v], w);
+                weights.emplace_back(face.nodes[v], w);
               }
             result.nodes.push_back(patch.points.size());
             patch.points.push_back(x);
+            add_terms(result.nodes.back(), weights);
           }
         return result;
       }
@@ -135,23 +136,50 @@ namespace contact_fem
       /// Adds @p factor times the coordinate derivatives @p derivatives,
       /// taken to the displacement DoFs, to @p sums. Every DoF of the patch
       /// gets an entry, zero or not: the sparsity pattern holds the
-      /// couplings of the patch, whatever the configuration.
+      /// couplings of the patch, whatever the configuration. Each DoF's
+      /// entry is looked up once per call, then the terms are added in
+      /// chain order (the same sums, operation by operation, as looking
+      /// each term up).
       void
       add(const std::vector<double> &derivatives, const double factor, DofMap &sums) const
       {
-        for (unsigned int i = 0; i < chain.size(); ++i)
-          for (const auto &[node, weight] : chain[i])
-            for (unsigned int d = 0; d < dim; ++d)
-              sums[interface.nodes[node].dofs[d]] += factor * weight * derivatives[dim * i + d];
+        for (const auto &[node, point] : point_of_node)
+          for (unsigned int d = 0; d < dim; ++d)
+            entries[dim * point + d] = &sums[interface.nodes[node].dofs[d]];
+        for (const Term &t : terms)
+          *entries[t.entry] += factor * t.weight * derivatives[t.coordinate];
       }
 
       typename Linearisation<dim>::Patch patch;
 
     private:
-      const ContactInterface<dim>                              &interface;
-      const std::vector<Tensor<1, dim>>                        &u;
-      std::map<unsigned int, unsigned int>                      point_of_node;
-      std::vector<std::vector<std::pair<unsigned int, double>>> chain;
+      /// A point's coordinate d moves with weight times node's
+      /// displacement component d: the term weight * derivative
+      /// (coordinate) of the DoF at entry.
+      struct Term
+      {
+        unsigned int coordinate, entry;
+        double       weight;
+      };
+
+      /// Adds the terms of point @p point, moving with @p weights of nodes.
+      void
+      add_terms(const unsigned int                                  point,
+                const std::vector<std::pair<unsigned int, double>> &weights)
+      {
+        for (const auto &[node, weight] : weights)
+          for (unsigned int d = 0; d < dim; ++d)
+            terms.push_back({dim * point + d, dim * point_of_node.at(node) + d, weight});
+        entries.resize(dim * patch.points.size());
+      }
+
+      const ContactInterface<dim>         &interface;
+      const std::vector<Tensor<1, dim>>   &u;
+      std::map<unsigned int, unsigned int> point_of_node;
+      /// The chain from the points to the nodes, point by point.
+      std::vector<Term> terms;
+      /// The sums' entry of each node point's DoFs (add()).
+      mutable std::vector<double *> entries;
     };
 
     /// The frictional derivatives of slave node @p k of a pair (@p result)

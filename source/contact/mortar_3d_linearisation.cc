@@ -195,6 +195,8 @@ namespace contact_fem
             result.nodes.push_back(x);
           }
         result.element_degree = face.element_degree;
+        if constexpr (!std::is_same_v<Number, double>)
+          result.first_variable = first;
         return result;
       }
 

@@ -134,6 +134,12 @@ namespace contact_fem
       {
         return (shape_degree() + 1) * (shape_degree() + 1);
       }
+      /// If set (linearise_slave_face()): coordinate d of node i is the AD
+      /// variable first_variable + 3 i + d itself (unit derivative), and
+      /// point() and tangents() at an AD parameter take their derivatives
+      /// by the chain rule in double (chained()) instead of AD products.
+      int first_variable = -1;
+
       // point() and tangents() evaluate the 1D shapes once per direction
       // (the nodes share them) and add component by component, without
       // temporary vectors: the same operations on each number as
@@ -141,6 +147,8 @@ namespace contact_fem
       Point<3, Number>
       point(const Point<2, Number> &xi) const
       {
+        if (first_variable >= 0)
+          return Point<3, Number>(chained(xi, false)[0]);
         const unsigned int    p = degree();
         std::array<Number, 3> l0, l1;
         for (unsigned int a = 0; a <= p; ++a)
@@ -158,23 +166,14 @@ namespace contact_fem
           }
         return x;
       }
-      /// The point at a parameter @p xi that is not differentiated (a root
-      /// found in double): the shapes in double.
-      Point<3, Number>
-      point(const Point<2> &xi) const
-      {
-        Point<3, Number> x;
-        for (unsigned int i = 0; i < nodes.size(); ++i)
-          {
-            const double N = quad_shape_value(degree(), i, xi);
-            for (unsigned int d = 0; d < 3; ++d)
-              x[d] += N * nodes[i][d];
-          }
-        return x;
-      }
       std::array<Tensor<1, 3, Number>, 2>
       tangents(const Point<2, Number> &xi) const
       {
+        if (first_variable >= 0)
+          {
+            const auto t = chained(xi, true);
+            return {{t[1], t[2]}};
+          }
         const unsigned int    p = degree();
         std::array<Number, 3> l0, l1, dl0, dl1;
         for (unsigned int a = 0; a <= p; ++a)
@@ -197,6 +196,101 @@ namespace contact_fem
               }
           }
         return t;
+      }
+
+      /**
+       * The point (entry 0) or the tangents (entries 1, 2) at @p xi for
+       * nodes that are AD variables (first_variable): y = sum_i S_i(xi) x_i
+       * with S_i the shape or its xi or eta derivative, values as point()
+       * and tangents() form them; dy = sum_i (dS_i/dxi_c x_i) dxi_c +
+       * S_i dx_i, the first sums in double, then one pass over the
+       * derivatives (the AD products of point(), tangents() pass over
+       * them once per node and component).
+       */
+      std::array<Tensor<1, 3, Number>, 3>
+      chained(const Point<2, Number> &xi, const bool tangent) const
+      {
+        const unsigned int    p = degree();
+        const double          u = xi[0].val(), v = xi[1].val();
+        std::array<double, 3> l0, l1, dl0, dl1, ddl0, ddl1;
+        for (unsigned int a = 0; a <= p; ++a)
+          {
+            l0[a]   = lagrange_value(p, a, u);
+            l1[a]   = lagrange_value(p, a, v);
+            dl0[a]  = lagrange_derivative(p, a, u);
+            dl1[a]  = lagrange_derivative(p, a, v);
+            ddl0[a] = p == 1 ? 0. : (a == 2 ? -2. : 1.);
+            ddl1[a] = ddl0[a];
+          }
+        const unsigned int n_results = tangent ? 2 : 1;
+        // For result r: shape S, and its derivatives in xi and eta.
+        const auto shape = [&](const unsigned int r, const unsigned int a, const unsigned int b,
+                               const unsigned int c) {
+          if (r == 0)
+            return c == 0 ? l0[a] * l1[b] : (c == 1 ? dl0[a] * l1[b] : l0[a] * dl1[b]);
+          if (r == 1)
+            return c == 0 ? dl0[a] * l1[b] : (c == 1 ? ddl0[a] * l1[b] : dl0[a] * dl1[b]);
+          return c == 0 ? l0[a] * dl1[b] : (c == 1 ? dl0[a] * dl1[b] : l0[a] * ddl1[b]);
+        };
+        std::array<Tensor<1, 3, Number>, 3> result;
+        const int                           n = xi[0].size();
+        for (unsigned int k = 0; k < n_results; ++k)
+          {
+            const unsigned int r = tangent ? k + 1 : 0;
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                double value = 0., by_xi = 0., by_eta = 0.;
+                for (unsigned int i = 0; i < nodes.size(); ++i)
+                  {
+                    const auto [a, b] = quad_line_indices(p, i);
+                    const double x    = nodes[i][d].val();
+                    value += shape(r, a, b, 0) * x;
+                    by_xi += shape(r, a, b, 1) * x;
+                    by_eta += shape(r, a, b, 2) * x;
+                  }
+                Number &y = result[r][d];
+                y         = Number(value);
+                for (int w = 0; w < n; ++w)
+                  y.fastAccessDx(w) =
+                    by_xi * xi[0].fastAccessDx(w) + by_eta * xi[1].fastAccessDx(w);
+                for (unsigned int i = 0; i < nodes.size(); ++i)
+                  {
+                    const auto [a, b] = quad_line_indices(p, i);
+                    y.fastAccessDx(first_variable + 3 * i + d) += shape(r, a, b, 0);
+                  }
+              }
+          }
+        return result;
+      }
+      /// The point at a parameter @p xi that is not differentiated (a root
+      /// found in double): the shapes in double.
+      Point<3, Number>
+      point(const Point<2> &xi) const
+      {
+        if (first_variable >= 0)
+          {
+            // The same numbers as the sums below (whose other terms are
+            // zero).
+            Point<3, Number> x;
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                double value = 0.;
+                for (unsigned int i = 0; i < nodes.size(); ++i)
+                  value += quad_shape_value(degree(), i, xi) * nodes[i][d].val();
+                x[d] = Number(value);
+                for (unsigned int i = 0; i < nodes.size(); ++i)
+                  x[d].fastAccessDx(first_variable + 3 * i + d) = quad_shape_value(degree(), i, xi);
+              }
+            return x;
+          }
+        Point<3, Number> x;
+        for (unsigned int i = 0; i < nodes.size(); ++i)
+          {
+            const double N = quad_shape_value(degree(), i, xi);
+            for (unsigned int d = 0; d < 3; ++d)
+              x[d] += N * nodes[i][d];
+          }
+        return x;
       }
     };
 
