@@ -117,14 +117,7 @@ namespace
   void
   make_blocks(Triangulation<3> &tria)
   {
-    Triangulation<3> lower, upper;
-    GridGenerator::subdivided_hyper_rectangle(lower, {3, 3, 1}, Point<3>(0., 0., 0.),
-                                              Point<3>(1., 1., 1.));
-    // The upper block overhangs the lower one: no coincident rims, whose
-    // clipping would change topology inside a difference.
-    GridGenerator::subdivided_hyper_rectangle(upper, {2, 2, 1}, Point<3>(-0.1, -0.1, 1.05),
-                                              Point<3>(1.1, 1.1, 2.05));
-    GridGenerator::merge_triangulations(lower, upper, tria);
+    make_stacked_blocks_3d(tria);
   }
 
   template <int dim>

@@ -207,13 +207,7 @@ namespace
   void
   make_blocks(Triangulation<3> &tria)
   {
-    Triangulation<3> lower, upper;
-    GridGenerator::subdivided_hyper_rectangle(lower, {3, 3, 1}, Point<3>(0., 0., 0.),
-                                              Point<3>(1., 1., 1.));
-    GridGenerator::subdivided_hyper_rectangle(upper, {2, 2, 1}, Point<3>(-0.1, -0.1, 1.05),
-                                              Point<3>(1.1, 1.1, 2.05));
-    GridGenerator::merge_triangulations(lower, upper, tria);
-    label_stacked_blocks(tria, 0.05);
+    make_stacked_blocks_3d(tria);
     for (const auto &cell : tria.active_cell_iterators())
       {
         const Point<3> c     = cell->center();

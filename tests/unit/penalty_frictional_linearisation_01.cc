@@ -93,13 +93,8 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
-  Triangulation<3> tria, lower, upper;
-  GridGenerator::subdivided_hyper_rectangle(lower, {3, 3, 1}, Point<3>(0., 0., 0.),
-                                            Point<3>(1., 1., 1.));
-  GridGenerator::subdivided_hyper_rectangle(upper, {2, 2, 1}, Point<3>(-0.1, -0.1, 1.05),
-                                            Point<3>(1.1, 1.1, 2.05));
-  GridGenerator::merge_triangulations(lower, upper, tria);
-  label_stacked_blocks(tria, 0.05);
+  Triangulation<3> tria;
+  make_stacked_blocks_3d(tria);
   const FESystem<3> fe(FE_Q<3>(1), 3);
   DoFHandler<3>     dof_handler(tria);
   dof_handler.distribute_dofs(fe);

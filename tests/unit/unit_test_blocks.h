@@ -5,6 +5,7 @@
 #ifndef contact_fem_unit_test_blocks_h
 #define contact_fem_unit_test_blocks_h
 
+#include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
 
 #include <cmath>
@@ -29,6 +30,24 @@ label_stacked_blocks(dealii::Triangulation<dim> &tria, const double gap)
               cell->face(f)->set_boundary_id(0);
           }
     }
+}
+
+/// The 3D blocks of the linearisation and tiling tests in @p tria, labelled:
+/// a 3 x 3 cell lower block on the unit square under a 2 x 2 cell upper
+/// block 0.05 above it that overhangs it by 0.1 on every side (no
+/// coincident rims, whose clipping would change topology inside a
+/// difference).
+inline void
+make_stacked_blocks_3d(dealii::Triangulation<3> &tria)
+{
+  using dealii::Point;
+  dealii::Triangulation<3> lower, upper;
+  dealii::GridGenerator::subdivided_hyper_rectangle(lower, {3, 3, 1}, Point<3>(0., 0., 0.),
+                                                    Point<3>(1., 1., 1.));
+  dealii::GridGenerator::subdivided_hyper_rectangle(upper, {2, 2, 1}, Point<3>(-0.1, -0.1, 1.05),
+                                                    Point<3>(1.1, 1.1, 2.05));
+  dealii::GridGenerator::merge_triangulations(lower, upper, tria);
+  label_stacked_blocks(tria, 0.05);
 }
 
 #endif
