@@ -12,20 +12,13 @@
 // order of the face's bending; it now measures in the auxiliary plane
 // (Mortar::projected_area()), where that join has none.
 #include <deal.II/base/mpi.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/mapping_q.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/tria.h>
-#include <deal.II/lac/affine_constraints.h>
 
-#include <contact_fem/contact/contact_interface.h>
-#include <contact_fem/material/material.h>
-
-#include "unit_test_blocks.h"
-#include "unit_test_materials.h"
 #include "unit_test_random.h"
+#include "unit_test_stacked_interface.h"
+
+#include <exception>
+#include <iostream>
+#include <vector>
 
 using namespace dealii;
 using namespace contact_fem;
@@ -34,18 +27,8 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  Triangulation<3>                 tria;
-  make_stacked_blocks_3d(tria);
-  const FESystem<3> fe(FE_Q<3>(2), 3);
-  DoFHandler<3>     dof_handler(tria);
-  dof_handler.distribute_dofs(fe);
-  const MappingQ<3>         mapping(2);
-  const Materials<3>        materials = make_materials<3>("1, 2", "100, 200", "0.3, 0.3");
-  AffineConstraints<double> none;
-  none.close();
-  ContactInterface<3> interface;
-  interface.initialize(mapping, dof_handler, {ContactPair{3, 4}}, none, none, materials,
-                       MPI_COMM_WORLD);
+  StackedBlocksInterface           blocks(2);
+  auto                            &interface = blocks.interface;
   for (const double amplitude : {0.01, 0.02})
     for (unsigned int seed : {29u, 1u, 2u, 3u, 4u, 5u, 6u, 7u})
       {

@@ -14,70 +14,21 @@
 // and 1e-7 of |K v| (truncation and round-off) and the stick/slip sets the
 // same at every perturbed iterate. SHOW_ERROR=1 prints the errors.
 
-#include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/parameter_handler.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/mapping_q.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/tria.h>
-#include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
 
-#include <contact_fem/contact/contact_interface.h>
-#include <contact_fem/contact/contact_parameters.h>
-#include <contact_fem/contact/formulations/contact_formulation.h>
-#include <contact_fem/material/material.h>
-
-#include "unit_test_blocks.h"
-#include "unit_test_materials.h"
+#include "unit_test_penalty_frictional.h"
 #include "unit_test_random.h"
+#include "unit_test_stacked_interface.h"
 
-#include <algorithm>
-#include <cmath>
-#include <cstdlib>
 #include <iostream>
-#include <string>
-#include <utility>
+#include <vector>
 
 using namespace dealii;
 using namespace contact_fem;
+using namespace unit_test_penalty_frictional;
 
 namespace
 {
-  std::unique_ptr<ContactFormulation<3>>
-  make_formulation()
-  {
-    ParameterHandler prm;
-    ContactParameters::declare_parameters(prm);
-    ContactFormulation<3>::declare_parameters(prm);
-    prm.enter_subsection("Contact");
-    prm.set("Pairs", "3: 4");
-    prm.set("Formulation", "penalty frictional");
-    prm.set("Kinematics", "current");
-    prm.set("Penalty", "1e4");
-    prm.set("Tangential penalty", "1e4");
-    prm.set("Friction", "coulomb 0.3");
-    prm.leave_subsection();
-    return ContactFormulation<3>::create(prm);
-  }
-
-  /// "N active slave nodes, stick S, slip L" from the set codes.
-  std::string
-  sets_text(const ContactFormulation<3> &contact)
-  {
-    const auto codes = contact.contact_sets();
-    return std::to_string(contact.n_active()) + " active slave nodes, stick " +
-           std::to_string(std::count(codes.begin(), codes.end(), 1)) + ", slip " +
-           std::to_string(std::count_if(codes.begin(), codes.end(), [](const int c) {
-             return c >= 2;
-           }));
-  }
-
   /// The operators and their linearisation at @p u, as the driver's
   /// search on every iterate.
   void
@@ -93,19 +44,9 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
-  Triangulation<3> tria;
-  make_stacked_blocks_3d(tria);
-  const FESystem<3> fe(FE_Q<3>(1), 3);
-  DoFHandler<3>     dof_handler(tria);
-  dof_handler.distribute_dofs(fe);
-  const MappingQ<3>         mapping(1);
-  const Materials<3>        materials = make_materials<3>("1, 2", "100, 200", "0.3, 0.3");
-  AffineConstraints<double> none;
-  none.close();
-  ContactInterface<3> interface;
-  interface.initialize(mapping, dof_handler, {ContactPair{3, 4}}, none, none, materials,
-                       MPI_COMM_WORLD);
-  const unsigned int n = interface.dofs().size();
+  StackedBlocksInterface blocks(1);
+  auto                  &interface = blocks.interface;
+  const unsigned int     n         = interface.dofs().size();
 
   // Step 1: the master 0.06 down (0.01 into the slave), the slave nodes slid
   // a little. Step 2: larger random slides and a random perturbation.
@@ -125,7 +66,7 @@ main(int argc, char **argv)
         u_2[i] += 2e-3 * random.next();
       }
 
-  auto contact = make_formulation();
+  auto contact = make_formulation("current");
   follow(interface, std::vector<double>(n, 0.));
   contact->initialize(interface);
   contact->start_load_step(interface, std::vector<double>(n, 0.), StepStart::continued);
@@ -139,60 +80,15 @@ main(int argc, char **argv)
   // kinematics: it sees the predictor); the second decides.
   contact->update_active_set(interface, u_2);
   contact->update_active_set(interface, u_2);
-  const std::vector<int> sets = contact->contact_sets();
   std::cout << "step 2: " << sets_text(*contact) << std::endl;
 
-  // K and F at u_2.
-  const IndexSet         owned = complete_index_set(dof_handler.n_dofs());
-  DynamicSparsityPattern pattern(dof_handler.n_dofs());
-  contact->add_sparsity(interface, none, owned, pattern);
-  TrilinosWrappers::SparseMatrix matrix;
-  matrix.reinit(owned, owned, pattern, MPI_COMM_WORLD);
-  TrilinosWrappers::MPI::Vector rhs(owned, MPI_COMM_WORLD);
-  contact->assemble(interface, none, none, owned, matrix, rhs);
-  matrix.compress(VectorOperation::add);
-
-  std::vector<double> v(n);
-  for (double &value : v)
-    value = random.next();
-  TrilinosWrappers::MPI::Vector direction(owned, MPI_COMM_WORLD), product(owned, MPI_COMM_WORLD);
-  for (unsigned int i = 0; i < n; ++i)
-    direction(interface.dofs()[i]) = v[i];
-  matrix.vmult(product, direction);
-  double scale = 0.;
-  for (unsigned int i = 0; i < n; ++i)
-    scale = std::max(scale, std::abs(product(interface.dofs()[i])));
-
-  const auto state = contact->save_state();
-  bool       same  = true;
-  const auto force = [&](const double h) {
-    std::vector<double> u = u_2;
-    for (unsigned int i = 0; i < n; ++i)
-      u[i] += h * v[i];
-    follow(interface, u);
-    contact->update_active_set(interface, u);
-    same         = same && contact->contact_sets() == sets;
-    const auto F = contact->residuals(interface, u).contact_force;
-    contact->restore_state(*state);
-    return F;
-  };
   // The bound: the differences' truncation error (h^2) at h = 1e-6, their
   // round-off at 1e-7 (measured 5.5e-8 and 2.1e-9 of |K v|; without the
   // history traction's derivative (its turn with n and spin) the error is
   // 8.6e-4, without the D_j change of xi 2e-3, without the slip
   // direction's derivative 0.6).
-  for (const auto [h, bound] : {std::pair(1e-6, 1e-6), std::pair(1e-7, 1e-7)})
-    {
-      const auto plus = force(h), minus = force(-h);
-      double     error = 0.;
-      for (unsigned int i = 0; i < n; ++i)
-        error =
-          std::max(error, std::abs((plus[i] - minus[i]) / (2. * h) + product(interface.dofs()[i])));
-      std::cout << "h = " << h << ": tangent against central differences, error below " << bound
-                << " of |K v|: " << (error < bound * scale ? "yes" : "no") << std::endl;
-      if (std::getenv("SHOW_ERROR") || error >= bound * scale)
-        std::cout << "  error " << error / scale << " of |K v|" << std::endl;
-    }
-  std::cout << "the same stick/slip sets at every perturbed iterate: " << (same ? "yes" : "no")
-            << std::endl;
+  check_tangent(*contact, interface, blocks.dof_handler.n_dofs(), u_2, random,
+                [&](const std::vector<double> &w) {
+                  follow(interface, w);
+                });
 }

@@ -22,89 +22,29 @@
 // penalty, the old frame's matrix, 0.036 at every h.) SHOW_ERROR=1 prints
 // the errors.
 
-#include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/parameter_handler.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/mapping_q.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/tria.h>
-#include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
 
-#include <contact_fem/contact/contact_interface.h>
-#include <contact_fem/contact/contact_parameters.h>
-#include <contact_fem/contact/formulations/contact_formulation.h>
-#include <contact_fem/material/material.h>
-
-#include "unit_test_blocks.h"
-#include "unit_test_materials.h"
+#include "unit_test_penalty_frictional.h"
 #include "unit_test_random.h"
+#include "unit_test_stacked_interface.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdlib>
 #include <iostream>
-#include <string>
-#include <utility>
+#include <vector>
 
 using namespace dealii;
 using namespace contact_fem;
-
-namespace
-{
-  std::unique_ptr<ContactFormulation<3>>
-  make_formulation()
-  {
-    ParameterHandler prm;
-    ContactParameters::declare_parameters(prm);
-    ContactFormulation<3>::declare_parameters(prm);
-    prm.enter_subsection("Contact");
-    prm.set("Pairs", "3: 4");
-    prm.set("Formulation", "penalty frictional");
-    prm.set("Penalty", "1e4");
-    prm.set("Tangential penalty", "1e4");
-    prm.set("Friction", "coulomb 0.3");
-    prm.leave_subsection();
-    return ContactFormulation<3>::create(prm);
-  }
-
-  /// "N active slave nodes, stick S, slip L" from the set codes.
-  std::string
-  sets_text(const ContactFormulation<3> &contact)
-  {
-    const auto codes = contact.contact_sets();
-    return std::to_string(contact.n_active()) + " active slave nodes, stick " +
-           std::to_string(std::count(codes.begin(), codes.end(), 1)) + ", slip " +
-           std::to_string(std::count_if(codes.begin(), codes.end(), [](const int c) {
-             return c >= 2;
-           }));
-  }
-
-} // namespace
+using namespace unit_test_penalty_frictional;
 
 int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
-  Triangulation<3> tria;
-  make_stacked_blocks_3d(tria);
-  const FESystem<3> fe(FE_Q<3>(1), 3);
-  DoFHandler<3>     dof_handler(tria);
-  dof_handler.distribute_dofs(fe);
-  const MappingQ<3>         mapping(1);
-  const Materials<3>        materials = make_materials<3>("1, 2", "100, 200", "0.3, 0.3");
-  AffineConstraints<double> none;
-  none.close();
-  ContactInterface<3> interface;
-  interface.initialize(mapping, dof_handler, {ContactPair{3, 4}}, none, none, materials,
-                       MPI_COMM_WORLD);
-  const unsigned int n = interface.dofs().size();
+  StackedBlocksInterface blocks(1);
+  auto                  &interface = blocks.interface;
+  const unsigned int     n         = interface.dofs().size();
 
   // The search configuration: every interface DoF moved randomly, the
   // master 0.05 down (touching). Step 1: the master 0.01 into the slave, the slave
@@ -136,7 +76,7 @@ main(int argc, char **argv)
   if (std::getenv("SHOW_ERROR"))
     std::cout << "  largest |n_int - n|: " << largest_turn << std::endl;
 
-  auto contact = make_formulation();
+  auto contact = make_formulation("small");
   contact->initialize(interface);
   contact->start_load_step(interface, std::vector<double>(n, 0.), StepStart::continued);
   contact->update_active_set(interface, u_1);
@@ -144,58 +84,12 @@ main(int argc, char **argv)
   contact->accept_load_step(interface, u_1);
   contact->start_load_step(interface, u_1, StepStart::continued);
   contact->update_active_set(interface, u_2);
-  const std::vector<int> sets = contact->contact_sets();
   std::cout << "step 2: " << sets_text(*contact) << std::endl;
   std::cout << "matrix symmetric: " << (contact->matrix_symmetric() ? "yes" : "no") << std::endl;
 
-  // K and F at u_2.
-  const IndexSet         owned = complete_index_set(dof_handler.n_dofs());
-  DynamicSparsityPattern pattern(dof_handler.n_dofs());
-  contact->add_sparsity(interface, none, owned, pattern);
-  TrilinosWrappers::SparseMatrix matrix;
-  matrix.reinit(owned, owned, pattern, MPI_COMM_WORLD);
-  TrilinosWrappers::MPI::Vector rhs(owned, MPI_COMM_WORLD);
-  contact->assemble(interface, none, none, owned, matrix, rhs);
-  matrix.compress(VectorOperation::add);
-
-  std::vector<double> v(n);
-  for (double &value : v)
-    value = random.next();
-  TrilinosWrappers::MPI::Vector direction(owned, MPI_COMM_WORLD), product(owned, MPI_COMM_WORLD);
-  for (unsigned int i = 0; i < n; ++i)
-    direction(interface.dofs()[i]) = v[i];
-  matrix.vmult(product, direction);
-  double scale = 0.;
-  for (unsigned int i = 0; i < n; ++i)
-    scale = std::max(scale, std::abs(product(interface.dofs()[i])));
-
-  const auto state = contact->save_state();
-  bool       same  = true;
-  const auto force = [&](const double h) {
-    std::vector<double> u = u_2;
-    for (unsigned int i = 0; i < n; ++i)
-      u[i] += h * v[i];
-    contact->update_active_set(interface, u);
-    same         = same && contact->contact_sets() == sets;
-    const auto F = contact->residuals(interface, u).contact_force;
-    contact->restore_state(*state);
-    return F;
-  };
   // The bound: the differences' truncation error (h^2, the 3D slip
   // direction; the rest is linear in u) at h = 1e-6, their round-off at
   // 1e-7.
-  for (const auto [h, bound] : {std::pair(1e-6, 1e-6), std::pair(1e-7, 1e-7)})
-    {
-      const auto plus = force(h), minus = force(-h);
-      double     error = 0.;
-      for (unsigned int i = 0; i < n; ++i)
-        error =
-          std::max(error, std::abs((plus[i] - minus[i]) / (2. * h) + product(interface.dofs()[i])));
-      std::cout << "h = " << h << ": tangent against central differences, error below " << bound
-                << " of |K v|: " << (error < bound * scale ? "yes" : "no") << std::endl;
-      if (std::getenv("SHOW_ERROR") || error >= bound * scale)
-        std::cout << "  error " << error / scale << " of |K v|" << std::endl;
-    }
-  std::cout << "the same stick/slip sets at every perturbed iterate: " << (same ? "yes" : "no")
-            << std::endl;
+  check_tangent(*contact, interface, blocks.dof_handler.n_dofs(), u_2, random,
+                [](const std::vector<double> &) {});
 }
