@@ -1,0 +1,89 @@
+#!/usr/bin/env python3
+"""Penalty frictional against alm frictional on the quarter Hertz sphere with
+Kinematics = updated, against the number of load steps (doc/design.md,
+"Kinematics = updated (the interface normal of each search)").
+
+The scene is bench/stability's 3d-friction/hertz-penalty-mu0.2:
+prm/hertz_3d.prm with Q1, Sphere refinements 3, Contact refinements 0,
+Coulomb mu = 0.2, here with Kinematics = updated. Per formulation and number
+of load steps: the pair's tangential over normal force at the end
+(summary.json, tangential_over_normal_force), the stick / slip nodes and
+the Newton iterations. If the penalty's difference from alm were a
+step-size effect of updated kinematics (the penalty's stick traction
+accumulated across the searches of a step), it would fall with the step;
+small kinematics gives alm's ratio to 2e-5 in 4 steps.
+
+Usage: bench/finite_strain/penalty_updated_hertz_steps.py [--steps N...]
+       [--kinematics K] [--penalty-setting S]... [--binary B] [--out DIR]
+"""
+
+import argparse
+import json
+import os
+import subprocess
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(HERE))
+SCENE = os.path.join(REPO, "prm", "hertz_3d.prm")
+
+
+def run(binary, out, formulation, steps, kinematics, extra=()):
+    os.makedirs(out, exist_ok=True)
+    command = [binary, SCENE]
+    for setting in ("Finite element/Degree=1", "Geometry/Hertz sphere/Sphere refinements=3",
+                    "Geometry/Hertz sphere/Contact refinements=0",
+                    f"Contact/Formulation={formulation} frictional",
+                    "Contact/Friction=coulomb 0.2", f"Contact/Kinematics={kinematics}",
+                    f"Load stepping/Number of load steps={steps}", "Output/Write VTU=false",
+                    f"Output directory={out}", *extra):
+        command += ["--set", setting]
+    start = time.time()
+    result = subprocess.run(command, capture_output=True, text=True)
+    wall = time.time() - start
+    with open(os.path.join(out, "console.txt"), "w") as f:
+        f.write(result.stdout + result.stderr)
+    if result.returncode != 0:
+        return None, wall
+    with open(os.path.join(out, "summary.json")) as f:
+        summary = json.load(f)
+    cycle = summary["cycles"][-1]
+    return {"ratio": cycle["contact"]["tangential_over_normal_force"],
+            "stick": cycle["contact"].get("stick_nodes"),
+            "slip": cycle["contact"].get("slip_nodes"),
+            "newton": sum(s.get("newton_iterations", 0) for s in cycle.get("load_steps", [])),
+            "steps": len(cycle.get("load_steps", []))}, wall
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--binary", default=os.path.join(REPO, "build", "contact_fem"))
+    parser.add_argument("--out", default="/tmp/penalty_updated_hertz_steps")
+    parser.add_argument("--steps", type=int, nargs="*", default=[4, 8, 16, 32, 64])
+    parser.add_argument("--kinematics", default="updated")
+    parser.add_argument("--penalty-setting", action="append", default=[],
+                        help="a further 'Section/Key=value' of the penalty runs, e.g. "
+                             "'Contact/Stiffness factor=1e2'")
+    args = parser.parse_args()
+    print(f"# Hertz sphere, Kinematics = {args.kinematics}, penalty {args.penalty_setting}, "
+          f"{time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}, load {os.getloadavg()[0]:.1f}")
+    print("| load steps | alm Q / P | penalty Q / P | penalty - alm | alm stick / slip | penalty "
+          "stick / slip | Newton its alm, penalty | wall alm, penalty |\n|" + "---|" * 8, flush=True)
+    for steps in args.steps:
+        r = {}
+        for formulation in ("alm", "penalty"):
+            r[formulation] = run(args.binary, os.path.join(args.out, f"{formulation}_{steps}"),
+                                 formulation, steps, args.kinematics,
+                                 args.penalty_setting if formulation == "penalty" else ())
+        (a, wa), (p, wp) = r["alm"], r["penalty"]
+        if a is None or p is None:
+            print(f"| {steps} | {'failed' if a is None else a['ratio']} | "
+                  f"{'failed' if p is None else p['ratio']} |", flush=True)
+            continue
+        print(f"| {steps} | {a['ratio']:.6f} | {p['ratio']:.6f} | {p['ratio'] - a['ratio']:+.2e} | "
+              f"{a['stick']} / {a['slip']} | {p['stick']} / {p['slip']} | {a['newton']}, "
+              f"{p['newton']} | {wa:.0f} s, {wp:.0f} s |", flush=True)
+
+
+if __name__ == "__main__":
+    main()
