@@ -236,7 +236,8 @@ def main():
           "work | imbalance, rigid die's slip | imbalance, objective slip | imbalance, the contact "
           "traction's work on the relative motion | sum D_j / pair area - 1 "
           "(max) | die F_t / F_n (plateau) | pair abs(T) / abs(N) | stick nodes | offset + (1 + "
-          "mu^2) lean / mu (max) | die ratio - (q - l) / (1 + q l), / mu (max) | mean F_n | chatter of F_n | wall |\n|" + "---|" * 18, flush=True)
+          "mu^2) lean / mu (max) | die ratio - (q - l) / (1 + q l), / mu (max) | mean F_n | "
+          "chatter of F_n | wall |\n|" + "---|" * 18, flush=True)
     for k in args.per_unit:
         base = os.path.join(args.out, f"level_{args.level}_k{k}")
         full, before = os.path.join(base, "full"), os.path.join(base, "before")
