@@ -28,6 +28,13 @@ namespace contact_fem
       /// holds every slave face at the node); the operators' are summed.
       bool                  has_normal = false;
       std::array<DofMap, 3> normal, operators;
+      /// Frictional: d M_jl per master node l (hanging master vertices
+      /// condensed to their parents, as SlaveNode::M), and the derivatives
+      /// of the interface normal and of the forces along it (add_interface_frame()).
+      std::map<unsigned int, DofMap>                           dM;
+      std::array<DofMap, 3>                                    interface_normal;
+      std::map<types::global_dof_index, DofMap>                interface_force;
+      std::array<std::map<types::global_dof_index, DofMap>, 3> interface_tangent_force;
 
       /// The parts from slave faces with hanging vertices, which go to the
       /// owners of the face's trace (ContactInterface::face_trace(); the
@@ -218,6 +225,14 @@ namespace contact_fem
                 builder.add(n[c].derivatives, result.M[k][l].value * n[d].value, master_row);
               }
           }
+      for (unsigned int l = 0; l < result.M[k].size(); ++l)
+        {
+          const auto &parents = interface.nodes[master_nodes[l]].parents;
+          if (parents.empty())
+            builder.add(result.M[k][l].derivatives, 1., node.dM[master_nodes[l]]);
+          for (const auto &[parent, weight] : parents)
+            builder.add(result.M[k][l].derivatives, weight, node.dM[parent]);
+        }
       for (unsigned int d = 0; d < dim; ++d)
         {
           builder.add(result.D[k].derivatives, x(slave_nodes[k])[d], node.operators[d]);
@@ -448,6 +463,14 @@ namespace contact_fem
                 add_to(master_row, dn[c], o.M.at(l) * n[d]);
               }
           }
+      for (const auto &[l, dM] : o.dM)
+        {
+          const auto &parents = interface.nodes[l].parents;
+          if (parents.empty())
+            add_to(node.dM[l], dM, 1.);
+          for (const auto &[parent, weight] : parents)
+            add_to(node.dM[parent], dM, weight);
+        }
       for (unsigned int d = 0; d < dim; ++d)
         {
           add_to(node.operators[d], o.dD, x[d]);
@@ -521,6 +544,149 @@ namespace contact_fem
           add_pair(interface, u, builder, results[i], f, masters[i], frictional, sums);
     }
 
+    /// d n_l / du of the averaged unit normal of master node @p l (over
+    /// the master faces @p faces_at_l, as ContactInterface averages the
+    /// slave's), per component.
+    template <int dim>
+    std::array<DofMap, 3>
+    master_normal_derivative(const ContactInterface<dim>       &interface,
+                             const std::vector<Tensor<1, dim>> &u,
+                             const unsigned int                 l,
+                             const std::vector<unsigned int>   &faces_at_l)
+    {
+      PatchBuilder<dim> builder(interface, u);
+      for (const unsigned int f : faces_at_l)
+        builder.patch.slave_faces.push_back(builder.add_face(f));
+      const auto            normals = Mortar::linearise_nodal_normals(builder.patch);
+      const auto           &first   = interface.faces[faces_at_l[0]].nodes;
+      const auto           &n_l = normals[std::find(first.begin(), first.end(), l) - first.begin()];
+      std::array<DofMap, 3> result;
+      for (unsigned int d = 0; d < dim; ++d)
+        builder.add(n_l[d].derivatives, 1., result[d]);
+      return result;
+    }
+
+    /**
+     * The derivatives of the interface normal of slave node @p s
+     * (store_slave_nodes(): n_int = a / |a|, a = E_s n_j - E_m m / |m|, m =
+     * sum_l M_jl n_l, E_m = sum_l M_jl E_l / sum_l M_jl), of its force per
+     * unit pressure (-D_j n_int, M_jl n_int) and of the force of a held unit
+     * tangential traction kept in its tangent plane, into @p node. The
+     * moduli E_s, E_l of the nodes are held (a face's measure weights them
+     * within one body, where they are equal). @p master_normals: the
+     * master nodal normals' derivatives, filled as needed.
+     */
+    template <int dim>
+    void
+    add_interface_frame(const ContactInterface<dim>                             &interface,
+                        const std::vector<Tensor<1, dim>>                       &u,
+                        const typename ContactInterface<dim>::SlaveNode         &s,
+                        const std::map<unsigned int, std::vector<unsigned int>> &master_faces,
+                        std::map<unsigned int, std::array<DofMap, 3>>           &master_normals,
+                        NodeSums                                                &node)
+    {
+      const auto    &slave_dofs = interface.nodes[s.node].dofs;
+      Tensor<1, dim> m;
+      double         E_m = 0., weight = 0.;
+      for (const auto &[l, value] : s.M)
+        if (const auto it = interface.master_surface_normals.find(l);
+            it != interface.master_surface_normals.end())
+          {
+            m += value * it->second.first;
+            E_m += value * it->second.second;
+            weight += value;
+          }
+      const double   E_s = interface.slave_surface_normals.at(s.node).second;
+      Tensor<1, dim> a   = E_s * s.normal;
+      const bool     shared =
+        weight > 0. && m.norm() > 0. && (a - (E_m / weight) * m / m.norm()) * s.normal > 0.;
+      std::array<DofMap, 3> &dn = node.interface_normal;
+      if (!shared)
+        // The interface normal is the slave normal (store_slave_nodes()).
+        for (unsigned int d = 0; d < dim; ++d)
+          add_to(dn[d], node.normal[d], 1.);
+      else
+        {
+          E_m /= weight;
+          const double         m_norm = m.norm();
+          const Tensor<1, dim> m_unit = m / m_norm;
+          a -= E_m * m_unit;
+          const Tensor<1, dim> n_int = a / a.norm();
+          // dm = sum_l (dM_jl n_l + M_jl dn_l), dE_m = sum_l dM_jl (E_l -
+          // E_m) / sum_l M_jl.
+          std::array<DofMap, 3> dm;
+          DofMap                dE;
+          for (const auto &[l, value] : s.M)
+            {
+              const auto it = interface.master_surface_normals.find(l);
+              if (it == interface.master_surface_normals.end())
+                continue;
+              auto found = master_normals.find(l);
+              if (found == master_normals.end())
+                found = master_normals
+                          .emplace(l, master_normal_derivative(interface, u, l, master_faces.at(l)))
+                          .first;
+              const DofMap &dM = node.dM[l];
+              add_to(dE, dM, (it->second.second - E_m) / weight);
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  add_to(dm[d], dM, it->second.first[d]);
+                  add_to(dm[d], found->second[d], value);
+                }
+            }
+          // da = E_s dn_j - dE_m m_unit - E_m (I - m_unit m_unit^T) dm / |m|.
+          std::array<DofMap, 3> da;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              add_to(da[d], node.normal[d], E_s);
+              add_to(da[d], dE, -m_unit[d]);
+              add_to(da[d], dm[d], -E_m / m_norm);
+              for (unsigned int e = 0; e < dim; ++e)
+                add_to(da[d], dm[e], E_m * m_unit[d] * m_unit[e] / m_norm);
+            }
+          // dn_int = (I - n_int n_int^T) da / |a|.
+          const double a_norm = a.norm();
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              add_to(dn[d], da[d], 1. / a_norm);
+              for (unsigned int e = 0; e < dim; ++e)
+                add_to(dn[d], da[e], -n_int[d] * n_int[e] / a_norm);
+            }
+        }
+      // The forces along n_int: -D_j n_int on the slave, M_jl n_int on
+      // master l; a held unit traction e_c turning with n_int: D_j e_c and
+      // -M_jl e_c, d e_c = -(e_c . dn_int) n_int.
+      const Tensor<1, dim> &n = s.interface_normal;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          DofMap &row = node.interface_force[slave_dofs[d]];
+          add_to(row, node.D, -n[d]);
+          add_to(row, dn[d], -s.D);
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              DofMap &tangent_row = node.interface_tangent_force[c][slave_dofs[d]];
+              if (c == d)
+                add_to(tangent_row, node.D, 1.);
+              add_to(tangent_row, dn[c], -s.D * n[d]);
+            }
+          for (const auto &[l, value] : s.M)
+            {
+              const auto &master_dofs = interface.nodes[l].dofs;
+              const auto &dM          = node.dM[l];
+              DofMap     &master_row  = node.interface_force[master_dofs[d]];
+              add_to(master_row, dM, n[d]);
+              add_to(master_row, dn[d], value);
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  DofMap &tangent_row = node.interface_tangent_force[c][master_dofs[d]];
+                  if (c == d)
+                    add_to(tangent_row, dM, -1.);
+                  add_to(tangent_row, dn[c], value * n[d]);
+                }
+            }
+        }
+    }
+
     /// The sums of one node as a LinearisedNode over the union of its DoFs.
     template <int dim>
     typename ContactInterface<dim>::LinearisedNode
@@ -530,6 +696,9 @@ namespace contact_fem
       for (const auto &[dof, value] : sums.gap)
         dofs.insert(dof);
       for (const auto &[row, values] : sums.force)
+        for (const auto &[dof, value] : values)
+          dofs.insert(dof);
+      for (const auto &[row, values] : sums.interface_force)
         for (const auto &[dof, value] : values)
           dofs.insert(dof);
       typename ContactInterface<dim>::LinearisedNode result;
@@ -551,7 +720,14 @@ namespace contact_fem
             result.tangent_force[d].emplace_back(row, at(values));
           result.normal[d]    = at(sums.normal[d]);
           result.operators[d] = at(sums.operators[d]);
+          if (sums.interface_force.empty())
+            continue;
+          result.interface_normal[d] = at(sums.interface_normal[d]);
+          for (const auto &[row, values] : sums.interface_tangent_force[d])
+            result.interface_tangent_force[d].emplace_back(row, at(values));
         }
+      for (const auto &[row, values] : sums.interface_force)
+        result.interface_force.emplace_back(row, at(values));
       return result;
     }
   } // namespace
@@ -617,6 +793,18 @@ namespace contact_fem
       for (auto &[n, node_sums] : sums)
         if (node_sums.owned.any)
           add_owner_parts(*this, u, n, faces_of_node.at(n), frictional, node_sums);
+      if (frictional)
+        {
+          std::map<unsigned int, std::vector<unsigned int>> master_faces_of_node;
+          for (unsigned int f = 0; f < faces.size(); ++f)
+            if (!faces[f].slave)
+              for (const unsigned int n : faces[f].nodes)
+                master_faces_of_node[n].push_back(f);
+          std::map<unsigned int, std::array<DofMap, 3>> master_normals;
+          for (const auto &s : slave_nodes)
+            if (const auto it = sums.find(s.node); it != sums.end())
+              add_interface_frame(*this, u, s, master_faces_of_node, master_normals, it->second);
+        }
       for (const auto &[n, node_sums] : sums)
         linearised_nodes[n] = linearised_node<dim>(node_sums);
     }

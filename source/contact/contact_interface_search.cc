@@ -120,8 +120,7 @@ namespace contact_fem
         face_lengths[f] = Mortar::Kernel<dim>::side(measures[f]);
       }
     std::map<unsigned int, SlaveNode> slave_data;
-    const SurfaceNormals              slave_normals =
-      surface_node_normals(geometries, measures, true, &slave_data);
+    slave_surface_normals = surface_node_normals(geometries, measures, true, &slave_data);
     coupled_faces.clear();
 
     statistics.assign(pairs.size(), PairStatistics());
@@ -131,8 +130,9 @@ namespace contact_fem
       search_pair(p, geometries, measures, search_factor,
                   motion_allowance.empty() ? 0. : motion_allowance[p], slave_data, M_of_node,
                   weighted_gap_of_node);
-    store_slave_nodes(slave_data, M_of_node, weighted_gap_of_node, u_at_dofs, slave_normals,
-                      surface_node_normals(geometries, measures, false));
+    master_surface_normals = surface_node_normals(geometries, measures, false);
+    store_slave_nodes(slave_data, M_of_node, weighted_gap_of_node, u_at_dofs, slave_surface_normals,
+                      master_surface_normals);
   }
 
   namespace

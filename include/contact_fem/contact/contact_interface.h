@@ -179,6 +179,18 @@ namespace contact_fem
       /// operators' part of the objective slip, per component (frictional
       /// only).
       std::array<std::vector<double>, dim> operators;
+      /// d n_int / du of SlaveNode::interface_normal, per component
+      /// (frictional only): from dn_j, dM_jl and the derivatives of the
+      /// master nodal normals n_l (averaged over the master faces at l, as
+      /// the slave's), through the weighted mean and its normalisation.
+      std::array<std::vector<double>, dim> interface_normal;
+      /// As @p force with n_int in place of n_j: d (-D_j n_int, M_jl n_int)
+      /// / du, same rows (frictional only).
+      std::vector<std::pair<types::global_dof_index, std::vector<double>>> interface_force;
+      /// As @p tangent_force with the held traction kept in the tangent
+      /// plane of n_int: dt = -(t . dn_int) n_int (frictional only).
+      std::array<std::vector<std::pair<types::global_dof_index, std::vector<double>>>, dim>
+        interface_tangent_force;
     };
 
     /// Interface statistics of the last search, per pair.
@@ -424,6 +436,11 @@ namespace contact_fem
     std::vector<Node>        nodes;
     std::vector<Face>        faces;
     std::vector<SlaveNode>   slave_nodes;
+    /// Per node of the slave and of the master surfaces at the last
+    /// search: its mean unit normal and plane-strain modulus, the
+    /// ingredients of SlaveNode::interface_normal (linearise()).
+    std::map<unsigned int, std::pair<Tensor<1, dim>, double>> slave_surface_normals,
+      master_surface_normals;
     /// Per paired slave node (by node index) whose x DoF this rank owns,
     /// after linearise().
     std::map<unsigned int, LinearisedNode> linearised_nodes;

@@ -106,8 +106,11 @@ namespace contact_fem
       coefficient[m] -= value;
     for (const auto &[m, value] : old.M)
       coefficient[m] += value;
-    const auto     frame = tangent_frame(s.normal);
-    Tensor<1, dim> w;
+    // In the frame of frame_normal(s): the slave normal, or the interface
+    // normal (penalty frictional).
+    const Tensor<1, dim> n_f   = this->frame_normal(s);
+    const auto           frame = tangent_frame(n_f);
+    Tensor<1, dim>       w;
     for (const auto &[node, c] : coefficient)
       w += c * (interface.nodes[node].reference + interface.displacement(node, u));
     TangentialVector<dim> xi;
@@ -122,7 +125,8 @@ namespace contact_fem
     // matters for the alm (xi = 0 on a stick node, e . xi = 0 across a
     // slip direction); the penalty adds it.
     const auto  &linearised  = interface.linearised_nodes.at(s.node);
-    const double normal_part = s.normal * w;
+    const auto  &dn          = frame_normal_derivative(interface, s);
+    const double normal_part = n_f * w;
     for (unsigned int k = 0; k < dim - 1; ++k)
       {
         Row &row = (*derivatives)[k];
@@ -134,7 +138,7 @@ namespace contact_fem
             double tau_dn = 0., tau_dw = 0.;
             for (unsigned int d = 0; d < dim; ++d)
               {
-                tau_dn += frame[k][d] * linearised.normal[d][i];
+                tau_dn += frame[k][d] * dn[d][i];
                 tau_dw += frame[k][d] * linearised.operators[d][i];
               }
             row[linearised.dofs[i]] += (tau_dn * normal_part - tau_dw) / s.D;

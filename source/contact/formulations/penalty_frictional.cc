@@ -157,16 +157,17 @@ namespace contact_fem
     const auto           &before = accepted_chords[s.node];
     const Tensor<1, dim> &old    = accepted_normal[s.node];
     spin.now                     = face_chords(interface, s.node);
+    const Tensor<1, dim> n_f     = frame_normal(s);
     if (dim == 2 || before.size() != spin.now.size())
       return spin;
     spin.X = 0.;
     for (unsigned int f = 0; f < before.size(); ++f)
       {
         // b_f = S A_f (A_f normal to n^n, as t_n in history()).
-        const double beta = (s.normal * before[f]) / (1. + old * s.normal);
-        spin.before.push_back(before[f] - beta * (old + s.normal));
+        const double beta = (n_f * before[f]) / (1. + old * n_f);
+        spin.before.push_back(before[f] - beta * (old + n_f));
         spin.X += spin.before[f] * spin.now[f];
-        spin.Y += s.normal * cross<dim>(spin.before[f], spin.now[f]);
+        spin.Y += n_f * cross<dim>(spin.before[f], spin.now[f]);
       }
     if (spin.X * spin.X + spin.Y * spin.Y == 0.)
       spin.X = 1.;
@@ -181,16 +182,17 @@ namespace contact_fem
       return accepted_tangential[s.node];
     // The smallest rotation taking n^n to n, applied to t_n (normal to
     // n^n): h = t_n - beta (n^n + n), beta = (n . t_n) / (1 + n^n . n).
+    const Tensor<1, dim>  n_f  = frame_normal(s);
     const Tensor<1, dim> &t    = accepted_traction[s.node];
     const Tensor<1, dim> &old  = accepted_normal[s.node];
-    const double          beta = (s.normal * t) / (1. + old * s.normal);
-    const Tensor<1, dim>  h    = t - beta * (old + s.normal);
+    const double          beta = (n_f * t) / (1. + old * n_f);
+    const Tensor<1, dim>  h    = t - beta * (old + n_f);
     if (dim == 2 || t.norm_square() == 0.)
-      return to_frame(h, s.normal);
+      return to_frame(h, n_f);
     // 3D: then the spin about n, cos phi h + sin phi n x h.
     const Spin   spin = spin_about_normal(interface, s);
     const double r    = std::hypot(spin.X, spin.Y);
-    return to_frame(spin.X / r * h + spin.Y / r * cross<dim>(s.normal, h), s.normal);
+    return to_frame(spin.X / r * h + spin.Y / r * cross<dim>(n_f, h), n_f);
   }
 
   template <int dim>
@@ -202,20 +204,22 @@ namespace contact_fem
     // d h_k = tau_k . dh (dtau_k . h = 0: h is normal to n and the frame
     // is held in the tangent plane), dh = -d beta (n^n + n) - beta dn,
     // d beta = (dn . t_n - beta n^n . dn) / (1 + n^n . n).
+    const Tensor<1, dim>  n_f         = frame_normal(s);
+    const auto           &dn_f        = this->frame_normal_derivative(interface, s);
     const Tensor<1, dim> &t           = accepted_traction[s.node];
     const Tensor<1, dim> &old         = accepted_normal[s.node];
-    const double          denominator = 1. + old * s.normal;
-    const double          beta        = (s.normal * t) / denominator;
-    const auto            frame       = tangent_frame(s.normal);
+    const double          denominator = 1. + old * n_f;
+    const double          beta        = (n_f * t) / denominator;
+    const auto            frame       = tangent_frame(n_f);
     const auto           &linearised  = interface.linearised_nodes.at(s.node);
-    const Tensor<1, dim>  h           = t - beta * (old + s.normal);
+    const Tensor<1, dim>  h           = t - beta * (old + n_f);
     if (dim == 2 || t.norm_square() == 0.)
       {
         for (unsigned int i = 0; i < linearised.dofs.size(); ++i)
           {
             Tensor<1, dim> dn;
             for (unsigned int d = 0; d < dim; ++d)
-              dn[d] = linearised.normal[d][i];
+              dn[d] = dn_f[d][i];
             const double d_beta = (dn * t - beta * (old * dn)) / denominator;
             for (unsigned int k = 0; k < dim - 1; ++k)
               rows[k][linearised.dofs[i]] += -d_beta * (frame[k] * old) - beta * (frame[k] * dn);
@@ -229,12 +233,12 @@ namespace contact_fem
     const Spin           spin = spin_about_normal(interface, s);
     const double         r2   = spin.X * spin.X + spin.Y * spin.Y;
     const double         C = spin.X / std::sqrt(r2), S = spin.Y / std::sqrt(r2);
-    const Tensor<1, dim> n_h = cross<dim>(s.normal, h);
+    const Tensor<1, dim> n_h = cross<dim>(n_f, h);
     const auto           add = [&](const types::global_dof_index dof, const Tensor<1, dim> &dn,
                          const Tensor<1, dim> &dh, const double dX, const double dY) {
       const double         d_phi = (spin.X * dY - spin.Y * dX) / r2;
       const Tensor<1, dim> d_spun =
-        C * dh + S * (cross<dim>(dn, h) + cross<dim>(s.normal, dh)) + d_phi * (-S * h + C * n_h);
+        C * dh + S * (cross<dim>(dn, h) + cross<dim>(n_f, dh)) + d_phi * (-S * h + C * n_h);
       for (unsigned int k = 0; k < dim - 1; ++k)
         rows[k][dof] += frame[k] * d_spun;
     };
@@ -244,18 +248,17 @@ namespace contact_fem
       {
         Tensor<1, dim> dn;
         for (unsigned int d = 0; d < dim; ++d)
-          dn[d] = linearised.normal[d][i];
+          dn[d] = dn_f[d][i];
         const double         d_beta = (dn * t - beta * (old * dn)) / denominator;
-        const Tensor<1, dim> dh     = -d_beta * (old + s.normal) - beta * dn;
+        const Tensor<1, dim> dh     = -d_beta * (old + n_f) - beta * dn;
         double               dX = 0., dY = 0.;
         for (unsigned int f = 0; f < spin.before.size(); ++f)
           {
-            const double         beta_f   = (s.normal * before[f]) / denominator;
+            const double         beta_f   = (n_f * before[f]) / denominator;
             const double         d_beta_f = (dn * before[f] - beta_f * (old * dn)) / denominator;
-            const Tensor<1, dim> db       = -d_beta_f * (old + s.normal) - beta_f * dn;
+            const Tensor<1, dim> db       = -d_beta_f * (old + n_f) - beta_f * dn;
             dX += db * spin.now[f];
-            dY +=
-              dn * cross<dim>(spin.before[f], spin.now[f]) + s.normal * cross<dim>(db, spin.now[f]);
+            dY += dn * cross<dim>(spin.before[f], spin.now[f]) + n_f * cross<dim>(db, spin.now[f]);
           }
         add(linearised.dofs[i], dn, dh, dX, dY);
       }
@@ -268,7 +271,7 @@ namespace contact_fem
     for (unsigned int f = 0; f < spin.before.size(); ++f)
       {
         const Tensor<1, dim> gX    = spin.before[f];
-        const Tensor<1, dim> gY    = cross<dim>(s.normal, spin.before[f]);
+        const Tensor<1, dim> gY    = cross<dim>(n_f, spin.before[f]);
         const auto          &nodes = interface.faces[slave_faces_of_node[s.node][f]].nodes;
         for (const unsigned int m : nodes)
           {
@@ -640,14 +643,14 @@ namespace contact_fem
         this->keep_operators(interface);
         for (const auto &s : interface.slave_nodes)
           {
-            accepted_traction[s.node] = to_global(tangential[s.node], s.normal);
-            accepted_normal[s.node]   = s.normal;
+            accepted_traction[s.node] = to_global(tangential[s.node], frame_normal(s));
+            accepted_normal[s.node]   = frame_normal(s);
             if (dim == 3)
               {
                 // In the plane of the normal, as the traction.
                 accepted_chords[s.node] = face_chords(interface, s.node);
                 for (auto &chord : accepted_chords[s.node])
-                  chord -= (chord * s.normal) * s.normal;
+                  chord -= (chord * frame_normal(s)) * frame_normal(s);
               }
           }
       }
@@ -662,9 +665,16 @@ namespace contact_fem
                                            TrilinosWrappers::SparseMatrix  &matrix,
                                            TrilinosWrappers::MPI::Vector   &rhs) const
   {
-    const auto  &linearised = interface.linearised_nodes.at(s.node);
-    const auto   frame      = tangent_frame(s.normal);
-    const double eps_t      = tangent_penalty[s.pair];
+    const auto &linearised = interface.linearised_nodes.at(s.node);
+    // The frame normal n_f (the interface normal where the law has
+    // friction) and the force derivatives along it.
+    const Tensor<1, dim> n_f          = frame_normal(s);
+    const bool           on_interface = current_frame_on_interface(s);
+    const auto &force_rows_of = on_interface ? linearised.interface_force : linearised.force;
+    const auto &tangent_force =
+      on_interface ? linearised.interface_tangent_force : linearised.tangent_force;
+    const auto   frame = tangent_frame(n_f);
+    const double eps_t = tangent_penalty[s.pair];
     // d t*_k = d h_k - eps_t d xi_k, xi_k with the change of D_j (-xi_k
     // dD_j / D_j: a stick node slips elastically, xi = (h - t) / eps_t).
     std::array<Row, dim - 1>    d_xi;
@@ -685,7 +695,7 @@ namespace contact_fem
     // fixed component, the history projected), so the term vanishes there.
     if (const unsigned int held = sets.held_component[s.node]; held < dim)
       {
-        const TangentialVector<dim> free = to_frame(free_tangent(s.normal, held), s.normal);
+        const TangentialVector<dim> free = to_frame(free_tangent(n_f, held), n_f);
         Row                         along;
         for (unsigned int k = 0; k < dim - 1; ++k)
           for (const auto &[dof, value] : d_trial[k])
@@ -742,7 +752,7 @@ namespace contact_fem
     for (const auto &[m, value] : s.M)
       for (unsigned int d = 0; d < dim; ++d)
         coefficient[interface.nodes[m].dofs[d]] = {-value, d};
-    const Tensor<1, dim> t = to_global(tangential[s.node], s.normal);
+    const Tensor<1, dim> t = to_global(tangential[s.node], n_f);
 
     // Newton for the total u, as the normal part: K (u - u_k) = -r(u_k),
     // r = -F the contact's internal force, K = -dF; right-hand side F + K
@@ -750,10 +760,10 @@ namespace contact_fem
     std::vector<types::global_dof_index> rows;
     FullMatrix<double>                   stiffness;
     std::vector<unsigned int>            force_rows;
-    for (unsigned int r = 0; r < linearised.force.size(); ++r)
-      if (!interface.dof_fixed(interface.position(linearised.force[r].first)))
+    for (unsigned int r = 0; r < force_rows_of.size(); ++r)
+      if (!interface.dof_fixed(interface.position(force_rows_of[r].first)))
         {
-          rows.push_back(linearised.force[r].first);
+          rows.push_back(force_rows_of[r].first);
           force_rows.push_back(r);
         }
     stiffness.reinit(rows.size(), columns.size());
@@ -779,8 +789,7 @@ namespace contact_fem
             if (column == column_of.end())
               continue;
             for (unsigned int c = 0; c < dim; ++c)
-              stiffness(r, column->second) -=
-                t[c] * linearised.tangent_force[c][force_rows[r]].second[i];
+              stiffness(r, column->second) -= t[c] * tangent_force[c][force_rows[r]].second[i];
           }
         for (unsigned int b = 0; b < columns.size(); ++b)
           stiffness_rhs(r) += stiffness(r, b) * u[interface.position(columns[b])];

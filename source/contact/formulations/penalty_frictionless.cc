@@ -213,13 +213,18 @@ namespace contact_fem
     std::vector<unsigned int>            kept;
     this->free_patch_dofs(interface, linearised, kept, columns);
     // f_j at u_k on the rows of linearised.force (the node's DoFs and its
-    // masters').
+    // masters'), along the frame normal n_f (penalty frictional: the
+    // interface normal where the law has friction; the pressure stays that
+    // of the slave-normal gap), with its derivative.
+    const Tensor<1, dim> n_f = this->frame_normal(s);
+    const auto          &force_derivatives =
+      this->current_frame_on_interface(s) ? linearised.interface_force : linearised.force;
     std::map<types::global_dof_index, double> force;
     for (unsigned int d = 0; d < dim; ++d)
-      force[interface.nodes[s.node].dofs[d]] -= s.D * s.normal[d];
+      force[interface.nodes[s.node].dofs[d]] -= s.D * n_f[d];
     for (const auto &[m, value] : s.M)
       for (unsigned int d = 0; d < dim; ++d)
-        force[interface.nodes[m].dofs[d]] += value * s.normal[d];
+        force[interface.nodes[m].dofs[d]] += value * n_f[d];
 
     const double eps    = node_penalty[s.node];
     const double lambda = this->pressure[s.node];
@@ -233,7 +238,7 @@ namespace contact_fem
     // + lambda_j d f_j); the right-hand side is lambda_j f_j + K u_k.
     std::vector<types::global_dof_index>     rows;
     std::vector<const std::vector<double> *> derivatives;
-    for (const auto &[dof, values] : linearised.force)
+    for (const auto &[dof, values] : force_derivatives)
       if (!interface.dof_fixed(interface.position(dof)))
         {
           rows.push_back(dof);

@@ -187,6 +187,16 @@ namespace contact_fem
       return s.normal;
     }
 
+    /// With Contact/Kinematics = current: whether frame_normal(@p s) is the
+    /// interface normal, whose linearisation is then the one of
+    /// LinearisedNode::interface_normal, interface_force and
+    /// interface_tangent_force (else normal, force and tangent_force).
+    virtual bool
+    current_frame_on_interface(const typename ContactInterface<dim>::SlaveNode &) const
+    {
+      return false;
+    }
+
     /// normal_pressure() of every interface node.
     std::vector<double>
     pressures(const ContactInterface<dim> &interface) const;

@@ -101,6 +101,16 @@ namespace contact_fem
     n_slip() const;
 
   protected:
+    /// Current kinematics: d n_f/du of the frame normal n_f =
+    /// frame_normal(@p s), per component at the DoFs of the node's
+    /// LinearisedNode.
+    const std::array<std::vector<double>, dim> &
+    frame_normal_derivative(const ContactInterface<dim> &interface, const SlaveNode &s) const
+    {
+      const auto &linearised = interface.linearised_nodes.at(s.node);
+      return this->current_frame_on_interface(s) ? linearised.interface_normal : linearised.normal;
+    }
+
     /// Whether the law of node @p s has no friction at all (mu = 0, bound
     /// 0): its slip sign then changes nothing.
     bool

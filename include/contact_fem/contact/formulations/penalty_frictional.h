@@ -16,7 +16,7 @@ namespace contact_fem
    * whose force is D_j lambda_j on the slave node and -M_jl lambda_j on
    * master node l. n_j is frame_normal(): under a law with friction the
    * shared interface normal, as "alm frictional" (the slave normal at held
-   * nodes, for laws without friction and with current kinematics). The
+   * nodes and for laws without friction), with current kinematics too. The
    * pressure is that of "penalty frictionless" (the base class): p_j =
    * eps_n (-g_j) on active nodes (g_j < 0, the gap along the slave
    * normal). The tangential
@@ -96,7 +96,10 @@ namespace contact_fem
    * (the turn of n) and, on a slip node, T'(p) dp (dp of the penalty
    * pressure eps_n (-G_j) / D_j) and (T / |t*|) P dt* (3D); the force's
    * own change with D_j, M_jl and n_j comes from
-   * ContactInterface::LinearisedNode::tangent_force. The matrix is
+   * ContactInterface::LinearisedNode::tangent_force. n is the frame normal
+   * n_f: where it is the interface normal every derivative takes its
+   * linearisation (LinearisedNode::interface_normal, interface_force,
+   * interface_tangent_force; current_frame_on_interface()). The matrix is
    * unsymmetric.
    */
   template <int dim>
@@ -171,17 +174,22 @@ namespace contact_fem
       return -this->pressure[s.node] * n + to_global(tangential[s.node], n);
     }
 
-    /// The shared interface normal where the law has friction (small and
-    /// updated kinematics), as "alm frictional": the frame of the slip, of
-    /// the tangential traction and of the normal force. The slave normal
-    /// at nodes held by a support, under a law without friction (mu = 0
-    /// then is exactly "penalty frictionless") and with current kinematics
-    /// (the interface normal has no linearisation).
+    /// The shared interface normal where the law has friction (every
+    /// kinematics; with current kinematics linearised, LinearisedNode::
+    /// interface_normal): the frame of the slip, of the tangential traction
+    /// and of the normal force. The slave normal at nodes held by a support
+    /// and under a law without friction (mu = 0 then is exactly "penalty
+    /// frictionless").
     Tensor<1, dim>
     frame_normal(const SlaveNode &s) const override
     {
-      return this->current || sets.held[s.node] || frictionless_law(s) ? s.normal :
-                                                                         s.interface_normal;
+      return frame_on_interface(s) ? s.interface_normal : s.normal;
+    }
+
+    bool
+    current_frame_on_interface(const SlaveNode &s) const override
+    {
+      return this->current && frame_on_interface(s);
     }
 
     /// The slip reference (interface displacement) and the tangential
@@ -208,6 +216,14 @@ namespace contact_fem
                   std::ostream                &out) const override;
 
   private:
+    /// Whether frame_normal(@p s) is the interface normal: a law with
+    /// friction at a node no support holds.
+    bool
+    frame_on_interface(const SlaveNode &s) const
+    {
+      return !sets.held[s.node] && !frictionless_law(s);
+    }
+
     /// The largest elastic slip of the stick nodes, and from the total
     /// tangential and normal contact forces sum_j D_j t_j and sum_j D_j p_j,
     /// with one Coulomb law and every active node slipping one way, the
