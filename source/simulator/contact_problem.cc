@@ -944,7 +944,7 @@ namespace contact_fem
         solution.sadd(newton_parameters.damping, 1. - newton_parameters.damping, previous_solution);
         ghosted_solution = solution;
       }
-    if (contact && contact->limits_steps())
+    if (contact)
       {
         const double fraction =
           contact->step_fraction(*interface, interface->gather(previous_solution),

@@ -134,14 +134,6 @@ namespace contact_fem
     /// (at the interface DoFs) that the iteration takes: 1 unless the
     /// formulation limits it (PenaltyFrictionless: an open node driven deep
     /// into the master).
-    /// Whether step_fraction() may return less than 1 (the interface
-    /// values are gathered for it only then).
-    virtual bool
-    limits_steps() const
-    {
-      return false;
-    }
-
     virtual double
     step_fraction(const ContactInterface<dim> &,
                   const std::vector<double> &,

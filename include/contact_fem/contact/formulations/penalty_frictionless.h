@@ -91,12 +91,6 @@ namespace contact_fem
     /// Current kinematics: the fraction of the update from @p u_old to @p
     /// u_new after which no node open in the solve penetrates deeper than
     /// Entry depth factor * h_j or the deepest active node.
-    bool
-    limits_steps() const override
-    {
-      return current && entry_depth_factor > 0.;
-    }
-
     double
     step_fraction(const ContactInterface<dim> &interface,
                   const std::vector<double>   &u_old,
