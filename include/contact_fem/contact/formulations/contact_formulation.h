@@ -130,18 +130,6 @@ namespace contact_fem
     virtual Residuals
     residuals(const ContactInterface<dim> &interface, const std::vector<double> &u) const = 0;
 
-    /// The fraction (0, 1] of the Newton update from @p u_old to @p u_new
-    /// (at the interface DoFs) that the iteration takes: 1 unless the
-    /// formulation limits it (PenaltyFrictionless: an open node driven deep
-    /// into the master).
-    virtual double
-    step_fraction(const ContactInterface<dim> &,
-                  const std::vector<double> &,
-                  const std::vector<double> &) const
-    {
-      return 1.;
-    }
-
     /// Number of active slave nodes.
     virtual unsigned int
     n_active() const = 0;

@@ -88,14 +88,6 @@ namespace contact_fem
     update_active_set(const ContactInterface<dim> &interface,
                       const std::vector<double>   &u) override;
 
-    /// Current kinematics: the fraction of the update from @p u_old to @p
-    /// u_new after which no node open in the solve penetrates deeper than
-    /// Entry depth factor * h_j or the deepest active node.
-    double
-    step_fraction(const ContactInterface<dim> &interface,
-                  const std::vector<double>   &u_old,
-                  const std::vector<double>   &u_new) const override;
-
     /// Zero by construction; with adaptive penalties the penetration beyond
     /// the allowed one.
     Residuals
@@ -136,8 +128,6 @@ namespace contact_fem
 
     bool   adaptive           = false;
     double penetration_factor = 1e-3;
-    /// Contact/Entry depth factor (step_fraction()).
-    double entry_depth_factor = 1e-3;
     /// eps_j per interface node (adapted or the pair's).
     std::vector<double> node_penalty;
     /// The gap of the previous iteration, per node.
