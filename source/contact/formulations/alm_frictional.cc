@@ -1,3 +1,4 @@
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -256,8 +257,11 @@ namespace contact_fem
       this->keep_operators_of_new_pairs(interface);
     auto &pressure = this->pressure;
     auto &active   = this->active;
+    // Each rank decides the nodes whose rows it owns (share_decisions()).
     for (const auto &s : interface.slave_nodes)
       {
+        if (!interface.owns_row(s))
+          continue;
         const double g = s.paired ? interface.gap(s, u) : 0.;
         active[s.node] = s.paired && decides_active(s, g, true, start) &&
                          this->eliminated_component(interface, s) < dim;
@@ -272,6 +276,7 @@ namespace contact_fem
           }
         set_direction(interface, s, bound_pressure(s, g), u);
       }
+    share_decisions(interface);
     this->deactivate_master_nodes(interface);
     for (unsigned int n = 0; n < interface.nodes.size(); ++n)
       if (!interface.nodes[n].slave)
@@ -785,6 +790,8 @@ namespace contact_fem
   {
     for (const auto &s : interface.slave_nodes)
       {
+        if (!interface.owns_row(s))
+          continue;
         if (!s.paired || !this->active[s.node])
           {
             this->pressure[s.node] = 0.;
@@ -824,6 +831,11 @@ namespace contact_fem
           tangential[s.node] =
             laws[s.pair]->threshold(std::max(this->pressure[s.node], 0.)) * sets.direction[s.node];
       }
+    // Only the multipliers changed.
+    this->share_frictional_states(interface, {&tangential}, {},
+                                  [&](const std::vector<std::vector<double> *> &fields) {
+                                    this->share_states(interface, fields);
+                                  });
   }
 
   template <int dim>
@@ -870,7 +882,7 @@ namespace contact_fem
     auto &active   = this->active;
     for (const auto &s : interface.slave_nodes)
       {
-        if (!s.paired)
+        if (!s.paired || !interface.owns_row(s))
           continue;
         const double g          = interface.gap(s, u);
         const bool   now_active = decides_active(s, g, false, StepStart::continued) &&
@@ -899,8 +911,23 @@ namespace contact_fem
             ++last_stick_slip_changes;
           }
       }
+    share_decisions(interface);
     note_pressure_dependent_slip(interface);
-    return changes;
+    unsigned int counts[2] = {changes, last_stick_slip_changes};
+    Utilities::MPI::sum(counts, interface.communicator(), counts);
+    last_stick_slip_changes = counts[1];
+    return counts[0];
+  }
+
+  template <int dim>
+  void
+  AlmFrictional<dim>::share_decisions(const ContactInterface<dim> &interface)
+  {
+    this->share_frictional_states(interface, {&tangential, &released_tangential, &sets.direction},
+                                  {&released_pressure, &cone_stiffness},
+                                  [&](const std::vector<std::vector<double> *> &fields) {
+                                    this->share_states(interface, fields);
+                                  });
   }
 
   template <int dim>

@@ -67,6 +67,27 @@ namespace contact_fem
                                             const std::vector<double>   &u,
                                             const StepStart              start)
   {
+    decide_step_start(interface, u, start);
+    share_decisions(interface);
+    this->deactivate_master_nodes(interface);
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictionless<dim>::share_decisions(const ContactInterface<dim>              &interface,
+                                            const std::vector<std::vector<double> *> &key_fields)
+  {
+    // The penalties are read only at active nodes (add_results()); the
+    // previous gaps only by the owner.
+    this->share_states(interface, key_fields, {&node_penalty});
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictionless<dim>::decide_step_start(const ContactInterface<dim> &interface,
+                                              const std::vector<double>   &u,
+                                              const StepStart              start)
+  {
     // A stiff spring (penetration ~ 1e-4 h p / E) unless the adaptive rule
     // raises it where needed.
     this->set_pair_scaling(interface, adaptive ? 1. : 1e4);
@@ -92,10 +113,6 @@ namespace contact_fem
         if (!active[s.node])
           pressure[s.node] = 0.;
       }
-    // The penalties are read only at active nodes (add_results()); the
-    // previous gaps only by the owner.
-    this->share_states(interface, {}, {&node_penalty});
-    this->deactivate_master_nodes(interface);
   }
 
   template <int dim>
@@ -258,6 +275,16 @@ namespace contact_fem
   PenaltyFrictionless<dim>::update_active_set(const ContactInterface<dim> &interface,
                                               const std::vector<double>   &u)
   {
+    const unsigned int changes = decide_active_set(interface, u);
+    share_decisions(interface);
+    return Utilities::MPI::sum(changes, interface.communicator());
+  }
+
+  template <int dim>
+  unsigned int
+  PenaltyFrictionless<dim>::decide_active_set(const ContactInterface<dim> &interface,
+                                              const std::vector<double>   &u)
+  {
     unsigned int changes = 0;
     for (const auto &s : interface.slave_nodes)
       {
@@ -284,8 +311,7 @@ namespace contact_fem
         previous_gap[s.node] = g;
         this->active[s.node] = now_active;
       }
-    this->share_states(interface, {}, {&node_penalty});
-    return Utilities::MPI::sum(changes, interface.communicator());
+    return changes;
   }
 
   template <int dim>
