@@ -935,23 +935,25 @@ namespace contact_fem
   AlmFrictional<dim>::residuals(const ContactInterface<dim> &interface,
                                 const std::vector<double>   &u) const
   {
-    Residuals           result;
-    double              sum = 0.;
-    std::vector<double> force(interface.dofs().size(), 0.);
-    for (const auto &s : interface.slave_nodes)
+    Residuals result;
+    // Each rank the terms of the rows it owns, summed in node order; the
+    // contact force on every rank from the shared multipliers.
+    std::vector<std::pair<unsigned int, double>> terms;
+    for (unsigned int i = 0; i < interface.slave_nodes.size(); ++i)
       {
-        if (!s.paired)
+        const auto &s = interface.slave_nodes[i];
+        if (!s.paired || !interface.owns_row(s))
           continue;
         const double k = this->scale[s.pair];
         if (!this->active[s.node])
           {
             const double rn = released_pressure[s.node] / k;
             const double rt = magnitude<dim>(released_tangential[s.node]) / k;
-            sum += rn * rn + rt * rt;
+            terms.emplace_back(i, rn * rn + rt * rt);
             continue;
           }
         const double g = interface.gap(s, u);
-        sum += g * g;
+        terms.emplace_back(i, g * g);
         if (carries_friction(interface, s))
           {
             const double p  = this->pressure[s.node];
@@ -960,8 +962,14 @@ namespace contact_fem
                                 magnitude<dim>(tangential[s.node] - laws[s.pair]->threshold(p) *
                                                                       sets.direction[s.node]) /
                                   k;
-            sum += rt * rt;
+            terms.emplace_back(i, rt * rt);
           }
+      }
+    std::vector<double> force(interface.dofs().size(), 0.);
+    for (const auto &s : interface.slave_nodes)
+      {
+        if (!s.paired || !this->active[s.node])
+          continue;
         // D_j lambda_j on the slave, -M_jl lambda_j on the masters.
         const Tensor<1, dim> lambda = traction(s);
         for (unsigned int d = 0; d < dim; ++d)
@@ -970,7 +978,7 @@ namespace contact_fem
           for (unsigned int d = 0; d < dim; ++d)
             force[interface.position(interface.nodes[m].dofs[d])] -= value * lambda[d];
       }
-    result.multiplier    = std::sqrt(sum);
+    result.multiplier    = std::sqrt(interface.sum_in_node_order(terms));
     result.contact_force = force;
     return result;
   }

@@ -320,15 +320,19 @@ namespace contact_fem
                                       const std::vector<double>   &u) const
   {
     Residuals result;
-    double    sum = 0.;
+    // Each rank the terms of the rows it owns, summed in node order.
+    std::vector<std::pair<unsigned int, double>> terms;
     if (adaptive)
-      for (const auto &s : interface.slave_nodes)
-        if (s.paired && this->active[s.node])
-          {
-            const double r = std::max(0., -interface.gap(s, u) - penetration_factor * s.size);
-            sum += r * r;
-          }
-    result.multiplier    = std::sqrt(sum);
+      for (unsigned int k = 0; k < interface.slave_nodes.size(); ++k)
+        {
+          const auto &s = interface.slave_nodes[k];
+          if (s.paired && this->active[s.node] && interface.owns_row(s))
+            {
+              const double r = std::max(0., -interface.gap(s, u) - penetration_factor * s.size);
+              terms.emplace_back(k, r * r);
+            }
+        }
+    result.multiplier    = adaptive ? std::sqrt(interface.sum_in_node_order(terms)) : 0.;
     result.contact_force = this->contact_forces(interface);
     return result;
   }
