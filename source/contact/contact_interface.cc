@@ -487,6 +487,40 @@ namespace contact_fem
   }
 
   template <int dim>
+  double
+  ContactInterface<dim>::sum_in_node_order(
+    const std::vector<std::pair<unsigned int, double>> &terms) const
+  {
+    double sum = 0.;
+    if (Utilities::MPI::n_mpi_processes(mpi_communicator) == 1)
+      {
+        for (const auto &term : terms)
+          sum += term.second;
+        return sum;
+      }
+    // (index, term) flat, as doubles (an index below 2^53 is exact).
+    std::vector<double> own;
+    for (const auto &[k, term] : terms)
+      if (term != 0. || std::signbit(term))
+        {
+          own.push_back(k);
+          own.push_back(term);
+        }
+    std::vector<std::pair<unsigned int, double>> all;
+    for (const auto &chunk : Utilities::MPI::all_gather(mpi_communicator, own))
+      for (unsigned int i = 0; i < chunk.size(); i += 2)
+        all.emplace_back(static_cast<unsigned int>(chunk[i]), chunk[i + 1]);
+    // A node's terms come from its owner, in its order: a stable sort by
+    // node keeps them so.
+    std::stable_sort(all.begin(), all.end(), [](const auto &a, const auto &b) {
+      return a.first < b.first;
+    });
+    for (const auto &term : all)
+      sum += term.second;
+    return sum;
+  }
+
+  template <int dim>
   std::vector<double>
   ContactInterface<dim>::gather(const TrilinosWrappers::MPI::Vector &v) const
   {

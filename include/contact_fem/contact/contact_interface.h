@@ -289,6 +289,18 @@ namespace contact_fem
     share_node_values(const std::vector<std::vector<double> *> &fields,
                       const unsigned int                        n_key) const;
 
+    /**
+     * The sum over the slave nodes, in their order (slave_nodes), of terms
+     * computed by the owners of their rows: @p terms holds this rank's as
+     * (index into slave_nodes, term), in that order, any number per node.
+     * Every rank gets the serial sum bit for bit: the terms other than +0
+     * all-gathered and added in node order, each node's in its order (a +0
+     * term leaves a sum of terms >= +0 as it is, so only sums of such terms
+     * may skip them). Collective.
+     */
+    double
+    sum_in_node_order(const std::vector<std::pair<unsigned int, double>> &terms) const;
+
     /// The numbers of regular slave nodes whose row this rank owns (first)
     /// and of its ghosts (second); share_node_values().
     std::pair<unsigned int, unsigned int>

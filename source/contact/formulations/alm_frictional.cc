@@ -1,3 +1,4 @@
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -256,8 +257,11 @@ namespace contact_fem
       this->keep_operators_of_new_pairs(interface);
     auto &pressure = this->pressure;
     auto &active   = this->active;
+    // Each rank decides the nodes whose rows it owns (share_decisions()).
     for (const auto &s : interface.slave_nodes)
       {
+        if (!interface.owns_row(s))
+          continue;
         const double g = s.paired ? interface.gap(s, u) : 0.;
         active[s.node] = s.paired && decides_active(s, g, true, start) &&
                          this->eliminated_component(interface, s) < dim;
@@ -272,6 +276,7 @@ namespace contact_fem
           }
         set_direction(interface, s, bound_pressure(s, g), u);
       }
+    share_decisions(interface);
     this->deactivate_master_nodes(interface);
     for (unsigned int n = 0; n < interface.nodes.size(); ++n)
       if (!interface.nodes[n].slave)
@@ -785,6 +790,8 @@ namespace contact_fem
   {
     for (const auto &s : interface.slave_nodes)
       {
+        if (!interface.owns_row(s))
+          continue;
         if (!s.paired || !this->active[s.node])
           {
             this->pressure[s.node] = 0.;
@@ -824,6 +831,11 @@ namespace contact_fem
           tangential[s.node] =
             laws[s.pair]->threshold(std::max(this->pressure[s.node], 0.)) * sets.direction[s.node];
       }
+    // Only the multipliers changed.
+    this->share_frictional_states(interface, {&tangential}, {},
+                                  [&](const std::vector<std::vector<double> *> &fields) {
+                                    this->share_states(interface, fields);
+                                  });
   }
 
   template <int dim>
@@ -870,7 +882,7 @@ namespace contact_fem
     auto &active   = this->active;
     for (const auto &s : interface.slave_nodes)
       {
-        if (!s.paired)
+        if (!s.paired || !interface.owns_row(s))
           continue;
         const double g          = interface.gap(s, u);
         const bool   now_active = decides_active(s, g, false, StepStart::continued) &&
@@ -899,8 +911,23 @@ namespace contact_fem
             ++last_stick_slip_changes;
           }
       }
+    share_decisions(interface);
     note_pressure_dependent_slip(interface);
-    return changes;
+    unsigned int counts[2] = {changes, last_stick_slip_changes};
+    Utilities::MPI::sum(counts, interface.communicator(), counts);
+    last_stick_slip_changes = counts[1];
+    return counts[0];
+  }
+
+  template <int dim>
+  void
+  AlmFrictional<dim>::share_decisions(const ContactInterface<dim> &interface)
+  {
+    this->share_frictional_states(interface, {&tangential, &released_tangential, &sets.direction},
+                                  {&released_pressure, &cone_stiffness},
+                                  [&](const std::vector<std::vector<double> *> &fields) {
+                                    this->share_states(interface, fields);
+                                  });
   }
 
   template <int dim>
@@ -908,23 +935,25 @@ namespace contact_fem
   AlmFrictional<dim>::residuals(const ContactInterface<dim> &interface,
                                 const std::vector<double>   &u) const
   {
-    Residuals           result;
-    double              sum = 0.;
-    std::vector<double> force(interface.dofs().size(), 0.);
-    for (const auto &s : interface.slave_nodes)
+    Residuals result;
+    // Each rank the terms of the rows it owns, summed in node order; the
+    // contact force on every rank from the shared multipliers.
+    std::vector<std::pair<unsigned int, double>> terms;
+    for (unsigned int i = 0; i < interface.slave_nodes.size(); ++i)
       {
-        if (!s.paired)
+        const auto &s = interface.slave_nodes[i];
+        if (!s.paired || !interface.owns_row(s))
           continue;
         const double k = this->scale[s.pair];
         if (!this->active[s.node])
           {
             const double rn = released_pressure[s.node] / k;
             const double rt = magnitude<dim>(released_tangential[s.node]) / k;
-            sum += rn * rn + rt * rt;
+            terms.emplace_back(i, rn * rn + rt * rt);
             continue;
           }
         const double g = interface.gap(s, u);
-        sum += g * g;
+        terms.emplace_back(i, g * g);
         if (carries_friction(interface, s))
           {
             const double p  = this->pressure[s.node];
@@ -933,8 +962,14 @@ namespace contact_fem
                                 magnitude<dim>(tangential[s.node] - laws[s.pair]->threshold(p) *
                                                                       sets.direction[s.node]) /
                                   k;
-            sum += rt * rt;
+            terms.emplace_back(i, rt * rt);
           }
+      }
+    std::vector<double> force(interface.dofs().size(), 0.);
+    for (const auto &s : interface.slave_nodes)
+      {
+        if (!s.paired || !this->active[s.node])
+          continue;
         // D_j lambda_j on the slave, -M_jl lambda_j on the masters.
         const Tensor<1, dim> lambda = traction(s);
         for (unsigned int d = 0; d < dim; ++d)
@@ -943,7 +978,7 @@ namespace contact_fem
           for (unsigned int d = 0; d < dim; ++d)
             force[interface.position(interface.nodes[m].dofs[d])] -= value * lambda[d];
       }
-    result.multiplier    = std::sqrt(sum);
+    result.multiplier    = std::sqrt(interface.sum_in_node_order(terms));
     result.contact_force = force;
     return result;
   }

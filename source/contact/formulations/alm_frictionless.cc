@@ -188,18 +188,20 @@ namespace contact_fem
                                   const std::vector<double>   &u) const
   {
     Residuals result;
-    double    sum = 0.;
-    for (const auto &s : interface.slave_nodes)
+    // Each rank the terms of the rows it owns, summed in node order.
+    std::vector<std::pair<unsigned int, double>> terms;
+    for (unsigned int k = 0; k < interface.slave_nodes.size(); ++k)
       {
-        if (!s.paired)
+        const auto &s = interface.slave_nodes[k];
+        if (!s.paired || !interface.owns_row(s))
           continue;
         // g = 0 on the active set, lambda = 0 elsewhere (the multiplier of
         // a node released in this update still counts).
         const double r = this->active[s.node] ? interface.gap(s, u) :
                                                 released_pressure[s.node] / this->scale[s.pair];
-        sum += r * r;
+        terms.emplace_back(k, r * r);
       }
-    result.multiplier    = std::sqrt(sum);
+    result.multiplier    = std::sqrt(interface.sum_in_node_order(terms));
     result.contact_force = this->contact_forces(interface);
     return result;
   }

@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <contact_fem/contact/formulations/frictional_formulation.h>
 #include <contact_fem/contact/formulations/penalty_frictionless.h>
 
@@ -163,6 +165,34 @@ namespace contact_fem
   {
     for (const auto &s : interface.slave_nodes)
       converged_operators[s.node] = s.paired ? Operators{s.D, s.M} : Operators();
+  }
+
+  template <int dim, class NormalPart>
+  void
+  FrictionalFormulation<dim, NormalPart>::share_frictional_states(
+    const ContactInterface<dim>                                           &interface,
+    const std::vector<std::vector<TangentialVector<dim>> *>               &tangential_fields,
+    const std::vector<std::vector<double> *>                              &double_fields,
+    const std::function<void(const std::vector<std::vector<double> *> &)> &share_normal) const
+  {
+    if (Utilities::MPI::n_mpi_processes(interface.communicator()) == 1)
+      return;
+    // The components of the tangential fields as fields of doubles.
+    const unsigned int               n = interface.nodes.size();
+    std::vector<std::vector<double>> components(tangential_fields.size() * (dim - 1),
+                                                std::vector<double>(n));
+    for (unsigned int f = 0; f < tangential_fields.size(); ++f)
+      for (unsigned int node = 0; node < n; ++node)
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          components[f * (dim - 1) + k][node] = (*tangential_fields[f])[node][k];
+    std::vector<std::vector<double> *> fields = double_fields;
+    for (auto &component : components)
+      fields.push_back(&component);
+    share_normal(fields);
+    for (unsigned int f = 0; f < tangential_fields.size(); ++f)
+      for (unsigned int node = 0; node < n; ++node)
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          (*tangential_fields[f])[node][k] = components[f * (dim - 1) + k][node];
   }
 
   template <int dim, class NormalPart>

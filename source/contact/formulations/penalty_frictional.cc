@@ -1,3 +1,4 @@
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -351,23 +352,25 @@ namespace contact_fem
                                           const std::vector<double>   &u,
                                           const StepStart              start)
   {
-    PenaltyFrictionless<dim>::start_load_step(interface, u, start);
+    // Each rank decides the nodes whose rows it owns, normal and
+    // tangential, and shares them in one exchange (share_tangential()).
+    this->decide_step_start(interface, u, start);
     updates_in_step = 0;
     if (this->current)
       this->keep_operators_of_new_pairs(interface);
     tangent_penalty.resize(this->penalty.size());
     for (unsigned int p = 0; p < tangent_penalty.size(); ++p)
       tangent_penalty[p] = tangential_penalty > 0. ? tangential_penalty : this->penalty[p];
-    for (unsigned int n = 0; n < interface.nodes.size(); ++n)
-      if (!this->active[n])
-        {
-          tangential[n]     = TangentialVector<dim>();
-          sets.direction[n] = TangentialVector<dim>();
-        }
     for (const auto &s : interface.slave_nodes)
       {
-        if (!this->active[s.node])
+        if (!interface.owns_row(s))
           continue;
+        if (!this->active[s.node])
+          {
+            tangential[s.node]     = TangentialVector<dim>();
+            sets.direction[s.node] = TangentialVector<dim>();
+            continue;
+          }
         cone_factor[s.node] = 0.;
         if (!carries_friction(interface, s))
           {
@@ -388,7 +391,29 @@ namespace contact_fem
             cone_factor[s.node] = slip_cone_factor(interface, s, sets.direction[s.node], p, xi);
           }
       }
+    share_tangential(interface);
+    this->deactivate_master_nodes(interface);
+    // The nodes outside the slave nodes' rows (master nodes, hanging
+    // vertices) on every rank.
+    for (unsigned int n = 0; n < interface.nodes.size(); ++n)
+      if (!this->active[n])
+        {
+          tangential[n]     = TangentialVector<dim>();
+          sets.direction[n] = TangentialVector<dim>();
+        }
     set_frame_turned(interface);
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictional<dim>::share_tangential(const ContactInterface<dim> &interface)
+  {
+    // cone_factor is read only at active slip nodes; a key field all the
+    // same, so that every value is the serial one.
+    this->share_frictional_states(interface, {&tangential, &sets.direction}, {&cone_factor},
+                                  [&](const std::vector<std::vector<double> *> &fields) {
+                                    this->share_decisions(interface, fields);
+                                  });
   }
 
   template <int dim>
@@ -555,13 +580,14 @@ namespace contact_fem
                                             const std::vector<double>   &u)
   {
     const std::vector<bool> was_active = this->active;
-    // Active set and p_j = eps_n (-g_j) of the new iterate.
-    unsigned int changes    = PenaltyFrictionless<dim>::update_active_set(interface, u);
+    // Active set and p_j = eps_n (-g_j) of the new iterate, on the rows
+    // this rank owns (shared with the tangential state: share_tangential()).
+    unsigned int changes    = this->decide_active_set(interface, u);
     last_stick_slip_changes = 0;
     const bool hold_stick   = this->current && ++updates_in_step == 1;
     for (const auto &s : interface.slave_nodes)
       {
-        if (!s.paired)
+        if (!s.paired || !interface.owns_row(s))
           continue;
         if (!this->active[s.node] || !carries_friction(interface, s))
           {
@@ -594,8 +620,12 @@ namespace contact_fem
         tangential[s.node]     = tangential_traction(interface, s, direction, p, xi);
         cone_factor[s.node]    = slip_cone_factor(interface, s, direction, p, xi);
       }
+    share_tangential(interface);
     set_frame_turned(interface);
-    return changes;
+    unsigned int counts[2] = {changes, last_stick_slip_changes};
+    Utilities::MPI::sum(counts, interface.communicator(), counts);
+    last_stick_slip_changes = counts[1];
+    return counts[0];
   }
 
   template <int dim>

@@ -67,6 +67,27 @@ namespace contact_fem
                                             const std::vector<double>   &u,
                                             const StepStart              start)
   {
+    decide_step_start(interface, u, start);
+    share_decisions(interface);
+    this->deactivate_master_nodes(interface);
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictionless<dim>::share_decisions(const ContactInterface<dim>              &interface,
+                                            const std::vector<std::vector<double> *> &key_fields)
+  {
+    // The penalties are read only at active nodes (add_results()); the
+    // previous gaps only by the owner.
+    this->share_states(interface, key_fields, {&node_penalty});
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictionless<dim>::decide_step_start(const ContactInterface<dim> &interface,
+                                              const std::vector<double>   &u,
+                                              const StepStart              start)
+  {
     // A stiff spring (penetration ~ 1e-4 h p / E) unless the adaptive rule
     // raises it where needed.
     this->set_pair_scaling(interface, adaptive ? 1. : 1e4);
@@ -92,10 +113,6 @@ namespace contact_fem
         if (!active[s.node])
           pressure[s.node] = 0.;
       }
-    // The penalties are read only at active nodes (add_results()); the
-    // previous gaps only by the owner.
-    this->share_states(interface, {}, {&node_penalty});
-    this->deactivate_master_nodes(interface);
   }
 
   template <int dim>
@@ -263,6 +280,16 @@ namespace contact_fem
   PenaltyFrictionless<dim>::update_active_set(const ContactInterface<dim> &interface,
                                               const std::vector<double>   &u)
   {
+    const unsigned int changes = decide_active_set(interface, u);
+    share_decisions(interface);
+    return Utilities::MPI::sum(changes, interface.communicator());
+  }
+
+  template <int dim>
+  unsigned int
+  PenaltyFrictionless<dim>::decide_active_set(const ContactInterface<dim> &interface,
+                                              const std::vector<double>   &u)
+  {
     unsigned int changes = 0;
     for (const auto &s : interface.slave_nodes)
       {
@@ -289,8 +316,7 @@ namespace contact_fem
         previous_gap[s.node] = g;
         this->active[s.node] = now_active;
       }
-    this->share_states(interface, {}, {&node_penalty});
-    return Utilities::MPI::sum(changes, interface.communicator());
+    return changes;
   }
 
   template <int dim>
@@ -299,15 +325,19 @@ namespace contact_fem
                                       const std::vector<double>   &u) const
   {
     Residuals result;
-    double    sum = 0.;
+    // Each rank the terms of the rows it owns, summed in node order.
+    std::vector<std::pair<unsigned int, double>> terms;
     if (adaptive)
-      for (const auto &s : interface.slave_nodes)
-        if (s.paired && this->active[s.node])
-          {
-            const double r = std::max(0., -interface.gap(s, u) - penetration_factor * s.size);
-            sum += r * r;
-          }
-    result.multiplier    = std::sqrt(sum);
+      for (unsigned int k = 0; k < interface.slave_nodes.size(); ++k)
+        {
+          const auto &s = interface.slave_nodes[k];
+          if (s.paired && this->active[s.node] && interface.owns_row(s))
+            {
+              const double r = std::max(0., -interface.gap(s, u) - penetration_factor * s.size);
+              terms.emplace_back(k, r * r);
+            }
+        }
+    result.multiplier    = adaptive ? std::sqrt(interface.sum_in_node_order(terms)) : 0.;
     result.contact_force = this->contact_forces(interface);
     return result;
   }

@@ -292,6 +292,12 @@ namespace contact_fem
                        TrilinosWrappers::SparseMatrix  &matrix,
                        TrilinosWrappers::MPI::Vector   &rhs) const;
 
+    /// After the owners of the rows decided their nodes (active set,
+    /// multipliers, released multipliers, stick/slip sets, cone factors),
+    /// the other ranks get them (share_frictional_states()). Collective.
+    void
+    share_decisions(const ContactInterface<dim> &interface);
+
     /// Sets pressure_dependent_slip from the current sets.
     void
     note_pressure_dependent_slip(const ContactInterface<dim> &interface);

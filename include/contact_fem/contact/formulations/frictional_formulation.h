@@ -8,6 +8,7 @@
 #include <contact_fem/contact/friction/stick_slip_sets.h>
 
 #include <array>
+#include <functional>
 #include <map>
 #include <utility>
 
@@ -156,6 +157,24 @@ namespace contact_fem
     /// operators become the reference of the objective slip.
     void
     keep_operators(const ContactInterface<dim> &interface);
+
+    /**
+     * After the owners of the rows decided their nodes (ContactInterface::
+     * owns_row()), the other ranks get the frictional fields @p
+     * tangential_fields (per node, dim - 1 components each) and @p
+     * double_fields, as doubles, through @p share_normal: the normal
+     * part's sharing (FrictionlessFormulation::share_states() or the
+     * penalty's share_decisions()), which adds its own fields, so that all
+     * go in one exchange. Every field is a key field (a node with any
+     * value other than +0 is sent to every rank): exact copies of every
+     * value, read or not. Nothing in serial. Collective.
+     */
+    void
+    share_frictional_states(
+      const ContactInterface<dim>                                           &interface,
+      const std::vector<std::vector<TangentialVector<dim>> *>               &tangential_fields,
+      const std::vector<std::vector<double> *>                              &double_fields,
+      const std::function<void(const std::vector<std::vector<double> *> &)> &share_normal) const;
 
     /// Current kinematics: the DoFs the terms of linearised node @p node
     /// couple, its patch and the masters of its last accepted step (the

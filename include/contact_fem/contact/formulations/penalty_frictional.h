@@ -357,6 +357,13 @@ namespace contact_fem
     /// Some active node's frame_normal() is not its slave normal (the
     /// normal penalty is then unsymmetric): set by set_frame_turned().
     bool frame_turned = false;
+    /// After the owners of the rows decided their nodes, the normal states
+    /// (share_decisions()) and the tangential ones (tangential traction,
+    /// stick/slip set, cone factor) to the other ranks in one exchange.
+    /// Collective.
+    void
+    share_tangential(const ContactInterface<dim> &interface);
+
     /// Sets frame_turned from the active set.
     void
     set_frame_turned(const ContactInterface<dim> &interface);

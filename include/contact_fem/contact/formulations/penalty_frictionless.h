@@ -107,6 +107,24 @@ namespace contact_fem
     /// Contact/Kinematics = current.
     bool current = false;
 
+    /// The decisions of start_load_step() on the rows this rank owns,
+    /// not yet shared (share_decisions()).
+    void
+    decide_step_start(const ContactInterface<dim> &interface,
+                      const std::vector<double>   &u,
+                      const StepStart              start);
+
+    /// The decisions of update_active_set() on the rows this rank owns,
+    /// not yet shared (share_decisions()); the changes on this rank.
+    unsigned int
+    decide_active_set(const ContactInterface<dim> &interface, const std::vector<double> &u);
+
+    /// The owners' decisions, with the penalties and the derived class's
+    /// @p key_fields, to the other ranks (share_states()). Collective.
+    void
+    share_decisions(const ContactInterface<dim>              &interface,
+                    const std::vector<std::vector<double> *> &key_fields = {});
+
   private:
     /// Bussetta-Marceau-Ponthot update of a nodal penalty @p eps from the
     /// penetrations (> 0 when overlapping) of this and the previous iteration.
