@@ -10,18 +10,27 @@ namespace contact_fem
 {
   namespace
   {
-    /// F = I + sum_i u_i e_(c_i) (x) g_i.
+    /// The displacement gradient H = F - I = sum_i u_i e_(c_i) (x) g_i
+    /// (the laws take H: I + H would round it to 1e-16 absolute).
     template <int dim>
     Tensor<2, dim>
-    deformation_gradient(const Vector<double>              &u,
-                         const std::vector<unsigned int>   &component,
-                         const std::vector<Tensor<1, dim>> &g)
+    displacement_gradient(const Vector<double>              &u,
+                          const std::vector<unsigned int>   &component,
+                          const std::vector<Tensor<1, dim>> &g)
     {
-      Tensor<2, dim> F;
-      for (unsigned int d = 0; d < dim; ++d)
-        F[d][d] = 1.;
+      Tensor<2, dim> H;
       for (unsigned int i = 0; i < u.size(); ++i)
-        F[component[i]] += u(i) * g[i];
+        H[component[i]] += u(i) * g[i];
+      return H;
+    }
+
+    template <int dim>
+    Tensor<2, dim>
+    identity_plus(const Tensor<2, dim> &H)
+    {
+      Tensor<2, dim> F = H;
+      for (unsigned int d = 0; d < dim; ++d)
+        F[d][d] += 1.;
       return F;
     }
   } // namespace
@@ -69,9 +78,10 @@ namespace contact_fem
   {
     for (unsigned int i = 0; i < u.size(); ++i)
       g[i] = fe_values.shape_grad_component(i, q, component[i]);
-    const Tensor<2, dim> F   = deformation_gradient(u, component, g);
-    result.smallest_jacobian = std::min(result.smallest_jacobian, determinant(F));
-    return F;
+    const Tensor<2, dim> H = displacement_gradient(u, component, g);
+    result.smallest_jacobian =
+      std::min(result.smallest_jacobian, 1. + HyperelasticLaw<dim>::jacobian_minus_one(H));
+    return H;
   }
 
   template <int dim>
@@ -95,14 +105,13 @@ namespace contact_fem
     result.smallest_jacobian = std::numeric_limits<double>::max();
     for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
       {
-        const Tensor<2, dim> F = gradient_at(q, u, result);
-        const double         J = determinant(F);
-        if (!(J > 0.))
+        const Tensor<2, dim> H = gradient_at(q, u, result);
+        if (!(result.smallest_jacobian > 0.))
           return result;
         const double         dV = fe_values.JxW(q);
-        const Tensor<2, dim> P  = material.first_piola(F);
-        const Tensor<4, dim> A  = material.first_piola_tangent(F);
-        result.energy += material.energy(F) * dV;
+        const Tensor<2, dim> P  = material.first_piola(H);
+        const Tensor<4, dim> A  = material.first_piola_tangent(H);
+        result.energy += material.energy(H) * dV;
         for (unsigned int i = 0; i < n; ++i)
           {
             internal_force(i) += (P[component[i]] * g[i]) * dV;
@@ -141,12 +150,12 @@ namespace contact_fem
     CellLinearisation  result;
     for (unsigned int i = 0; i < n; ++i)
       g0[i] = centre_values->shape_grad_component(i, 0, component[i]);
-    const Tensor<2, dim> F0  = deformation_gradient(u, component, g0);
-    const double         J0  = determinant(F0);
-    result.smallest_jacobian = J0;
-    if (!(J0 > 0.))
+    const Tensor<2, dim> H0   = displacement_gradient(u, component, g0);
+    const double         J0m1 = HyperelasticLaw<dim>::jacobian_minus_one(H0);
+    result.smallest_jacobian  = 1. + J0m1;
+    if (!(1. + J0m1 > 0.))
       return result;
-    const Tensor<2, dim>        F0_inverse_transpose = transpose(invert(F0));
+    const Tensor<2, dim>        F0_inverse_transpose = transpose(invert(identity_plus(H0)));
     std::vector<Tensor<1, dim>> h0(n), h(n);
     for (unsigned int i = 0; i < n; ++i)
       h0[i] = F0_inverse_transpose * g0[i];
@@ -154,16 +163,22 @@ namespace contact_fem
     std::vector<Tensor<2, dim>> dF_bar(n), AdF(n);
     for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
       {
-        const Tensor<2, dim> F = gradient_at(q, u, result);
-        const double         J = determinant(F);
-        if (!(J > 0.))
+        const Tensor<2, dim> H   = gradient_at(q, u, result);
+        const double         Jm1 = HyperelasticLaw<dim>::jacobian_minus_one(H);
+        if (!(1. + Jm1 > 0.))
           return result;
-        const double         alpha = std::pow(J0 / J, 1. / dim);
-        const Tensor<2, dim> F_bar = alpha * F, F_inverse_transpose = transpose(invert(F));
-        const Tensor<2, dim> P  = material.first_piola(F_bar);
-        const Tensor<4, dim> A  = material.first_piola_tangent(F_bar);
+        // alpha - 1 and F-bar - I = alpha H + (alpha - 1) I without
+        // cancellation (the laws take the displacement gradient).
+        const double   alpha_minus_one = std::expm1((std::log1p(J0m1) - std::log1p(Jm1)) / dim);
+        const double   alpha           = 1. + alpha_minus_one;
+        Tensor<2, dim> H_bar           = alpha * H;
+        for (unsigned int d = 0; d < dim; ++d)
+          H_bar[d][d] += alpha_minus_one;
+        const Tensor<2, dim> F = identity_plus(H), F_inverse_transpose = transpose(invert(F));
+        const Tensor<2, dim> P  = material.first_piola(H_bar);
+        const Tensor<4, dim> A  = material.first_piola_tangent(H_bar);
         const double         dV = fe_values.JxW(q), P_F = scalar_product(P, F);
-        result.energy += material.energy(F_bar) * dV;
+        result.energy += material.energy(H_bar) * dV;
         for (unsigned int i = 0; i < n; ++i)
           {
             h[i]      = F_inverse_transpose * g[i];

@@ -275,13 +275,11 @@ namespace contact_fem
     const ElasticConstants &c   = constants(id);
     const auto              law = HyperelasticLaw<3>::create(c.model, c);
     AssertThrow(law, ExcMessage("Materials: body " + std::to_string(id) + " is linear."));
-    Tensor<2, 3> F;
-    for (unsigned int i = 0; i < 3; ++i)
-      F[i][i] = 1.;
+    Tensor<2, 3> H;
     for (unsigned int i = 0; i < dim; ++i)
       for (unsigned int j = 0; j < dim; ++j)
-        F[i][j] += grad_u[i][j];
-    return law->cauchy_stress(F);
+        H[i][j] = grad_u[i][j];
+    return law->cauchy_stress(H);
   }
 
   template <int dim>

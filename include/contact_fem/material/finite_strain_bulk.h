@@ -69,8 +69,9 @@ namespace contact_fem
               Vector<double>                                       &internal_force);
 
   private:
-    /// F at quadrature point @p q (fe_values on the cell) of the DoF values
-    /// @p u; fills g and takes det F into @p result's smallest Jacobian.
+    /// The displacement gradient H = F - I at quadrature point @p q
+    /// (fe_values on the cell) of the DoF values @p u; fills g and takes
+    /// det F into @p result's smallest Jacobian.
     Tensor<2, dim>
     gradient_at(const unsigned int q, const Vector<double> &u, CellLinearisation &result);
     /// The F-bar tangent and force (see the class).
