@@ -1086,7 +1086,9 @@ namespace contact_fem
     {
       const double extent = model_extent(triangulation);
       monitor.set_scene_units(materials.youngs_modulus_range().second * std::pow(extent, dim - 1),
-                              extent);
+                              extent,
+                              contact ? diagnosis().load_displacement_scale(current_time) : 0.,
+                              contact ? diagnosis().largest_coordinate() : 0.);
     }
     NewtonMonitor::Assessment assessment;
     // The contact sets after each iteration: a set that comes back after

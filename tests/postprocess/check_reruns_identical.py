@@ -21,6 +21,7 @@ import csv
 import io
 import json
 import os
+import shutil
 import sys
 
 from scene_run import run_scene
@@ -62,6 +63,9 @@ def without_wall_times(name, text):
 def outputs(k):
     """Every output of run k: stdout and the files of its output directory."""
     directory = f"run_{k}"
+    # A fresh directory: a rerun of the test would otherwise report the
+    # removal of its earlier files, naming the directory, in log.txt.
+    shutil.rmtree(directory, ignore_errors=True)
     result = {"stdout": run_scene(contact_fem, scene, f"Output directory={directory}",
                                   launcher=launcher)}
     for root, _, files in os.walk(directory):

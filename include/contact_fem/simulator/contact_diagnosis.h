@@ -131,18 +131,21 @@ namespace contact_fem
     std::string
     tension_failure(const Json &contact) const;
 
-  private:
-    /// The integral of the outward normal over boundary @p id. Collective.
-    Tensor<1, dim>
-    surface_normal(const types::boundary_id id) const;
+    /// The displacement the load at @p time causes: applied force over the
+    /// smallest Young's modulus, or the largest prescribed displacement.
+    /// Collective.
+    double
+    load_displacement_scale(const double time) const;
+
     /// The largest distance of a vertex from the origin (of the computing
     /// frame). Collective.
     double
     largest_coordinate() const;
-    /// The displacement the load at @p time causes: applied force over the
-    /// smallest Young's modulus, or the largest prescribed displacement.
-    double
-    load_displacement_scale(const double time) const;
+
+  private:
+    /// The integral of the outward normal over boundary @p id. Collective.
+    Tensor<1, dim>
+    surface_normal(const types::boundary_id id) const;
     /// The nearly incompressible part of precision_limits().
     std::string
     incompressibility_limit() const;

@@ -36,9 +36,19 @@ namespace contact_fem
     /// capped at 1e-9 of them, so that a scene in small units (a
     /// micrometre model, a rubber in MPa and metres) does not pass the
     /// absolute test long before the relative one: the convergence test
-    /// then does not depend on the units.
+    /// then does not depend on the units. @p load_displacement (> 0 if
+    /// known: the displacement the load causes, ContactDiagnosis::
+    /// load_displacement_scale()) caps them further at 1e-6 of the load's
+    /// own force and displacement, so that a load far below the scene's
+    /// scale (a positively homogeneous problem scaled by 1e-9) is not
+    /// accepted on absolute residuals that are a fair part of the load;
+    /// the multiplier (gap) tolerance not below 100 units of the round-off
+    /// of coordinates of size @p coordinate_size, which no gap resolves.
     void
-    set_scene_units(const double force, const double length);
+    set_scene_units(const double force,
+                    const double length,
+                    const double load_displacement = 0.,
+                    const double coordinate_size   = 0.);
 
     /// What the residuals of one iteration say.
     struct Assessment

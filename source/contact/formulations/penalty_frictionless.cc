@@ -320,6 +320,18 @@ namespace contact_fem
   }
 
   template <int dim>
+  double
+  PenaltyFrictionless<dim>::largest_penalty_penetration() const
+  {
+    // Every rank holds the states of the contact zone (share_node_values()).
+    double largest = 0.;
+    for (unsigned int n = 0; n < this->active.size(); ++n)
+      if (this->active[n] && node_penalty[n] > 0.)
+        largest = std::max(largest, this->pressure[n] / node_penalty[n]);
+    return largest;
+  }
+
+  template <int dim>
   typename PenaltyFrictionless<dim>::Residuals
   PenaltyFrictionless<dim>::residuals(const ContactInterface<dim> &interface,
                                       const std::vector<double>   &u) const

@@ -152,6 +152,15 @@ namespace contact_fem
       return 1.;
     }
 
+    /// The largest penetration a penalty allows at the current pressures
+    /// (p / eps over the active nodes), 0 for formulations that close the
+    /// gaps exactly. For the diagnosis of failures.
+    virtual double
+    largest_penalty_penetration() const
+    {
+      return 0.;
+    }
+
     /// The contact traction on the slave at slave node @p s: -p_n n plus the
     /// tangential traction of a frictional law (zero when frictionless).
     virtual Tensor<1, dim>

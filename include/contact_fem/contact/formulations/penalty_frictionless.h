@@ -88,6 +88,9 @@ namespace contact_fem
     update_active_set(const ContactInterface<dim> &interface,
                       const std::vector<double>   &u) override;
 
+    double
+    largest_penalty_penetration() const override;
+
     /// Zero by construction; with adaptive penalties the penetration beyond
     /// the allowed one.
     Residuals
