@@ -23,16 +23,6 @@ namespace contact_fem
         H[component[i]] += u(i) * g[i];
       return H;
     }
-
-    template <int dim>
-    Tensor<2, dim>
-    identity_plus(const Tensor<2, dim> &H)
-    {
-      Tensor<2, dim> F = H;
-      for (unsigned int d = 0; d < dim; ++d)
-        F[d][d] += 1.;
-      return F;
-    }
   } // namespace
 
   template <int dim>

@@ -117,19 +117,6 @@ namespace contact_fem
     return trace(H) + (dim == 3 ? principal_minors(H) : 0.) + determinant(H);
   }
 
-  namespace
-  {
-    template <int dim>
-    Tensor<2, dim>
-    identity_plus(const Tensor<2, dim> &H)
-    {
-      Tensor<2, dim> F = H;
-      for (unsigned int d = 0; d < dim; ++d)
-        F[d][d] += 1.;
-      return F;
-    }
-  } // namespace
-
   template <int dim>
   Tensor<2, dim>
   HyperelasticLaw<dim>::first_piola(const Tensor<2, dim> &H) const

@@ -15,6 +15,18 @@ namespace contact_fem
 
   struct ElasticConstants;
 
+  /// F = I + H from the displacement gradient H (the laws take H, which
+  /// keeps small strains to full precision, and form F only where needed).
+  template <int dim>
+  inline Tensor<2, dim>
+  identity_plus(const Tensor<2, dim> &H)
+  {
+    Tensor<2, dim> F = H;
+    for (unsigned int d = 0; d < dim; ++d)
+      F[d][d] += 1.;
+    return F;
+  }
+
   /// The elastic law of a body (Materials/Models).
   enum class ElasticModel
   {
