@@ -20,11 +20,13 @@ Usage: bench/finite_strain/penalty_updated_hertz_steps.py [--steps N...]
 import argparse
 import json
 import os
-import subprocess
+import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(REPO, "bench"))
+from bench_run import run_logged  # noqa: E402
 SCENE = os.path.join(REPO, "prm", "hertz_3d.prm")
 
 
@@ -38,11 +40,7 @@ def run(binary, out, formulation, steps, kinematics, extra=()):
                     f"Load stepping/Number of load steps={steps}", "Output/Write VTU=false",
                     f"Output directory={out}", *extra):
         command += ["--set", setting]
-    start = time.time()
-    result = subprocess.run(command, capture_output=True, text=True)
-    wall = time.time() - start
-    with open(os.path.join(out, "console.txt"), "w") as f:
-        f.write(result.stdout + result.stderr)
+    result, wall = run_logged(command, out)
     if result.returncode != 0:
         return None, wall
     with open(os.path.join(out, "summary.json")) as f:

@@ -52,13 +52,14 @@ import json
 import math
 import os
 import re
-import subprocess
 import sys
 import time
 import xml.etree.ElementTree as ET
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(REPO, "bench"))
+from bench_run import run_or_exit  # noqa: E402
 SCENE = os.path.join(REPO, "tests", "postprocess", "ironing_2d_friction.prm")
 
 SLIDE_PER_TIME = 0.1875  # die top x = 0.1875 (t - 1) for t > 1
@@ -94,15 +95,7 @@ def run(binary, out, refinements=0, depth=0.2, nu=0.3, e_die=1000., mu=0.3, step
     command = [binary, SCENE]
     for key, value in settings.items():
         command += ["--set", f"{key}={value}"]
-    start = time.time()
-    result = subprocess.run(command, capture_output=True, text=True)
-    wall = time.time() - start
-    with open(os.path.join(out, "console.txt"), "w") as f:
-        f.write(result.stdout + result.stderr)
-    if result.returncode != 0:
-        sys.exit(f"{' '.join(command)} failed ({result.returncode}):\n"
-                 f"{result.stdout[-3000:]}{result.stderr[-3000:]}")
-    return result.stdout, wall
+    return run_or_exit(command, out)
 
 
 def plateau_rows(out):

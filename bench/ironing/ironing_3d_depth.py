@@ -19,11 +19,14 @@ import argparse
 import csv
 import math
 import os
+import sys
 import subprocess
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(REPO, "bench"))
+from bench_run import run_logged  # noqa: E402
 SCENE = os.path.join(REPO, "prm", "ironing_3d.prm")
 MU = 0.3
 
@@ -65,11 +68,7 @@ def main():
                         "Load stepping/End time=15", "Load stepping/Number of load steps=15",
                         "Output/Write VTU=false", "Output/Print timing=false"):
             command += ["--set", setting]
-        start = time.time()
-        result = subprocess.run(command, capture_output=True, text=True)
-        wall = time.time() - start
-        with open(os.path.join(out, "console.txt"), "w") as f:
-            f.write(result.stdout + result.stderr)
+        result, wall = run_logged(command, out)
         if result.returncode != 0:
             print(f"| {depth} | failed ({result.returncode}) |")
             continue

@@ -49,6 +49,8 @@ REPO = os.path.dirname(os.path.dirname(HERE))
 SCENE = os.path.join(REPO, "prm", "ironing_3d.prm")
 sys.path.insert(0, os.path.join(REPO, "tests", "postprocess"))
 sys.path.insert(0, os.path.join(REPO, "bench", "finite_strain"))
+sys.path.insert(0, os.path.join(REPO, "bench"))
+from bench_run import run_or_exit  # noqa: E402
 from vtu_files import read_surface  # noqa: E402
 from ironing_3d import parabola_residuals  # noqa: E402
 
@@ -84,15 +86,7 @@ def run(binary, out, level, end_time, steps, vtu, mu=MU):
                     f"Load stepping/Number of load steps={steps}",
                     f"Output/Write VTU={'true' if vtu else 'false'}", "Output/Print timing=false"):
         command += ["--set", setting]
-    start = time.time()
-    result = subprocess.run(command, capture_output=True, text=True)
-    wall = time.time() - start
-    with open(os.path.join(out, "console.txt"), "w") as f:
-        f.write(result.stdout + result.stderr)
-    if result.returncode != 0:
-        sys.exit(f"{' '.join(command)} failed ({result.returncode}):\n{result.stdout[-3000:]}"
-                 f"{result.stderr[-3000:]}")
-    return result.stdout, wall
+    return run_or_exit(command, out)
 
 
 def stored_energy(out):

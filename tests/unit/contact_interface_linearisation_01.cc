@@ -23,22 +23,13 @@
 // 2 x 2, overhanging it by 0.1: no coincident rims) the same checks.
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/mapping_q.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/tria.h>
-#include <deal.II/lac/affine_constraints.h>
 
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/contact/friction/stick_slip_sets.h>
-#include <contact_fem/material/material.h>
 
-#include "unit_test_blocks.h"
 #include "unit_test_linearisation.h"
-#include "unit_test_materials.h"
 #include "unit_test_random.h"
+#include "unit_test_stacked_interface.h"
 
 #include <algorithm>
 #include <array>
@@ -103,40 +94,12 @@ namespace
       }
   }
 
-  /// The two stacked blocks of the test in @p tria.
-  void
-  make_blocks(Triangulation<2> &tria)
-  {
-    Triangulation<2> lower, upper;
-    GridGenerator::subdivided_hyper_rectangle(lower, {3, 1}, Point<2>(0., 0.), Point<2>(1., 1.));
-    GridGenerator::subdivided_hyper_rectangle(upper, {2, 1}, Point<2>(0., 1.05),
-                                              Point<2>(1., 2.05));
-    GridGenerator::merge_triangulations(lower, upper, tria);
-  }
-
-  void
-  make_blocks(Triangulation<3> &tria)
-  {
-    make_stacked_blocks_3d(tria);
-  }
-
   template <int dim>
   void
   run(const unsigned int degree, const unsigned int mapping_degree)
   {
-    Triangulation<dim> tria;
-    make_blocks(tria);
-    label_stacked_blocks(tria, 0.05);
-    const FESystem<dim> fe(FE_Q<dim>(degree), dim);
-    DoFHandler<dim>     dof_handler(tria);
-    dof_handler.distribute_dofs(fe);
-    const MappingQ<dim>       mapping(mapping_degree);
-    const Materials<dim>      materials = make_materials<dim>("1, 2", "100, 200", "0.3, 0.3");
-    AffineConstraints<double> none;
-    none.close();
-    ContactInterface<dim> interface;
-    interface.initialize(mapping, dof_handler, {ContactPair{3, 4}}, none, none, materials,
-                         MPI_COMM_WORLD);
+    StackedInterface<dim> blocks(degree, mapping_degree);
+    auto                 &interface = blocks.interface;
 
     Random              random(29);
     std::vector<double> u(interface.dofs().size());
@@ -163,31 +126,11 @@ namespace
     const auto [coarse, coarse_pairs] = differences(1e-3);
     const auto [fine, fine_pairs]     = differences(5e-4);
     const auto [tight, tight_pairs]   = differences(1e-5);
-    bool   small = true, second_order = true, complete = true;
-    double worst = 0.;
-    for (const auto &[entry, by_dof] : coarse)
-      {
-        const auto &node  = linear.at(entry.first);
-        double      scale = 0.;
-        for (const auto &[dof, value] : by_dof)
-          scale =
-            std::max(scale, std::abs(analytic(interface, frames, entry.first, entry.second, dof)));
-        for (const auto &[dof, value] : by_dof)
-          {
-            const double exact = analytic(interface, frames, entry.first, entry.second, dof);
-            const double e1    = std::abs(value - exact) / scale;
-            const double e2    = std::abs(fine.at(entry).at(dof) - exact) / scale;
-            const double e3    = std::abs(tight.at(entry).at(dof) - exact) / scale;
-            const bool   inside =
-              std::find(node.dofs.begin(), node.dofs.end(), dof) != node.dofs.end();
-            complete = complete && (inside || std::abs(value - exact) < 1e-10 * scale);
-            small    = small && e3 < 1e-6;
-            worst    = std::max(worst, e3);
-            // Beyond round-off, the error falls by 4 when h halves.
-            if (e1 > 1e-7)
-              second_order = second_order && e1 / e2 > 3.5 && e1 / e2 < 4.5;
-          }
-      }
+    const auto [small, second_order, complete, worst, largest] =
+      judge(interface, coarse, fine, tight,
+            [&](const unsigned int n, const Key &key, const types::global_dof_index dof) {
+              return analytic(interface, frames, n, key, dof);
+            });
     std::cout << dim << "D, Q" << degree << " on a mapping of degree " << mapping_degree << ": "
               << linear.size() << " paired slave nodes, " << interface.coupled_faces.size()
               << " coupled face pairs" << std::endl

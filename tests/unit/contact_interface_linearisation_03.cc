@@ -23,21 +23,13 @@
 // normal's again.
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/mapping_q.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/tria.h>
-#include <deal.II/lac/affine_constraints.h>
 
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/contact/friction/stick_slip_sets.h>
-#include <contact_fem/material/material.h>
 
-#include "unit_test_blocks.h"
-#include "unit_test_materials.h"
+#include "unit_test_linearisation.h"
 #include "unit_test_random.h"
+#include "unit_test_stacked_interface.h"
 
 #include <algorithm>
 #include <array>
@@ -45,19 +37,17 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <numeric>
 
 using namespace dealii;
 using namespace contact_fem;
+using namespace unit_test_linearisation;
 
 namespace
 {
-  /// (kind, index): 0 the interface normal (index the component), 1 the
-  /// force along it, 2 + k the held traction's force along tangent k (index
-  /// the row DoF).
-  using Key    = std::pair<int, types::global_dof_index>;
-  using Values = std::map<unsigned int, std::map<Key, double>>;
-  template <int dim>
-  using Frames = std::map<unsigned int, std::array<Tensor<1, dim>, dim - 1>>;
+  // The entries' keys (kind, index): 0 the interface normal (index the
+  // component), 1 the force along it, 2 + k the held traction's force along
+  // tangent k (index the row DoF).
 
   template <int dim>
   Values
@@ -121,39 +111,12 @@ namespace
     return result;
   }
 
-  void
-  make_blocks(Triangulation<2> &tria)
-  {
-    Triangulation<2> lower, upper;
-    GridGenerator::subdivided_hyper_rectangle(lower, {3, 1}, Point<2>(0., 0.), Point<2>(1., 1.));
-    GridGenerator::subdivided_hyper_rectangle(upper, {2, 1}, Point<2>(0., 1.05),
-                                              Point<2>(1., 2.05));
-    GridGenerator::merge_triangulations(lower, upper, tria);
-  }
-
-  void
-  make_blocks(Triangulation<3> &tria)
-  {
-    make_stacked_blocks_3d(tria);
-  }
-
   template <int dim>
   void
   run(const unsigned int degree, const unsigned int mapping_degree)
   {
-    Triangulation<dim> tria;
-    make_blocks(tria);
-    label_stacked_blocks(tria, 0.05);
-    const FESystem<dim> fe(FE_Q<dim>(degree), dim);
-    DoFHandler<dim>     dof_handler(tria);
-    dof_handler.distribute_dofs(fe);
-    const MappingQ<dim>       mapping(mapping_degree);
-    const Materials<dim>      materials = make_materials<dim>("1, 2", "100, 200", "0.3, 0.3");
-    AffineConstraints<double> none;
-    none.close();
-    ContactInterface<dim> interface;
-    interface.initialize(mapping, dof_handler, {ContactPair{3, 4}}, none, none, materials,
-                         MPI_COMM_WORLD);
+    StackedInterface<dim> blocks(degree, mapping_degree);
+    auto                 &interface = blocks.interface;
 
     // The slave top (y = 1) bent down, the master base bent up, to
     // parabolas of sag 0.08 over the unit width; plus up to 1 % at random.
@@ -183,56 +146,24 @@ namespace
             std::max(largest_angle, std::acos(std::min(1., s.normal * s.interface_normal)));
         }
 
+    std::vector<unsigned int> every_dof(u.size());
+    std::iota(every_dof.begin(), every_dof.end(), 0u);
     const auto differences = [&](const double h) {
-      std::map<std::pair<unsigned int, Key>, std::map<types::global_dof_index, double>> result;
-      bool same_pairs = true;
-      for (unsigned int i = 0; i < u.size(); ++i)
-        {
-          std::array<Values, 2> at;
-          for (const int side : {0, 1})
-            {
-              std::vector<double> v = u;
-              v[i] += side == 0 ? h : -h;
-              ContactInterface<dim> moved = interface;
-              moved.update(v, 3.);
-              same_pairs = same_pairs && moved.coupled_faces == coupled;
-              at[side]   = values_of(moved, frames);
-            }
-          for (const auto &[n, entries] : at[0])
-            for (const auto &[key, value] : entries)
-              result[{n, key}][interface.dofs()[i]] = (value - at[1][n][key]) / (2. * h);
-        }
-      return std::make_pair(result, same_pairs);
+      return central_differences(
+        interface, u, every_dof, coupled, h, [](std::vector<double> &) {},
+        [&](const ContactInterface<dim> &moved, const std::vector<double> &) {
+          return values_of(moved, frames);
+        });
     };
     const auto [coarse, coarse_pairs] = differences(1e-3);
     const auto [fine, fine_pairs]     = differences(5e-4);
     const auto [tight, tight_pairs]   = differences(3e-6);
-    bool   small = true, second_order = true, complete = true;
-    double worst = 0., largest_normal_derivative = 0.;
-    for (const auto &[entry, by_dof] : coarse)
-      {
-        const auto &node  = linear.at(entry.first);
-        double      scale = 0.;
-        for (const auto &[dof, value] : by_dof)
-          scale =
-            std::max(scale, std::abs(analytic(interface, frames, entry.first, entry.second, dof)));
-        if (entry.second.first == 0)
-          largest_normal_derivative = std::max(largest_normal_derivative, scale);
-        for (const auto &[dof, value] : by_dof)
-          {
-            const double exact = analytic(interface, frames, entry.first, entry.second, dof);
-            const double e1    = std::abs(value - exact) / scale;
-            const double e2    = std::abs(fine.at(entry).at(dof) - exact) / scale;
-            const double e3    = std::abs(tight.at(entry).at(dof) - exact) / scale;
-            const bool   inside =
-              std::find(node.dofs.begin(), node.dofs.end(), dof) != node.dofs.end();
-            complete = complete && (inside || std::abs(value - exact) < 1e-10 * scale);
-            small    = small && e3 < 1e-6;
-            worst    = std::max(worst, e3);
-            if (e1 > 1e-7)
-              second_order = second_order && e1 / e2 > 3.5 && e1 / e2 < 4.5;
-          }
-      }
+    const auto [small, second_order, complete, worst, largest] =
+      judge(interface, coarse, fine, tight,
+            [&](const unsigned int n, const Key &key, const types::global_dof_index dof) {
+              return analytic(interface, frames, n, key, dof);
+            });
+    const double largest_normal_derivative = largest.count(0) ? largest.at(0) : 0.;
     std::cout << dim << "D, Q" << degree << " on a mapping of degree " << mapping_degree << ": "
               << linear.size() << " paired slave nodes, " << interface.coupled_faces.size()
               << " coupled face pairs" << std::endl

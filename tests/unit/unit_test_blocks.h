@@ -50,4 +50,26 @@ make_stacked_blocks_3d(dealii::Triangulation<3> &tria)
   label_stacked_blocks(tria, 0.05);
 }
 
+/// The 2D blocks of the linearisation tests in @p tria, labelled: a 3 cell
+/// lower block on the unit square under a 2 cell upper block 0.05 above it
+/// (non-matching).
+inline void
+make_stacked_blocks(dealii::Triangulation<2> &tria)
+{
+  using dealii::Point;
+  dealii::Triangulation<2> lower, upper;
+  dealii::GridGenerator::subdivided_hyper_rectangle(lower, {3, 1}, Point<2>(0., 0.),
+                                                    Point<2>(1., 1.));
+  dealii::GridGenerator::subdivided_hyper_rectangle(upper, {2, 1}, Point<2>(0., 1.05),
+                                                    Point<2>(1., 2.05));
+  dealii::GridGenerator::merge_triangulations(lower, upper, tria);
+  label_stacked_blocks(tria, 0.05);
+}
+
+inline void
+make_stacked_blocks(dealii::Triangulation<3> &tria)
+{
+  make_stacked_blocks_3d(tria);
+}
+
 #endif

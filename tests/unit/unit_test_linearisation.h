@@ -9,7 +9,9 @@
 
 #include <contact_fem/contact/contact_interface.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <utility>
 #include <vector>
@@ -100,23 +102,28 @@ namespace unit_test_linearisation
     return result;
   }
 
-  /// Central differences at step @p h of every entry of values_of() along
+  /// Central differences by (node, key) and DoF.
+  using Differences =
+    std::map<std::pair<unsigned int, Key>, std::map<types::global_dof_index, double>>;
+
+  /// Central differences at step @p h of every entry of @p values (of the
+  /// interface updated to a configuration, and that configuration) along
   /// each of @p directions (positions in the interface vector @p u; @p
   /// conform moves the DoFs that follow a perturbed one), by entry and DoF;
   /// and whether every perturbed configuration found the face pairs @p
   /// coupled.
-  template <int dim, typename Conform>
-  std::pair<std::map<std::pair<unsigned int, Key>, std::map<types::global_dof_index, double>>, bool>
+  template <int dim, typename Conform, typename ValuesOf>
+  std::pair<Differences, bool>
   central_differences(const ContactInterface<dim>                              &interface,
                       const std::vector<double>                                &u,
                       const std::vector<unsigned int>                          &directions,
-                      const Frames<dim>                                        &frames,
                       const std::vector<std::pair<unsigned int, unsigned int>> &coupled,
                       const double                                              h,
-                      const Conform                                            &conform)
+                      const Conform                                            &conform,
+                      const ValuesOf                                           &values)
   {
-    std::map<std::pair<unsigned int, Key>, std::map<types::global_dof_index, double>> result;
-    bool same_pairs = true;
+    Differences result;
+    bool        same_pairs = true;
     for (const unsigned int i : directions)
       {
         std::array<Values, 2> at;
@@ -128,13 +135,87 @@ namespace unit_test_linearisation
             ContactInterface<dim> moved = interface;
             moved.update(v, 3.);
             same_pairs = same_pairs && moved.coupled_faces == coupled;
-            at[side]   = values_of(moved, v, frames);
+            at[side]   = values(moved, v);
           }
         for (const auto &[n, entries] : at[0])
           for (const auto &[key, value] : entries)
             result[{n, key}][interface.dofs()[i]] = (value - at[1][n][key]) / (2. * h);
       }
     return std::make_pair(result, same_pairs);
+  }
+
+  /// The same for the entries of values_of() in @p frames.
+  template <int dim, typename Conform>
+  std::pair<Differences, bool>
+  central_differences(const ContactInterface<dim>                              &interface,
+                      const std::vector<double>                                &u,
+                      const std::vector<unsigned int>                          &directions,
+                      const Frames<dim>                                        &frames,
+                      const std::vector<std::pair<unsigned int, unsigned int>> &coupled,
+                      const double                                              h,
+                      const Conform                                            &conform)
+  {
+    return central_differences(interface, u, directions, coupled, h, conform,
+                               [&](const ContactInterface<dim> &moved,
+                                   const std::vector<double>   &v) {
+                                 return values_of(moved, v, frames);
+                               });
+  }
+
+  /// How the differences at h (@p coarse), h / 2 (@p fine) and a small
+  /// step (@p tight) meet the analytic derivatives.
+  struct Verdict
+  {
+    /// At the small step, every error below 1e-6 of its entry's scale (the
+    /// node's largest derivative of that entry).
+    bool small = true;
+    /// Beyond round-off (error above 1e-7), the error falls by 4 from h to
+    /// h / 2.
+    bool second_order = true;
+    /// Outside the node's patch the differences vanish (no coupling
+    /// missed).
+    bool   complete = true;
+    double worst    = 0.;
+    /// The largest scale of each kind of entry.
+    std::map<int, double> largest;
+  };
+
+  /// The verdict on the differences of the linearised nodes of @p
+  /// interface against @p analytic(node, key, dof).
+  template <int dim, typename Analytic>
+  Verdict
+  judge(const ContactInterface<dim> &interface,
+        const Differences           &coarse,
+        const Differences           &fine,
+        const Differences           &tight,
+        const Analytic              &analytic)
+  {
+    Verdict verdict;
+    for (const auto &[entry, by_dof] : coarse)
+      {
+        const auto &node  = interface.linearised_nodes.at(entry.first);
+        double      scale = 0.;
+        for (const auto &[dof, value] : by_dof)
+          scale = std::max(scale, std::abs(analytic(entry.first, entry.second, dof)));
+        double &largest = verdict.largest[entry.second.first];
+        largest         = std::max(largest, scale);
+        for (const auto &[dof, value] : by_dof)
+          {
+            const double exact = analytic(entry.first, entry.second, dof);
+            const double e1    = std::abs(value - exact) / scale;
+            const double e2    = std::abs(fine.at(entry).at(dof) - exact) / scale;
+            const double e3    = std::abs(tight.at(entry).at(dof) - exact) / scale;
+            const bool   inside =
+              std::find(node.dofs.begin(), node.dofs.end(), dof) != node.dofs.end();
+            verdict.complete =
+              verdict.complete && (inside || std::abs(value - exact) < 1e-10 * scale);
+            verdict.small = verdict.small && e3 < 1e-6;
+            verdict.worst = std::max(verdict.worst, e3);
+            if (e1 > 1e-7)
+              verdict.second_order = verdict.second_order && e1 / e2 > 3.5 && e1 / e2 < 4.5;
+          }
+      }
+    return verdict;
   }
 
 } // namespace unit_test_linearisation

@@ -16,6 +16,7 @@
 #include <contact_fem/contact/formulations/contact_formulation.h>
 
 #include "unit_test_random.h"
+#include "unit_test_stacked_interface.h"
 
 #include <algorithm>
 #include <cmath>
@@ -125,6 +126,63 @@ namespace unit_test_penalty_frictional
       }
     std::cout << "the same stick/slip sets at every perturbed iterate: " << (same ? "yes" : "no")
               << std::endl;
+  }
+
+  /// The two load steps of the current-kinematics tangent tests on the
+  /// stacked blocks (penalty_frictional_linearisation_01 and _03), then
+  /// check_tangent() at the second step's iterate. The slave top is bent
+  /// down and the master base up by @p sag r^2 (r from the centre of the
+  /// unit square; 0 keeps them flat). Step 1 lowers the master by @p drop
+  /// and slides the slave nodes by up to 1e-3 (they stick: the history
+  /// traction is not zero); step 2 slides them by up to 0.006 per component
+  /// and moves every interface DoF by up to 2e-3, so that some stick and
+  /// some slip. The operators and their linearisation follow every iterate,
+  /// as the driver's search does.
+  inline void
+  check_current_two_steps(const double sag, const double drop)
+  {
+    using namespace contact_fem;
+    StackedBlocksInterface blocks(1);
+    auto                  &interface = blocks.interface;
+    const unsigned int     n         = interface.dofs().size();
+    Random                 random(29);
+    std::vector<double>    u_1(n, 0.), u_2(n, 0.);
+    for (const auto &node : interface.nodes)
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          const unsigned int i = interface.position(node.dofs[d]);
+          const double       bend =
+            sag * (std::pow(node.reference[0] - 0.5, 2) + std::pow(node.reference[1] - 0.5, 2));
+          if (node.slave)
+            {
+              u_1[i] = d < 2 ? 1e-3 * random.next() : -bend;
+              u_2[i] = u_1[i] + (d < 2 ? 0.006 * random.next() : 0.);
+            }
+          else
+            u_1[i] = u_2[i] = d == 2 ? -drop + bend : 0.;
+          u_2[i] += 2e-3 * random.next();
+        }
+
+    const auto follow = [&](const std::vector<double> &u) {
+      interface.update(u, 3.);
+      interface.linearise(true);
+    };
+    auto contact = make_formulation("current");
+    follow(std::vector<double>(n, 0.));
+    contact->initialize(interface);
+    contact->start_load_step(interface, std::vector<double>(n, 0.), StepStart::continued);
+    follow(u_1);
+    contact->update_active_set(interface, u_1);
+    std::cout << "step 1: " << sets_text(*contact) << std::endl;
+    contact->accept_load_step(interface, u_1);
+    contact->start_load_step(interface, u_1, StepStart::continued);
+    follow(u_2);
+    // The step's first update keeps the stick nodes sticking (current
+    // kinematics: it sees the predictor); the second decides.
+    contact->update_active_set(interface, u_2);
+    contact->update_active_set(interface, u_2);
+    std::cout << "step 2: " << sets_text(*contact) << std::endl;
+    check_tangent(*contact, interface, blocks.dof_handler.n_dofs(), u_2, random, follow);
   }
 } // namespace unit_test_penalty_frictional
 

@@ -1,5 +1,5 @@
-// The contact interface of make_stacked_blocks_3d() (unit_test_blocks.h):
-// Q<degree> on a mapping of the same degree, the lower block's top (id 3)
+// The contact interface of make_stacked_blocks() (unit_test_blocks.h):
+// Q<degree> on a mapping of degree mapping_degree, the lower block's top (id 3)
 // the slave, the upper block's base (id 4) the master, E = 100 and 200,
 // nu = 0.3, no constraints. The members keep what the interface points to
 // alive for the test's run.
@@ -20,14 +20,15 @@
 #include "unit_test_blocks.h"
 #include "unit_test_materials.h"
 
-struct StackedBlocksInterface
+template <int dim>
+struct StackedInterface
 {
-  explicit StackedBlocksInterface(const unsigned int degree)
-    : fe(dealii::FE_Q<3>(degree), 3)
-    , mapping(degree)
-    , materials(make_materials<3>("1, 2", "100, 200", "0.3, 0.3"))
+  StackedInterface(const unsigned int degree, const unsigned int mapping_degree)
+    : fe(dealii::FE_Q<dim>(degree), dim)
+    , mapping(mapping_degree)
+    , materials(make_materials<dim>("1, 2", "100, 200", "0.3, 0.3"))
   {
-    make_stacked_blocks_3d(tria);
+    make_stacked_blocks(tria);
     dof_handler.reinit(tria);
     dof_handler.distribute_dofs(fe);
     none.close();
@@ -35,13 +36,21 @@ struct StackedBlocksInterface
                          materials, MPI_COMM_WORLD);
   }
 
-  dealii::Triangulation<3>          tria;
-  dealii::FESystem<3>               fe;
-  dealii::DoFHandler<3>             dof_handler;
-  dealii::MappingQ<3>               mapping;
-  contact_fem::Materials<3>         materials;
-  dealii::AffineConstraints<double> none;
-  contact_fem::ContactInterface<3>  interface;
+  dealii::Triangulation<dim>         tria;
+  dealii::FESystem<dim>              fe;
+  dealii::DoFHandler<dim>            dof_handler;
+  dealii::MappingQ<dim>              mapping;
+  contact_fem::Materials<dim>        materials;
+  dealii::AffineConstraints<double>  none;
+  contact_fem::ContactInterface<dim> interface;
+};
+
+/// The 3D blocks, Q<degree> on a mapping of the same degree.
+struct StackedBlocksInterface : StackedInterface<3>
+{
+  explicit StackedBlocksInterface(const unsigned int degree)
+    : StackedInterface<3>(degree, degree)
+  {}
 };
 
 #endif
