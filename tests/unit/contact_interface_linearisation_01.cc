@@ -126,26 +126,16 @@ namespace
     const auto [coarse, coarse_pairs] = differences(1e-3);
     const auto [fine, fine_pairs]     = differences(5e-4);
     const auto [tight, tight_pairs]   = differences(1e-5);
-    const auto [small, second_order, complete, worst, largest] =
+    const Verdict verdict =
       judge(interface, coarse, fine, tight,
             [&](const unsigned int n, const Key &key, const types::global_dof_index dof) {
               return analytic(interface, frames, n, key, dof);
             });
     std::cout << dim << "D, Q" << degree << " on a mapping of degree " << mapping_degree << ": "
               << linear.size() << " paired slave nodes, " << interface.coupled_faces.size()
-              << " coupled face pairs" << std::endl
-              << "  same face pairs at every perturbed configuration: "
-              << (coarse_pairs && fine_pairs && tight_pairs ? "yes" : "no") << std::endl
-              << "  dG/du, dD/du, df/du, dh/du, dn/du and d(D x - M x)/du against central "
-                 "differences, error below 1e-6 of the "
-                 "node's largest derivative: "
-              << (small ? "yes" : "no") << std::endl
-              << "  error falling at second order (or round-off): " << (second_order ? "yes" : "no")
-              << std::endl
-              << "  no coupling outside the node's patch: " << (complete ? "yes" : "no")
-              << std::endl;
-    if (!small)
-      std::cout << "  largest error " << worst << std::endl;
+              << " coupled face pairs" << std::endl;
+    verdict.print(coarse_pairs && fine_pairs && tight_pairs,
+                  "dG/du, dD/du, df/du, dh/du, dn/du and d(D x - M x)/du");
   }
 } // namespace
 

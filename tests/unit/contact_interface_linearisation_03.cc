@@ -158,31 +158,21 @@ namespace
     const auto [coarse, coarse_pairs] = differences(1e-3);
     const auto [fine, fine_pairs]     = differences(5e-4);
     const auto [tight, tight_pairs]   = differences(3e-6);
-    const auto [small, second_order, complete, worst, largest] =
+    const Verdict verdict =
       judge(interface, coarse, fine, tight,
             [&](const unsigned int n, const Key &key, const types::global_dof_index dof) {
               return analytic(interface, frames, n, key, dof);
             });
-    const double largest_normal_derivative = largest.count(0) ? largest.at(0) : 0.;
+    const double largest_normal_derivative = verdict.largest.count(0) ? verdict.largest.at(0) : 0.;
     std::cout << dim << "D, Q" << degree << " on a mapping of degree " << mapping_degree << ": "
               << linear.size() << " paired slave nodes, " << interface.coupled_faces.size()
               << " coupled face pairs" << std::endl
               << "  largest angle between slave and interface normal above 0.05 rad: "
               << (largest_angle > 0.05 ? "yes" : "no") << std::endl
               << "  d n_int/du not zero (largest above 0.1): "
-              << (largest_normal_derivative > 0.1 ? "yes" : "no") << std::endl
-              << "  same face pairs at every perturbed configuration: "
-              << (coarse_pairs && fine_pairs && tight_pairs ? "yes" : "no") << std::endl
-              << "  d n_int/du, d(-D n_int, M n_int)/du and the held traction's force along "
-                 "n_int against central differences, error below 1e-6 of the node's largest "
-                 "derivative: "
-              << (small ? "yes" : "no") << std::endl
-              << "  error falling at second order (or round-off): " << (second_order ? "yes" : "no")
-              << std::endl
-              << "  no coupling outside the node's patch: " << (complete ? "yes" : "no")
-              << std::endl;
-    if (!small)
-      std::cout << "  largest error " << worst << std::endl;
+              << (largest_normal_derivative > 0.1 ? "yes" : "no") << std::endl;
+    verdict.print(coarse_pairs && fine_pairs && tight_pairs,
+                  "d n_int/du, d(-D n_int, M n_int)/du and the held traction's force along n_int");
   }
 } // namespace
 

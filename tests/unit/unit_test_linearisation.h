@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iostream>
+#include <string>
 #include <map>
 #include <utility>
 #include <vector>
@@ -178,6 +180,28 @@ namespace unit_test_linearisation
     double worst    = 0.;
     /// The largest scale of each kind of entry.
     std::map<int, double> largest;
+
+    /// The verdict's lines, with whether every perturbed configuration
+    /// kept the face pairs (@p same_pairs) and what was differenced (@p
+    /// what).
+    void
+    print(const bool same_pairs, const std::string &what) const
+    {
+      const auto yes = [](const bool b) {
+        return b ? "yes" : "no";
+      };
+      std::cout << "  same face pairs at every perturbed configuration: " << yes(same_pairs)
+                << std::endl
+                << "  " << what
+                << " against central differences, error below 1e-6 of the node's largest "
+                   "derivative: "
+                << yes(small) << std::endl
+                << "  error falling at second order (or round-off): " << yes(second_order)
+                << std::endl
+                << "  no coupling outside the node's patch: " << yes(complete) << std::endl;
+      if (!small)
+        std::cout << "  largest error " << worst << std::endl;
+    }
   };
 
   /// The verdict on the differences of the linearised nodes of @p
