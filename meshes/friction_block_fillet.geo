@@ -13,7 +13,7 @@
 // mesh). The fillet shares boundary id 4 with the flat top (a pair has one
 // master id), so it cannot carry a circle manifold (Geometry/Manifolds
 // takes whole boundary ids): the arc is its n chords, and the scene is run
-// without refinement. doc/finite_strain.md, "The slip front ...: a rounded
+// without refinement. doc/finite_strain.md, "The slip front: a rounded
 // master corner".
 // Physical names: surfaces "upper" (1), "lower" (2); curves "upper top"
 // (1), "lower base" (2), "upper bottom" (3, the slave), "lower top" (4, the

@@ -8,8 +8,8 @@ finite_strain_spr_friction_adaptive_01 (Coulomb mu = 0.3, alm frictional,
 current kinematics, the slave's top pulled 0.8 along x from t = 1 to 3)
 on a master whose leading corner is a fillet of radius R = 0.5 about
 (3.5, 0.5). With the square corner the run stops at t = 2.66: the slave's
-leading end cannot pass the corner (doc/finite_strain.md, "The slip front
-...: a rounded master corner"). Over the fillet:
+leading end cannot pass the corner (doc/finite_strain.md, "The slip
+front: a rounded master corner"). Over the fillet:
 
 - every one of the 12 load steps converges without a split, to t = 3;
 - at every step the pair's force balances the reaction on the pulled top
