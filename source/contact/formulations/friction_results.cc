@@ -20,6 +20,15 @@ namespace contact_fem
     // tractions (on the slave) times D_j, also given by its components.
     double         normal = 0., tangential = 0., t_max = 0., slip_max = 0., length = 0.;
     Tensor<1, dim> force, tangential_force;
+    // 3D: the part of tangential_force along the component a support fixes
+    // at the nodes it holds in one direction only (a roller on a symmetry
+    // plane). It pushes the slave node against its support and the master
+    // across the plane: by mirror symmetry the contact traction of the
+    // whole body has none. "alm frictional" keeps its stick nodes' gap
+    // force along the slave normal, whose one-sided average tilts off the
+    // plane by ~h / 2R; "penalty frictional" has none (doc/design.md,
+    // "Kinematics = updated").
+    Tensor<1, dim> held_force;
     for (const auto &s : interface.slave_nodes)
       if (s.paired && contact.is_active(s.node))
         {
@@ -29,6 +38,8 @@ namespace contact_fem
           normal += s.D * contact.normal_pressure(s.node);
           tangential += s.D * t;
           tangential_force += s.D * t_vector;
+          if (const unsigned int f = partly_held_component<dim>(interface.nodes[s.node]); f < dim)
+            held_force[f] += s.D * t_vector[f];
           length += s.D;
           force -= s.D * lambda;
           t_max    = std::max(t_max, std::abs(t));
@@ -49,6 +60,10 @@ namespace contact_fem
         for (unsigned int d = 0; d < dim; ++d)
           tangential_components.push(tangential_force[d]);
         result.set("tangential_contact_force_components", tangential_components);
+        Json held_components = Json::array();
+        for (unsigned int d = 0; d < dim; ++d)
+          held_components.push(held_force[d]);
+        result.set("held_tangential_force_components", held_components);
       }
     result.set("total_normal_contact_force", normal)
       .set("total_tangential_contact_force", tangential)
