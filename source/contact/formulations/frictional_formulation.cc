@@ -20,6 +20,8 @@ namespace contact_fem
     slip_history.initialize(n);
     converged_displacement.assign(interface.dofs().size(), 0.);
     last_stick_slip_changes = 0;
+    stick_count             = 0;
+    slip_count              = 0;
     converged_operators.assign(n, Operators());
   }
 
@@ -63,17 +65,31 @@ namespace contact_fem
   }
 
   template <int dim, class NormalPart>
-  unsigned int
-  FrictionalFormulation<dim, NormalPart>::n_stick() const
+  std::vector<unsigned int>
+  FrictionalFormulation<dim, NormalPart>::count_owned_rows(
+    const ContactInterface<dim> &interface) const
   {
-    return sets.n_stick(this->active);
+    std::vector<unsigned int> counts = NormalPart::count_owned_rows(interface);
+    unsigned int              stick = 0, slip = 0;
+    for (const auto &s : interface.slave_nodes)
+      if (interface.owns_row(s))
+        {
+          stick += sets.sticks(s.node, this->active);
+          slip += sets.slips(s.node, this->active);
+        }
+    counts.push_back(stick);
+    counts.push_back(slip);
+    return counts;
   }
 
   template <int dim, class NormalPart>
-  unsigned int
-  FrictionalFormulation<dim, NormalPart>::n_slip() const
+  void
+  FrictionalFormulation<dim, NormalPart>::take_counts(
+    std::vector<unsigned int>::const_iterator &next)
   {
-    return sets.n_slip(this->active);
+    NormalPart::take_counts(next);
+    stick_count = *next++;
+    slip_count  = *next++;
   }
 
   template <int dim, class NormalPart>
