@@ -1004,11 +1004,10 @@ namespace contact_fem
   AlmFrictional<dim>::accept_load_step(const ContactInterface<dim> &interface,
                                        const std::vector<double>   &u)
   {
-    std::fill(last_step_slip.begin(), last_step_slip.end(), TangentialVector<dim>());
-    for (const auto &s : interface.slave_nodes)
-      if (s.paired)
-        last_step_slip[s.node] = slip_increment(interface, s, u);
-    slip_history.add(interface, *this, last_step_slip);
+    this->accept_slip(interface, [&](const SlaveNode &s) {
+      return slip_increment(interface, s, u);
+    });
+    // On every rank: the stick lines of the ghosts read it.
     converged_displacement = u;
     if (current)
       this->keep_operators(interface);

@@ -171,7 +171,7 @@ namespace contact_fem
     const ContactInterface<dim> &interface)
   {
     for (const auto &s : interface.slave_nodes)
-      if (s.paired && converged_operators[s.node].M.empty())
+      if (s.paired && interface.owns_row(s) && converged_operators[s.node].M.empty())
         converged_operators[s.node] = Operators{s.D, s.M};
   }
 
@@ -180,7 +180,47 @@ namespace contact_fem
   FrictionalFormulation<dim, NormalPart>::keep_operators(const ContactInterface<dim> &interface)
   {
     for (const auto &s : interface.slave_nodes)
-      converged_operators[s.node] = s.paired ? Operators{s.D, s.M} : Operators();
+      if (interface.owns_row(s))
+        converged_operators[s.node] = s.paired ? Operators{s.D, s.M} : Operators();
+  }
+
+  template <int dim, class NormalPart>
+  void
+  FrictionalFormulation<dim, NormalPart>::accept_slip(
+    const ContactInterface<dim>                                   &interface,
+    const std::function<TangentialVector<dim>(const SlaveNode &)> &slip)
+  {
+    std::fill(last_step_slip.begin(), last_step_slip.end(), TangentialVector<dim>());
+    for (const auto &s : interface.slave_nodes)
+      if (s.paired && interface.owns_row(s))
+        last_step_slip[s.node] = slip(s);
+    slip_history.add(interface, *this, last_step_slip);
+    if (Utilities::MPI::n_mpi_processes(interface.communicator()) == 1)
+      return;
+    // The components as fields of doubles: the step's slip (dim - 1), the
+    // path length, the accumulated displacement (dim).
+    const unsigned int               n = interface.nodes.size();
+    std::vector<std::vector<double>> values(2 * dim, std::vector<double>(n));
+    for (unsigned int node = 0; node < n; ++node)
+      {
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          values[k][node] = last_step_slip[node][k];
+        values[dim - 1][node] = slip_history.length[node];
+        for (unsigned int d = 0; d < dim; ++d)
+          values[dim + d][node] = slip_history.displacement[node][d];
+      }
+    std::vector<std::vector<double> *> fields;
+    for (auto &field : values)
+      fields.push_back(&field);
+    interface.share_node_values(fields, fields.size());
+    for (unsigned int node = 0; node < n; ++node)
+      {
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          last_step_slip[node][k] = values[k][node];
+        slip_history.length[node] = values[dim - 1][node];
+        for (unsigned int d = 0; d < dim; ++d)
+          slip_history.displacement[node][d] = values[dim + d][node];
+      }
   }
 
   template <int dim, class NormalPart>

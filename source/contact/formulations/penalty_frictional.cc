@@ -668,18 +668,21 @@ namespace contact_fem
   PenaltyFrictional<dim>::accept_load_step(const ContactInterface<dim> &interface,
                                            const std::vector<double>   &u)
   {
-    last_step_slip.assign(interface.nodes.size(), TangentialVector<dim>());
-    for (const auto &s : interface.slave_nodes)
-      if (s.paired)
-        last_step_slip[s.node] = slip_increment(interface, s, u);
-    slip_history.add(interface, *this, last_step_slip);
+    this->accept_slip(interface, [&](const SlaveNode &s) {
+      return slip_increment(interface, s, u);
+    });
     converged_displacement = u;
-    accepted_tangential    = tangential;
+    // The history of the trial traction: read only by the owner of the row.
+    for (const auto &s : interface.slave_nodes)
+      if (interface.owns_row(s))
+        accepted_tangential[s.node] = tangential[s.node];
     if (this->current)
       {
         this->keep_operators(interface);
         for (const auto &s : interface.slave_nodes)
           {
+            if (!interface.owns_row(s))
+              continue;
             accepted_traction[s.node] = to_global(tangential[s.node], frame_normal(s));
             accepted_normal[s.node]   = frame_normal(s);
             if (dim == 3)

@@ -167,10 +167,23 @@ namespace contact_fem
     void
     keep_operators_of_new_pairs(const ContactInterface<dim> &interface);
 
-    /// Current kinematics, when a step is accepted: every slave node's
-    /// operators become the reference of the objective slip.
+    /// Current kinematics, when a step is accepted: the operators of the
+    /// slave nodes whose rows this rank owns become the reference of their
+    /// objective slip (only their owner reads it).
     void
     keep_operators(const ContactInterface<dim> &interface);
+
+    /**
+     * When a step is accepted: the slip of the step (@p slip of each
+     * paired node) and the slip history of the nodes whose rows this rank
+     * owns, then shared with the other ranks as share_node_values() shares
+     * the decisions (every value a key value: the nodes that ever slipped
+     * all-gathered), for the readers of the whole interface (the results,
+     * the nodal fields). Collective.
+     */
+    void
+    accept_slip(const ContactInterface<dim>                                   &interface,
+                const std::function<TangentialVector<dim>(const SlaveNode &)> &slip);
 
     /**
      * After the owners of the rows decided their nodes (ContactInterface::
