@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/contact/formulations/contact_formulation.h>
 #include <contact_fem/core/format.h>
@@ -19,23 +21,38 @@ namespace contact_fem
     const ContactInterface<dim>   &interface = state.interface;
     const ContactFormulation<dim> &contact   = state.contact;
     const auto [n_slave, n_hanging]          = interface.count_slave_nodes();
-    unsigned int n_active                    = 0;
-    double       p_max = 0., p_min = std::numeric_limits<double>::max(), size_sum = 0.;
+    // Each rank the active nodes whose rows it owns; the count, the
+    // extremes and the sizes' sum (terms > 0, in node order) reduced
+    // exactly, so every rank gets the serial values.
+    unsigned int n_active = 0;
+    double       p_max = 0., p_min = std::numeric_limits<double>::max();
     double       gap_max = 0.;
     double       x_min = std::numeric_limits<double>::max(), x_max = -x_min;
-    for (const auto &s : interface.slave_nodes)
-      if (s.paired && contact.is_active(s.node))
+    std::vector<std::pair<unsigned int, double>> sizes;
+    for (unsigned int k = 0; k < interface.slave_nodes.size(); ++k)
+      if (const auto &s = interface.slave_nodes[k];
+          s.paired && interface.owns_row(s) && contact.is_active(s.node))
         {
           ++n_active;
           p_max   = std::max(p_max, contact.normal_pressure(s.node));
           p_min   = std::min(p_min, contact.normal_pressure(s.node));
           gap_max = std::max(gap_max, std::abs(interface.gap(s, state.displacement)) / s.size);
-          size_sum += s.size;
+          sizes.emplace_back(k, s.size);
           const double x = state.position(s.node)[0];
           x_min          = std::min(x_min, x);
           x_max          = std::max(x_max, x);
         }
-    Json result = Json::object();
+    const MPI_Comm comm = interface.communicator();
+    n_active            = Utilities::MPI::sum(n_active, comm);
+    double largest[5]   = {p_max, -p_min, gap_max, -x_min, x_max};
+    Utilities::MPI::max(largest, comm, largest);
+    p_max                 = largest[0];
+    p_min                 = -largest[1];
+    gap_max               = largest[2];
+    x_min                 = -largest[3];
+    x_max                 = largest[4];
+    const double size_sum = interface.sum_in_node_order(sizes);
+    Json         result   = Json::object();
     result.set("slave_nodes", n_slave)
       .set("hanging_slave_vertices", n_hanging)
       .set("active_slave_nodes", n_active)

@@ -213,8 +213,9 @@ namespace contact_fem
   }
 
   template <int dim>
-  void
-  AlmFrictional<dim>::note_pressure_dependent_slip(const ContactInterface<dim> &interface)
+  bool
+  AlmFrictional<dim>::slips_dependent_on_pressure(const ContactInterface<dim> &interface,
+                                                  const SlaveNode             &s) const
   {
     // Only mu = 0 (w = tau, frame = slave normal) may use the symmetric
     // assembly: its test space is the trial space. Under Tresca the trial
@@ -223,12 +224,29 @@ namespace contact_fem
     // t = T + p tan(angle between them) on curved pairs, which the residual
     // never accepts (2D Tresca on prm/hertz_frictional.prm stalled). In 3D
     // the test plane also carries the cone term (assemble()).
-    pressure_dependent_slip = false;
+    return sets.slips(s.node, this->active) && carries_friction(interface, s) &&
+           (laws[s.pair]->threshold_derivative(this->pressure[s.node]) != 0. ||
+            (!frictionless_law(s)));
+  }
+
+  template <int dim>
+  std::vector<unsigned int>
+  AlmFrictional<dim>::count_owned_rows(const ContactInterface<dim> &interface) const
+  {
+    std::vector<unsigned int> counts = Base::count_owned_rows(interface);
+    unsigned int              n      = 0;
     for (const auto &s : interface.slave_nodes)
-      if (sets.slips(s.node, this->active) && carries_friction(interface, s) &&
-          (laws[s.pair]->threshold_derivative(this->pressure[s.node]) != 0. ||
-           (!frictionless_law(s))))
-        pressure_dependent_slip = true;
+      n += interface.owns_row(s) && slips_dependent_on_pressure(interface, s);
+    counts.push_back(n);
+    return counts;
+  }
+
+  template <int dim>
+  void
+  AlmFrictional<dim>::take_counts(std::vector<unsigned int>::const_iterator &next)
+  {
+    Base::take_counts(next);
+    pressure_dependent_slip = *next++ > 0;
   }
 
   template <int dim>
@@ -281,7 +299,7 @@ namespace contact_fem
     for (unsigned int n = 0; n < interface.nodes.size(); ++n)
       if (!interface.nodes[n].slave)
         sets.direction[n] = TangentialVector<dim>();
-    note_pressure_dependent_slip(interface);
+    this->reduce_counts(interface, {});
   }
 
   template <int dim>
@@ -912,11 +930,9 @@ namespace contact_fem
           }
       }
     share_decisions(interface);
-    note_pressure_dependent_slip(interface);
-    unsigned int counts[2] = {changes, last_stick_slip_changes};
-    Utilities::MPI::sum(counts, interface.communicator(), counts);
-    last_stick_slip_changes = counts[1];
-    return counts[0];
+    const auto sums         = this->reduce_counts(interface, {changes, last_stick_slip_changes});
+    last_stick_slip_changes = sums[1];
+    return sums[0];
   }
 
   template <int dim>
@@ -988,11 +1004,10 @@ namespace contact_fem
   AlmFrictional<dim>::accept_load_step(const ContactInterface<dim> &interface,
                                        const std::vector<double>   &u)
   {
-    std::fill(last_step_slip.begin(), last_step_slip.end(), TangentialVector<dim>());
-    for (const auto &s : interface.slave_nodes)
-      if (s.paired)
-        last_step_slip[s.node] = slip_increment(interface, s, u);
-    slip_history.add(interface, *this, last_step_slip);
+    this->accept_slip(interface, [&](const SlaveNode &s) {
+      return slip_increment(interface, s, u);
+    });
+    // On every rank: the stick lines of the ghosts read it.
     converged_displacement = u;
     if (current)
       this->keep_operators(interface);
@@ -1054,14 +1069,17 @@ namespace contact_fem
   std::unique_ptr<typename AlmFrictional<dim>::State>
   AlmFrictional<dim>::save_state() const
   {
-    auto state                    = std::make_unique<FrictionState>();
-    state->normal                 = FrictionlessFormulation<dim>::save_state();
-    state->tangential             = tangential;
-    state->converged_displacement = converged_displacement;
-    state->slip_history           = slip_history;
-    state->last_step_slip         = last_step_slip;
-    state->sets                   = sets;
-    state->converged_operators    = converged_operators;
+    auto state                     = std::make_unique<FrictionState>();
+    state->normal                  = FrictionlessFormulation<dim>::save_state();
+    state->tangential              = tangential;
+    state->converged_displacement  = converged_displacement;
+    state->slip_history            = slip_history;
+    state->last_step_slip          = last_step_slip;
+    state->sets                    = sets;
+    state->converged_operators     = converged_operators;
+    state->stick_count             = this->stick_count;
+    state->slip_count              = this->slip_count;
+    state->pressure_dependent_slip = pressure_dependent_slip;
     return state;
   }
 
@@ -1071,12 +1089,15 @@ namespace contact_fem
   {
     const auto &saved = dynamic_cast<const FrictionState &>(state);
     FrictionlessFormulation<dim>::restore_state(*saved.normal);
-    tangential             = saved.tangential;
-    converged_displacement = saved.converged_displacement;
-    slip_history           = saved.slip_history;
-    last_step_slip         = saved.last_step_slip;
-    sets                   = saved.sets;
-    converged_operators    = saved.converged_operators;
+    tangential              = saved.tangential;
+    converged_displacement  = saved.converged_displacement;
+    slip_history            = saved.slip_history;
+    last_step_slip          = saved.last_step_slip;
+    sets                    = saved.sets;
+    converged_operators     = saved.converged_operators;
+    this->stick_count       = saved.stick_count;
+    this->slip_count        = saved.slip_count;
+    pressure_dependent_slip = saved.pressure_dependent_slip;
   }
 
   template <int dim>

@@ -74,6 +74,7 @@ namespace contact_fem
       }
     this->share_states(interface, {&released_pressure});
     this->deactivate_master_nodes(interface);
+    this->reduce_counts(interface, {});
   }
 
   template <int dim>
@@ -179,7 +180,7 @@ namespace contact_fem
         active[s.node] = now_active;
       }
     this->share_states(interface, {&released_pressure});
-    return Utilities::MPI::sum(changes, interface.communicator());
+    return this->reduce_counts(interface, {changes})[0];
   }
 
   template <int dim>

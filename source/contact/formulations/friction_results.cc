@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <contact_fem/contact/formulations/friction_results.h>
 #include <contact_fem/core/format.h>
 
@@ -18,7 +20,12 @@ namespace contact_fem
     // the master, split along each node's own normal and tangent (2D); in
     // 3D the tangential force is the length of the sum of the tangential
     // tractions (on the slave) times D_j, also given by its components.
-    double         normal = 0., tangential = 0., t_max = 0., slip_max = 0., length = 0.;
+    // The signed sums in node order over the shared state of the whole
+    // interface, on every rank (an MPI sum would change their last bits);
+    // the maxima and the active length (a sum of D_j > 0, which
+    // sum_in_node_order() adds in node order) over the rows this rank owns,
+    // reduced exactly.
+    double         normal = 0., tangential = 0., t_max = 0., slip_max = 0.;
     Tensor<1, dim> force, tangential_force;
     // 3D: the part of tangential_force along the component a support fixes
     // at the nodes it holds in one direction only (a roller on a symmetry
@@ -28,9 +35,10 @@ namespace contact_fem
     // force along the slave normal, whose one-sided average tilts off the
     // plane by ~h / 2R; "penalty frictional" has none (doc/design.md,
     // "Kinematics = updated").
-    Tensor<1, dim> held_force;
-    for (const auto &s : interface.slave_nodes)
-      if (s.paired && contact.is_active(s.node))
+    Tensor<1, dim>                               held_force;
+    std::vector<std::pair<unsigned int, double>> lengths;
+    for (unsigned int k = 0; k < interface.slave_nodes.size(); ++k)
+      if (const auto &s = interface.slave_nodes[k]; s.paired && contact.is_active(s.node))
         {
           const Tensor<1, dim> lambda   = contact.traction(s);
           const Tensor<1, dim> t_vector = tangential_traction_vector(contact, s);
@@ -40,16 +48,24 @@ namespace contact_fem
           tangential_force += s.D * t_vector;
           if (const unsigned int f = partly_held_component<dim>(interface.nodes[s.node]); f < dim)
             held_force[f] += s.D * t_vector[f];
-          length += s.D;
           force -= s.D * lambda;
+          if (!interface.owns_row(s))
+            continue;
+          lengths.emplace_back(k, s.D);
           t_max    = std::max(t_max, std::abs(t));
           slip_max = std::max(slip_max, magnitude<dim>(accepted_slip[s.node]));
         }
+    const double length = interface.sum_in_node_order(lengths);
     // Over every paired node: one that slid out of contact keeps its slip.
     double accumulated_max = 0.;
     for (const auto &s : interface.slave_nodes)
-      if (s.paired)
+      if (s.paired && interface.owns_row(s))
         accumulated_max = std::max(accumulated_max, history.length[s.node]);
+    double largest[3] = {t_max, slip_max, accumulated_max};
+    Utilities::MPI::max(largest, interface.communicator(), largest);
+    t_max           = largest[0];
+    slip_max        = largest[1];
+    accumulated_max = largest[2];
     Json components = Json::array();
     for (unsigned int d = 0; d < dim; ++d)
       components.push(force[d]);

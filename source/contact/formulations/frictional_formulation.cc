@@ -20,6 +20,8 @@ namespace contact_fem
     slip_history.initialize(n);
     converged_displacement.assign(interface.dofs().size(), 0.);
     last_stick_slip_changes = 0;
+    stick_count             = 0;
+    slip_count              = 0;
     converged_operators.assign(n, Operators());
   }
 
@@ -63,17 +65,31 @@ namespace contact_fem
   }
 
   template <int dim, class NormalPart>
-  unsigned int
-  FrictionalFormulation<dim, NormalPart>::n_stick() const
+  std::vector<unsigned int>
+  FrictionalFormulation<dim, NormalPart>::count_owned_rows(
+    const ContactInterface<dim> &interface) const
   {
-    return sets.n_stick(this->active);
+    std::vector<unsigned int> counts = NormalPart::count_owned_rows(interface);
+    unsigned int              stick = 0, slip = 0;
+    for (const auto &s : interface.slave_nodes)
+      if (interface.owns_row(s))
+        {
+          stick += sets.sticks(s.node, this->active);
+          slip += sets.slips(s.node, this->active);
+        }
+    counts.push_back(stick);
+    counts.push_back(slip);
+    return counts;
   }
 
   template <int dim, class NormalPart>
-  unsigned int
-  FrictionalFormulation<dim, NormalPart>::n_slip() const
+  void
+  FrictionalFormulation<dim, NormalPart>::take_counts(
+    std::vector<unsigned int>::const_iterator &next)
   {
-    return sets.n_slip(this->active);
+    NormalPart::take_counts(next);
+    stick_count = *next++;
+    slip_count  = *next++;
   }
 
   template <int dim, class NormalPart>
@@ -155,7 +171,7 @@ namespace contact_fem
     const ContactInterface<dim> &interface)
   {
     for (const auto &s : interface.slave_nodes)
-      if (s.paired && converged_operators[s.node].M.empty())
+      if (s.paired && interface.owns_row(s) && converged_operators[s.node].M.empty())
         converged_operators[s.node] = Operators{s.D, s.M};
   }
 
@@ -164,7 +180,47 @@ namespace contact_fem
   FrictionalFormulation<dim, NormalPart>::keep_operators(const ContactInterface<dim> &interface)
   {
     for (const auto &s : interface.slave_nodes)
-      converged_operators[s.node] = s.paired ? Operators{s.D, s.M} : Operators();
+      if (interface.owns_row(s))
+        converged_operators[s.node] = s.paired ? Operators{s.D, s.M} : Operators();
+  }
+
+  template <int dim, class NormalPart>
+  void
+  FrictionalFormulation<dim, NormalPart>::accept_slip(
+    const ContactInterface<dim>                                   &interface,
+    const std::function<TangentialVector<dim>(const SlaveNode &)> &slip)
+  {
+    std::fill(last_step_slip.begin(), last_step_slip.end(), TangentialVector<dim>());
+    for (const auto &s : interface.slave_nodes)
+      if (s.paired && interface.owns_row(s))
+        last_step_slip[s.node] = slip(s);
+    slip_history.add(interface, *this, last_step_slip);
+    if (Utilities::MPI::n_mpi_processes(interface.communicator()) == 1)
+      return;
+    // The components as fields of doubles: the step's slip (dim - 1), the
+    // path length, the accumulated displacement (dim).
+    const unsigned int               n = interface.nodes.size();
+    std::vector<std::vector<double>> values(2 * dim, std::vector<double>(n));
+    for (unsigned int node = 0; node < n; ++node)
+      {
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          values[k][node] = last_step_slip[node][k];
+        values[dim - 1][node] = slip_history.length[node];
+        for (unsigned int d = 0; d < dim; ++d)
+          values[dim + d][node] = slip_history.displacement[node][d];
+      }
+    std::vector<std::vector<double> *> fields;
+    for (auto &field : values)
+      fields.push_back(&field);
+    interface.share_node_values(fields, fields.size());
+    for (unsigned int node = 0; node < n; ++node)
+      {
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          last_step_slip[node][k] = values[k][node];
+        slip_history.length[node] = values[dim - 1][node];
+        for (unsigned int d = 0; d < dim; ++d)
+          slip_history.displacement[node][d] = values[dim + d][node];
+      }
   }
 
   template <int dim, class NormalPart>

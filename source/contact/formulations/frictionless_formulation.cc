@@ -2,6 +2,7 @@
 
 #include <contact_fem/contact/formulations/constraint_line.h>
 #include <contact_fem/contact/formulations/frictionless_formulation.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
@@ -129,22 +130,18 @@ namespace contact_fem
   {
     pressure.assign(interface.nodes.size(), 0.);
     active.assign(interface.nodes.size(), false);
+    active_count = 0;
   }
 
-  template <int dim>
-  unsigned int
-  FrictionlessFormulation<dim>::n_active() const
-  {
-    return std::count(active.begin(), active.end(), true);
-  }
 
   template <int dim>
   std::unique_ptr<typename ContactFormulation<dim>::State>
   FrictionlessFormulation<dim>::save_state() const
   {
-    auto state      = std::make_unique<PressureState>();
-    state->pressure = pressure;
-    state->active   = active;
+    auto state          = std::make_unique<PressureState>();
+    state->pressure     = pressure;
+    state->active       = active;
+    state->active_count = active_count;
     return state;
   }
 
@@ -155,6 +152,7 @@ namespace contact_fem
     const auto &saved = dynamic_cast<const PressureState &>(state);
     pressure          = saved.pressure;
     active            = saved.active;
+    active_count      = saved.active_count;
   }
 
   template <int dim>
@@ -372,6 +370,41 @@ namespace contact_fem
     interface.share_node_values(fields, n_key);
     for (unsigned int n = 0; n < active.size(); ++n)
       active[n] = active_values[n] != 0.;
+  }
+
+  template <int dim>
+  std::vector<unsigned int>
+  FrictionlessFormulation<dim>::reduce_counts(const ContactInterface<dim> &interface,
+                                              std::vector<unsigned int>    changes)
+  {
+    // Every active node is a regular slave node whose row one rank owns
+    // (the others hold copies or +0), so the owners' counts add up to the
+    // counts over the whole state.
+    const unsigned int n_changes = changes.size();
+    for (const unsigned int count : count_owned_rows(interface))
+      changes.push_back(count);
+    Utilities::MPI::sum(changes, interface.communicator(), changes);
+    auto next = changes.cbegin() + n_changes;
+    take_counts(next);
+    changes.resize(n_changes);
+    return changes;
+  }
+
+  template <int dim>
+  std::vector<unsigned int>
+  FrictionlessFormulation<dim>::count_owned_rows(const ContactInterface<dim> &interface) const
+  {
+    unsigned int n = 0;
+    for (const auto &s : interface.slave_nodes)
+      n += interface.owns_row(s) && active[s.node];
+    return {n};
+  }
+
+  template <int dim>
+  void
+  FrictionlessFormulation<dim>::take_counts(std::vector<unsigned int>::const_iterator &next)
+  {
+    active_count = *next++;
   }
 
   template class FrictionlessFormulation<2>;

@@ -401,7 +401,7 @@ namespace contact_fem
           tangential[n]     = TangentialVector<dim>();
           sets.direction[n] = TangentialVector<dim>();
         }
-    set_frame_turned(interface);
+    this->reduce_counts(interface, {});
   }
 
   template <int dim>
@@ -417,14 +417,23 @@ namespace contact_fem
   }
 
   template <int dim>
-  void
-  PenaltyFrictional<dim>::set_frame_turned(const ContactInterface<dim> &interface)
+  std::vector<unsigned int>
+  PenaltyFrictional<dim>::count_owned_rows(const ContactInterface<dim> &interface) const
   {
-    // Every rank holds every slave node: the same answer on each.
-    frame_turned = false;
+    std::vector<unsigned int> counts = Base::count_owned_rows(interface);
+    unsigned int              n      = 0;
     for (const auto &s : interface.slave_nodes)
-      if (s.paired && this->active[s.node] && frame_normal(s) != s.normal)
-        frame_turned = true;
+      n += s.paired && interface.owns_row(s) && this->active[s.node] && frame_normal(s) != s.normal;
+    counts.push_back(n);
+    return counts;
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictional<dim>::take_counts(std::vector<unsigned int>::const_iterator &next)
+  {
+    Base::take_counts(next);
+    frame_turned = *next++ > 0;
   }
 
   template <int dim>
@@ -621,11 +630,9 @@ namespace contact_fem
         cone_factor[s.node]    = slip_cone_factor(interface, s, direction, p, xi);
       }
     share_tangential(interface);
-    set_frame_turned(interface);
-    unsigned int counts[2] = {changes, last_stick_slip_changes};
-    Utilities::MPI::sum(counts, interface.communicator(), counts);
-    last_stick_slip_changes = counts[1];
-    return counts[0];
+    const auto sums         = this->reduce_counts(interface, {changes, last_stick_slip_changes});
+    last_stick_slip_changes = sums[1];
+    return sums[0];
   }
 
   template <int dim>
@@ -661,18 +668,21 @@ namespace contact_fem
   PenaltyFrictional<dim>::accept_load_step(const ContactInterface<dim> &interface,
                                            const std::vector<double>   &u)
   {
-    last_step_slip.assign(interface.nodes.size(), TangentialVector<dim>());
-    for (const auto &s : interface.slave_nodes)
-      if (s.paired)
-        last_step_slip[s.node] = slip_increment(interface, s, u);
-    slip_history.add(interface, *this, last_step_slip);
+    this->accept_slip(interface, [&](const SlaveNode &s) {
+      return slip_increment(interface, s, u);
+    });
     converged_displacement = u;
-    accepted_tangential    = tangential;
+    // The history of the trial traction: read only by the owner of the row.
+    for (const auto &s : interface.slave_nodes)
+      if (interface.owns_row(s))
+        accepted_tangential[s.node] = tangential[s.node];
     if (this->current)
       {
         this->keep_operators(interface);
         for (const auto &s : interface.slave_nodes)
           {
+            if (!interface.owns_row(s))
+              continue;
             accepted_traction[s.node] = to_global(tangential[s.node], frame_normal(s));
             accepted_normal[s.node]   = frame_normal(s);
             if (dim == 3)
@@ -844,6 +854,9 @@ namespace contact_fem
     state->accepted_normal        = accepted_normal;
     state->accepted_chords        = accepted_chords;
     state->converged_operators    = converged_operators;
+    state->stick_count            = this->stick_count;
+    state->slip_count             = this->slip_count;
+    state->frame_turned           = frame_turned;
     return state;
   }
 
@@ -863,6 +876,9 @@ namespace contact_fem
     accepted_normal        = saved.accepted_normal;
     accepted_chords        = saved.accepted_chords;
     converged_operators    = saved.converged_operators;
+    this->stick_count      = saved.stick_count;
+    this->slip_count       = saved.slip_count;
+    frame_turned           = saved.frame_turned;
   }
 
   template <int dim>

@@ -70,6 +70,7 @@ namespace contact_fem
     decide_step_start(interface, u, start);
     share_decisions(interface);
     this->deactivate_master_nodes(interface);
+    this->reduce_counts(interface, {});
   }
 
   template <int dim>
@@ -282,7 +283,7 @@ namespace contact_fem
   {
     const unsigned int changes = decide_active_set(interface, u);
     share_decisions(interface);
-    return Utilities::MPI::sum(changes, interface.communicator());
+    return this->reduce_counts(interface, {changes})[0];
   }
 
   template <int dim>

@@ -298,9 +298,18 @@ namespace contact_fem
     void
     share_decisions(const ContactInterface<dim> &interface);
 
-    /// Sets pressure_dependent_slip from the current sets.
+    /// Whether node @p s slips under a law with friction or a pressure-
+    /// dependent bound (pressure_dependent_slip).
+    bool
+    slips_dependent_on_pressure(const ContactInterface<dim> &interface, const SlaveNode &s) const;
+
+    /// The frictional counts, then the owned nodes that
+    /// slips_dependent_on_pressure().
+    std::vector<unsigned int>
+    count_owned_rows(const ContactInterface<dim> &interface) const override;
+
     void
-    note_pressure_dependent_slip(const ContactInterface<dim> &interface);
+    take_counts(std::vector<unsigned int>::const_iterator &next) override;
 
     /// The component a slip node eliminates: both the gap (normal part) and
     /// the test line (w part of the other component) must be well posed.
@@ -339,7 +348,8 @@ namespace contact_fem
     using Base::slip_history;
 
     /// Whether any node slips under a law with friction: only then do its
-    /// test functions leave the trial space (symmetric()).
+    /// test functions leave the trial space (symmetric()). Found at the
+    /// decisions of start_load_step() and update_active_set().
     bool pressure_dependent_slip = false;
 
     /// Contact/Kinematics = current (see the class comment).
@@ -373,6 +383,8 @@ namespace contact_fem
       SlipHistory<dim>                   slip_history;
       StickSlipSets<dim>                 sets;
       std::vector<Operators>             converged_operators;
+      unsigned int                       stick_count = 0, slip_count = 0;
+      bool                               pressure_dependent_slip = false;
     };
   };
 } // namespace contact_fem

@@ -48,14 +48,15 @@ namespace contact_fem
     }
 
     /// Adds @p step_slip (per interface node, in the frame of the node's
-    /// normal in @p contact) to the sums.
+    /// normal in @p contact) to the sums of the paired nodes whose rows
+    /// this rank owns (ContactInterface::owns_row()).
     void
     add(const ContactInterface<dim>              &interface,
         const ContactFormulation<dim>            &contact,
         const std::vector<TangentialVector<dim>> &step_slip)
     {
       for (const auto &s : interface.slave_nodes)
-        if (s.paired)
+        if (s.paired && interface.owns_row(s))
           {
             length[s.node] += magnitude<dim>(step_slip[s.node]);
             displacement[s.node] += to_global(step_slip[s.node], contact.frame_normal(s));

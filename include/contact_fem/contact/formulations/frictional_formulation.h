@@ -94,14 +94,28 @@ namespace contact_fem
     contact_sets() const override;
 
     /// Number of active nodes that stick / slip (active nodes held
-    /// tangentially by a support neither stick nor slip).
+    /// tangentially by a support neither stick nor slip), counted over the
+    /// owned rows at each decision (reduce_counts()).
     unsigned int
-    n_stick() const;
+    n_stick() const
+    {
+      return stick_count;
+    }
 
     unsigned int
-    n_slip() const;
+    n_slip() const
+    {
+      return slip_count;
+    }
 
   protected:
+    /// The normal part's counts, then the stick and slip nodes.
+    std::vector<unsigned int>
+    count_owned_rows(const ContactInterface<dim> &interface) const override;
+
+    void
+    take_counts(std::vector<unsigned int>::const_iterator &next) override;
+
     /// Current kinematics: d n_f/du of the frame normal n_f =
     /// frame_normal(@p s), per component at the DoFs of the node's
     /// LinearisedNode.
@@ -153,10 +167,23 @@ namespace contact_fem
     void
     keep_operators_of_new_pairs(const ContactInterface<dim> &interface);
 
-    /// Current kinematics, when a step is accepted: every slave node's
-    /// operators become the reference of the objective slip.
+    /// Current kinematics, when a step is accepted: the operators of the
+    /// slave nodes whose rows this rank owns become the reference of their
+    /// objective slip (only their owner reads it).
     void
     keep_operators(const ContactInterface<dim> &interface);
+
+    /**
+     * When a step is accepted: the slip of the step (@p slip of each
+     * paired node) and the slip history of the nodes whose rows this rank
+     * owns, then shared with the other ranks as share_node_values() shares
+     * the decisions (every value a key value: the nodes that ever slipped
+     * all-gathered), for the readers of the whole interface (the results,
+     * the nodal fields). Collective.
+     */
+    void
+    accept_slip(const ContactInterface<dim>                                   &interface,
+                const std::function<TangentialVector<dim>(const SlaveNode &)> &slip);
 
     /**
      * After the owners of the rows decided their nodes (ContactInterface::
@@ -196,6 +223,8 @@ namespace contact_fem
     std::vector<double> converged_displacement;
     /// Stick/slip changes of the last update_active_set().
     unsigned int last_stick_slip_changes = 0;
+    /// n_stick(), n_slip().
+    unsigned int stick_count = 0, slip_count = 0;
     /// Operators of every slave node at the last accepted load step
     /// (current kinematics).
     std::vector<Operators> converged_operators;

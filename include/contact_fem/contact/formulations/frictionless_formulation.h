@@ -64,8 +64,12 @@ namespace contact_fem
     void
     initialize(const ContactInterface<dim> &interface) override;
 
+    /// Counted over the owned rows at each decision (reduce_counts()).
     unsigned int
-    n_active() const override;
+    n_active() const override
+    {
+      return active_count;
+    }
 
     bool
     is_active(const unsigned int n) const override
@@ -264,18 +268,41 @@ namespace contact_fem
                  const std::vector<std::vector<double> *> &key_fields   = {},
                  const std::vector<std::vector<double> *> &other_fields = {});
 
+    /**
+     * After a decision on the rows this rank owns: the decision's own
+     * counts @p changes (this rank's: active-set changes, ...) and the
+     * counts of the state over the owned rows (count_owned_rows()) summed
+     * over the ranks in one reduction; the state's sums are kept
+     * (take_counts(): n_active() and the derived class's counts and flags),
+     * the changes' sums returned. Collective.
+     */
+    std::vector<unsigned int>
+    reduce_counts(const ContactInterface<dim> &interface, std::vector<unsigned int> changes);
+
+    /// The counts of the state over the rows this rank owns: the active
+    /// nodes; a derived class appends its own.
+    virtual std::vector<unsigned int>
+    count_owned_rows(const ContactInterface<dim> &interface) const;
+
+    /// Keeps the sums of count_owned_rows() over the ranks, read from
+    /// @p next in the order they were appended.
+    virtual void
+    take_counts(std::vector<unsigned int>::const_iterator &next);
+
     Parameters          parameters;
     std::vector<double> pressure;           ///< lambda per interface node
     std::vector<bool>   active;             ///< per interface node
     std::vector<double> penalty;            ///< eps per pair
     std::vector<double> scale;              ///< k per pair
     double              penalty_ratio = 1.; ///< see penalty_over_automatic()
+    unsigned int        active_count  = 0;  ///< n_active()
 
   private:
     struct PressureState : public State
     {
       std::vector<double> pressure;
       std::vector<bool>   active;
+      unsigned int        active_count = 0;
     };
   };
 } // namespace contact_fem

@@ -355,7 +355,8 @@ namespace contact_fem
     /// The elastic-slip warning was printed (once per run).
     mutable bool elastic_slip_warned = false;
     /// Some active node's frame_normal() is not its slave normal (the
-    /// normal penalty is then unsymmetric): set by set_frame_turned().
+    /// normal penalty is then unsymmetric): found at the decisions of
+    /// start_load_step() and update_active_set().
     bool frame_turned = false;
     /// After the owners of the rows decided their nodes, the normal states
     /// (share_decisions()) and the tangential ones (tangential traction,
@@ -364,9 +365,13 @@ namespace contact_fem
     void
     share_tangential(const ContactInterface<dim> &interface);
 
-    /// Sets frame_turned from the active set.
+    /// The frictional counts, then the owned active nodes whose
+    /// frame_normal() is not their slave normal (frame_turned).
+    std::vector<unsigned int>
+    count_owned_rows(const ContactInterface<dim> &interface) const override;
+
     void
-    set_frame_turned(const ContactInterface<dim> &interface);
+    take_counts(std::vector<unsigned int>::const_iterator &next) override;
     /// update_active_set() calls since the step's start (current
     /// kinematics: the first keeps every sticking node sticking).
     unsigned int updates_in_step = 0;
@@ -382,6 +387,8 @@ namespace contact_fem
       std::vector<Tensor<1, dim>>              accepted_traction, accepted_normal;
       std::vector<std::vector<Tensor<1, dim>>> accepted_chords;
       std::vector<typename Base::Operators>    converged_operators;
+      unsigned int                             stick_count = 0, slip_count = 0;
+      bool                                     frame_turned = false;
     };
   };
 } // namespace contact_fem

@@ -258,24 +258,6 @@ namespace contact_fem
       return active[n] && !held[n] && direction[n].norm_square() != 0.;
     }
 
-    unsigned int
-    n_stick(const std::vector<bool> &active) const
-    {
-      unsigned int count = 0;
-      for (unsigned int n = 0; n < direction.size(); ++n)
-        count += sticks(n, active);
-      return count;
-    }
-
-    unsigned int
-    n_slip(const std::vector<bool> &active) const
-    {
-      unsigned int count = 0;
-      for (unsigned int n = 0; n < direction.size(); ++n)
-        count += slips(n, active);
-      return count;
-    }
-
     /// One code per node for the detection of a cycling iteration:
     /// 0 inactive, 1 stick, 2 / 3 slip along + / - the tangent (2D); in 3D
     /// 2 for slip in any direction (the direction turns continuously, and
