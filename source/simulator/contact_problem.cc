@@ -944,6 +944,19 @@ namespace contact_fem
         solution.sadd(newton_parameters.damping, 1. - newton_parameters.damping, previous_solution);
         ghosted_solution = solution;
       }
+    // A formulation may shorten the update (a penalty's node re-entering
+    // contact on the current configuration: step_fraction()).
+    if (contact && contact->limits_steps())
+      {
+        const double fraction =
+          contact->step_fraction(*interface, interface->gather(previous_solution),
+                                 interface->gather(solution));
+        if (fraction < 1.)
+          {
+            solution.sadd(fraction, 1. - fraction, previous_solution);
+            ghosted_solution = solution;
+          }
+      }
   }
 
   template <int dim>

@@ -130,6 +130,26 @@ namespace contact_fem
     virtual Residuals
     residuals(const ContactInterface<dim> &interface, const std::vector<double> &u) const = 0;
 
+    /// Whether step_fraction() may return less than 1 (the interface
+    /// values are gathered for it only then).
+    virtual bool
+    limits_steps() const
+    {
+      return false;
+    }
+
+    /// The fraction (0, 1] of the Newton update from @p u_old to @p u_new
+    /// (at the interface DoFs) that the iteration takes: 1 unless the
+    /// formulation limits it (PenaltyFrictionless: an open node driven deep
+    /// into the master).
+    virtual double
+    step_fraction(const ContactInterface<dim> &,
+                  const std::vector<double> &,
+                  const std::vector<double> &) const
+    {
+      return 1.;
+    }
+
     /// Number of active slave nodes.
     virtual unsigned int
     n_active() const = 0;

@@ -91,6 +91,20 @@ namespace contact_fem
     double
     largest_penalty_penetration() const override;
 
+    bool
+    limits_steps() const override
+    {
+      return current && entry_depth_factor > 0.;
+    }
+
+    /// Current kinematics: the fraction of the update from @p u_old to @p
+    /// u_new after which no node open in the solve penetrates deeper than
+    /// the deepest node active in it (or Entry depth factor * h_j).
+    double
+    step_fraction(const ContactInterface<dim> &interface,
+                  const std::vector<double>   &u_old,
+                  const std::vector<double>   &u_new) const override;
+
     /// Zero by construction; with adaptive penalties the penetration beyond
     /// the allowed one.
     Residuals
@@ -149,6 +163,8 @@ namespace contact_fem
 
     bool   adaptive           = false;
     double penetration_factor = 1e-3;
+    /// Contact/Entry depth factor (step_fraction()).
+    double entry_depth_factor = 1e-5;
     /// eps_j per interface node (adapted or the pair's).
     std::vector<double> node_penalty;
     /// The gap of the previous iteration, per node.
