@@ -14,8 +14,12 @@ namespace contact_fem
    * Follows the residuals of one load step's Newton iteration: the
    * equilibrium residual |r_u| of the free DoFs and the residual |r_lambda|
    * of the contact conditions, each relative to its largest value in the
-   * step, and the number of active-set changes. Decides convergence (both
-   * residuals below their tolerance and a settled active set; or a
+   * step (|r_u|'s not above its value at the start of the step: an
+   * overshooting iterate, e.g. a penalty's first slip solve, may have a
+   * residual thousands of times the forces of the problem, against which
+   * the relative test would accept forces still out of balance by a fair
+   * part of the load), and the number of active-set changes. Decides
+   * convergence (both residuals below their tolerance and a settled active set; or a
    * stagnating residual at the accuracy of the linear solver; or both at
    * round-off with a flickering active set) and formats the table rows, so
    * that round-off never reaches the printed digits.
@@ -92,7 +96,8 @@ namespace contact_fem
 
     /// The equilibrium residual at which an iterate is accepted: the
     /// larger of the absolute tolerance and the relative tolerance times
-    /// the largest residual of the step so far.
+    /// the reference (the largest residual of the step so far, not above
+    /// the initial one).
     double
     displacement_target() const;
 
@@ -114,12 +119,21 @@ namespace contact_fem
     }
 
   private:
+    /// What |r_u| is measured against: its largest value in the step, not
+    /// above the initial residual (unless that is at the absolute
+    /// tolerance).
+    double
+    reference_u() const;
+
     NewtonParameters parameters;
     bool             nonlinear;
     /// The absolute tolerances in use: the parameters', capped by
     /// set_scene_units().
-    double       absolute_u, absolute_lambda;
-    double       reference_u = 0., reference_lambda = 0.;
+    double absolute_u, absolute_lambda;
+    /// |r_u| at iteration 0.
+    double initial_u = 0.;
+    /// The largest residuals of the step so far.
+    double       largest_u = 0., reference_lambda = 0.;
     double       last_u = 0., last_lambda = 0., previous_r_u = 0.;
     unsigned int previous_changes = 1, last_changes = 0;
   };
