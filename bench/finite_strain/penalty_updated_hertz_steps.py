@@ -14,10 +14,12 @@ held_tangential_force_components), which alm's stick rollers carry along
 their slave normal (its one-sided average tilts off the plane by h / 2R
 once the Q1 field has flattened the quadratic faces) and penalty's do not:
 that part is the whole of penalty - alm (issue 29, 2026-11-28: -3.19e-3
--> -2.5e-6 in 4 steps at Newton tolerances 1e-10). The default Newton
-tolerance 1e-4 leaves the penalty's ratio a further ~3e-4 off (the run
-warns of the imbalance): pass --setting 'Newton/Displacement relative
-tolerance=1e-10' --setting 'Newton/Multiplier relative tolerance=1e-10'.
+-> -2.5e-6 in 4 steps at Newton tolerances 1e-10). Before the Newton
+reference was capped by the step's initial residual (2026-11-28, branch
+newtonref) the default tolerance left the penalty's ratio a further ~3e-4
+off; it now gives the tight answer to 1e-6. Tighter still: --setting
+'Newton/Displacement relative tolerance=1e-10' --setting
+'Newton/Multiplier relative tolerance=1e-10'.
 
 Usage: bench/finite_strain/penalty_updated_hertz_steps.py [--steps N...]
        [--kinematics K] [--setting S]... [--penalty-setting S]... [--binary B] [--out DIR]
