@@ -135,14 +135,13 @@ namespace contact_fem
       return -this->pressure[s.node] * n + to_global(tangential[s.node], n);
     }
 
-    /// The shared interface normal where the law has friction; the slave
-    /// normal at nodes held by a support or under a law without friction
-    /// (mu = 0 then is exactly the frictionless formulation).
-    Tensor<1, dim>
-    frame_normal(const SlaveNode &s) const override
-    {
-      return current || sets.held[s.node] || frictionless_law(s) ? s.normal : s.interface_normal;
-    }
+    /// The frame (FrictionalFormulation::frame_normal()): the shared
+    /// interface normal where the law has friction, with current
+    /// kinematics too (linearised, LinearisedNode::interface_normal); the
+    /// slave normal at nodes held by a support or under a law without
+    /// friction.
+    using Base::current_frame_on_interface;
+    using Base::frame_normal;
 
     void
     accept_load_step(const ContactInterface<dim> &interface, const std::vector<double> &u) override;
@@ -239,6 +238,12 @@ namespace contact_fem
     using Base::pure_slip;
     using Base::sets;
     using Base::tangential;
+
+    bool
+    on_current_configuration() const override
+    {
+      return current;
+    }
 
   private:
     /// The friction cone check: slip nodes on the bound (|t - sigma T(p)|),
