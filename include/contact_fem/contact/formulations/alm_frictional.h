@@ -57,20 +57,25 @@ namespace contact_fem
    * operators (small sliding): a load step is a physical increment.
    *
    * Contact/Kinematics = current (2D, 3D on bilinear faces): the operators
-   * of every Newton iterate on its configuration, the frame the slave
-   * normal n_j, and the objective slip of Gitterle, Popp et al. per unit
-   * D_j: xi_j = -P_j ((D_j - D_j^n) x_j - sum_l (M_jl - M_jl^n) x_l) / D_j
-   * (P_j onto the tangent plane, in the frame), the change of the
-   * operators since the last accepted step (^n) at the current positions,
-   * zero under any rigid motion of the pair. The trial space is free; the
+   * of every Newton iterate on its configuration, the frame that of the
+   * small path and of "penalty frictional" (frame_normal(): the interface
+   * normal n_f under a law with friction, linearised through
+   * LinearisedNode::interface_normal), and the objective slip of Gitterle,
+   * Popp et al. per unit D_j: xi_j = -P_j ((D_j - D_j^n) x_j - sum_l (M_jl
+   * - M_jl^n) x_l) / D_j (P_j onto the tangent plane of n_f, in its frame),
+   * the change of the operators since the last accepted step (^n) at the
+   * current positions, zero under any rigid motion of the pair. The trial space is free; the
    * test space is that of the small path (stick: v_j = sum_l M_jl / D_j
    * v_l; slip: normal to the test normal), and the rows it eliminates hold
    * the linearised gap and, for a stick node, the linearised xi_j = 0 (per
    * frame component). The geometric stiffness -p_j df_j/du - t . dh_j/du
-   * (f_j the force per unit pressure, h_j per unit tangential traction
-   * held in the tangent plane; t_j = T(p_j) d_j when slipping) makes the
-   * tangent consistent (assemble_current()); in 3D the cone term takes
-   * d(e . xi_j)/du of the objective slip.
+   * (f_j the force per unit pressure along n_f, h_j per unit tangential
+   * traction held in the tangent plane of n_f; t_j = T(p_j) d_j when
+   * slipping; FrictionalFormulation::frame_force(), frame_tangent_force())
+   * makes the tangent consistent (assemble_current()); in 3D the cone term
+   * takes d(e . xi_j)/du of the objective slip. The multiplier is the
+   * unknown (no history traction is carried), so no transport of a history
+   * to the current normal is needed, unlike the penalty.
    */
   template <int dim>
   class AlmFrictional : public FrictionalFormulation<dim, FrictionlessFormulation<dim>>
