@@ -57,25 +57,25 @@ namespace contact_fem
    * operators (small sliding): a load step is a physical increment.
    *
    * Contact/Kinematics = current (2D, 3D on bilinear faces): the operators
-   * of every Newton iterate on its configuration, the frame that of the
-   * small path and of "penalty frictional" (frame_normal(): the interface
-   * normal n_f under a law with friction, linearised through
-   * LinearisedNode::interface_normal), and the objective slip of Gitterle,
-   * Popp et al. per unit D_j: xi_j = -P_j ((D_j - D_j^n) x_j - sum_l (M_jl
-   * - M_jl^n) x_l) / D_j (P_j onto the tangent plane of n_f, in its frame),
-   * the change of the operators since the last accepted step (^n) at the
+   * of every Newton iterate on its configuration, the frame the slave
+   * normal n_j (frame_on_interface(); the interface normal of the small
+   * path and of "penalty frictional" made four postprocess scenes cycle,
+   * doc/finite_strain.md), and the objective slip of Gitterle, Popp et al.
+   * per unit D_j: xi_j = -P_j ((D_j - D_j^n) x_j - sum_l (M_jl - M_jl^n)
+   * x_l) / D_j (P_j onto the tangent plane, in the frame), the change of
+   * the operators since the last accepted step (^n) at the
    * current positions, zero under any rigid motion of the pair. The trial space is free; the
    * test space is that of the small path (stick: v_j = sum_l M_jl / D_j
    * v_l; slip: normal to the test normal), and the rows it eliminates hold
    * the linearised gap and, for a stick node, the linearised xi_j = 0 (per
    * frame component). The geometric stiffness -p_j df_j/du - t . dh_j/du
-   * (f_j the force per unit pressure along n_f, h_j per unit tangential
-   * traction held in the tangent plane of n_f; t_j = T(p_j) d_j when
+   * (f_j the force per unit pressure along the frame normal, h_j per unit
+   * tangential traction held in its tangent plane; t_j = T(p_j) d_j when
    * slipping; FrictionalFormulation::frame_force(), frame_tangent_force())
    * makes the tangent consistent (assemble_current()); in 3D the cone term
    * takes d(e . xi_j)/du of the objective slip. The multiplier is the
    * unknown (no history traction is carried), so no transport of a history
-   * to the current normal is needed, unlike the penalty.
+   * to the current normal is needed.
    */
   template <int dim>
   class AlmFrictional : public FrictionalFormulation<dim, FrictionlessFormulation<dim>>
@@ -141,10 +141,9 @@ namespace contact_fem
     }
 
     /// The frame (FrictionalFormulation::frame_normal()): the shared
-    /// interface normal where the law has friction, with current
-    /// kinematics too (linearised, LinearisedNode::interface_normal); the
-    /// slave normal at nodes held by a support or under a law without
-    /// friction.
+    /// interface normal where the law has friction on the small path; the
+    /// slave normal with current kinematics (frame_on_interface()), at
+    /// nodes held by a support and under a law without friction.
     using Base::current_frame_on_interface;
     using Base::frame_normal;
 
@@ -248,6 +247,19 @@ namespace contact_fem
     on_current_configuration() const override
     {
       return current;
+    }
+
+    /// The interface normal frames the small path only: with current
+    /// kinematics the alm and the mpc stay in the slave normal's frame.
+    /// In the interface frame (tangent verified, unit/
+    /// alm_frictional_linearisation_01 at the commit that introduced it)
+    /// four postprocess scenes cycle between stick/slip sets at unconverged
+    /// iterates (doc/finite_strain.md, "The interface frame for alm and mpc
+    /// frictional").
+    bool
+    frame_on_interface(const SlaveNode &s) const override
+    {
+      return !current && Base::frame_on_interface(s);
     }
 
   private:

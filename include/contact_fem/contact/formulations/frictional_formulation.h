@@ -128,8 +128,8 @@ namespace contact_fem
     on_current_configuration() const = 0;
 
     /// Whether frame_normal(@p s) is the interface normal: a law with
-    /// friction at a node no support holds.
-    bool
+    /// friction at a node no support holds. (AlmFrictional narrows it.)
+    virtual bool
     frame_on_interface(const SlaveNode &s) const
     {
       return !sets.held[s.node] && !frictionless_law(s);
