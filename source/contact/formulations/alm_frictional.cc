@@ -746,7 +746,8 @@ namespace contact_fem
           {
             // A support fixes component held: the free tangent's slip in
             // the remaining free component.
-            const TangentialVector<dim> free = to_frame(free_tangent(s.normal, held), s.normal);
+            const Tensor<1, dim>        n_f  = frame_normal(s);
+            const TangentialVector<dim> free = to_frame(free_tangent(n_f, held), n_f);
             Row                         row;
             for (unsigned int k = 0; k < dim - 1; ++k)
               for (const auto &[dof, entry] : slip_rows[k])
@@ -764,13 +765,19 @@ namespace contact_fem
     // The geometric stiffness -p df/du - t_c dh^c/du in the test space
     // (t the tangential traction), its part at u_k on the right-hand side
     // (Newton for the total u).
-    const double         p = this->pressure[s.node];
+    const double         p   = this->pressure[s.node];
+    const Tensor<1, dim> n_f = frame_normal(s);
     const Tensor<1, dim> t =
-      sticks   ? to_global(tangential[s.node], s.normal) :
-      friction ? laws[s.pair]->threshold(p) * to_global(sets.direction[s.node], s.normal) :
+      sticks   ? to_global(tangential[s.node], n_f) :
+      friction ? laws[s.pair]->threshold(p) * to_global(sets.direction[s.node], n_f) :
                  Tensor<1, dim>();
     if (p == 0. && t.norm_square() == 0.)
       return;
+    // Along the frame normal n_f: where it is the interface normal, the
+    // derivatives of the force along it and of the traction held in its
+    // tangent plane (as the penalty's).
+    const auto                          &force         = this->frame_force(interface, s);
+    const auto                          &tangent_force = this->frame_tangent_force(interface, s);
     std::vector<types::global_dof_index> columns, rows;
     std::vector<unsigned int>            kept, kept_rows;
     for (unsigned int i = 0; i < linearised.dofs.size(); ++i)
@@ -779,11 +786,11 @@ namespace contact_fem
           kept.push_back(i);
           columns.push_back(linearised.dofs[i]);
         }
-    for (unsigned int r = 0; r < linearised.force.size(); ++r)
-      if (!interface.dof_fixed(interface.position(linearised.force[r].first)))
+    for (unsigned int r = 0; r < force.size(); ++r)
+      if (!interface.dof_fixed(interface.position(force[r].first)))
         {
           kept_rows.push_back(r);
-          rows.push_back(linearised.force[r].first);
+          rows.push_back(force[r].first);
         }
     FullMatrix<double> stiffness(rows.size(), kept.size());
     Vector<double>     stiffness_rhs(rows.size());
@@ -791,10 +798,10 @@ namespace contact_fem
       for (unsigned int a = 0; a < kept.size(); ++a)
         {
           const unsigned int row = kept_rows[r];
-          stiffness(r, a)        = -p * linearised.force[row].second[kept[a]];
+          stiffness(r, a)        = -p * force[row].second[kept[a]];
           if (friction)
             for (unsigned int c = 0; c < dim; ++c)
-              stiffness(r, a) -= t[c] * linearised.tangent_force[c][row].second[kept[a]];
+              stiffness(r, a) -= t[c] * tangent_force[c][row].second[kept[a]];
           stiffness_rhs(r) += stiffness(r, a) * u[interface.position(columns[a])];
         }
     test_constraints.distribute_local_to_global(stiffness, rows, constraints, columns, matrix);

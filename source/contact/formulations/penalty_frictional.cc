@@ -708,13 +708,11 @@ namespace contact_fem
     const auto &linearised = interface.linearised_nodes.at(s.node);
     // The frame normal n_f (the interface normal where the law has
     // friction) and the force derivatives along it.
-    const Tensor<1, dim> n_f          = frame_normal(s);
-    const bool           on_interface = current_frame_on_interface(s);
-    const auto &force_rows_of = on_interface ? linearised.interface_force : linearised.force;
-    const auto &tangent_force =
-      on_interface ? linearised.interface_tangent_force : linearised.tangent_force;
-    const auto   frame = tangent_frame(n_f);
-    const double eps_t = tangent_penalty[s.pair];
+    const Tensor<1, dim> n_f           = frame_normal(s);
+    const auto          &force_rows_of = this->frame_force(interface, s);
+    const auto          &tangent_force = this->frame_tangent_force(interface, s);
+    const auto           frame         = tangent_frame(n_f);
+    const double         eps_t         = tangent_penalty[s.pair];
     // d t*_k = d h_k - eps_t d xi_k, xi_k with the change of D_j (-xi_k
     // dD_j / D_j: a stick node slips elastically, xi = (h - t) / eps_t).
     std::array<Row, dim - 1>    d_xi;

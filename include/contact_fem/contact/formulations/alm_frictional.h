@@ -58,19 +58,24 @@ namespace contact_fem
    *
    * Contact/Kinematics = current (2D, 3D on bilinear faces): the operators
    * of every Newton iterate on its configuration, the frame the slave
-   * normal n_j, and the objective slip of Gitterle, Popp et al. per unit
-   * D_j: xi_j = -P_j ((D_j - D_j^n) x_j - sum_l (M_jl - M_jl^n) x_l) / D_j
-   * (P_j onto the tangent plane, in the frame), the change of the
-   * operators since the last accepted step (^n) at the current positions,
-   * zero under any rigid motion of the pair. The trial space is free; the
+   * normal n_j (frame_on_interface(); the interface normal of the small
+   * path and of "penalty frictional" made four postprocess scenes cycle,
+   * doc/finite_strain.md), and the objective slip of Gitterle, Popp et al.
+   * per unit D_j: xi_j = -P_j ((D_j - D_j^n) x_j - sum_l (M_jl - M_jl^n)
+   * x_l) / D_j (P_j onto the tangent plane, in the frame), the change of
+   * the operators since the last accepted step (^n) at the
+   * current positions, zero under any rigid motion of the pair. The trial space is free; the
    * test space is that of the small path (stick: v_j = sum_l M_jl / D_j
    * v_l; slip: normal to the test normal), and the rows it eliminates hold
    * the linearised gap and, for a stick node, the linearised xi_j = 0 (per
    * frame component). The geometric stiffness -p_j df_j/du - t . dh_j/du
-   * (f_j the force per unit pressure, h_j per unit tangential traction
-   * held in the tangent plane; t_j = T(p_j) d_j when slipping) makes the
-   * tangent consistent (assemble_current()); in 3D the cone term takes
-   * d(e . xi_j)/du of the objective slip.
+   * (f_j the force per unit pressure along the frame normal, h_j per unit
+   * tangential traction held in its tangent plane; t_j = T(p_j) d_j when
+   * slipping; FrictionalFormulation::frame_force(), frame_tangent_force())
+   * makes the tangent consistent (assemble_current()); in 3D the cone term
+   * takes d(e . xi_j)/du of the objective slip. The multiplier is the
+   * unknown (no history traction is carried), so no transport of a history
+   * to the current normal is needed.
    */
   template <int dim>
   class AlmFrictional : public FrictionalFormulation<dim, FrictionlessFormulation<dim>>
@@ -135,14 +140,12 @@ namespace contact_fem
       return -this->pressure[s.node] * n + to_global(tangential[s.node], n);
     }
 
-    /// The shared interface normal where the law has friction; the slave
-    /// normal at nodes held by a support or under a law without friction
-    /// (mu = 0 then is exactly the frictionless formulation).
-    Tensor<1, dim>
-    frame_normal(const SlaveNode &s) const override
-    {
-      return current || sets.held[s.node] || frictionless_law(s) ? s.normal : s.interface_normal;
-    }
+    /// The frame (FrictionalFormulation::frame_normal()): the shared
+    /// interface normal where the law has friction on the small path; the
+    /// slave normal with current kinematics (frame_on_interface()), at
+    /// nodes held by a support and under a law without friction.
+    using Base::current_frame_on_interface;
+    using Base::frame_normal;
 
     void
     accept_load_step(const ContactInterface<dim> &interface, const std::vector<double> &u) override;
@@ -239,6 +242,25 @@ namespace contact_fem
     using Base::pure_slip;
     using Base::sets;
     using Base::tangential;
+
+    bool
+    on_current_configuration() const override
+    {
+      return current;
+    }
+
+    /// The interface normal frames the small path only: with current
+    /// kinematics the alm and the mpc stay in the slave normal's frame.
+    /// In the interface frame (tangent verified, unit/
+    /// alm_frictional_linearisation_01 at the commit that introduced it)
+    /// four postprocess scenes cycle between stick/slip sets at unconverged
+    /// iterates (doc/finite_strain.md, "The interface frame for alm and mpc
+    /// frictional").
+    bool
+    frame_on_interface(const SlaveNode &s) const override
+    {
+      return !current && Base::frame_on_interface(s);
+    }
 
   private:
     /// The friction cone check: slip nodes on the bound (|t - sigma T(p)|),

@@ -64,6 +64,27 @@ namespace contact_fem
                          "";
     }
 
+    /// The frame of the frictional conditions of every frictional
+    /// formulation (alm, mpc, penalty; small and current kinematics): the
+    /// shared interface normal (SlaveNode::interface_normal) where the law
+    /// has friction at a node no support holds (frame_on_interface()); the
+    /// slave normal at held nodes and under a law without friction (mu = 0
+    /// then is exactly the frictionless formulation).
+    Tensor<1, dim>
+    frame_normal(const SlaveNode &s) const override
+    {
+      return frame_on_interface(s) ? s.interface_normal : s.normal;
+    }
+
+    /// With current kinematics where frame_normal() is the interface
+    /// normal: its derivatives are then LinearisedNode::interface_normal,
+    /// interface_force and interface_tangent_force.
+    bool
+    current_frame_on_interface(const SlaveNode &s) const override
+    {
+      return on_current_configuration() && frame_on_interface(s);
+    }
+
     /// Whether node @p n is active and sticks.
     bool
     held_tangentially(const unsigned int n) const override
@@ -116,6 +137,18 @@ namespace contact_fem
     void
     take_counts(std::vector<unsigned int>::const_iterator &next) override;
 
+    /// Whether Contact/Kinematics = current (the derived class reads it).
+    virtual bool
+    on_current_configuration() const = 0;
+
+    /// Whether frame_normal(@p s) is the interface normal: a law with
+    /// friction at a node no support holds. (AlmFrictional narrows it.)
+    virtual bool
+    frame_on_interface(const SlaveNode &s) const
+    {
+      return !sets.held[s.node] && !frictionless_law(s);
+    }
+
     /// Current kinematics: d n_f/du of the frame normal n_f =
     /// frame_normal(@p s), per component at the DoFs of the node's
     /// LinearisedNode.
@@ -124,6 +157,27 @@ namespace contact_fem
     {
       const auto &linearised = interface.linearised_nodes.at(s.node);
       return this->current_frame_on_interface(s) ? linearised.interface_normal : linearised.normal;
+    }
+
+    /// Current kinematics: the force rows per unit pressure along the frame
+    /// normal, -D_j n_f and M_jl n_f, with their derivatives
+    /// (LinearisedNode::interface_force or force).
+    const auto &
+    frame_force(const ContactInterface<dim> &interface, const SlaveNode &s) const
+    {
+      const auto &linearised = interface.linearised_nodes.at(s.node);
+      return this->current_frame_on_interface(s) ? linearised.interface_force : linearised.force;
+    }
+
+    /// Current kinematics: the force derivatives per unit tangential
+    /// traction component held in the tangent plane of the frame normal
+    /// (LinearisedNode::interface_tangent_force or tangent_force).
+    const auto &
+    frame_tangent_force(const ContactInterface<dim> &interface, const SlaveNode &s) const
+    {
+      const auto &linearised = interface.linearised_nodes.at(s.node);
+      return this->current_frame_on_interface(s) ? linearised.interface_tangent_force :
+                                                   linearised.tangent_force;
     }
 
     /// Whether the law of node @p s has no friction at all (mu = 0, bound

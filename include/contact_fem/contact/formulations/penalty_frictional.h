@@ -174,23 +174,13 @@ namespace contact_fem
       return -this->pressure[s.node] * n + to_global(tangential[s.node], n);
     }
 
-    /// The shared interface normal where the law has friction (every
-    /// kinematics; with current kinematics linearised, LinearisedNode::
-    /// interface_normal): the frame of the slip, of the tangential traction
-    /// and of the normal force. The slave normal at nodes held by a support
-    /// and under a law without friction (mu = 0 then is exactly "penalty
-    /// frictionless").
-    Tensor<1, dim>
-    frame_normal(const SlaveNode &s) const override
-    {
-      return frame_on_interface(s) ? s.interface_normal : s.normal;
-    }
-
-    bool
-    current_frame_on_interface(const SlaveNode &s) const override
-    {
-      return this->current && frame_on_interface(s);
-    }
+    /// The frame (FrictionalFormulation::frame_normal()): the shared
+    /// interface normal where the law has friction, with current
+    /// kinematics too (linearised, LinearisedNode::interface_normal); the
+    /// frame of the slip, of the tangential traction and of the normal
+    /// force.
+    using Base::current_frame_on_interface;
+    using Base::frame_normal;
 
     /// The slip reference (interface displacement) and the tangential
     /// tractions of the accepted step become the history.
@@ -215,15 +205,14 @@ namespace contact_fem
                   const Json                  &reaction,
                   std::ostream                &out) const override;
 
-  private:
-    /// Whether frame_normal(@p s) is the interface normal: a law with
-    /// friction at a node no support holds.
+  protected:
     bool
-    frame_on_interface(const SlaveNode &s) const
+    on_current_configuration() const override
     {
-      return !sets.held[s.node] && !frictionless_law(s);
+      return this->current;
     }
 
+  private:
     /// The largest elastic slip of the stick nodes, and from the total
     /// tangential and normal contact forces sum_j D_j t_j and sum_j D_j p_j,
     /// with one Coulomb law and every active node slipping one way, the
