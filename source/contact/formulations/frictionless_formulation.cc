@@ -133,7 +133,6 @@ namespace contact_fem
     active_count = 0;
   }
 
-
   template <int dim>
   std::unique_ptr<typename ContactFormulation<dim>::State>
   FrictionlessFormulation<dim>::save_state() const
