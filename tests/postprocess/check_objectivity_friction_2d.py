@@ -3,7 +3,10 @@
 (Contact/Kinematics = current, issue 29): a large rigid rotation
 superposed during the load steps leaves the frictional state unchanged.
 
-Usage: check_objectivity_friction_2d.py CONTACT_FEM SCENE.prm FORMULATION
+Usage: check_objectivity_friction_2d.py CONTACT_FEM SCENE.prm FORMULATION [SETTING...]
+
+Each SETTING ('Section/Key=value', e.g. 'Contact/Friction=tresca 5') is
+given to both runs.
 
 SCENE is tests/scenes/current_kinematics_friction_01.prm (neo-Hookean
 blocks 4 x 1, the upper one pressed onto the lower, mu = 0.3), held at the
@@ -81,16 +84,18 @@ def vector(row, prefix):
 EXTRA = {"penalty frictional": ("Contact/Stiffness factor=1e-2",)}
 
 
-def run(contact_fem, scene, formulation, rotated):
+def run(contact_fem, scene, formulation, rotated, extra):
     output = run_scene(contact_fem, scene, *perturbation(), *EXTRA.get(formulation, ()),
-                       *settings(formulation, rotated))
+                       *extra, *settings(formulation, rotated))
     return output, csv_numbers("results/forces.csv"), csv_numbers("results/pressure_profile.csv")
 
 
 def main():
     contact_fem, scene, formulation = sys.argv[1:4]
-    reference = run(contact_fem, scene, formulation, False)
-    turned = run(contact_fem, scene, formulation, True)
+    extra = sys.argv[4:]
+    reference = run(contact_fem, scene, formulation, False, extra)
+    turned = run(contact_fem, scene, formulation, True, extra)
+    formulation = ", ".join([formulation, *extra])  # the name in the report
     times = [[row["t"] for row in forces] for _, forces, _ in (reference, turned)]
     ok = report(f"{formulation}: both runs take the same load steps (friction depends on the "
                 "load path)", times[0] == times[1] and times[0][-1] == END,

@@ -3,7 +3,10 @@
 = current, issue 29): a large rigid rotation superposed during the load
 steps must leave the frictional state unchanged.
 
-Usage: check_objectivity_friction_3d.py CONTACT_FEM SCENE.prm FORMULATION...
+Usage: check_objectivity_friction_3d.py CONTACT_FEM SCENE.prm FORMULATION... [SETTING...]
+
+Each SETTING ('Section/Key=value', e.g. 'Contact/Friction=tresca 5'; the
+arguments with an '=') is given to every run.
 
 SCENE is tests/scenes/current_kinematics_friction_3d_01.prm (a neo-Hookean
 block 1 x 1 x 0.5 on an elastic base, mu = 0.3), its base held at the
@@ -124,15 +127,16 @@ def vector(row, prefix):
     return [row[f"{prefix}_{c}"] for c in "xyz"]
 
 
-def run(contact_fem, scene, formulation, rotated):
+def run(contact_fem, scene, formulation, rotated, extra):
     output = run_scene(contact_fem, scene, *perturbation(),
-                       *settings(formulation, rotated, EXTRA.get(formulation, ())))
+                       *settings(formulation, rotated, (*EXTRA.get(formulation, ()), *extra)))
     return output, csv_numbers("results/forces.csv"), csv_numbers("results/pressure_profile.csv")
 
 
-def check(contact_fem, scene, formulation):
-    reference = run(contact_fem, scene, formulation, False)
-    turned = run(contact_fem, scene, formulation, True)
+def check(contact_fem, scene, formulation, extra):
+    reference = run(contact_fem, scene, formulation, False, extra)
+    turned = run(contact_fem, scene, formulation, True, extra)
+    formulation = ", ".join([formulation, *extra])  # the name in the report
     ok = report(f"{formulation}: both runs take the {END} load steps without a split",
                 all("Splitting" not in o for o, _, _ in (reference, turned)), "")
     sets = [converged_sets(o) for o, _, _ in (reference, turned)]
@@ -178,10 +182,12 @@ def check(contact_fem, scene, formulation):
 
 
 def main():
-    contact_fem, scene, formulations = sys.argv[1], sys.argv[2], sys.argv[3:]
+    contact_fem, scene = sys.argv[1:3]
+    formulations = [a for a in sys.argv[3:] if "=" not in a]
+    extra = [a for a in sys.argv[3:] if "=" in a]
     ok = True
     for formulation in formulations:
-        ok = check(contact_fem, scene, formulation) and ok
+        ok = check(contact_fem, scene, formulation, extra) and ok
     sys.exit(0 if ok else 1)
 
 
