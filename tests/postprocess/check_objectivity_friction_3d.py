@@ -6,7 +6,8 @@ steps must leave the frictional state unchanged.
 Usage: check_objectivity_friction_3d.py CONTACT_FEM SCENE.prm FORMULATION... [SETTING...]
 
 Each SETTING ('Section/Key=value', e.g. 'Contact/Friction=tresca 5'; the
-arguments with an '=') is given to every run.
+arguments with an '=') is given to every run; '--one-step-each' shortens
+the program to one spin and one tilt step (t = 2 .. 4; cheaper).
 
 SCENE is tests/scenes/current_kinematics_friction_3d_01.prm (a neo-Hookean
 block 1 x 1 x 0.5 on an elastic base, mu = 0.3), its base held at the
@@ -50,7 +51,7 @@ import sys
 from scene_run import converged_sets, csv_numbers, perturbation, run_scene
 
 CENTRE = (0.0, 0.0, 0.25)
-SPIN_STEPS, TILT_STEPS = 2, 2
+SPIN_STEPS, TILT_STEPS = 2, 2  # one_step_each() sets 1, 1
 END = 2 + SPIN_STEPS + TILT_STEPS
 SPIN, TILT = math.radians(20.0), math.radians(15.0)  # per step
 TOLERANCE = 1e-7
@@ -69,6 +70,15 @@ def clamp(expression, steps):
 # The angles as expressions of t and as functions.
 SPIN_T = f"{SPIN!r}*{clamp('t - 2', SPIN_STEPS)}"
 TILT_T = f"{TILT!r}*{clamp(f't - {2 + SPIN_STEPS}', TILT_STEPS)}"
+
+
+def one_step_each():
+    """The program with one spin and one tilt step."""
+    global SPIN_STEPS, TILT_STEPS, END, SPIN_T, TILT_T
+    SPIN_STEPS, TILT_STEPS = 1, 1
+    END = 2 + SPIN_STEPS + TILT_STEPS
+    SPIN_T = f"{SPIN!r}*{clamp('t - 2', SPIN_STEPS)}"
+    TILT_T = f"{TILT!r}*{clamp(f't - {2 + SPIN_STEPS}', TILT_STEPS)}"
 
 
 def angles(t):
@@ -183,8 +193,12 @@ def check(contact_fem, scene, formulation, extra):
 
 def main():
     contact_fem, scene = sys.argv[1:3]
-    formulations = [a for a in sys.argv[3:] if "=" not in a]
-    extra = [a for a in sys.argv[3:] if "=" in a]
+    arguments = sys.argv[3:]
+    if "--one-step-each" in arguments:
+        arguments.remove("--one-step-each")
+        one_step_each()
+    formulations = [a for a in arguments if "=" not in a]
+    extra = [a for a in arguments if "=" in a]
     ok = True
     for formulation in formulations:
         ok = check(contact_fem, scene, formulation, extra) and ok
