@@ -18,11 +18,15 @@ measured when the overkill was computed (2026-11-27) and these bounds:
   3.78e-2; bounds 0.16, 0.085, 0.045, and e falls by at least 1.7 per
   level (order 0.77; measured 0.94, 0.98: O(h) of Q1);
 - p_max: -2.6e-3, -8.6e-4, -1.5e-4 relative; bounds 4e-3, 1.5e-3, 5e-4;
-- a_m: +2.0e-2, +5.4e-3, +1.0e-3; bounds 3e-2, 8e-3, 2e-3.
+- a_m: +2.0e-2, +5.4e-3, +1.0e-3; bounds 3e-2, 8e-3, 2e-3;
+- Newton quadratic once the sets hold at every level, r_k <= 10 r_(k-1)^2
+  (scene_run.check_quadratic; from the run's log).
 """
 import math
 import os
 import sys
+
+from scene_run import check_quadratic
 
 contact_fem, source_dir, scene = sys.argv[1:4]
 sys.path.insert(0, os.path.join(source_dir, "bench", "finite_strain"))
@@ -36,6 +40,9 @@ ok = True
 previous = None
 for level in range(3):
     r = run(contact_fem, scene, level, os.path.abspath("g%d" % level), False)
+    with open(os.path.abspath("g%d" % level) + ".log") as f:
+        if not check_quadratic("level %d" % level, f.read(), 10.):
+            ok = False
     errors = {"energy": math.sqrt(abs(r["Pi"] - PI) / W), "p_max": r["p_max"] / P_MAX - 1.,
               "a_m": moment_width(r["profile"]) / A_M - 1.}
     print("level %d, %d DoFs, %s: %s" % (level, r["dofs"], r["status"],

@@ -19,6 +19,9 @@ the start-up of the slide). On it:
   a factor 1.5: the chatter comes from the slave nodes entering and leaving
   the contact zone, one element length apart).
 
+Newton converges quadratically once the sets hold (scene_run.check_quadratic:
+r_k <= C r_(k-1)^2; C = 100 on the scene, 1e4 refined or in 9 steps).
+
 And the coarse mesh in 9 load steps (pressed in one, slid 0.75 element
 lengths per step; this stopped with "does not project onto the master
 face" before Mortar::overlap() rejected distant flanks): frictionless
@@ -28,16 +31,26 @@ the die's force equals that of the 36 steps to 1e-6 of F_n.
 import csv
 import sys
 
-from scene_run import run_scene
+from scene_run import check_quadratic, run_scene
 
 SLIDE_PER_TIME = 0.1875   # die top x = 0.1875 (t - 1) for t > 1
 PLATEAU_START = 0.5       # slide from which the plateau counts
+quadratic = True
 
 
 def plateau_forces(contact_fem, scene, refinements, *settings):
     output = run_scene(contact_fem, scene, f"Geometry/Global refinements={refinements}",
                        *settings)
     steps, converged = output.count("  Load step "), output.count("| converged")
+    # Quadratic Newton once the sets hold, r_k <= C r_(k-1)^2: C = 100 on the
+    # scene as it is (measured 2026-11-28: passes at 100, not at 10); the
+    # refined mesh and the 9 longer steps have larger constants (measured
+    # 838 and 1510, quadratic: 1.9e-5, 5.6e-7, 1.3e-10), bounded by 1e4
+    # (a linear tail of rate 0.01 from 1e-6 gives C = 1e4).
+    bound = 100. if refinements == 0 and not settings else 1e4
+    global quadratic
+    quadratic = check_quadratic(f"refinements {refinements}, {steps} load steps", output,
+                                bound) and quadratic
     with open("results/forces.csv") as f:
         rows = list(csv.DictReader(f))
     plateau = []
@@ -87,4 +100,4 @@ same = converged == steps and len(shared) >= 4 and difference < 1e-6
 print(f"9 load steps (0.75 element lengths per slide step): {converged} of {steps} converged; "
       f"the die's force at the {len(shared)} shared plateau times equals that of 36 steps "
       f"to 1e-6 of F_n: {'ok' if same else 'FAILED'} (largest difference {difference:.1e})")
-sys.exit(0 if ok and falling and same else 1)
+sys.exit(0 if ok and falling and same and quadratic else 1)
