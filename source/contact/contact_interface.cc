@@ -415,6 +415,22 @@ namespace contact_fem
         }
     row_imports = std::make_shared<
       std::map<unsigned int, std::shared_ptr<const Utilities::MPI::NoncontiguousPartitioner>>>();
+    zone_nodes_received = std::make_shared<unsigned int>(0);
+  }
+
+  template <int dim>
+  typename ContactInterface<dim>::HeldCounts
+  ContactInterface<dim>::count_held() const
+  {
+    HeldCounts held;
+    held.faces                = faces.size();
+    held.slave_nodes          = slave_nodes.size();
+    held.rows_owned           = owned_row_nodes.size();
+    held.row_ghosts           = ghost_row_nodes.size();
+    held.interface_dofs       = interface_dofs.size();
+    held.interface_dofs_owned = owned_interface_dofs.n_elements();
+    held.zone_nodes_received  = zone_nodes_received ? *zone_nodes_received : 0;
+    return held;
   }
 
   template <int dim>
@@ -476,14 +492,19 @@ namespace contact_fem
       if (row_holder[n] == 0 && nodes[n].slave && nodes[n].parents.empty())
         for (auto *field : fields)
           (*field)[n] = 0.;
+    unsigned int received = 0;
     for (const auto &chunk : Utilities::MPI::all_gather(mpi_communicator, zone))
       for (unsigned int i = 0; i < chunk.size(); i += 1 + K)
         {
           const auto n = static_cast<unsigned int>(chunk[i]);
           if (row_holder[n] == 0)
-            for (unsigned int k = 0; k < K; ++k)
-              (*fields[k])[n] = chunk[i + 1 + k];
+            {
+              ++received;
+              for (unsigned int k = 0; k < K; ++k)
+                (*fields[k])[n] = chunk[i + 1 + k];
+            }
         }
+    *zone_nodes_received = std::max(*zone_nodes_received, received);
   }
 
   template <int dim>
