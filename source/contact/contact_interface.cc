@@ -430,6 +430,25 @@ namespace contact_fem
     held.interface_dofs       = interface_dofs.size();
     held.interface_dofs_owned = owned_interface_dofs.n_elements();
     held.zone_nodes_received  = zone_nodes_received ? *zone_nodes_received : 0;
+    // A std::map entry: the key and value plus about 32 bytes of tree node.
+    const double map_entry = 32. + sizeof(types::global_dof_index) + sizeof(unsigned int);
+    double       bytes     = 0.;
+    for (const Face &face : faces)
+      bytes += sizeof(Face) + face.nodes.capacity() * sizeof(unsigned int) +
+               face.geometry_points.capacity() * sizeof(Point<dim>);
+    for (const Node &node : nodes)
+      bytes += sizeof(Node) + node.parents.capacity() * sizeof(node.parents[0]);
+    for (const auto *list : {&slave_nodes, &hanging_slave_vertices})
+      for (const SlaveNode &s : *list)
+        bytes += sizeof(SlaveNode) + s.M.capacity() * sizeof(s.M[0]);
+    bytes += interface_dofs.capacity() * sizeof(types::global_dof_index) +
+             dof_position.size() * map_entry + fixed_positions.size() / 8. +
+             coupled_faces.capacity() * sizeof(coupled_faces[0]) +
+             face_lengths.capacity() * sizeof(double) +
+             search_displacement.capacity() * sizeof(double) +
+             (slave_surface_normals.size() + master_surface_normals.size()) *
+               (32. + sizeof(unsigned int) + sizeof(Tensor<1, dim>) + sizeof(double));
+    held.bytes = bytes;
     return held;
   }
 

@@ -79,7 +79,8 @@ namespace contact_fem
     const char *names[] = {
       "faces",          "slave_nodes",          "rows_owned",         "row_ghosts",
       "interface_dofs", "interface_dofs_owned", "zone_nodes_received"};
-    Json held_per_rank = Json::object();
+    const auto kib           = Utilities::MPI::all_gather(comm, held.bytes / 1024.);
+    Json       held_per_rank = Json::object();
     for (unsigned int k = 0; k < mine.size(); ++k)
       {
         Json values = Json::array();
@@ -87,6 +88,10 @@ namespace contact_fem
           values.push(rank[k]);
         held_per_rank.set(names[k], values);
       }
+    Json kib_per_rank = Json::array();
+    for (const double k : kib)
+      kib_per_rank.push(std::round(k));
+    held_per_rank.set("interface_kib", kib_per_rank);
     result.set("held_per_rank", held_per_rank);
     return result;
   }

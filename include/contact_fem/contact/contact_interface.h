@@ -323,6 +323,12 @@ namespace contact_fem
       /// The most node states one share_node_values() received besides
       /// the ghosts' (the contact zone all-gathered), since initialize().
       unsigned int zone_nodes_received = 0;
+      /// Bytes of the interface's per-face and per-node data (faces,
+      /// nodes, slave nodes with their M, the interface DoFs and their
+      /// positions), estimated from the containers' sizes; the
+      /// formulation's per-node state (a few doubles per node) and
+      /// linearised_nodes are not counted.
+      double bytes = 0.;
     };
 
     HeldCounts
