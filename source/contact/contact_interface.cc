@@ -415,6 +415,41 @@ namespace contact_fem
         }
     row_imports = std::make_shared<
       std::map<unsigned int, std::shared_ptr<const Utilities::MPI::NoncontiguousPartitioner>>>();
+    zone_nodes_received = std::make_shared<unsigned int>(0);
+  }
+
+  template <int dim>
+  typename ContactInterface<dim>::HeldCounts
+  ContactInterface<dim>::count_held() const
+  {
+    HeldCounts held;
+    held.faces                = faces.size();
+    held.slave_nodes          = slave_nodes.size();
+    held.rows_owned           = owned_row_nodes.size();
+    held.row_ghosts           = ghost_row_nodes.size();
+    held.interface_dofs       = interface_dofs.size();
+    held.interface_dofs_owned = owned_interface_dofs.n_elements();
+    held.zone_nodes_received  = zone_nodes_received ? *zone_nodes_received : 0;
+    // A std::map entry: the key and value plus about 32 bytes of tree node.
+    const double map_entry = 32. + sizeof(types::global_dof_index) + sizeof(unsigned int);
+    double       bytes     = 0.;
+    for (const Face &face : faces)
+      bytes += sizeof(Face) + face.nodes.capacity() * sizeof(unsigned int) +
+               face.geometry_points.capacity() * sizeof(Point<dim>);
+    for (const Node &node : nodes)
+      bytes += sizeof(Node) + node.parents.capacity() * sizeof(node.parents[0]);
+    for (const auto *list : {&slave_nodes, &hanging_slave_vertices})
+      for (const SlaveNode &s : *list)
+        bytes += sizeof(SlaveNode) + s.M.capacity() * sizeof(s.M[0]);
+    bytes += interface_dofs.capacity() * sizeof(types::global_dof_index) +
+             dof_position.size() * map_entry + fixed_positions.size() / 8. +
+             coupled_faces.capacity() * sizeof(coupled_faces[0]) +
+             face_lengths.capacity() * sizeof(double) +
+             search_displacement.capacity() * sizeof(double) +
+             (slave_surface_normals.size() + master_surface_normals.size()) *
+               (32. + sizeof(unsigned int) + sizeof(Tensor<1, dim>) + sizeof(double));
+    held.bytes = bytes;
+    return held;
   }
 
   template <int dim>
@@ -476,14 +511,19 @@ namespace contact_fem
       if (row_holder[n] == 0 && nodes[n].slave && nodes[n].parents.empty())
         for (auto *field : fields)
           (*field)[n] = 0.;
+    unsigned int received = 0;
     for (const auto &chunk : Utilities::MPI::all_gather(mpi_communicator, zone))
       for (unsigned int i = 0; i < chunk.size(); i += 1 + K)
         {
           const auto n = static_cast<unsigned int>(chunk[i]);
           if (row_holder[n] == 0)
-            for (unsigned int k = 0; k < K; ++k)
-              (*fields[k])[n] = chunk[i + 1 + k];
+            {
+              ++received;
+              for (unsigned int k = 0; k < K; ++k)
+                (*fields[k])[n] = chunk[i + 1 + k];
+            }
         }
+    *zone_nodes_received = std::max(*zone_nodes_received, received);
   }
 
   template <int dim>

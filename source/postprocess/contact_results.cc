@@ -70,6 +70,29 @@ namespace contact_fem
     for (const unsigned int n : interface.master_faces_per_rank)
       master_split.push(n);
     result.set("slave_faces_per_rank", slave_split).set("master_faces_per_rank", master_split);
+    // What each rank holds of the interface (the per-rank contact data).
+    const auto                      held = interface.count_held();
+    const std::vector<unsigned int> mine = {
+      held.faces,          held.slave_nodes,          held.rows_owned,         held.row_ghosts,
+      held.interface_dofs, held.interface_dofs_owned, held.zone_nodes_received};
+    const auto  all     = Utilities::MPI::all_gather(comm, mine);
+    const char *names[] = {
+      "faces",          "slave_nodes",          "rows_owned",         "row_ghosts",
+      "interface_dofs", "interface_dofs_owned", "zone_nodes_received"};
+    const auto kib           = Utilities::MPI::all_gather(comm, held.bytes / 1024.);
+    Json       held_per_rank = Json::object();
+    for (unsigned int k = 0; k < mine.size(); ++k)
+      {
+        Json values = Json::array();
+        for (const auto &rank : all)
+          values.push(rank[k]);
+        held_per_rank.set(names[k], values);
+      }
+    Json kib_per_rank = Json::array();
+    for (const double k : kib)
+      kib_per_rank.push(std::round(k));
+    held_per_rank.set("interface_kib", kib_per_rank);
+    result.set("held_per_rank", held_per_rank);
     return result;
   }
 

@@ -310,6 +310,30 @@ namespace contact_fem
               static_cast<unsigned int>(ghost_row_nodes.size())};
     }
 
+    /// What this rank holds of the interface (per-rank memory of the
+    /// contact data; summary.json "held_per_rank"). Not collective.
+    struct HeldCounts
+    {
+      unsigned int faces                = 0; ///< faces (slave and master)
+      unsigned int slave_nodes          = 0; ///< slave_nodes (with their operators)
+      unsigned int rows_owned           = 0; ///< count_held_rows().first
+      unsigned int row_ghosts           = 0; ///< count_held_rows().second
+      unsigned int interface_dofs       = 0; ///< dofs() (gather()'s result)
+      unsigned int interface_dofs_owned = 0;
+      /// The most node states one share_node_values() received besides
+      /// the ghosts' (the contact zone all-gathered), since initialize().
+      unsigned int zone_nodes_received = 0;
+      /// Bytes of the interface's per-face and per-node data (faces,
+      /// nodes, slave nodes with their M, the interface DoFs and their
+      /// positions), estimated from the containers' sizes; the
+      /// formulation's per-node state (a few doubles per node) and
+      /// linearised_nodes are not counted.
+      double bytes = 0.;
+    };
+
+    HeldCounts
+    count_held() const;
+
     /**
      * Search and mortar integration on X + u, @p u given at dofs(). The box
      * of a slave face of pair p is enlarged by @p search_factor times its
@@ -679,8 +703,10 @@ namespace contact_fem
     /// the first call (collective, as the call is); shared by copies.
     std::shared_ptr<
       std::map<unsigned int, std::shared_ptr<const Utilities::MPI::NoncontiguousPartitioner>>>
-             row_imports;
-    MPI_Comm mpi_communicator;
+      row_imports;
+    /// HeldCounts::zone_nodes_received, shared by copies.
+    std::shared_ptr<unsigned int> zone_nodes_received;
+    MPI_Comm                      mpi_communicator;
   };
   // The tiling checks differ by dimension (contact_interface_tiling.cc).
   template <>
