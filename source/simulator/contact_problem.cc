@@ -58,8 +58,7 @@ namespace contact_fem
                 const unsigned int cycle,
                 const double       wall,
                 const double       cumulative,
-                const double       multigrid_seconds,
-                const SetupCounts &multigrid_setups)
+                const double       multigrid_seconds)
     {
       std::ostringstream out;
       out << "  Wall time of cycle " << cycle << ": " << wall << " s (cumulative " << cumulative
@@ -70,9 +69,7 @@ namespace contact_fem
             << std::setprecision(6) << std::endl;
       if (multigrid_seconds >= 0.)
         out << "    (" << multigrid_setup_section << ": " << std::fixed << std::setprecision(4)
-            << multigrid_seconds << " s; " << multigrid_setups.all << " set-ups, "
-            << multigrid_setups.recomputed << " of them recomputed on kept aggregates)"
-            << std::defaultfloat << std::setprecision(6) << std::endl;
+            << multigrid_seconds << " s)" << std::defaultfloat << std::setprecision(6) << std::endl;
       return out.str();
     }
 
@@ -700,9 +697,6 @@ namespace contact_fem
       linear_solver->solve(system_matrix, solution, system_rhs, request);
     linear_iterations_of_step.push_back(linear_solver->last_iterations());
     multigrid_setup_seconds += linear_solver->take_setup_seconds();
-    const SetupCounts setups = linear_solver->take_setup_counts();
-    multigrid_setups.all += setups.all;
-    multigrid_setups.recomputed += setups.recomputed;
     if (const std::string note = linear_solver->take_note(); !note.empty())
       pcout << "    Note: " << note << "." << std::endl;
     // A singular system (a body held by nothing) does not always make the
@@ -1395,9 +1389,6 @@ namespace contact_fem
         const double multigrid = linear_solver->iterative() ? multigrid_setup_seconds : -1.;
         record.set("wall_time", wall).set("cumulative_wall_time", cumulative);
         record.set("timing", timing_record(*timer, multigrid));
-        if (linear_solver->iterative())
-          record.set("multigrid_setups", multigrid_setups.all)
-            .set("multigrid_setups_recomputed", multigrid_setups.recomputed);
         cycles.push(record);
         convergence_table->add_row(record, refinement.estimator,
                                    std::accumulate(newton_iterations_of_cycle.begin(),
@@ -1413,7 +1404,7 @@ namespace contact_fem
                       !last      ? "running" :
                                    converged_status());
         if (output.print_timing)
-          pcout << timing_text(*timer, cycle, wall, cumulative, multigrid, multigrid_setups);
+          pcout << timing_text(*timer, cycle, wall, cumulative, multigrid);
         if (!converged)
           return 2;
         if (beyond_model)
@@ -1536,7 +1527,6 @@ namespace contact_fem
     singular_solves         = 0;
     most_null_pivots        = 0;
     multigrid_setup_seconds = 0.;
-    multigrid_setups        = {};
     setup_dofs();
     if (transferred_solution && resolves_load_path())
       transferred_solution.reset();

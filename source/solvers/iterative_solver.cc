@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 
 namespace contact_fem
 {
@@ -23,8 +22,6 @@ namespace contact_fem
   void
   IterativeSolver::set_near_null_space(std::vector<std::vector<double>> &&modes)
   {
-    // ML keeps a pointer to the modes: no recomputation after new ones.
-    clear();
     n_modes = modes.size();
     null_space.clear();
     for (const auto &mode : modes)
@@ -42,9 +39,7 @@ namespace contact_fem
   IterativeSolver::clear()
   {
     preconditioner.reset();
-    last_matrix   = nullptr;
-    set_up_matrix = nullptr;
-    fresh_next    = true;
+    last_matrix = nullptr;
   }
 
   double
@@ -53,36 +48,6 @@ namespace contact_fem
     const double seconds = setup_seconds;
     setup_seconds        = 0.;
     return seconds;
-  }
-
-  SetupCounts
-  IterativeSolver::take_setup_counts()
-  {
-    const SetupCounts counts = setup_counts;
-    setup_counts             = {};
-    return counts;
-  }
-
-  bool
-  IterativeSolver::can_recompute(const TrilinosWrappers::SparseMatrix &matrix) const
-  {
-    // A re-created matrix is a new Epetra object; the entry count guards
-    // against a new object at the old address.
-    if (std::getenv("CFEM_AMG_FRESH")) // TEMPORARY, measurement only
-      return false;
-    return preconditioner != nullptr && !fresh_next &&
-           set_up_matrix == static_cast<const void *>(&matrix.trilinos_matrix()) &&
-           set_up_nonzeros == matrix.n_nonzero_elements();
-  }
-
-  void
-  IterativeSolver::recompute_preconditioner()
-  {
-    Timer timer;
-    preconditioner->reinit(); // ML's ReComputePreconditioner()
-    ++setup_counts.all;
-    ++setup_counts.recomputed;
-    setup_seconds += timer.wall_time();
   }
 
   void
@@ -107,10 +72,6 @@ namespace contact_fem
     list.set("null space: vectors", null_space.data());
     preconditioner = std::make_unique<TrilinosWrappers::PreconditionAMG>();
     preconditioner->initialize(matrix, list);
-    set_up_matrix   = &matrix.trilinos_matrix();
-    set_up_nonzeros = matrix.n_nonzero_elements();
-    fresh_next      = false;
-    ++setup_counts.all;
     setup_seconds += timer.wall_time();
   }
 
@@ -119,10 +80,9 @@ namespace contact_fem
                            TrilinosWrappers::MPI::Vector        &x,
                            const TrilinosWrappers::MPI::Vector  &rhs,
                            const bool                            symmetric,
-                           const double                          target,
-                           const unsigned int                    max_iterations)
+                           const double                          target)
   {
-    SolverControl control(max_iterations, target, false, false);
+    SolverControl control(parameters.max_iterations, target, false, false);
     try
       {
         if (symmetric)
@@ -163,15 +123,12 @@ namespace contact_fem
                          const TrilinosWrappers::MPI::Vector  &rhs,
                          const LinearSystemRequest            &request)
   {
-    // Set up for every solve: keeping the whole multigrid of the step's
-    // first iteration added 46 % of Krylov iterations (doc/performance.md,
-    // "Keeping the multigrid across Newton iterations"). On the same
-    // pattern only the aggregates are kept.
-    const bool recompute = can_recompute(matrix);
-    if (recompute)
-      recompute_preconditioner();
-    else
-      build_preconditioner(matrix);
+    // Rebuilt for every solve. Measured on prm/hertz.prm at 292k DoFs:
+    // keeping the multigrid of the step's first iteration doubled the
+    // Krylov iterations of the later ones (the contact rows change with the
+    // active set), and ML's recomputation on the kept aggregates cost as
+    // much as a new set-up and still added iterations; both were slower.
+    build_preconditioner(matrix);
     last_matrix    = &matrix;
     last_symmetric = request.symmetric;
     // Without a target (a caller that wants the exact answer), and never
@@ -179,31 +136,7 @@ namespace contact_fem
     const double floor = 1e-12 * rhs.l2_norm();
     const double target =
       std::max(floor, parameters.tolerance_factor * request.newton_residual_target);
-    if (recompute)
-      {
-        const unsigned int cap =
-          std::min(parameters.max_iterations, std::max(2 * fresh_iterations, 10u));
-        try
-          {
-            iterations = iterate(matrix, x, rhs, request.symmetric, target, cap);
-            if (iterations > recompute_growth * fresh_iterations)
-              fresh_next = true;
-          }
-        catch (const LinearSolverFailure &)
-          {
-            // The kept aggregates no longer fit the matrix: a fresh set-up
-            // solves from where the recomputed one stopped.
-            build_preconditioner(matrix);
-            fresh_iterations =
-              iterate(matrix, x, rhs, request.symmetric, target, parameters.max_iterations);
-            iterations = cap + fresh_iterations;
-          }
-      }
-    else
-      {
-        iterations = iterate(matrix, x, rhs, request.symmetric, target, parameters.max_iterations);
-        fresh_iterations = iterations;
-      }
+    iterations = iterate(matrix, x, rhs, request.symmetric, target);
     TrilinosWrappers::MPI::Vector check(rhs);
     return matrix.residual(check, x, rhs);
   }
@@ -214,7 +147,6 @@ namespace contact_fem
   {
     AssertThrow(can_solve_again(), ExcMessage("the iterative solver has no preconditioner"));
     x = 0.;
-    iterate(*last_matrix, x, rhs, last_symmetric, again_tolerance * rhs.l2_norm(),
-            parameters.max_iterations);
+    iterate(*last_matrix, x, rhs, last_symmetric, again_tolerance * rhs.l2_norm());
   }
 } // namespace contact_fem

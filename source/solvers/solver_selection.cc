@@ -116,12 +116,6 @@ namespace contact_fem
         return current->take_setup_seconds();
       }
 
-      SetupCounts
-      take_setup_counts() override
-      {
-        return current->take_setup_counts();
-      }
-
       bool
       can_solve_again() const override
       {

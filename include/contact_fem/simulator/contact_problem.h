@@ -404,9 +404,7 @@ namespace contact_fem
     std::vector<unsigned int> linear_iterations_of_step;
     /// Wall time of the multigrid set-ups of this cycle, part of "Solve:
     /// linear".
-    double multigrid_setup_seconds = 0.;
-    /// The multigrid set-ups of this cycle.
-    SetupCounts                   multigrid_setups;
+    double                        multigrid_setup_seconds = 0.;
     TrilinosWrappers::MPI::Vector system_rhs;
     TrilinosWrappers::MPI::Vector solution;         ///< owned
     TrilinosWrappers::MPI::Vector ghosted_solution; ///< locally relevant

@@ -37,16 +37,9 @@ namespace contact_fem
    * iteration limit throws LinearSolverFailure, naming the residual
    * reached.
    *
-   * The contact rows change with the active set in every Newton
-   * iteration, so the multigrid is set up for every solve. While the
-   * matrix keeps its object and pattern (the driver re-creates it, after
-   * clear(), only for a new pattern: a new mesh, load step or search), a
-   * set-up keeps ML's aggregates and recomputes the rest (the smoothed
-   * prolongators, the coarse operators, the smoothers) from the new
-   * entries; a fresh set-up follows a solve that needed more than
-   * recompute_growth times the Krylov iterations of the last fresh one,
-   * and retries a recomputed one that does not converge within twice
-   * those. solve_again() reuses the last preconditioner.
+   * The preconditioner is rebuilt for every solve: the contact rows change
+   * with the active set in every Newton iteration. solve_again() reuses
+   * the last one.
    */
   class IterativeSolver : public LinearSolver
   {
@@ -110,9 +103,6 @@ namespace contact_fem
     double
     take_setup_seconds() override;
 
-    SetupCounts
-    take_setup_counts() override;
-
     bool
     can_solve_again() const override
     {
@@ -142,11 +132,6 @@ namespace contact_fem
     /// (six probes: three axes, two bodies).
     static constexpr double again_tolerance = 1e-4;
 
-    /// A solve with a recomputed multigrid that needs more than this
-    /// factor times the Krylov iterations of the last fresh set-up makes
-    /// the next set-up a fresh one.
-    static constexpr double recompute_growth = 1.3;
-
   private:
     Parameters    parameters;
     ProblemTraits traits;
@@ -159,25 +144,9 @@ namespace contact_fem
     bool                                               last_symmetric = true;
     unsigned int                                       iterations     = 0;
     double                                             setup_seconds  = 0.;
-    /// The matrix the preconditioner was set up for (its Epetra object and
-    /// entry count): a recomputation needs the same object and pattern.
-    const void  *set_up_matrix    = nullptr;
-    std::size_t  set_up_nonzeros  = 0;
-    unsigned int fresh_iterations = 0;
-    bool         fresh_next       = true;
-    SetupCounts  setup_counts;
 
     void
     build_preconditioner(const TrilinosWrappers::SparseMatrix &matrix);
-
-    /// Recomputes the preconditioner for the new entries of the matrix it
-    /// was set up for, on its kept aggregates.
-    void
-    recompute_preconditioner();
-
-    /// Whether the next set-up can recompute the kept preconditioner.
-    bool
-    can_recompute(const TrilinosWrappers::SparseMatrix &matrix) const;
 
     /// Runs CG or GMRES to @p target; returns the iterations; throws
     /// LinearSolverFailure if the target is not reached.
@@ -186,8 +155,7 @@ namespace contact_fem
             TrilinosWrappers::MPI::Vector        &x,
             const TrilinosWrappers::MPI::Vector  &rhs,
             const bool                            symmetric,
-            const double                          target,
-            const unsigned int                    max_iterations);
+            const double                          target);
   };
 } // namespace contact_fem
 

@@ -30,14 +30,6 @@ namespace contact_fem
     bool singular;
   };
 
-  /// Preconditioner set-ups: all of them, and those that only recomputed a
-  /// kept preconditioner for new matrix entries.
-  struct SetupCounts
-  {
-    unsigned int all        = 0;
-    unsigned int recomputed = 0;
-  };
-
   /// What the caller knows about one system: whether it is symmetric, and
   /// the residual at which the Newton iteration accepts its result.
   struct LinearSystemRequest
@@ -158,13 +150,6 @@ namespace contact_fem
     take_setup_seconds()
     {
       return 0.;
-    }
-
-    /// Preconditioner set-ups since the last call; clears them.
-    virtual SetupCounts
-    take_setup_counts()
-    {
-      return {};
     }
 
     /// Whether solve_again() can answer for the matrix of the last solve()
