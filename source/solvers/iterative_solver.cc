@@ -123,11 +123,12 @@ namespace contact_fem
                          const TrilinosWrappers::MPI::Vector  &rhs,
                          const LinearSystemRequest            &request)
   {
-    // Rebuilt for every solve. Measured on prm/hertz.prm at 292k DoFs:
-    // keeping the multigrid of the step's first iteration doubled the
-    // Krylov iterations of the later ones (the contact rows change with the
-    // active set), and ML's recomputation on the kept aggregates cost as
-    // much as a new set-up and still added iterations; both were slower.
+    // Rebuilt for every solve (doc/performance.md, "Keeping the multigrid
+    // across Newton iterations"): keeping the multigrid of the step's first
+    // iteration added 46 % of Krylov iterations (the contact rows change
+    // with the active set), and ML's recomputation on the kept aggregates
+    // saved a third of the set-up in 2D but added 15-36 % of Krylov
+    // iterations; neither was reliably faster.
     build_preconditioner(matrix);
     last_matrix    = &matrix;
     last_symmetric = request.symmetric;
