@@ -648,12 +648,18 @@ namespace contact_fem
     // normal to e_d: its vertices' coordinate d agree to a fraction of
     // its diameter (an inclined support or a face oblique to the axis is
     // not a symmetry plane of the axis; a fixed point is not a face).
+    // A contact surface is never the plane: a surface that slides on a
+    // support (Fixed 4: y on the master's top) is held, not mirrored, and
+    // its normal is e_d itself.
+    std::set<types::boundary_id> contact_ids;
+    for (const auto &pair : pairs)
+      contact_ids.insert({pair.slave, pair.master});
     std::vector<types::global_dof_index> on_plane;
     std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary())
+          if (cell->face(f)->at_boundary() && contact_ids.count(cell->face(f)->boundary_id()) == 0)
             {
               const auto face = cell->face(f);
               face->get_dof_indices(face_dofs);
