@@ -18,6 +18,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -271,6 +272,7 @@ namespace contact_fem
       for (unsigned int d = 0; d < dim; ++d)
         if (node.fixed[d])
           fixed_positions[dof_position[node.dofs[d]]] = true;
+    find_symmetry_planes(dof_handler, dirichlet);
     find_hanging_vertices(hanging);
     {
       IndexSet relevant;
@@ -668,6 +670,66 @@ namespace contact_fem
           }
     slave_node_counts = {Utilities::MPI::sum(counts[0], mpi_communicator),
                          Utilities::MPI::sum(counts[1], mpi_communicator)};
+  }
+
+  template <int dim>
+  void
+  ContactInterface<dim>::find_symmetry_planes(const DoFHandler<dim>           &dof_handler,
+                                              const AffineConstraints<double> &dirichlet)
+  {
+    const auto &fe    = dof_handler.get_fe();
+    const auto  fixed = [&](const types::global_dof_index dof) {
+      return dirichlet.is_constrained(dof) && dirichlet.get_constraint_entries(dof)->empty();
+    };
+    // The component-d DoFs of the interface nodes on a roller face normal
+    // to e_d. A roller, not a clamp: d fixed at every node of the face,
+    // and no other component at every node (a node where two symmetry
+    // planes meet fixes both, the face's other nodes one). Flat and
+    // normal to e_d: its vertices' coordinate d agree to a fraction of
+    // its diameter (an inclined support or a face oblique to the axis is
+    // not a symmetry plane of the axis; a fixed point is not a face).
+    // A contact surface is never the plane: a surface that slides on a
+    // support (Fixed 4: y on the master's top) is held, not mirrored, and
+    // its normal is e_d itself.
+    std::set<types::boundary_id> contact_ids;
+    for (const auto &pair : pairs)
+      contact_ids.insert({pair.slave, pair.master});
+    std::vector<types::global_dof_index> on_plane;
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary() && contact_ids.count(cell->face(f)->boundary_id()) == 0)
+            {
+              const auto face = cell->face(f);
+              face->get_dof_indices(face_dofs);
+              std::array<bool, dim> all_fixed;
+              all_fixed.fill(true);
+              for (unsigned int i = 0; i < face_dofs.size(); ++i)
+                if (!fixed(face_dofs[i]))
+                  all_fixed[fe.face_system_to_component_index(i, f).first] = false;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  bool roller = all_fixed[d];
+                  for (unsigned int c = 0; c < dim; ++c)
+                    roller = roller && (c == d || !all_fixed[c]);
+                  for (const unsigned int v : face->vertex_indices())
+                    roller = roller && std::abs(face->vertex(v)[d] - face->vertex(0)[d]) <=
+                                         1e-8 * face->diameter();
+                  if (!roller)
+                    continue;
+                  for (unsigned int i = 0; i < face_dofs.size(); ++i)
+                    if (fe.face_system_to_component_index(i, f).first == d &&
+                        dof_position.count(face_dofs[i]) > 0)
+                      on_plane.push_back(face_dofs[i]);
+                }
+            }
+    std::set<types::global_dof_index> all;
+    for (const auto &chunk : Utilities::MPI::all_gather(mpi_communicator, on_plane))
+      all.insert(chunk.begin(), chunk.end());
+    for (Node &node : nodes)
+      for (unsigned int d = 0; d < dim; ++d)
+        node.symmetry_plane[d] = all.count(node.dofs[d]) > 0;
   }
 
   template <int dim>

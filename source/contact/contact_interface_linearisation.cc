@@ -118,6 +118,7 @@ namespace contact_fem
             if (inserted)
               {
                 patch.points.push_back(interface.nodes[n].reference + u[n]);
+                patch.symmetry_planes.push_back(interface.nodes[n].symmetry_plane);
                 add_terms(it->second, {{n, 1.}});
               }
             result.nodes.push_back(it->second);
@@ -135,6 +136,7 @@ namespace contact_fem
               }
             result.nodes.push_back(patch.points.size());
             patch.points.push_back(x);
+            patch.symmetry_planes.emplace_back();
             add_terms(result.nodes.back(), weights);
           }
         return result;

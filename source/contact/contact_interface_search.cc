@@ -69,6 +69,12 @@ namespace contact_fem
           }
     for (auto &[n, value] : result)
       {
+        // On a symmetry plane: the axis across it removed, the normal of
+        // the whole, mirror-symmetric surface (the faces at the node lie
+        // on one side of the plane only).
+        for (unsigned int d = 0; d < dim; ++d)
+          if (nodes[n].symmetry_plane[d])
+            value.first[d] = 0.;
         value.first /= value.first.norm();
         value.second /= measure_of_node[n];
         if (slave_data != nullptr)

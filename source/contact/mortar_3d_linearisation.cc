@@ -86,8 +86,16 @@ namespace contact_fem
                     normals[k] += Number(area * f.orientation / length(n)) * n;
                   }
           }
-        for (Tensor<1, 3, Number> &n : normals)
-          n = n / length(n);
+        for (unsigned int k = 0; k < normals.size(); ++k)
+          {
+            // On a symmetry plane: the axis across it removed (a linear
+            // projection, so its derivative is the projected derivative).
+            if (!patch.symmetry_planes.empty())
+              for (unsigned int d = 0; d < 3; ++d)
+                if (patch.symmetry_planes[slave.nodes[k]][d])
+                  normals[k][d] = Number(0.);
+            normals[k] = normals[k] / length(normals[k]);
+          }
         return normals;
       }
 

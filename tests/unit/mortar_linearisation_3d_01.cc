@@ -13,7 +13,10 @@
 //  - two masters meeting inside the slave face: the dual basis on both
 //    overlaps, the operators of each master (of the second only the
 //    error at h/4: quadrature points clamped to its rim near the shared
-//    edge make a kink within h).
+//    edge make a kink within h),
+//  - the covering master again with slave nodes on symmetry planes (their
+//    normals lose the components across the planes: zero, and so are
+//    those components' derivatives).
 // Quantities: averaged unit nodal normals, dual basis coefficients, D, M,
 // the weighted gap vector and its normal part. For every derivative, the
 // finite-difference error at h, h/2, h/4 (h = 2e-3 face diagonal) falls at
@@ -344,5 +347,33 @@ main()
       add_master(patch, master, {{{0.45, -0.3}, {1.35, -0.2}, {0.55, 1.25}, {1.3, 1.35}}}, shared));
     perturb(patch, random);
     check_derivatives("two masters meeting inside the slave face", patch);
+  }
+  {
+    // Slave nodes on symmetry planes (ContactInterface::Node::
+    // symmetry_plane): the grid column x = 0 on a plane normal to x, its
+    // node at y = 0 also on one normal to y. Their nodal normals lose
+    // those components before normalisation; the derivatives follow.
+    QuadFacePatch patch = slave_patch(slave);
+    patch.masters.push_back(
+      add_master(patch, master, {{{-0.3, -0.2}, {1.3, -0.4}, {-0.2, 1.35}, {1.4, 1.2}}}));
+    perturb(patch, random);
+    patch.symmetry_planes.resize(patch.points.size());
+    for (unsigned int j = 0; j < 4; ++j)
+      patch.symmetry_planes[4 * j + 1][0] = true;
+    patch.symmetry_planes[4 + 1][1] = true;
+    check_derivatives("master covering the slave face, nodes on symmetry planes", patch);
+    std::vector<LinearisedQuadPair> r;
+    linearise_slave_face(patch, true, r);
+    bool in_planes = true;
+    for (unsigned int k = 0; k < 4; ++k)
+      for (unsigned int d = 0; d < 3; ++d)
+        if (patch.symmetry_planes[patch.slave_faces[0].nodes[k]][d])
+          {
+            in_planes = in_planes && r[0].normals[k][d].value == 0.;
+            for (const double x : r[0].normals[k][d].derivatives)
+              in_planes = in_planes && x == 0.;
+          }
+    std::cout << "  normals and their derivatives in the planes: " << (in_planes ? "yes" : "NO")
+              << std::endl;
   }
 }

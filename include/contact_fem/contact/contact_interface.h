@@ -96,8 +96,14 @@ namespace contact_fem
       Point<dim>                               reference;
       std::array<types::global_dof_index, dim> dofs;
       std::array<bool, dim>                    fixed; ///< Dirichlet component
-      bool                                     slave  = false;
-      bool                                     master = false;
+      /// Per axis d: the node lies on a symmetry plane normal to e_d (a
+      /// support fixes component d on a flat boundary face normal to e_d
+      /// through the node and leaves the other components free there, a
+      /// roller). Its nodal normal has component d removed: the normal of
+      /// the whole, mirror-symmetric surface (find_symmetry_planes()).
+      std::array<bool, dim> symmetry_plane{};
+      bool                  slave  = false;
+      bool                  master = false;
       /// A hanging vertex of the surface (a node on the edge of a coarser
       /// neighbour face, 3D adaptive meshes): the nodes and weights its
       /// displacement is interpolated from. Empty for a regular node.
@@ -520,6 +526,13 @@ namespace contact_fem
     /// @p relevant, and empties the imports of share_node_values().
     void
     find_row_holders(const IndexSet &relevant);
+
+    /// Sets Node::symmetry_plane from the boundary faces of the locally
+    /// owned cells of @p dof_handler (at the reference configuration) and
+    /// the Dirichlet constraints @p dirichlet, gathered over the ranks.
+    void
+    find_symmetry_planes(const DoFHandler<dim>           &dof_handler,
+                         const AffineConstraints<double> &dirichlet);
 
     /// Sets pair_materials from the faces of every rank.
     void

@@ -43,6 +43,10 @@ namespace contact_fem
       /// Every master of the slave face: their overlaps, in this order,
       /// are the support of its dual basis (as ContactInterface builds it).
       std::vector<Face> masters;
+      /// Per point (empty: none): the axes normal to a symmetry plane
+      /// through it, removed from its nodal normal
+      /// (ContactInterface::Node::symmetry_plane).
+      std::vector<std::array<bool, 3>> symmetry_planes;
 
       /// A face as a QuadFace of the current coordinates.
       QuadFace

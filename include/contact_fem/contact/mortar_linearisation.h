@@ -45,6 +45,10 @@ namespace contact_fem
       /// pair's in the support of the dual basis, as ContactInterface builds
       /// it on all masters of a slave face.
       std::vector<Face> other_masters;
+      /// Per point (empty: none): the axes normal to a symmetry plane
+      /// through it, removed from its nodal normal
+      /// (ContactInterface::Node::symmetry_plane).
+      std::vector<std::array<bool, 2>> symmetry_planes;
 
       /// A face as a LineFace of the current coordinates.
       LineFace
