@@ -18,20 +18,6 @@ namespace contact_fem
   {
     namespace
     {
-      /// 1D node indices (in LineFace order: -1, 1, 0) of the tensor-product
-      /// node @p i of a quadrilateral face of degree @p p.
-      std::array<unsigned int, 2>
-      line_indices(const unsigned int p, const unsigned int i)
-      {
-        Assert(p == 1 || p == 2, ExcNotImplemented());
-        if (p == 1)
-          return {{i % 2, i / 2}};
-        // Vertices, the lines x = -1, x = 1, y = -1, y = 1, the centre.
-        static const unsigned int q2[9][2] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {0, 2},
-                                              {1, 2}, {2, 0}, {2, 1}, {2, 2}};
-        return {{q2[i][0], q2[i][1]}};
-      }
-
       /// Boundary nodes of a face of geometry degree @p p, counterclockwise
       /// in the parameter plane.
       std::vector<unsigned int>
@@ -622,27 +608,20 @@ namespace contact_fem
       }
     } // namespace
 
-    double
-    quad_shape_value(const unsigned int p, const unsigned int i, const Point<2> &xi)
-    {
-      const auto [a, b] = line_indices(p, i);
-      return shape_value(p, a, xi[0]) * shape_value(p, b, xi[1]);
-    }
-
     Tensor<1, 2>
     quad_shape_gradient(const unsigned int p, const unsigned int i, const Point<2> &xi)
     {
-      const auto [a, b] = line_indices(p, i);
+      const auto [a, b] = quad_line_indices(p, i);
       Tensor<1, 2> g;
-      g[0] = shape_derivative(p, a, xi[0]) * shape_value(p, b, xi[1]);
-      g[1] = shape_value(p, a, xi[0]) * shape_derivative(p, b, xi[1]);
+      g[0] = lagrange_derivative(p, a, xi[0]) * lagrange_value(p, b, xi[1]);
+      g[1] = lagrange_value(p, a, xi[0]) * lagrange_derivative(p, b, xi[1]);
       return g;
     }
 
     Point<2>
     quad_node_parameter(const unsigned int p, const unsigned int i)
     {
-      const auto [a, b] = line_indices(p, i);
+      const auto [a, b] = quad_line_indices(p, i);
       return Point<2>(node_parameter(p, a), node_parameter(p, b));
     }
 
@@ -655,13 +634,13 @@ namespace contact_fem
       std::array<double, 3> l0, l1;
       for (unsigned int a = 0; a <= p; ++a)
         {
-          l0[a] = shape_value(p, a, xi[0]);
-          l1[a] = shape_value(p, a, xi[1]);
+          l0[a] = lagrange_value(p, a, xi[0]);
+          l1[a] = lagrange_value(p, a, xi[1]);
         }
       Point<3> x;
       for (unsigned int i = 0; i < nodes.size(); ++i)
         {
-          const auto [a, b] = line_indices(p, i);
+          const auto [a, b] = quad_line_indices(p, i);
           x += (l0[a] * l1[b]) * nodes[i];
         }
       return x;
@@ -675,15 +654,15 @@ namespace contact_fem
       std::array<double, 3> l0, l1, dl0, dl1;
       for (unsigned int a = 0; a <= p; ++a)
         {
-          l0[a]  = shape_value(p, a, xi[0]);
-          l1[a]  = shape_value(p, a, xi[1]);
-          dl0[a] = shape_derivative(p, a, xi[0]);
-          dl1[a] = shape_derivative(p, a, xi[1]);
+          l0[a]  = lagrange_value(p, a, xi[0]);
+          l1[a]  = lagrange_value(p, a, xi[1]);
+          dl0[a] = lagrange_derivative(p, a, xi[0]);
+          dl1[a] = lagrange_derivative(p, a, xi[1]);
         }
       std::array<Tensor<1, 3>, 2> t;
       for (unsigned int i = 0; i < nodes.size(); ++i)
         {
-          const auto [a, b] = line_indices(p, i);
+          const auto [a, b] = quad_line_indices(p, i);
           t[0] += (dl0[a] * l1[b]) * nodes[i];
           t[1] += (l0[a] * dl1[b]) * nodes[i];
         }
@@ -716,12 +695,19 @@ namespace contact_fem
                 Me(j, k) += Nj * quad_shape_value(p, k, xi) * jxw;
             }
         });
-        FullMatrix<double> Me_inverse(n, n), A(n, n);
-        Me_inverse.invert(Me);
-        De.mmult(A, Me_inverse);
-        return A;
+        return dual_basis_from_integrals(De, Me);
       }
     } // namespace
+
+    FullMatrix<double>
+    dual_basis_from_integrals(const FullMatrix<double> &De, const FullMatrix<double> &Me)
+    {
+      const unsigned int n = De.m();
+      FullMatrix<double> Me_inverse(n, n), A(n, n);
+      Me_inverse.invert(Me);
+      De.mmult(A, Me_inverse);
+      return A;
+    }
 
     FullMatrix<double>
     dual_basis_coefficients(const QuadFace &slave)
@@ -805,8 +791,11 @@ namespace contact_fem
       // formed from the differences x_i - x, so that its round-off is that
       // of the face's size, not of the coordinates' distance from the
       // origin; Newton then reaches a parameter step of round-off size.
-      std::vector<Tensor<1, 3>> offsets(face.nodes.size());
-      for (unsigned int i = 0; i < face.nodes.size(); ++i)
+      // On the stack: project_along() runs for every quadrature point.
+      AssertIndexRange(face.nodes.size(), 10);
+      const unsigned int          n_nodes = face.nodes.size(), p = face.degree();
+      std::array<Tensor<1, 3>, 9> offsets;
+      for (unsigned int i = 0; i < n_nodes; ++i)
         offsets[i] = face.nodes[i] - x;
       eta              = Point<2>();
       double t         = 0.;
@@ -815,8 +804,8 @@ namespace contact_fem
         {
           const auto   tangents = face.tangents(eta);
           Tensor<1, 3> r        = -t * direction;
-          for (unsigned int i = 0; i < offsets.size(); ++i)
-            r += quad_shape_value(face.degree(), i, eta) * offsets[i];
+          for (unsigned int i = 0; i < n_nodes; ++i)
+            r += quad_shape_value(p, i, eta) * offsets[i];
           Tensor<2, 3> J;
           for (unsigned int i = 0; i < 3; ++i)
             {
@@ -1170,7 +1159,8 @@ namespace contact_fem
                          const QuadFace                                &master_values,
                          const unsigned int                             n_quadrature_points,
                          const std::vector<ParameterPolygonOf<Number>> &polygons,
-                         Operators                                     &result)
+                         Operators                                     &result,
+                         QuadOperatorsOf<double>                       *basis = nullptr)
       {
         const unsigned int ps = slave.shape_degree(), pm = master.shape_degree();
         const unsigned int ns = slave.n_shape_nodes(), nm = master.n_shape_nodes();
@@ -1186,7 +1176,19 @@ namespace contact_fem
             result.M(j, l) = Number(0.);
         result.overlap_area = 0.;
 
-        std::vector<Number>            phi(ns);
+        std::vector<Number> phi(ns);
+        std::vector<double> basis_phi(ns);
+        Table<2, double>    identity(ns, ns);
+        if (basis)
+          {
+            // As integrate_polygons() with Number = double initialises them.
+            basis->D.assign(ns, 0.);
+            basis->weighted_gap.assign(ns, Tensor<1, 3>());
+            basis->M.reinit(ns, nm);
+            basis->overlap_area = 0.;
+            for (unsigned int j = 0; j < ns; ++j)
+              identity(j, j) = 1.;
+          }
         const AuxiliaryPlaneOf<Number> plane = auxiliary_plane(slave, slave_normals);
         const auto add_point                 = [&](const Point<2, Number> &xi, const Number &jxw) {
           const Point<3, Number>     x_slave = slave.point(xi);
@@ -1209,6 +1211,14 @@ namespace contact_fem
 
           result.overlap_area += jxw;
           add_quadrature_point<3>(dual_coefficients, ps, pm, xi, eta, jxw, separation, phi, result);
+          if constexpr (!std::is_same_v<Number, double>)
+            if (basis)
+              {
+                // The double path's point: the values of this one.
+                basis->overlap_area += jxw.val();
+                add_quadrature_point<3>(identity, ps, pm, point_value(xi), point_value(eta),
+                                        jxw.val(), vector_value(separation), basis_phi, *basis);
+              }
         };
         for_each_point(slave, slave_values, plane, polygons, n_quadrature_points, add_point);
       }
@@ -1234,15 +1244,16 @@ namespace contact_fem
     integrate_polygons_of(const QuadFaceFor<Number>                     &slave,
                           const QuadFace                                &slave_values,
                           const std::vector<Tensor<1, 3, Number>>       &slave_normals,
-                          const Table<2, Number>                        &dual_coefficients,
+                          const Table<2, double>                        &dual_coefficients,
                           const QuadFaceFor<Number>                     &master,
                           const QuadFace                                &master_values,
                           const unsigned int                             n_quadrature_points,
                           const std::vector<ParameterPolygonOf<Number>> &polygons,
-                          QuadOperatorsOf<Number>                       &result)
+                          QuadOperatorsOf<Number>                       &result,
+                          QuadOperatorsOf<double>                       *basis)
     {
       integrate_polygons(slave, slave_values, slave_normals, dual_coefficients, master,
-                         master_values, n_quadrature_points, polygons, result);
+                         master_values, n_quadrature_points, polygons, result, basis);
     }
 
     template <typename Number>
@@ -1252,7 +1263,9 @@ namespace contact_fem
                             const std::vector<Tensor<1, 3, Number>>       &slave_normals,
                             const std::vector<ParameterPolygonOf<Number>> &polygons,
                             Table<2, Number>                              &De,
-                            Table<2, Number>                              &Me)
+                            Table<2, Number>                              &Me,
+                            FullMatrix<double>                            *De_values,
+                            FullMatrix<double>                            *Me_values)
     {
       const unsigned int  p = slave.shape_degree(), n = slave.n_shape_nodes();
       std::vector<Number> N(n);
@@ -1268,6 +1281,15 @@ namespace contact_fem
                            for (unsigned int k = j; k < n; ++k)
                              Me(j, k) += N[j] * N[k] * jxw;
                          }
+                       // The sums of dual_basis_from_rule(), in double.
+                       if (De_values)
+                         for (unsigned int j = 0; j < n; ++j)
+                           {
+                             const double Nj = value_of(N[j]), w = value_of(jxw);
+                             (*De_values)(j, j) += Nj * w;
+                             for (unsigned int k = 0; k < n; ++k)
+                               (*Me_values)(j, k) += Nj * value_of(N[k]) * w;
+                           }
                      });
       for (unsigned int j = 0; j < n; ++j)
         for (unsigned int k = 0; k < j; ++k)
@@ -1289,14 +1311,17 @@ namespace contact_fem
                                   const QuadFace &,
                                   const unsigned int,
                                   const std::vector<ParameterPolygon> &,
-                                  QuadOperatorsOf<double> &);
+                                  QuadOperatorsOf<double> &,
+                                  QuadOperatorsOf<double> *);
     template void
     dual_basis_integrals_of<double>(const QuadFace &,
                                     const QuadFace &,
                                     const std::vector<Tensor<1, 3>> &,
                                     const std::vector<ParameterPolygon> &,
                                     Table<2, double> &,
-                                    Table<2, double> &);
+                                    Table<2, double> &,
+                                    FullMatrix<double> *,
+                                    FullMatrix<double> *);
 
     // The AD numbers of linearise_slave_face(), by the pair's number of
     // variables.
@@ -1307,12 +1332,14 @@ namespace contact_fem
                                    std::vector<ParameterPolygonOf<Number>> &);                   \
   template void integrate_polygons_of<Number>(                                                   \
     const QuadFaceOf<Number> &, const QuadFace &, const std::vector<Tensor<1, 3, Number>> &,     \
-    const Table<2, Number> &, const QuadFaceOf<Number> &, const QuadFace &, const unsigned int,  \
-    const std::vector<ParameterPolygonOf<Number>> &, QuadOperatorsOf<Number> &);                 \
+    const Table<2, double> &, const QuadFaceOf<Number> &, const QuadFace &, const unsigned int,  \
+    const std::vector<ParameterPolygonOf<Number>> &, QuadOperatorsOf<Number> &,                  \
+    QuadOperatorsOf<double> *);                                                                  \
   template void dual_basis_integrals_of<Number>(const QuadFaceOf<Number> &, const QuadFace &,    \
                                                 const std::vector<Tensor<1, 3, Number>> &,       \
                                                 const std::vector<ParameterPolygonOf<Number>> &, \
-                                                Table<2, Number> &, Table<2, Number> &)
+                                                Table<2, Number> &, Table<2, Number> &,          \
+                                                FullMatrix<double> *, FullMatrix<double> *)
     CONTACT_FEM_INSTANTIATE_AD(PairADNumber);
     CONTACT_FEM_INSTANTIATE_AD(CurvedPairADNumber);
     CONTACT_FEM_INSTANTIATE_AD(QuadraticPairADNumber);

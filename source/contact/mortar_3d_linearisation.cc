@@ -268,8 +268,12 @@ namespace contact_fem
         // variables.
         std::vector<MasterPart<Number>> parts;
         std::vector<ParameterPolygon>   all_polygons;
-        std::vector<unsigned int>       polygon_sizes;
-        bool                            any = false;
+        // With derivatives, the double sums of dual_basis_coefficients()
+        // over all_polygons, added by dual_basis_integrals_of() from its
+        // points (master by master, the order of all_polygons).
+        FullMatrix<double>        De_values(n, n), Me_values(n, n);
+        std::vector<unsigned int> polygon_sizes;
+        bool                      any = false;
         for (const QuadFacePatch::Face &m : patch.masters)
           {
             std::vector<unsigned int> points = patch.slave_faces[0].nodes;
@@ -307,7 +311,8 @@ namespace contact_fem
                   }
                 if constexpr (ad)
                   dual_basis_integrals_of<Number>(part.slave, slave_values, part.normals,
-                                                  part.polygons, part.De, part.Me);
+                                                  part.polygons, part.De, part.Me, &De_values,
+                                                  &Me_values);
               }
             parts.push_back(std::move(part));
           }
@@ -317,7 +322,8 @@ namespace contact_fem
         // A = D_e M_e^{-1} in double (the double path's values); dA =
         // (dD_e - A dM_e) M_e^{-1}, D_e and M_e summed over the masters.
         const FullMatrix<double> A =
-          dual_basis_coefficients(slave_values, normal_values, all_polygons);
+          ad ? dual_basis_from_integrals(De_values, Me_values) :
+               dual_basis_coefficients(slave_values, normal_values, all_polygons);
         std::vector<std::vector<Linearised>> dual(n, std::vector<Linearised>(n));
         for (unsigned int j = 0; j < n; ++j)
           for (unsigned int k = 0; k < n; ++k)
@@ -347,39 +353,25 @@ namespace contact_fem
         // Each master's operators at fixed A, in its variables; they are
         // linear in A: dD_j = ... + sum_k dA_jk int N_k (and so on), the
         // integrals of the standard basis (A = identity) in double.
-        Table<2, Number> A_fixed(n, n);
-        Table<2, double> identity(n, n);
+        Table<2, double> A_fixed(n, n);
         for (unsigned int j = 0; j < n; ++j)
-          {
-            identity(j, j) = 1.;
-            for (unsigned int k = 0; k < n; ++k)
-              A_fixed(j, k) = A(j, k);
-          }
+          for (unsigned int k = 0; k < n; ++k)
+            A_fixed(j, k) = A(j, k);
         pairs.assign(patch.masters.size(), LinearisedQuadPair());
         for (unsigned int i = 0; i < parts.size(); ++i)
           {
             const MasterPart<Number> &part = parts[i];
             if (part.polygons.empty())
               continue;
-            const QuadFace          master_values = patch.quad_face(patch.masters[i]);
-            const unsigned int      n_points = n_quadrature_points(slave_values, master_values);
+            const QuadFace     master_values = patch.quad_face(patch.masters[i]);
+            const unsigned int n_points      = n_quadrature_points(slave_values, master_values);
+            // With derivatives, the integrals of the standard basis
+            // (A = identity) in double come from the same points.
             QuadOperatorsOf<Number> ops;
-            integrate_polygons_of<Number>(part.slave, slave_values, part.normals, A_fixed,
-                                          part.master, master_values, n_points, part.polygons, ops);
             QuadOperatorsOf<double> basis;
-            if constexpr (ad)
-              {
-                std::vector<ParameterPolygon> polygons;
-                for (const ParameterPolygonOf<Number> &polygon : part.polygons)
-                  {
-                    polygons.emplace_back();
-                    for (const Point<2, Number> &xi : polygon)
-                      polygons.back().emplace_back(value(xi[0]), value(xi[1]));
-                  }
-                integrate_polygons_of<double>(slave_values, slave_values, normal_values, identity,
-                                              master_values, master_values, n_points, polygons,
-                                              basis);
-              }
+            integrate_polygons_of<Number>(part.slave, slave_values, part.normals, A_fixed,
+                                          part.master, master_values, n_points, part.polygons, ops,
+                                          ad ? &basis : nullptr);
             // The value of x, its derivatives at fixed A plus those of
             // sum_k A_jk basis_k.
             const auto linearised = [&](const Number &x, const unsigned int j,

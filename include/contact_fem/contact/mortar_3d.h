@@ -11,6 +11,8 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include <contact_fem/contact/mortar.h>
+
 #include <array>
 #include <vector>
 
@@ -78,10 +80,29 @@ namespace contact_fem
       tangents(const Point<2> &xi) const;
     };
 
+    /// The 1D node indices (LineFace order: -1 -> 0, 1 -> 1, 0 -> 2) of
+    /// node @p i of a quadrilateral face of degree @p p (1 or 2). Inline,
+    /// as the shapes below: the kernel evaluates them at every quadrature
+    /// point.
+    inline std::array<unsigned int, 2>
+    quad_line_indices(const unsigned int p, const unsigned int i)
+    {
+      if (p == 1)
+        return {{i % 2, i / 2}};
+      // Vertices, the lines x = -1, x = 1, y = -1, y = 1, the centre.
+      static constexpr unsigned int q2[9][2] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {0, 2},
+                                                {1, 2}, {2, 0}, {2, 1}, {2, 2}};
+      return {{q2[i][0], q2[i][1]}};
+    }
+
     /// Tensor-product Lagrange shape function @p i of degree @p p (node
     /// order of QuadFace) at @p xi.
-    double
-    quad_shape_value(const unsigned int p, const unsigned int i, const Point<2> &xi);
+    inline double
+    quad_shape_value(const unsigned int p, const unsigned int i, const Point<2> &xi)
+    {
+      const auto [a, b] = quad_line_indices(p, i);
+      return lagrange_value(p, a, xi[0]) * lagrange_value(p, b, xi[1]);
+    }
     /// Gradient with respect to (xi, eta) of quad_shape_value().
     Tensor<1, 2>
     quad_shape_gradient(const unsigned int p, const unsigned int i, const Point<2> &xi);

@@ -74,18 +74,6 @@ namespace contact_fem
 {
   namespace Mortar
   {
-    /// The 1D node indices (LineFace order) of node @p i of a quadrilateral
-    /// face of degree @p p: -1 -> 0, 1 -> 1, 0 -> 2.
-    inline std::array<unsigned int, 2>
-    quad_line_indices(const unsigned int p, const unsigned int i)
-    {
-      const Point<2> node  = quad_node_parameter(p, i);
-      const auto     index = [](const double x) {
-        return x < 0. ? 0u : (x > 0. ? 1u : 2u);
-      };
-      return {{index(node[0]), index(node[1])}};
-    }
-
     /// quad_shape_value() for a double or an AD parameter @p xi.
     template <typename Number>
     Number
@@ -148,7 +136,11 @@ namespace contact_fem
       point(const Point<2, Number> &xi) const
       {
         if (first_variable >= 0)
-          return Point<3, Number>(chained(xi, false)[0]);
+          {
+            Point<3, Number> x;
+            chained(xi, 0, 1, &x);
+            return x;
+          }
         const unsigned int    p = degree();
         std::array<Number, 3> l0, l1;
         for (unsigned int a = 0; a <= p; ++a)
@@ -171,8 +163,9 @@ namespace contact_fem
       {
         if (first_variable >= 0)
           {
-            const auto t = chained(xi, true);
-            return {{t[1], t[2]}};
+            std::array<Tensor<1, 3, Number>, 2> t;
+            chained(xi, 1, 2, t.data());
+            return t;
           }
         const unsigned int    p = degree();
         std::array<Number, 3> l0, l1, dl0, dl1;
@@ -199,16 +192,21 @@ namespace contact_fem
       }
 
       /**
-       * The point (entry 0) or the tangents (entries 1, 2) at @p xi for
-       * nodes that are AD variables (first_variable): y = sum_i S_i(xi) x_i
+       * The point (r = 0) or the tangents (r = 1, 2) at @p xi for
+       * nodes that are AD variables (first_variable), results @p first to
+       * @p first + @p n_results - 1 into @p result: y = sum_i S_i(xi) x_i
        * with S_i the shape or its xi or eta derivative, values as point()
        * and tangents() form them; dy = sum_i (dS_i/dxi_c x_i) dxi_c +
        * S_i dx_i, the first sums in double, then one pass over the
        * derivatives (the AD products of point(), tangents() pass over
-       * them once per node and component).
+       * them once per node and component). The shapes are tabulated once
+       * per call (the same products as node by node).
        */
-      std::array<Tensor<1, 3, Number>, 3>
-      chained(const Point<2, Number> &xi, const bool tangent) const
+      void
+      chained(const Point<2, Number> &xi,
+              const unsigned int      first,
+              const unsigned int      n_results,
+              Tensor<1, 3, Number>   *result) const
       {
         const unsigned int    p = degree();
         const double          u = xi[0].val(), v = xi[1].val();
@@ -222,45 +220,54 @@ namespace contact_fem
             ddl0[a] = p == 1 ? 0. : (a == 2 ? -2. : 1.);
             ddl1[a] = ddl0[a];
           }
-        const unsigned int n_results = tangent ? 2 : 1;
-        // For result r: shape S, and its derivatives in xi and eta.
-        const auto shape = [&](const unsigned int r, const unsigned int a, const unsigned int b,
-                               const unsigned int c) {
-          if (r == 0)
-            return c == 0 ? l0[a] * l1[b] : (c == 1 ? dl0[a] * l1[b] : l0[a] * dl1[b]);
-          if (r == 1)
-            return c == 0 ? dl0[a] * l1[b] : (c == 1 ? ddl0[a] * l1[b] : dl0[a] * dl1[b]);
-          return c == 0 ? l0[a] * dl1[b] : (c == 1 ? dl0[a] * dl1[b] : l0[a] * ddl1[b]);
-        };
-        std::array<Tensor<1, 3, Number>, 3> result;
-        const int                           n = xi[0].size();
+        // shapes[c][i] for result r: S_i, and its derivatives in xi and eta.
+        const unsigned int                   n_nodes = nodes.size();
+        std::array<std::array<double, 9>, 3> shapes;
+        const int                            n = xi[0].size();
         for (unsigned int k = 0; k < n_results; ++k)
           {
-            const unsigned int r = tangent ? k + 1 : 0;
+            const unsigned int r = first + k;
+            for (unsigned int i = 0; i < n_nodes; ++i)
+              {
+                const auto [a, b] = quad_line_indices(p, i);
+                if (r == 0)
+                  {
+                    shapes[0][i] = l0[a] * l1[b];
+                    shapes[1][i] = dl0[a] * l1[b];
+                    shapes[2][i] = l0[a] * dl1[b];
+                  }
+                else if (r == 1)
+                  {
+                    shapes[0][i] = dl0[a] * l1[b];
+                    shapes[1][i] = ddl0[a] * l1[b];
+                    shapes[2][i] = dl0[a] * dl1[b];
+                  }
+                else
+                  {
+                    shapes[0][i] = l0[a] * dl1[b];
+                    shapes[1][i] = dl0[a] * dl1[b];
+                    shapes[2][i] = l0[a] * ddl1[b];
+                  }
+              }
             for (unsigned int d = 0; d < 3; ++d)
               {
                 double value = 0., by_xi = 0., by_eta = 0.;
-                for (unsigned int i = 0; i < nodes.size(); ++i)
+                for (unsigned int i = 0; i < n_nodes; ++i)
                   {
-                    const auto [a, b] = quad_line_indices(p, i);
-                    const double x    = nodes[i][d].val();
-                    value += shape(r, a, b, 0) * x;
-                    by_xi += shape(r, a, b, 1) * x;
-                    by_eta += shape(r, a, b, 2) * x;
+                    const double x = nodes[i][d].val();
+                    value += shapes[0][i] * x;
+                    by_xi += shapes[1][i] * x;
+                    by_eta += shapes[2][i] * x;
                   }
-                Number &y = result[r][d];
-                y         = Number(value);
+                Number &y = result[k][d];
+                y.val()   = value;
                 for (int w = 0; w < n; ++w)
                   y.fastAccessDx(w) =
                     by_xi * xi[0].fastAccessDx(w) + by_eta * xi[1].fastAccessDx(w);
-                for (unsigned int i = 0; i < nodes.size(); ++i)
-                  {
-                    const auto [a, b] = quad_line_indices(p, i);
-                    y.fastAccessDx(first_variable + 3 * i + d) += shape(r, a, b, 0);
-                  }
+                for (unsigned int i = 0; i < n_nodes; ++i)
+                  y.fastAccessDx(first_variable + 3 * i + d) += shapes[0][i];
               }
           }
-        return result;
       }
       /// The point at a parameter @p xi that is not differentiated (a root
       /// found in double): the shapes in double.
@@ -271,15 +278,18 @@ namespace contact_fem
           {
             // The same numbers as the sums below (whose other terms are
             // zero).
+            std::array<double, 9> N;
+            for (unsigned int i = 0; i < nodes.size(); ++i)
+              N[i] = quad_shape_value(degree(), i, xi);
             Point<3, Number> x;
             for (unsigned int d = 0; d < 3; ++d)
               {
                 double value = 0.;
                 for (unsigned int i = 0; i < nodes.size(); ++i)
-                  value += quad_shape_value(degree(), i, xi) * nodes[i][d].val();
+                  value += N[i] * nodes[i][d].val();
                 x[d] = Number(value);
                 for (unsigned int i = 0; i < nodes.size(); ++i)
-                  x[d].fastAccessDx(first_variable + 3 * i + d) = quad_shape_value(degree(), i, xi);
+                  x[d].fastAccessDx(first_variable + 3 * i + d) = N[i];
               }
             return x;
           }
@@ -330,6 +340,11 @@ namespace contact_fem
 
     /// D_e = diag(int N_j) and M_e = (int N_j N_k) over @p polygons, as
     /// dual_basis_coefficients() integrates them. @p De, @p Me: zero n x n.
+    /// If given, @p De_values and @p Me_values (n x n) get the same sums
+    /// added in double from the values of the points: what
+    /// dual_basis_coefficients() sums over these polygons, bit for bit
+    /// (the AD values are those of the double path), without a second
+    /// pass over the points.
     template <typename Number>
     void
     dual_basis_integrals_of(const QuadFaceFor<Number>                     &slave,
@@ -337,22 +352,34 @@ namespace contact_fem
                             const std::vector<Tensor<1, 3, Number>>       &slave_normals,
                             const std::vector<ParameterPolygonOf<Number>> &polygons,
                             Table<2, Number>                              &De,
-                            Table<2, Number>                              &Me);
+                            Table<2, Number>                              &Me,
+                            FullMatrix<double>                            *De_values = nullptr,
+                            FullMatrix<double>                            *Me_values = nullptr);
+
+    /// A = D_e M_e^{-1} from the integrals of dual_basis_integrals_of()
+    /// in double (as dual_basis_coefficients() forms it).
+    FullMatrix<double>
+    dual_basis_from_integrals(const FullMatrix<double> &De, const FullMatrix<double> &Me);
 
     /// integrate_pair() on the given overlap @p polygons (overlap_of()),
     /// with dual basis coefficients @p dual_coefficients; the quadrature
-    /// points are projected onto the master as there.
+    /// points are projected onto the master as there. If given, @p basis
+    /// gets, in double from the values of the same points, the operators
+    /// of the standard basis (dual coefficients the identity): what
+    /// integrate_polygons_of<double>() with the identity gives on the
+    /// polygons' values, bit for bit, without a second pass.
     template <typename Number>
     void
     integrate_polygons_of(const QuadFaceFor<Number>                     &slave,
                           const QuadFace                                &slave_values,
                           const std::vector<Tensor<1, 3, Number>>       &slave_normals,
-                          const Table<2, Number>                        &dual_coefficients,
+                          const Table<2, double>                        &dual_coefficients,
                           const QuadFaceFor<Number>                     &master,
                           const QuadFace                                &master_values,
                           const unsigned int                             n_quadrature_points,
                           const std::vector<ParameterPolygonOf<Number>> &polygons,
-                          QuadOperatorsOf<Number>                       &result);
+                          QuadOperatorsOf<Number>                       &result,
+                          QuadOperatorsOf<double>                       *basis = nullptr);
   } // namespace Mortar
 } // namespace contact_fem
 
