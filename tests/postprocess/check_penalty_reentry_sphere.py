@@ -21,8 +21,13 @@ stick/slip cycles. Checks:
   stiffer moves it by 2e-5, so the rest is not the penetration but the
   formulations' frames: alm's pair tangential force has a z component of
   3e-3 of its size, the penalty's, in the interface frame, none);
-- the pair's in-plane force (normal plus tangential, x and y) agrees
-  within 1e-2 (measured 1.3e-3).
+- the pair's friction ratio |T| / |N| agrees within 1.5e-2 (measured
+  8.3e-3: the frames again, alm's slave normal against the penalty's
+  interface normal, a difference of the coarse mesh's that falls to
+  2.4e-4 at Sphere refinements 3 with the same sets). The in-plane force
+  (normal plus tangential, x and y) was compared before the symmetry-plane
+  normal landed; it agreed only while both carried normal force across the
+  planes, which the nodal normal on a symmetry plane no longer does.
 
 CONTACT_FEM_PERTURBATION_SEED, if set, renumbers the DoFs.
 """
@@ -47,7 +52,7 @@ def vector(text):
 
 
 def final_state(output):
-    """Active, stick, slip counts, p_max and the pair's in-plane force at t = 1."""
+    """Active, stick, slip counts, p_max and the pair's |T| / |N| at t = 1."""
     results = output[output.rfind("Results at t = 1:"):] if "Results at t = 1:" in output else ""
     active = re.search(r"active slave nodes:\s+(\d+)", results)
     sets = re.search(r"stick / slip nodes:\s+(\d+) / (\d+)", results)
@@ -58,7 +63,7 @@ def final_state(output):
     normal, tangential = vector(pair[-1][0]), vector(pair[-1][1])
     return {"sets": (int(active.group(1)), int(sets.group(1)), int(sets.group(2))),
             "p_max": float(p_max.group(1)),
-            "in_plane": [normal[i] + tangential[i] for i in range(2)]}
+            "ratio": sum(t * t for t in tangential) ** 0.5 / sum(n * n for n in normal) ** 0.5}
 
 
 def main():
@@ -81,10 +86,9 @@ def main():
                 f"{penalty['sets']} against {reference['sets']}") and ok
     p_max = abs(penalty["p_max"] / reference["p_max"] - 1.)
     ok = report("p_max as alm frictional's within 3e-3", p_max < 3e-3, f"{p_max:.1e}") and ok
-    size = max(abs(f) for f in reference["in_plane"])
-    in_plane = max(abs(a - b) for a, b in zip(penalty["in_plane"], reference["in_plane"])) / size
-    ok = report("pair in-plane force as alm frictional's within 1e-2", in_plane < 1e-2,
-                f"{in_plane:.1e}") and ok
+    ratio = abs(penalty["ratio"] / reference["ratio"] - 1.)
+    ok = report("pair |T| / |N| as alm frictional's within 1.5e-2", ratio < 1.5e-2,
+                f"{ratio:.1e}") and ok
     sys.exit(0 if ok else 1)
 
 
