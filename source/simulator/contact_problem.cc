@@ -298,6 +298,16 @@ namespace contact_fem
     auto formulation = ContactFormulation<dim>::create(prm);
     if (!contact_parameters.pairs.empty())
       contact = std::move(formulation);
+    // Finite deformation only: small-strain scenes pay nothing.
+    if (finite_strain || (contact && contact_parameters.current_kinematics))
+      {
+        std::vector<ContactPair> pairs = contact_parameters.pairs;
+        pairs.insert(pairs.end(), contact_parameters.tied_pairs.begin(),
+                     contact_parameters.tied_pairs.end());
+        interpenetration =
+          std::make_unique<InterpenetrationCheck<dim>>(dof_handler, *mapping, pairs,
+                                                       contact_parameters.penetration_tolerance);
+      }
     newton_parameters.parse_parameters(prm);
     refinement.parse_parameters(prm);
     spr_settings.parse_parameters(prm);
@@ -306,6 +316,8 @@ namespace contact_fem
     comparison = AnalyticalComparison<dim>::create(analytical);
     output.parse_parameters(prm, dim);
     model_range.parse_parameters(prm);
+    if (model_range.accept_interpenetration)
+      interpenetration.reset();
     memory_warning = input_checks().check_scene_before_meshing(inclined_supports);
 
     timer = std::make_unique<TimerOutput>(comm, pcout, TimerOutput::never, TimerOutput::wall_times);
@@ -1062,6 +1074,22 @@ namespace contact_fem
       "load step " + std::to_string(step + 1) + " (t = " + std::to_string(time) + ")";
 
     const unsigned int iterations = newton_iterations(where, step, time, step_size);
+    if (interpenetration)
+      {
+        // Before "converged": no boundary vertex inside a body where no
+        // contact pair accounts for it (a fold, an unpaired body).
+        TimerOutput::Scope t(*timer, "Check: interpenetration");
+        const auto         finding =
+          interpenetration->check(solution, ghosted_solution,
+                                  search ? search->allowed_depths(interface_displacement) :
+                                           std::map<types::global_dof_index, double>());
+        record.set("interpenetration_check", interpenetration->record(finding));
+        if (finding.found)
+          {
+            interpenetration_finding = interpenetration->record(finding);
+            throw NewtonFailure(where + ": " + interpenetration->message(finding), false);
+          }
+      }
     newton_iterations_of_cycle.push_back(iterations);
     record.set("time", time)
       .set("newton_iterations", iterations)
@@ -1712,7 +1740,10 @@ namespace contact_fem
         cycle_record.set("failure", cause);
         return false;
       }
+    interpenetration_finding.reset();
     const LoadPath path = step_the_load(cycle, cycle_record);
+    if (interpenetration_finding)
+      cycle_record.set("interpenetration", *interpenetration_finding);
     check_converged_solution(path.n_solved > 0, cycle_record);
     if (path.n_solved == 0)
       return false;

@@ -612,6 +612,16 @@ namespace contact_fem
                       "summary.json and exit code 3 (the results are written); "
                       "true accepts such results (status 'converged', exit 0, "
                       "the warnings stay).");
+    prm.declare_entry("Accept interpenetration", "false", Patterns::Bool(),
+                      "With finite deformation (a finite-strain body or "
+                      "Contact/Kinematics = current) every converged load step "
+                      "is checked for boundary vertices inside a body where no "
+                      "contact pair accounts for them (a body folding onto "
+                      "itself, or passing through a body it is not paired "
+                      "with): with false such a step is refused (exit 2). true "
+                      "skips the check, for bodies that do not interact by "
+                      "design (e.g. two specimens in one mesh whose deformed "
+                      "shapes overlap).");
     prm.leave_subsection();
   }
 
@@ -620,6 +630,7 @@ namespace contact_fem
   {
     prm.enter_subsection("Model range");
     accept_outside = prm.get_bool("Accept results outside the small-strain range");
+    accept_interpenetration = prm.get_bool("Accept interpenetration");
     prm.leave_subsection();
   }
 } // namespace contact_fem

@@ -167,6 +167,27 @@ namespace contact_fem
   }
 
   template <int dim>
+  double
+  SearchControl<dim>::allowed_penetration(const typename ContactInterface<dim>::SlaveNode &s,
+                                          const std::vector<double> &displacement) const
+  {
+    return s.paired ? std::max(0., -interface.nodal_gap(s, displacement)) +
+                        max_sliding_angle * interface.slip_since_search(s, displacement) :
+                      0.;
+  }
+
+  template <int dim>
+  std::map<types::global_dof_index, double>
+  SearchControl<dim>::allowed_depths(const std::vector<double> &displacement) const
+  {
+    std::map<types::global_dof_index, double> result;
+    for (const auto &s : interface.slave_nodes)
+      result[interface.nodes[s.node].dofs[0]] =
+        allowed_penetration(s, displacement) + parameters.penetration_tolerance * s.size;
+    return result;
+  }
+
+  template <int dim>
   typename SearchControl<dim>::PenetrationCheck
   SearchControl<dim>::check_penetration(const std::vector<double> &displacement) const
   {
@@ -178,9 +199,7 @@ namespace contact_fem
     // linearised surface by about s theta, which small sliding bounds by
     // theta < max_sliding_angle.
     const auto allowed_at = [&](const typename ContactInterface<dim>::SlaveNode &s) {
-      return s.paired ? std::max(0., -interface.nodal_gap(s, displacement)) +
-                          max_sliding_angle * interface.slip_since_search(s, displacement) :
-                        0.;
+      return allowed_penetration(s, displacement);
     };
     // Each rank checks the slave nodes and hanging slave vertices it owns
     // (ContactInterface::owns_node()). Only a node whose excess is positive

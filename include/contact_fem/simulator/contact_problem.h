@@ -33,6 +33,7 @@
 #include <contact_fem/simulator/input_checks.h>
 #include <contact_fem/simulator/newton_failure.h>
 #include <contact_fem/simulator/search_control.h>
+#include <contact_fem/simulator/interpenetration_check.h>
 #include <contact_fem/simulator/inclined_supports.h>
 #include <contact_fem/simulator/scene_parameters.h>
 #include <contact_fem/contact/contact_parameters.h>
@@ -49,6 +50,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace contact_fem
@@ -441,6 +443,11 @@ namespace contact_fem
     std::unique_ptr<MeshTying<dim>> tying;
     /// The search of the interface over the load steps (with contact).
     std::unique_ptr<SearchControl<dim>> search;
+    /// With finite deformation (a finite-strain body or Contact/Kinematics
+    /// = current) only: the interpenetration check of each converged load
+    /// step, and what it found (summary.json, cycles[].interpenetration).
+    std::unique_ptr<InterpenetrationCheck<dim>> interpenetration;
+    std::optional<Json>                         interpenetration_finding;
     /// A direct solve whose residual exceeds this fraction of the
     /// right-hand side has met a singular matrix.
     static constexpr double singular_residual_ratio = 1e-3;

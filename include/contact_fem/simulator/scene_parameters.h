@@ -168,6 +168,8 @@ namespace contact_fem
     static constexpr double rotation_limit     = 0.1; ///< rad
     static constexpr double displacement_limit = 0.5; ///< of the model size
     bool                    accept_outside     = false;
+    /// Skip the interpenetration check (Accept interpenetration).
+    bool accept_interpenetration = false;
 
     static void
     declare_parameters(ParameterHandler &prm);

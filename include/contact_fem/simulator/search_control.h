@@ -12,6 +12,7 @@
 #include <contact_fem/contact/formulations/contact_formulation.h>
 #include <contact_fem/simulator/newton_failure.h>
 
+#include <map>
 #include <vector>
 
 namespace contact_fem
@@ -68,6 +69,13 @@ namespace contact_fem
            const double               time,
            const double               step_size);
 
+    /// Per slave node (its x DoF, every node on every rank): the depth in
+    /// the master that the penetration check allows it at @p displacement
+    /// (what its gap explains, plus the tolerance); for the
+    /// interpenetration check.
+    std::map<types::global_dof_index, double>
+    allowed_depths(const std::vector<double> &displacement) const;
+
     /// Of the last accepted step: the largest unexplained penetration over
     /// the element size.
     double
@@ -92,6 +100,11 @@ namespace contact_fem
     /// owns; the same on every rank. Collective.
     PenetrationCheck
     check_penetration(const std::vector<double> &displacement) const;
+    /// What a slave node's own mortar gap and a small-sliding
+    /// linearisation account for of its penetration (zero if unpaired).
+    double
+    allowed_penetration(const typename ContactInterface<dim>::SlaveNode &s,
+                        const std::vector<double>                       &displacement) const;
     /// The diagnosis of a failed check_penetration(); splittable with
     /// updated kinematics only.
     NewtonFailure
