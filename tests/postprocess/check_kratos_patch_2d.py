@@ -7,11 +7,10 @@ digits, compared by numdiff to 1e-6 absolute: 8e-4 of u_x).
 Usage: check_kratos_patch_2d.py CONTACT_FEM SCENE.prm RESULTS.json MESH.msh
 
 RESULTS.json is Kratos' hyper_simple_patch_test_results.json, a verbatim
-copy in meshes/kratos/ALM_frictionless_2D_hyper_simple_patch_test/ of the
-file of the team's ../shared/validation/kratos/
-ALM_frictionless_2D_hyper_simple_patch_test/ (Kratos' repository,
-applications/ContactStructuralMechanicsApplication/tests/
-ALM_frictionless_contact_test_2D/, commit 1c01e3a7; meshes/kratos/README.md).
+copy in meshes/kratos/ALM_frictionless_2D_hyper_simple_patch_test/ of
+the file in Kratos' repository (applications/
+ContactStructuralMechanicsApplication/tests/ALM_frictionless_contact_test_2D/,
+commit 1c01e3a7; the origin in meshes/kratos/README.md).
 MESH.msh is the scene's mesh, converted from Kratos' .mdpa with Kratos'
 node ids: each probe is matched to the Kratos node at its point. Every
 component of u at the four interface nodes must equal Kratos' to 1e-6
