@@ -26,7 +26,8 @@ starting sets for a period-2 cycle (doc/finite_strain.md).
   1e-6, D_j the lumped weight of node j on the deformed slab top (from the
   step's contact-surface VTU, 10 digits; their sum is the pair's area of
   forces.csv to 1e-4), and each node on its bound, ||t_j| - mu p_j| below
-  1e-8 of mu max p (the run's own cone check, there at the last step only);
+  1e-8 of mu max p (the bound of the run's own cone check, which the run
+  prints for the last step only);
 - on every plateau step the die's ratio is the pair's, leaned: F_t / F_n
   of the die's reaction equals (q - l) / (1 + q l) to 5e-3 of mu, q = |T|
   / |N| the pair's ratio and l = -N_x / |N_z| the lean of its normal force
