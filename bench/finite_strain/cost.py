@@ -11,7 +11,8 @@ on the 2D Hertz scene (prm/hertz.prm, Contact refinements 4, 5, 6) and the
 3D Hertz sphere (prm/hertz_3d.prm, Q2, small kinematics: the first
 measurement); with --3d instead on the 3D Hertz sphere with Q1 on the
 quadratic mapping (Sphere refinements 2 and 3, at its load) and the 3D
-patch (tests/scenes/current_kinematics_patch_3d_01, refined once, 30 %
+patch (build/tests/scenes/current_kinematics_patch_3d_01.prm, as cmake
+configures it; refined once, 30 %
 compression in 6 steps), every variant. Every
 run uses Newton tolerances 1e-10 (the finite-strain bulk needs them for
 reactions to many digits; the same for all so that iterations compare).
