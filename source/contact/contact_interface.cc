@@ -129,7 +129,8 @@ namespace contact_fem
                                     const AffineConstraints<double> &dirichlet,
                                     const AffineConstraints<double> &hanging,
                                     const Materials<dim>            &materials,
-                                    const MPI_Comm                   comm)
+                                    const MPI_Comm                   comm,
+                                    const std::set<types::boundary_id> &moving_supports)
   {
     pairs                        = contact_pairs;
     mpi_communicator             = comm;
@@ -272,7 +273,7 @@ namespace contact_fem
       for (unsigned int d = 0; d < dim; ++d)
         if (node.fixed[d])
           fixed_positions[dof_position[node.dofs[d]]] = true;
-    find_symmetry_planes(dof_handler, dirichlet);
+    find_symmetry_planes(dof_handler, dirichlet, moving_supports);
     find_hanging_vertices(hanging);
     {
       IndexSet relevant;
@@ -674,8 +675,9 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactInterface<dim>::find_symmetry_planes(const DoFHandler<dim>           &dof_handler,
-                                              const AffineConstraints<double> &dirichlet)
+  ContactInterface<dim>::find_symmetry_planes(const DoFHandler<dim>              &dof_handler,
+                                              const AffineConstraints<double>    &dirichlet,
+                                              const std::set<types::boundary_id> &moving_supports)
   {
     const auto &fe    = dof_handler.get_fe();
     const auto  fixed = [&](const types::global_dof_index dof) {
@@ -690,16 +692,18 @@ namespace contact_fem
     // not a symmetry plane of the axis; a fixed point is not a face).
     // A contact surface is never the plane: a surface that slides on a
     // support (Fixed 4: y on the master's top) is held, not mirrored, and
-    // its normal is e_d itself.
-    std::set<types::boundary_id> contact_ids;
+    // its normal is e_d itself. Nor is a support whose prescribed value
+    // varies along it (a face turned or bent by the input): it is flat and
+    // normal to e_d only in the reference configuration.
+    std::set<types::boundary_id> not_planes(moving_supports);
     for (const auto &pair : pairs)
-      contact_ids.insert({pair.slave, pair.master});
+      not_planes.insert({pair.slave, pair.master});
     std::vector<types::global_dof_index> on_plane;
     std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary() && contact_ids.count(cell->face(f)->boundary_id()) == 0)
+          if (cell->face(f)->at_boundary() && not_planes.count(cell->face(f)->boundary_id()) == 0)
             {
               const auto face = cell->face(f);
               face->get_dof_indices(face_dofs);

@@ -358,9 +358,14 @@ namespace contact_fem
     make_dirichlet_constraints(dirichlet_inputs(), relevant_dofs, 0., dirichlet_constraints);
     if (!contact_parameters.pairs.empty())
       {
+        std::set<types::boundary_id> moving_supports;
+        for (const auto &condition : boundary_conditions.displacements)
+          if (condition.varies_in_space())
+            moving_supports.insert(condition.boundary_id);
         interface = std::make_unique<ContactInterface<dim>>();
         interface->initialize(*mapping, dof_handler, contact_parameters.pairs,
-                              dirichlet_constraints, hanging_constraints, materials, comm);
+                              dirichlet_constraints, hanging_constraints, materials, comm,
+                              moving_supports);
         contact->initialize(*interface);
         search = std::make_unique<SearchControl<dim>>(*interface, *contact, contact_parameters,
                                                       *timer, pcout);

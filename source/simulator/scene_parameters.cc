@@ -6,6 +6,7 @@
 #include <contact_fem/simulator/scene_parameters.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <functional>
@@ -61,6 +62,24 @@ namespace contact_fem
       return pieces;
     }
   } // namespace
+
+  bool
+  DisplacementCondition::varies_in_space() const
+  {
+    // The identifiers of the expression, against the coordinate names
+    // (muparser's names are letters, digits and '_', from a letter or '_').
+    std::string name;
+    for (const char c : expression + ' ')
+      if (std::isalnum(static_cast<unsigned char>(c)) || c == '_')
+        name += c;
+      else
+        {
+          if (name == "x" || name == "y" || name == "z")
+            return true;
+          name.clear();
+        }
+    return false;
+  }
 
   void
   BoundaryConditions::declare_parameters(ParameterHandler &prm)

@@ -20,6 +20,7 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -210,15 +211,18 @@ namespace contact_fem
      * Collects the faces of @p pairs from all ranks. @p dirichlet holds the
      * Dirichlet constraints only (to flag fixed components), @p hanging the
      * closed hanging-node constraints of the locally relevant DoFs.
+     * @p moving_supports are boundaries whose prescribed displacement varies
+     * along them: never symmetry planes.
      */
     void
-    initialize(const MappingQ<dim>             &mapping,
-               const DoFHandler<dim>           &dof_handler,
-               const std::vector<ContactPair>  &pairs,
-               const AffineConstraints<double> &dirichlet,
-               const AffineConstraints<double> &hanging,
-               const Materials<dim>            &materials,
-               const MPI_Comm                   comm);
+    initialize(const MappingQ<dim>                  &mapping,
+               const DoFHandler<dim>                &dof_handler,
+               const std::vector<ContactPair>       &pairs,
+               const AffineConstraints<double>      &dirichlet,
+               const AffineConstraints<double>      &hanging,
+               const Materials<dim>                 &materials,
+               const MPI_Comm                        comm,
+               const std::set<types::boundary_id>   &moving_supports = {});
 
     /// The communicator of the ranks sharing the interface.
     MPI_Comm
@@ -529,10 +533,12 @@ namespace contact_fem
 
     /// Sets Node::symmetry_plane from the boundary faces of the locally
     /// owned cells of @p dof_handler (at the reference configuration) and
-    /// the Dirichlet constraints @p dirichlet, gathered over the ranks.
+    /// the Dirichlet constraints @p dirichlet, gathered over the ranks; the
+    /// faces of @p moving_supports are left out.
     void
-    find_symmetry_planes(const DoFHandler<dim>           &dof_handler,
-                         const AffineConstraints<double> &dirichlet);
+    find_symmetry_planes(const DoFHandler<dim>              &dof_handler,
+                         const AffineConstraints<double>    &dirichlet,
+                         const std::set<types::boundary_id> &moving_supports);
 
     /// Sets pair_materials from the faces of every rank.
     void

@@ -24,6 +24,12 @@ namespace contact_fem
     unsigned int       component;
     std::string        expression; ///< function of x, y, (z,) t; "0" for fixed
     std::string        key;        ///< the parameter that set it, for messages
+
+    /// Whether the expression names a coordinate (x, y or z): the value then
+    /// may differ along the boundary, which then moves as more than a
+    /// rigid translation of its component.
+    bool
+    varies_in_space() const;
   };
 
   /// A boundary id loaded by a normal pressure (positive pushes into the body).
