@@ -135,7 +135,8 @@ namespace contact_fem
       if (changes == 0 || iteration < first_compared + 2 || now.sets.empty())
         return;
       for (unsigned int k = first_compared; k + 1 < iteration; ++k)
-        if (sets_of_iteration[k].sets == now.sets && !(now.r_u < progress * sets_of_iteration[k].r_u))
+        if (sets_of_iteration[k].sets == now.sets &&
+            !(now.r_u < progress * sets_of_iteration[k].r_u))
           {
             unsigned int differing = 0;
             for (unsigned int n = 0; n < now.sets.size(); ++n)
@@ -1157,7 +1158,7 @@ namespace contact_fem
     // The contact sets after each iteration: a set that comes back after
     // changes means the iteration cycles and would never settle.
     std::vector<IterationSets> sets_of_iteration;
-    unsigned int                  iteration = 0;
+    unsigned int               iteration = 0;
     for (; iteration <= newton_parameters.max_iterations; ++iteration)
       {
         const std::string at = where + ", iteration " + std::to_string(iteration);
