@@ -7,7 +7,12 @@ Usage: check_objectivity_friction_3d.py CONTACT_FEM SCENE.prm FORMULATION... [SE
 
 Each SETTING ('Section/Key=value', e.g. 'Contact/Friction=tresca 5'; the
 arguments with an '=') is given to every run; '--one-step-each' shortens
-the program to one spin and one tilt step (t = 2 .. 4; cheaper).
+the program to one spin and one tilt step (t = 2 .. 4; cheaper);
+'--newton-at-most N' also requires every load step of both runs to converge
+in at most N Newton iterations (a rotating step's first iterate is the
+linearised rotation, whose error the next iterations remove: a bound on
+them shows that the rotated run converges rather than wanders through
+stick/slip sets).
 
 SCENE is tests/scenes/current_kinematics_friction_3d_01.prm (a neo-Hookean
 block 1 x 1 x 0.5 on an elastic base, mu = 0.3), its base held at the
@@ -48,7 +53,7 @@ about the normal was added, is off by 1e-4 of |F_n| after the spin and
 import math
 import sys
 
-from scene_run import converged_sets, csv_numbers, perturbation, run_scene
+from scene_run import converged_sets, csv_numbers, newton_table, perturbation, run_scene
 
 CENTRE = (0.0, 0.0, 0.25)
 SPIN_STEPS, TILT_STEPS = 2, 2  # one_step_each() sets 1, 1
@@ -143,12 +148,19 @@ def run(contact_fem, scene, formulation, rotated, extra):
     return output, csv_numbers("results/forces.csv"), csv_numbers("results/pressure_profile.csv")
 
 
-def check(contact_fem, scene, formulation, extra):
+def check(contact_fem, scene, formulation, extra, newton_at_most=None):
     reference = run(contact_fem, scene, formulation, False, extra)
     turned = run(contact_fem, scene, formulation, True, extra)
     formulation = ", ".join([formulation, *extra])  # the name in the report
     ok = report(f"{formulation}: both runs take the {END} load steps without a split",
                 all("Splitting" not in o for o, _, _ in (reference, turned)), "")
+    if newton_at_most is not None:
+        # Iterations of each converged step (the table's last row).
+        counts = [len(ratios) - 1 for o, _, _ in (reference, turned)
+                  for ratios, converged in newton_table(o) if converged]
+        ok = report(f"{formulation}: every load step of both runs converges in at most "
+                    f"{newton_at_most} Newton iterations",
+                    len(counts) == 2 * END and max(counts) <= newton_at_most, "") and ok
     sets = [converged_sets(o) for o, _, _ in (reference, turned)]
     ok = report(f"{formulation}: the active, stick and slip counts of every step",
                 len(sets[0]) == END and sets[0] == sets[1],
@@ -197,11 +209,16 @@ def main():
     if "--one-step-each" in arguments:
         arguments.remove("--one-step-each")
         one_step_each()
+    newton_at_most = None
+    if "--newton-at-most" in arguments:
+        i = arguments.index("--newton-at-most")
+        newton_at_most = int(arguments[i + 1])
+        del arguments[i:i + 2]
     formulations = [a for a in arguments if "=" not in a]
     extra = [a for a in arguments if "=" in a]
     ok = True
     for formulation in formulations:
-        ok = check(contact_fem, scene, formulation, extra) and ok
+        ok = check(contact_fem, scene, formulation, extra, newton_at_most) and ok
     sys.exit(0 if ok else 1)
 
 
