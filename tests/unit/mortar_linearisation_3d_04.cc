@@ -216,14 +216,13 @@ namespace
         const unsigned int on = (std::abs(xi[0]) == 1.) + (std::abs(xi[1]) == 1.);
         (on == 2 ? corners : on == 1 ? on_edges : inside) += 1;
       }
-    std::cout << "  " << v.values.size() << " vertices: " << inside
-              << " inside the slave face, " << on_edges << " on its edges, " << corners
-              << " at its corners" << std::endl;
+    std::cout << "  " << v.values.size() << " vertices: " << inside << " inside the slave face, "
+              << on_edges << " on its edges, " << corners << " at its corners" << std::endl;
     std::cout << "  AD vertex values = double path: " << (v.values == w.values ? "yes" : "NO")
               << std::endl;
 
-    const std::vector<unsigned int> &s    = patch.slave_faces[0].nodes;
-    const double                     size = (patch.points[s[3]] - patch.points[s[0]]).norm();
+    const std::vector<unsigned int> &s       = patch.slave_faces[0].nodes;
+    const double                     size    = (patch.points[s[3]] - patch.points[s[0]]).norm();
     double                           closest = 2.;
     for (unsigned int a = 0; a < v.values.size(); ++a)
       for (unsigned int b = 0; b < a; ++b)
@@ -231,10 +230,10 @@ namespace
 
     // e[q][i][k]: |FD - derivative| of vertex coordinate q by coordinate i
     // at the step h / 2^k.
-    const double h = 1e-3 * size;
+    const double                                    h = 1e-3 * size;
     std::vector<std::vector<std::array<double, 2>>> e(v.coordinates.size(),
                                                       std::vector<std::array<double, 2>>(n));
-    bool same = true;
+    bool                                            same = true;
     for (unsigned int i = 0; i < n && same; ++i)
       for (unsigned int k = 0; k < 2 && same; ++k)
         {
@@ -244,8 +243,9 @@ namespace
                  perturbed_vertices(patch, i, -h / (1 << k), v, 0.25 * closest, minus, step_minus);
           for (unsigned int q = 0; same && q < v.coordinates.size(); ++q)
             {
-              const double fd = (plus[q / 2][q % 2] - minus[q / 2][q % 2]) / (step_plus - step_minus);
-              e[q][i][k]      = std::abs(fd - v.coordinates[q]->derivatives[i]);
+              const double fd =
+                (plus[q / 2][q % 2] - minus[q / 2][q % 2]) / (step_plus - step_minus);
+              e[q][i][k] = std::abs(fd - v.coordinates[q]->derivatives[i]);
             }
         }
     std::cout << "  the same vertices in the same order at every perturbed point: "
@@ -262,7 +262,7 @@ namespace
     double reach = 0.;
     for (const Point<3> &x : patch.points)
       reach = std::max(reach, x.norm());
-    const double round_off = 1e-10 * (1. + reach / size) * scale;
+    const double        round_off = 1e-10 * (1. + reach / size) * scale;
     std::vector<double> ratios;
     unsigned int        bad   = 0;
     double              worst = 0.;
@@ -284,8 +284,7 @@ namespace
     std::cout << "  " << v.coordinates.size() * n << " derivatives; error ratio e(h)/e(h/2) where "
               << "e(h) is above round-off: median " << std::lround(median)
               << ", all in [3.5, 4.5]: " << (bad == 0 ? "yes" : "NO")
-              << "; e(h/2) below 1e-5 of the scale: " << (worst < 1e-5 ? "yes" : "NO")
-              << std::endl;
+              << "; e(h/2) below 1e-5 of the scale: " << (worst < 1e-5 ? "yes" : "NO") << std::endl;
     return exact;
   }
 } // namespace
@@ -319,7 +318,7 @@ main()
   const std::vector<LinearisedQuadPair> unmoved =
     check("bilinear, partly overlapping (corners inside both, edges crossing)", partly);
   {
-    QuadFacePatch patch = slave_patch(slave, 1);
+    QuadFacePatch           patch = slave_patch(slave, 1);
     std::array<Point<2>, 4> turned;
     const double            angle = 40. * numbers::PI / 180.;
     for (unsigned int v = 0; v < 4; ++v)
@@ -365,7 +364,7 @@ main()
   }
   {
     // The partly overlapping case moved rigidly: x -> R x + t.
-    const Tensor<1, 3> axis = Tensor<1, 3>({1., 2., 3.}) / std::sqrt(14.);
+    const Tensor<1, 3> axis  = Tensor<1, 3>({1., 2., 3.}) / std::sqrt(14.);
     const double       angle = 0.7;
     Tensor<2, 3>       R;
     for (unsigned int a = 0; a < 3; ++a)
@@ -385,7 +384,7 @@ main()
     // d xi / d x' = R (d xi / d x) per point.
     const Vertices a = vertices_of(unmoved), b = vertices_of(r);
     bool           values = a.values.size() == b.values.size(), derivatives = values;
-    double         scale  = 0.;
+    double         scale = 0.;
     for (const Linearised *c : a.coordinates)
       for (const double d : c->derivatives)
         scale = std::max(scale, std::abs(d));
