@@ -228,7 +228,9 @@ namespace contact_fem
       /// variables).
       template <bool ad, typename PairNumber>
       bool
-      compute_face(const QuadFacePatch &patch, std::vector<LinearisedQuadPair> &pairs)
+      compute_face(const QuadFacePatch             &patch,
+                   const bool                       with_vertices,
+                   std::vector<LinearisedQuadPair> &pairs)
       {
         using NormalNumber                   = std::conditional_t<ad, ADNumber, double>;
         using Number                         = std::conditional_t<ad, PairNumber, double>;
@@ -392,6 +394,22 @@ namespace contact_fem
             pair.normals             = linearised_normals;
             pair.polygon_sizes       = polygon_sizes;
             pair.dual_coefficients   = dual;
+            if (with_vertices)
+              for (const ParameterPolygonOf<Number> &polygon : part.polygons)
+                {
+                  pair.vertices.emplace_back();
+                  for (const Point<2, Number> &xi : polygon)
+                    {
+                      std::array<Linearised, 2> vertex;
+                      for (unsigned int d = 0; d < 2; ++d)
+                        {
+                          vertex[d].value = value(xi[d]);
+                          if constexpr (ad)
+                            vertex[d] = part.chain(xi[d]);
+                        }
+                      pair.vertices.back().push_back(vertex);
+                    }
+                }
             for (unsigned int j = 0; j < n; ++j)
               {
                 pair.D.push_back(linearised(ops.D[j], j, [&](const unsigned int k) {
@@ -432,7 +450,8 @@ namespace contact_fem
     bool
     linearise_slave_face(const QuadFacePatch             &patch,
                          const bool                       derivatives,
-                         std::vector<LinearisedQuadPair> &pairs)
+                         std::vector<LinearisedQuadPair> &pairs,
+                         const bool                       with_vertices)
     {
       // The AD number by the largest number of variables of a master's
       // part: the coordinates of the slave face and the master, and the
@@ -444,14 +463,14 @@ namespace contact_fem
                                                      face.nodes.size() + n_normals));
       pairs.clear();
       if (!derivatives)
-        return compute_face<false, double>(patch, pairs);
+        return compute_face<false, double>(patch, with_vertices, pairs);
       if (n_pair <= static_cast<unsigned int>(PairADNumber().size()))
-        return compute_face<true, PairADNumber>(patch, pairs);
+        return compute_face<true, PairADNumber>(patch, with_vertices, pairs);
       if (n_pair <= static_cast<unsigned int>(CurvedPairADNumber().size()))
-        return compute_face<true, CurvedPairADNumber>(patch, pairs);
+        return compute_face<true, CurvedPairADNumber>(patch, with_vertices, pairs);
       AssertThrow(n_pair <= static_cast<unsigned int>(QuadraticPairADNumber().size()),
                   ExcNotImplemented());
-      return compute_face<true, QuadraticPairADNumber>(patch, pairs);
+      return compute_face<true, QuadraticPairADNumber>(patch, with_vertices, pairs);
     }
 
     std::vector<std::array<Linearised, 3>>

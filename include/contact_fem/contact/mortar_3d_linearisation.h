@@ -70,6 +70,11 @@ namespace contact_fem
       std::vector<std::array<Linearised, 3>> weighted_gap;
       /// g_j = n_j . weighted_gap_j.
       std::vector<Linearised> normal_gap;
+      /// Only if linearise_slave_face() is asked for them (a check of the
+      /// segmentation; the operators do not need them): the vertices of
+      /// this master's overlap polygons, slave parameters (xi, eta) in
+      /// overlap()'s order.
+      std::vector<std::vector<std::array<Linearised, 2>>> vertices;
     };
 
     /**
@@ -89,11 +94,14 @@ namespace contact_fem
      * derivatives are on the stack; then chained to the coordinates), at
      * fixed dual basis coefficients: the operators are linear in them, so
      * their part is added with the integrals of the standard basis.
+     * With @p with_vertices, each pair also gets the vertices of its
+     * overlap polygons (LinearisedQuadPair::vertices).
      */
     bool
     linearise_slave_face(const QuadFacePatch             &patch,
                          const bool                       derivatives,
-                         std::vector<LinearisedQuadPair> &pairs);
+                         std::vector<LinearisedQuadPair> &pairs,
+                         const bool                       with_vertices = false);
 
     /// The unit nodal normals at the nodes of the slave face
     /// (slave_faces[0]) of @p patch, from its slave faces
