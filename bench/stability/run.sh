@@ -1287,11 +1287,13 @@ run_case $G patch-fbar-nu0.4999-distort "$PATCH3D" 30 "blocks at nu = 0.4999, F-
   "Boundary conditions/Prescribed displacement=1: z = -0.3*t" "Load stepping/Number of load steps=6"
 # Large sliding over hanging nodes: the sliding blocks with the master's
 # top layer refined twice where the slave arrives and the slave's half x <
-# 0.5 once (Geometry/Local refinements: hanging nodes on both surfaces).
+# 0.5 once (Geometry/Local refinements: hanging nodes on both surfaces),
+# against both blocks refined once (the uniform coarse blocks are 6.6 %
+# stiffer: the slave's corner, slid past the master's edge, indents it).
 run_case $G sliding "$SLIDE3D" 60 "3D sliding blocks, uniform meshes" ""
 run_case $G sliding-r1 "$SLIDE3D" 120 "3D sliding blocks, both refined once (Global refinements 1): the reference of sliding-hanging" ""  \
   "Geometry/Global refinements=1"
-run_case $G sliding-hanging "$SLIDE3D" 120 "3D sliding blocks, master refined twice in x, y > 0.3, slave once in x < 0.5" "force-near=3d-finite-strain/sliding,2e-2" \
+run_case $G sliding-hanging "$SLIDE3D" 120 "3D sliding blocks, master refined twice in x, y > 0.3, slave once in x < 0.5: the force of sliding-r1" "force-near=3d-finite-strain/sliding-r1,2e-2" \
   "Geometry/Local refinements=2: 0.3, 0.3, 0.3, 1, 1, 0.5; 1: 0, 0, 0.5, 0.5, 1, 0.8"
 # Initial gap and penetration: the blocks 0.01 apart (closed inside a
 # step) and overlapping by 0.005, compressed to lz = 0.7.
