@@ -67,6 +67,11 @@ GROUPS = [
                     "3D Cattaneo"),
     ("3d-iterative", "3D: iterative linear solver on the stiff and nearly incompressible "
                      "cases; Type = auto at its limits"),
+    ("3d-finite-strain", "3D finite strain (issue 29, item 6): neo-Hookean blocks and "
+                         "hemisphere with contact on the current configuration: large loads "
+                         "up to element inversion and step splits, near incompressibility "
+                         "(F-bar Q1, Q2), large sliding over hanging nodes, initial gap and "
+                         "penetration, grazing, distorted meshes, tiny loads"),
 ]
 
 # same=GROUP/CASE: the contact answer (p_max and the transmitted force) must

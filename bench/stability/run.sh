@@ -9,7 +9,9 @@
 # (tests/scenes/*.prm), and in 3D (groups 3d-*) of the Hertz sphere
 # (prm/hertz_3d.prm) and the 3D patch blocks (bench/stability/patch_3d.prm),
 # and at finite strain (group finite-strain: neo-Hookean bodies, contact on
-# the current configuration, the sliding and ironing scenes),
+# the current configuration, the sliding and ironing scenes; in 3D group
+# 3d-finite-strain: the patch blocks, the Hertz hemisphere and the 3D
+# sliding blocks),
 # one after the other, each under a time limit, into
 # bench/stability/results/<group>/<case>/, then calls analyse.py, which
 # writes doc/stability.md.
@@ -1183,6 +1185,156 @@ run_case $G auto-nu0.495 "$HERTZ3D" 120 "Type = auto, Q2, 54,684 DoFs, nu = 0.49
   "${S3DBIG[@]}" "Materials/Poisson's ratios=0.495, 0.495"
 run_case $G auto-bbar-nu0.4999 "$HERTZ3D" 120 "Type = auto, Q2, 54,684 DoFs, nu = 0.4999, B-bar (lambda/mu 4999: auto takes the direct solver)" "hertz $P3" \
   "${S3DBIG[@]}" "Materials/Poisson's ratios=0.4999, 0.4999" "Finite element/Volumetric strain=B-bar"
+
+# --- 22. 3D finite strain (issue 29, item 6, in 3D) --------------------------
+# Neo-Hookean bodies with contact on the current configuration
+# (Contact/Kinematics = current), Newton tolerances 1e-10 (so that answers
+# of different step counts compare). Two kinds of scene:
+# - the 3D patch blocks (PATCH3D, both blocks neo-Hookean, E = 100, nu =
+#   0.3) compressed by a prescribed top displacement d: the deformation is
+#   homogeneous (uniaxial stress), Q1 is exact, and every slave node must
+#   carry the Cauchy pressure of the law, -sigma_zz = (mu (1 - lz^2) -
+#   lambda ln J) / J with lz = 1 + g - d (g the initial gap), J = lz a^2,
+#   a the lateral stretch of S_xx = 0 (as tests/scenes/
+#   current_kinematics_patch_3d_01): lz = 0.7: 33.01214087; 0.4:
+#   86.75021117; 0.2: 188.8407283; 0.05: 768.6936555; at nu = 0.4999 and
+#   lz = 0.7: 31.28640011; at d = 3e-9 (1e-8 of the 30 % case):
+#   2.99999995e-7 (the linear law's E d = 3e-7 to 1.5e-8). An exact answer
+#   at any load: a converged wrong answer cannot hide.
+# - the Hertz hemisphere (prm/hertz_3d.prm, neo-Hookean sphere on the
+#   linear plate 1e4 x stiffer), Q1 on the quadratic mapping with Sphere
+#   refinements = 2 (slave faces ~0.5 at the pole, a = 1.35: as coarse as a
+#   second's run allows; the AD linearisation of curved faces dominates),
+#   Q2 with Sphere refinements = 1 (the same node spacing). At the shipped
+#   load the strains reach 12 %: Hertz is indicative.
+# - the 3D sliding blocks (bench/stability/sliding_3d.prm).
+G=3d-finite-strain
+FS3D=("Materials/Models=neo-hookean, linear" "Contact/Kinematics=current"
+      "Newton/Displacement relative tolerance=1e-10" "Newton/Displacement absolute tolerance=1e-12")
+SPH1=("Finite element/Degree=1" "Geometry/Hertz sphere/Sphere refinements=2" "Geometry/Hertz sphere/Contact refinements=0")
+SPH2=("Finite element/Degree=2" "Geometry/Hertz sphere/Sphere refinements=1" "Geometry/Hertz sphere/Contact refinements=0")
+PFS=("Materials/Young's moduli=100, 100" "Materials/Poisson's ratios=0.3, 0.3"
+     "Materials/Models=neo-hookean, neo-hookean" "Contact/Kinematics=current" "Boundary conditions/Pressure="
+     "Newton/Displacement relative tolerance=1e-10" "Newton/Displacement absolute tolerance=1e-12")
+PX="Output/Displacement probes=1 @ 1, 1, 0.5"
+SLIDE3D="$script_dir/sliding_3d.prm"
+# Large loads: the blocks compressed by 30 % ... 95 %, in steps and in one
+# step (the predictor from rest squeezes the top cells: inverted elements
+# split the step, which must end on the exact answer); the hemisphere at
+# 1, 10 and 100 x the shipped pressure (a = 1.35, 2.92, ~R: the plate
+# widened to 8 at 100 x).
+run_case $G patch-x0.3 "$PATCH3D" 30 "blocks compressed by 30 % (d = 0.3) in 6 steps" "p=33.01214087" \
+  "${PFS[@]}" "Boundary conditions/Prescribed displacement=1: z = -0.3*t" "Load stepping/Number of load steps=6"
+run_case $G patch-x0.3-1step "$PATCH3D" 30 "the same in one step" "p=33.01214087" \
+  "${PFS[@]}" "Boundary conditions/Prescribed displacement=1: z = -0.3*t" "Load stepping/Number of load steps=1"
+run_case $G patch-x0.6-1step "$PATCH3D" 30 "compressed by 60 % in one step" "p=86.75021117" \
+  "${PFS[@]}" "Boundary conditions/Prescribed displacement=1: z = -0.6*t" "Load stepping/Number of load steps=1"
+run_case $G patch-x0.8 "$PATCH3D" 30 "compressed by 80 % in 8 steps" "p=188.8407283" \
+  "${PFS[@]}" "Boundary conditions/Prescribed displacement=1: z = -0.8*t" "Load stepping/Number of load steps=8"
+run_case $G patch-x0.8-1step "$PATCH3D" 30 "compressed by 80 % in one step" "p=188.8407283" \
+  "${PFS[@]}" "Boundary conditions/Prescribed displacement=1: z = -0.8*t" "Load stepping/Number of load steps=1"
+run_case $G patch-x0.95-1step "$PATCH3D" 60 "compressed by 95 % in one step (lateral stretch 1.89)" "p=768.6936555" \
+  "${PFS[@]}" "Boundary conditions/Prescribed displacement=1: z = -0.95*t" "Load stepping/Number of load steps=1"
+run_case $G sphere-x1 "$HERTZ3D" 120 "hemisphere, the shipped load (a = 1.35, strains 12 %)" "hertz-approx $P3" \
+  "${FS3D[@]}" "${SPH1[@]}"
+run_case $G sphere-x1-small "$HERTZ3D" 120 "the same with the linear bulk and small kinematics (the small-strain answer on this mesh)" "hertz-approx $P3" \
+  "${SPH1[@]}" "Newton/Displacement relative tolerance=1e-10" "Newton/Displacement absolute tolerance=1e-12"
+run_case $G sphere-x10 "$HERTZ3D" 180 "10 x the shipped load (a = 2.92) in 4 steps" "hertz-approx $P3" \
+  "${FS3D[@]}" "${SPH1[@]}" "Boundary conditions/Pressure=1: 10*5e5*t" "Load stepping/Number of load steps=4"
+run_case $G sphere-x10-1step "$HERTZ3D" 180 "10 x in one step: the answer of 4 steps (hyperelastic, frictionless: path independent)" "hertz-approx $P3 near=3d-finite-strain/sphere-x10,1e-6" \
+  "${FS3D[@]}" "${SPH1[@]}" "Boundary conditions/Pressure=1: 10*5e5*t" "Load stepping/Number of load steps=1"
+run_case $G sphere-x100 "$HERTZ3D" 300 "100 x the shipped load (Hertz a = 6.3 ~ R: the hemisphere flattened) in 10 steps, plate width 8" "hertz-approx $P3" \
+  "${FS3D[@]}" "${SPH1[@]}" "Boundary conditions/Pressure=1: 100*5e5*t" "Load stepping/Number of load steps=10" \
+  "Geometry/Hertz sphere/Plate width=8"
+# Near incompressibility (the hemisphere's nu; the plate keeps 0.29), at
+# the shipped load: Q1 with F-bar (Volumetric strain = B-bar) at nu =
+# 0.49, 0.499, 0.4999, standard Q1 (locks; must warn beyond 0.49) and Q2
+# (displacement element; warns beyond 0.499). Reference: sphere-x1 and
+# the small-strain group 3d-incompressible (p_max barely depends on nu once
+# B-bar removes the locking).
+for nu in 0.49 0.499 0.4999; do
+  exp_std="hertz-approx $P3"
+  [[ $nu != 0.49 ]] && exp_std="hertz-approx warn=lock volumetrically $P3"
+  run_case $G "Q1-nu$nu" "$HERTZ3D" 120 "Q1, nu = $nu, standard" "$exp_std" \
+    "${FS3D[@]}" "${SPH1[@]}" "Materials/Poisson's ratios=$nu, 0.29"
+  run_case $G "Q1-fbar-nu$nu" "$HERTZ3D" 120 "Q1, nu = $nu, F-bar" "hertz-approx $P3" \
+    "${FS3D[@]}" "${SPH1[@]}" "Materials/Poisson's ratios=$nu, 0.29" "Finite element/Volumetric strain=B-bar"
+  exp_q2="hertz-approx $P3"
+  [[ $nu == 0.4999 ]] && exp_q2="hertz-approx warn=lock volumetrically $P3"
+  run_case $G "Q2-nu$nu" "$HERTZ3D" 300 "Q2 (Sphere refinements 1), nu = $nu" "$exp_q2" \
+    "${FS3D[@]}" "${SPH2[@]}" "Materials/Poisson's ratios=$nu, 0.29"
+done
+# The shipped scene starts the first step with every slave node within an
+# element size of the plate active (Active check factor = 1): at nu >=
+# 0.499 the first solve, which flattens those nodes onto the plate, sends
+# Newton astray at any load fraction (the residual after it does not scale
+# with the step). The program's default factor (1e-2) in 8 steps:
+for nu in 0.499 0.4999; do
+  run_case $G "Q1-fbar-nu$nu-8steps" "$HERTZ3D" 300 "Q1, nu = $nu, F-bar, Active check factor 1e-2, 8 steps" "hertz-approx $P3" \
+    "${FS3D[@]}" "${SPH1[@]}" "Materials/Poisson's ratios=$nu, 0.29" "Finite element/Volumetric strain=B-bar" \
+    "Contact/Active check factor=1e-2" "Load stepping/Number of load steps=8"
+done
+run_case $G "Q2-nu0.499-8steps" "$HERTZ3D" 600 "Q2 (Sphere refinements 1), nu = 0.499, Active check factor 1e-2, 8 steps" "hertz-approx $P3" \
+  "${FS3D[@]}" "${SPH2[@]}" "Materials/Poisson's ratios=0.499, 0.29" \
+  "Contact/Active check factor=1e-2" "Load stepping/Number of load steps=8"
+run_case $G patch-fbar-nu0.3-distort "$PATCH3D" 30 "blocks at nu = 0.3, F-bar, Global refinements 1, Distortion 0.3, compressed by 30 % in 6 steps" "p=33.01214087" \
+  "${PFS[@]}" "Finite element/Volumetric strain=B-bar" \
+  "Geometry/Global refinements=1" "Geometry/Distortion=0.3" \
+  "Boundary conditions/Prescribed displacement=1: z = -0.3*t" "Load stepping/Number of load steps=6"
+run_case $G patch-fbar-nu0.4999-distort "$PATCH3D" 30 "blocks at nu = 0.4999, F-bar, Global refinements 1, Distortion 0.3, compressed by 30 % in 6 steps" "p=31.28640011" \
+  "${PFS[@]}" "Materials/Poisson's ratios=0.4999, 0.4999" "Finite element/Volumetric strain=B-bar" \
+  "Geometry/Global refinements=1" "Geometry/Distortion=0.3" \
+  "Boundary conditions/Prescribed displacement=1: z = -0.3*t" "Load stepping/Number of load steps=6"
+# Large sliding over hanging nodes: the sliding blocks with the master's
+# top layer refined twice where the slave arrives and the slave's half x <
+# 0.5 once (Geometry/Local refinements: hanging nodes on both surfaces),
+# against both blocks refined once (the uniform coarse blocks are 6.6 %
+# stiffer: the slave's corner, slid past the master's edge, indents it).
+run_case $G sliding "$SLIDE3D" 60 "3D sliding blocks, uniform meshes" ""
+run_case $G sliding-r1 "$SLIDE3D" 120 "3D sliding blocks, both refined once (Global refinements 1): the reference of sliding-hanging" ""  \
+  "Geometry/Global refinements=1"
+run_case $G sliding-hanging "$SLIDE3D" 120 "3D sliding blocks, master refined twice in x, y > 0.3, slave once in x < 0.5: the force of sliding-r1" "force-near=3d-finite-strain/sliding-r1,2e-2" \
+  "Geometry/Local refinements=2: 0.3, 0.3, 0.3, 1, 1, 0.5; 1: 0, 0, 0.5, 0.5, 1, 0.8"
+# Initial gap and penetration: the blocks 0.01 apart (closed inside a
+# step) and overlapping by 0.005, compressed to lz = 0.7.
+PGAPFS=("$(mesh3d gap0.01)" "Contact/Allow loss of contact=true" "$PX")
+run_case $G patch-gap "$PATCH3D" 30 "blocks 0.01 apart, d = 0.31 in 6 steps (closure inside step 1)" "p=33.01214087" \
+  "${PFS[@]}" "${PGAPFS[@]}" "Boundary conditions/Prescribed displacement=1: z = -0.31*t" "Load stepping/Number of load steps=6"
+run_case $G patch-gap-1step "$PATCH3D" 30 "the same in one step" "p=33.01214087" \
+  "${PFS[@]}" "${PGAPFS[@]}" "Boundary conditions/Prescribed displacement=1: z = -0.31*t" "Load stepping/Number of load steps=1"
+run_case $G patch-overlap "$PATCH3D" 30 "blocks overlapping by 0.005, d = 0.295 in 6 steps" "p=33.01214087" \
+  "${PFS[@]}" "$(mesh3d gap-0.005)" "$PX" "Boundary conditions/Prescribed displacement=1: z = -0.295*t" "Load stepping/Number of load steps=6"
+run_case $G patch-overlap-1step "$PATCH3D" 30 "the same in one step" "p=33.01214087" \
+  "${PFS[@]}" "$(mesh3d gap-0.005)" "$PX" "Boundary conditions/Prescribed displacement=1: z = -0.295*t" "Load stepping/Number of load steps=1"
+# Grazing: the master block's edge 1e-8 and 1e-3 beyond / inside the
+# slave's (both blocks widen by the same lateral stretch, so the offset
+# stays), and the hemisphere from no active node (Active check factor 0)
+# under a prescribed approach of its flat face.
+for dx in 1e-8 -1e-8 0.001 -0.001; do
+  tol=1e-6; [[ $dx == *0.001 ]] && tol=1e-2
+  run_case $G "patch-dx$dx" "$PATCH3D" 30 "master block shifted by $dx along x, compressed by 30 % in 6 steps" "p=33.01214087 tol=$tol" \
+    "${PFS[@]}" "$(mesh3d dx$dx)" "$PX" "Boundary conditions/Prescribed displacement=1: z = -0.3*t" "Load stepping/Number of load steps=6"
+done
+run_case $G sphere-graze "$HERTZ3D" 120 "hemisphere touching, u_z = -3e-4 t on the flat face, Active check factor 0 (a = 0.04: inside the pole's faces)" "hertz-approx $P3" \
+  "${FS3D[@]}" "${SPH1[@]}" "Boundary conditions/Pressure=" "Contact/Allow loss of contact=true" \
+  "Boundary conditions/Prescribed displacement=1: z = -3e-4*t" "Contact/Active check factor=0"
+# Distorted meshes: homogeneous compression is exact on any hexahedra.
+run_case $G patch-distort-0.3 "$PATCH3D" 30 "blocks, Global refinements 1, Distortion 0.3, compressed by 30 % in 6 steps" "p=33.01214087" \
+  "${PFS[@]}" "Geometry/Global refinements=1" "Geometry/Distortion=0.3" \
+  "Boundary conditions/Prescribed displacement=1: z = -0.3*t" "Load stepping/Number of load steps=6"
+run_case $G patch-distort-0.3-x0.8-1step "$PATCH3D" 60 "the same compressed by 80 % in one step" "p=188.8407283" \
+  "${PFS[@]}" "Geometry/Global refinements=1" "Geometry/Distortion=0.3" \
+  "Boundary conditions/Prescribed displacement=1: z = -0.8*t" "Load stepping/Number of load steps=1"
+# Tiny loads (1e-8 of the cases above): the small-strain answer.
+run_case $G patch-tiny "$PATCH3D" 30 "blocks compressed by d = 3e-9 (1e-8 of patch-x0.3), one step: E d = 3e-7" "p=2.99999995e-7" \
+  "${PFS[@]}" "Boundary conditions/Prescribed displacement=1: z = -3e-9*t" "Load stepping/Number of load steps=1"
+run_case $G sphere-tiny "$HERTZ3D" 120 "hemisphere at 1e-8 x the shipped load: the small-strain answer (sphere-tiny-small)" "hertz-approx $P3 near=3d-finite-strain/sphere-tiny-small,1e-6" \
+  "${FS3D[@]}" "${SPH1[@]}" "Boundary conditions/Pressure=1: 1e-8*5e5*t"
+run_case $G sphere-tiny-deftol "$HERTZ3D" 120 "sphere-tiny with the default Newton tolerances" "hertz-approx $P3 near=3d-finite-strain/sphere-tiny-small,1e-4" \
+  "Materials/Models=neo-hookean, linear" "Contact/Kinematics=current" "${SPH1[@]}" "Boundary conditions/Pressure=1: 1e-8*5e5*t"
+run_case $G sphere-tiny-small "$HERTZ3D" 120 "the same with the linear bulk and small kinematics" "hertz-approx $P3" \
+  "${SPH1[@]}" "Boundary conditions/Pressure=1: 1e-8*5e5*t" \
+  "Newton/Displacement relative tolerance=1e-10" "Newton/Displacement absolute tolerance=1e-12"
 }
 
 define_cases

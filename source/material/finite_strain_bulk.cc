@@ -33,16 +33,13 @@ namespace contact_fem
     : fe_values(mapping, fe, QGauss<dim>(fe.degree + 1), update_gradients | update_JxW_values)
     , component(fe.n_dofs_per_cell())
     , g(fe.n_dofs_per_cell())
-    , g0(fe.n_dofs_per_cell())
+    , f_bar(f_bar)
   {
     AssertThrow(!f_bar || fe.degree == 1,
                 ExcMessage("Finite element/Volumetric strain = B-bar: the finite-strain bodies "
                            "(Materials/Models) then use F-bar, which is implemented for Q1 "
                            "only; use Finite element/Degree = 1 or Volumetric strain = "
                            "standard."));
-    if (f_bar)
-      centre_values =
-        std::make_unique<FEValues<dim>>(mapping, fe, QMidpoint<dim>(), update_gradients);
     // Each shape function of the vector element moves one component: its
     // gradient is the row component[i] with the scalar gradient g_i.
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
@@ -86,11 +83,8 @@ namespace contact_fem
     const unsigned int n = u.size();
     K.reinit(n, n);
     internal_force.reinit(n);
-    if (centre_values)
-      {
-        centre_values->reinit(cell);
-        return linearise_f_bar(material, u, K, internal_force);
-      }
+    if (f_bar)
+      return linearise_f_bar(material, u, K, internal_force);
     CellLinearisation result;
     result.smallest_jacobian = std::numeric_limits<double>::max();
     for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
@@ -128,35 +122,64 @@ namespace contact_fem
                                          FullMatrix<double>         &K,
                                          Vector<double>             &internal_force)
   {
-    // With alpha = (J0 / J)^(1/dim), F-bar = alpha F and the derivatives in
-    // u_i of a = F^-T : E_i (E_i = e_(c_i) (x) g_i, the gradient of shape
-    // function i) and of a0 (the same at the centre):
-    //   d alpha / du_i    = alpha / dim (a0_i - a_i),
+    // With alpha = (J0 / J)^(1/dim), F-bar = alpha F; J0 = (1/V) int J dV,
+    // the cell's mean volume ratio (mean dilatation: a homogeneous
+    // deformation keeps J0 = J and its derivative the mean of J's, so the
+    // F-bar force is the standard one there and the element passes the
+    // patch test on any hexahedron; J0 at the cell centre did not where the
+    // cell's Jacobian varies: its derivative, grad N_i at the centre, is not
+    // the mean of grad N_i). With a_i = F^-T : E_i (E_i = e_(c_i) (x) g_i,
+    // the gradient of shape function i) = d ln J / du_i and
+    // abar_i = d ln J0 / du_i = (1/(V J0)) int J a_i dV:
+    //   d alpha / du_i    = alpha / dim (abar_i - a_i),
     //   d F-bar / du_i    = alpha E_i + F d alpha / du_i,
-    //   d2 alpha/du_i du_j = alpha / dim^2 (a0_i - a_i)(a0_j - a_j)
-    //                      + alpha / dim (tr(B_j B_i) - tr(B0_j B0_i)),
-    // B_i = F^-1 E_i, tr(B_j B_i) = h_i[c_j] h_j[c_i] with h_i = F^-T g_i.
+    //   d2 alpha/du_i du_j = alpha / dim^2 (abar_i - a_i)(abar_j - a_j)
+    //                      + alpha / dim (L_ij + tr(B_j B_i)),
+    // B_i = F^-1 E_i, tr(B_j B_i) = h_i[c_j] h_j[c_i] with h_i = F^-T g_i,
+    // L_ij = d2 ln J0 / du_i du_j
+    //      = (1/(V J0)) int J (a_i a_j - tr(B_j B_i)) dV - abar_i abar_j.
     const unsigned int n = u.size();
     CellLinearisation  result;
-    for (unsigned int i = 0; i < n; ++i)
-      g0[i] = centre_values->shape_grad_component(i, 0, component[i]);
-    const Tensor<2, dim> H0   = displacement_gradient(u, component, g0);
-    const double         J0m1 = HyperelasticLaw<dim>::jacobian_minus_one(H0);
-    result.smallest_jacobian  = 1. + J0m1;
-    if (!(1. + J0m1 > 0.))
-      return result;
-    const Tensor<2, dim>        F0_inverse_transpose = transpose(invert(identity_plus(H0)));
-    std::vector<Tensor<1, dim>> h0(n), h(n);
-    for (unsigned int i = 0; i < n; ++i)
-      h0[i] = F0_inverse_transpose * g0[i];
-    std::vector<double>         dalpha(n);
-    std::vector<Tensor<2, dim>> dF_bar(n), AdF(n);
+    result.smallest_jacobian = std::numeric_limits<double>::max();
+    std::vector<Tensor<1, dim>> h(n);
+    std::vector<double>         abar(n, 0.);
+    FullMatrix<double>          L(n, n);
+    // First pass: J0 - 1 (as a mean of J - 1: no cancellation), abar, L.
+    double volume = 0., J0m1 = 0.;
     for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
       {
         const Tensor<2, dim> H   = gradient_at(q, u, result);
         const double         Jm1 = HyperelasticLaw<dim>::jacobian_minus_one(H);
         if (!(1. + Jm1 > 0.))
           return result;
+        const Tensor<2, dim> F_inverse_transpose = transpose(invert(identity_plus(H)));
+        const double         dV = fe_values.JxW(q), JdV = (1. + Jm1) * dV;
+        volume += dV;
+        J0m1 += Jm1 * dV;
+        for (unsigned int i = 0; i < n; ++i)
+          h[i] = F_inverse_transpose * g[i];
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            abar[i] += h[i][component[i]] * JdV;
+            for (unsigned int j = 0; j <= i; ++j)
+              L(i, j) += (h[i][component[i]] * h[j][component[j]] -
+                          h[i][component[j]] * h[j][component[i]]) *
+                         JdV;
+          }
+      }
+    J0m1 /= volume;
+    const double J0V = (1. + J0m1) * volume;
+    for (unsigned int i = 0; i < n; ++i)
+      abar[i] /= J0V;
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j <= i; ++j)
+        L(i, j) = L(i, j) / J0V - abar[i] * abar[j];
+    std::vector<double>         dalpha(n);
+    std::vector<Tensor<2, dim>> dF_bar(n), AdF(n);
+    for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+      {
+        const Tensor<2, dim> H   = gradient_at(q, u, result);
+        const double         Jm1 = HyperelasticLaw<dim>::jacobian_minus_one(H);
         // alpha - 1 and F-bar - I = alpha H + (alpha - 1) I without
         // cancellation (the laws take the displacement gradient).
         const double   alpha_minus_one = std::expm1((std::log1p(J0m1) - std::log1p(Jm1)) / dim);
@@ -172,7 +195,7 @@ namespace contact_fem
         for (unsigned int i = 0; i < n; ++i)
           {
             h[i]      = F_inverse_transpose * g[i];
-            dalpha[i] = alpha / dim * (h0[i][component[i]] - h[i][component[i]]);
+            dalpha[i] = alpha / dim * (abar[i] - h[i][component[i]]);
             dF_bar[i] = dalpha[i] * F;
             dF_bar[i][component[i]] += alpha * g[i];
             AdF[i] = double_contract<2, 0, 3, 1>(A, dF_bar[i]);
@@ -184,12 +207,10 @@ namespace contact_fem
             for (unsigned int j = 0; j <= i; ++j)
               {
                 const double PE_j    = P[component[j]] * g[j];
-                const double d2alpha = alpha / (dim * dim) *
-                                         (h0[i][component[i]] - h[i][component[i]]) *
-                                         (h0[j][component[j]] - h[j][component[j]]) +
+                const double d2alpha = alpha / (dim * dim) * (abar[i] - h[i][component[i]]) *
+                                         (abar[j] - h[j][component[j]]) +
                                        alpha / dim *
-                                         (h[i][component[j]] * h[j][component[i]] -
-                                          h0[i][component[j]] * h0[j][component[i]]);
+                                         (L(i, j) + h[i][component[j]] * h[j][component[i]]);
                 K(i, j) += (scalar_product(dF_bar[i], AdF[j]) + dalpha[j] * PE_i +
                             dalpha[i] * PE_j + P_F * d2alpha) *
                            dV;

@@ -28,7 +28,8 @@ namespace contact_fem
    * linear bodies keep their precomputed matrices.
    *
    * With @p f_bar (Q1 only) the law is evaluated at F-bar = (J0 / J)^(1/dim)
-   * F, J0 = det F at the cell centre (de Souza Neto et al. 1996): the
+   * F (de Souza Neto et al. 1996), J0 = (1/V) int det F dV the cell's mean
+   * volume ratio (mean dilatation; the patch test holds on any cell): the
    * volume change is one value per cell, so nearly incompressible bodies do
    * not lock (the finite-strain counterpart of the mean-dilatation B-bar;
    * in 2D the plane-strain form, exponent 1/2). Here it is variational: f
@@ -83,12 +84,12 @@ namespace contact_fem
 
     std::map<types::material_id, std::unique_ptr<HyperelasticLaw<dim>>> laws;
     FEValues<dim>                                                       fe_values;
-    /// At the cell centre, for F-bar's J0; null without F-bar.
-    std::unique_ptr<FEValues<dim>> centre_values;
     /// Per shape function: its component and scalar gradient at the
-    /// present quadrature point and at the centre.
+    /// present quadrature point.
     std::vector<unsigned int>   component;
-    std::vector<Tensor<1, dim>> g, g0;
+    std::vector<Tensor<1, dim>> g;
+    /// Whether the law is evaluated at F-bar (Q1 only).
+    bool f_bar;
   };
 } // namespace contact_fem
 
