@@ -124,8 +124,8 @@ namespace contact_fem
       constexpr unsigned int first_compared = 1;
       if (changes == 0 || iteration < first_compared + 2 || !detects)
         return;
-      const MPI_Comm       comm = interface.communicator();
-      std::vector<int>     same;
+      const MPI_Comm   comm = interface.communicator();
+      std::vector<int> same;
       for (unsigned int k = first_compared; k + 1 < iteration; ++k)
         same.push_back(sets_of_iteration[k] == sets_of_iteration.back());
       Utilities::MPI::min(same, comm, same);
@@ -1208,8 +1208,7 @@ namespace contact_fem
                                linear_iterations)
                 << std::endl;
         if (contact)
-          check_for_cycling(*contact, *interface, at, iteration, update.changes,
-                            sets_of_iteration);
+          check_for_cycling(*contact, *interface, at, iteration, update.changes, sets_of_iteration);
         if (assessment.converged && contact &&
             !search->accept(interface_displacement, step, time, step_size))
           {

@@ -773,7 +773,7 @@ namespace contact_fem
     /// HeldCounts::check_dofs_compared and check_dofs_left_out, shared by
     /// copies.
     std::shared_ptr<std::pair<unsigned int, unsigned int>> held_check_counts;
-    MPI_Comm                      mpi_communicator;
+    MPI_Comm                                               mpi_communicator;
   };
   // The tiling checks differ by dimension (contact_interface_tiling.cc).
   template <>

@@ -997,8 +997,7 @@ namespace contact_fem
 
   template <int dim>
   std::vector<double>
-  AlmFrictional<dim>::traction_forces(const ContactInterface<dim> &interface,
-                                      const bool                   all) const
+  AlmFrictional<dim>::traction_forces(const ContactInterface<dim> &interface, const bool all) const
   {
     std::vector<double> force(interface.dofs().size(), 0.);
     for (const auto &s : interface.slave_nodes)

@@ -676,8 +676,7 @@ namespace contact_fem
                 s.D * t[k] * frame[k][d];
             for (const auto &[m, value] : s.M)
               for (unsigned int d = 0; d < dim; ++d)
-                force[interface.position(interface.nodes[m].dofs[d])] -=
-                  value * t[k] * frame[k][d];
+                force[interface.position(interface.nodes[m].dofs[d])] -= value * t[k] * frame[k][d];
           }
       }
   }
