@@ -16,11 +16,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 
 namespace contact_fem
 {
@@ -419,6 +422,65 @@ namespace contact_fem
     row_imports = std::make_shared<
       std::map<unsigned int, std::shared_ptr<const Utilities::MPI::NoncontiguousPartitioner>>>();
     zone_nodes_received = std::make_shared<unsigned int>(0);
+    relevant_dofs       = relevant;
+    state_held.assign(nodes.size(), 0);
+    held_check_counts = std::make_shared<std::pair<unsigned int, unsigned int>>(0, 0);
+  }
+
+  template <int dim>
+  void
+  ContactInterface<dim>::close_ghosts()
+  {
+    // The force at a DoF of node l sums -lambda_j D_j n_j (j = l) and
+    // lambda_j M_jl n_j over the slave nodes j whose M reaches l: a node
+    // is held if it or one of its masters has a relevant DoF.
+    const auto relevant_node = [&](const unsigned int n) {
+      return std::any_of(nodes[n].dofs.begin(), nodes[n].dofs.end(), [&](const auto dof) {
+        return relevant_dofs.is_element(dof);
+      });
+    };
+    state_held.assign(nodes.size(), 0);
+    for (const SlaveNode &s : slave_nodes)
+      state_held[s.node] = row_holder[s.node] != 0 || relevant_node(s.node) ||
+                           std::any_of(s.M.begin(), s.M.end(), [&](const auto &entry) {
+                             return relevant_node(entry.first);
+                           });
+  }
+
+  template <int dim>
+  bool
+  ContactInterface<dim>::checking_held_state()
+  {
+    static const bool checking = std::getenv("CONTACT_FEM_CHECK_HELD_STATE") != nullptr;
+    return checking;
+  }
+
+  template <int dim>
+  void
+  ContactInterface<dim>::check_held_forces(const std::vector<double> &held,
+                                           const std::vector<double> &full) const
+  {
+    AssertDimension(held.size(), interface_dofs.size());
+    AssertDimension(full.size(), interface_dofs.size());
+    unsigned int compared = 0, left_out = 0, wrong = 0;
+    for (unsigned int k = 0; k < interface_dofs.size(); ++k)
+      {
+        // Bit for bit (a -0 against a +0 counts as a difference).
+        const bool same = std::memcmp(&held[k], &full[k], sizeof(double)) == 0;
+        if (relevant_dofs.is_element(interface_dofs[k]))
+          {
+            ++compared;
+            wrong += !same;
+          }
+        else
+          left_out += !same;
+      }
+    AssertThrow(wrong == 0,
+                ExcMessage("The contact force from the held slave nodes differs from the one "
+                           "from every slave node at " +
+                           std::to_string(wrong) + " locally relevant interface DoFs."));
+    held_check_counts->first  = std::max(held_check_counts->first, compared);
+    held_check_counts->second = std::max(held_check_counts->second, left_out);
   }
 
   template <int dim>
@@ -433,6 +495,10 @@ namespace contact_fem
     held.interface_dofs       = interface_dofs.size();
     held.interface_dofs_owned = owned_interface_dofs.n_elements();
     held.zone_nodes_received  = zone_nodes_received ? *zone_nodes_received : 0;
+    for (const SlaveNode &s : slave_nodes)
+      held.closed_ghosts += state_held[s.node] && row_holder[s.node] != 1;
+    if (held_check_counts)
+      std::tie(held.check_dofs_compared, held.check_dofs_left_out) = *held_check_counts;
     // A std::map entry: the key and value plus about 32 bytes of tree node.
     const double map_entry = 32. + sizeof(types::global_dof_index) + sizeof(unsigned int);
     double       bytes     = 0.;
@@ -532,9 +598,10 @@ namespace contact_fem
   template <int dim>
   double
   ContactInterface<dim>::sum_in_node_order(
-    const std::vector<std::pair<unsigned int, double>> &terms) const
+    const std::vector<std::pair<unsigned int, double>> &terms,
+    const double                                        start) const
   {
-    double sum = 0.;
+    double sum = start;
     if (Utilities::MPI::n_mpi_processes(mpi_communicator) == 1)
       {
         for (const auto &term : terms)

@@ -88,8 +88,8 @@ namespace contact_fem
       return Utilities::MPI::max(largest, comm);
     }
 
-    /// The contact sets of one Newton iteration and its equilibrium
-    /// residual (check_for_cycling()).
+    /// The contact sets of one Newton iteration (the codes of the rows this
+    /// rank owns) and its equilibrium residual (check_for_cycling()).
     struct IterationSets
     {
       std::vector<int> sets;
@@ -100,17 +100,29 @@ namespace contact_fem
     /// equilibrium residual @p r_u, and throws a NewtonFailure (splittable)
     /// when they repeat those of an earlier iteration although they changed
     /// and the residual has not fallen far since: the iteration cycles.
+    /// Each rank records and compares the codes of the rows it owns (the
+    /// others hold copies of the owners' states), the verdicts reduced over
+    /// the ranks. Collective.
     template <int dim>
     void
     check_for_cycling(const ContactFormulation<dim> &contact,
+                      const ContactInterface<dim>   &interface,
                       const std::string             &at,
                       const unsigned int             iteration,
                       const unsigned int             changes,
                       const double                   r_u,
                       std::vector<IterationSets>    &sets_of_iteration)
     {
-      sets_of_iteration.push_back({contact.contact_sets(), r_u});
-      // An empty set: the formulation offers no detection. The sets of the
+      // An empty set: the formulation offers no detection.
+      const std::vector<int> codes   = contact.contact_sets();
+      const bool             detects = !codes.empty();
+      std::vector<int>       owned;
+      if (detects)
+        for (const auto &s : interface.slave_nodes)
+          if (interface.owns_row(s))
+            owned.push_back(codes[s.node]);
+      sets_of_iteration.push_back({owned, r_u});
+      // The sets of the
       // step's start (iteration 0) do not count: the first iterate takes the
       // whole increment in one linear step and may push a node across its
       // bound for one iteration, and coming back to the start's sets is then
@@ -129,18 +141,24 @@ namespace contact_fem
       // slip turns back and slips again along its traction, and the sets
       // of iteration 1 return at iteration 5 with the residual 4e-5 of
       // theirs; the next iterations converge. doc/finite_strain.md,
-      // "Multipoint constraints on the current configuration".)
+      // "Multipoint constraints on the current configuration".) The
+      // residual is the same on every rank.
       constexpr double progress = 1e-2;
       const auto      &now      = sets_of_iteration.back();
-      if (changes == 0 || iteration < first_compared + 2 || now.sets.empty())
+      if (changes == 0 || iteration < first_compared + 2 || !detects)
         return;
+      const MPI_Comm   comm = interface.communicator();
+      std::vector<int> same;
       for (unsigned int k = first_compared; k + 1 < iteration; ++k)
-        if (sets_of_iteration[k].sets == now.sets &&
-            !(now.r_u < progress * sets_of_iteration[k].r_u))
+        same.push_back(sets_of_iteration[k].sets == now.sets);
+      Utilities::MPI::min(same, comm, same);
+      for (unsigned int k = first_compared; k + 1 < iteration; ++k)
+        if (same[k - first_compared] && !(now.r_u < progress * sets_of_iteration[k].r_u))
           {
             unsigned int differing = 0;
             for (unsigned int n = 0; n < now.sets.size(); ++n)
               differing += sets_of_iteration[iteration - 1].sets[n] != now.sets[n];
+            differing = Utilities::MPI::sum(differing, comm);
             throw NewtonFailure(at + ": the stick/slip set cycles: iteration " +
                                   std::to_string(iteration) +
                                   " brings back the contact sets "
@@ -868,8 +886,7 @@ namespace contact_fem
   double
   ContactProblem<dim>::equilibrium_residual_norm(const std::vector<double> &contact_force) const
   {
-    // Free DoFs: not Dirichlet, not hanging. Interface DoFs are added from
-    // the replicated interface data, the others by their owners.
+    // Free DoFs: not Dirichlet, not hanging, each by its owner.
     double local = 0.;
     for (const auto i : owned_dofs)
       if (!dirichlet_constraints.is_constrained(i) && !hanging_constraints.is_constrained(i) &&
@@ -878,14 +895,18 @@ namespace contact_fem
         local += residual(i) * residual(i);
     local += inclined_supports.free_residual_squared(residual);
     double sum = Utilities::MPI::sum(local, comm);
-    if (interface)
-      for (unsigned int k = 0; k < interface->dofs().size(); ++k)
-        if (!interface_dof_fixed[k])
-          {
-            const double r = interface_residual[k] - contact_force[k]; // K u - f - f_contact
-            sum += r * r;
-          }
-    return std::sqrt(sum);
+    if (!interface)
+      return std::sqrt(sum);
+    // The interface DoFs by their owners (contact_force is exact only at
+    // the locally relevant DoFs), added in DoF order as in serial.
+    std::vector<std::pair<unsigned int, double>> terms;
+    for (unsigned int k = 0; k < interface->dofs().size(); ++k)
+      if (!interface_dof_fixed[k] && owned_dofs.is_element(interface->dofs()[k]))
+        {
+          const double r = interface_residual[k] - contact_force[k]; // K u - f - f_contact
+          terms.emplace_back(k, r * r);
+        }
+    return std::sqrt(interface->sum_in_node_order(terms, sum));
   }
 
   template <int dim>
@@ -1215,7 +1236,8 @@ namespace contact_fem
                                linear_iterations)
                 << std::endl;
         if (contact)
-          check_for_cycling(*contact, at, iteration, update.changes, r_u, sets_of_iteration);
+          check_for_cycling(*contact, *interface, at, iteration, update.changes, r_u,
+                            sets_of_iteration);
         if (assessment.converged && contact &&
             !search->accept(interface_displacement, step, time, step_size))
           {

@@ -306,10 +306,44 @@ namespace contact_fem
      * Every rank gets the serial sum bit for bit: the terms other than +0
      * all-gathered and added in node order, each node's in its order (a +0
      * term leaves a sum of terms >= +0 as it is, so only sums of such terms
-     * may skip them). Collective.
+     * may skip them), added to @p start (the same on every rank, not -0):
+     * index any key whose order is the serial sum's (the position in dofs()
+     * too). Collective.
      */
     double
-    sum_in_node_order(const std::vector<std::pair<unsigned int, double>> &terms) const;
+    sum_in_node_order(const std::vector<std::pair<unsigned int, double>> &terms,
+                      const double                                        start = 0.) const;
+
+    /**
+     * Whether this rank holds the state of slave node @p s for the readers
+     * that go over the held nodes (the contact forces): its row is owned
+     * here, or it or a master node of its M has a locally relevant DoF.
+     * Every term of the contact force at a locally relevant DoF comes from
+     * such a node, so the force there is the serial one bit for bit. Set at
+     * each search (M changes with it). Not collective.
+     */
+    bool
+    holds_state(const SlaveNode &s) const
+    {
+      return state_held[s.node];
+    }
+
+    /**
+     * The check of the held state (environment variable
+     * CONTACT_FEM_CHECK_HELD_STATE set): @p held, the contact force at dofs()
+     * summed over the nodes of holds_state(), must equal @p full, summed
+     * over every slave node, bit for bit at every locally relevant DoF;
+     * throws otherwise. Counts the DoFs compared and those elsewhere where
+     * the two differ (the terms the held loop left out) for count_held().
+     * Not collective.
+     */
+    void
+    check_held_forces(const std::vector<double> &held, const std::vector<double> &full) const;
+
+    /// Whether CONTACT_FEM_CHECK_HELD_STATE is set: the readers of the held
+    /// state compute their results from every node too and compare.
+    static bool
+    checking_held_state();
 
     /// The numbers of regular slave nodes whose row this rank owns (first)
     /// and of its ghosts (second); share_node_values().
@@ -333,6 +367,14 @@ namespace contact_fem
       /// The most node states one share_node_values() received besides
       /// the ghosts' (the contact zone all-gathered), since initialize().
       unsigned int zone_nodes_received = 0;
+      /// Slave nodes whose state is held (holds_state()) but whose row
+      /// another rank owns: the ghosts closed under M at the last search.
+      unsigned int closed_ghosts = 0;
+      /// With checking_held_state(): the interface DoFs at which the held
+      /// contact forces were compared with the full ones (the largest
+      /// count of one call), and the most DoFs outside the locally relevant
+      /// ones at which they differed (nodes the held loop left out).
+      unsigned int check_dofs_compared = 0, check_dofs_left_out = 0;
       /// Bytes of the interface's per-face and per-node data (faces,
       /// nodes, slave nodes with their M, the interface DoFs and their
       /// positions), estimated from the containers' sizes; the
@@ -531,6 +573,11 @@ namespace contact_fem
     void
     find_row_holders(const IndexSet &relevant);
 
+    /// Sets state_held from slave_nodes' M and relevant_dofs (at each
+    /// search): holds_state().
+    void
+    close_ghosts();
+
     /// Sets Node::symmetry_plane from the boundary faces of the locally
     /// owned cells of @p dof_handler (at the reference configuration) and
     /// the Dirichlet constraints @p dirichlet, gathered over the ranks; the
@@ -725,7 +772,14 @@ namespace contact_fem
       row_imports;
     /// HeldCounts::zone_nodes_received, shared by copies.
     std::shared_ptr<unsigned int> zone_nodes_received;
-    MPI_Comm                      mpi_communicator;
+    /// The locally relevant DoFs (initialize()) and, per node, whether its
+    /// state is held here (holds_state()).
+    IndexSet          relevant_dofs;
+    std::vector<char> state_held;
+    /// HeldCounts::check_dofs_compared and check_dofs_left_out, shared by
+    /// copies.
+    std::shared_ptr<std::pair<unsigned int, unsigned int>> held_check_counts;
+    MPI_Comm                                               mpi_communicator;
   };
   // The tiling checks differ by dimension (contact_interface_tiling.cc).
   template <>

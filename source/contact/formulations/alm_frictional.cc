@@ -988,10 +988,21 @@ namespace contact_fem
             terms.emplace_back(i, rt * rt);
           }
       }
+    result.multiplier    = std::sqrt(interface.sum_in_node_order(terms));
+    result.contact_force = traction_forces(interface, false);
+    if (ContactInterface<dim>::checking_held_state())
+      interface.check_held_forces(result.contact_force, traction_forces(interface, true));
+    return result;
+  }
+
+  template <int dim>
+  std::vector<double>
+  AlmFrictional<dim>::traction_forces(const ContactInterface<dim> &interface, const bool all) const
+  {
     std::vector<double> force(interface.dofs().size(), 0.);
     for (const auto &s : interface.slave_nodes)
       {
-        if (!s.paired || !this->active[s.node])
+        if (!s.paired || !this->active[s.node] || (!all && !interface.holds_state(s)))
           continue;
         // D_j lambda_j on the slave, -M_jl lambda_j on the masters.
         const Tensor<1, dim> lambda = traction(s);
@@ -1001,9 +1012,7 @@ namespace contact_fem
           for (unsigned int d = 0; d < dim; ++d)
             force[interface.position(interface.nodes[m].dofs[d])] -= value * lambda[d];
       }
-    result.multiplier    = std::sqrt(interface.sum_in_node_order(terms));
-    result.contact_force = force;
-    return result;
+    return force;
   }
 
   template <int dim>

@@ -336,12 +336,15 @@ namespace contact_fem
 
   template <int dim>
   std::vector<double>
-  FrictionlessFormulation<dim>::contact_forces(const ContactInterface<dim> &interface) const
+  FrictionlessFormulation<dim>::contact_forces(const ContactInterface<dim> &interface,
+                                               const bool                   all) const
   {
     // -lambda D n on the slave, +lambda M n on the masters.
     std::vector<double> force(interface.dofs().size(), 0.);
     for (const auto &s : interface.slave_nodes)
       {
+        if (!all && !interface.holds_state(s))
+          continue;
         const double lambda = pressure[s.node];
         if (!s.paired || lambda == 0.)
           continue;
@@ -352,6 +355,8 @@ namespace contact_fem
           for (unsigned int d = 0; d < dim; ++d)
             force[interface.position(interface.nodes[m].dofs[d])] += lambda * value * n[d];
       }
+    if (!all && ContactInterface<dim>::checking_held_state())
+      interface.check_held_forces(force, contact_forces(interface, true));
     return force;
   }
 

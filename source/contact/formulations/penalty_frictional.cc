@@ -643,8 +643,28 @@ namespace contact_fem
     // The normal forces of the base class plus D_j t_j tau on the slave and
     // -M_jl t_j tau on the masters.
     Residuals result = PenaltyFrictionless<dim>::residuals(interface, u);
+    if (ContactInterface<dim>::checking_held_state())
+      {
+        std::vector<double> full = this->contact_forces(interface, true);
+        add_tangential_forces(interface, full, true);
+        add_tangential_forces(interface, result.contact_force, false);
+        interface.check_held_forces(result.contact_force, full);
+      }
+    else
+      add_tangential_forces(interface, result.contact_force, false);
+    return result;
+  }
+
+  template <int dim>
+  void
+  PenaltyFrictional<dim>::add_tangential_forces(const ContactInterface<dim> &interface,
+                                                std::vector<double>         &force,
+                                                const bool                   all) const
+  {
     for (const auto &s : interface.slave_nodes)
       {
+        if (!all && !interface.holds_state(s))
+          continue;
         const TangentialVector<dim> &t = tangential[s.node];
         if (!s.paired || !this->active[s.node] || t.norm_square() == 0.)
           continue;
@@ -652,15 +672,13 @@ namespace contact_fem
         for (unsigned int k = 0; k < dim - 1; ++k)
           {
             for (unsigned int d = 0; d < dim; ++d)
-              result.contact_force[interface.position(interface.nodes[s.node].dofs[d])] +=
+              force[interface.position(interface.nodes[s.node].dofs[d])] +=
                 s.D * t[k] * frame[k][d];
             for (const auto &[m, value] : s.M)
               for (unsigned int d = 0; d < dim; ++d)
-                result.contact_force[interface.position(interface.nodes[m].dofs[d])] -=
-                  value * t[k] * frame[k][d];
+                force[interface.position(interface.nodes[m].dofs[d])] -= value * t[k] * frame[k][d];
           }
       }
-    return result;
   }
 
   template <int dim>

@@ -255,9 +255,11 @@ namespace contact_fem
 
     /// The contact forces of the current pressures at the interface DoFs,
     /// along frame_normal() (the slave normal unless a frictional
-    /// formulation takes the interface normal).
+    /// formulation takes the interface normal), from the slave nodes whose
+    /// state this rank holds (ContactInterface::holds_state()), or from
+    /// every slave node if @p all: exact at the locally relevant DoFs.
     std::vector<double>
-    contact_forces(const ContactInterface<dim> &interface) const;
+    contact_forces(const ContactInterface<dim> &interface, const bool all = false) const;
 
     /// After the owners of the rows decided their nodes (active, pressure
     /// and the derived class's @p key_fields, per node; @p other_fields

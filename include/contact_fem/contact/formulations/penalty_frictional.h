@@ -213,6 +213,15 @@ namespace contact_fem
     }
 
   private:
+    /// Adds the forces of the tangential tractions (D_j t_j on the slave,
+    /// -M_jl t_j on the masters) to @p force at the interface DoFs, from
+    /// the slave nodes whose state this rank holds, or every node if
+    /// @p all.
+    void
+    add_tangential_forces(const ContactInterface<dim> &interface,
+                          std::vector<double>         &force,
+                          const bool                   all) const;
+
     /// The largest elastic slip of the stick nodes, and from the total
     /// tangential and normal contact forces sum_j D_j t_j and sum_j D_j p_j,
     /// with one Coulomb law and every active node slipping one way, the

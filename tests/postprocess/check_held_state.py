@@ -1,0 +1,64 @@
+#!/usr/bin/env python3
+"""The contact forces from the held slave nodes on 2 ranks (issue 32 item 1).
+
+Usage: check_held_state.py CONTACT_FEM MPIEXEC,-np,2 SCENE.prm...
+
+Runs each SCENE on 2 ranks (the launcher given comma-separated) with
+CONTACT_FEM_CHECK_HELD_STATE set. In that mode every contact-force loop
+(FrictionlessFormulation::contact_forces(), AlmFrictional's and
+PenaltyFrictional's tangential forces) is computed twice, from the slave
+nodes whose state the rank holds (its rows and the ghosts closed under M:
+ContactInterface::holds_state()) and from every slave node, and the program
+stops if the two differ in one bit at a locally relevant interface DoF.
+Reads summary.json's held_per_rank of the last cycle and checks:
+
+- the run finished (no difference at a relevant DoF);
+- each rank compared the forces at some DoFs;
+- the held loop left something out, in one scene at least: at some
+  interface DoF that is not relevant on a rank the two forces differ (the
+  terms of nodes it does not hold), so the comparison is not vacuous (in
+  the 3D Hertz scene the contact zone is held by both ranks: nothing is
+  left out there);
+- each rank holds the state of fewer slave nodes than all: rows owned +
+  closed ghosts < slave nodes, on some rank; and the closed ghosts include
+  the row ghosts (closed ghosts >= row ghosts).
+"""
+import json
+import sys
+
+import scene_run
+from scene_run import run_scene
+
+
+def main():
+    contact_fem, launcher, scenes = sys.argv[1], sys.argv[2], sys.argv[3:]
+    scene_run.ENVIRONMENT["CONTACT_FEM_CHECK_HELD_STATE"] = "1"
+    ok, left_out = True, False
+    for scene in scenes:
+        run_scene(contact_fem, scene, "Output directory=results", "Output/Write VTU=false",
+                  launcher=launcher.split(","))
+        with open("results/summary.json") as f:
+            contact = json.load(f)["cycles"][-1]["contact"]
+        held = contact["held_per_rank"]
+        name = scene.split("/")[-1]
+        for key in ("slave_nodes", "rows_owned", "row_ghosts", "closed_ghosts",
+                    "check_dofs_compared", "check_dofs_left_out", "interface_dofs"):
+            print(f"{name} {key}: {' / '.join(str(v) for v in held[key])}")
+        owned, closed, ghosts = held["rows_owned"], held["closed_ghosts"], held["row_ghosts"]
+        checks = [
+            ("2 ranks", len(owned) == 2),
+            ("each rank compared the forces", all(n > 0 for n in held["check_dofs_compared"])),
+            ("a rank holds fewer states than all",
+             any(o + c < n for o, c, n in zip(owned, closed, held["slave_nodes"]))),
+            ("closed ghosts >= row ghosts", all(c >= g for c, g in zip(closed, ghosts))),
+        ]
+        for text, good in checks:
+            print(f"{name} {text}: {'ok' if good else 'FAILED'}")
+            ok = ok and good
+        left_out = left_out or any(n > 0 for n in held["check_dofs_left_out"])
+    print(f"the held loop left terms out in some scene: {'ok' if left_out else 'FAILED'}")
+    sys.exit(0 if ok and left_out else 1)
+
+
+if __name__ == "__main__":
+    main()
