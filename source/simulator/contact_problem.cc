@@ -1265,11 +1265,14 @@ namespace contact_fem
       throw NewtonFailure(where + " did not converge in " +
                             std::to_string(newton_parameters.max_iterations) + " iterations " +
                             monitor.last_residuals() + "." +
-                            diagnosis().non_convergence_hint(assessment.stalled, monitor.last_r_u(),
-                                                             monitor.last_r_lambda()) +
+                            (!assessment.stalled && !monitor.floor_hint().empty() ?
+                               monitor.floor_hint() :
+                               diagnosis().non_convergence_hint(assessment.stalled,
+                                                                monitor.last_r_u(),
+                                                                monitor.last_r_lambda())) +
                             (contact ? contact->non_convergence_note() : std::string()) +
                             diagnosis().precision_hint(),
-                          !assessment.stalled);
+                          !assessment.stalled && monitor.floor_hint().empty());
 
     return iteration;
   }
