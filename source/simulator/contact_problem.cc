@@ -917,6 +917,7 @@ namespace contact_fem
   {
     current_time = time;
     step_start   = start;
+    start_rule_nodes.clear(); // recorded after this step's iteration 0
     make_dirichlet_constraints(dirichlet_inputs(), relevant_dofs, time, dirichlet_constraints);
     compute_cell_loads(time);
     // Finite strain: the step's first solve takes the tangent of the last
