@@ -7,8 +7,9 @@ Usage: check_newton_floor.py CONTACT_FEM SOURCE_DIR
 prm/hertz_3d.prm, coarse (Q1, Sphere refinements 1), neo-Hookean on the
 current configuration, Active check factor 1e-2, at 1e-8 of its load, with
 Newton/Displacement relative tolerance 1e-10 and absolute 1e-12: |r_u|
-stays at about 1e-8 (3e-7 of the step's initial residual: the round-off of
-the finite-strain residual at strains of 1e-9) with the active set settled.
+stays at about 1e-8 (3e-7 of the step's initial residual) with the active
+set settled, a floor that does not scale with the load (doc/design.md,
+"What a failed step names").
 - the run fails (non-zero exit), once (no split: a smaller step does not
   lower the floor), with "did not converge" and "|r_u| stagnated at F ...
   Reachable: Newton/Displacement absolute tolerance = A (or a relative
