@@ -1327,7 +1327,7 @@ namespace contact_fem
            "node whose gap is below Contact/Active check factor times its size, and the solve "
            "closes those gaps whatever the load, so smaller load steps do not change them. "
            "Hint: lower Contact/Active check factor (the default, 1e-2, takes no node farther "
-           "than 1e-2 of its size)";
+           "than 1e-2 of its size), then more load steps if an element still inverts";
   }
 
   template <int dim>
