@@ -22,7 +22,7 @@ import re
 import subprocess
 import sys
 
-from scene_run import ENVIRONMENT
+from scene_run import ENVIRONMENT, perturbation
 
 contact_fem, source_dir = sys.argv[1:3]
 SETTINGS = ["Materials/Models=neo-hookean, linear", "Contact/Kinematics=current",
@@ -37,7 +37,7 @@ SETTINGS = ["Materials/Models=neo-hookean, linear", "Contact/Kinematics=current"
 
 def run(*extra):
     command = [contact_fem, f"{source_dir}/prm/hertz_3d.prm"]
-    for setting in SETTINGS + list(extra):
+    for setting in SETTINGS + list(perturbation()) + list(extra):
         command += ["--set", setting]
     return subprocess.run(command, env=ENVIRONMENT, capture_output=True, text=True)
 
