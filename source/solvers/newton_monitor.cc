@@ -220,7 +220,11 @@ namespace contact_fem
       last_lambda <= absolute_lambda ||
       (reference_lambda > 0. &&
        last_lambda <= parameters.multiplier_relative_tolerance * reference_lambda);
-    if (floor_run.size() < 4 || last_u <= displacement_target() || !lambda_met)
+    // Far below the step's residual: a flat run at the scale of the step's
+    // own residual is a Newton iteration that does not converge (a load
+    // step too large), which splitting may cure: no floor then.
+    if (floor_run.size() < 4 || last_u <= displacement_target() || !lambda_met ||
+        last_u > 1e-4 * reference_u())
       return "";
     const auto [lowest, highest] = std::minmax_element(floor_run.begin(), floor_run.end());
     if (*lowest < 0.5 * *highest)
