@@ -42,8 +42,7 @@ import sys
 
 class Variant:
     def __init__(self, spec, dim, size):
-        self.name, _, rule = spec.partition("=")
-        kind, _, value = rule.partition(":")
+        self.name, _, rules = spec.partition("=")
         self.dim = dim
         self.shift = [0.0] * 3
         self.turns = 0
@@ -52,6 +51,13 @@ class Variant:
         self.moduli = 1.0
         self.load = 1.0
         self.swap = False
+        # Rules joined by '&' combine (e.g. a turn and a translation): the
+        # point is rotated, scaled, then shifted, whatever their order here.
+        for rule in rules.split("&"):
+            self.add_rule(rule, spec, size)
+
+    def add_rule(self, rule, spec, size):
+        kind, _, value = rule.partition(":")
         if kind == "translate":
             parts = [float(v) * size for v in value.split(",")]
             self.shift[: len(parts)] = parts
@@ -98,6 +104,8 @@ class Variant:
 
     def local(self, axis):
         # Scene-frame coordinate as an expression of the variant's x, y, z.
+        if self.degrees is not None and list(getattr(self, "axis", [0, 0, 1]))[:2] != [0, 0]:
+            sys.exit("metamorphic.py: @x@ @y@ @z@ take turns about z only")
         c, s = self.cos_sin()
         X = f"(x - ({self.shift[0]!r}))"
         Y = f"(y - ({self.shift[1]!r}))"
@@ -146,7 +154,8 @@ def transform_mesh(source, target, v):
             line = " ".join([fields[0]] + [fmt(t) for t in y])
         elif section == "$Elements" and count >= 0:
             fields = line.split()
-            top = {2: {3}, 3: {5}}[v.dim]  # quadrilaterals, hexahedra
+            # cells: triangles, quadrilaterals; tetrahedra, hexahedra, prisms
+            top = {2: {2, 3}, 3: {4, 5, 6}}[v.dim]
             if int(fields[1]) in top:
                 fields[3] = str(v.material(int(fields[3])))
             line = " ".join(fields)
@@ -170,10 +179,14 @@ def expand(text, v, template_dir, work_dir):
 
     def vec(m):
         parts = split_top_level(m.group(1))
-        a, b = parts[0], parts[1]
         k = v.moduli * v.load
+        if len(parts) == 3:
+            # 3D: the full rotation (any axis).
+            R = v.matrix()
+            return ", ".join(f"{k!r}*(" + " + ".join(
+                f"({R[i][j]!r})*({parts[j]})" for j in range(3)) + ")" for i in range(3))
+        a, b = parts[0], parts[1]
         rotated = [f"{k!r}*({c}*({a}) - ({s})*({b}))", f"{k!r}*({s}*({a}) + {c}*({b}))"]
-        rotated += [f"{k!r}*({p})" for p in parts[2:]]
         return ", ".join(rotated)
 
     def axes(m):
@@ -202,11 +215,16 @@ def expand(text, v, template_dir, work_dir):
     return text
 
 
-def run(exe, prm_text, name, work_dir, mpi):
+def run(exe, prm_text, name, work_dir, mpi, override_text=""):
+    # The --set values go into a file of their own that includes the
+    # scene: contact_fem refuses a key set twice in one file.
+    scene = os.path.join(work_dir, name + "_scene.prm")
     prm = os.path.join(work_dir, name + ".prm")
     out_dir = os.path.join(work_dir, "results-" + name)
+    with open(scene, "w") as f:
+        f.write(prm_text + "\n")
     with open(prm, "w") as f:
-        f.write(prm_text + f"\nset Output directory = {out_dir}\n")
+        f.write(f"include {scene}\n" + override_text + f"\nset Output directory = {out_dir}\n")
     command = ([mpi, "-np", "2"] if mpi else []) + [exe, prm]
     result = subprocess.run(command, capture_output=True, text=True)
     if result.returncode != 0:
@@ -256,14 +274,15 @@ def main():
     args = parser.parse_args()
 
     with open(args.template) as f:
-        template = f.read() + "".join(parameter_text(entry) for entry in args.set)
+        template = f.read()
+    overrides = "".join(parameter_text(entry) for entry in args.set)
     dim = int(re.search(r"set\s+Dimension\s*=\s*(\d)", template).group(1)) \
         if re.search(r"set\s+Dimension\s*=\s*(\d)", template) else 2
     template_dir = os.path.dirname(os.path.abspath(args.template))
     work_dir = os.getcwd()
     base = Variant("identity=identity:", dim, args.size)
     summary = run(args.executable, expand(template, base, template_dir, work_dir), "identity",
-                  work_dir, args.mpirun)
+                  work_dir, args.mpirun, expand(overrides, base, template_dir, work_dir))
     if summary is None:
         sys.exit("metamorphic.py: the untransformed scene failed")
     reference = invariants(summary, base, dim)
@@ -274,7 +293,7 @@ def main():
     for spec in args.variants:
         v = Variant(spec, dim, args.size)
         summary = run(args.executable, expand(template, v, template_dir, work_dir), v.name,
-                      work_dir, args.mpirun)
+                      work_dir, args.mpirun, expand(overrides, v, template_dir, work_dir))
         if summary is None:
             failures += 1
             print(f"{v.name}: FAILED")
