@@ -142,6 +142,27 @@ namespace contact_fem
   void
   InputChecks<dim>::check_contact_pairs(const Triangulation<dim> &tria) const
   {
+    // A support on a whole slave surface acts on the DoFs that the contact
+    // (or tying) constraints set: the two conflict, and a normal one made
+    // every node inactive and stopped as "no contact ... nothing held the
+    // loaded body". A support under the contact is the master's side.
+    const auto refuse_support_on = [&](const auto &pairs, const std::string &pairs_key) {
+      for (const auto &pair : pairs)
+        for (const auto &c : boundary_conditions.displacements)
+          AssertThrow(c.boundary_id != pair.slave,
+                      ExcMessage(c.key + ": boundary " +
+                                 std::to_string(static_cast<unsigned int>(c.boundary_id)) +
+                                 " is the slave surface of " + pairs_key + " '" +
+                                 std::to_string(static_cast<unsigned int>(pair.slave)) + ": " +
+                                 std::to_string(static_cast<unsigned int>(pair.master)) +
+                                 "', whose nodes the contact constraints move; a support "
+                                 "there conflicts with them. Hold the body elsewhere, or "
+                                 "swap the pair so that the supported surface is the "
+                                 "master."));
+    };
+    refuse_support_on(contact_parameters.pairs, "Contact/Pairs");
+    refuse_support_on(contact_parameters.tied_pairs, "Contact/Tied pairs");
+
     // Mortar contact needs two bodies: a surface in contact with another
     // surface of its own body would be self-contact, which the mortar
     // interface does not implement; it used to be accepted and fail later
