@@ -84,7 +84,13 @@ namespace
             cl.overrides.emplace_back(assignment.substr(0, eq), assignment.substr(eq + 1));
           }
         else if (arg == "--output-directory")
-          cl.output_directory = next(arg);
+          {
+            cl.output_directory = next(arg);
+            // Empty, it would be ignored: the results would go elsewhere.
+            if (Utilities::trim(cl.output_directory).empty())
+              throw std::runtime_error("option --output-directory: got an empty path; expected "
+                                       "the directory for the results.");
+          }
         else if (!arg.empty() && arg[0] == '-')
           throw std::runtime_error("unknown option '" + arg + "' (see --help).");
         else if (cl.prm_file.empty())
