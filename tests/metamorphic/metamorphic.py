@@ -29,12 +29,16 @@ any angle about z or the axis (ax, ay, az); templates without @AXES@, @x@,
 @VEC@, e.g. supported by rollers), scale_length,
 scale_moduli, scale_load (the loads @STRESS@ and @VEC@ only, at fixed
 moduli: a positively homogeneous problem scales its stresses and forces by
-the factor and its energy by its square), swap.
+the factor and its energy by its square), swap, renumber (the mesh file's
+node tags permuted, nodes and elements shuffled, every element turned
+inside out). Rules joined by '&' combine, e.g.
+far_turned=rotate_degrees:37,0.3,-1,0.4&translate:1e3,-2e3,5e2.
 """
 import argparse
 import json
 import math
 import os
+import random
 import re
 import subprocess
 import sys
@@ -51,6 +55,7 @@ class Variant:
         self.moduli = 1.0
         self.load = 1.0
         self.swap = False
+        self.renumber = False
         # Rules joined by '&' combine (e.g. a turn and a translation): the
         # point is rotated, scaled, then shifted, whatever their order here.
         for rule in rules.split("&"):
@@ -75,6 +80,8 @@ class Variant:
             self.load = float(value)
         elif kind == "swap":
             self.swap = True
+        elif kind == "renumber":
+            self.renumber = True
         elif kind != "identity":
             sys.exit(f"metamorphic.py: unknown variant kind '{kind}' in '{spec}'")
 
@@ -161,8 +168,45 @@ def transform_mesh(source, target, v):
             line = " ".join(fields)
         count += 1
         out.append(line)
+    if v.renumber:
+        out = renumbered(out)
     with open(target, "w") as f:
         f.write("\n".join(out) + "\n")
+
+
+# Gmsh element type -> its node order turned inside out (lines, triangles,
+# quadrilaterals, tetrahedra, hexahedra, prisms; points stay).
+REVERSED = {1: [1, 0], 2: [0, 2, 1], 3: [0, 3, 2, 1], 4: [0, 2, 1, 3],
+            5: [0, 3, 2, 1, 4, 7, 6, 5], 6: [0, 2, 1, 3, 5, 4], 15: [0]}
+
+
+def renumbered(lines):
+    """The MSH 2.2 lines with the node tags permuted into a sparse range,
+    the nodes and the elements listed in a shuffled order (so the second
+    body may come first) and every element's nodes in the opposite turn:
+    what another mesher, or Gmsh's renumbering, could write for the same
+    mesh. Seeded: the same file every run."""
+    rng = random.Random(20261128)
+    start = lines.index("$Nodes")
+    n_nodes = int(lines[start + 1])
+    nodes = [l.split() for l in lines[start + 2: start + 2 + n_nodes]]
+    tags = rng.sample(range(1, 10 * n_nodes + 1), n_nodes)
+    new_tag = {node[0]: str(t) for node, t in zip(nodes, tags)}
+    nodes = [[new_tag[node[0]]] + node[1:] for node in nodes]
+    rng.shuffle(nodes)
+    lines[start + 2: start + 2 + n_nodes] = [" ".join(node) for node in nodes]
+    start = lines.index("$Elements")
+    n_elements = int(lines[start + 1])
+    elements = []
+    for line in lines[start + 2: start + 2 + n_elements]:
+        fields = line.split()
+        kind, n_tags = int(fields[1]), int(fields[2])
+        head, vertices = fields[1: 3 + n_tags], [new_tag[t] for t in fields[3 + n_tags:]]
+        elements.append(head + [vertices[i] for i in REVERSED[kind]])
+    rng.shuffle(elements)
+    lines[start + 2: start + 2 + n_elements] = [
+        " ".join([str(k + 1)] + e) for k, e in enumerate(elements)]
+    return lines
 
 
 def expand(text, v, template_dir, work_dir):
