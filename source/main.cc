@@ -183,12 +183,11 @@ namespace
           key += Utilities::trim(rest.substr(0, equals));
           const auto [where, inserted] = first_line.emplace(key, number);
           if (!inserted)
-            throw std::runtime_error("the parameter file '" + file + "', line " +
-                                     std::to_string(number) + ": '" + key +
-                                     "' is set a second time (first on line " +
-                                     std::to_string(where->second) +
-                                     "); only the last value would be used. Keep one of "
-                                     "the two.");
+            throw std::runtime_error(
+              "the parameter file '" + file + "', line " + std::to_string(number) + ": '" + key +
+              "' is set a second time (first on line " + std::to_string(where->second) +
+              "); only the last value would be used. Keep one of "
+              "the two.");
         }
     }
 
@@ -216,7 +215,7 @@ namespace
         // A line ending in '\' goes on in the next one (ParameterHandler).
         const unsigned int start = number;
         std::string        next;
-        const auto continued = [](const std::string &text) {
+        const auto         continued = [](const std::string &text) {
           const std::string trimmed = Utilities::trim(text);
           return !trimmed.empty() && trimmed.back() == '\\';
         };
