@@ -1089,6 +1089,45 @@ namespace contact_fem
     }
   } // namespace
 
+  /**
+   * deal.II's "boundary id for an internal face" in the user's words: a
+   * face with a physical tag between two cells, mostly two bodies meshed on
+   * shared nodes (Gmsh BooleanFragments or Coherence), which contact and
+   * tying cannot use. The face's corners, from deal.II's message, are put
+   * back into the file's coordinates (the mesh may have been moved).
+   */
+  std::string
+  internal_face_message(const std::string &why, const std::string &file, const Point<3> &origin)
+  {
+    std::string corners;
+    const auto  at = why.find("located at positions");
+    if (at != std::string::npos)
+      {
+        std::istringstream in(why.substr(at + 20));
+        char               open = 0;
+        while (in >> open && open == '(')
+          {
+            std::string inside;
+            std::getline(in, inside, ')');
+            std::istringstream numbers(inside);
+            std::string        point;
+            double             x = 0.;
+            for (unsigned int d = 0; d < 3 && numbers >> x; ++d)
+              point += (d > 0 ? ", " : "") + significant(x + origin[d], 12);
+            corners += (corners.empty() ? "" : "; ") + ("(" + point + ")");
+          }
+      }
+    return mesh_key + ": '" + file +
+           "': a face with a physical tag (boundary id) lies inside the mesh, between two "
+           "cells" +
+           (corners.empty() ? std::string() : " (its corners: " + corners + ")") +
+           ". Most often two bodies share the nodes of the surface between them (in Gmsh: "
+           "BooleanFragments, Coherence or Geometry.AutoCoherence fused the volumes): bodies "
+           "in contact or tied need their own nodes there, each meshed on its own (no "
+           "fragments between them). A surface inside one body cannot carry a boundary id: "
+           "remove it from its Physical group.";
+  }
+
   template <int dim>
   MeshFileInfo
   read_gmsh(const std::string &file, Triangulation<dim> &coarse)
@@ -1147,8 +1186,11 @@ namespace contact_fem
       }
     catch (const std::exception &e)
       {
-        AssertThrow(false, ExcMessage(mesh_key + ": cannot read '" + file +
-                                      "' as a Gmsh mesh: " + user_message(e)));
+        const std::string why = user_message(e);
+        AssertThrow(why.find("boundary id for an internal face") == std::string::npos,
+                    ExcMessage(internal_face_message(why, file, origin)));
+        AssertThrow(false,
+                    ExcMessage(mesh_key + ": cannot read '" + file + "' as a Gmsh mesh: " + why));
       }
     if (const unsigned int n = assign_loose_facets(loose, file, coarse); n > 0)
       info.orphan_note = std::to_string(n) + (n == 1 ? " boundary element" : " boundary elements") +

@@ -22,6 +22,7 @@
 #include <contact_fem/solvers/rigid_body_modes.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -1440,7 +1441,20 @@ namespace contact_fem
   ContactProblem<dim>::run()
   {
     Timer total_timer;
-    start_run();
+    try
+      {
+        start_run();
+      }
+    catch (const Interrupted &)
+      {
+        throw;
+      }
+    catch (const std::exception &e)
+      {
+        // A mesh refused after the output directory was opened.
+        log.note_error(user_message(e));
+        throw;
+      }
     Json cycles    = Json::array();
     int  exit_code = 0;
     try
@@ -1483,9 +1497,21 @@ namespace contact_fem
     catch (const std::exception &e)
       {
         // Anything else thrown after the first solve started is a failure of
-        // the run (main() gives exit 2): the summary says so.
+        // the run (main() gives exit 2): the summary says so. Before it, an
+        // input error (a probe or fixed point at no vertex): the log says
+        // it, and the table of no cycle goes.
         if (solving)
           write_summary(cycles, total_timer.wall_time(), "failed: " + user_message(e));
+        else
+          {
+            log.note_error(user_message(e));
+            convergence_table.reset();
+            if (Utilities::MPI::this_mpi_process(comm) == 0)
+              {
+                std::error_code ignored;
+                std::filesystem::remove(output.directory + "/convergence.csv", ignored);
+              }
+          }
         throw;
       }
     pcout << warnings.repeats();
