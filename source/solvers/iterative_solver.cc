@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <string>
 
 namespace contact_fem
 {
@@ -70,6 +72,35 @@ namespace contact_fem
     list.set("null space: type", "pre-computed");
     list.set("null space: dimension", static_cast<int>(n_modes));
     list.set("null space: vectors", null_space.data());
+    // TEMPORARY (branch mgtune): CFEM_ML="key=i:3;key=d:0.5;key=s:text"
+    // overrides entries of the list for the A/B measurement.
+    if (const char *env = std::getenv("CFEM_ML"))
+      {
+        std::string spec(env);
+        std::size_t start = 0;
+        while (start < spec.size())
+          {
+            std::size_t end = spec.find(';', start);
+            if (end == std::string::npos)
+              end = spec.size();
+            const std::string item = spec.substr(start, end - start);
+            start                  = end + 1;
+            const std::size_t eq   = item.find('=');
+            AssertThrow(eq != std::string::npos && item.size() > eq + 2 && item[eq + 2] == ':',
+                        ExcMessage("CFEM_ML: bad item " + item));
+            const std::string key   = item.substr(0, eq);
+            const char        type  = item[eq + 1];
+            const std::string value = item.substr(eq + 3);
+            if (type == 'i')
+              list.set(key, std::stoi(value));
+            else if (type == 'd')
+              list.set(key, std::stod(value));
+            else if (type == 'b')
+              list.set(key, value == "true");
+            else
+              list.set(key, value);
+          }
+      }
     preconditioner = std::make_unique<TrilinosWrappers::PreconditionAMG>();
     preconditioner->initialize(matrix, list);
     setup_seconds += timer.wall_time();
