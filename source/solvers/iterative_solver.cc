@@ -10,8 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <string>
 
 namespace contact_fem
 {
@@ -59,6 +57,15 @@ namespace contact_fem
     AssertThrow(n_modes > 0 &&
                   null_space.size() == n_modes * static_cast<std::size_t>(matrix.local_size()),
                 ExcMessage("the iterative solver has no near-null space for this mesh"));
+    // Measured against other lists for the total solve time
+    // (doc/performance.md, "Cheaper set-ups for every solve"): the set-up is
+    // mostly ML's sparse products for the smoothed prolongator and the
+    // Galerkin operators. Unsmoothed aggregation (damping factor 0) cuts it
+    // to a third and paid in 3D Q1, but nearly tripled the CG iterations in
+    // 2D Q2; a threshold of 1e-3 saved iterations in 3D serially only; more
+    // sweeps, Gauss-Seidel, the power method, nodal aggregation and other
+    // thresholds or coarse sizes cost more than they saved. No other list
+    // was faster in 2D and 3D, serial and on 2 ranks.
     Teuchos::ParameterList list;
     ML_Epetra::SetDefaults("SA", list);
     list.set("ML output", 0);
@@ -72,35 +79,6 @@ namespace contact_fem
     list.set("null space: type", "pre-computed");
     list.set("null space: dimension", static_cast<int>(n_modes));
     list.set("null space: vectors", null_space.data());
-    // TEMPORARY (branch mgtune): CFEM_ML="key=i:3;key=d:0.5;key=s:text"
-    // overrides entries of the list for the A/B measurement.
-    if (const char *env = std::getenv("CFEM_ML"))
-      {
-        std::string spec(env);
-        std::size_t start = 0;
-        while (start < spec.size())
-          {
-            std::size_t end = spec.find(';', start);
-            if (end == std::string::npos)
-              end = spec.size();
-            const std::string item = spec.substr(start, end - start);
-            start                  = end + 1;
-            const std::size_t eq   = item.find('=');
-            AssertThrow(eq != std::string::npos && item.size() > eq + 2 && item[eq + 2] == ':',
-                        ExcMessage("CFEM_ML: bad item " + item));
-            const std::string key   = item.substr(0, eq);
-            const char        type  = item[eq + 1];
-            const std::string value = item.substr(eq + 3);
-            if (type == 'i')
-              list.set(key, std::stoi(value));
-            else if (type == 'd')
-              list.set(key, std::stod(value));
-            else if (type == 'b')
-              list.set(key, value == "true");
-            else
-              list.set(key, value);
-          }
-      }
     preconditioner = std::make_unique<TrilinosWrappers::PreconditionAMG>();
     preconditioner->initialize(matrix, list);
     setup_seconds += timer.wall_time();
