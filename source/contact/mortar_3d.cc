@@ -461,21 +461,26 @@ namespace contact_fem
         if (slave.degree() == 1)
           return boundary;
         const std::vector<BoundaryChord> chords = boundary_chords(slave, plane, boundary);
+        // The lens of a chord lies between it and the face edge, whose
+        // farthest point is its middle (a parabola): the signed sags.
+        std::vector<double> sags;
+        for (const BoundaryChord &chord : chords)
+          sags.push_back(
+            cross_2d(chord.b - chord.a,
+                     plane.coordinates(slave.point(0.5 * (chord.xi_a + chord.xi_b))) - chord.a) /
+            chord.a.distance(chord.b));
+        const Point<2> centre = plane.coordinates(slave.point(Point<2>()));
         for (const Point<3> &x : master_nodes)
           {
             const Point<2> v = plane.coordinates(x);
-            for (const BoundaryChord &chord : chords)
+            for (unsigned int k = 0; k < chords.size(); ++k)
               {
-                // The lens of the chord: between it and the face edge,
-                // whose farthest point is its middle (a parabola).
-                const Tensor<1, 2> c        = chord.b - chord.a;
-                const double       length   = c.norm();
-                const double       fraction = ((v - chord.a) * c) / (length * length);
-                const double       offset   = cross_2d(c, v - chord.a) / length;
-                const double       sag =
-                  cross_2d(c, plane.coordinates(slave.point(0.5 * (chord.xi_a + chord.xi_b))) -
-                                chord.a) /
-                  length;
+                const BoundaryChord &chord    = chords[k];
+                const double         sag      = sags[k];
+                const Tensor<1, 2>   c        = chord.b - chord.a;
+                const double         length   = c.norm();
+                const double         fraction = ((v - chord.a) * c) / (length * length);
+                const double         offset   = cross_2d(c, v - chord.a) / length;
                 if (!(fraction > 0. && fraction < 1.) || !(offset * sag > 0.) ||
                     std::abs(offset) > std::abs(sag) || std::abs(offset) <= 1e-10 * length)
                   continue;
@@ -488,7 +493,7 @@ namespace contact_fem
                 const bool inside_face = std::abs(xi[fixed]) < 1.;
                 const bool inside_chord =
                   std::signbit(offset) ==
-                  std::signbit(cross_2d(c, plane.coordinates(slave.point(Point<2>())) - chord.a));
+                  std::signbit(cross_2d(c, centre - chord.a));
                 if (inside_face == inside_chord ||
                     std::abs(std::abs(xi[fixed]) - 1.) <= 1e-10 ||
                     !((xi[free] - chord.xi_a[free]) * (xi[free] - chord.xi_b[free]) < 0.))
@@ -569,11 +574,11 @@ namespace contact_fem
             const bool inner = side(lower) > 0.;
             if ((side(upper) > 0.) == inner)
               continue;
-            while (std::abs(upper - lower) > 1e-15)
-              {
-                const double middle                     = 0.5 * (lower + upper);
-                ((side(middle) > 0.) == inner ? lower : upper) = middle;
-              }
+            // Down to adjacent numbers (s may reach beyond [0, 1]: the
+            // chord may be a part of the edge).
+            for (double middle = 0.5 * (lower + upper); middle != lower && middle != upper;
+                 middle        = 0.5 * (lower + upper))
+              ((side(middle) > 0.) == inner ? lower : upper) = middle;
             const double root = 0.5 * (lower + upper);
             if (!found || edge_point(root).distance(u) < distance)
               {
