@@ -9,16 +9,21 @@
 // compared with an independent one: the slave's boundary, sampled with 4 x
 // 4000 points and projected along n0, clipped by the master's square.
 //  - "corner near the rim": the plate corner (2, 2) lies just outside the
-//    face, 2e-3 (of the face's size) beyond the chord of a curved edge, and
+//    face, 2.0e-3 beyond the chord of a curved edge (the face is 1.9
+//    across; the parameter eta = 0.9987 at the chord there), and
 //    both master edges through it cross that edge. The crossing of one was
 //    searched from the chord's fraction at its neighbour taken as an edge
 //    parameter; the edge's parameter runs unevenly along the chord, the
 //    bracket missed the crossing and the vertex fell inside the face by the
 //    chord's sag: 5.1e-7 of the face lost.
-//  - "corner in the lens": the plate corner (4, 1) lies between a chord and
+//  - "corner in the lens": the plate corner (6, 2) lies between a chord and
 //    its curved edge, inside the face: the clipping by the chords dropped
 //    it, and the crossings were found on the continuations of its edges:
-//    3.1e-6 of the face doubled.
+//    3.1e-6 of the face doubled (the overlaps of the two masters through
+//    the corner each 3.05e-6 too large, that of the master beyond it, which
+//    has only its corner in the face, missing). With the crossings searched
+//    on the whole edge but no ring point added at the corner, the sum was
+//    right but each of those overlaps still wrong by 3.05e-6.
 // Every case also rotated and translated, and scaled by 1e-3 and 1e3 (the
 // tolerances are relative to the face).
 #include <deal.II/base/tensor.h>
