@@ -439,14 +439,13 @@ namespace contact_fem
 
       /**
        * The boundary ring of the slave face as parameters, counterclockwise
-       * in them: its boundary nodes, and on a curved face also the point of
-       * a face edge next to each of the @p master_nodes that lies between
-       * that edge and its chord (in the lens that the chord cuts off, or
-       * adds). Clipped by the chords alone, the overlap would lose a master
+       * in them: its boundary nodes, and on a curved face also points of a
+       * face edge near each of the @p master_nodes that lies between that
+       * edge and its chord (in the lens that the chord cuts off, or adds). Clipped by the chords alone, the overlap would lose a master
        * corner there (or keep one outside the face), and the crossings of
        * its master edges with the face edge (edge_crossing()) would lie on
        * their continuations beyond it: 3e-6 of a sphere's rim face doubled
-       * (sphere-x100 of bench/stability). With the point added the corner
+       * (sphere-x100 of bench/stability). With the points added the corner
        * lies on the right side of the new chords: a convex edge's lenses
        * only shrink.
        */
@@ -460,56 +459,52 @@ namespace contact_fem
           boundary.push_back(quad_node_parameter(slave.degree(), i));
         if (slave.degree() == 1)
           return boundary;
-        const std::vector<BoundaryChord> chords = boundary_chords(slave, plane, boundary);
-        // The lens of a chord lies between it and the face edge, whose
-        // farthest point is its middle (a parabola): the signed sags.
-        std::vector<double> sags;
-        for (const BoundaryChord &chord : chords)
-          sags.push_back(
-            cross_2d(chord.b - chord.a,
-                     plane.coordinates(slave.point(0.5 * (chord.xi_a + chord.xi_b))) - chord.a) /
-            chord.a.distance(chord.b));
         const Point<2> centre = plane.coordinates(slave.point(Point<2>()));
+        // Whether the node x (at v in the plane) lies in the lens of the
+        // chord: between it and the face edge, whose farthest point is at
+        // the chord's middle parameter (a parabola).
+        const auto in_lens = [&](const BoundaryChord &chord, const Point<3> &x, const Point<2> &v) {
+          const Tensor<1, 2> c      = chord.b - chord.a;
+          const double       length = c.norm();
+          const double       sag =
+            cross_2d(c, plane.coordinates(slave.point(0.5 * (chord.xi_a + chord.xi_b))) - chord.a) /
+            length;
+          const double fraction = ((v - chord.a) * c) / (length * length);
+          const double offset   = cross_2d(c, v - chord.a) / length;
+          if (!(fraction > 0. && fraction < 1.) || !(offset * sag > 0.) ||
+              std::abs(offset) > std::abs(sag) || std::abs(offset) <= 1e-10 * length)
+            return false;
+          // Between chord and edge: on the edge's inner side (the inside
+          // of the face) exactly where the chord bulges inward.
+          Point<2> xi;
+          if (!project_along(slave, x, plane.normal, xi))
+            return false;
+          const unsigned int fixed = chord.xi_a[0] == chord.xi_b[0] ? 0 : 1, free = 1 - fixed;
+          const bool         inside_face = std::abs(xi[fixed]) < 1.;
+          const bool         inside_chord =
+            std::signbit(offset) == std::signbit(cross_2d(c, centre - chord.a));
+          return inside_face != inside_chord && std::abs(std::abs(xi[fixed]) - 1.) > 1e-10 &&
+                 (xi[free] - chord.xi_a[free]) * (xi[free] - chord.xi_b[free]) < 0.;
+        };
+        // The chord's middle parameter added until the node leaves the
+        // lenses (each halving quarters the sag): fixed parameters, which
+        // do not move with the configuration, so that the derivatives of
+        // the overlap (AD numbers) need none of theirs. (The edge point
+        // next to the node instead moved with it, and the quadrature error
+        // of the fan integration with that point: the derivative check of
+        // contact_interface_linearisation_02 lost its second order.)
         for (const Point<3> &x : master_nodes)
           {
             const Point<2> v = plane.coordinates(x);
-            for (unsigned int k = 0; k < chords.size(); ++k)
+            for (unsigned int depth = 0; depth < 20; ++depth)
               {
-                const BoundaryChord &chord    = chords[k];
-                const double         sag      = sags[k];
-                const Tensor<1, 2>   c        = chord.b - chord.a;
-                const double         length   = c.norm();
-                const double         fraction = ((v - chord.a) * c) / (length * length);
-                const double         offset   = cross_2d(c, v - chord.a) / length;
-                if (!(fraction > 0. && fraction < 1.) || !(offset * sag > 0.) ||
-                    std::abs(offset) > std::abs(sag) || std::abs(offset) <= 1e-10 * length)
-                  continue;
-                // Between chord and edge: on the edge's inner side (the
-                // inside of the face) exactly where the chord bulges inward.
-                Point<2> xi;
-                if (!project_along(slave, x, plane.normal, xi))
-                  continue;
-                const unsigned int fixed = chord.xi_a[0] == chord.xi_b[0] ? 0 : 1, free = 1 - fixed;
-                const bool inside_face = std::abs(xi[fixed]) < 1.;
-                const bool inside_chord =
-                  std::signbit(offset) ==
-                  std::signbit(cross_2d(c, centre - chord.a));
-                if (inside_face == inside_chord ||
-                    std::abs(std::abs(xi[fixed]) - 1.) <= 1e-10 ||
-                    !((xi[free] - chord.xi_a[free]) * (xi[free] - chord.xi_b[free]) < 0.))
-                  continue;
-                xi[fixed] = chord.xi_a[fixed];
-                for (unsigned int k = 0; k < boundary.size(); ++k)
-                  {
-                    const Point<2> &a = boundary[k], &b = boundary[(k + 1) % boundary.size()];
-                    if (a[fixed] == xi[fixed] && b[fixed] == xi[fixed] &&
-                        (xi[free] - a[free]) * (xi[free] - b[free]) < 0.)
-                      {
-                        boundary.insert(boundary.begin() + k + 1, xi);
-                        break;
-                      }
-                  }
-                break;
+                const std::vector<BoundaryChord> chords = boundary_chords(slave, plane, boundary);
+                unsigned int                     k      = 0;
+                while (k < chords.size() && !in_lens(chords[k], x, v))
+                  ++k;
+                if (k == chords.size())
+                  break;
+                boundary.insert(boundary.begin() + k + 1, 0.5 * (chords[k].xi_a + chords[k].xi_b));
               }
           }
         return boundary;
