@@ -68,8 +68,7 @@ namespace contact_fem
               if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == p.boundary_id)
                 {
                   // The face's normal (not normalised): in 2D the edge turned,
-                  // in 3D the cross product of the diagonals (of two edges on a
-                  // triangle).
+                  // in 3D the cross product of the diagonals.
                   const auto     face = cell->face(f);
                   Tensor<1, dim> n;
                   if constexpr (dim == 2)
@@ -78,9 +77,6 @@ namespace contact_fem
                       n[0]                   = t[1];
                       n[1]                   = -t[0];
                     }
-                  else if (face->n_vertices() == 3)
-                    n = cross_product_3d(face->vertex(1) - face->vertex(0),
-                                         face->vertex(2) - face->vertex(0));
                   else
                     n = cross_product_3d(face->vertex(3) - face->vertex(0),
                                          face->vertex(2) - face->vertex(1));
