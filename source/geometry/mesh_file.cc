@@ -7,6 +7,7 @@
 #include <contact_fem/geometry/hexahedron_shape.h>
 #include <contact_fem/core/value_range.h>
 #include <contact_fem/geometry/mesh_file.h>
+#include <contact_fem/geometry/mesh_queries.h>
 #include <contact_fem/geometry/mesh_split.h>
 #include <contact_fem/geometry/model_frame.h>
 #include <contact_fem/core/format.h>
@@ -1415,33 +1416,6 @@ namespace contact_fem
 
   namespace
   {
-    /// The outward unit normal of the (straight or bilinear) face @p f.
-    template <int dim>
-    Tensor<1, dim>
-    outward_normal(const typename Triangulation<dim>::cell_iterator &cell, const unsigned int f)
-    {
-      const auto     face = cell->face(f);
-      Tensor<1, dim> n;
-      if constexpr (dim == 2)
-        {
-          const Tensor<1, dim> t = face->vertex(1) - face->vertex(0);
-          n[0]                   = t[1];
-          n[1]                   = -t[0];
-        }
-      else
-        {
-          // The cross product of the diagonals of the quadrilateral.
-          const Tensor<1, dim> a = face->vertex(3) - face->vertex(0);
-          const Tensor<1, dim> b = face->vertex(2) - face->vertex(1);
-          n[0]                   = a[1] * b[2] - a[2] * b[1];
-          n[1]                   = a[2] * b[0] - a[0] * b[2];
-          n[2]                   = a[0] * b[1] - a[1] * b[0];
-        }
-      if (n * (face->center() - cell->center()) < 0.)
-        n *= -1.;
-      return n.norm() > 0. ? n / n.norm() : n;
-    }
-
     /// The joints of a face with its neighbours on the boundary: its
     /// vertices in 2D, its lines in 3D.
     template <int dim>

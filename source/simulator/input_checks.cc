@@ -67,20 +67,8 @@ namespace contact_fem
             for (const auto f : cell->face_indices())
               if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == p.boundary_id)
                 {
-                  // The face's normal (not normalised): in 2D the edge turned,
-                  // in 3D the cross product of the diagonals.
-                  const auto     face = cell->face(f);
-                  Tensor<1, dim> n;
-                  if constexpr (dim == 2)
-                    {
-                      const Tensor<1, dim> t = face->vertex(1) - face->vertex(0);
-                      n[0]                   = t[1];
-                      n[1]                   = -t[0];
-                    }
-                  else
-                    n = cross_product_3d(face->vertex(3) - face->vertex(0),
-                                         face->vertex(2) - face->vertex(1));
-                  any = true;
+                  const Tensor<1, dim> n = outward_normal<dim>(cell, f);
+                  any                    = true;
                   for (unsigned int d = 0; d < dim; ++d)
                     if (!components.count(d) && std::abs(n[d]) > 1e-6 * n.norm())
                       absorbed = false;
