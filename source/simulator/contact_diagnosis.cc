@@ -165,6 +165,60 @@ namespace contact_fem
   }
 
   template <int dim>
+  bool
+  ContactDiagnosis<dim>::load_vanishes(const double time) const
+  {
+    const QGauss<dim - 1> quadrature(run.dof_handler.get_fe().degree + 1);
+    FEFaceValues<dim>     fe_face(run.mapping, run.dof_handler.get_fe(), quadrature,
+                                  update_quadrature_points);
+    bool vanishes = true;
+    // Whether @p value(point) is 0 at the quadrature points and vertices of
+    // every face of boundary @p id.
+    const auto zero_on = [&](const types::boundary_id id, const auto &value) {
+      for (const auto &cell : run.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
+              {
+                fe_face.reinit(cell, f);
+                for (unsigned int q = 0; q < quadrature.size(); ++q)
+                  if (value(fe_face.quadrature_point(q)) != 0.)
+                    return false;
+                for (const auto v : cell->face(f)->vertex_indices())
+                  if (value(cell->face(f)->vertex(v)) != 0.)
+                    return false;
+              }
+      return true;
+    };
+    for (const auto &condition : run.boundary_conditions.pressures)
+      {
+        UserFunction<dim> pressure({condition.expression}, run.scene.frame);
+        pressure.set_time(time);
+        vanishes = vanishes && zero_on(condition.boundary_id, [&](const Point<dim> &x) {
+                     return pressure.value(x);
+                   });
+      }
+    for (const auto &condition : run.boundary_conditions.tractions)
+      {
+        UserFunction<dim> traction(condition.expressions, run.scene.frame);
+        traction.set_time(time);
+        for (unsigned int d = 0; d < dim; ++d)
+          vanishes = vanishes && zero_on(condition.boundary_id, [&](const Point<dim> &x) {
+                       return traction.value(x, d);
+                     });
+      }
+    for (const auto &condition : run.boundary_conditions.displacements)
+      {
+        UserFunction<dim> function({condition.expression}, run.scene.frame);
+        function.set_time(time);
+        vanishes = vanishes && zero_on(condition.boundary_id, [&](const Point<dim> &x) {
+                     return function.value(x);
+                   });
+      }
+    return Utilities::MPI::min(vanishes ? 1u : 0u, comm) == 1u;
+  }
+
+  template <int dim>
   std::string
   ContactDiagnosis<dim>::load_at_round_off(const double time) const
   {

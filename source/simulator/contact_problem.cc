@@ -1116,6 +1116,13 @@ namespace contact_fem
     solving = true;
     Timer step_timer;
     prepare_load_step(time, step_size, start);
+    if (step == 0 && start == StepStart::unloaded)
+      {
+        // Nothing was solved yet: a zero load is an input error.
+        solving = false;
+        check_load_not_zero();
+        solving = true;
+      }
     pcout << "  Load step " << step + 1 << ", t = " << time << std::endl;
     if (output.print_newton_iterations)
       pcout << NewtonMonitor::header(contact ? contact->iteration_header() : "",
@@ -1281,6 +1288,36 @@ namespace contact_fem
 
   template <int dim>
   void
+  ContactProblem<dim>::check_load_not_zero() const
+  {
+    if (!contact)
+      return;
+    // The nominal step times; splits fall between them, where a load that
+    // is zero at every one of them is not looked at.
+    for (unsigned int k = load_stepping.n_steps; k > 0; --k)
+      if (!diagnosis().load_vanishes(load_stepping.end_time * k / load_stepping.n_steps))
+        return;
+    // Bodies that start inside each other (a shrink fit) press themselves
+    // together without a load. 1e-8 of the element size is far above the
+    // round-off of touching surfaces.
+    double deepest = 0.;
+    for (const auto &s : interface->slave_nodes)
+      if (interface->owns_row(s))
+        deepest = std::max(deepest, -interface->gap(s, interface_displacement) / s.size);
+    if (Utilities::MPI::max(deepest, comm) > 1e-8)
+      return;
+    throw std::runtime_error(
+      "Boundary conditions: the load is zero (every Pressure, Traction and Prescribed "
+      "displacement is 0 at each of the " +
+      std::to_string(load_stepping.n_steps) + " load step(s) up to End time = " +
+      significant(load_stepping.end_time, 6) +
+      "), and no slave node starts inside its master: nothing presses the bodies together, so "
+      "the answer is u = 0 without contact pressure, and which touching nodes are in contact "
+      "is undetermined (round-off would decide it). Set a load, or check its expression.");
+  }
+
+  template <int dim>
+  void
   ContactProblem<dim>::record_start_rule_nodes()
   {
     // Only a step from the unloaded state takes nodes apart by the factor
@@ -1399,6 +1436,7 @@ namespace contact_fem
     LoadStepControl control(load_stepping, 0., load_stepping.n_steps);
     const double    time = control.next_time();
     prepare_load_step(time, time, StepStart::unloaded);
+    check_load_not_zero();
   }
 
   template <int dim>

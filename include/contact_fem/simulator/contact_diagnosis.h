@@ -58,6 +58,12 @@ namespace contact_fem
     /// @p time. Collective.
     std::map<types::material_id, Tensor<1, dim>>
     body_loads(const double time) const;
+    /// Whether every Pressure, Traction and Prescribed displacement is
+    /// exactly zero at @p time on its boundary (at the faces' quadrature
+    /// points and vertices): a load whose resultant vanishes (a pressure
+    /// all around a body) is not zero. Collective.
+    bool
+    load_vanishes(const double time) const;
     /// Why the load at @p time is at the round-off of the geometry, or "".
     std::string
     load_at_round_off(const double time) const;
