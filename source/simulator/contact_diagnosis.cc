@@ -335,6 +335,12 @@ namespace contact_fem
       ": the load separates the bodies. Set Contact/Allow loss of contact = true if the "
       "scene may lose contact.";
     // Causes other than a separating load, most specific first.
+    if (load_vanishes(time))
+      return NewtonFailure(where +
+                             ": no contact. No slave node is active because the load is zero "
+                             "there: nothing presses the bodies together. Set Contact/Allow "
+                             "loss of contact = true if the load path unloads the bodies.",
+                           false);
     std::string cause = precision_limits();
     if (cause.empty())
       cause = load_at_round_off(time);
