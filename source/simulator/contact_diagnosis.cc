@@ -570,8 +570,7 @@ namespace contact_fem
   template <int dim>
   std::vector<std::string>
   ContactDiagnosis<dim>::modelling_warnings(const unsigned int degree,
-                                            const bool         b_bar,
-                                            const double       end_time) const
+                                            const bool         b_bar) const
   {
     std::vector<std::string> warnings;
     for (const auto &[id, constants] : run.materials.bodies)
@@ -588,7 +587,7 @@ namespace contact_fem
           warnings.push_back(text.str());
         }
     for (const std::string &limit :
-         {stiffness_contrast_limit(), auxetic_limit(), load_at_round_off(end_time)})
+         {stiffness_contrast_limit(), auxetic_limit()})
       if (!limit.empty())
         warnings.push_back(limit + ".");
     // Volumetric locking: measured on the Hertz scene, p_max is off by more

@@ -121,11 +121,11 @@ namespace contact_fem
     double
     slave_stiffness_ratio(const unsigned int pair) const;
     /// The warnings printed before the first solve, each a sentence: models
-    /// beyond double precision, a load at round-off at @p end_time,
-    /// Poisson's ratios where elements of @p degree lock without B-bar
-    /// (@p b_bar: it is on), a slave side much stiffer than its master.
+    /// beyond double precision, Poisson's ratios where elements of
+    /// @p degree lock without B-bar (@p b_bar: it is on), a slave side much
+    /// stiffer than its master. (A load at round-off is an input error.)
     std::vector<std::string>
-    modelling_warnings(const unsigned int degree, const bool b_bar, const double end_time) const;
+    modelling_warnings(const unsigned int degree, const bool b_bar) const;
     /// The warning of a cycle whose @p reaction record (its relative
     /// imbalance) at @p time does not balance the load, with its likely
     /// cause; "" if it balances.
