@@ -686,6 +686,38 @@ namespace contact_fem
 
   template <int dim>
   std::string
+  ContactDiagnosis<dim>::pressureless_contact(const Json  &contact,
+                                              const double time,
+                                              const bool   load_vanishes) const
+  {
+    const auto n_active = static_cast<unsigned int>(contact["active_slave_nodes"].number_value());
+    if (n_active == 0)
+      return "";
+    const double pressure = std::max(std::abs(contact["max_contact_pressure"].number_value()),
+                                     std::abs(contact["min_active_contact_pressure"].number_value()));
+    // The mean stress of a force load, or the stress of a prescribed
+    // displacement in the softer body: a pressed contact's pressures are of
+    // its order, round-off about 1e-16 of it.
+    const double stress = run.materials.youngs_modulus_range().first *
+                          load_displacement_scale(time) /
+                          model_extent(run.dof_handler.get_triangulation());
+    std::string why;
+    if (load_vanishes)
+      why = "the load is zero at t = " + significant(time, 6) +
+            ": nothing presses the bodies together";
+    else if (pressure < 1e-12 * stress)
+      why = "the contact pressures at t = " + significant(time, 6) + " are below 1e-12 of the " +
+            "load's stress scale (" + significant(stress, 2) +
+            "): the bodies touch without pressing each other";
+    else
+      return "";
+    return why + ", so the pressures are round-off (at most " + significant(pressure, 2) +
+           " in size) and the " + std::to_string(n_active) +
+           " active slave node(s) are picked by rounding: read the state as without contact";
+  }
+
+  template <int dim>
+  std::string
   ContactDiagnosis<dim>::tension_failure(const Json &contact) const
   {
     const double p_min = contact["min_active_contact_pressure"].number_value();

@@ -1955,37 +1955,28 @@ namespace contact_fem
       {run_view(0, nullptr, contact_force).forces, held, diagnosis().body_loads(current_time),
        materials.youngs_modulus_range().first, solution.linfty_norm()});
     cycle_record.set("contact", contact_json).set("reaction", reaction_json);
-    // A load path that ends unloaded (a load-unload cycle back to zero):
-    // the bodies touch without pressure, and round-off picks the active
-    // set and the signs of its pressures. The state is right (u and the
-    // pressures vanish to round-off); its active set means nothing.
-    const bool unloaded = converged && contact && diagnosis().load_vanishes(current_time) &&
-                          contact_json["active_slave_nodes"].number_value() > 0;
-    if (unloaded)
-      warn("unloaded_warning",
-           "the load is zero at t = " + significant(current_time, 6) +
-             ": nothing presses the bodies together, so the contact pressures are "
-             "round-off (at most " +
-             significant(std::max(std::abs(contact_json["max_contact_pressure"].number_value()),
-                                  std::abs(
-                                    contact_json["min_active_contact_pressure"].number_value())),
-                         2) +
-             " in size) and the " +
-             std::to_string(
-               static_cast<unsigned int>(contact_json["active_slave_nodes"].number_value())) +
-             " active slave node(s) are picked by rounding: read the state as unloaded, without "
-             "contact",
-           cycle_record);
+    // Bodies that touch without pressing (a load path back to zero load, a
+    // slide at zero normal load): round-off picks the active set and the
+    // signs of its pressures. The state is right (the pressures vanish to
+    // round-off); its active set means nothing. Also for the last converged
+    // state of a failed run, which is printed as the results.
+    const bool        unloaded     = contact && diagnosis().load_vanishes(current_time);
+    const std::string pressureless = contact ? diagnosis().pressureless_contact(
+                                                 contact_json, current_time, unloaded) :
+                                               "";
+    if (!pressureless.empty())
+      warn("unloaded_warning", pressureless, cycle_record);
     if (const std::string text =
-          converged && !unloaded ? diagnosis().tension_failure(contact_json) : "";
+          converged && pressureless.empty() ? diagnosis().tension_failure(contact_json) : "";
         !text.empty())
       {
         pcout << std::endl << "Error: " << text << "." << std::endl;
         cycle_record.set("failure", text);
         return false;
       }
-    // Unloaded, the reactions are round-off: their balance is no check.
-    if (converged && !unloaded)
+    // Unloaded with contact, the reactions are round-off: their balance is
+    // no check.
+    if (converged && (!unloaded || pressureless.empty()))
       if (const std::string text = diagnosis().balance_warning(reaction_json, current_time);
           !text.empty())
         {

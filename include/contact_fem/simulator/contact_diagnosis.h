@@ -131,6 +131,13 @@ namespace contact_fem
     /// cause; "" if it balances.
     std::string
     balance_warning(const Json &reaction, const double time) const;
+    /// The warning of a state whose "contact" record @p contact has active
+    /// nodes at pressures of round-off: the load is zero at @p time
+    /// (@p load_vanishes), or every pressure is below 1e-12 of the load's
+    /// stress scale (E_min times the load's displacement over the model's
+    /// extent). "" if the contact presses. Collective.
+    std::string
+    pressureless_contact(const Json &contact, const double time, const bool load_vanishes) const;
     /// Why a converged state whose "contact" record @p contact has an
     /// active node in tension is no result (its active set was decided by
     /// rounding); "" if every active node is in compression.
