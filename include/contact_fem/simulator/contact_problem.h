@@ -201,6 +201,13 @@ namespace contact_fem
     /// NewtonFailure if the bonds cycle.
     unsigned int
     update_bonds(const std::string &at, const unsigned int iteration);
+    /// Before the first solve: throws the input error of a load at the
+    /// round-off of the geometry at the end time, or of a load that is
+    /// zero at every load step while the slave nodes start outside their
+    /// masters (nothing presses the bodies together; the answer is u = 0).
+    /// Either way round-off would pick the active set. Collective.
+    void
+    check_load_resolved() const;
     /// After iteration 0: start_rule_nodes of this step.
     void
     record_start_rule_nodes();

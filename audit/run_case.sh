@@ -1,0 +1,7 @@
+#!/bin/bash
+# usage: run_case.sh NAME PRM [--set ...]: runs main's binary, prints the verdict lines and rc
+B=${B:-/work/main/build/contact_fem}
+name=$1; shift; prm=$1; shift
+out=$(nice -n 10 timeout 120 $B $prm "$@" --output-directory /tmp/a3/$name 2>&1); rc=$?
+echo "=== $name (rc=$rc)"
+echo "$out" | grep -v "^ *|" | grep -iE "error|warning|failed|converged|active slave|max contact pressure|min active|contact force|tangential / normal|stick|slip nodes|imbalance:|applied load|total" | head -14
