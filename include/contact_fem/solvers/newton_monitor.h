@@ -55,6 +55,15 @@ namespace contact_fem
                     const double load_displacement = 0.,
                     const double coordinate_size   = 0.);
 
+    /// The size of the round-off of the residual at the iterate the last
+    /// solve gave (ContactProblem::residual_round_off()): a flat |r_u|
+    /// within round_off_units of it is a floor that no iteration lowers.
+    void
+    set_round_off(const double scale)
+    {
+      round_off_u = scale;
+    }
+
     /// What the residuals of one iteration say.
     struct Assessment
     {
@@ -147,6 +156,8 @@ namespace contact_fem
     /// the residual did not fall (each flat: above half its predecessor),
     /// with the iteration before them; cleared by any other iteration.
     std::vector<double> floor_run;
+    /// set_round_off(); 0 before the first solve.
+    double round_off_u = 0.;
   };
 } // namespace contact_fem
 
