@@ -117,8 +117,9 @@ namespace contact_fem
     last_residuals() const;
 
     /// With |r_u| above its target: " |r_u| stagnated at ..." naming the
-    /// floor and the tolerance reachable, when the residual has stopped
-    /// falling (floor_run); empty otherwise.
+    /// floor, its round-off scale and the tolerance reachable, when the
+    /// residual has stopped falling (floor_run) within 10 units of
+    /// set_round_off(); empty otherwise.
     std::string
     floor_hint() const;
 
