@@ -64,6 +64,14 @@ namespace contact_fem
       round_off_u = scale;
     }
 
+    /// The last iteration was flat (floor_run): the next one's round-off
+    /// scale is wanted.
+    bool
+    in_flat_run() const
+    {
+      return !floor_run.empty();
+    }
+
     /// What the residuals of one iteration say.
     struct Assessment
     {
