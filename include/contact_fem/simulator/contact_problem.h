@@ -231,6 +231,14 @@ namespace contact_fem
 
     void
     solve_linear_system(const double newton_residual_target);
+    /// Machine epsilon times || |A| |x| || over the unconstrained rows of
+    /// the last solve's system: the size of the round-off of A x, and so of
+    /// any residual evaluated at x. A displacement far larger than the
+    /// load's own (a rigid motion that closes an initial gap) makes it
+    /// exceed a tolerance relative to the load (doc/design.md, "What a
+    /// failed step names").
+    double
+    residual_round_off() const;
     /// The failure of a Newton update whose linear system is singular
     /// (@p what: where and the solver's words): splittable when the tangent
     /// depends on the iterate and was regular before in this load path.
