@@ -1358,7 +1358,7 @@ namespace contact_fem
     {
       TimerOutput::Scope t(*timer, "Setup: mesh");
       // The input checks built the mesh of a scene without refinements.
-      if (triangulation.n_global_active_cells() == 0)
+      if (triangulation.n_levels() == 0)
         input_checks().create_scene_mesh(scene, triangulation);
       std::set<types::material_id> material_ids;
       for (const auto &[id, constants] : materials.bodies)
