@@ -1,6 +1,6 @@
 #!/bin/bash
 # usage: run_case.sh NAME PRM [--set ...]: runs main's binary, prints the verdict lines and rc
-B=${B:-/work/main/build/contact_fem}
+B=${B:-$(cd "$(dirname "$0")/../../.." && pwd)/build/contact_fem}
 name=$1; shift; prm=$1; shift
 out=$(nice -n 10 timeout 120 $B $prm "$@" --output-directory /tmp/a3/$name 2>&1); rc=$?
 echo "=== $name (rc=$rc)"
