@@ -21,12 +21,16 @@ Reads summary.json's held_per_rank of the last cycle and checks:
   left out there);
 - each rank holds the state of fewer slave nodes than all: rows owned +
   closed ghosts < slave nodes, on some rank; and the closed ghosts include
-  the row ghosts (closed ghosts >= row ghosts).
+  the row ghosts (closed ghosts >= row ghosts);
+- the split of the slave rows, ghosts, interface DoFs and zone states of
+  held_per_rank.py (the test held_per_rank_01 once, on a run of its own of
+  the first scene here).
 """
 import json
 import sys
 
 import scene_run
+from held_per_rank import per_rank_checks
 from scene_run import run_scene
 
 
@@ -42,16 +46,16 @@ def main():
         held = contact["held_per_rank"]
         name = scene.split("/")[-1]
         for key in ("slave_nodes", "rows_owned", "row_ghosts", "closed_ghosts",
-                    "check_dofs_compared", "check_dofs_left_out", "interface_dofs"):
+                    "check_dofs_compared", "check_dofs_left_out", "interface_dofs",
+                    "interface_dofs_owned", "zone_nodes_received"):
             print(f"{name} {key}: {' / '.join(str(v) for v in held[key])}")
         owned, closed, ghosts = held["rows_owned"], held["closed_ghosts"], held["row_ghosts"]
         checks = [
-            ("2 ranks", len(owned) == 2),
             ("each rank compared the forces", all(n > 0 for n in held["check_dofs_compared"])),
             ("a rank holds fewer states than all",
              any(o + c < n for o, c, n in zip(owned, closed, held["slave_nodes"]))),
             ("closed ghosts >= row ghosts", all(c >= g for c, g in zip(closed, ghosts))),
-        ]
+        ] + per_rank_checks(contact)
         for text, good in checks:
             print(f"{name} {text}: {'ok' if good else 'FAILED'}")
             ok = ok and good

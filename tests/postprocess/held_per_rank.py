@@ -1,10 +1,8 @@
-#!/usr/bin/env python3
-"""What each rank holds of the contact interface on 2 ranks (issue 32 item 1).
-
-Usage: check_held_per_rank.py CONTACT_FEM MPIEXEC,-np,2 SCENE.prm
-
-Runs SCENE on 2 ranks (the launcher given comma-separated) and reads summary.json's "held_per_rank" of the last
-cycle (the per-rank size of the contact data). Checks:
+"""What each rank holds of the contact interface on 2 ranks (issue 32 item 1):
+the checks on summary.json's "held_per_rank" of a run's last cycle (the
+per-rank size of the contact data), run by check_held_state.py on each of its
+2-rank runs (formerly a test of their own, held_per_rank_01, which ran the
+3D frictional Hertz scene a second time). Checks:
 
 - the slave rows (the nodes whose multiplier, active flag and friction state
   a rank decides) are split: each rank owns a part, the parts add up to the
@@ -16,31 +14,16 @@ cycle (the per-rank size of the contact data). Checks:
 - the node states a share received in the contact zone's all-gather are
   states of nodes the rank neither owns nor ghosts: at most the slave nodes
   held less the owned and the ghosts.
-
-Today every rank holds the whole interface (its faces, slave nodes and
-interface DoFs); the counts are printed so that a run shows what a rank
-holds, and the checks hold once a rank holds only its share.
 """
-import json
-import sys
-
-from scene_run import run_scene
 
 
-def main():
-    contact_fem, launcher, scene = sys.argv[1:4]
-    run_scene(contact_fem, scene, "Output directory=results", "Output/Write VTU=false",
-              launcher=launcher.split(","))
-    with open("results/summary.json") as f:
-        summary = json.load(f)
-    contact = summary["cycles"][-1]["contact"]
+def per_rank_checks(contact):
+    """The checks above on the last cycle's "contact" block of summary.json:
+    a list of (name, passed)."""
     held = contact["held_per_rank"]
     n_slave = contact["slave_nodes"]
-    for key, values in held.items():
-        print(f"{key}: {' / '.join(str(v) for v in values)}")
-    print(f"slave nodes (summary): {n_slave}")
     owned, ghosts, nodes = held["rows_owned"], held["row_ghosts"], held["slave_nodes"]
-    checks = [
+    return [
         ("2 ranks", len(owned) == 2),
         ("the rows owned add up to the slave nodes", sum(owned) == n_slave),
         ("each rank owns a part, fewer than all", all(0 < n < n_slave for n in owned)),
@@ -52,12 +35,4 @@ def main():
          all(z <= n - o - g for z, n, o, g in zip(held["zone_nodes_received"], nodes, owned,
                                                   ghosts))),
     ]
-    ok = True
-    for name, good in checks:
-        print(f"{name}: {'ok' if good else 'FAILED'}")
-        ok = ok and good
-    sys.exit(0 if ok else 1)
 
-
-if __name__ == "__main__":
-    main()
