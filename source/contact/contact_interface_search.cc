@@ -140,6 +140,7 @@ namespace contact_fem
     store_slave_nodes(slave_data, M_of_node, weighted_gap_of_node, u_at_dofs, slave_surface_normals,
                       master_surface_normals);
     close_ghosts();
+    close_lines();
   }
 
   namespace

@@ -425,7 +425,9 @@ namespace contact_fem
       }
     // Contact and tying constraints couple slave DoFs to master DoFs
     // anywhere: every rank may write to the rows and entries of all
-    // interface DoFs.
+    // interface DoFs. The constraints store the lines a rank needs only
+    // (line_dofs(), per search), the vectors and the pattern keep this set:
+    // the residual is read across a search.
     writable_dofs = relevant_dofs;
     for (const auto *dofs :
          {interface ? &interface->dofs() : nullptr, tying ? &tying->dofs() : nullptr})
@@ -622,6 +624,26 @@ namespace contact_fem
             }
   }
 
+  namespace
+  {
+    /// The DoFs a rank's constraints store lines at (their local lines):
+    /// the locally relevant ones and those of the contact and tied lines it
+    /// needs (ContactInterface::line_dofs(), per search), a subset of the
+    /// DoFs the vectors and the pattern may write to (writable_dofs).
+    template <int dim>
+    IndexSet
+    line_dofs(const IndexSet              &relevant_dofs,
+              const ContactInterface<dim> *interface,
+              const MeshTying<dim>        *tying)
+    {
+      IndexSet dofs = relevant_dofs;
+      for (const auto *surfaces : {interface, tying ? &tying->interface() : nullptr})
+        if (surfaces)
+          dofs.add_indices(surfaces->line_dofs());
+      return dofs;
+    }
+  } // namespace
+
   template <int dim>
   void
   ContactProblem<dim>::make_sparsity_pattern()
@@ -630,16 +652,28 @@ namespace contact_fem
     // All candidate contact constraints at once: the pattern then holds
     // every coupling any active set of this search can create, and the
     // constrained rows keep their own entries (keep_constrained_dofs).
-    AffineConstraints<double> candidates;
-    candidates.reinit(writable_dofs);
-    DoFTools::make_hanging_node_constraints(dof_handler, candidates);
-    add_interface_hanging_constraints(candidates);
-    if (tying)
-      tying->add_constraints(candidates, false, true);
-    if (contact)
-      contact->add_constraints(*interface, interface_fixed_values, candidates, true);
-    candidates.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins, true);
-    candidates.close();
+    // The lines of the slave nodes this rank needs only (line_dofs()); with
+    // the check of the held state also those of every node, compared.
+    const auto make_candidates = [this](const IndexSet &lines) {
+      AffineConstraints<double> candidates;
+      candidates.reinit(lines);
+      DoFTools::make_hanging_node_constraints(dof_handler, candidates);
+      add_interface_hanging_constraints(candidates);
+      if (tying)
+        tying->add_constraints(candidates, false, true);
+      if (contact)
+        contact->add_constraints(*interface, interface_fixed_values, candidates, true);
+      candidates.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins, true);
+      candidates.close();
+      return candidates;
+    };
+    AffineConstraints<double> candidates =
+      make_candidates(line_dofs(relevant_dofs, interface.get(), tying.get()));
+    const ContactInterface<dim> *checker = interface ? interface.get() :
+                                           tying     ? &tying->interface() :
+                                                       nullptr;
+    if (checker && ContactInterface<dim>::checking_held_state())
+      checker->check_held_lines(candidates, make_candidates(writable_dofs));
 
     // Every DoF of a cell couples with every other one and with the masters
     // of those that are constrained: a superset of the couplings of any
@@ -680,28 +714,48 @@ namespace contact_fem
   void
   ContactProblem<dim>::make_constraints()
   {
-    constraints.clear();
-    constraints.reinit(writable_dofs);
-    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-    add_interface_hanging_constraints(constraints);
-    if (tying)
-      tying->add_constraints(constraints);
-    if (contact)
-      contact->add_constraints(*interface, interface_fixed_values, constraints, false);
-    constraints.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins, true);
-    constraints.close();
+    // The lines of the slave nodes this rank needs (line_dofs()); with the
+    // check of the held state also those of every node, compared.
+    const auto make_trial = [this](AffineConstraints<double> &c, const IndexSet &lines) {
+      c.clear();
+      c.reinit(lines);
+      DoFTools::make_hanging_node_constraints(dof_handler, c);
+      add_interface_hanging_constraints(c);
+      if (tying)
+        tying->add_constraints(c);
+      if (contact)
+        contact->add_constraints(*interface, interface_fixed_values, c, false);
+      c.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins, true);
+      c.close();
+    };
+    const auto make_test = [this](AffineConstraints<double> &c, const IndexSet &lines) {
+      c.clear();
+      c.reinit(lines);
+      DoFTools::make_hanging_node_constraints(dof_handler, c);
+      add_interface_hanging_constraints(c);
+      if (tying)
+        tying->add_constraints(c, true);
+      contact->add_test_constraints(*interface, interface_fixed_values, c);
+      c.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins, true);
+      c.close();
+    };
+    const IndexSet               lines   = line_dofs(relevant_dofs, interface.get(), tying.get());
+    const ContactInterface<dim> *checker = interface ? interface.get() :
+                                           tying     ? &tying->interface() :
+                                                       nullptr;
+    const auto check = [&](const AffineConstraints<double> &held, const auto &make) {
+      if (!checker || !ContactInterface<dim>::checking_held_state())
+        return;
+      AffineConstraints<double> full;
+      make(full, writable_dofs);
+      checker->check_held_lines(held, full);
+    };
+    make_trial(constraints, lines);
+    check(constraints, make_trial);
     if (contact && !contact->symmetric())
       {
-        test_constraints.clear();
-        test_constraints.reinit(writable_dofs);
-        DoFTools::make_hanging_node_constraints(dof_handler, test_constraints);
-        add_interface_hanging_constraints(test_constraints);
-        if (tying)
-          tying->add_constraints(test_constraints, true);
-        contact->add_test_constraints(*interface, interface_fixed_values, test_constraints);
-        test_constraints.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins,
-                               true);
-        test_constraints.close();
+        make_test(test_constraints, lines);
+        check(test_constraints, make_test);
       }
   }
 
