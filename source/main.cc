@@ -16,6 +16,7 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <iostream>
 #include <string>
@@ -83,7 +84,13 @@ namespace
             cl.overrides.emplace_back(assignment.substr(0, eq), assignment.substr(eq + 1));
           }
         else if (arg == "--output-directory")
-          cl.output_directory = next(arg);
+          {
+            cl.output_directory = next(arg);
+            // Empty, it would be ignored: the results would go elsewhere.
+            if (Utilities::trim(cl.output_directory).empty())
+              throw std::runtime_error("option --output-directory: got an empty path; expected "
+                                       "the directory for the results.");
+          }
         else if (!arg.empty() && arg[0] == '-')
           throw std::runtime_error("unknown option '" + arg + "' (see --help).");
         else if (cl.prm_file.empty())
@@ -137,9 +144,63 @@ namespace
     return Utilities::trim(text.substr(8));
   }
 
+  /// Refuses a key set twice in one .prm file, in the same subsection
+  /// (entered once or twice): ParameterHandler keeps the last value without
+  /// a word, so one of the two values the user wrote would be ignored. (A
+  /// file may override what it includes: that is across files.)
+  class DuplicateKeys
+  {
+  public:
+    explicit DuplicateKeys(const std::string &file)
+      : file(file)
+    {}
+
+    /// One logical line (continuations joined) that starts at @p number.
+    void
+    read(const std::string &line, const unsigned int number)
+    {
+      std::istringstream words(line.substr(0, line.find('#')));
+      std::string        first;
+      words >> first;
+      if (first == "subsection")
+        {
+          std::string name;
+          std::getline(words, name);
+          path.push_back(Utilities::trim(name));
+        }
+      else if ((first == "end" || first == "END") && !path.empty())
+        path.pop_back();
+      else if (first == "set" || first == "SET")
+        {
+          std::string rest;
+          std::getline(words, rest);
+          const auto equals = rest.find('=');
+          if (equals == std::string::npos)
+            return; // malformed: ParameterHandler names the line
+          std::string key;
+          for (const std::string &section : path)
+            key += section + "/";
+          key += Utilities::trim(rest.substr(0, equals));
+          const auto [where, inserted] = first_line.emplace(key, number);
+          if (!inserted)
+            throw std::runtime_error(
+              "the parameter file '" + file + "', line " + std::to_string(number) + ": '" + key +
+              "' is set a second time (first on line " + std::to_string(where->second) +
+              "); only the last value would be used. Keep one of "
+              "the two.");
+        }
+    }
+
+  private:
+    const std::string                   file;
+    std::vector<std::string>            path;
+    std::map<std::string, unsigned int> first_line;
+  };
+
   /// Follows the 'include' lines of a .prm file: every file must be a
   /// regular file and none may include itself, directly or through others
-  /// (ParameterHandler would recurse until the stack overflows).
+  /// (ParameterHandler would recurse until the stack overflows). Each file
+  /// is checked for keys set twice.
   void
   check_includes(const std::string &file, std::vector<std::string> &chain)
   {
@@ -148,8 +209,23 @@ namespace
     chain.push_back(canonical);
     std::ifstream in(file);
     std::string   line;
+    DuplicateKeys duplicates(file);
     for (unsigned int number = 1; std::getline(in, line); ++number)
       {
+        // A line ending in '\' goes on in the next one (ParameterHandler).
+        const unsigned int start = number;
+        std::string        next;
+        const auto         continued = [](const std::string &text) {
+          const std::string trimmed = Utilities::trim(text);
+          return !trimmed.empty() && trimmed.back() == '\\';
+        };
+        while (continued(line) && std::getline(in, next))
+          {
+            line = Utilities::trim(line);
+            line = line.substr(0, line.size() - 1) + " " + next;
+            ++number;
+          }
+        duplicates.read(line, start);
         const std::string included = included_file(line);
         if (included.empty())
           continue;

@@ -408,78 +408,183 @@ namespace contact_fem
         Point<2> a, b, xi_a, xi_b;
       };
 
-      std::vector<BoundaryChord>
-      boundary_chords(const QuadFace &slave, const AuxiliaryPlane &plane)
+      /// The point of @p face at the boundary parameter @p xi: its node
+      /// where it has one there (bit for bit), else from the shapes.
+      template <typename Face>
+      auto
+      boundary_point(const Face &face, const Point<2> &xi)
       {
-        const std::vector<unsigned int> ring = boundary_ring(slave.degree());
-        std::vector<BoundaryChord>      chords;
-        for (unsigned int k = 0; k < ring.size(); ++k)
+        for (const unsigned int i : boundary_ring(face.degree()))
+          if (quad_node_parameter(face.degree(), i) == xi)
+            return face.nodes[i];
+        return face.point(xi);
+      }
+
+      /// The chords of the slave's boundary ring given by its parameters
+      /// @p boundary (boundary_parameters()).
+      std::vector<BoundaryChord>
+      boundary_chords(const QuadFace              &slave,
+                      const AuxiliaryPlane        &plane,
+                      const std::vector<Point<2>> &boundary)
+      {
+        std::vector<BoundaryChord> chords;
+        for (unsigned int k = 0; k < boundary.size(); ++k)
           {
-            const unsigned int i = ring[k], j = ring[(k + 1) % ring.size()];
-            chords.push_back({plane.coordinates(slave.nodes[i]), plane.coordinates(slave.nodes[j]),
-                              quad_node_parameter(slave.degree(), i),
-                              quad_node_parameter(slave.degree(), j)});
+            const Point<2> &xi_a = boundary[k], &xi_b = boundary[(k + 1) % boundary.size()];
+            chords.push_back({plane.coordinates(boundary_point(slave, xi_a)),
+                              plane.coordinates(boundary_point(slave, xi_b)), xi_a, xi_b});
           }
         return chords;
       }
 
       /**
+       * The boundary ring of the slave face as parameters, counterclockwise
+       * in them: its boundary nodes, and on a curved face also points of a
+       * face edge near each of the @p master_nodes that lies between that
+       * edge and its chord (in the lens that the chord cuts off, or adds). Clipped by the chords alone, the overlap would lose a master
+       * corner there (or keep one outside the face), and the crossings of
+       * its master edges with the face edge (edge_crossing()) would lie on
+       * their continuations beyond it: 3e-6 of a sphere's rim face doubled
+       * (sphere-x100 of bench/stability). With the points added the corner
+       * lies on the right side of the new chords: a convex edge's lenses
+       * only shrink.
+       */
+      std::vector<Point<2>>
+      boundary_parameters(const QuadFace              &slave,
+                          const AuxiliaryPlane        &plane,
+                          const std::vector<Point<3>> &master_nodes)
+      {
+        std::vector<Point<2>> boundary;
+        for (const unsigned int i : boundary_ring(slave.degree()))
+          boundary.push_back(quad_node_parameter(slave.degree(), i));
+        if (slave.degree() == 1)
+          return boundary;
+        const Point<2> centre = plane.coordinates(slave.point(Point<2>()));
+        // Whether the node x (at v in the plane) lies in the lens of the
+        // chord: between it and the face edge, whose farthest point is at
+        // the chord's middle parameter (a parabola).
+        const auto in_lens = [&](const BoundaryChord &chord, const Point<3> &x, const Point<2> &v) {
+          const Tensor<1, 2> c      = chord.b - chord.a;
+          const double       length = c.norm();
+          const double       sag =
+            cross_2d(c, plane.coordinates(slave.point(0.5 * (chord.xi_a + chord.xi_b))) - chord.a) /
+            length;
+          const double fraction = ((v - chord.a) * c) / (length * length);
+          const double offset   = cross_2d(c, v - chord.a) / length;
+          if (!(fraction > 0. && fraction < 1.) || !(offset * sag > 0.) ||
+              std::abs(offset) > std::abs(sag) || std::abs(offset) <= 1e-10 * length)
+            return false;
+          // Between chord and edge: on the edge's inner side (the inside
+          // of the face) exactly where the chord bulges inward.
+          Point<2> xi;
+          if (!project_along(slave, x, plane.normal, xi))
+            return false;
+          const unsigned int fixed = chord.xi_a[0] == chord.xi_b[0] ? 0 : 1, free = 1 - fixed;
+          const bool         inside_face = std::abs(xi[fixed]) < 1.;
+          const bool         inside_chord =
+            std::signbit(offset) == std::signbit(cross_2d(c, centre - chord.a));
+          return inside_face != inside_chord && std::abs(std::abs(xi[fixed]) - 1.) > 1e-10 &&
+                 (xi[free] - chord.xi_a[free]) * (xi[free] - chord.xi_b[free]) < 0.;
+        };
+        // The chord's middle parameter added until the node leaves the
+        // lenses (each halving quarters the sag): fixed parameters, which
+        // do not move with the configuration, so that the derivatives of
+        // the overlap (AD numbers) need none of theirs. (The edge point
+        // next to the node instead moved with it, and the quadrature error
+        // of the fan integration with that point: the derivative check of
+        // contact_interface_linearisation_02 lost its second order.)
+        for (const Point<3> &x : master_nodes)
+          {
+            const Point<2> v = plane.coordinates(x);
+            for (unsigned int depth = 0; depth < 20; ++depth)
+              {
+                const std::vector<BoundaryChord> chords = boundary_chords(slave, plane, boundary);
+                unsigned int                     k      = 0;
+                while (k < chords.size() && !in_lens(chords[k], x, v))
+                  ++k;
+                if (k == chords.size())
+                  break;
+                boundary.insert(boundary.begin() + k + 1, 0.5 * (chords[k].xi_a + chords[k].xi_b));
+              }
+          }
+        return boundary;
+      }
+
+      /**
        * The slave parameter of a vertex @p u of an overlap piece that the
        * clipping put inside a @p chord, where the piece leaves the chord
-       * along a master edge (the straight line from @p u to @p other) and
-       * runs along the chord to @p along: the point where the face edge,
-       * followed from @p along, first crosses that master edge. Mapped back
-       * along n0 instead, @p u would land inside the face by the chord's sag,
-       * the piece's edge along the chord would no longer be a face edge for
-       * for_each_point(), and the lens between chord and edge would be lost
-       * (on a sphere: 1e-4 of a face that a master edge crosses, and 0.1 %
-       * of D at a slave corner cut off by a master edge under the slightest
-       * initial penetration, a jump at zero gap). The chord's end beyond
-       * @p u lies across the master edge, so the crossing is bracketed:
-       * found by a scan and bisection; @p s: its fraction along the chord's
-       * parameters (xi = xi_a + s (xi_b - xi_a)). False if @p along is not
-       * on the inner side of that edge either.
+       * along a master edge (the straight line from @p u to @p other): the
+       * point where that master edge crosses the face edge of the chord.
+       * Mapped back along n0 instead, @p u would land inside the face by the
+       * chord's sag, the piece's edge along the chord would no longer be a
+       * face edge for for_each_point(), and the lens between chord and edge
+       * would be lost (on a sphere: 1e-4 of a face that a master edge
+       * crosses, and 0.1 % of D at a slave corner cut off by a master edge
+       * under the slightest initial penetration, a jump at zero gap).
+       *
+       * The projected face edge is a polynomial of degree <= 2 in its
+       * parameter, so is the side f(s) = d x (P(s) - u) of its points:
+       * monotone on either side of its extremum. Every crossing on the
+       * whole face edge is found (bisection on the monotone parts) and the
+       * one nearest to @p u taken. (A bracket from the chord's fraction at
+       * the vertex before, taken as a parameter, missed it where the edge's
+       * parameter runs unevenly along the chord: 5e-7 of a sphere's rim face
+       * lost under a master corner near the rim, sphere-x100 of
+       * bench/stability.) @p s: the crossing's fraction along the chord's
+       * parameters (xi = xi_a + s (xi_b - xi_a)). False if the master edge
+       * does not cross the face edge.
        */
       bool
       edge_crossing(const QuadFace       &slave,
                     const AuxiliaryPlane &plane,
                     const BoundaryChord  &chord,
                     const Point<2>       &u,
-                    const Point<2>       &along,
                     const Point<2>       &other,
                     Point<2>             &xi,
                     double               &s)
       {
-        const Tensor<1, 2> c = chord.b - chord.a, d = other - u, dxi = chord.xi_b - chord.xi_a;
-        const auto         fraction = [&](const Point<2> &x) {
-          return ((x - chord.a) * c) / c.norm_square();
+        const Tensor<1, 2> d = other - u, dxi = chord.xi_b - chord.xi_a;
+        const auto         edge_point = [&](const double s) {
+          return plane.coordinates(slave.point(chord.xi_a + s * dxi));
         };
-        const auto side = [&](const double s) {
-          return cross_2d(d, plane.coordinates(slave.point(chord.xi_a + s * dxi)) - u) > 0.;
-        };
-        const double start = fraction(along), end = fraction(u) > start ? 1. : 0.;
-        const bool   inner = side(start);
-        if (side(end) == inner)
-          return false;
-        constexpr unsigned int n_scan = 32;
-        double                 lower = start, upper = end;
-        for (unsigned int i = 1; i <= n_scan; ++i)
+        const auto side = [&](const double s) { return cross_2d(d, edge_point(s) - u); };
+        // The parameters s of the whole face edge: its free coordinate in
+        // [-1, 1].
+        const unsigned int c  = std::abs(dxi[0]) > std::abs(dxi[1]) ? 0 : 1;
+        double             s0 = (-1. - chord.xi_a[c]) / dxi[c], s2 = (1. - chord.xi_a[c]) / dxi[c];
+        if (s0 > s2)
+          std::swap(s0, s2);
+        // f(s) = a s^2 + b s + f(s0) around s0, from three values.
+        const double h = s2 - s0, f0 = side(s0), f1 = side(s0 + 0.5 * h), f2 = side(s2);
+        const double a = 2. * (f2 - 2. * f1 + f0) / (h * h), b = (4. * f1 - 3. * f0 - f2) / h;
+        std::vector<double> ends = {s0};
+        if (a != 0. && -b / (2. * a) > 0. && -b / (2. * a) < h)
+          ends.push_back(s0 - b / (2. * a));
+        ends.push_back(s2);
+        bool   found    = false;
+        double distance = 0.;
+        for (unsigned int k = 0; k + 1 < ends.size(); ++k)
           {
-            const double s = start + (end - start) * i / n_scan;
-            if (side(s) != inner)
+            double     lower = ends[k], upper = ends[k + 1];
+            const bool inner = side(lower) > 0.;
+            if ((side(upper) > 0.) == inner)
+              continue;
+            // Down to adjacent numbers (s may reach beyond [0, 1]: the
+            // chord may be a part of the edge).
+            for (double middle = 0.5 * (lower + upper); middle != lower && middle != upper;
+                 middle        = 0.5 * (lower + upper))
+              ((side(middle) > 0.) == inner ? lower : upper) = middle;
+            const double root = 0.5 * (lower + upper);
+            if (!found || edge_point(root).distance(u) < distance)
               {
-                upper = s;
-                break;
+                found    = true;
+                distance = edge_point(root).distance(u);
+                s        = root;
               }
-            lower = s;
           }
-        while (std::abs(upper - lower) > 1e-15)
-          {
-            const double middle                     = 0.5 * (lower + upper);
-            (side(middle) == inner ? lower : upper) = middle;
-          }
+        if (!found)
+          return false;
         // dxi is zero in the edge's fixed parameter, which stays exactly +-1.
-        s  = 0.5 * (lower + upper);
         xi = chord.xi_a + s * dxi;
         return true;
       }
@@ -1004,9 +1109,8 @@ namespace contact_fem
               continue;
             crossing.chord         = k;
             crossing.other_is_next = on_line(prev);
-            const Point<2> &along  = on_line(prev) ? prev : next,
-                           &other  = on_line(prev) ? next : prev;
-            crossing.found = edge_crossing(slave, plane, chord, u, along, other, xi, crossing.s);
+            const Point<2> &other  = on_line(prev) ? next : prev;
+            crossing.found         = edge_crossing(slave, plane, chord, u, other, xi, crossing.s);
             break;
           }
         if (!crossing.found && !project_along(slave, plane.point(u), plane.normal, xi))
@@ -1045,7 +1149,17 @@ namespace contact_fem
           std::reverse(ring.begin(), ring.end());
         return ring;
       };
-      const Polygon slave_ring = project(slave), master_ring = project(master);
+      std::vector<Point<3>> master_nodes;
+      for (const unsigned int i : boundary_ring(master.degree()))
+        master_nodes.push_back(point_value(master.nodes[i]));
+      const std::vector<Point<2>> boundary =
+        boundary_parameters(slave_values, plane_values, master_nodes);
+      Polygon slave_ring;
+      for (const Point<2> &xi : boundary)
+        slave_ring.push_back(plane.coordinates(boundary_point(slave, xi)));
+      if (value_of(twice_signed_area(slave_ring)) < 0.)
+        std::reverse(slave_ring.begin(), slave_ring.end());
+      const Polygon master_ring = project(master);
       const double  slave_area = value_of(0.5 * twice_signed_area(slave_ring));
       PlanePolygon  slave_ring_values;
       for (const Point<2, Number> &u : slave_ring)
@@ -1063,7 +1177,8 @@ namespace contact_fem
           slave_pieces.empty())
         return false;
 
-      const std::vector<BoundaryChord> chords = boundary_chords(slave_values, plane_values);
+      const std::vector<BoundaryChord> chords =
+        boundary_chords(slave_values, plane_values, boundary);
       const double                     length = std::sqrt(slave_area);
       for (const Polygon &slave_piece : slave_pieces)
         {

@@ -7,6 +7,7 @@
 #include <contact_fem/geometry/hexahedron_shape.h>
 #include <contact_fem/core/value_range.h>
 #include <contact_fem/geometry/mesh_file.h>
+#include <contact_fem/geometry/mesh_queries.h>
 #include <contact_fem/geometry/mesh_split.h>
 #include <contact_fem/geometry/model_frame.h>
 #include <contact_fem/core/format.h>
@@ -1089,6 +1090,45 @@ namespace contact_fem
     }
   } // namespace
 
+  /**
+   * deal.II's "boundary id for an internal face" in the user's words: a
+   * face with a physical tag between two cells, mostly two bodies meshed on
+   * shared nodes (Gmsh BooleanFragments or Coherence), which contact and
+   * tying cannot use. The face's corners, from deal.II's message, are put
+   * back into the file's coordinates (the mesh may have been moved).
+   */
+  std::string
+  internal_face_message(const std::string &why, const std::string &file, const Point<3> &origin)
+  {
+    std::string corners;
+    const auto  at = why.find("located at positions");
+    if (at != std::string::npos)
+      {
+        std::istringstream in(why.substr(at + 20));
+        char               open = 0;
+        while (in >> open && open == '(')
+          {
+            std::string inside;
+            std::getline(in, inside, ')');
+            std::istringstream numbers(inside);
+            std::string        point;
+            double             x = 0.;
+            for (unsigned int d = 0; d < 3 && numbers >> x; ++d)
+              point += (d > 0 ? ", " : "") + significant(x + origin[d], 12);
+            corners += (corners.empty() ? "" : "; ") + ("(" + point + ")");
+          }
+      }
+    return mesh_key + ": '" + file +
+           "': a face with a physical tag (boundary id) lies inside the mesh, between two "
+           "cells" +
+           (corners.empty() ? std::string() : " (its corners: " + corners + ")") +
+           ". Most often two bodies share the nodes of the surface between them (in Gmsh: "
+           "BooleanFragments, Coherence or Geometry.AutoCoherence fused the volumes): bodies "
+           "in contact or tied need their own nodes there, each meshed on its own (no "
+           "fragments between them). A surface inside one body cannot carry a boundary id: "
+           "remove it from its Physical group.";
+  }
+
   template <int dim>
   MeshFileInfo
   read_gmsh(const std::string &file, Triangulation<dim> &coarse)
@@ -1147,8 +1187,11 @@ namespace contact_fem
       }
     catch (const std::exception &e)
       {
-        AssertThrow(false, ExcMessage(mesh_key + ": cannot read '" + file +
-                                      "' as a Gmsh mesh: " + user_message(e)));
+        const std::string why = user_message(e);
+        AssertThrow(why.find("boundary id for an internal face") == std::string::npos,
+                    ExcMessage(internal_face_message(why, file, origin)));
+        AssertThrow(false,
+                    ExcMessage(mesh_key + ": cannot read '" + file + "' as a Gmsh mesh: " + why));
       }
     if (const unsigned int n = assign_loose_facets(loose, file, coarse); n > 0)
       info.orphan_note = std::to_string(n) + (n == 1 ? " boundary element" : " boundary elements") +
@@ -1373,33 +1416,6 @@ namespace contact_fem
 
   namespace
   {
-    /// The outward unit normal of the (straight or bilinear) face @p f.
-    template <int dim>
-    Tensor<1, dim>
-    outward_normal(const typename Triangulation<dim>::cell_iterator &cell, const unsigned int f)
-    {
-      const auto     face = cell->face(f);
-      Tensor<1, dim> n;
-      if constexpr (dim == 2)
-        {
-          const Tensor<1, dim> t = face->vertex(1) - face->vertex(0);
-          n[0]                   = t[1];
-          n[1]                   = -t[0];
-        }
-      else
-        {
-          // The cross product of the diagonals of the quadrilateral.
-          const Tensor<1, dim> a = face->vertex(3) - face->vertex(0);
-          const Tensor<1, dim> b = face->vertex(2) - face->vertex(1);
-          n[0]                   = a[1] * b[2] - a[2] * b[1];
-          n[1]                   = a[2] * b[0] - a[0] * b[2];
-          n[2]                   = a[0] * b[1] - a[1] * b[0];
-        }
-      if (n * (face->center() - cell->center()) < 0.)
-        n *= -1.;
-      return n.norm() > 0. ? n / n.norm() : n;
-    }
-
     /// The joints of a face with its neighbours on the boundary: its
     /// vertices in 2D, its lines in 3D.
     template <int dim>

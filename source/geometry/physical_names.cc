@@ -53,11 +53,19 @@ namespace contact_fem
       return word;
     const auto &ids   = bodies ? body_ids : surface_ids;
     const auto  found = ids.find(word);
+    // "5, 6" where the key separates ids by ';': say so, not "no such name".
+    bool listed_numbers = word.find(',') != std::string::npos;
+    for (const std::string &part : Utilities::split_string_list(word, ','))
+      listed_numbers = listed_numbers && is_number(part);
     AssertThrow(
       found != ids.end(),
       ExcMessage(key + ": '" + word + "' is neither a " + (bodies ? "material id" : "boundary id") +
                  " nor a physical name of the " + (bodies ? "bodies (cells)" : "surfaces (faces)") +
-                 " of the mesh file '" + file + "' (its names: " + listed(ids) + ")."));
+                 " of the mesh file '" + file + "' (its names: " + listed(ids) + ")" +
+                 (listed_numbers ? "; ids are separated by ';' here, e.g. '" +
+                                     Utilities::split_string_list(word, ',')[0] + "; " +
+                                     Utilities::split_string_list(word, ',')[1] + "'." :
+                                   ".")));
     return std::to_string(found->second);
   }
 

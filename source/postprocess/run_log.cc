@@ -95,4 +95,13 @@ namespace contact_fem
                                                  " of scene '" + report.earlier_scene + "'")
               << "." << std::endl;
   }
+
+  void
+  RunLog::note_error(const std::string &message)
+  {
+    if (dealii::Utilities::MPI::this_mpi_process(comm) != 0 || !file.is_open())
+      return;
+    console.flush();
+    file << "contact_fem: error: " << message << std::endl;
+  }
 } // namespace contact_fem

@@ -22,6 +22,7 @@
 #include <contact_fem/solvers/rigid_body_modes.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -970,6 +971,8 @@ namespace contact_fem
                                          const StepStart start)
   {
     current_time = time;
+    step_start   = start;
+    start_rule_nodes.clear(); // recorded after this step's iteration 0
     make_dirichlet_constraints(dirichlet_inputs(), relevant_dofs, time, dirichlet_constraints);
     compute_cell_loads(time);
     // Finite strain: the step's first solve takes the tangent of the last
@@ -1254,7 +1257,13 @@ namespace contact_fem
           }
         catch (const NewtonFailure &failure) // an inverted element: say where
           {
-            throw NewtonFailure(at + ": " + failure.what(), failure.splittable);
+            // And why, when this solve closed gaps that the start rule,
+            // not the load, put in contact: that cause comes first.
+            std::string       what  = failure.what();
+            const std::string cause = contact ? opened_by_start_rule() : std::string();
+            if (!cause.empty())
+              what = what.substr(0, what.find(" Hint:")) + cause;
+            throw NewtonFailure(at + ": " + what, failure.splittable);
           }
         ContactUpdate update;
         try
@@ -1271,6 +1280,8 @@ namespace contact_fem
               throw;
             throw NewtonFailure(at + ": its contact surfaces: " + failure.what());
           }
+        if (iteration == 0 && contact)
+          record_start_rule_nodes();
         const unsigned int bond_changes = tying && iteration > 0 ? update_bonds(at, iteration) : 0u;
         const unsigned int changes      = update.changes + bond_changes;
         const double       r_u          = equilibrium_residual_norm(update.residuals.contact_force);
@@ -1310,13 +1321,68 @@ namespace contact_fem
       throw NewtonFailure(where + " did not converge in " +
                             std::to_string(newton_parameters.max_iterations) + " iterations " +
                             monitor.last_residuals() + "." +
-                            diagnosis().non_convergence_hint(assessment.stalled, monitor.last_r_u(),
-                                                             monitor.last_r_lambda()) +
+                            (!assessment.stalled && !monitor.floor_hint().empty() ?
+                               monitor.floor_hint() :
+                               diagnosis().non_convergence_hint(assessment.stalled,
+                                                                monitor.last_r_u(),
+                                                                monitor.last_r_lambda())) +
                             (contact ? contact->non_convergence_note() : std::string()) +
                             diagnosis().precision_hint(),
-                          !assessment.stalled);
+                          !assessment.stalled && monitor.floor_hint().empty());
 
     return iteration;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::record_start_rule_nodes()
+  {
+    // Only a step from the unloaded state takes nodes apart by the factor
+    // beyond 1e-2 of their size (about_to_touch()); no pressure is carried
+    // then, so an active node with such a gap is the start rule's.
+    start_rule_nodes.clear();
+    if (step_start != StepStart::unloaded)
+      return;
+    for (unsigned int k = 0; k < interface->slave_nodes.size(); ++k)
+      {
+        const auto &s = interface->slave_nodes[k];
+        if (!interface->owns_row(s) || !contact->is_active(s.node))
+          continue;
+        const double g = interface->gap(s, interface_displacement);
+        if (g > 1e-2 * s.size)
+          start_rule_nodes.emplace_back(k, g);
+      }
+  }
+
+  template <int dim>
+  std::string
+  ContactProblem<dim>::opened_by_start_rule() const
+  {
+    unsigned int count = 0;
+    double       gap = 0., ratio = 0.;
+    for (const auto &[k, g] : start_rule_nodes)
+      {
+        const auto &s = interface->slave_nodes[k];
+        if (contact->is_active(s.node))
+          {
+            ++count;
+            gap   = std::max(gap, g);
+            ratio = std::max(ratio, g / s.size);
+          }
+      }
+    count = Utilities::MPI::sum(count, comm);
+    if (count == 0)
+      return "";
+    gap   = Utilities::MPI::max(gap, comm);
+    ratio = Utilities::MPI::max(ratio, comm);
+    return " The solve of this iterate held in contact " + std::to_string(count) +
+           " slave node(s) that started the step apart (gaps up to " + significant(gap, 2) +
+           ", " + significant(ratio, 2) +
+           " of their element size): the first active set of the unloaded state takes every "
+           "node whose gap is below Contact/Active check factor times its size, and the solve "
+           "closes those gaps whatever the load, so smaller load steps do not change them. "
+           "Hint: lower Contact/Active check factor (the default, 1e-2, takes no node farther "
+           "than 1e-2 of its size), then more load steps if an element still inverts";
   }
 
   template <int dim>
@@ -1429,7 +1495,20 @@ namespace contact_fem
   ContactProblem<dim>::run()
   {
     Timer total_timer;
-    start_run();
+    try
+      {
+        start_run();
+      }
+    catch (const Interrupted &)
+      {
+        throw;
+      }
+    catch (const std::exception &e)
+      {
+        // A mesh refused after the output directory was opened.
+        log.note_error(user_message(e));
+        throw;
+      }
     Json cycles    = Json::array();
     int  exit_code = 0;
     try
@@ -1472,9 +1551,21 @@ namespace contact_fem
     catch (const std::exception &e)
       {
         // Anything else thrown after the first solve started is a failure of
-        // the run (main() gives exit 2): the summary says so.
+        // the run (main() gives exit 2): the summary says so. Before it, an
+        // input error (a probe or fixed point at no vertex): the log says
+        // it, and the table of no cycle goes.
         if (solving)
           write_summary(cycles, total_timer.wall_time(), "failed: " + user_message(e));
+        else
+          {
+            log.note_error(user_message(e));
+            convergence_table.reset();
+            if (Utilities::MPI::this_mpi_process(comm) == 0)
+              {
+                std::error_code ignored;
+                std::filesystem::remove(output.directory + "/convergence.csv", ignored);
+              }
+          }
         throw;
       }
     pcout << warnings.repeats();

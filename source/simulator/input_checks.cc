@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <map>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -32,6 +34,58 @@ namespace contact_fem
           inside *= width > 0. ? std::max(0., high - low) / width : 0.;
         }
       return inside;
+    }
+
+    /// The loads that a support on the same boundary takes whole: a
+    /// Traction whose every component is held (Fixed or Prescribed
+    /// displacement on its boundary), a Pressure whose boundary's normal has
+    /// no component that is not held (to 1e-6 of the unit normal, on every
+    /// face). Such a load goes straight into the support and deforms
+    /// nothing; the run used to "converge" on contact forces of round-off
+    /// without a word. Empty if none.
+    template <int dim>
+    std::string
+    loads_held_by_supports(const Triangulation<dim> &coarse, const BoundaryConditions &bc)
+    {
+      std::map<types::boundary_id, std::set<unsigned int>> held;
+      for (const auto &c : bc.displacements)
+        held[c.boundary_id].insert(c.component);
+      std::vector<std::string> found;
+      const auto               name = [](const types::boundary_id id) {
+        return "boundary " + std::to_string(static_cast<unsigned int>(id));
+      };
+      for (const auto &t : bc.tractions)
+        if (held.count(t.boundary_id) && held.at(t.boundary_id).size() == dim)
+          found.push_back("Boundary conditions/Traction on " + name(t.boundary_id));
+      for (const auto &p : bc.pressures)
+        {
+          if (!held.count(p.boundary_id))
+            continue;
+          const auto &components = held.at(p.boundary_id);
+          bool        absorbed = true, any = false;
+          for (const auto &cell : coarse.active_cell_iterators())
+            for (const auto f : cell->face_indices())
+              if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == p.boundary_id)
+                {
+                  const Tensor<1, dim> n = outward_normal<dim>(cell, f);
+                  any                    = true;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    if (!components.count(d) && std::abs(n[d]) > 1e-6 * n.norm())
+                      absorbed = false;
+                }
+          if (any && absorbed)
+            found.push_back("Boundary conditions/Pressure on " + name(p.boundary_id));
+        }
+      if (found.empty())
+        return "";
+      std::string text = found[0];
+      for (unsigned int k = 1; k < found.size(); ++k)
+        text += ", " + found[k];
+      return text +
+             " acts only along components that Boundary conditions/Fixed or Prescribed "
+             "displacement hold on the same boundary: the support takes the whole load, which "
+             "deforms nothing (a load meant for a free boundary, or a support meant for "
+             "another one?)";
     }
   } // namespace
 
@@ -68,7 +122,10 @@ namespace contact_fem
     check_boundary_ids(coarse);
     inclined_supports.initialize(coarse, boundary_conditions.rollers, contact_parameters.pairs);
     check_contact_pairs(coarse);
-    return check_memory_estimate(coarse);
+    // Warnings, printed one a line (each "Warning: ... .").
+    const std::string memory = check_memory_estimate(coarse);
+    const std::string held   = loads_held_by_supports(coarse, boundary_conditions);
+    return memory.empty() ? held : held.empty() ? memory : memory + ".\nWarning: " + held;
   }
 
   template <int dim>
@@ -142,6 +199,27 @@ namespace contact_fem
   void
   InputChecks<dim>::check_contact_pairs(const Triangulation<dim> &tria) const
   {
+    // A support on a whole slave surface acts on the DoFs that the contact
+    // (or tying) constraints set: the two conflict, and a normal one made
+    // every node inactive and stopped as "no contact ... nothing held the
+    // loaded body". A support under the contact is the master's side.
+    const auto refuse_support_on = [&](const auto &pairs, const std::string &pairs_key) {
+      for (const auto &pair : pairs)
+        for (const auto &c : boundary_conditions.displacements)
+          AssertThrow(c.boundary_id != pair.slave,
+                      ExcMessage(c.key + ": boundary " +
+                                 std::to_string(static_cast<unsigned int>(c.boundary_id)) +
+                                 " is the slave surface of " + pairs_key + " '" +
+                                 std::to_string(static_cast<unsigned int>(pair.slave)) + ": " +
+                                 std::to_string(static_cast<unsigned int>(pair.master)) +
+                                 "', whose nodes the contact constraints move; a support "
+                                 "there conflicts with them. Hold the body elsewhere, or "
+                                 "swap the pair so that the supported surface is the "
+                                 "master."));
+    };
+    refuse_support_on(contact_parameters.pairs, "Contact/Pairs");
+    refuse_support_on(contact_parameters.tied_pairs, "Contact/Tied pairs");
+
     // Mortar contact needs two bodies: a surface in contact with another
     // surface of its own body would be self-contact, which the mortar
     // interface does not implement; it used to be accepted and fail later

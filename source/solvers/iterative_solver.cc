@@ -57,6 +57,15 @@ namespace contact_fem
     AssertThrow(n_modes > 0 &&
                   null_space.size() == n_modes * static_cast<std::size_t>(matrix.local_size()),
                 ExcMessage("the iterative solver has no near-null space for this mesh"));
+    // Measured against other lists for the total solve time
+    // (doc/performance.md, "Cheaper set-ups for every solve"): the set-up is
+    // mostly ML's sparse products for the smoothed prolongator and the
+    // Galerkin operators. Unsmoothed aggregation (damping factor 0) cuts it
+    // to a third and paid in 3D Q1, but nearly tripled the CG iterations in
+    // 2D Q2; a threshold of 1e-3 saved iterations in 3D serially only; more
+    // sweeps, Gauss-Seidel, the power method, nodal aggregation and other
+    // thresholds or coarse sizes cost more than they saved. No other list
+    // was faster in 2D and 3D, serial and on 2 ranks.
     Teuchos::ParameterList list;
     ML_Epetra::SetDefaults("SA", list);
     list.set("ML output", 0);

@@ -2,6 +2,7 @@
 #include <contact_fem/solvers/newton_monitor.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -152,6 +153,15 @@ namespace contact_fem
     a.stalled   = flat && a.ratio_u <= 1e-8 && a.ratio_lambda <= 1e-8;
     a.converged = iteration > 0 && !searched_again &&
                   ((a.residuals_small && (changes == 0 || at_round_off)) || stagnating);
+    // The run of flat iterations, for floor_hint().
+    if (flat)
+      {
+        if (floor_run.empty())
+          floor_run.push_back(previous_r_u);
+        floor_run.push_back(r_u);
+      }
+    else
+      floor_run.clear();
     previous_changes = iteration > 0 ? changes : 1;
     previous_r_u     = r_u;
     return a;
@@ -193,6 +203,43 @@ namespace contact_fem
             (a.residuals_small ? " converged" : " converged to linear-solver accuracy") :
             "");
     return s.str();
+  }
+
+  std::string
+  NewtonMonitor::floor_hint() const
+  {
+    // A floor: three flat iterations in a row with the active set settled,
+    // and no trend over them (a slowly converging iteration, at 0.8 per
+    // iteration, falls by more than half over the run). Newton with a
+    // settled active set then no longer lowers |r_u|: its level is the
+    // precision of the residual's evaluation and solve, which neither more
+    // iterations nor smaller steps lower (the 3D hemisphere at 1e-8 of
+    // its load: 4.9e-9 at the whole and at half the step).
+    // Only |r_u| in the way: the multipliers' residual met its tolerance.
+    const bool lambda_met =
+      last_lambda <= absolute_lambda ||
+      (reference_lambda > 0. &&
+       last_lambda <= parameters.multiplier_relative_tolerance * reference_lambda);
+    // Far below the step's residual: a flat run at the scale of the step's
+    // own residual is a Newton iteration that does not converge (a load
+    // step too large), which splitting may cure: no floor then.
+    if (floor_run.size() < 4 || last_u <= displacement_target() || !lambda_met ||
+        last_u > 1e-4 * reference_u())
+      return "";
+    const auto [lowest, highest] = std::minmax_element(floor_run.begin(), floor_run.end());
+    if (*lowest < 0.5 * *highest)
+      return "";
+    // Reachable: twice the floor's highest value, one digit rounded up.
+    const double scale     = std::pow(10., std::floor(std::log10(2. * *highest)));
+    const double reachable = std::ceil(2. * *highest / scale) * scale;
+    return " |r_u| stagnated at " + scientific(*highest, 0) + " over the last " +
+           std::to_string(floor_run.size() - 1) +
+           " iterations with no active-set change: that is the round-off floor of this "
+           "system's residual (Newton's updates no longer lower it, and a smaller step "
+           "lowers the tolerance with the load, not the floor), above the displacement tolerance asked for (" +
+           scientific(displacement_target(), 0) +
+           "). Reachable: Newton/Displacement absolute tolerance = " + scientific(reachable, 0) +
+           " (or a relative tolerance of " + scientific(reachable / reference_u(), 0) + ").";
   }
 
   std::string

@@ -29,12 +29,16 @@ any angle about z or the axis (ax, ay, az); templates without @AXES@, @x@,
 @VEC@, e.g. supported by rollers), scale_length,
 scale_moduli, scale_load (the loads @STRESS@ and @VEC@ only, at fixed
 moduli: a positively homogeneous problem scales its stresses and forces by
-the factor and its energy by its square), swap.
+the factor and its energy by its square), swap, renumber (the mesh file's
+node tags permuted, nodes and elements shuffled, every element turned
+inside out). Rules joined by '&' combine, e.g.
+far_turned=rotate_degrees:37,0.3,-1,0.4&translate:1e3,-2e3,5e2.
 """
 import argparse
 import json
 import math
 import os
+import random
 import re
 import subprocess
 import sys
@@ -42,8 +46,7 @@ import sys
 
 class Variant:
     def __init__(self, spec, dim, size):
-        self.name, _, rule = spec.partition("=")
-        kind, _, value = rule.partition(":")
+        self.name, _, rules = spec.partition("=")
         self.dim = dim
         self.shift = [0.0] * 3
         self.turns = 0
@@ -52,6 +55,14 @@ class Variant:
         self.moduli = 1.0
         self.load = 1.0
         self.swap = False
+        self.renumber = False
+        # Rules joined by '&' combine (e.g. a turn and a translation): the
+        # point is rotated, scaled, then shifted, whatever their order here.
+        for rule in rules.split("&"):
+            self.add_rule(rule, spec, size)
+
+    def add_rule(self, rule, spec, size):
+        kind, _, value = rule.partition(":")
         if kind == "translate":
             parts = [float(v) * size for v in value.split(",")]
             self.shift[: len(parts)] = parts
@@ -69,6 +80,8 @@ class Variant:
             self.load = float(value)
         elif kind == "swap":
             self.swap = True
+        elif kind == "renumber":
+            self.renumber = True
         elif kind != "identity":
             sys.exit(f"metamorphic.py: unknown variant kind '{kind}' in '{spec}'")
 
@@ -98,6 +111,8 @@ class Variant:
 
     def local(self, axis):
         # Scene-frame coordinate as an expression of the variant's x, y, z.
+        if self.degrees is not None and list(getattr(self, "axis", [0, 0, 1]))[:2] != [0, 0]:
+            sys.exit("metamorphic.py: @x@ @y@ @z@ take turns about z only")
         c, s = self.cos_sin()
         X = f"(x - ({self.shift[0]!r}))"
         Y = f"(y - ({self.shift[1]!r}))"
@@ -146,14 +161,52 @@ def transform_mesh(source, target, v):
             line = " ".join([fields[0]] + [fmt(t) for t in y])
         elif section == "$Elements" and count >= 0:
             fields = line.split()
-            top = {2: {3}, 3: {5}}[v.dim]  # quadrilaterals, hexahedra
+            # cells: triangles, quadrilaterals; tetrahedra, hexahedra, prisms
+            top = {2: {2, 3}, 3: {4, 5, 6}}[v.dim]
             if int(fields[1]) in top:
                 fields[3] = str(v.material(int(fields[3])))
             line = " ".join(fields)
         count += 1
         out.append(line)
+    if v.renumber:
+        out = renumbered(out)
     with open(target, "w") as f:
         f.write("\n".join(out) + "\n")
+
+
+# Gmsh element type -> its node order turned inside out (lines, triangles,
+# quadrilaterals, tetrahedra, hexahedra, prisms; points stay).
+REVERSED = {1: [1, 0], 2: [0, 2, 1], 3: [0, 3, 2, 1], 4: [0, 2, 1, 3],
+            5: [0, 3, 2, 1, 4, 7, 6, 5], 6: [0, 2, 1, 3, 5, 4], 15: [0]}
+
+
+def renumbered(lines):
+    """The MSH 2.2 lines with the node tags permuted into a sparse range,
+    the nodes and the elements listed in a shuffled order (so the second
+    body may come first) and every element's nodes in the opposite turn:
+    what another mesher, or Gmsh's renumbering, could write for the same
+    mesh. Seeded: the same file every run."""
+    rng = random.Random(20261128)
+    start = lines.index("$Nodes")
+    n_nodes = int(lines[start + 1])
+    nodes = [l.split() for l in lines[start + 2: start + 2 + n_nodes]]
+    tags = rng.sample(range(1, 10 * n_nodes + 1), n_nodes)
+    new_tag = {node[0]: str(t) for node, t in zip(nodes, tags)}
+    nodes = [[new_tag[node[0]]] + node[1:] for node in nodes]
+    rng.shuffle(nodes)
+    lines[start + 2: start + 2 + n_nodes] = [" ".join(node) for node in nodes]
+    start = lines.index("$Elements")
+    n_elements = int(lines[start + 1])
+    elements = []
+    for line in lines[start + 2: start + 2 + n_elements]:
+        fields = line.split()
+        kind, n_tags = int(fields[1]), int(fields[2])
+        head, vertices = fields[1: 3 + n_tags], [new_tag[t] for t in fields[3 + n_tags:]]
+        elements.append(head + [vertices[i] for i in REVERSED[kind]])
+    rng.shuffle(elements)
+    lines[start + 2: start + 2 + n_elements] = [
+        " ".join([str(k + 1)] + e) for k, e in enumerate(elements)]
+    return lines
 
 
 def expand(text, v, template_dir, work_dir):
@@ -170,10 +223,14 @@ def expand(text, v, template_dir, work_dir):
 
     def vec(m):
         parts = split_top_level(m.group(1))
-        a, b = parts[0], parts[1]
         k = v.moduli * v.load
+        if len(parts) == 3:
+            # 3D: the full rotation (any axis).
+            R = v.matrix()
+            return ", ".join(f"{k!r}*(" + " + ".join(
+                f"({R[i][j]!r})*({parts[j]})" for j in range(3)) + ")" for i in range(3))
+        a, b = parts[0], parts[1]
         rotated = [f"{k!r}*({c}*({a}) - ({s})*({b}))", f"{k!r}*({s}*({a}) + {c}*({b}))"]
-        rotated += [f"{k!r}*({p})" for p in parts[2:]]
         return ", ".join(rotated)
 
     def axes(m):
@@ -202,11 +259,16 @@ def expand(text, v, template_dir, work_dir):
     return text
 
 
-def run(exe, prm_text, name, work_dir, mpi):
+def run(exe, prm_text, name, work_dir, mpi, override_text=""):
+    # The --set values go into a file of their own that includes the
+    # scene: contact_fem refuses a key set twice in one file.
+    scene = os.path.join(work_dir, name + "_scene.prm")
     prm = os.path.join(work_dir, name + ".prm")
     out_dir = os.path.join(work_dir, "results-" + name)
+    with open(scene, "w") as f:
+        f.write(prm_text + "\n")
     with open(prm, "w") as f:
-        f.write(prm_text + f"\nset Output directory = {out_dir}\n")
+        f.write(f"include {scene}\n" + override_text + f"\nset Output directory = {out_dir}\n")
     command = ([mpi, "-np", "2"] if mpi else []) + [exe, prm]
     result = subprocess.run(command, capture_output=True, text=True)
     if result.returncode != 0:
@@ -256,14 +318,15 @@ def main():
     args = parser.parse_args()
 
     with open(args.template) as f:
-        template = f.read() + "".join(parameter_text(entry) for entry in args.set)
+        template = f.read()
+    overrides = "".join(parameter_text(entry) for entry in args.set)
     dim = int(re.search(r"set\s+Dimension\s*=\s*(\d)", template).group(1)) \
         if re.search(r"set\s+Dimension\s*=\s*(\d)", template) else 2
     template_dir = os.path.dirname(os.path.abspath(args.template))
     work_dir = os.getcwd()
     base = Variant("identity=identity:", dim, args.size)
     summary = run(args.executable, expand(template, base, template_dir, work_dir), "identity",
-                  work_dir, args.mpirun)
+                  work_dir, args.mpirun, expand(overrides, base, template_dir, work_dir))
     if summary is None:
         sys.exit("metamorphic.py: the untransformed scene failed")
     reference = invariants(summary, base, dim)
@@ -274,7 +337,7 @@ def main():
     for spec in args.variants:
         v = Variant(spec, dim, args.size)
         summary = run(args.executable, expand(template, v, template_dir, work_dir), v.name,
-                      work_dir, args.mpirun)
+                      work_dir, args.mpirun, expand(overrides, v, template_dir, work_dir))
         if summary is None:
             failures += 1
             print(f"{v.name}: FAILED")

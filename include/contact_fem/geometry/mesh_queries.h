@@ -2,6 +2,7 @@
 #ifndef contact_fem_mesh_queries_h
 #define contact_fem_mesh_queries_h
 
+#include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 #include <deal.II/grid/tria.h>
 
@@ -46,6 +47,35 @@ namespace contact_fem
     for (unsigned int d = 0; d < dim; ++d)
       extent = std::max(extent, upper[d] - lower[d]);
     return extent;
+  }
+
+  /// The outward unit normal of the (straight or bilinear) face @p f of
+  /// @p cell: in 2D the edge turned, in 3D the cross product of the
+  /// diagonals of the quadrilateral.
+  template <int dim>
+  dealii::Tensor<1, dim>
+  outward_normal(const typename dealii::Triangulation<dim>::cell_iterator &cell,
+                 const unsigned int                                        f)
+  {
+    const auto             face = cell->face(f);
+    dealii::Tensor<1, dim> n;
+    if constexpr (dim == 2)
+      {
+        const dealii::Tensor<1, dim> t = face->vertex(1) - face->vertex(0);
+        n[0]                           = t[1];
+        n[1]                           = -t[0];
+      }
+    else
+      {
+        const dealii::Tensor<1, dim> a = face->vertex(3) - face->vertex(0);
+        const dealii::Tensor<1, dim> b = face->vertex(2) - face->vertex(1);
+        n[0]                           = a[1] * b[2] - a[2] * b[1];
+        n[1]                           = a[2] * b[0] - a[0] * b[2];
+        n[2]                           = a[0] * b[1] - a[1] * b[0];
+      }
+    if (n * (face->center() - cell->center()) < 0.)
+      n *= -1.;
+    return n.norm() > 0. ? n / n.norm() : n;
   }
 } // namespace contact_fem
 

@@ -74,6 +74,12 @@ namespace contact_fem
     void
     report_earlier_outputs(const OutputDirectoryReport &report, const std::string &scene_name);
 
+    /// Ends log.txt (only: main() prints it on the console) with the error
+    /// that stopped the run before its first solve, so that the log of a
+    /// refused input says why. Nothing if the log is not open.
+    void
+    note_error(const std::string &message);
+
     /// Whether writing log.txt failed during the run (a full disk).
     bool
     failed() const

@@ -201,6 +201,15 @@ namespace contact_fem
     /// NewtonFailure if the bonds cycle.
     unsigned int
     update_bonds(const std::string &at, const unsigned int iteration);
+    /// After iteration 0: start_rule_nodes of this step.
+    void
+    record_start_rule_nodes();
+    /// Why an iterate of the solve with the current active set may have
+    /// inverted an element: the nodes of start_rule_nodes still active,
+    /// whose gaps that solve closed whatever the load (Contact/Active check
+    /// factor); empty if none. Collective.
+    std::string
+    opened_by_start_rule() const;
     void
     assemble_system();
 
@@ -382,6 +391,13 @@ namespace contact_fem
     bool start_tangent_kept = false;
     /// A solve of this load path had no zero pivot (singular_failure()).
     bool regular_solve_seen = false;
+    /// How the current load step started (prepare_load_step()).
+    StepStart step_start = StepStart::continued;
+    /// The owned slave nodes (index into interface->slave_nodes) that the
+    /// first active set of an unloaded step took with a gap above 1e-2 of
+    /// their size, the default Active check factor's margin, with that
+    /// gap: opened_by_start_rule().
+    std::vector<std::pair<unsigned int, double>> start_rule_nodes;
 
     IndexSet owned_dofs, relevant_dofs, writable_dofs;
 

@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace contact_fem
 {
@@ -106,6 +107,12 @@ namespace contact_fem
     std::string
     last_residuals() const;
 
+    /// With |r_u| above its target: " |r_u| stagnated at ..." naming the
+    /// floor and the tolerance reachable, when the residual has stopped
+    /// falling (floor_run); empty otherwise.
+    std::string
+    floor_hint() const;
+
     double
     last_r_u() const
     {
@@ -136,6 +143,10 @@ namespace contact_fem
     double       largest_u = 0., reference_lambda = 0.;
     double       last_u = 0., last_lambda = 0., previous_r_u = 0.;
     unsigned int previous_changes = 1, last_changes = 0;
+    /// |r_u| of the last iterations over which the active set stayed and
+    /// the residual did not fall (each flat: above half its predecessor),
+    /// with the iteration before them; cleared by any other iteration.
+    std::vector<double> floor_run;
   };
 } // namespace contact_fem
 

@@ -104,7 +104,8 @@ namespace contact_fem
         << contact["slip_nodes"].number_value() << std::endl
         << "    normal contact force:         " << force_text(normal, scale) << std::endl
         << "    tangential contact force:     " << force_text(tangential, scale) << std::endl
-        << "    active contact length:        " << contact["active_contact_length"].number_value()
+        << (dim == 3 ? "    active contact area:          " : "    active contact length:        ")
+        << contact["active_contact_length"].number_value()
         << std::endl
         << "    tangential / normal force:    "
         << (std::abs(tangential) < 1e-10 * scale || normal <= 0. ?

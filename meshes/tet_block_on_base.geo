@@ -1,0 +1,24 @@
+// A block (material 1, 1 x 1 x 0.5) on a wider base (material 2,
+// 2 x 2 x 0.4), both meshed with tetrahedra, each on its own nodes (the
+// boxes are not fragmented: the bodies share no node at z = 0.4; 345
+// elements, split into hexahedra on reading). The metamorphic test
+// tests/metamorphic/tet_block_3d.prm.in turns it about oblique axes.
+// Boundary ids: 1 block top, 2 base bottom, 3 block bottom, 4 base top.
+//   gmsh -3 tet_block_on_base.geo -o tet_block_on_base.msh
+SetFactory("OpenCASCADE");
+Mesh.MshFileVersion = 2.2;
+Box(1) = {-1, -1, 0, 2, 2, 0.4};
+Box(2) = {-0.5, -0.5, 0.4, 1, 1, 0.5};
+e = 1e-6;
+Physical Volume(1) = {2};
+Physical Volume(2) = {1};
+Physical Surface(1) = {Surface In BoundingBox{-0.5-e, -0.5-e, 0.9-e, 0.5+e, 0.5+e, 0.9+e}};
+Physical Surface(2) = {Surface In BoundingBox{-1-e, -1-e, -e, 1+e, 1+e, e}};
+// The block's bottom lies inside the base's top's box: take it out.
+s3[] = Surface In BoundingBox{-0.5-e, -0.5-e, 0.4-e, 0.5+e, 0.5+e, 0.4+e};
+s4[] = Surface In BoundingBox{-1-e, -1-e, 0.4-e, 1+e, 1+e, 0.4+e};
+s4[] -= s3[];
+Physical Surface(3) = {s3[]};
+Physical Surface(4) = {s4[]};
+MeshSize{PointsOf{Volume{1};}} = 0.7;
+MeshSize{PointsOf{Volume{2};}} = 0.4;
