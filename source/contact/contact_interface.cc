@@ -126,13 +126,13 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactInterface<dim>::initialize(const MappingQ<dim>             &mapping,
-                                    const DoFHandler<dim>           &dof_handler,
-                                    const std::vector<ContactPair>  &contact_pairs,
-                                    const AffineConstraints<double> &dirichlet,
-                                    const AffineConstraints<double> &hanging,
-                                    const Materials<dim>            &materials,
-                                    const MPI_Comm                   comm,
+  ContactInterface<dim>::initialize(const MappingQ<dim>                &mapping,
+                                    const DoFHandler<dim>              &dof_handler,
+                                    const std::vector<ContactPair>     &contact_pairs,
+                                    const AffineConstraints<double>    &dirichlet,
+                                    const AffineConstraints<double>    &hanging,
+                                    const Materials<dim>               &materials,
+                                    const MPI_Comm                      comm,
                                     const std::set<types::boundary_id> &moving_supports)
   {
     pairs                        = contact_pairs;
@@ -540,6 +540,8 @@ namespace contact_fem
           same = a[k].first == b[k].first && same_bits(a[k].second, b[k].second);
         wrong += !same;
       }
+    // Every rank stops (one rank alone would leave the others waiting).
+    wrong = Utilities::MPI::sum(wrong, mpi_communicator);
     AssertThrow(wrong == 0,
                 ExcMessage("The constraint lines of the held slave nodes differ from those of "
                            "every slave node at " +

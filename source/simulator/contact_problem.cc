@@ -11,6 +11,9 @@
 #include <contact_fem/simulator/contact_problem.h>
 #include <contact_fem/simulator/dof_setup.h>
 #include <contact_fem/contact/friction/friction_capacity.h>
+#include <contact_fem/contact/formulations/frictional_formulation.h>
+#include <contact_fem/contact/formulations/frictionless_formulation.h>
+#include <contact_fem/contact/formulations/penalty_frictionless.h>
 #include <contact_fem/simulator/search_control.h>
 #include <contact_fem/simulator/solution_checks.h>
 #include <contact_fem/core/format.h>
@@ -22,6 +25,8 @@
 #include <contact_fem/solvers/rigid_body_modes.h>
 
 #include <algorithm>
+#include <array>
+#include <cstring>
 #include <filesystem>
 #include <cmath>
 #include <iomanip>
@@ -427,7 +432,8 @@ namespace contact_fem
     // Contact and tying constraints couple slave DoFs to master DoFs
     // anywhere: every rank may write to the rows and entries of all
     // interface DoFs. The constraints store the lines a rank needs only
-    // (line_dofs(), per search), the vectors and the pattern keep this set:
+    // (line_dofs(), with each pattern and constraints), the vectors and the
+    // pattern keep this set:
     // the residual is read across a search.
     writable_dofs = relevant_dofs;
     for (const auto *dofs :
@@ -627,21 +633,134 @@ namespace contact_fem
 
   namespace
   {
-    /// The DoFs a rank's constraints store lines at (their local lines):
-    /// the locally relevant ones and those of the contact and tied lines it
-    /// needs (ContactInterface::line_dofs(), per search), a subset of the
-    /// DoFs the vectors and the pattern may write to (writable_dofs).
+    /// The DoFs at whose constraint lines a rank's contact assembly reads
+    /// beyond its relevant DoFs and the linearised patches of its rows
+    /// (ContactInterface::line_dofs() holds those): on current kinematics,
+    /// the masters of the converged operators in the frictional
+    /// formulations' objective-slip patches. Sorted.
+    template <int dim>
+    std::vector<types::global_dof_index>
+    converged_master_dofs(const ContactFormulation<dim> *contact,
+                          const ContactInterface<dim>   *interface)
+    {
+      std::vector<types::global_dof_index> dofs;
+      if (const auto *alm =
+            dynamic_cast<const FrictionalFormulation<dim, FrictionlessFormulation<dim>> *>(contact))
+        alm->add_converged_masters(*interface, dofs);
+      else if (const auto *penalty =
+                 dynamic_cast<const FrictionalFormulation<dim, PenaltyFrictionless<dim>> *>(
+                   contact))
+        penalty->add_converged_masters(*interface, dofs);
+      std::sort(dofs.begin(), dofs.end());
+      dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+      return dofs;
+    }
+
+    /// Adds to @p lines every DoF of the masters of each slave node of
+    /// @p surfaces with a DoF in @p lines (close() resolves the line stored
+    /// there through the lines at its masters) and of the parents of each
+    /// hanging node with a DoF in it; returns whether @p lines grew.
+    template <int dim>
+    bool
+    add_line_masters(const ContactInterface<dim> &surfaces, IndexSet &lines)
+    {
+      const auto in_lines = [&](const auto &node) {
+        return std::any_of(node.dofs.begin(), node.dofs.end(), [&](const auto dof) {
+          return lines.is_element(dof);
+        });
+      };
+      std::vector<types::global_dof_index> added;
+      const auto                           add_node = [&](const unsigned int n) {
+        for (const auto dof : surfaces.nodes[n].dofs)
+          if (!lines.is_element(dof))
+            added.push_back(dof);
+      };
+      for (const auto &s : surfaces.slave_nodes)
+        if (in_lines(surfaces.nodes[s.node]))
+          for (const auto &[m, value] : s.M)
+            add_node(m);
+      for (const auto &node : surfaces.nodes)
+        if (!node.parents.empty() && in_lines(node))
+          for (const auto &[parent, weight] : node.parents)
+            add_node(parent);
+      if (added.empty())
+        return false;
+      std::sort(added.begin(), added.end());
+      added.erase(std::unique(added.begin(), added.end()), added.end());
+      lines.add_indices(added.begin(), added.end());
+      lines.compress();
+      return true;
+    }
+
+    /// The DoFs a rank's constraints store lines at (their local lines), a
+    /// subset of the DoFs the vectors and the pattern may write to
+    /// (writable_dofs): the relevant DoFs, the lines each interface holds
+    /// (ContactInterface::line_dofs(), each closed on its own) and
+    /// @p converged_masters, closed under the masters of the contact and the
+    /// tied lines together (a chain may cross from one interface to the
+    /// other), until nothing is added.
     template <int dim>
     IndexSet
-    line_dofs(const IndexSet              &relevant_dofs,
-              const ContactInterface<dim> *interface,
-              const MeshTying<dim>        *tying)
+    line_dofs(const IndexSet                             &relevant_dofs,
+              const std::vector<types::global_dof_index> &converged_masters,
+              const ContactInterface<dim>                *interface,
+              const MeshTying<dim>                       *tying)
     {
-      IndexSet dofs = relevant_dofs;
-      for (const auto *surfaces : {interface, tying ? &tying->interface() : nullptr})
-        if (surfaces)
-          dofs.add_indices(surfaces->line_dofs());
-      return dofs;
+      IndexSet                                           lines    = relevant_dofs;
+      const std::array<const ContactInterface<dim> *, 2> surfaces = {
+        {interface, tying ? &tying->interface() : nullptr}};
+      for (const auto *surface : surfaces)
+        if (surface)
+          lines.add_indices(surface->line_dofs());
+      lines.add_indices(converged_masters.begin(), converged_masters.end());
+      for (bool grew = true; grew;)
+        {
+          grew = false;
+          for (const auto *surface : surfaces)
+            if (surface)
+              grew = add_line_masters(*surface, lines) || grew;
+        }
+      return lines;
+    }
+
+    /// With the check of the held state: the lines of @p held at @p dofs
+    /// (read beyond the relevant DoFs, which check_held_lines() compares)
+    /// must be those of @p full, bit for bit, as check_held_lines() asks.
+    /// Collective: every rank stops when one finds a difference.
+    void
+    check_lines_at(const AffineConstraints<double>            &held,
+                   const AffineConstraints<double>            &full,
+                   const std::vector<types::global_dof_index> &dofs,
+                   const MPI_Comm                              comm)
+    {
+      const auto same_bits = [](const double a, const double b) {
+        return std::memcmp(&a, &b, sizeof(double)) == 0;
+      };
+      unsigned int wrong = 0;
+      for (const auto dof : dofs)
+        {
+          const bool constrained = full.can_store_line(dof) && full.is_constrained(dof);
+          if ((held.can_store_line(dof) && held.is_constrained(dof)) != constrained)
+            {
+              ++wrong;
+              continue;
+            }
+          if (!constrained)
+            continue;
+          const auto &a    = *held.get_constraint_entries(dof);
+          const auto &b    = *full.get_constraint_entries(dof);
+          bool        same = a.size() == b.size() &&
+                      same_bits(held.get_inhomogeneity(dof), full.get_inhomogeneity(dof));
+          for (unsigned int k = 0; same && k < a.size(); ++k)
+            same = a[k].first == b[k].first && same_bits(a[k].second, b[k].second);
+          wrong += !same;
+        }
+      wrong = Utilities::MPI::sum(wrong, comm);
+      AssertThrow(wrong == 0,
+                  ExcMessage("The constraint lines of the held slave nodes differ from those of "
+                             "every slave node at " +
+                             std::to_string(wrong) +
+                             " DoFs of the converged operators' masters the ranks read."));
     }
   } // namespace
 
@@ -668,13 +787,18 @@ namespace contact_fem
       candidates.close();
       return candidates;
     };
+    const auto                masters = converged_master_dofs(contact.get(), interface.get());
     AffineConstraints<double> candidates =
-      make_candidates(line_dofs(relevant_dofs, interface.get(), tying.get()));
+      make_candidates(line_dofs(relevant_dofs, masters, interface.get(), tying.get()));
     const ContactInterface<dim> *checker = interface ? interface.get() :
                                            tying     ? &tying->interface() :
                                                        nullptr;
     if (checker && ContactInterface<dim>::checking_held_state())
-      checker->check_held_lines(candidates, make_candidates(writable_dofs));
+      {
+        const AffineConstraints<double> full = make_candidates(writable_dofs);
+        checker->check_held_lines(candidates, full);
+        check_lines_at(candidates, full, masters, comm);
+      }
 
     // Every DoF of a cell couples with every other one and with the masters
     // of those that are constrained: a superset of the couplings of any
@@ -740,7 +864,8 @@ namespace contact_fem
       c.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins, true);
       c.close();
     };
-    const IndexSet               lines   = line_dofs(relevant_dofs, interface.get(), tying.get());
+    const auto     masters = converged_master_dofs(contact.get(), interface.get());
+    const IndexSet lines   = line_dofs(relevant_dofs, masters, interface.get(), tying.get());
     const ContactInterface<dim> *checker = interface ? interface.get() :
                                            tying     ? &tying->interface() :
                                                        nullptr;
@@ -750,6 +875,7 @@ namespace contact_fem
       AffineConstraints<double> full;
       make(full, writable_dofs);
       checker->check_held_lines(held, full);
+      check_lines_at(held, full, masters, comm);
     };
     make_trial(constraints, lines);
     check(constraints, make_trial);
@@ -1376,8 +1502,8 @@ namespace contact_fem
     gap   = Utilities::MPI::max(gap, comm);
     ratio = Utilities::MPI::max(ratio, comm);
     return " The solve of this iterate held in contact " + std::to_string(count) +
-           " slave node(s) that started the step apart (gaps up to " + significant(gap, 2) +
-           ", " + significant(ratio, 2) +
+           " slave node(s) that started the step apart (gaps up to " + significant(gap, 2) + ", " +
+           significant(ratio, 2) +
            " of their element size): the first active set of the unloaded state takes every "
            "node whose gap is below Contact/Active check factor times its size, and the solve "
            "closes those gaps whatever the load, so smaller load steps do not change them. "

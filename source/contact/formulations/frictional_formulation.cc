@@ -265,6 +265,19 @@ namespace contact_fem
     return std::vector<types::global_dof_index>(unique.begin(), unique.end());
   }
 
+  template <int dim, class NormalPart>
+  void
+  FrictionalFormulation<dim, NormalPart>::add_converged_masters(
+    const ContactInterface<dim>          &interface,
+    std::vector<types::global_dof_index> &dofs) const
+  {
+    if (!on_current_configuration())
+      return;
+    for (const auto &[node, linearised] : interface.linearised_nodes)
+      for (const auto &[m, value] : converged_operators[node].M)
+        dofs.insert(dofs.end(), interface.nodes[m].dofs.begin(), interface.nodes[m].dofs.end());
+  }
+
   template class FrictionalFormulation<2, FrictionlessFormulation<2>>;
   template class FrictionalFormulation<3, FrictionlessFormulation<3>>;
   template class FrictionalFormulation<2, PenaltyFrictionless<2>>;

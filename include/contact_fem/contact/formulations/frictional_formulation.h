@@ -129,6 +129,14 @@ namespace contact_fem
       return slip_count;
     }
 
+    /// Current kinematics: adds to @p dofs every DoF of the masters of the
+    /// converged operators of the linearised nodes, which the objective-slip
+    /// patches (objective_slip_patch()) read the constraint lines at and
+    /// which may lie outside every linearised patch. Nothing otherwise.
+    void
+    add_converged_masters(const ContactInterface<dim>          &interface,
+                          std::vector<types::global_dof_index> &dofs) const;
+
   protected:
     /// The normal part's counts, then the stick and slip nodes.
     std::vector<unsigned int>
