@@ -433,8 +433,7 @@ namespace contact_fem
     // anywhere: every rank may write to the rows and entries of all
     // interface DoFs. The constraints store the lines a rank needs only
     // (line_dofs(), with each pattern and constraints), the vectors and the
-    // pattern keep this set:
-    // the residual is read across a search.
+    // pattern keep this set: the residual is read across a search.
     writable_dofs = relevant_dofs;
     for (const auto *dofs :
          {interface ? &interface->dofs() : nullptr, tying ? &tying->dofs() : nullptr})
