@@ -87,6 +87,19 @@ namespace contact_fem
         }
     while (!result.empty() && result.back() == '-')
       result.pop_back();
+    // deal.II's message for an unknown subsection lacks the '>' after the
+    // file name and does not say where the names are listed.
+    const std::regex no_subsection(
+      "^Line <([0-9]+)> of file <(.*): There is no such subsection to be entered: (.*)$");
+    if (std::smatch match; std::regex_match(result, match, no_subsection))
+      {
+        // deal.II joins the nested names by '.'; the input's keys use '/'.
+        std::string path = match[3].str();
+        std::replace(path.begin(), path.end(), '.', '/');
+        result = "Line <" + match[1].str() + "> of file <" + match[2].str() +
+                 ">: no subsection '" + path +
+                 "' is declared (--print-parameters lists every subsection and key).";
+      }
     // Trilinos' own code says nothing to a user; the one seen in practice
     // (error 2 from a sum into a matrix) is an entry outside the sparsity
     // pattern, a coupling the program did not foresee: a defect to report.

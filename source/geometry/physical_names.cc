@@ -36,6 +36,15 @@ namespace contact_fem
       if (n.dimension == static_cast<int>(dim) || n.dimension + 1 == static_cast<int>(dim))
         {
           auto &ids = n.dimension == static_cast<int>(dim) ? body_ids : surface_ids;
+          // The input takes a number as an id: a name '4' of the tag 3 would
+          // silently stand for the tag 4 (a pair '3: 4' reversed).
+          AssertThrow(!is_number(n.name) || n.name == std::to_string(n.tag),
+                      ExcMessage("Geometry/Mesh file: '" + file + "' gives the physical name '" +
+                                 n.name + "' to the tag " + std::to_string(n.tag) + " of " +
+                                 (n.dimension == static_cast<int>(dim) ? "cells" : "faces") +
+                                 ": the input reads a number as an id, so '" + n.name +
+                                 "' would stand for the tag " + n.name +
+                                 ", not this one; give it a name that is not a number."));
           const auto [entry, inserted] = ids.emplace(n.name, n.tag);
           AssertThrow(inserted || entry->second == static_cast<unsigned int>(n.tag),
                       ExcMessage("Geometry/Mesh file: '" + file + "' gives the physical name '" +

@@ -325,11 +325,18 @@ namespace contact_fem
     prm.leave_subsection();
     prm.leave_subsection();
 
-    for (const double v :
-         {hertz.radius, hertz.plate_half_width, hertz.plate_thickness, hertz_sphere.radius,
-          hertz_sphere.plate_width, hertz_sphere.plate_thickness, blocks.width, blocks.height})
-      AssertThrow(v > 0.,
-                  ExcMessage("Geometry: lengths must be > 0 (got " + std::to_string(v) + ")."));
+    const std::pair<const char *, double> lengths[] = {
+      {"Hertz cylinder/Radius", hertz.radius},
+      {"Hertz cylinder/Plate half width", hertz.plate_half_width},
+      {"Hertz cylinder/Plate thickness", hertz.plate_thickness},
+      {"Hertz sphere/Radius", hertz_sphere.radius},
+      {"Hertz sphere/Plate width", hertz_sphere.plate_width},
+      {"Hertz sphere/Plate thickness", hertz_sphere.plate_thickness},
+      {"Contact blocks/Width", blocks.width},
+      {"Contact blocks/Height", blocks.height}};
+    for (const auto &[key, v] : lengths)
+      AssertThrow(v > 0., ExcMessage("Geometry/" + std::string(key) + ": got " +
+                                     significant(v, 15) + "; expected a length > 0."));
     AssertThrow(std::abs(blocks.gap) < blocks.height,
                 ExcMessage("Geometry/Contact blocks/Initial gap: |gap| must be "
                            "smaller than the block height."));

@@ -154,9 +154,25 @@ namespace contact_fem
     {
       std::error_code error;
       fs::create_directories(directory, error);
+      // The first part of the path that exists and is not a directory (a
+      // file of that name) is what stops it: say which.
+      std::string blocking;
+      for (fs::path part = fs::path(directory).lexically_normal(); !part.empty();
+           part = part.parent_path())
+        {
+          std::error_code ignored;
+          if (fs::exists(part, ignored) && !fs::is_directory(part, ignored))
+            blocking = part.string();
+          if (part == part.parent_path())
+            break;
+        }
       require(!error && fs::is_directory(directory),
-              "Output directory: cannot create '" + directory +
-                "': " + (error ? error.message() : "it exists and is not a directory") + ".");
+              "Output directory: cannot create '" + directory + "': " +
+                (!blocking.empty() ?
+                   "'" + blocking + "' is a file, not a directory; name another directory, or "
+                                    "remove the file" :
+                   (error ? error.message() : "it exists and is not a directory")) +
+                ".");
       check_writable(directory);
       lock_directory(directory);
       OutputDirectoryReport report;

@@ -34,6 +34,23 @@ namespace contact_fem
     /// prm/hertz.prm: at 1e-12 of its load, 4 units, the reactions balance
     /// to 9e-5; at 1e-15 the contact is lost).
     constexpr double round_off_units = 1e3;
+
+    /// Calls @p visit(cell, f) on each face of boundary @p id of the
+    /// locally owned cells, until a call returns false; whether none did.
+    template <int dim, typename Visit>
+    bool
+    for_each_owned_face(const DoFHandler<dim> &dof_handler,
+                        const types::boundary_id id,
+                        const Visit             &visit)
+    {
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id &&
+                !visit(cell, f))
+              return false;
+      return true;
+    }
   } // namespace
 
   template <int dim>
@@ -56,15 +73,12 @@ namespace contact_fem
       loads[id] = Tensor<1, dim>();
     // Adds int force ds over the faces of boundary @p id to each body's load.
     const auto integrate = [&](const types::boundary_id id, const auto &force_at) {
-      for (const auto &cell : run.dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          for (const auto f : cell->face_indices())
-            if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
-              {
-                fe_face.reinit(cell, f);
-                for (unsigned int q = 0; q < quadrature.size(); ++q)
-                  loads[cell->material_id()] += force_at(q) * fe_face.JxW(q);
-              }
+      for_each_owned_face(run.dof_handler, id, [&](const auto &cell, const unsigned int f) {
+        fe_face.reinit(cell, f);
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
+          loads[cell->material_id()] += force_at(q) * fe_face.JxW(q);
+        return true;
+      });
     };
     for (const auto &condition : run.boundary_conditions.pressures)
       {
@@ -98,15 +112,12 @@ namespace contact_fem
     FEFaceValues<dim>     fe_face(run.mapping, run.dof_handler.get_fe(), quadrature,
                                   update_normal_vectors | update_JxW_values);
     Tensor<1, dim>        normal;
-    for (const auto &cell : run.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
-            {
-              fe_face.reinit(cell, f);
-              for (unsigned int q = 0; q < quadrature.size(); ++q)
-                normal += fe_face.normal_vector(q) * fe_face.JxW(q);
-            }
+    for_each_owned_face(run.dof_handler, id, [&](const auto &cell, const unsigned int f) {
+      fe_face.reinit(cell, f);
+      for (unsigned int q = 0; q < quadrature.size(); ++q)
+        normal += fe_face.normal_vector(q) * fe_face.JxW(q);
+      return true;
+    });
     return Utilities::MPI::sum(normal, comm);
   }
 
@@ -162,6 +173,56 @@ namespace contact_fem
                     std::max(prescribed, std::abs(function.value(cell->face(f)->vertex(v))));
       }
     return std::max(by_force, Utilities::MPI::max(prescribed, comm));
+  }
+
+  template <int dim>
+  bool
+  ContactDiagnosis<dim>::load_vanishes(const double time) const
+  {
+    const QGauss<dim - 1> quadrature(run.dof_handler.get_fe().degree + 1);
+    FEFaceValues<dim>     fe_face(run.mapping, run.dof_handler.get_fe(), quadrature,
+                                  update_quadrature_points);
+    bool vanishes = true;
+    // Whether @p value(point) is 0 at the quadrature points and vertices of
+    // every face of boundary @p id.
+    const auto zero_on = [&](const types::boundary_id id, const auto &value) {
+      return for_each_owned_face(run.dof_handler, id, [&](const auto &cell, const unsigned int f) {
+        fe_face.reinit(cell, f);
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
+          if (value(fe_face.quadrature_point(q)) != 0.)
+            return false;
+        for (const auto v : cell->face(f)->vertex_indices())
+          if (value(cell->face(f)->vertex(v)) != 0.)
+            return false;
+        return true;
+      });
+    };
+    for (const auto &condition : run.boundary_conditions.pressures)
+      {
+        UserFunction<dim> pressure({condition.expression}, run.scene.frame);
+        pressure.set_time(time);
+        vanishes = vanishes && zero_on(condition.boundary_id, [&](const Point<dim> &x) {
+                     return pressure.value(x);
+                   });
+      }
+    for (const auto &condition : run.boundary_conditions.tractions)
+      {
+        UserFunction<dim> traction(condition.expressions, run.scene.frame);
+        traction.set_time(time);
+        for (unsigned int d = 0; d < dim; ++d)
+          vanishes = vanishes && zero_on(condition.boundary_id, [&](const Point<dim> &x) {
+                       return traction.value(x, d);
+                     });
+      }
+    for (const auto &condition : run.boundary_conditions.displacements)
+      {
+        UserFunction<dim> function({condition.expression}, run.scene.frame);
+        function.set_time(time);
+        vanishes = vanishes && zero_on(condition.boundary_id, [&](const Point<dim> &x) {
+                     return function.value(x);
+                   });
+      }
+    return Utilities::MPI::min(vanishes ? 1u : 0u, comm) == 1u;
   }
 
   template <int dim>
@@ -281,6 +342,12 @@ namespace contact_fem
       ": the load separates the bodies. Set Contact/Allow loss of contact = true if the "
       "scene may lose contact.";
     // Causes other than a separating load, most specific first.
+    if (load_vanishes(time))
+      return NewtonFailure(where +
+                             ": no contact. No slave node is active because the load is zero "
+                             "there: nothing presses the bodies together. Set Contact/Allow "
+                             "loss of contact = true if the load path unloads the bodies.",
+                           false);
     std::string cause = precision_limits();
     if (cause.empty())
       cause = load_at_round_off(time);
@@ -510,8 +577,7 @@ namespace contact_fem
   template <int dim>
   std::vector<std::string>
   ContactDiagnosis<dim>::modelling_warnings(const unsigned int degree,
-                                            const bool         b_bar,
-                                            const double       end_time) const
+                                            const bool         b_bar) const
   {
     std::vector<std::string> warnings;
     for (const auto &[id, constants] : run.materials.bodies)
@@ -528,7 +594,7 @@ namespace contact_fem
           warnings.push_back(text.str());
         }
     for (const std::string &limit :
-         {stiffness_contrast_limit(), auxetic_limit(), load_at_round_off(end_time)})
+         {stiffness_contrast_limit(), auxetic_limit()})
       if (!limit.empty())
         warnings.push_back(limit + ".");
     // Volumetric locking: measured on the Hertz scene, p_max is off by more
@@ -623,6 +689,38 @@ namespace contact_fem
              "), so the gaps that set the penalty's pressures are rounding noise; scale the "
              "load or the units up, lower Contact/Stiffness factor, or use an alm formulation.";
     return "";
+  }
+
+  template <int dim>
+  std::string
+  ContactDiagnosis<dim>::pressureless_contact(const Json  &contact,
+                                              const double time,
+                                              const bool   load_vanishes) const
+  {
+    const auto n_active = static_cast<unsigned int>(contact["active_slave_nodes"].number_value());
+    if (n_active == 0)
+      return "";
+    const double pressure = std::max(std::abs(contact["max_contact_pressure"].number_value()),
+                                     std::abs(contact["min_active_contact_pressure"].number_value()));
+    // The mean stress of a force load, or the stress of a prescribed
+    // displacement in the softer body: a pressed contact's pressures are of
+    // its order, round-off about 1e-16 of it.
+    const double stress = run.materials.youngs_modulus_range().first *
+                          load_displacement_scale(time) /
+                          model_extent(run.dof_handler.get_triangulation());
+    std::string why;
+    if (load_vanishes)
+      why = "the load is zero at t = " + significant(time, 6) +
+            ": nothing presses the bodies together";
+    else if (pressure < 1e-12 * stress)
+      why = "the contact pressures at t = " + significant(time, 6) + " are below 1e-12 of the " +
+            "load's stress scale (" + significant(stress, 2) +
+            "): the bodies touch without pressing each other";
+    else
+      return "";
+    return why + ", so the pressures are round-off (at most " + significant(pressure, 2) +
+           " in size) and the " + std::to_string(n_active) +
+           " active slave node(s) are picked by rounding: read the state as without contact";
   }
 
   template <int dim>

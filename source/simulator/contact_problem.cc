@@ -5,6 +5,7 @@
 #include <deal.II/fe/mapping_q_cache.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_index_access.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <contact_fem/postprocess/contact_results.h>
@@ -23,6 +24,9 @@
 #include <contact_fem/geometry/mesh_queries.h>
 #include <contact_fem/geometry/manifold_mapping.h>
 #include <contact_fem/solvers/rigid_body_modes.h>
+
+#include <Epetra_Import.h>
+#include <Epetra_Vector.h>
 
 #include <algorithm>
 #include <array>
@@ -365,7 +369,7 @@ namespace contact_fem
     model_range.parse_parameters(prm);
     if (model_range.accept_interpenetration)
       interpenetration.reset();
-    memory_warning = input_checks().check_scene_before_meshing(inclined_supports);
+    memory_warning = input_checks().check_scene_before_meshing(inclined_supports, triangulation);
 
     timer = std::make_unique<TimerOutput>(comm, pcout, TimerOutput::never, TimerOutput::wall_times);
     postprocessors = Postprocessor<dim>::create_wanted(
@@ -959,6 +963,35 @@ namespace contact_fem
   }
 
   template <int dim>
+  double
+  ContactProblem<dim>::residual_round_off() const
+  {
+    // The columns of the owned rows may reach DoFs that are not locally
+    // relevant (mortar couplings): x on the matrix' column map.
+    const Epetra_CrsMatrix &A = system_matrix.trilinos_matrix();
+    Epetra_Vector           x(A.ColMap());
+    x.Import(solution.trilinos_vector(),
+             Epetra_Import(A.ColMap(), solution.trilinos_vector().Map()), Insert);
+    // The rows are those of the test space (distribute_two_space()).
+    const AffineConstraints<double> &rows =
+      !contact || contact->symmetric() ? constraints : test_constraints;
+    double local = 0.;
+    for (int row = 0; row < A.NumMyRows(); ++row)
+      if (!rows.is_constrained(TrilinosWrappers::global_row_index(A, row)))
+        {
+          int     n       = 0;
+          double *values  = nullptr;
+          int    *columns = nullptr;
+          A.ExtractMyRowView(row, n, values, columns);
+          double sum = 0.;
+          for (int k = 0; k < n; ++k)
+            sum += std::abs(values[k]) * std::abs(x[columns[k]]);
+          local += sum * sum;
+        }
+    return std::numeric_limits<double>::epsilon() * std::sqrt(Utilities::MPI::sum(local, comm));
+  }
+
+  template <int dim>
   typename FiniteStrainBulk<dim>::CellLinearisation
   ContactProblem<dim>::relinearise_finite_strain_cell(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
@@ -1295,6 +1328,13 @@ namespace contact_fem
     solving = true;
     Timer step_timer;
     prepare_load_step(time, step_size, start);
+    if (step == 0 && start == StepStart::unloaded)
+      {
+        // Nothing was solved yet: a zero load is an input error.
+        solving = false;
+        check_load_resolved();
+        solving = true;
+      }
     pcout << "  Load step " << step + 1 << ", t = " << time << std::endl;
     if (output.print_newton_iterations)
       pcout << NewtonMonitor::header(contact ? contact->iteration_header() : "",
@@ -1375,6 +1415,10 @@ namespace contact_fem
           {
             check_before_solve(at, iteration);
             newton_update(at, monitor.displacement_target());
+            // Only a flat run may end at a floor: the scale costs a pass over
+            // the matrix, which converging iterations do not pay.
+            if (monitor.in_flat_run())
+              monitor.set_round_off(residual_round_off());
           }
         try
           {
@@ -1460,6 +1504,39 @@ namespace contact_fem
 
   template <int dim>
   void
+  ContactProblem<dim>::check_load_resolved() const
+  {
+    if (!contact)
+      return;
+    if (const std::string cause = diagnosis().load_at_round_off(load_stepping.end_time);
+        !cause.empty())
+      throw std::runtime_error("Boundary conditions: nothing is solved: " + cause + ".");
+    // The nominal step times; splits fall between them, where a load that
+    // is zero at every one of them is not looked at.
+    for (unsigned int k = load_stepping.n_steps; k > 0; --k)
+      if (!diagnosis().load_vanishes(load_stepping.end_time * k / load_stepping.n_steps))
+        return;
+    // Bodies that start inside each other (a shrink fit) press themselves
+    // together without a load. 1e-8 of the element size is far above the
+    // round-off of touching surfaces.
+    double deepest = 0.;
+    for (const auto &s : interface->slave_nodes)
+      if (interface->owns_row(s))
+        deepest = std::max(deepest, -interface->gap(s, interface_displacement) / s.size);
+    if (Utilities::MPI::max(deepest, comm) > 1e-8)
+      return;
+    throw std::runtime_error(
+      "Boundary conditions: the load is zero (every Pressure, Traction and Prescribed "
+      "displacement is 0 at each of the " +
+      std::to_string(load_stepping.n_steps) + " load step(s) up to End time = " +
+      significant(load_stepping.end_time, 6) +
+      "), and no slave node starts inside its master: nothing presses the bodies together, so "
+      "the answer is u = 0 without contact pressure, and which touching nodes are in contact "
+      "is undetermined (round-off would decide it). Set a load, or check its expression.");
+  }
+
+  template <int dim>
+  void
   ContactProblem<dim>::record_start_rule_nodes()
   {
     // Only a step from the unloaded state takes nodes apart by the factor
@@ -1536,7 +1613,9 @@ namespace contact_fem
   {
     {
       TimerOutput::Scope t(*timer, "Setup: mesh");
-      input_checks().create_scene_mesh(scene, triangulation);
+      // The input checks built the mesh of a scene without refinements.
+      if (triangulation.n_levels() == 0)
+        input_checks().create_scene_mesh(scene, triangulation);
       std::set<types::material_id> material_ids;
       for (const auto &[id, constants] : materials.bodies)
         material_ids.insert(id);
@@ -1578,6 +1657,7 @@ namespace contact_fem
     LoadStepControl control(load_stepping, 0., load_stepping.n_steps);
     const double    time = control.next_time();
     prepare_load_step(time, time, StepStart::unloaded);
+    check_load_resolved();
   }
 
   template <int dim>
@@ -1912,8 +1992,7 @@ namespace contact_fem
 
     if (cycle == 0)
       for (const std::string &text :
-           diagnosis().modelling_warnings(degree, volumetric_projection != nullptr,
-                                          load_stepping.end_time))
+           diagnosis().modelling_warnings(degree, volumetric_projection != nullptr))
         pcout << "  Warning: " << text << std::endl;
 
     cycle_record.set("cycle", cycle)
@@ -2050,16 +2129,6 @@ namespace contact_fem
   ContactProblem<dim>::run_cycle(const unsigned int cycle, Json &cycle_record)
   {
     start_cycle(cycle, cycle_record);
-    // A load at the round-off of the geometry leaves the gaps, the active
-    // set and the pressures rounding noise: nothing to report as a result.
-    if (const std::string cause =
-          contact ? diagnosis().load_at_round_off(load_stepping.end_time) : "";
-        !cause.empty())
-      {
-        pcout << std::endl << "Error: nothing is solved: " << cause << "." << std::endl;
-        cycle_record.set("failure", cause);
-        return false;
-      }
     interpenetration_finding.reset();
     const LoadPath path = step_the_load(cycle, cycle_record);
     if (interpenetration_finding)
@@ -2104,14 +2173,28 @@ namespace contact_fem
       {run_view(0, nullptr, contact_force).forces, held, diagnosis().body_loads(current_time),
        materials.youngs_modulus_range().first, solution.linfty_norm()});
     cycle_record.set("contact", contact_json).set("reaction", reaction_json);
-    if (const std::string text = converged ? diagnosis().tension_failure(contact_json) : "";
+    // Bodies that touch without pressing (a load path back to zero load, a
+    // slide at zero normal load): round-off picks the active set and the
+    // signs of its pressures. The state is right (the pressures vanish to
+    // round-off); its active set means nothing. Also for the last converged
+    // state of a failed run, which is printed as the results.
+    const bool        unloaded     = contact && diagnosis().load_vanishes(current_time);
+    const std::string pressureless = contact ? diagnosis().pressureless_contact(
+                                                 contact_json, current_time, unloaded) :
+                                               "";
+    if (!pressureless.empty())
+      warn("unloaded_warning", pressureless, cycle_record);
+    if (const std::string text =
+          converged && pressureless.empty() ? diagnosis().tension_failure(contact_json) : "";
         !text.empty())
       {
         pcout << std::endl << "Error: " << text << "." << std::endl;
         cycle_record.set("failure", text);
         return false;
       }
-    if (converged)
+    // Unloaded with contact, the reactions are round-off: their balance is
+    // no check.
+    if (converged && (!unloaded || pressureless.empty()))
       if (const std::string text = diagnosis().balance_warning(reaction_json, current_time);
           !text.empty())
         {

@@ -25,12 +25,13 @@ namespace contact_fem
   {
     prm.enter_subsection("Load stepping");
     end_time     = prm.get_double("End time");
+    const std::string end_text = prm.get("End time"); // as written, for the message
     const int n  = prm.get_integer("Number of load steps");
     max_splits   = prm.get_integer("Maximum step splits");
     split_factor = prm.get_integer("Split factor");
     prm.leave_subsection();
     AssertThrow(end_time > 0. && std::isfinite(end_time),
-                ExcMessage("Load stepping/End time: got " + std::to_string(end_time) +
+                ExcMessage("Load stepping/End time: got " + end_text +
                            "; expected a value > 0."));
     AssertThrow(n >= 1 && n <= 100000,
                 ExcMessage("Load stepping/Number of load steps: got " + std::to_string(n) +

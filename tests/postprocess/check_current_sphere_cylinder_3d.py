@@ -3,6 +3,7 @@
 plane (issue 29): checks that do not depend on stored numbers.
 
 Usage: check_current_sphere_cylinder_3d.py CONTACT_FEM SCENE.prm MESH_SCRIPT MODE
+       [EXPECTED NUMDIFF NORMALIZE_PL]
 
 SCENE is tests/scenes/current_kinematics_sphere_cylinder_3d_01.prm (a
 neo-Hookean block with a spherical bottom pressed by 0.05 onto a neo-Hookean
@@ -28,6 +29,9 @@ MODE 'frictionless' (alm frictionless):
    one force to 1e-8 of |F_n|.
 
 MODE 'frictional' (the scene as it is):
+0. with EXPECTED (the scene test's stored output), the scene's perturbed
+   twin: the run on DoFs renumbered by seed 1 prints EXPECTED (normalize.pl,
+   then numdiff as tests/run_perturbed.sh);
 3. the same Newton and balance checks;
 4. at t = 2 and t = 3 every active node slips (no stick); at t = 3, per
    active node of pressure_profile.csv, the tangential traction opposes the
@@ -48,6 +52,7 @@ CONTACT_FEM_PERTURBATION_SEED, if set, renumbers the DoFs.
 import importlib.util
 import math
 import os
+import subprocess
 import sys
 
 from scene_run import (check_quadratic, converged_sets, csv_numbers, newton_table, perturbation,
@@ -173,9 +178,30 @@ def angle(u, v):
     return math.degrees(math.acos(max(-1.0, min(1.0, c))))
 
 
-def frictional(contact_fem, scene, mesh_script):
-    output, rows, nodes = run(contact_fem, scene, "x then y")
-    ok = newton_and_balance("Coulomb, x then y", output, rows, 3)
+def same_as_stored(output, twin):
+    """The scene's perturbed twin, run here: output (the scene as it is, on
+    renumbered DoFs) against the scene test's stored output, filtered and
+    compared as tests/run_perturbed.sh does."""
+    expected, numdiff, normalize = twin
+    with open("output", "w") as f:
+        f.write(output)
+    filters = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "output_filters.sh")
+    result = subprocess.run(
+        ["sh", "-c", f'perl -pi "{normalize}" output && . "{filters}" && '
+         f'strip_krylov_counts "{expected}" > expected && strip_krylov_counts output > compared '
+         f'&& numdiff_outputs "{numdiff}" expected compared diff', "twin"])
+    return report("Coulomb, x then y, on renumbered DoFs: the scene's stored output "
+                  "(numdiff as the perturbed twins)", result.returncode == 0,
+                  "" if result.returncode == 0 else "see diff and output")
+
+
+def frictional(contact_fem, scene, mesh_script, twin=None):
+    # With twin, the run is renumbered (seed 1, or the environment's) and
+    # must print the scene's stored output: the scene's perturbed twin.
+    renumbered = ("Finite element/DoF renumbering seed=1",) if twin and not perturbation() else ()
+    output, rows, nodes = run(contact_fem, scene, "x then y", renumbered)
+    ok = same_as_stored(output, twin) if twin else True
+    ok = newton_and_balance("Coulomb, x then y", output, rows, 3) and ok
     sets = converged_sets(output)
     ok = report("Coulomb: every active node slips at t = 2 and 3",
                 len(sets) == 3 and all(s[1] == 0 and s[2] == s[0] > 0 for s in sets[1:]),
@@ -238,12 +264,13 @@ def frictional(contact_fem, scene, mesh_script):
 
 def main():
     contact_fem, scene, script, mode = sys.argv[1:5]
+    twin = sys.argv[5:8] if len(sys.argv) >= 8 else None
     sys.dont_write_bytecode = True  # no __pycache__ in the source tree's meshes/
     spec = importlib.util.spec_from_file_location("sphere_on_cylinder_3d", script)
     mesh_script = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mesh_script)
     ok = frictionless(contact_fem, scene) if mode == "frictionless" else \
-        frictional(contact_fem, scene, mesh_script)
+        frictional(contact_fem, scene, mesh_script, twin)
     sys.exit(0 if ok else 1)
 
 

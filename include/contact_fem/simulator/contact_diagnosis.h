@@ -58,6 +58,12 @@ namespace contact_fem
     /// @p time. Collective.
     std::map<types::material_id, Tensor<1, dim>>
     body_loads(const double time) const;
+    /// Whether every Pressure, Traction and Prescribed displacement is
+    /// exactly zero at @p time on its boundary (at the faces' quadrature
+    /// points and vertices): a load whose resultant vanishes (a pressure
+    /// all around a body) is not zero. Collective.
+    bool
+    load_vanishes(const double time) const;
     /// Why the load at @p time is at the round-off of the geometry, or "".
     std::string
     load_at_round_off(const double time) const;
@@ -115,16 +121,23 @@ namespace contact_fem
     double
     slave_stiffness_ratio(const unsigned int pair) const;
     /// The warnings printed before the first solve, each a sentence: models
-    /// beyond double precision, a load at round-off at @p end_time,
-    /// Poisson's ratios where elements of @p degree lock without B-bar
-    /// (@p b_bar: it is on), a slave side much stiffer than its master.
+    /// beyond double precision, Poisson's ratios where elements of
+    /// @p degree lock without B-bar (@p b_bar: it is on), a slave side much
+    /// stiffer than its master. (A load at round-off is an input error.)
     std::vector<std::string>
-    modelling_warnings(const unsigned int degree, const bool b_bar, const double end_time) const;
+    modelling_warnings(const unsigned int degree, const bool b_bar) const;
     /// The warning of a cycle whose @p reaction record (its relative
     /// imbalance) at @p time does not balance the load, with its likely
     /// cause; "" if it balances.
     std::string
     balance_warning(const Json &reaction, const double time) const;
+    /// The warning of a state whose "contact" record @p contact has active
+    /// nodes at pressures of round-off: the load is zero at @p time
+    /// (@p load_vanishes), or every pressure is below 1e-12 of the load's
+    /// stress scale (E_min times the load's displacement over the model's
+    /// extent). "" if the contact presses. Collective.
+    std::string
+    pressureless_contact(const Json &contact, const double time, const bool load_vanishes) const;
     /// Why a converged state whose "contact" record @p contact has an
     /// active node in tension is no result (its active set was decided by
     /// rounding); "" if every active node is in compression.

@@ -201,6 +201,13 @@ namespace contact_fem
     /// NewtonFailure if the bonds cycle.
     unsigned int
     update_bonds(const std::string &at, const unsigned int iteration);
+    /// Before the first solve: throws the input error of a load at the
+    /// round-off of the geometry at the end time, or of a load that is
+    /// zero at every load step while the slave nodes start outside their
+    /// masters (nothing presses the bodies together; the answer is u = 0).
+    /// Either way round-off would pick the active set. Collective.
+    void
+    check_load_resolved() const;
     /// After iteration 0: start_rule_nodes of this step.
     void
     record_start_rule_nodes();
@@ -224,6 +231,14 @@ namespace contact_fem
 
     void
     solve_linear_system(const double newton_residual_target);
+    /// Machine epsilon times || |A| |x| || over the unconstrained rows of
+    /// the last solve's system: the size of the round-off of A x, and so of
+    /// any residual evaluated at x. A displacement far larger than the
+    /// load's own (a rigid motion that closes an initial gap) makes it
+    /// exceed a tolerance relative to the load (doc/design.md, "What a
+    /// failed step names").
+    double
+    residual_round_off() const;
     /// The failure of a Newton update whose linear system is singular
     /// (@p what: where and the solver's words): splittable when the tangent
     /// depends on the iterate and was regular before in this load path.

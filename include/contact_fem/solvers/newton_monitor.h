@@ -55,6 +55,23 @@ namespace contact_fem
                     const double load_displacement = 0.,
                     const double coordinate_size   = 0.);
 
+    /// The size of the round-off of the residual at the iterate the last
+    /// solve gave (ContactProblem::residual_round_off()): a flat |r_u|
+    /// within round_off_units of it is a floor that no iteration lowers.
+    void
+    set_round_off(const double scale)
+    {
+      round_off_u = scale;
+    }
+
+    /// The last iteration was flat (floor_run): the next one's round-off
+    /// scale is wanted.
+    bool
+    in_flat_run() const
+    {
+      return !floor_run.empty();
+    }
+
     /// What the residuals of one iteration say.
     struct Assessment
     {
@@ -108,8 +125,9 @@ namespace contact_fem
     last_residuals() const;
 
     /// With |r_u| above its target: " |r_u| stagnated at ..." naming the
-    /// floor and the tolerance reachable, when the residual has stopped
-    /// falling (floor_run); empty otherwise.
+    /// floor, its round-off scale and the tolerance reachable, when the
+    /// residual has stopped falling (floor_run) within 10 units of
+    /// set_round_off(); empty otherwise.
     std::string
     floor_hint() const;
 
@@ -147,6 +165,8 @@ namespace contact_fem
     /// the residual did not fall (each flat: above half its predecessor),
     /// with the iteration before them; cleared by any other iteration.
     std::vector<double> floor_run;
+    /// set_round_off(); 0 before the first solve.
+    double round_off_u = 0.;
   };
 } // namespace contact_fem
 
