@@ -514,6 +514,51 @@ namespace contact_fem
 
   template <int dim>
   void
+  ContactInterface<dim>::close_line_dofs(IndexSet                                         &lines,
+                                         const std::vector<const ContactInterface<dim> *> &surfaces)
+  {
+    const auto in_lines = [&](const Node &node) {
+      return std::any_of(node.dofs.begin(), node.dofs.end(), [&](const auto dof) {
+        return lines.is_element(dof);
+      });
+    };
+    for (bool grew = true; grew;)
+      {
+        grew = false;
+        std::vector<types::global_dof_index> added;
+        for (const auto *surface : surfaces)
+          {
+            if (surface == nullptr)
+              continue;
+            const auto add_node = [&](const unsigned int n) {
+              for (const auto dof : surface->nodes[n].dofs)
+                if (!lines.is_element(dof))
+                  added.push_back(dof);
+            };
+            for (const auto &s : surface->slave_nodes)
+              if (in_lines(surface->nodes[s.node]))
+                for (const auto &[m, value] : s.M)
+                  add_node(m);
+            for (const auto &node : surface->nodes)
+              if (!node.parents.empty() && in_lines(node))
+                for (const auto &[parent, weight] : node.parents)
+                  add_node(parent);
+            // The next surface sees what this one added.
+            if (!added.empty())
+              {
+                std::sort(added.begin(), added.end());
+                added.erase(std::unique(added.begin(), added.end()), added.end());
+                lines.add_indices(added.begin(), added.end());
+                lines.compress();
+                grew = true;
+                added.clear();
+              }
+          }
+      }
+  }
+
+  template <int dim>
+  void
   ContactInterface<dim>::check_held_lines(const AffineConstraints<double> &held,
                                           const AffineConstraints<double> &full) const
   {

@@ -12,9 +12,6 @@
 #include <contact_fem/simulator/contact_problem.h>
 #include <contact_fem/simulator/dof_setup.h>
 #include <contact_fem/contact/friction/friction_capacity.h>
-#include <contact_fem/contact/formulations/frictional_formulation.h>
-#include <contact_fem/contact/formulations/frictionless_formulation.h>
-#include <contact_fem/contact/formulations/penalty_frictionless.h>
 #include <contact_fem/simulator/search_control.h>
 #include <contact_fem/simulator/solution_checks.h>
 #include <contact_fem/core/format.h>
@@ -29,7 +26,6 @@
 #include <Epetra_Vector.h>
 
 #include <algorithm>
-#include <array>
 #include <cstring>
 #include <filesystem>
 #include <cmath>
@@ -636,100 +632,33 @@ namespace contact_fem
 
   namespace
   {
-    /// The DoFs at whose constraint lines a rank's contact assembly reads
-    /// beyond its relevant DoFs and the linearised patches of its rows
-    /// (ContactInterface::line_dofs() holds those): on current kinematics,
-    /// the masters of the converged operators in the frictional
-    /// formulations' objective-slip patches. Sorted.
-    template <int dim>
-    std::vector<types::global_dof_index>
-    converged_master_dofs(const ContactFormulation<dim> *contact,
-                          const ContactInterface<dim>   *interface)
-    {
-      std::vector<types::global_dof_index> dofs;
-      if (const auto *alm =
-            dynamic_cast<const FrictionalFormulation<dim, FrictionlessFormulation<dim>> *>(contact))
-        alm->add_converged_masters(*interface, dofs);
-      else if (const auto *penalty =
-                 dynamic_cast<const FrictionalFormulation<dim, PenaltyFrictionless<dim>> *>(
-                   contact))
-        penalty->add_converged_masters(*interface, dofs);
-      std::sort(dofs.begin(), dofs.end());
-      dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
-      return dofs;
-    }
-
-    /// Adds to @p lines every DoF of the masters of each slave node of
-    /// @p surfaces with a DoF in @p lines (close() resolves the line stored
-    /// there through the lines at its masters) and of the parents of each
-    /// hanging node with a DoF in it; returns whether @p lines grew.
-    template <int dim>
-    bool
-    add_line_masters(const ContactInterface<dim> &surfaces, IndexSet &lines)
-    {
-      const auto in_lines = [&](const auto &node) {
-        return std::any_of(node.dofs.begin(), node.dofs.end(), [&](const auto dof) {
-          return lines.is_element(dof);
-        });
-      };
-      std::vector<types::global_dof_index> added;
-      const auto                           add_node = [&](const unsigned int n) {
-        for (const auto dof : surfaces.nodes[n].dofs)
-          if (!lines.is_element(dof))
-            added.push_back(dof);
-      };
-      for (const auto &s : surfaces.slave_nodes)
-        if (in_lines(surfaces.nodes[s.node]))
-          for (const auto &[m, value] : s.M)
-            add_node(m);
-      for (const auto &node : surfaces.nodes)
-        if (!node.parents.empty() && in_lines(node))
-          for (const auto &[parent, weight] : node.parents)
-            add_node(parent);
-      if (added.empty())
-        return false;
-      std::sort(added.begin(), added.end());
-      added.erase(std::unique(added.begin(), added.end()), added.end());
-      lines.add_indices(added.begin(), added.end());
-      lines.compress();
-      return true;
-    }
-
     /// The DoFs a rank's constraints store lines at (their local lines), a
     /// subset of the DoFs the vectors and the pattern may write to
-    /// (writable_dofs): the relevant DoFs, the lines each interface holds
-    /// (ContactInterface::line_dofs(), each closed on its own) and
-    /// @p converged_masters, closed under the masters of the contact and the
-    /// tied lines together (a chain may cross from one interface to the
-    /// other), until nothing is added.
+    /// (writable_dofs): the relevant DoFs, the contact formulation's lines
+    /// (ContactFormulation::line_dofs()) and the tied interface's, closed
+    /// under the masters of both together.
     template <int dim>
     IndexSet
-    line_dofs(const IndexSet                             &relevant_dofs,
-              const std::vector<types::global_dof_index> &converged_masters,
-              const ContactInterface<dim>                *interface,
-              const MeshTying<dim>                       *tying)
+    line_dofs(const IndexSet                &relevant_dofs,
+              const ContactFormulation<dim> *contact,
+              const ContactInterface<dim>   *interface,
+              const MeshTying<dim>          *tying)
     {
-      IndexSet                                           lines    = relevant_dofs;
-      const std::array<const ContactInterface<dim> *, 2> surfaces = {
-        {interface, tying ? &tying->interface() : nullptr}};
-      for (const auto *surface : surfaces)
-        if (surface)
-          lines.add_indices(surface->line_dofs());
-      lines.add_indices(converged_masters.begin(), converged_masters.end());
-      for (bool grew = true; grew;)
-        {
-          grew = false;
-          for (const auto *surface : surfaces)
-            if (surface)
-              grew = add_line_masters(*surface, lines) || grew;
-        }
+      IndexSet lines = relevant_dofs;
+      if (contact)
+        lines.add_indices(contact->line_dofs(*interface));
+      if (tying)
+        lines.add_indices(tying->interface().line_dofs());
+      ContactInterface<dim>::close_line_dofs(lines,
+                                             {interface, tying ? &tying->interface() : nullptr});
       return lines;
     }
 
-    /// With the check of the held state: the lines of @p held at @p dofs
-    /// (read beyond the relevant DoFs, which check_held_lines() compares)
-    /// must be those of @p full, bit for bit, as check_held_lines() asks.
-    /// Collective: every rank stops when one finds a difference.
+    /// With the check of the held state: the lines of @p held at @p dofs,
+    /// the formulation's line_seeds() (read beyond the relevant DoFs, which
+    /// check_held_lines() compares), must be those of @p full, bit for bit,
+    /// as check_held_lines() asks. Collective: every rank stops when one
+    /// finds a difference.
     void
     check_lines_at(const AffineConstraints<double>            &held,
                    const AffineConstraints<double>            &full,
@@ -763,7 +692,8 @@ namespace contact_fem
                   ExcMessage("The constraint lines of the held slave nodes differ from those of "
                              "every slave node at " +
                              std::to_string(wrong) +
-                             " DoFs of the converged operators' masters the ranks read."));
+                             " DoFs of the formulation's seeds (ContactFormulation::line_seeds()) "
+                             "the ranks read."));
     }
   } // namespace
 
@@ -790,9 +720,10 @@ namespace contact_fem
       candidates.close();
       return candidates;
     };
-    const auto                masters = converged_master_dofs(contact.get(), interface.get());
+    const std::vector<types::global_dof_index> masters =
+      contact ? contact->line_seeds(*interface) : std::vector<types::global_dof_index>();
     AffineConstraints<double> candidates =
-      make_candidates(line_dofs(relevant_dofs, masters, interface.get(), tying.get()));
+      make_candidates(line_dofs(relevant_dofs, contact.get(), interface.get(), tying.get()));
     const ContactInterface<dim> *checker = interface ? interface.get() :
                                            tying     ? &tying->interface() :
                                                        nullptr;
@@ -867,8 +798,9 @@ namespace contact_fem
       c.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins, true);
       c.close();
     };
-    const auto     masters = converged_master_dofs(contact.get(), interface.get());
-    const IndexSet lines   = line_dofs(relevant_dofs, masters, interface.get(), tying.get());
+    const std::vector<types::global_dof_index> masters =
+      contact ? contact->line_seeds(*interface) : std::vector<types::global_dof_index>();
+    const IndexSet lines = line_dofs(relevant_dofs, contact.get(), interface.get(), tying.get());
     const ContactInterface<dim> *checker = interface ? interface.get() :
                                            tying     ? &tying->interface() :
                                                        nullptr;

@@ -371,6 +371,17 @@ namespace contact_fem
     }
 
     /**
+     * Closes @p lines, the DoFs a rank's constraints store lines at, under
+     * the masters of @p surfaces together (the non-null ones: a chain may
+     * cross from the contact to the tied interface): adds every DoF of the
+     * masters of each slave node and of the parents of each hanging node
+     * with a DoF in @p lines, until nothing is added (close() resolves a
+     * line through the lines at its masters). Not collective.
+     */
+    static void
+    close_line_dofs(IndexSet &lines, const std::vector<const ContactInterface<dim> *> &surfaces);
+
+    /**
      * The check of the held lines (checking_held_state()): @p held, the
      * closed constraints stored at line_dofs(), must have at every locally
      * relevant DoF the line of @p full, stored at every interface DoF: the

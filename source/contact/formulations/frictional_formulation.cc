@@ -266,16 +266,17 @@ namespace contact_fem
   }
 
   template <int dim, class NormalPart>
-  void
-  FrictionalFormulation<dim, NormalPart>::add_converged_masters(
-    const ContactInterface<dim>          &interface,
-    std::vector<types::global_dof_index> &dofs) const
+  std::vector<types::global_dof_index>
+  FrictionalFormulation<dim, NormalPart>::line_seeds(const ContactInterface<dim> &interface) const
   {
-    if (!on_current_configuration())
-      return;
-    for (const auto &[node, linearised] : interface.linearised_nodes)
-      for (const auto &[m, value] : converged_operators[node].M)
-        dofs.insert(dofs.end(), interface.nodes[m].dofs.begin(), interface.nodes[m].dofs.end());
+    std::vector<types::global_dof_index> dofs = NormalPart::line_seeds(interface);
+    if (on_current_configuration())
+      for (const auto &[node, linearised] : interface.linearised_nodes)
+        for (const auto &[m, value] : converged_operators[node].M)
+          dofs.insert(dofs.end(), interface.nodes[m].dofs.begin(), interface.nodes[m].dofs.end());
+    std::sort(dofs.begin(), dofs.end());
+    dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+    return dofs;
   }
 
   template class FrictionalFormulation<2, FrictionlessFormulation<2>>;

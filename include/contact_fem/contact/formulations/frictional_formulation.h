@@ -129,13 +129,12 @@ namespace contact_fem
       return slip_count;
     }
 
-    /// Current kinematics: adds to @p dofs every DoF of the masters of the
-    /// converged operators of the linearised nodes, which the objective-slip
-    /// patches (objective_slip_patch()) read the constraint lines at and
-    /// which may lie outside every linearised patch. Nothing otherwise.
-    void
-    add_converged_masters(const ContactInterface<dim>          &interface,
-                          std::vector<types::global_dof_index> &dofs) const;
+    /// Current kinematics: every DoF of the masters of the converged
+    /// operators of the linearised nodes, which the objective-slip patches
+    /// (objective_slip_patch()) read the constraint lines at and which may
+    /// lie outside every linearised patch. None otherwise.
+    std::vector<types::global_dof_index>
+    line_seeds(const ContactInterface<dim> &interface) const override;
 
   protected:
     /// The normal part's counts, then the stick and slip nodes.
