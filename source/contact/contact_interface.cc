@@ -288,6 +288,7 @@ namespace contact_fem
     slave_nodes.clear();
     hanging_slave_vertices.clear();
     coupled_faces.clear();
+    within_reach.clear();
     face_lengths.clear();
     statistics.assign(pairs.size(), PairStatistics());
   }
@@ -652,6 +653,16 @@ namespace contact_fem
     for (const SlaveNode &s : slave_nodes)
       held.line_nodes += line_held[s.node] != 0;
     held.line_dofs = held_line_dofs.n_elements();
+    {
+      std::set<unsigned int> reach_nodes;
+      for (unsigned int f = 0; f < within_reach.size(); ++f)
+        if (within_reach[f])
+          {
+            ++held.faces_within_reach;
+            reach_nodes.insert(faces[f].nodes.begin(), faces[f].nodes.end());
+          }
+      held.dofs_within_reach = dim * reach_nodes.size();
+    }
     if (line_check_counts)
       std::tie(held.check_lines_compared, held.check_lines_left_out) = *line_check_counts;
     // A std::map entry: the key and value plus about 32 bytes of tree node.

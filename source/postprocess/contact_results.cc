@@ -81,7 +81,9 @@ namespace contact_fem
                                        held.zone_nodes_received,
                                        held.closed_ghosts,
                                        held.line_nodes,
-                                       held.line_dofs};
+                                       held.line_dofs,
+                                       held.faces_within_reach,
+                                       held.dofs_within_reach};
     std::vector<const char *> names = {"faces",
                                        "slave_nodes",
                                        "rows_owned",
@@ -91,7 +93,9 @@ namespace contact_fem
                                        "zone_nodes_received",
                                        "closed_ghosts",
                                        "line_nodes",
-                                       "line_dofs"};
+                                       "line_dofs",
+                                       "faces_within_reach",
+                                       "dofs_within_reach"};
     if (ContactInterface<dim>::checking_held_state())
       {
         mine.insert(mine.end(), {held.check_dofs_compared, held.check_dofs_left_out,

@@ -431,6 +431,16 @@ namespace contact_fem
       /// the full constraints the held ones left out (the most of one
       /// call).
       unsigned int check_lines_compared = 0, check_lines_left_out = 0;
+      /// The faces a rank would hold if it held only those within reach
+      /// of its own (the memory clause of issue 32 item 1, not yet done):
+      /// its slave faces, the master faces their search boxes (enlarged by
+      /// the search's reach) meet, the slave faces coupled to its own
+      /// master faces (the forces at its master DoFs), and the faces
+      /// sharing a node with any of those (the nodal normals and sizes sum
+      /// over them); and the interface
+      /// DoFs of their nodes. At the last search; every rank still holds
+      /// every face.
+      unsigned int faces_within_reach = 0, dofs_within_reach = 0;
       /// Bytes of the interface's per-face and per-node data (faces,
       /// nodes, slave nodes with their M, the interface DoFs and their
       /// positions), estimated from the containers' sizes; the
@@ -812,6 +822,9 @@ namespace contact_fem
     /// Displacement at dofs() of the last search, and its reach per pair.
     std::vector<double>                             search_displacement;
     std::vector<double>                             reach_of_search;
+    /// Per face, whether it is within reach of this rank's slave faces at
+    /// the last search (HeldCounts::faces_within_reach).
+    std::vector<char>                               within_reach;
     std::vector<types::global_dof_index>            interface_dofs;
     std::map<types::global_dof_index, unsigned int> dof_position;
     std::vector<bool>                               fixed_positions; ///< by position in dofs()
