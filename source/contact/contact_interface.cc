@@ -126,13 +126,13 @@ namespace contact_fem
 
   template <int dim>
   void
-  ContactInterface<dim>::initialize(const MappingQ<dim>             &mapping,
-                                    const DoFHandler<dim>           &dof_handler,
-                                    const std::vector<ContactPair>  &contact_pairs,
-                                    const AffineConstraints<double> &dirichlet,
-                                    const AffineConstraints<double> &hanging,
-                                    const Materials<dim>            &materials,
-                                    const MPI_Comm                   comm,
+  ContactInterface<dim>::initialize(const MappingQ<dim>                &mapping,
+                                    const DoFHandler<dim>              &dof_handler,
+                                    const std::vector<ContactPair>     &contact_pairs,
+                                    const AffineConstraints<double>    &dirichlet,
+                                    const AffineConstraints<double>    &hanging,
+                                    const Materials<dim>               &materials,
+                                    const MPI_Comm                      comm,
                                     const std::set<types::boundary_id> &moving_supports)
   {
     pairs                        = contact_pairs;
@@ -288,6 +288,7 @@ namespace contact_fem
     slave_nodes.clear();
     hanging_slave_vertices.clear();
     coupled_faces.clear();
+    within_reach.clear();
     face_lengths.clear();
     statistics.assign(pairs.size(), PairStatistics());
   }
@@ -425,6 +426,12 @@ namespace contact_fem
     relevant_dofs       = relevant;
     state_held.assign(nodes.size(), 0);
     held_check_counts = std::make_shared<std::pair<unsigned int, unsigned int>>(0, 0);
+    line_check_counts = std::make_shared<std::pair<unsigned int, unsigned int>>(0, 0);
+    // Until the first search, every line (as before the lines were held).
+    line_held.assign(nodes.size(), 1);
+    held_line_dofs = relevant;
+    held_line_dofs.add_indices(owned_interface_dofs);
+    held_line_dofs.add_indices(ghost_interface_dofs);
   }
 
   template <int dim>
@@ -445,6 +452,150 @@ namespace contact_fem
                            std::any_of(s.M.begin(), s.M.end(), [&](const auto &entry) {
                              return relevant_node(entry.first);
                            });
+  }
+
+  template <int dim>
+  void
+  ContactInterface<dim>::close_lines()
+  {
+    // The lines a rank's constraints need: those at its relevant DoFs (its
+    // cells distribute through them) and at the DoFs of the linearised
+    // patches of its rows (add_sparsity() closes them over the candidates),
+    // and, since close() resolves a line through the lines at its
+    // masters, those of the masters of every node held, repeatedly.
+    std::vector<char> seed(nodes.size(), 0);
+    for (unsigned int n = 0; n < nodes.size(); ++n)
+      seed[n] = std::any_of(nodes[n].dofs.begin(), nodes[n].dofs.end(), [&](const auto dof) {
+        return relevant_dofs.is_element(dof);
+      });
+    if (!linearised_nodes.empty())
+      {
+        std::map<types::global_dof_index, unsigned int> node_of_dof;
+        for (unsigned int n = 0; n < nodes.size(); ++n)
+          for (const auto dof : nodes[n].dofs)
+            node_of_dof[dof] = n;
+        for (const auto &[n, linearised] : linearised_nodes)
+          for (const auto dof : linearised.dofs)
+            if (const auto it = node_of_dof.find(dof); it != node_of_dof.end())
+              seed[it->second] = 1;
+      }
+    std::vector<const SlaveNode *> slave_of_node(nodes.size(), nullptr);
+    for (const SlaveNode &s : slave_nodes)
+      slave_of_node[s.node] = &s;
+    line_held.assign(nodes.size(), 0);
+    std::vector<unsigned int> pending;
+    for (unsigned int n = 0; n < nodes.size(); ++n)
+      if (seed[n])
+        {
+          line_held[n] = 1;
+          pending.push_back(n);
+        }
+    // Every node enters once, so the walk ends (cycles of pairs too).
+    while (!pending.empty())
+      {
+        const unsigned int n = pending.back();
+        pending.pop_back();
+        if (slave_of_node[n] != nullptr)
+          for (const auto &[m, value] : slave_of_node[n]->M)
+            if (!line_held[m])
+              {
+                line_held[m] = 1;
+                pending.push_back(m);
+              }
+      }
+    held_line_dofs = relevant_dofs;
+    std::vector<types::global_dof_index> dofs;
+    for (unsigned int n = 0; n < nodes.size(); ++n)
+      if (line_held[n])
+        dofs.insert(dofs.end(), nodes[n].dofs.begin(), nodes[n].dofs.end());
+    std::sort(dofs.begin(), dofs.end());
+    held_line_dofs.add_indices(dofs.begin(), dofs.end());
+    held_line_dofs.compress();
+  }
+
+  template <int dim>
+  void
+  ContactInterface<dim>::close_line_dofs(IndexSet                                         &lines,
+                                         const std::vector<const ContactInterface<dim> *> &surfaces)
+  {
+    const auto in_lines = [&](const Node &node) {
+      return std::any_of(node.dofs.begin(), node.dofs.end(), [&](const auto dof) {
+        return lines.is_element(dof);
+      });
+    };
+    for (bool grew = true; grew;)
+      {
+        grew = false;
+        std::vector<types::global_dof_index> added;
+        for (const auto *surface : surfaces)
+          {
+            if (surface == nullptr)
+              continue;
+            const auto add_node = [&](const unsigned int n) {
+              for (const auto dof : surface->nodes[n].dofs)
+                if (!lines.is_element(dof))
+                  added.push_back(dof);
+            };
+            for (const auto &s : surface->slave_nodes)
+              if (in_lines(surface->nodes[s.node]))
+                for (const auto &[m, value] : s.M)
+                  add_node(m);
+            for (const auto &node : surface->nodes)
+              if (!node.parents.empty() && in_lines(node))
+                for (const auto &[parent, weight] : node.parents)
+                  add_node(parent);
+            // The next surface sees what this one added.
+            if (!added.empty())
+              {
+                std::sort(added.begin(), added.end());
+                added.erase(std::unique(added.begin(), added.end()), added.end());
+                lines.add_indices(added.begin(), added.end());
+                lines.compress();
+                grew = true;
+                added.clear();
+              }
+          }
+      }
+  }
+
+  template <int dim>
+  void
+  ContactInterface<dim>::check_held_lines(const AffineConstraints<double> &held,
+                                          const AffineConstraints<double> &full) const
+  {
+    const auto same_bits = [](const double a, const double b) {
+      return std::memcmp(&a, &b, sizeof(double)) == 0;
+    };
+    unsigned int compared = 0, wrong = 0;
+    for (const auto dof : relevant_dofs)
+      {
+        ++compared;
+        const bool constrained = full.is_constrained(dof);
+        if (held.is_constrained(dof) != constrained)
+          {
+            ++wrong;
+            continue;
+          }
+        if (!constrained)
+          continue;
+        const auto &a    = *held.get_constraint_entries(dof);
+        const auto &b    = *full.get_constraint_entries(dof);
+        bool        same = a.size() == b.size() &&
+                    same_bits(held.get_inhomogeneity(dof), full.get_inhomogeneity(dof));
+        for (unsigned int k = 0; same && k < a.size(); ++k)
+          same = a[k].first == b[k].first && same_bits(a[k].second, b[k].second);
+        wrong += !same;
+      }
+    // Every rank stops (one rank alone would leave the others waiting).
+    wrong = Utilities::MPI::sum(wrong, mpi_communicator);
+    AssertThrow(wrong == 0,
+                ExcMessage("The constraint lines of the held slave nodes differ from those of "
+                           "every slave node at " +
+                           std::to_string(wrong) + " locally relevant DoFs."));
+    const unsigned int left_out =
+      full.n_constraints() > held.n_constraints() ? full.n_constraints() - held.n_constraints() : 0;
+    line_check_counts->first  = std::max(line_check_counts->first, compared);
+    line_check_counts->second = std::max(line_check_counts->second, left_out);
   }
 
   template <int dim>
@@ -499,6 +650,21 @@ namespace contact_fem
       held.closed_ghosts += state_held[s.node] && row_holder[s.node] != 1;
     if (held_check_counts)
       std::tie(held.check_dofs_compared, held.check_dofs_left_out) = *held_check_counts;
+    for (const SlaveNode &s : slave_nodes)
+      held.line_nodes += line_held[s.node] != 0;
+    held.line_dofs = held_line_dofs.n_elements();
+    {
+      std::set<unsigned int> reach_nodes;
+      for (unsigned int f = 0; f < within_reach.size(); ++f)
+        if (within_reach[f])
+          {
+            ++held.faces_within_reach;
+            reach_nodes.insert(faces[f].nodes.begin(), faces[f].nodes.end());
+          }
+      held.dofs_within_reach = dim * reach_nodes.size();
+    }
+    if (line_check_counts)
+      std::tie(held.check_lines_compared, held.check_lines_left_out) = *line_check_counts;
     // A std::map entry: the key and value plus about 32 bytes of tree node.
     const double map_entry = 32. + sizeof(types::global_dof_index) + sizeof(unsigned int);
     double       bytes     = 0.;

@@ -810,6 +810,8 @@ namespace contact_fem
       for (const auto &[n, node_sums] : sums)
         linearised_nodes[n] = linearised_node<dim>(node_sums);
     }
+    // The patches reach beyond the relevant DoFs.
+    close_lines();
   }
 
   template void

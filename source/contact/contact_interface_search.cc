@@ -130,16 +130,34 @@ namespace contact_fem
     coupled_faces.clear();
 
     statistics.assign(pairs.size(), PairStatistics());
+    within_reach.assign(faces.size(), 0);
     std::map<unsigned int, std::map<unsigned int, double>> M_of_node;
     std::map<unsigned int, Tensor<1, dim>>                 weighted_gap_of_node;
     for (unsigned int p = 0; p < pairs.size(); ++p)
       search_pair(p, geometries, measures, search_factor,
                   motion_allowance.empty() ? 0. : motion_allowance[p], slave_data, M_of_node,
                   weighted_gap_of_node);
+    // The faces within reach (search_pair() marked the own slave faces,
+    // their candidate masters and the slave faces coupled to the own master
+    // faces): and those sharing a node with them.
+    {
+      std::vector<char> node_within(nodes.size(), 0);
+      for (unsigned int f = 0; f < faces.size(); ++f)
+        if (within_reach[f])
+          for (const unsigned int n : faces[f].nodes)
+            node_within[n] = 1;
+      for (unsigned int f = 0; f < faces.size(); ++f)
+        within_reach[f] =
+          within_reach[f] ||
+          std::any_of(faces[f].nodes.begin(), faces[f].nodes.end(), [&](const unsigned int n) {
+            return node_within[n] != 0;
+          });
+    }
     master_surface_normals = surface_node_normals(geometries, measures, false);
     store_slave_nodes(slave_data, M_of_node, weighted_gap_of_node, u_at_dofs, slave_surface_normals,
                       master_surface_normals);
     close_ghosts();
+    close_lines();
   }
 
   namespace
@@ -343,9 +361,15 @@ namespace contact_fem
     std::vector<unsigned int> own_costs;
     for (unsigned int f = own_faces.first; f < own_faces.second; ++f)
       if (faces[f].slave && faces[f].pair == p)
-        if (const auto n =
-              candidate_masters<dim>(tree, slave_box(geometries[f].nodes, reach[f])).size())
-          own_costs.insert(own_costs.end(), {f, static_cast<unsigned int>(n)});
+        {
+          const auto candidates =
+            candidate_masters<dim>(tree, slave_box(geometries[f].nodes, reach[f]));
+          within_reach[f] = 1;
+          for (const unsigned int m : candidates)
+            within_reach[m] = 1;
+          if (const auto n = candidates.size())
+            own_costs.insert(own_costs.end(), {f, static_cast<unsigned int>(n)});
+        }
     std::vector<std::pair<unsigned int, unsigned int>> costs;
     for (const auto &chunk : Utilities::MPI::all_gather(mpi_communicator, own_costs))
       for (unsigned int i = 0; i + 1 < chunk.size(); i += 2)
@@ -364,7 +388,13 @@ namespace contact_fem
     for (const auto &[f, segments] : segments_of_face)
       {
         for (const auto &segment : segments)
-          master_is_candidate[segment.first] = true;
+          {
+            master_is_candidate[segment.first] = true;
+            // A slave face coupled to this rank's master face: its nodes'
+            // M reach the rank's master DoFs (the forces there).
+            if (segment.first >= own_faces.first && segment.first < own_faces.second)
+              within_reach[f] = 1;
+          }
         if (!add_constrained_face(f, segments, slave_data, M_of_node, weighted_gap_of_node))
           for (const auto &[m, ops] : segments)
             add_segment(f, m, ops, slave_data, M_of_node, weighted_gap_of_node);

@@ -71,17 +71,37 @@ namespace contact_fem
       master_split.push(n);
     result.set("slave_faces_per_rank", slave_split).set("master_faces_per_rank", master_split);
     // What each rank holds of the interface (the per-rank contact data).
-    const auto                held = interface.count_held();
-    std::vector<unsigned int> mine = {
-      held.faces,          held.slave_nodes,          held.rows_owned,          held.row_ghosts,
-      held.interface_dofs, held.interface_dofs_owned, held.zone_nodes_received, held.closed_ghosts};
-    std::vector<const char *> names = {
-      "faces",          "slave_nodes",          "rows_owned",          "row_ghosts",
-      "interface_dofs", "interface_dofs_owned", "zone_nodes_received", "closed_ghosts"};
+    const auto                held  = interface.count_held();
+    std::vector<unsigned int> mine  = {held.faces,
+                                       held.slave_nodes,
+                                       held.rows_owned,
+                                       held.row_ghosts,
+                                       held.interface_dofs,
+                                       held.interface_dofs_owned,
+                                       held.zone_nodes_received,
+                                       held.closed_ghosts,
+                                       held.line_nodes,
+                                       held.line_dofs,
+                                       held.faces_within_reach,
+                                       held.dofs_within_reach};
+    std::vector<const char *> names = {"faces",
+                                       "slave_nodes",
+                                       "rows_owned",
+                                       "row_ghosts",
+                                       "interface_dofs",
+                                       "interface_dofs_owned",
+                                       "zone_nodes_received",
+                                       "closed_ghosts",
+                                       "line_nodes",
+                                       "line_dofs",
+                                       "faces_within_reach",
+                                       "dofs_within_reach"};
     if (ContactInterface<dim>::checking_held_state())
       {
-        mine.insert(mine.end(), {held.check_dofs_compared, held.check_dofs_left_out});
-        names.insert(names.end(), {"check_dofs_compared", "check_dofs_left_out"});
+        mine.insert(mine.end(), {held.check_dofs_compared, held.check_dofs_left_out,
+                                 held.check_lines_compared, held.check_lines_left_out});
+        names.insert(names.end(), {"check_dofs_compared", "check_dofs_left_out",
+                                   "check_lines_compared", "check_lines_left_out"});
       }
     const auto all           = Utilities::MPI::all_gather(comm, mine);
     const auto kib           = Utilities::MPI::all_gather(comm, held.bytes / 1024.);

@@ -26,6 +26,7 @@
 #include <Epetra_Vector.h>
 
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
 #include <cmath>
 #include <iomanip>
@@ -430,7 +431,9 @@ namespace contact_fem
       }
     // Contact and tying constraints couple slave DoFs to master DoFs
     // anywhere: every rank may write to the rows and entries of all
-    // interface DoFs.
+    // interface DoFs. The constraints store the lines a rank needs only
+    // (line_dofs(), with each pattern and constraints), the vectors and the
+    // pattern keep this set: the residual is read across a search.
     writable_dofs = relevant_dofs;
     for (const auto *dofs :
          {interface ? &interface->dofs() : nullptr, tying ? &tying->dofs() : nullptr})
@@ -627,6 +630,73 @@ namespace contact_fem
             }
   }
 
+  namespace
+  {
+    /// The DoFs a rank's constraints store lines at (their local lines), a
+    /// subset of the DoFs the vectors and the pattern may write to
+    /// (writable_dofs): the relevant DoFs, the contact formulation's lines
+    /// (ContactFormulation::line_dofs()) and the tied interface's, closed
+    /// under the masters of both together.
+    template <int dim>
+    IndexSet
+    line_dofs(const IndexSet                &relevant_dofs,
+              const ContactFormulation<dim> *contact,
+              const ContactInterface<dim>   *interface,
+              const MeshTying<dim>          *tying)
+    {
+      IndexSet lines = relevant_dofs;
+      if (contact)
+        lines.add_indices(contact->line_dofs(*interface));
+      if (tying)
+        lines.add_indices(tying->interface().line_dofs());
+      ContactInterface<dim>::close_line_dofs(lines,
+                                             {interface, tying ? &tying->interface() : nullptr});
+      return lines;
+    }
+
+    /// With the check of the held state: the lines of @p held at @p dofs,
+    /// the formulation's line_seeds() (read beyond the relevant DoFs, which
+    /// check_held_lines() compares), must be those of @p full, bit for bit,
+    /// as check_held_lines() asks. Collective: every rank stops when one
+    /// finds a difference.
+    void
+    check_lines_at(const AffineConstraints<double>            &held,
+                   const AffineConstraints<double>            &full,
+                   const std::vector<types::global_dof_index> &dofs,
+                   const MPI_Comm                              comm)
+    {
+      const auto same_bits = [](const double a, const double b) {
+        return std::memcmp(&a, &b, sizeof(double)) == 0;
+      };
+      unsigned int wrong = 0;
+      for (const auto dof : dofs)
+        {
+          const bool constrained = full.can_store_line(dof) && full.is_constrained(dof);
+          if ((held.can_store_line(dof) && held.is_constrained(dof)) != constrained)
+            {
+              ++wrong;
+              continue;
+            }
+          if (!constrained)
+            continue;
+          const auto &a    = *held.get_constraint_entries(dof);
+          const auto &b    = *full.get_constraint_entries(dof);
+          bool        same = a.size() == b.size() &&
+                      same_bits(held.get_inhomogeneity(dof), full.get_inhomogeneity(dof));
+          for (unsigned int k = 0; same && k < a.size(); ++k)
+            same = a[k].first == b[k].first && same_bits(a[k].second, b[k].second);
+          wrong += !same;
+        }
+      wrong = Utilities::MPI::sum(wrong, comm);
+      AssertThrow(wrong == 0,
+                  ExcMessage("The constraint lines of the held slave nodes differ from those of "
+                             "every slave node at " +
+                             std::to_string(wrong) +
+                             " DoFs of the formulation's seeds (ContactFormulation::line_seeds()) "
+                             "the ranks read."));
+    }
+  } // namespace
+
   template <int dim>
   void
   ContactProblem<dim>::make_sparsity_pattern()
@@ -635,16 +705,34 @@ namespace contact_fem
     // All candidate contact constraints at once: the pattern then holds
     // every coupling any active set of this search can create, and the
     // constrained rows keep their own entries (keep_constrained_dofs).
-    AffineConstraints<double> candidates;
-    candidates.reinit(writable_dofs);
-    DoFTools::make_hanging_node_constraints(dof_handler, candidates);
-    add_interface_hanging_constraints(candidates);
-    if (tying)
-      tying->add_constraints(candidates, false, true);
-    if (contact)
-      contact->add_constraints(*interface, interface_fixed_values, candidates, true);
-    candidates.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins, true);
-    candidates.close();
+    // The lines of the slave nodes this rank needs only (line_dofs()); with
+    // the check of the held state also those of every node, compared.
+    const auto make_candidates = [this](const IndexSet &lines) {
+      AffineConstraints<double> candidates;
+      candidates.reinit(lines);
+      DoFTools::make_hanging_node_constraints(dof_handler, candidates);
+      add_interface_hanging_constraints(candidates);
+      if (tying)
+        tying->add_constraints(candidates, false, true);
+      if (contact)
+        contact->add_constraints(*interface, interface_fixed_values, candidates, true);
+      candidates.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins, true);
+      candidates.close();
+      return candidates;
+    };
+    const std::vector<types::global_dof_index> masters =
+      contact ? contact->line_seeds(*interface) : std::vector<types::global_dof_index>();
+    AffineConstraints<double> candidates =
+      make_candidates(line_dofs(relevant_dofs, contact.get(), interface.get(), tying.get()));
+    const ContactInterface<dim> *checker = interface ? interface.get() :
+                                           tying     ? &tying->interface() :
+                                                       nullptr;
+    if (checker && ContactInterface<dim>::checking_held_state())
+      {
+        const AffineConstraints<double> full = make_candidates(writable_dofs);
+        checker->check_held_lines(candidates, full);
+        check_lines_at(candidates, full, masters, comm);
+      }
 
     // Every DoF of a cell couples with every other one and with the masters
     // of those that are constrained: a superset of the couplings of any
@@ -685,28 +773,51 @@ namespace contact_fem
   void
   ContactProblem<dim>::make_constraints()
   {
-    constraints.clear();
-    constraints.reinit(writable_dofs);
-    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-    add_interface_hanging_constraints(constraints);
-    if (tying)
-      tying->add_constraints(constraints);
-    if (contact)
-      contact->add_constraints(*interface, interface_fixed_values, constraints, false);
-    constraints.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins, true);
-    constraints.close();
+    // The lines of the slave nodes this rank needs (line_dofs()); with the
+    // check of the held state also those of every node, compared.
+    const auto make_trial = [this](AffineConstraints<double> &c, const IndexSet &lines) {
+      c.clear();
+      c.reinit(lines);
+      DoFTools::make_hanging_node_constraints(dof_handler, c);
+      add_interface_hanging_constraints(c);
+      if (tying)
+        tying->add_constraints(c);
+      if (contact)
+        contact->add_constraints(*interface, interface_fixed_values, c, false);
+      c.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins, true);
+      c.close();
+    };
+    const auto make_test = [this](AffineConstraints<double> &c, const IndexSet &lines) {
+      c.clear();
+      c.reinit(lines);
+      DoFTools::make_hanging_node_constraints(dof_handler, c);
+      add_interface_hanging_constraints(c);
+      if (tying)
+        tying->add_constraints(c, true);
+      contact->add_test_constraints(*interface, interface_fixed_values, c);
+      c.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins, true);
+      c.close();
+    };
+    const std::vector<types::global_dof_index> masters =
+      contact ? contact->line_seeds(*interface) : std::vector<types::global_dof_index>();
+    const IndexSet lines = line_dofs(relevant_dofs, contact.get(), interface.get(), tying.get());
+    const ContactInterface<dim> *checker = interface ? interface.get() :
+                                           tying     ? &tying->interface() :
+                                                       nullptr;
+    const auto check = [&](const AffineConstraints<double> &held, const auto &make) {
+      if (!checker || !ContactInterface<dim>::checking_held_state())
+        return;
+      AffineConstraints<double> full;
+      make(full, writable_dofs);
+      checker->check_held_lines(held, full);
+      check_lines_at(held, full, masters, comm);
+    };
+    make_trial(constraints, lines);
+    check(constraints, make_trial);
     if (contact && !contact->symmetric())
       {
-        test_constraints.clear();
-        test_constraints.reinit(writable_dofs);
-        DoFTools::make_hanging_node_constraints(dof_handler, test_constraints);
-        add_interface_hanging_constraints(test_constraints);
-        if (tying)
-          tying->add_constraints(test_constraints, true);
-        contact->add_test_constraints(*interface, interface_fixed_values, test_constraints);
-        test_constraints.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins,
-                               true);
-        test_constraints.close();
+        make_test(test_constraints, lines);
+        check(test_constraints, make_test);
       }
   }
 
@@ -1399,8 +1510,8 @@ namespace contact_fem
     gap   = Utilities::MPI::max(gap, comm);
     ratio = Utilities::MPI::max(ratio, comm);
     return " The solve of this iterate held in contact " + std::to_string(count) +
-           " slave node(s) that started the step apart (gaps up to " + significant(gap, 2) +
-           ", " + significant(ratio, 2) +
+           " slave node(s) that started the step apart (gaps up to " + significant(gap, 2) + ", " +
+           significant(ratio, 2) +
            " of their element size): the first active set of the unloaded state takes every "
            "node whose gap is below Contact/Active check factor times its size, and the solve "
            "closes those gaps whatever the load, so smaller load steps do not change them. "

@@ -14,6 +14,16 @@ per-rank size of the contact data), run by check_held_state.py on each of its
 - the node states a share received in the contact zone's all-gather are
   states of nodes the rank neither owns nor ghosts: at most the slave nodes
   held less the owned and the ghosts.
+
+- the faces within reach of a rank's own (what it would hold once the
+  surfaces are held per rank: its slave faces, the master faces within
+  their search boxes, the slave faces coupled to its master faces, and one
+  ring) are at least its own slave faces and at most the faces it holds,
+  and on some rank fewer (the projection is not every face).
+
+Today every rank holds the whole interface (its faces, slave nodes and
+interface DoFs); the counts are printed so that a run shows what a rank
+holds, and the checks hold once a rank holds only its share.
 """
 
 
@@ -31,6 +41,11 @@ def per_rank_checks(contact):
          all(o + g <= n for o, g, n in zip(owned, ghosts, nodes))),
         ("the interface DoFs owned add up to the interface",
          sum(held["interface_dofs_owned"]) == max(held["interface_dofs"])),
+        ("own slave faces <= faces within reach <= faces held",
+         all(s <= w <= f for s, w, f in zip(contact["slave_faces_per_rank"],
+                                            held["faces_within_reach"], held["faces"]))),
+        ("some rank has fewer faces within reach than it holds",
+         any(w < f for w, f in zip(held["faces_within_reach"], held["faces"]))),
         ("zone states received <= held - owned - ghosts",
          all(z <= n - o - g for z, n, o, g in zip(held["zone_nodes_received"], nodes, owned,
                                                   ghosts))),

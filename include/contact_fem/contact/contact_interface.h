@@ -345,6 +345,54 @@ namespace contact_fem
     static bool
     checking_held_state();
 
+    /**
+     * Whether this rank stores the constraint lines of slave node @p s (the
+     * gap lines, alm's candidate lines, the stick and slip lines): it has
+     * a locally relevant DoF or one of the linearised patch of a row owned
+     * here, or it is a master of a node held so (repeatedly: close() chains
+     * a line through a master DoF that is another pair's line DoF). The
+     * lines at the locally relevant DoFs are then those of every node, bit
+     * for bit (check_held_lines()). Set at each search and by linearise().
+     * Not collective.
+     */
+    bool
+    holds_line(const SlaveNode &s) const
+    {
+      return line_held[s.node];
+    }
+
+    /// The DoFs a rank's constraints may store lines at: the locally
+    /// relevant DoFs and every DoF of the nodes held for the lines
+    /// (holds_line()) and of their masters. Set with holds_line().
+    const IndexSet &
+    line_dofs() const
+    {
+      return held_line_dofs;
+    }
+
+    /**
+     * Closes @p lines, the DoFs a rank's constraints store lines at, under
+     * the masters of @p surfaces together (the non-null ones: a chain may
+     * cross from the contact to the tied interface): adds every DoF of the
+     * masters of each slave node and of the parents of each hanging node
+     * with a DoF in @p lines, until nothing is added (close() resolves a
+     * line through the lines at its masters). Not collective.
+     */
+    static void
+    close_line_dofs(IndexSet &lines, const std::vector<const ContactInterface<dim> *> &surfaces);
+
+    /**
+     * The check of the held lines (checking_held_state()): @p held, the
+     * closed constraints stored at line_dofs(), must have at every locally
+     * relevant DoF the line of @p full, stored at every interface DoF: the
+     * same entries in the same order and the same inhomogeneity, bit for
+     * bit; throws otherwise. Counts the DoFs compared and the lines of
+     * @p full the held ones left out for count_held(). Not collective.
+     */
+    void
+    check_held_lines(const AffineConstraints<double> &held,
+                     const AffineConstraints<double> &full) const;
+
     /// The numbers of regular slave nodes whose row this rank owns (first)
     /// and of its ghosts (second); share_node_values().
     std::pair<unsigned int, unsigned int>
@@ -375,6 +423,24 @@ namespace contact_fem
       /// count of one call), and the most DoFs outside the locally relevant
       /// ones at which they differed (nodes the held loop left out).
       unsigned int check_dofs_compared = 0, check_dofs_left_out = 0;
+      /// Slave nodes whose lines are held (holds_line()) and the size of
+      /// line_dofs(), at the last search.
+      unsigned int line_nodes = 0, line_dofs = 0;
+      /// With checking_held_state(): the locally relevant DoFs at which
+      /// the held lines were compared with the full ones, and the lines of
+      /// the full constraints the held ones left out (the most of one
+      /// call).
+      unsigned int check_lines_compared = 0, check_lines_left_out = 0;
+      /// The faces a rank would hold if it held only those within reach
+      /// of its own (the memory clause of issue 32 item 1, not yet done):
+      /// its slave faces, the master faces their search boxes (enlarged by
+      /// the search's reach) meet, the slave faces coupled to its own
+      /// master faces (the forces at its master DoFs), and the faces
+      /// sharing a node with any of those (the nodal normals and sizes sum
+      /// over them); and the interface
+      /// DoFs of their nodes. At the last search; every rank still holds
+      /// every face.
+      unsigned int faces_within_reach = 0, dofs_within_reach = 0;
       /// Bytes of the interface's per-face and per-node data (faces,
       /// nodes, slave nodes with their M, the interface DoFs and their
       /// positions), estimated from the containers' sizes; the
@@ -578,6 +644,12 @@ namespace contact_fem
     void
     close_ghosts();
 
+    /// Sets line_held and held_line_dofs from relevant_dofs, the DoFs of
+    /// linearised_nodes and slave_nodes' M (at each search and by
+    /// linearise()): holds_line().
+    void
+    close_lines();
+
     /// Sets Node::symmetry_plane from the boundary faces of the locally
     /// owned cells of @p dof_handler (at the reference configuration) and
     /// the Dirichlet constraints @p dirichlet, gathered over the ranks; the
@@ -750,6 +822,9 @@ namespace contact_fem
     /// Displacement at dofs() of the last search, and its reach per pair.
     std::vector<double>                             search_displacement;
     std::vector<double>                             reach_of_search;
+    /// Per face, whether it is within reach of this rank's slave faces at
+    /// the last search (HeldCounts::faces_within_reach).
+    std::vector<char>                               within_reach;
     std::vector<types::global_dof_index>            interface_dofs;
     std::map<types::global_dof_index, unsigned int> dof_position;
     std::vector<bool>                               fixed_positions; ///< by position in dofs()
@@ -779,6 +854,13 @@ namespace contact_fem
     /// HeldCounts::check_dofs_compared and check_dofs_left_out, shared by
     /// copies.
     std::shared_ptr<std::pair<unsigned int, unsigned int>> held_check_counts;
+    /// Per node, whether its lines are held here (holds_line()), and
+    /// line_dofs().
+    std::vector<char> line_held;
+    IndexSet          held_line_dofs;
+    /// HeldCounts::check_lines_compared and check_lines_left_out, shared by
+    /// copies.
+    std::shared_ptr<std::pair<unsigned int, unsigned int>> line_check_counts;
     MPI_Comm                                               mpi_communicator;
   };
   // The tiling checks differ by dimension (contact_interface_tiling.cc).

@@ -265,6 +265,20 @@ namespace contact_fem
     return std::vector<types::global_dof_index>(unique.begin(), unique.end());
   }
 
+  template <int dim, class NormalPart>
+  std::vector<types::global_dof_index>
+  FrictionalFormulation<dim, NormalPart>::line_seeds(const ContactInterface<dim> &interface) const
+  {
+    std::vector<types::global_dof_index> dofs = NormalPart::line_seeds(interface);
+    if (on_current_configuration())
+      for (const auto &[node, linearised] : interface.linearised_nodes)
+        for (const auto &[m, value] : converged_operators[node].M)
+          dofs.insert(dofs.end(), interface.nodes[m].dofs.begin(), interface.nodes[m].dofs.end());
+    std::sort(dofs.begin(), dofs.end());
+    dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+    return dofs;
+  }
+
   template class FrictionalFormulation<2, FrictionlessFormulation<2>>;
   template class FrictionalFormulation<3, FrictionlessFormulation<3>>;
   template class FrictionalFormulation<2, PenaltyFrictionless<2>>;

@@ -329,6 +329,27 @@ namespace contact_fem
       add_constraints(interface, fixed_values, constraints, false);
     }
 
+    /// The DoFs beyond the interface's lines (ContactInterface::line_dofs())
+    /// at whose constraint lines assemble() reads: seeds of the lines a rank
+    /// stores. Sorted, unique. Default: none.
+    virtual std::vector<types::global_dof_index>
+    line_seeds(const ContactInterface<dim> &) const
+    {
+      return {};
+    }
+
+    /// The DoFs a rank stores the contact constraint lines at, before the
+    /// closure under the masters (ContactInterface::close_line_dofs()): the
+    /// interface's line_dofs() and line_seeds().
+    IndexSet
+    line_dofs(const ContactInterface<dim> &interface) const
+    {
+      IndexSet   lines = interface.line_dofs();
+      const auto seeds = line_seeds(interface);
+      lines.add_indices(seeds.begin(), seeds.end());
+      return lines;
+    }
+
     /// The unit tangent of the 2D contact kinematics at a node with unit
     /// normal @p normal (out of the slave): the normal turned by 90 degrees
     /// counterclockwise, so that the frame turns with the model (for a

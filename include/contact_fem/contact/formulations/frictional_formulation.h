@@ -129,6 +129,13 @@ namespace contact_fem
       return slip_count;
     }
 
+    /// Current kinematics: every DoF of the masters of the converged
+    /// operators of the linearised nodes, which the objective-slip patches
+    /// (objective_slip_patch()) read the constraint lines at and which may
+    /// lie outside every linearised patch. None otherwise.
+    std::vector<types::global_dof_index>
+    line_seeds(const ContactInterface<dim> &interface) const override;
+
   protected:
     /// The normal part's counts, then the stick and slip nodes.
     std::vector<unsigned int>
