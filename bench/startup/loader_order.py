@@ -10,8 +10,8 @@ to their own symbols, Teuchos, ...) sit at positions 30-190. Naming them in
 contact_fem's own DT_NEEDED, after its direct dependencies, moves them to the
 front of the scope.
 
-A library may only move if no lookup then finds another definition than
-before, except for vague-linkage copies (template instances, inline
+A library may only move if no symbol of any library in the scope then has
+another first definition than before, except for vague-linkage copies (template instances, inline
 functions, typeinfo: weak or unique in both libraries, the same source by the
 one-definition rule). So BLAS/LAPACK (libopenblas.so.0 defines what
 libblas.so.3 and liblapack.so.3 provide) stay where they are.
@@ -48,7 +48,6 @@ def loader_trace(binary, prm):
             m = binding.search(line)
             if m:
                 bound[m.group(1)] += 1
-                symbols.add(m.group(2).split("@")[0])
     return scope, bound
 
 
@@ -64,9 +63,6 @@ def definitions(path):
     return result
 
 
-symbols = set()
-
-
 def main():
     binary, prm = sys.argv[1], sys.argv[2]
     scope, bound = loader_trace(binary, prm)
@@ -75,9 +71,11 @@ def main():
     bound = {os.path.realpath(k) if k.startswith("./") else k: v for k, v in bound.items()}
     types = {lib: definitions(lib) for lib in scope if os.path.exists(lib)}
     definers = collections.defaultdict(list)
+    # Every exported symbol, looked up in this run or not (another scene may
+    # call what this one does not); 'A' are version names, not symbols.
     for lib in scope:
-        for s in types.get(lib, {}):
-            if s in symbols:
+        for s, kind in types.get(lib, {}).items():
+            if kind != "A":
                 definers[s].append(lib)
     shared = {s: libs for s, libs in definers.items() if len(libs) > 1}
     by_lib = collections.defaultdict(set)
