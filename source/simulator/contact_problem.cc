@@ -756,8 +756,9 @@ namespace contact_fem
     LinearSystemRequest request;
     request.symmetric              = !contact || contact->matrix_symmetric();
     request.newton_residual_target = newton_residual_target;
-    const double linear_residual =
+    last_linear_residual =
       linear_solver->solve(system_matrix, solution, system_rhs, request);
+    const double linear_residual = last_linear_residual;
     linear_iterations_of_step.push_back(linear_solver->last_iterations());
     multigrid_setup_seconds += linear_solver->take_setup_seconds();
     if (const std::string note = linear_solver->take_note(); !note.empty())
@@ -1236,6 +1237,7 @@ namespace contact_fem
           {
             check_before_solve(at, iteration);
             newton_update(at, monitor.displacement_target());
+            monitor.set_linear_residual(last_linear_residual);
             // Only a flat run may end at a floor: the scale costs a pass over
             // the matrix, which converging iterations do not pay.
             if (monitor.in_flat_run())
