@@ -148,8 +148,8 @@ namespace contact_fem
     // configuration, which the 1e-2 bound accepted 1.5e-5 out of balance).
     const double stagnation_bound = nonlinear ? 1e-8 : 1e-2;
     // A linear problem's flat residual is the last solve's own residual:
-    // measured 0.70-1.21 times it over the flat, settled iterations of the
-    // linear scenes (direct and iterative solvers). Far above it, the solves
+    // measured 0.70-1.21 times it over the settled iterations of 2D
+    // friction scenes and the hemisphere (direct and iterative solvers). Far above it, the solves
     // leave a residual they do not see (an inconsistent tangent: a chain of
     // contact pairs through one node, whose force recovery mixed the two
     // pairs' forces, stayed flat at |r_u| = 6.5e-2 and was printed as
