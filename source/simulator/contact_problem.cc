@@ -1805,7 +1805,15 @@ namespace contact_fem
           pcout << " and " << n_hanging << " hanging slave vertices";
       }
     if (tying)
-      pcout << ", " << tying->n_tied_nodes() << " tied slave nodes";
+      {
+        const unsigned int n_tied = tying->n_tied_nodes();
+        pcout << ", " << n_tied << " tied slave nodes";
+        // A slave surface may run beyond its master by design: say so,
+        // since those nodes carry no tie.
+        if (const unsigned int n_free = tying->n_slave_surface_nodes() - n_tied; n_free > 0)
+          pcout << " (" << n_free << " more nodes of the tied slave surfaces lie beyond their "
+                << "masters and are free)";
+      }
     pcout << std::endl;
     // The direct solver is the quiet default; an iterative one says so, and
     // that it cannot see zero pivots.
