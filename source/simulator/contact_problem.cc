@@ -867,8 +867,9 @@ namespace contact_fem
     LinearSystemRequest request;
     request.symmetric              = !contact || contact->matrix_symmetric();
     request.newton_residual_target = newton_residual_target;
-    const double linear_residual =
+    last_linear_residual =
       linear_solver->solve(system_matrix, solution, system_rhs, request);
+    const double linear_residual = last_linear_residual;
     linear_iterations_of_step.push_back(linear_solver->last_iterations());
     multigrid_setup_seconds += linear_solver->take_setup_seconds();
     if (const std::string note = linear_solver->take_note(); !note.empty())
@@ -1347,6 +1348,7 @@ namespace contact_fem
           {
             check_before_solve(at, iteration);
             newton_update(at, monitor.displacement_target());
+            monitor.set_linear_residual(last_linear_residual);
             // Only a flat run may end at a floor: the scale costs a pass over
             // the matrix, which converging iterations do not pay.
             if (monitor.in_flat_run())
@@ -1914,7 +1916,15 @@ namespace contact_fem
           pcout << " and " << n_hanging << " hanging slave vertices";
       }
     if (tying)
-      pcout << ", " << tying->n_tied_nodes() << " tied slave nodes";
+      {
+        const unsigned int n_tied = tying->n_tied_nodes();
+        pcout << ", " << n_tied << " tied slave nodes";
+        // A slave surface may run beyond its master by design: say so,
+        // since those nodes carry no tie.
+        if (const unsigned int n_free = tying->n_slave_surface_nodes() - n_tied; n_free > 0)
+          pcout << " (" << n_free << " more nodes of the tied slave surfaces lie beyond their "
+                << "masters and are free)";
+      }
     pcout << std::endl;
     // The direct solver is the quiet default; an iterative one says so, and
     // that it cannot see zero pivots.

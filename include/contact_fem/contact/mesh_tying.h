@@ -187,6 +187,14 @@ namespace contact_fem
     unsigned int
     n_tied_nodes() const;
 
+    /// The number of nodes of the tied slave surfaces: those beyond their
+    /// master (not paired) stay free.
+    unsigned int
+    n_slave_surface_nodes() const
+    {
+      return surfaces.slave_nodes.size();
+    }
+
     /// Per pair: the force of the master on the slave (the sum of r_j),
     /// the traction range and the nodes; printed to @p out as well.
     Json

@@ -438,6 +438,8 @@ namespace contact_fem
     /// Wall time of the multigrid set-ups of this cycle, part of "Solve:
     /// linear".
     double                        multigrid_setup_seconds = 0.;
+    /// ||A x - b|| of the last linear solve, for the Newton monitor.
+    double last_linear_residual = 0.;
     TrilinosWrappers::MPI::Vector system_rhs;
     TrilinosWrappers::MPI::Vector solution;         ///< owned
     TrilinosWrappers::MPI::Vector ghosted_solution; ///< locally relevant

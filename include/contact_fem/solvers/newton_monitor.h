@@ -64,6 +64,17 @@ namespace contact_fem
       round_off_u = scale;
     }
 
+    /// The residual ||A x - b|| the last linear solve left (the linear
+    /// solver's own accuracy). A problem linear beyond its active set
+    /// stagnates at that residual, never above it: a flat |r_u| above a few
+    /// times it is a residual the solves do not remove (an inconsistent
+    /// tangent), not the linear solver's accuracy.
+    void
+    set_linear_residual(const double residual)
+    {
+      linear_residual_u = residual;
+    }
+
     /// The last iteration was flat (floor_run): the next one's round-off
     /// scale is wanted.
     bool
@@ -167,6 +178,8 @@ namespace contact_fem
     std::vector<double> floor_run;
     /// set_round_off(); 0 before the first solve.
     double round_off_u = 0.;
+    /// set_linear_residual(); 0 before the first solve.
+    double linear_residual_u = 0.;
   };
 } // namespace contact_fem
 
