@@ -34,6 +34,23 @@ namespace contact_fem
     /// prm/hertz.prm: at 1e-12 of its load, 4 units, the reactions balance
     /// to 9e-5; at 1e-15 the contact is lost).
     constexpr double round_off_units = 1e3;
+
+    /// Calls @p visit(cell, f) on each face of boundary @p id of the
+    /// locally owned cells, until a call returns false; whether none did.
+    template <int dim, typename Visit>
+    bool
+    for_each_owned_face(const DoFHandler<dim> &dof_handler,
+                        const types::boundary_id id,
+                        const Visit             &visit)
+    {
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id &&
+                !visit(cell, f))
+              return false;
+      return true;
+    }
   } // namespace
 
   template <int dim>
@@ -56,15 +73,12 @@ namespace contact_fem
       loads[id] = Tensor<1, dim>();
     // Adds int force ds over the faces of boundary @p id to each body's load.
     const auto integrate = [&](const types::boundary_id id, const auto &force_at) {
-      for (const auto &cell : run.dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          for (const auto f : cell->face_indices())
-            if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
-              {
-                fe_face.reinit(cell, f);
-                for (unsigned int q = 0; q < quadrature.size(); ++q)
-                  loads[cell->material_id()] += force_at(q) * fe_face.JxW(q);
-              }
+      for_each_owned_face(run.dof_handler, id, [&](const auto &cell, const unsigned int f) {
+        fe_face.reinit(cell, f);
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
+          loads[cell->material_id()] += force_at(q) * fe_face.JxW(q);
+        return true;
+      });
     };
     for (const auto &condition : run.boundary_conditions.pressures)
       {
@@ -98,15 +112,12 @@ namespace contact_fem
     FEFaceValues<dim>     fe_face(run.mapping, run.dof_handler.get_fe(), quadrature,
                                   update_normal_vectors | update_JxW_values);
     Tensor<1, dim>        normal;
-    for (const auto &cell : run.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
-            {
-              fe_face.reinit(cell, f);
-              for (unsigned int q = 0; q < quadrature.size(); ++q)
-                normal += fe_face.normal_vector(q) * fe_face.JxW(q);
-            }
+    for_each_owned_face(run.dof_handler, id, [&](const auto &cell, const unsigned int f) {
+      fe_face.reinit(cell, f);
+      for (unsigned int q = 0; q < quadrature.size(); ++q)
+        normal += fe_face.normal_vector(q) * fe_face.JxW(q);
+      return true;
+    });
     return Utilities::MPI::sum(normal, comm);
   }
 
@@ -175,20 +186,16 @@ namespace contact_fem
     // Whether @p value(point) is 0 at the quadrature points and vertices of
     // every face of boundary @p id.
     const auto zero_on = [&](const types::boundary_id id, const auto &value) {
-      for (const auto &cell : run.dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          for (const auto f : cell->face_indices())
-            if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
-              {
-                fe_face.reinit(cell, f);
-                for (unsigned int q = 0; q < quadrature.size(); ++q)
-                  if (value(fe_face.quadrature_point(q)) != 0.)
-                    return false;
-                for (const auto v : cell->face(f)->vertex_indices())
-                  if (value(cell->face(f)->vertex(v)) != 0.)
-                    return false;
-              }
-      return true;
+      return for_each_owned_face(run.dof_handler, id, [&](const auto &cell, const unsigned int f) {
+        fe_face.reinit(cell, f);
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
+          if (value(fe_face.quadrature_point(q)) != 0.)
+            return false;
+        for (const auto v : cell->face(f)->vertex_indices())
+          if (value(cell->face(f)->vertex(v)) != 0.)
+            return false;
+        return true;
+      });
     };
     for (const auto &condition : run.boundary_conditions.pressures)
       {

@@ -364,7 +364,7 @@ namespace contact_fem
     model_range.parse_parameters(prm);
     if (model_range.accept_interpenetration)
       interpenetration.reset();
-    memory_warning = input_checks().check_scene_before_meshing(inclined_supports);
+    memory_warning = input_checks().check_scene_before_meshing(inclined_supports, triangulation);
 
     timer = std::make_unique<TimerOutput>(comm, pcout, TimerOutput::never, TimerOutput::wall_times);
     postprocessors = Postprocessor<dim>::create_wanted(
@@ -1450,7 +1450,9 @@ namespace contact_fem
   {
     {
       TimerOutput::Scope t(*timer, "Setup: mesh");
-      input_checks().create_scene_mesh(scene, triangulation);
+      // The input checks built the mesh of a scene without refinements.
+      if (triangulation.n_levels() == 0)
+        input_checks().create_scene_mesh(scene, triangulation);
       std::set<types::material_id> material_ids;
       for (const auto &[id, constants] : materials.bodies)
         material_ids.insert(id);

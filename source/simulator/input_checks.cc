@@ -9,6 +9,7 @@
 #include <cmath>
 #include <iomanip>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -108,16 +109,29 @@ namespace contact_fem
 
   template <int dim>
   std::string
-  InputChecks<dim>::check_scene_before_meshing(InclinedSupports<dim> &inclined_supports) const
+  InputChecks<dim>::check_scene_before_meshing(InclinedSupports<dim>                     &inclined_supports,
+                                               parallel::distributed::Triangulation<dim> &mesh) const
   {
     // The scene without its global refinements, refinement boxes and
     // distortion: cheap to build, and the mesh those refinements multiply.
-    Scene<dim> coarse_scene         = scene;
-    coarse_scene.global_refinements = 0;
-    coarse_scene.refinement_boxes.clear();
-    coarse_scene.distortion = 0.;
-    parallel::distributed::Triangulation<dim> coarse(comm);
-    create_scene_mesh(coarse_scene, coarse);
+    // A scene without them is that mesh (the Hertz scenes, whose own
+    // refinement rounds are part of it): built once, into @p mesh, and not
+    // again by the run.
+    std::unique_ptr<parallel::distributed::Triangulation<dim>> own;
+    const parallel::distributed::Triangulation<dim>           *checked = &mesh;
+    if (scene.global_refinements > 0 || !scene.refinement_boxes.empty() || scene.distortion > 0.)
+      {
+        Scene<dim> coarse_scene         = scene;
+        coarse_scene.global_refinements = 0;
+        coarse_scene.refinement_boxes.clear();
+        coarse_scene.distortion = 0.;
+        own = std::make_unique<parallel::distributed::Triangulation<dim>>(comm);
+        create_scene_mesh(coarse_scene, *own);
+        checked = own.get();
+      }
+    else
+      create_scene_mesh(scene, mesh);
+    const auto &coarse = *checked;
     check_value_ranges(coarse);
     check_boundary_ids(coarse);
     inclined_supports.initialize(coarse, boundary_conditions.rollers, contact_parameters.pairs);

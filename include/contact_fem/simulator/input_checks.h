@@ -41,8 +41,12 @@ namespace contact_fem
     /// initialises @p inclined_supports from them), the contact pairs and
     /// the memory the full mesh will need. Returns a warning when the mesh
     /// takes more than half the available memory, else "". Collective.
+    /// A scene without global refinements, boxes or distortion is built
+    /// into the empty @p mesh (its final mesh, built once); @p mesh stays
+    /// empty otherwise.
     std::string
-    check_scene_before_meshing(InclinedSupports<dim> &inclined_supports) const;
+    check_scene_before_meshing(InclinedSupports<dim>                     &inclined_supports,
+                               parallel::distributed::Triangulation<dim> &mesh) const;
 
     /// Builds the mesh of @p coarse_scene (the scene itself, or its coarse
     /// mesh for the early checks); a library exception becomes a message

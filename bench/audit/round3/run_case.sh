@@ -1,6 +1,8 @@
 #!/bin/bash
-# usage: run_case.sh NAME PRM [--set ...]: runs main's binary, prints the verdict lines and rc
-B=${B:-/work/main/build/contact_fem}
+# usage (from this directory, where the .prm files include and read their
+# meshes): run_case.sh NAME PRM [--set ...]: runs the build's binary, prints the
+# verdict lines and the exit code
+B=${B:-$(cd "$(dirname "$0")/../../.." && pwd)/build/contact_fem}
 name=$1; shift; prm=$1; shift
 out=$(nice -n 10 timeout 120 $B $prm "$@" --output-directory /tmp/a3/$name 2>&1); rc=$?
 echo "=== $name (rc=$rc)"
