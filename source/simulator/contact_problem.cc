@@ -650,9 +650,10 @@ namespace contact_fem
     // when the middle node is open, or sticks/slips along other components,
     // the lines of the iterate name it directly (a frictional chain summed
     // outside the pattern). The walk below follows the unclosed contact
-    // lines to such middle DoFs too.
+    // lines to such middle DoFs too: only where a chain can occur, a node
+    // on a slave and a master surface (other scenes pay nothing).
     AffineConstraints<double> open_lines;
-    if (contact)
+    if (contact && interface->has_chained_nodes())
       {
         open_lines.reinit(writable_dofs);
         contact->add_constraints(*interface, interface_fixed_values, open_lines, true);
@@ -1232,6 +1233,8 @@ namespace contact_fem
       finite_strain != nullptr || (contact && (contact_parameters.current_kinematics ||
                                                (dim == 3 && contact->transmits_shear())));
     NewtonMonitor monitor(newton_parameters, nonlinear);
+    if (!linear_solver->iterative())
+      monitor.set_direct_solver();
     {
       const double extent = model_extent(triangulation);
       monitor.set_scene_units(materials.youngs_modulus_range().second * std::pow(extent, dim - 1),
@@ -1252,9 +1255,10 @@ namespace contact_fem
           {
             check_before_solve(at, iteration);
             newton_update(at, monitor.displacement_target());
-            // Only a flat run may end at a floor: the scale costs a pass over
-            // the matrix, which converging iterations do not pay.
-            if (monitor.in_flat_run())
+            // Only a flat run may end at a floor or, with a direct solver,
+            // at its accuracy: the scale costs a pass over the matrix, which
+            // converging iterations do not pay.
+            if (monitor.wants_round_off(iteration))
               monitor.set_round_off(residual_round_off());
           }
         try

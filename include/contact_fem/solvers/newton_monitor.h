@@ -72,6 +72,23 @@ namespace contact_fem
       return !floor_run.empty();
     }
 
+    /// The linear solves are direct: a flat residual is accepted as their
+    /// accuracy only at the round-off of its terms (assess()), so the
+    /// round-off scale is wanted whenever the next iteration may be flat.
+    void
+    set_direct_solver()
+    {
+      direct = true;
+    }
+
+    /// Whether the round-off scale of the iteration @p iteration is wanted
+    /// before it is assessed (with a direct solver: after a settled one).
+    bool
+    wants_round_off(const unsigned int iteration) const
+    {
+      return in_flat_run() || (direct && iteration > 1 && previous_changes == 0);
+    }
+
     /// What the residuals of one iteration say.
     struct Assessment
     {
@@ -152,6 +169,7 @@ namespace contact_fem
 
     NewtonParameters parameters;
     bool             nonlinear;
+    bool             direct = false; ///< set_direct_solver()
     /// The absolute tolerances in use: the parameters', capped by
     /// set_scene_units().
     double absolute_u, absolute_lambda;
