@@ -156,12 +156,11 @@ namespace contact_fem
     // 0.3 to 0.8 of eps |K| |u|, floor_hint()): a flat residual far above
     // that is a stall, not the solver's accuracy (a chain of contact pairs
     // whose multipliers mixed the two pairs' forces at the shared node,
-    // flat at |r_u| = 6.5e-2, was accepted here; tests/failures/
-    // chain_stall_01).
+    // flat at |r_u| = 6.5e-2, was accepted here; unit/newton_stall_direct_01).
     constexpr double solver_round_off_units = 1e3;
     const bool       at_solver_accuracy = !direct || r_u <= solver_round_off_units * round_off_u;
-    const bool       stagnating         = parameters.damping == 1. && flat &&
-                              a.ratio_u <= stagnation_bound && lambda_settled && at_solver_accuracy;
+    const bool stagnating = parameters.damping == 1. && flat && a.ratio_u <= stagnation_bound &&
+                            lambda_settled && at_solver_accuracy;
     // Flat with both residuals eight orders below their start: round-off,
     // which no tolerance below it can wait for.
     a.stalled   = flat && a.ratio_u <= 1e-8 && a.ratio_lambda <= 1e-8;
