@@ -17,7 +17,10 @@ the forces:
   R: reaction of boundary 7 = -force of pair 5: 4 (on R, from M);
   M: reaction of boundary 8 + force of pair 3: 2 - force of pair 5: 4
      + the load on its top (0, -0.3) = 0.
-Frictionless, pair 3: 2 then carries exactly M's load (0.3). With Coulomb
+Frictionless, pair 3: 2 then carries exactly M's load (0.3) (a run that
+cannot tell a mixed recovery apart here: M's corner takes its pressure from
+its vertical residual, and R's frictionless forces on it are horizontal;
+the frictional runs, with only the recovery's first pass, cycle and fail). With Coulomb
 friction and R moved down, the ALM's pair forces (recovered from the
 residual, pass by pass along the chain) must be those of the penalty
 formulation (from the penetrations, no recovery) to 1e-3 (measured 5e-5,
