@@ -124,6 +124,73 @@ namespace contact_fem
     }
   } // namespace
 
+  namespace
+  {
+    /**
+     * A cycle of pairs through shared nodes in @p interface, or "": pair A
+     * leads to pair B where a node is on A's slave and B's master surface,
+     * and the pairs lead back to A (two corners pressed into each other,
+     * each on the other's pair). The multipliers of a chain are recovered
+     * link by link from its outer end
+     * (ContactFormulation::recover_through_chains()), and a cycle has none:
+     * the message names the pairs and nodes (an input error).
+     */
+    template <int dim>
+    std::string
+    chain_cycle(const ContactInterface<dim> &interface)
+    {
+      const auto &pairs = interface.pairs;
+      const auto &nodes = interface.nodes;
+      const auto &faces = interface.faces;
+      if (!interface.has_chained_nodes())
+        return "";
+      // The links: pair a leads to pair b through node link_node[a][b].
+      const unsigned int                     n_pairs = pairs.size();
+      const unsigned int                     none    = numbers::invalid_unsigned_int;
+      std::vector<std::vector<unsigned int>> link_node(n_pairs,
+                                                       std::vector<unsigned int>(n_pairs, none));
+      std::vector<std::set<unsigned int>>    master_of(nodes.size());
+      for (const auto &face : faces)
+        if (!face.slave)
+          for (const unsigned int n : face.nodes)
+            master_of[n].insert(face.pair);
+      for (const auto &face : faces)
+        if (face.slave)
+          for (const unsigned int n : face.nodes)
+            for (const unsigned int b : master_of[n])
+              if (b != face.pair && link_node[face.pair][b] == none)
+                link_node[face.pair][b] = n;
+      // Which pairs each leads to through any number of links (few pairs).
+      std::vector<std::vector<bool>> reach(n_pairs, std::vector<bool>(n_pairs));
+      for (unsigned int a = 0; a < n_pairs; ++a)
+        for (unsigned int b = 0; b < n_pairs; ++b)
+          reach[a][b] = link_node[a][b] != none;
+      for (unsigned int k = 0; k < n_pairs; ++k)
+        for (unsigned int a = 0; a < n_pairs; ++a)
+          for (unsigned int b = 0; b < n_pairs; ++b)
+            reach[a][b] = reach[a][b] || (reach[a][k] && reach[k][b]);
+      const auto name = [&](const unsigned int p) {
+        return "'" + std::to_string(pairs[p].slave) + ": " + std::to_string(pairs[p].master) + "'";
+      };
+      for (unsigned int a = 0; a < n_pairs; ++a)
+        for (unsigned int b = 0; b < n_pairs; ++b)
+          if (link_node[a][b] != none && reach[b][a])
+            return "Contact/Pairs: the pairs form a cycle through shared nodes: the node at " +
+                   coordinates_text(nodes[link_node[a][b]].reference) +
+                   " is on the slave surface of pair " + name(a) +
+                   " and on the master surface of pair " + name(b) + ", and pair " + name(b) +
+                   (link_node[b][a] != none ?
+                      " leads back to " + name(a) + " at the node at " +
+                        coordinates_text(nodes[link_node[b][a]].reference) :
+                      " leads back to " + name(a) + " through other pairs") +
+                   ". The contact forces of a chain of pairs are recovered link by link from its "
+                   "outer end, and a cycle has none. Let one surface of such a link end an "
+                   "element before the other (share no node), or make the other surface of a "
+                   "pair its slave.";
+      return "";
+    }
+  } // namespace
+
   template <int dim>
   void
   ContactInterface<dim>::initialize(const MappingQ<dim>                &mapping,
@@ -253,6 +320,8 @@ namespace contact_fem
       }
     stop_on_every_rank(error);
     unpack_faces(Utilities::MPI::all_gather(comm, packed), nodes_per_face, n_geometry_points);
+    // Every rank holds the same faces: the same verdict everywhere.
+    stop_on_every_rank(chain_cycle(*this));
 
     interface_dofs.clear();
     for (const auto &node : nodes)

@@ -733,6 +733,22 @@ namespace contact_fem
         checker->check_held_lines(candidates, full);
         check_lines_at(candidates, full, masters, comm);
       }
+    // close() drops from a chained line (a slave whose master is another
+    // pair's slave) the middle DoF, replaced by that DoF's own masters; but
+    // when the middle node is open, or sticks/slips along other components,
+    // the lines of the iterate name it directly (a frictional chain summed
+    // outside the pattern). The walk below follows the unclosed contact
+    // lines to such middle DoFs too: only where a chain can occur, a node
+    // on a slave and a master surface (other scenes pay nothing).
+    AffineConstraints<double> open_lines;
+    if (contact && interface->has_chained_nodes())
+      {
+        open_lines.reinit(writable_dofs);
+        contact->add_constraints(*interface, interface_fixed_values, open_lines, true);
+      }
+    const auto is_chain_middle = [&](const types::global_dof_index dof) {
+      return open_lines.can_store_line(dof) && open_lines.is_constrained(dof);
+    };
 
     // Every DoF of a cell couples with every other one and with the masters
     // of those that are constrained: a superset of the couplings of any
@@ -751,11 +767,12 @@ namespace contact_fem
           // (a bound on it cut off the DoFs of a Q2 hexahedron, 81 > 64).
           closure = dofs;
           for (unsigned int k = 0; k < closure.size(); ++k)
-            for (const auto *c : {&hanging_constraints, &candidates})
+            for (const auto *c : {&hanging_constraints, &candidates, &open_lines})
               if (c->can_store_line(closure[k]))
                 if (const auto *entries = c->get_constraint_entries(closure[k]))
                   for (const auto &entry : *entries)
-                    if (std::find(closure.begin(), closure.end(), entry.first) == closure.end())
+                    if ((c != &open_lines || is_chain_middle(entry.first)) &&
+                        std::find(closure.begin(), closure.end(), entry.first) == closure.end())
                       closure.push_back(entry.first);
           std::sort(closure.begin(), closure.end());
           closure.erase(std::unique(closure.begin(), closure.end()), closure.end());

@@ -245,6 +245,20 @@ namespace contact_fem
       return dof_position.at(dof);
     }
 
+    /// Whether some node lies on the slave surface of one pair and on the
+    /// master surface of another: a chain of pairs passes through it, and
+    /// its residual holds both pairs' forces (recovered pass by pass,
+    /// ContactFormulation::recover_through_chains()). Not collective (every
+    /// rank holds the whole interface).
+    bool
+    has_chained_nodes() const
+    {
+      for (const auto &node : nodes)
+        if (node.slave && node.master)
+          return true;
+      return false;
+    }
+
     /// Whether the DoF at @p position of dofs() is a Dirichlet component
     /// (Node::fixed), on every rank.
     bool

@@ -811,56 +811,59 @@ namespace contact_fem
   template <int dim>
   void
   AlmFrictional<dim>::recover_multipliers(const ContactInterface<dim> &interface,
-                                          const std::vector<double>   &residual)
+                                          const std::vector<double>   &bulk_residual)
   {
-    for (const auto &s : interface.slave_nodes)
-      {
-        if (!interface.owns_row(s))
-          continue;
-        if (!s.paired || !this->active[s.node])
+    this->recover_through_chains(
+      interface, bulk_residual, [&](const std::vector<double> &residual) {
+        for (const auto &s : interface.slave_nodes)
           {
-            this->pressure[s.node] = 0.;
-            tangential[s.node]     = TangentialVector<dim>();
-            continue;
-          }
-        const auto &slave = interface.nodes[s.node];
-        if (!carries_friction(interface, s))
-          {
-            // A support carries the tangential force: the pressure from the
-            // eliminated component, as frictionless.
-            const unsigned int c = this->eliminated_component(interface, s);
-            this->pressure[s.node] =
-              -residual[interface.position(slave.dofs[c])] / (s.D * s.normal[c]);
-            tangential[s.node] = TangentialVector<dim>();
-            continue;
-          }
-        if constexpr (dim == 3)
-          if (sets.held_component[s.node] < dim)
-            {
-              recover_partly_held(interface, s, residual);
+            if (!interface.owns_row(s))
               continue;
-            }
-        Tensor<1, dim> lambda;
-        for (unsigned int d = 0; d < dim; ++d)
-          lambda[d] = residual[interface.position(slave.dofs[d])] / s.D;
-        const Tensor<1, dim> n = frame_normal(s);
-        this->pressure[s.node] = -(lambda * n);
-        tangential[s.node]     = to_frame(lambda, n);
-        // Current kinematics (2D): a slip node's traction is the one its
-        // slip condition imposed, T(p) d. From the residual it also carries
-        // the change of D_j and n_j over the iteration, which at a node
-        // leaving the master (D_j -> 0 under a large normal force) reversed
-        // it, and the node cycled between stick and slip. (In 3D the
-        // linearised condition leaves a component across d.)
-        if (dim == 2 && current && sets.slips(s.node, this->active))
-          tangential[s.node] =
-            laws[s.pair]->threshold(std::max(this->pressure[s.node], 0.)) * sets.direction[s.node];
-      }
-    // Only the multipliers changed.
-    this->share_frictional_states(interface, {&tangential}, {},
-                                  [&](const std::vector<std::vector<double> *> &fields) {
-                                    this->share_states(interface, fields);
-                                  });
+            if (!s.paired || !this->active[s.node])
+              {
+                this->pressure[s.node] = 0.;
+                tangential[s.node]     = TangentialVector<dim>();
+                continue;
+              }
+            const auto &slave = interface.nodes[s.node];
+            if (!carries_friction(interface, s))
+              {
+                // A support carries the tangential force: the pressure from the
+                // eliminated component, as frictionless.
+                const unsigned int c = this->eliminated_component(interface, s);
+                this->pressure[s.node] =
+                  -residual[interface.position(slave.dofs[c])] / (s.D * s.normal[c]);
+                tangential[s.node] = TangentialVector<dim>();
+                continue;
+              }
+            if constexpr (dim == 3)
+              if (sets.held_component[s.node] < dim)
+                {
+                  recover_partly_held(interface, s, residual);
+                  continue;
+                }
+            Tensor<1, dim> lambda;
+            for (unsigned int d = 0; d < dim; ++d)
+              lambda[d] = residual[interface.position(slave.dofs[d])] / s.D;
+            const Tensor<1, dim> n = frame_normal(s);
+            this->pressure[s.node] = -(lambda * n);
+            tangential[s.node]     = to_frame(lambda, n);
+            // Current kinematics (2D): a slip node's traction is the one its
+            // slip condition imposed, T(p) d. From the residual it also carries
+            // the change of D_j and n_j over the iteration, which at a node
+            // leaving the master (D_j -> 0 under a large normal force) reversed
+            // it, and the node cycled between stick and slip. (In 3D the
+            // linearised condition leaves a component across d.)
+            if (dim == 2 && current && sets.slips(s.node, this->active))
+              tangential[s.node] = laws[s.pair]->threshold(std::max(this->pressure[s.node], 0.)) *
+                                   sets.direction[s.node];
+          }
+        // Only the multipliers changed.
+        this->share_frictional_states(interface, {&tangential}, {},
+                                      [&](const std::vector<std::vector<double> *> &fields) {
+                                        this->share_states(interface, fields);
+                                      });
+      });
   }
 
   template <int dim>

@@ -127,22 +127,25 @@ namespace contact_fem
   template <int dim>
   void
   AlmFrictionless<dim>::recover_multipliers(const ContactInterface<dim> &interface,
-                                            const std::vector<double>   &residual)
+                                            const std::vector<double>   &bulk_residual)
   {
-    for (const auto &s : interface.slave_nodes)
-      {
-        if (!interface.owns_row(s))
-          continue;
-        if (!s.paired || !this->active[s.node])
+    this->recover_through_chains(
+      interface, bulk_residual, [&](const std::vector<double> &residual) {
+        for (const auto &s : interface.slave_nodes)
           {
-            this->pressure[s.node] = 0.;
-            continue;
+            if (!interface.owns_row(s))
+              continue;
+            if (!s.paired || !this->active[s.node])
+              {
+                this->pressure[s.node] = 0.;
+                continue;
+              }
+            const unsigned int c   = this->eliminated_component(interface, s);
+            const double       r   = residual[interface.position(interface.nodes[s.node].dofs[c])];
+            this->pressure[s.node] = -r / (s.D * s.normal[c]);
           }
-        const unsigned int c   = this->eliminated_component(interface, s);
-        const double       r   = residual[interface.position(interface.nodes[s.node].dofs[c])];
-        this->pressure[s.node] = -r / (s.D * s.normal[c]);
-      }
-    this->share_states(interface, {&released_pressure});
+        this->share_states(interface, {&released_pressure});
+      });
   }
 
   template <int dim>

@@ -46,6 +46,37 @@ namespace contact_fem
 
   template <int dim>
   void
+  ContactFormulation<dim>::recover_through_chains(
+    const ContactInterface<dim>                            &interface,
+    const std::vector<double>                              &residual,
+    const std::function<void(const std::vector<double> &)> &recover) const
+  {
+    recover(residual);
+    if (!interface.has_chained_nodes())
+      return;
+    for (unsigned int pass = 1; pass < interface.pairs.size(); ++pass)
+      {
+        // The residual of a node's own pair: the forces of the slaves it is
+        // a master of added back (-M_kj lambda_k on master j, D_k lambda_k
+        // on slave k, lambda_k = traction()).
+        std::vector<double> own = residual;
+        for (const auto &s : interface.slave_nodes)
+          if (s.paired)
+            {
+              const Tensor<1, dim> lambda = traction(s);
+              if (lambda.norm_square() == 0.)
+                continue;
+              for (const auto &[m, value] : s.M)
+                if (interface.nodes[m].slave)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    own[interface.position(interface.nodes[m].dofs[d])] += value * lambda[d];
+            }
+        recover(own);
+      }
+  }
+
+  template <int dim>
+  void
   ContactFormulation<dim>::add_sparsity(const ContactInterface<dim> &,
                                         const AffineConstraints<double> &,
                                         const IndexSet &,

@@ -122,6 +122,23 @@ namespace contact_fem
     recover_multipliers(const ContactInterface<dim> &interface,
                         const std::vector<double>   &residual) = 0;
 
+    /**
+     * Recovers the multipliers by @p recover (the formulation's own pass
+     * over the slave nodes, residual / D_j, shared with the other ranks),
+     * then again once per further pair when a chain of pairs passes
+     * through a node (ContactInterface::has_chained_nodes()): the residual
+     * at a slave node j that is also a master of another pair's slave k
+     * holds -M_kj lambda_k besides D_j lambda_j, so each further pass adds
+     * back the master forces of the multipliers of the pass before. A pass
+     * settles one more link of the chain (the outer slaves' residuals hold
+     * their own force only), and a chain through acyclic pairs has at most
+     * as many links as there are pairs. Collective.
+     */
+    void
+    recover_through_chains(const ContactInterface<dim>                            &interface,
+                           const std::vector<double>                              &residual,
+                           const std::function<void(const std::vector<double> &)> &recover) const;
+
     /// Updates the active (and stick/slip) sets at @p u; returns the number
     /// of changes (the iteration has converged only without any).
     virtual unsigned int
