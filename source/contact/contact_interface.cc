@@ -627,20 +627,24 @@ namespace contact_fem
       }
   }
 
-  template <int dim>
-  void
-  ContactInterface<dim>::check_held_lines(const AffineConstraints<double> &held,
-                                          const AffineConstraints<double> &full) const
+  unsigned int
+  count_differing_lines(const AffineConstraints<double>            &held,
+                        const AffineConstraints<double>            &full,
+                        const std::vector<types::global_dof_index> &dofs,
+                        const MPI_Comm                              comm)
   {
     const auto same_bits = [](const double a, const double b) {
       return std::memcmp(&a, &b, sizeof(double)) == 0;
     };
-    unsigned int compared = 0, wrong = 0;
-    for (const auto dof : relevant_dofs)
+    const auto constrained_in = [](const AffineConstraints<double> &c,
+                                   const types::global_dof_index    dof) {
+      return c.can_store_line(dof) && c.is_constrained(dof);
+    };
+    unsigned int wrong = 0;
+    for (const auto dof : dofs)
       {
-        ++compared;
-        const bool constrained = full.is_constrained(dof);
-        if (held.is_constrained(dof) != constrained)
+        const bool constrained = constrained_in(full, dof);
+        if (constrained_in(held, dof) != constrained)
           {
             ++wrong;
             continue;
@@ -655,8 +659,19 @@ namespace contact_fem
           same = a[k].first == b[k].first && same_bits(a[k].second, b[k].second);
         wrong += !same;
       }
+    return Utilities::MPI::sum(wrong, comm);
+  }
+
+  template <int dim>
+  void
+  ContactInterface<dim>::check_held_lines(const AffineConstraints<double> &held,
+                                          const AffineConstraints<double> &full) const
+  {
+    std::vector<types::global_dof_index> dofs;
+    relevant_dofs.fill_index_vector(dofs);
+    const unsigned int compared = dofs.size();
     // Every rank stops (one rank alone would leave the others waiting).
-    wrong = Utilities::MPI::sum(wrong, mpi_communicator);
+    const unsigned int wrong = count_differing_lines(held, full, dofs, mpi_communicator);
     AssertThrow(wrong == 0,
                 ExcMessage("The constraint lines of the held slave nodes differ from those of "
                            "every slave node at " +

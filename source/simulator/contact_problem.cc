@@ -26,7 +26,6 @@
 #include <Epetra_Vector.h>
 
 #include <algorithm>
-#include <cstring>
 #include <filesystem>
 #include <cmath>
 #include <iomanip>
@@ -665,29 +664,7 @@ namespace contact_fem
                    const std::vector<types::global_dof_index> &dofs,
                    const MPI_Comm                              comm)
     {
-      const auto same_bits = [](const double a, const double b) {
-        return std::memcmp(&a, &b, sizeof(double)) == 0;
-      };
-      unsigned int wrong = 0;
-      for (const auto dof : dofs)
-        {
-          const bool constrained = full.can_store_line(dof) && full.is_constrained(dof);
-          if ((held.can_store_line(dof) && held.is_constrained(dof)) != constrained)
-            {
-              ++wrong;
-              continue;
-            }
-          if (!constrained)
-            continue;
-          const auto &a    = *held.get_constraint_entries(dof);
-          const auto &b    = *full.get_constraint_entries(dof);
-          bool        same = a.size() == b.size() &&
-                      same_bits(held.get_inhomogeneity(dof), full.get_inhomogeneity(dof));
-          for (unsigned int k = 0; same && k < a.size(); ++k)
-            same = a[k].first == b[k].first && same_bits(a[k].second, b[k].second);
-          wrong += !same;
-        }
-      wrong = Utilities::MPI::sum(wrong, comm);
+      const unsigned int wrong = count_differing_lines(held, full, dofs, comm);
       AssertThrow(wrong == 0,
                   ExcMessage("The constraint lines of the held slave nodes differ from those of "
                              "every slave node at " +

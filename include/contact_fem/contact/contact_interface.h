@@ -401,7 +401,7 @@ namespace contact_fem
      * relevant DoF the line of @p full, stored at every interface DoF: the
      * same entries in the same order and the same inhomogeneity, bit for
      * bit; throws otherwise. Counts the DoFs compared and the lines of
-     * @p full the held ones left out for count_held(). Not collective.
+     * @p full the held ones left out for count_held(). Collective.
      */
     void
     check_held_lines(const AffineConstraints<double> &held,
@@ -877,6 +877,18 @@ namespace contact_fem
     std::shared_ptr<std::pair<unsigned int, unsigned int>> line_check_counts;
     MPI_Comm                                               mpi_communicator;
   };
+
+  /// The number of @p dofs whose constraint lines in @p held and @p full
+  /// differ: constrained in one only, or other entries, order or
+  /// inhomogeneity, bit for bit (a DoF a constraint object cannot store
+  /// counts as unconstrained there); summed over @p comm (collective). The
+  /// checks of the held lines (ContactInterface::check_held_lines()).
+  unsigned int
+  count_differing_lines(const AffineConstraints<double>            &held,
+                        const AffineConstraints<double>            &full,
+                        const std::vector<types::global_dof_index> &dofs,
+                        const MPI_Comm                              comm);
+
   // The tiling checks differ by dimension (contact_interface_tiling.cc).
   template <>
   void
