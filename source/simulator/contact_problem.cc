@@ -676,40 +676,61 @@ namespace contact_fem
 
   template <int dim>
   void
+  ContactProblem<dim>::build_constraints(
+    AffineConstraints<double>                              &c,
+    const IndexSet                                         &lines,
+    const std::function<void(AffineConstraints<double> &)> &add_coupling_lines) const
+  {
+    c.clear();
+    c.reinit(lines);
+    DoFTools::make_hanging_node_constraints(dof_handler, c);
+    add_interface_hanging_constraints(c);
+    add_coupling_lines(c);
+    c.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins, true);
+    c.close();
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::check_held_constraints(
+    const AffineConstraints<double>                        &held,
+    const std::function<void(AffineConstraints<double> &)> &add_coupling_lines) const
+  {
+    const ContactInterface<dim> *checker = interface ? interface.get() :
+                                           tying     ? &tying->interface() :
+                                                       nullptr;
+    if (!checker || !ContactInterface<dim>::checking_held_state())
+      return;
+    AffineConstraints<double> full;
+    build_constraints(full, writable_dofs, add_coupling_lines);
+    checker->check_held_lines(held, full);
+    check_lines_at(held,
+                   full,
+                   contact ? contact->line_seeds(*interface) :
+                             std::vector<types::global_dof_index>(),
+                   comm);
+  }
+
+  template <int dim>
+  void
   ContactProblem<dim>::make_sparsity_pattern()
   {
     TimerOutput::Scope t(*timer, "Setup: sparsity");
     // All candidate contact constraints at once: the pattern then holds
     // every coupling any active set of this search can create, and the
     // constrained rows keep their own entries (keep_constrained_dofs).
-    // The lines of the slave nodes this rank needs only (line_dofs()); with
-    // the check of the held state also those of every node, compared.
-    const auto make_candidates = [this](const IndexSet &lines) {
-      AffineConstraints<double> candidates;
-      candidates.reinit(lines);
-      DoFTools::make_hanging_node_constraints(dof_handler, candidates);
-      add_interface_hanging_constraints(candidates);
+    // The lines of the slave nodes this rank needs only (line_dofs()).
+    const auto candidate_lines = [this](AffineConstraints<double> &c) {
       if (tying)
-        tying->add_constraints(candidates, false, true);
+        tying->add_constraints(c, false, true);
       if (contact)
-        contact->add_constraints(*interface, interface_fixed_values, candidates, true);
-      candidates.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins, true);
-      candidates.close();
-      return candidates;
+        contact->add_constraints(*interface, interface_fixed_values, c, true);
     };
-    const std::vector<types::global_dof_index> masters =
-      contact ? contact->line_seeds(*interface) : std::vector<types::global_dof_index>();
-    AffineConstraints<double> candidates =
-      make_candidates(line_dofs(relevant_dofs, contact.get(), interface.get(), tying.get()));
-    const ContactInterface<dim> *checker = interface ? interface.get() :
-                                           tying     ? &tying->interface() :
-                                                       nullptr;
-    if (checker && ContactInterface<dim>::checking_held_state())
-      {
-        const AffineConstraints<double> full = make_candidates(writable_dofs);
-        checker->check_held_lines(candidates, full);
-        check_lines_at(candidates, full, masters, comm);
-      }
+    AffineConstraints<double> candidates;
+    build_constraints(candidates,
+                      line_dofs(relevant_dofs, contact.get(), interface.get(), tying.get()),
+                      candidate_lines);
+    check_held_constraints(candidates, candidate_lines);
     // close() drops from a chained line (a slave whose master is another
     // pair's slave) the middle DoF, replaced by that DoF's own masters; but
     // when the middle node is open, or sticks/slips along other components,
@@ -767,51 +788,25 @@ namespace contact_fem
   void
   ContactProblem<dim>::make_constraints()
   {
-    // The lines of the slave nodes this rank needs (line_dofs()); with the
-    // check of the held state also those of every node, compared.
-    const auto make_trial = [this](AffineConstraints<double> &c, const IndexSet &lines) {
-      c.clear();
-      c.reinit(lines);
-      DoFTools::make_hanging_node_constraints(dof_handler, c);
-      add_interface_hanging_constraints(c);
+    // The lines of the slave nodes this rank needs (line_dofs()).
+    const IndexSet lines = line_dofs(relevant_dofs, contact.get(), interface.get(), tying.get());
+    const auto     trial_lines = [this](AffineConstraints<double> &c) {
       if (tying)
         tying->add_constraints(c);
       if (contact)
         contact->add_constraints(*interface, interface_fixed_values, c, false);
-      c.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins, true);
-      c.close();
     };
-    const auto make_test = [this](AffineConstraints<double> &c, const IndexSet &lines) {
-      c.clear();
-      c.reinit(lines);
-      DoFTools::make_hanging_node_constraints(dof_handler, c);
-      add_interface_hanging_constraints(c);
-      if (tying)
-        tying->add_constraints(c, true);
-      contact->add_test_constraints(*interface, interface_fixed_values, c);
-      c.merge(dirichlet_constraints, AffineConstraints<double>::left_object_wins, true);
-      c.close();
-    };
-    const std::vector<types::global_dof_index> masters =
-      contact ? contact->line_seeds(*interface) : std::vector<types::global_dof_index>();
-    const IndexSet lines = line_dofs(relevant_dofs, contact.get(), interface.get(), tying.get());
-    const ContactInterface<dim> *checker = interface ? interface.get() :
-                                           tying     ? &tying->interface() :
-                                                       nullptr;
-    const auto check = [&](const AffineConstraints<double> &held, const auto &make) {
-      if (!checker || !ContactInterface<dim>::checking_held_state())
-        return;
-      AffineConstraints<double> full;
-      make(full, writable_dofs);
-      checker->check_held_lines(held, full);
-      check_lines_at(held, full, masters, comm);
-    };
-    make_trial(constraints, lines);
-    check(constraints, make_trial);
+    build_constraints(constraints, lines, trial_lines);
+    check_held_constraints(constraints, trial_lines);
     if (contact && !contact->symmetric())
       {
-        make_test(test_constraints, lines);
-        check(test_constraints, make_test);
+        const auto test_lines = [this](AffineConstraints<double> &c) {
+          if (tying)
+            tying->add_constraints(c, true);
+          contact->add_test_constraints(*interface, interface_fixed_values, c);
+        };
+        build_constraints(test_constraints, lines, test_lines);
+        check_held_constraints(test_constraints, test_lines);
       }
   }
 
@@ -1453,11 +1448,28 @@ namespace contact_fem
         deepest = std::max(deepest, -interface->gap(s, interface_displacement) / s.size);
     if (Utilities::MPI::max(deepest, comm) > 1e-8)
       return;
+    const std::string steps = std::to_string(load_stepping.n_steps) +
+                              " load step(s) up to End time = " +
+                              significant(load_stepping.end_time, 6);
+    // A load that is not zero between the step times (a pulse, a cycle
+    // sampled at its zeros) is never seen by the solves: say so, rather than
+    // call the load zero.
+    const unsigned int samples = 8;
+    for (unsigned int k = 0; k < load_stepping.n_steps; ++k)
+      for (unsigned int j = 1; j < samples; ++j)
+        if (const double t = load_stepping.end_time * (k + double(j) / samples) /
+                             load_stepping.n_steps;
+            !diagnosis().load_vanishes(t))
+          throw std::runtime_error(
+            "Load stepping: the load is zero at each of the " + steps +
+            " but not between them (at t = " + significant(t, 6) +
+            "): the solves see the load at the step times only, so this scene would solve "
+            "u = 0 throughout. Set Number of load steps to resolve the load's path, or check "
+            "its expression.");
     throw std::runtime_error(
       "Boundary conditions: the load is zero (every Pressure, Traction and Prescribed "
       "displacement is 0 at each of the " +
-      std::to_string(load_stepping.n_steps) + " load step(s) up to End time = " +
-      significant(load_stepping.end_time, 6) +
+      steps +
       "), and no slave node starts inside its master: nothing presses the bodies together, so "
       "the answer is u = 0 without contact pressure, and which touching nodes are in contact "
       "is undetermined (round-off would decide it). Set a load, or check its expression.");
@@ -2130,7 +2142,8 @@ namespace contact_fem
       }
     // Unloaded with contact, the reactions are round-off: their balance is
     // no check.
-    if (converged && (!unloaded || pressureless.empty()))
+    const bool balance_meaningful = !unloaded || pressureless.empty();
+    if (converged && balance_meaningful)
       if (const std::string text = diagnosis().balance_warning(reaction_json, current_time);
           !text.empty())
         {
@@ -2152,10 +2165,13 @@ namespace contact_fem
     cycle_record.set("strain_energy", strain_energy).set("potential_energy", potential_energy);
     pcout << "  Results at t = " << current_time << ":" << std::endl
           << std::setprecision(6)
-          << (contact ? contact_results_text(contact_state(), contact_json, reaction_json,
-                                             contact_parameters.penetration_tolerance) :
+          << (contact ? contact_results_text(contact_state(),
+                                             contact_json,
+                                             reaction_json,
+                                             contact_parameters.penetration_tolerance,
+                                             !pressureless.empty()) :
                         std::string())
-          << reaction_results_text(reaction_json);
+          << reaction_results_text(reaction_json, balance_meaningful);
     if (comparison && contact)
       {
         std::ostringstream text;

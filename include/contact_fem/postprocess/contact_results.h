@@ -29,12 +29,16 @@ namespace contact_fem
   /// The lines of the "contact" record @p contact of @p state, with the
   /// formulation's own results (which may read the "reaction" record
   /// @p reaction); @p penetration_tolerance: Contact/Penetration tolerance.
+  /// With @p round_off_pressures (bodies that touch without pressing, which
+  /// the caller has warned about) the ratios of pressures and the
+  /// formulation's friction checks are round-off over round-off: left out.
   template <int dim>
   std::string
   contact_results_text(const ContactState<dim> &state,
                        const Json              &contact,
                        const Json              &reaction,
-                       const double             penetration_tolerance);
+                       const double             penetration_tolerance,
+                       const bool               round_off_pressures);
 
   /// What the balance of the loads against the support reactions reads.
   template <int dim>
@@ -61,9 +65,12 @@ namespace contact_fem
   Json
   reaction_results(const BalanceInputs<dim> &in);
 
-  /// The lines of the "reaction" record @p reaction.
+  /// The lines of the "reaction" record @p reaction. Without
+  /// @p balance_meaningful (no load, bodies touching without pressure: the
+  /// forces are round-off) the relative imbalance is not printed as a
+  /// number.
   std::string
-  reaction_results_text(const Json &reaction);
+  reaction_results_text(const Json &reaction, const bool balance_meaningful);
 } // namespace contact_fem
 
 #endif

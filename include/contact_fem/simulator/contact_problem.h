@@ -150,6 +150,21 @@ namespace contact_fem
     make_sparsity_pattern();
     void
     make_constraints();
+    /// Every constraint set of the program is built the same way: hanging
+    /// nodes (also those of the interface), the coupling lines that
+    /// @p add_coupling_lines adds (tied and contact lines: candidates, trial
+    /// or test), the Dirichlet lines, closed. @p lines are the lines stored.
+    void
+    build_constraints(
+      AffineConstraints<double>                              &constraints,
+      const IndexSet                                         &lines,
+      const std::function<void(AffineConstraints<double> &)> &add_coupling_lines) const;
+    /// With the check of the held state: @p held, built on this rank's
+    /// lines, must equal the same constraints built on every line.
+    void
+    check_held_constraints(
+      const AffineConstraints<double>                        &held,
+      const std::function<void(AffineConstraints<double> &)> &add_coupling_lines) const;
     /// The hanging-node lines of the contact surfaces' DoFs that
     /// make_hanging_node_constraints() leaves out on this rank (DoFs away
     /// from its cells, which the contact rows still reach), from the
