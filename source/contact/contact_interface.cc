@@ -8,6 +8,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <contact_fem/contact/contact_interface.h>
+#include <contact_fem/contact/surface_numbering.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/core/parameters.h>
 #include <contact_fem/contact/mortar_kernel.h>
@@ -40,7 +41,7 @@ namespace contact_fem
     slave_faces_per_rank.clear();
     master_faces_per_rank.clear();
     std::map<types::global_dof_index, unsigned int> node_of_dof;
-    const unsigned int record = 5 + nodes_per_face * 3 * dim + n_geometry_points * dim;
+    const unsigned int record = face_record_size(nodes_per_face, n_geometry_points);
     const unsigned int rank   = Utilities::MPI::this_mpi_process(mpi_communicator);
     for (const auto &chunk : all)
       {
@@ -320,6 +321,8 @@ namespace contact_fem
       }
     stop_on_every_rank(error);
     unpack_faces(Utilities::MPI::all_gather(comm, packed), nodes_per_face, n_geometry_points);
+    if (checking_held_state())
+      check_own_numbering(packed, nodes_per_face, n_geometry_points);
     // Every rank holds the same faces: the same verdict everywhere.
     stop_on_every_rank(chain_cycle(*this));
 
@@ -360,6 +363,63 @@ namespace contact_fem
     within_reach.clear();
     face_lengths.clear();
     statistics.assign(pairs.size(), PairStatistics());
+  }
+
+  template <int dim>
+  void
+  ContactInterface<dim>::check_own_numbering(const std::vector<double> &packed,
+                                             const unsigned int         nodes_per_face,
+                                             const unsigned int         n_geometry_points) const
+  {
+    // The first DoF of every node of the own faces, as unpack_faces() reads
+    // them.
+    const unsigned int record = face_record_size(nodes_per_face, n_geometry_points);
+    std::vector<types::global_dof_index> node_dofs;
+    for (unsigned int r = 0; r + record <= packed.size(); r += record)
+      for (unsigned int k = 0; k < nodes_per_face; ++k)
+        node_dofs.push_back(
+          static_cast<types::global_dof_index>(packed[r + 5 + k * 3 * dim + dim]));
+    OwnSurfaceNumbers numbers;
+    std::string       error;
+    try
+      {
+        numbers = number_own_faces(node_dofs, nodes_per_face, owned_dofs, mpi_communicator);
+      }
+    catch (const std::exception &e)
+      {
+        error = user_message(e);
+      }
+    const unsigned int n_own   = node_dofs.size() / nodes_per_face;
+    unsigned int       n_wrong = 0, first_wrong = numbers::invalid_unsigned_int;
+    if (error.empty() && own_faces.second - own_faces.first == n_own)
+      for (unsigned int i = 0; i < n_own; ++i)
+        for (unsigned int k = 0; k < nodes_per_face; ++k)
+          if (numbers.nodes[i * nodes_per_face + k] != faces[own_faces.first + i].nodes[k])
+            {
+              if (n_wrong++ == 0)
+                first_wrong = i;
+            }
+    if (error.empty() &&
+        (numbers.first_face != own_faces.first || own_faces.second - own_faces.first != n_own ||
+         numbers.n_faces != faces.size() || numbers.n_nodes != nodes.size() || n_wrong > 0))
+      {
+        std::ostringstream message;
+        message << "Contact (check of CONTACT_FEM_CHECK_HELD_STATE): on rank "
+                << Utilities::MPI::this_mpi_process(mpi_communicator)
+                << ", the numbers of the own contact faces and their nodes computed from this "
+                   "rank's faces alone (number_own_faces()) differ from those of the gathered "
+                   "surface: first own face "
+                << numbers.first_face << " against " << own_faces.first << ", own faces " << n_own
+                << " against " << own_faces.second - own_faces.first << ", faces in all "
+                << numbers.n_faces << " against " << faces.size() << ", nodes in all "
+                << numbers.n_nodes << " against " << nodes.size() << ", " << n_wrong
+                << " node numbers differ";
+        if (n_wrong > 0)
+          message << " (the first on own face " << first_wrong << ")";
+        message << ".";
+        error = message.str();
+      }
+    stop_on_every_rank(error);
   }
 
   template <int dim>

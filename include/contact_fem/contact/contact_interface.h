@@ -677,6 +677,24 @@ namespace contact_fem
     void
     find_pair_materials();
 
+    /// The length of one face record packed by initialize(): pair, slave,
+    /// E, nu, orientation, per node its coordinates, DoFs and fixed flags,
+    /// then the geometry points.
+    static unsigned int
+    face_record_size(const unsigned int nodes_per_face, const unsigned int n_geometry_points)
+    {
+      return 5 + nodes_per_face * 3 * dim + n_geometry_points * dim;
+    }
+
+    /// The check of number_own_faces() (checking_held_state()): the numbers
+    /// of this rank's faces (@p packed, as initialize() packs them) and of
+    /// their nodes computed from them alone must be those unpack_faces()
+    /// gave; stops every rank otherwise. Collective.
+    void
+    check_own_numbering(const std::vector<double> &packed,
+                        const unsigned int         nodes_per_face,
+                        const unsigned int         n_geometry_points) const;
+
     /// Builds nodes and faces from the face records of every rank (@p all,
     /// as packed by initialize()), counting the faces per rank.
     void
