@@ -201,6 +201,6 @@ main(int argc, char **argv)
                 << reaction["support_reaction_components"][1].number_value()
                 << "), relative imbalance " << reaction["relative_imbalance"].number_value()
                 << std::endl
-                << reaction_results_text(reaction);
+                << reaction_results_text(reaction, true);
     }
 }
