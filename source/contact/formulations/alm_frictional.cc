@@ -923,7 +923,9 @@ namespace contact_fem
           ++changes;
         // A Tresca node released in tension while it carried friction, which
         // penetrates again without it, grazes (doc/design.md, "Tresca at
-        // lift-off"): its bound is then T min(1, p / (delta T)).
+        // lift-off"): its bound is then slip_bound(). Only a node that comes
+        // back to the surface (by 1e-4 h at most: it stands at the edge of
+        // the lift-off), not one driven into it.
         if (!now_active && active[s.node] && pressure[s.node] < 0. &&
             magnitude<dim>(tangential[s.node]) > 0. && !frictionless_law(s) &&
             laws[s.pair]->threshold_derivative(0.) == 0.)

@@ -191,7 +191,7 @@ namespace contact_fem
     /// Nodes released in tension with friction in this load step.
     std::vector<bool> released_in_tension;
     /// The pressure, as a fraction of T, below which a grazing node's bound
-    /// falls with p (1 / that the slope of its Coulomb branch).
+    /// falls with p: a Coulomb branch of slope 1 / grazing_fraction.
     static constexpr double grazing_fraction = 1e-3;
 
     /// The slip bound of node @p s at pressure @p p: its law's, reduced
