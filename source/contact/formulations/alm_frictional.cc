@@ -46,6 +46,8 @@ namespace contact_fem
     const unsigned int n = interface.nodes.size();
     released_pressure.assign(n, 0.);
     released_tangential.assign(n, TangentialVector<dim>());
+    grazing.assign(n, 0.);
+    released_in_tension.assign(n, false);
     cone_stiffness.assign(n, 0.);
   }
 
@@ -83,7 +85,7 @@ namespace contact_fem
     const TangentialVector<dim> direction = unit_direction<dim>(trial, size);
     if (pure_slip)
       return direction;
-    const double bound = laws[s.pair]->threshold(std::max(p_bound, 0.));
+    const double bound = slip_bound(s, std::max(p_bound, 0.));
     // A node with neither traction nor slip (it just touched) sticks: its
     // slip direction is undefined, and any guess would push it sideways.
     if (size == 0. && !frictionless_law(s))
@@ -128,7 +130,7 @@ namespace contact_fem
     const double largest_a = 1. - 1e-4 / stiffness_ratio[s.pair];
     const double c         = this->penalty[s.pair];
     const double trial     = magnitude<dim>(tangential[s.node] - c * xi);
-    const double bound     = laws[s.pair]->threshold(std::max(this->pressure[s.node], 0.));
+    const double bound     = slip_bound(s, std::max(this->pressure[s.node], 0.));
     const double a         = trial > 0. ? std::min(bound / trial, largest_a) : largest_a;
     return c * a / (1. - a);
   }
@@ -161,9 +163,9 @@ namespace contact_fem
     const Tensor<1, dim> n = frame_normal(s);
     if constexpr (dim == 2)
       return ContactFormulation<dim>::tangent(n) +
-             sets.direction[s.node][0] * laws[s.pair]->threshold_derivative(p) * n;
+             sets.direction[s.node][0] * slip_bound_derivative(s, p) * n;
     else
-      return to_global(sets.direction[s.node], n) + laws[s.pair]->threshold_derivative(p) * n;
+      return to_global(sets.direction[s.node], n) + slip_bound_derivative(s, p) * n;
   }
 
   template <int dim>
@@ -182,7 +184,7 @@ namespace contact_fem
       {
         // Normal to w = d + T' n and to e = n x d: n - T' d.
         const Tensor<1, dim> n = frame_normal(s);
-        return n - laws[s.pair]->threshold_derivative(this->pressure[s.node]) *
+        return n - slip_bound_derivative(s, this->pressure[s.node]) *
                      to_global(sets.direction[s.node], n);
       }
   }
@@ -225,7 +227,7 @@ namespace contact_fem
     // never accepts (2D Tresca on prm/hertz_frictional.prm stalled). In 3D
     // the test plane also carries the cone term (assemble()).
     return sets.slips(s.node, this->active) && carries_friction(interface, s) &&
-           (laws[s.pair]->threshold_derivative(this->pressure[s.node]) != 0. ||
+           (slip_bound_derivative(s, this->pressure[s.node]) != 0. ||
             (!frictionless_law(s)));
   }
 
@@ -267,6 +269,8 @@ namespace contact_fem
             stiffness_ratio[p]  = std::max(slave, master) / std::min(slave, master);
           }
       }
+    std::fill(grazing.begin(), grazing.end(), 0.);
+    std::fill(released_in_tension.begin(), released_in_tension.end(), false);
     std::fill(released_pressure.begin(), released_pressure.end(), 0.);
     std::fill(released_tangential.begin(), released_tangential.end(), TangentialVector<dim>());
     // Current kinematics: a node paired for the first time measures its
@@ -569,7 +573,7 @@ namespace contact_fem
         if (cone_stiffness[s.node] > 0.)
           assemble_cone_term(interface, s, constraints, test_constraints, matrix, rhs);
         const double p = this->pressure[s.node];
-        const double h = laws[s.pair]->threshold(p) - laws[s.pair]->threshold_derivative(p) * p;
+        const double h = slip_bound(s, p) - slip_bound_derivative(s, p) * p;
         if (h == 0.)
           continue;
         const Tensor<1, dim> direction = to_global(sets.direction[s.node], frame_normal(s));
@@ -769,7 +773,7 @@ namespace contact_fem
     const Tensor<1, dim> n_f = frame_normal(s);
     const Tensor<1, dim> t =
       sticks   ? to_global(tangential[s.node], n_f) :
-      friction ? laws[s.pair]->threshold(p) * to_global(sets.direction[s.node], n_f) :
+      friction ? slip_bound(s, p) * to_global(sets.direction[s.node], n_f) :
                  Tensor<1, dim>();
     if (p == 0. && t.norm_square() == 0.)
       return;
@@ -855,7 +859,7 @@ namespace contact_fem
             // it, and the node cycled between stick and slip. (In 3D the
             // linearised condition leaves a component across d.)
             if (dim == 2 && current && sets.slips(s.node, this->active))
-              tangential[s.node] = laws[s.pair]->threshold(std::max(this->pressure[s.node], 0.)) *
+              tangential[s.node] = slip_bound(s, std::max(this->pressure[s.node], 0.)) *
                                    sets.direction[s.node];
           }
         // Only the multipliers changed.
@@ -917,6 +921,17 @@ namespace contact_fem
                                 this->eliminated_component(interface, s) < dim;
         if (now_active != active[s.node])
           ++changes;
+        // A Tresca node released in tension while it carried friction, which
+        // penetrates again without it, grazes (doc/design.md, "Tresca at
+        // lift-off"): its bound is then slip_bound(). Only a node that comes
+        // back to the surface (by 1e-4 h at most: it stands at the edge of
+        // the lift-off), not one driven into it.
+        if (!now_active && active[s.node] && pressure[s.node] < 0. &&
+            magnitude<dim>(tangential[s.node]) > 0. && !frictionless_law(s) &&
+            laws[s.pair]->threshold_derivative(0.) == 0.)
+          released_in_tension[s.node] = true;
+        if (now_active && !active[s.node] && released_in_tension[s.node] && g > -1e-4 * s.size)
+          grazing[s.node] = 1.;
         if (!now_active)
           {
             released_pressure[s.node]   = pressure[s.node];
@@ -950,7 +965,7 @@ namespace contact_fem
   AlmFrictional<dim>::share_decisions(const ContactInterface<dim> &interface)
   {
     this->share_frictional_states(interface, {&tangential, &released_tangential, &sets.direction},
-                                  {&released_pressure, &cone_stiffness},
+                                  {&released_pressure, &cone_stiffness, &grazing},
                                   [&](const std::vector<std::vector<double> *> &fields) {
                                     this->share_states(interface, fields);
                                   });
@@ -985,7 +1000,7 @@ namespace contact_fem
             const double p  = this->pressure[s.node];
             const double rt = !sets.slips(s.node, this->active) ?
                                 magnitude<dim>(free_part(s, slip_increment(interface, s, u))) :
-                                magnitude<dim>(tangential[s.node] - laws[s.pair]->threshold(p) *
+                                magnitude<dim>(tangential[s.node] - slip_bound(s, p) *
                                                                       sets.direction[s.node]) /
                                   k;
             terms.emplace_back(i, rt * rt);
@@ -1053,7 +1068,7 @@ namespace contact_fem
     for (const auto &s : interface.slave_nodes)
       if (s.paired && this->active[s.node] && carries_friction(interface, s))
         {
-          const double                 bound = laws[s.pair]->threshold(this->pressure[s.node]);
+          const double                 bound = slip_bound(s, this->pressure[s.node]);
           const TangentialVector<dim> &t     = tangential[s.node];
           largest_bound                      = std::max(largest_bound, bound);
           if (sets.slips(s.node, this->active))

@@ -29,7 +29,7 @@ namespace contact_fem
     // where it was at the last step, and off again); with a bound (Tresca)
     // it sticks.
     const bool entering = !slipping && magnitude<dim>(this->tangential[s.node]) == 0. &&
-                          this->laws[s.pair]->threshold(std::max(p_bound, 0.)) == 0.;
+                          this->slip_bound(s, std::max(p_bound, 0.)) == 0.;
     if ((slipping || entering) && moved)
       {
         // The traction on the slave opposes its slip; a slip that turns
@@ -53,7 +53,7 @@ namespace contact_fem
       return 0.;
     // The derivative of t = -T xi / |xi| across the slip: T / |xi|, capped
     // as alm's at 1e4 times the stiffer side's E / h.
-    const double bound   = this->laws[s.pair]->threshold(std::max(this->pressure[s.node], 0.));
+    const double bound   = this->slip_bound(s, std::max(this->pressure[s.node], 0.));
     const double largest = 1e4 * this->penalty[s.pair] * this->stiffness_ratio[s.pair];
     const double slip    = magnitude<dim>(xi);
     return slip * largest > bound ? bound / slip : largest;
