@@ -1414,6 +1414,17 @@ namespace contact_fem
     if (assessment.converged && contact && contact->n_active() == 0 &&
         !contact_parameters.allow_loss_of_contact)
       throw diagnosis().no_contact_failure(where, current_time, false, false);
+    // A load path whose load at this step is at the round-off of the
+    // coordinates (only the end time is checked before the solve: a load
+    // path may pass through such loads, e.g. sin(pi t) at t = 1) leaves
+    // nothing to converge to; smaller steps do not help.
+    if (const std::string round_off = contact ? diagnosis().load_at_round_off(time) : "";
+        !assessment.converged && !round_off.empty())
+      throw NewtonFailure(where + " did not converge in " +
+                            std::to_string(newton_parameters.max_iterations) +
+                            " iterations (its residuals and active-set changes are rounding "
+                            "noise). Likely cause: " + round_off + ".",
+                          false);
     if (!assessment.converged)
       throw NewtonFailure(where + " did not converge in " +
                             std::to_string(newton_parameters.max_iterations) + " iterations " +
