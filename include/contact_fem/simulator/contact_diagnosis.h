@@ -162,6 +162,9 @@ namespace contact_fem
     /// The nearly incompressible part of precision_limits().
     std::string
     incompressibility_limit() const;
+    /// The part of precision_limits() of cells far longer than thick.
+    std::string
+    aspect_ratio_limit() const;
     /// The applied loads along the outward normals of the contact surfaces
     /// of their bodies: > 0 pushes the bodies together. Collective.
     double
