@@ -1417,8 +1417,12 @@ namespace contact_fem
     // A load path whose load at this step is at the round-off of the
     // coordinates (only the end time is checked before the solve: a load
     // path may pass through such loads, e.g. sin(pi t) at t = 1) leaves
-    // nothing to converge to; smaller steps do not help.
-    if (const std::string round_off = contact ? diagnosis().load_at_round_off(time) : "";
+    // nothing to converge to; smaller steps do not help. Not on a split
+    // step: splits from an unloaded start reach such loads by themselves.
+    const bool split_step =
+      step_size < load_stepping.end_time / load_stepping.n_steps * (1. - 1e-9);
+    if (const std::string round_off =
+          contact && !split_step ? diagnosis().load_at_round_off(time) : "";
         !assessment.converged && !round_off.empty())
       throw NewtonFailure(where + " did not converge in " +
                             std::to_string(newton_parameters.max_iterations) +
@@ -2002,9 +2006,23 @@ namespace contact_fem
                       << " of at most " << load_stepping.max_splits << ")" << std::endl;
                 continue;
               }
-            pcout << std::endl
-                  << "Error: giving up at " << failure.what() << std::endl
-                  << "The results written are those of the last converged load step"
+            pcout << std::endl << "Error: giving up at " << failure.what() << std::endl;
+            // Converged sub-steps reset the count of splits in a row, so a
+            // point of the load path that no step passes is left only at
+            // the floor of the step size: the hint to split was wrong.
+            if (failure.splittable && control.at_smallest_step())
+              pcout << "Smaller steps did not help: the step was split down to "
+                    << control.step_size() << " ("
+                    << control.step_size() / control.nominal_step_size()
+                    << " of the nominal load step; a further split would fall below 1e-12 "
+                       "of the end time), and still fails after t = "
+                    << control.converged_time()
+                    << ", so the step size is not the cause. One cause: no contact state "
+                       "is consistent there (with a Tresca law, a slip node whose pressure "
+                       "falls to zero keeps its whole bound, so releasing it removes a finite "
+                       "tangential force and the node comes back)."
+                    << std::endl;
+            pcout << "The results written are those of the last converged load step"
                   << " (t = " << control.converged_time() << ")." << std::endl;
             path.converged = false;
             break;
