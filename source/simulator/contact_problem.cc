@@ -2150,6 +2150,10 @@ namespace contact_fem
     if (!pressureless.empty())
       warn("unloaded_warning", pressureless, cycle_record);
     if (const std::string text =
+          contact ? diagnosis().preload(contact_json, current_time, unloaded) : "";
+        !text.empty())
+      warn("preload_warning", text, cycle_record);
+    if (const std::string text =
           converged && pressureless.empty() ? diagnosis().tension_failure(contact_json) : "";
         !text.empty())
       {

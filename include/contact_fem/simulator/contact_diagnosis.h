@@ -136,6 +136,11 @@ namespace contact_fem
     /// (@p load_vanishes), or every pressure is below 1e-12 of the load's
     /// stress scale (E_min times the load's displacement over the model's
     /// extent). "" if the contact presses. Collective.
+    /// The warning of an unloaded state (@p load_vanishes at @p time) whose
+    /// pressures are far above round-off: a preload from a slave node that
+    /// starts inside its master; "" otherwise.
+    std::string
+    preload(const Json &contact, const double time, const bool load_vanishes) const;
     std::string
     pressureless_contact(const Json &contact, const double time, const bool load_vanishes) const;
     /// Why a converged state whose "contact" record @p contact has an
