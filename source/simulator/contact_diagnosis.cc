@@ -260,7 +260,7 @@ namespace contact_fem
   ContactDiagnosis<dim>::aspect_ratio_limit() const
   {
     // A cell's stiffness across its short edge exceeds that along its long
-    // one by about the aspect ratio squared: beyond 1e6 (1e12 squared) the
+    // one by about the aspect ratio squared: beyond 1e6 (a ratio of 1e12) the
     // direct solve drops the weaker one as zero pivots (measured: a strip
     // 0.2 x 1e-7 on a block, 4 zero pivots; 0.2 x 1e-6 none). The coarse
     // cells, which every rank holds (refinement keeps their shape): no
