@@ -1309,10 +1309,17 @@ namespace contact_fem
           const Point<3, Number>     x_slave = slave.point(xi);
           const Tensor<1, 3, Number> n       = interpolated_normal(slave, slave_normals, xi);
           Point<2>                   eta_value;
-          // The overlap's points project onto the master: a failure here is
-          // not a geometric fact, and skipping the point would shrink D.
-          AssertThrow(project_along(master_values, point_value(x_slave), vector_value(n),
-                                                    eta_value),
+          // The overlap's points project onto the master along n0 (the
+          // segmentation's direction). Along n they may miss even the
+          // master face's extension (beyond the fold of its map) where the
+          // slave face is far from the master: a gap of a face size times
+          // the normals' spread over the face (a sphere's steep flank above
+          // a block). Such a point takes the projection along n0; near the
+          // master both reach it. Skipping the point would shrink D.
+          const bool along_n =
+            project_along(master_values, point_value(x_slave), vector_value(n), eta_value);
+          AssertThrow(along_n || project_along(master_values, point_value(x_slave),
+                                               vector_value(plane.normal), eta_value),
                                       ExcMessage("Mortar integration: a quadrature point of the slave face "
                                                                  "centred at " +
                                                  coordinates_text(slave_values.point(Point<2>())) +
@@ -1321,7 +1328,8 @@ namespace contact_fem
           // The segmentation projected along n0, the normal field may differ
           // slightly: stay on the master face (partition of unity kept).
           const Point<2, Number> eta =
-            clamped(projected_parameter(master, master_values, x_slave, n, eta_value));
+            clamped(projected_parameter(master, master_values, x_slave, along_n ? n : plane.normal,
+                                        eta_value));
           const Tensor<1, 3, Number> separation = master.point(eta) - x_slave;
 
           result.overlap_area += jxw;

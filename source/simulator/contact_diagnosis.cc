@@ -250,7 +250,41 @@ namespace contact_fem
       return contrast;
     if (const std::string auxetic = auxetic_limit(); !auxetic.empty())
       return auxetic;
+    if (const std::string thin = aspect_ratio_limit(); !thin.empty())
+      return thin;
     return incompressibility_limit();
+  }
+
+  template <int dim>
+  std::string
+  ContactDiagnosis<dim>::aspect_ratio_limit() const
+  {
+    // A cell's stiffness across its short edge exceeds that along its long
+    // one by about the aspect ratio squared: beyond 1e6 (a ratio of 1e12) the
+    // direct solve drops the weaker one as zero pivots (measured: a strip
+    // 0.2 x 1e-7 on a block, 4 zero pivots; 0.2 x 1e-6 none). The coarse
+    // cells, which every rank holds (refinement keeps their shape): no
+    // communication.
+    double largest = 0.;
+    for (const auto &cell : run.dof_handler.get_triangulation().cell_iterators_on_level(0))
+      {
+        double shortest = std::numeric_limits<double>::max(), longest = 0.;
+        for (unsigned int l = 0; l < cell->n_lines(); ++l)
+          {
+            shortest = std::min(shortest, cell->line(l)->diameter());
+            longest  = std::max(longest, cell->line(l)->diameter());
+          }
+        if (shortest > 0.)
+          largest = std::max(largest, longest / shortest);
+      }
+    if (!(largest > 1e6))
+      return "";
+    return "the mesh has cells with an aspect ratio (longest over shortest edge) of " +
+           format(largest) +
+           ": their stiffness along the long edge is about 1 / " + format(largest * largest) +
+           " of that across, and the direct solve keeps few or none of its digits (it takes "
+           "it for zero pivots beyond about 1e12); mesh thin parts with cells of aspect ratio "
+           "below 1e6";
   }
 
   template <int dim>
@@ -693,6 +727,29 @@ namespace contact_fem
 
   template <int dim>
   std::string
+  ContactDiagnosis<dim>::preload(const Json &contact, const double time, const bool load_vanishes) const
+  {
+    const auto n_active = static_cast<unsigned int>(contact["active_slave_nodes"].number_value());
+    const double pressure = std::max(std::abs(contact["max_contact_pressure"].number_value()),
+                                     std::abs(contact["min_active_contact_pressure"].number_value()));
+    // Round-off pressures are about 1e-16 of the moduli; a slave node that
+    // starts inside its master by 1e-8 of its element size (what
+    // check_load_resolved() lets run without a load) presses by about
+    // 1e-8 of them.
+    if (!load_vanishes || n_active == 0 ||
+        !(pressure > 1e-10 * run.materials.youngs_modulus_range().first))
+      return "";
+    return "the load is zero at t = " + significant(time, 6) +
+           ", yet the contact pressures reach " + significant(pressure, 2) + " at " +
+           std::to_string(n_active) +
+           " active slave node(s): the bodies press each other without a load, so a slave "
+           "node starts inside its master (an overlap in the mesh, or, on a curved surface "
+           "that touches the master at a node, the mortar gap of that node, negative by "
+           "about h^2 / R: a preload that vanishes with refinement)";
+  }
+
+  template <int dim>
+  std::string
   ContactDiagnosis<dim>::pressureless_contact(const Json  &contact,
                                               const double time,
                                               const bool   load_vanishes) const
@@ -709,6 +766,10 @@ namespace contact_fem
                           load_displacement_scale(time) /
                           model_extent(run.dof_handler.get_triangulation());
     std::string why;
+    // Far above round-off (about 1e-16 of the moduli) the pressures of an
+    // unloaded state are a preload: preload() says so.
+    if (load_vanishes && !preload(contact, time, load_vanishes).empty())
+      return "";
     if (load_vanishes)
       why = "the load is zero at t = " + significant(time, 6) +
             ": nothing presses the bodies together";

@@ -1409,6 +1409,21 @@ namespace contact_fem
     if (assessment.converged && contact && contact->n_active() == 0 &&
         !contact_parameters.allow_loss_of_contact)
       throw diagnosis().no_contact_failure(where, current_time, false, false);
+    // A load path whose load at this step is at the round-off of the
+    // coordinates (only the end time is checked before the solve: a load
+    // path may pass through such loads, e.g. sin(pi t) at t = 1) leaves
+    // nothing to converge to; smaller steps do not help. Not on a split
+    // step: splits from an unloaded start reach such loads by themselves.
+    const bool split_step =
+      step_size < load_stepping.end_time / load_stepping.n_steps * (1. - 1e-9);
+    if (const std::string round_off =
+          contact && !split_step ? diagnosis().load_at_round_off(time) : "";
+        !assessment.converged && !round_off.empty())
+      throw NewtonFailure(where + " did not converge in " +
+                            std::to_string(newton_parameters.max_iterations) +
+                            " iterations (its residuals and active-set changes are rounding "
+                            "noise). Likely cause: " + round_off + ".",
+                          false);
     if (!assessment.converged)
       throw NewtonFailure(where + " did not converge in " +
                             std::to_string(newton_parameters.max_iterations) + " iterations " +
@@ -2003,9 +2018,23 @@ namespace contact_fem
                       << " of at most " << load_stepping.max_splits << ")" << std::endl;
                 continue;
               }
-            pcout << std::endl
-                  << "Error: giving up at " << failure.what() << std::endl
-                  << "The results written are those of the last converged load step"
+            pcout << std::endl << "Error: giving up at " << failure.what() << std::endl;
+            // Converged sub-steps reset the count of splits in a row, so a
+            // point of the load path that no step passes is left only at
+            // the floor of the step size: the hint to split was wrong.
+            if (failure.splittable && control.at_smallest_step())
+              pcout << "Smaller steps did not help: the step was split down to "
+                    << control.step_size() << " ("
+                    << control.step_size() / control.nominal_step_size()
+                    << " of the nominal load step; a further split would fall below 1e-12 "
+                       "of the end time), and still fails after t = "
+                    << control.converged_time()
+                    << ", so the step size is not the cause. One cause: no contact state "
+                       "is consistent there (with a Tresca law, a slip node whose pressure "
+                       "falls to zero keeps its whole bound, so releasing it removes a finite "
+                       "tangential force and the node comes back)."
+                    << std::endl;
+            pcout << "The results written are those of the last converged load step"
                   << " (t = " << control.converged_time() << ")." << std::endl;
             path.converged = false;
             break;
@@ -2132,6 +2161,10 @@ namespace contact_fem
                                                "";
     if (!pressureless.empty())
       warn("unloaded_warning", pressureless, cycle_record);
+    if (const std::string text =
+          contact ? diagnosis().preload(contact_json, current_time, unloaded) : "";
+        !text.empty())
+      warn("preload_warning", text, cycle_record);
     if (const std::string text =
           converged && pressureless.empty() ? diagnosis().tension_failure(contact_json) : "";
         !text.empty())

@@ -35,11 +35,16 @@ namespace contact_fem
   }
 
   bool
-  LoadStepControl::split()
+  LoadStepControl::at_smallest_step() const
   {
     // A step below 1e-12 of the end time cannot advance the load.
-    if (splits >= parameters.max_splits ||
-        !(step / parameters.split_factor > 1e-12 * parameters.end_time))
+    return !(step / parameters.split_factor > 1e-12 * parameters.end_time);
+  }
+
+  bool
+  LoadStepControl::split()
+  {
+    if (splits >= parameters.max_splits || at_smallest_step())
       return false;
     ++splits;
     successes_since_split = 0;

@@ -131,11 +131,16 @@ namespace contact_fem
     /// cause; "" if it balances.
     std::string
     balance_warning(const Json &reaction, const double time) const;
+    /// The warning of an unloaded state (@p load_vanishes at @p time) whose
+    /// pressures are far above round-off: a preload from a slave node that
+    /// starts inside its master; "" otherwise.
+    std::string
+    preload(const Json &contact, const double time, const bool load_vanishes) const;
     /// The warning of a state whose "contact" record @p contact has active
     /// nodes at pressures of round-off: the load is zero at @p time
-    /// (@p load_vanishes), or every pressure is below 1e-12 of the load's
-    /// stress scale (E_min times the load's displacement over the model's
-    /// extent). "" if the contact presses. Collective.
+    /// (@p load_vanishes; not a preload()), or every pressure is below
+    /// 1e-12 of the load's stress scale (E_min times the load's displacement
+    /// over the model's extent). "" if the contact presses. Collective.
     std::string
     pressureless_contact(const Json &contact, const double time, const bool load_vanishes) const;
     /// Why a converged state whose "contact" record @p contact has an
@@ -162,6 +167,9 @@ namespace contact_fem
     /// The nearly incompressible part of precision_limits().
     std::string
     incompressibility_limit() const;
+    /// The part of precision_limits() of cells far longer than thick.
+    std::string
+    aspect_ratio_limit() const;
     /// The applied loads along the outward normals of the contact surfaces
     /// of their bodies: > 0 pushes the bodies together. Collective.
     double

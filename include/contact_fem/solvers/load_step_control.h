@@ -59,6 +59,18 @@ namespace contact_fem
     unsigned int
     n_steps_left() const;
 
+    /// Whether the step is at the floor of split(): no smaller step is
+    /// tried.
+    bool
+    at_smallest_step() const;
+
+    /// The nominal step size.
+    double
+    nominal_step_size() const
+    {
+      return nominal_step;
+    }
+
     /// Splits in a row so far.
     unsigned int
     n_splits() const

@@ -102,6 +102,13 @@ namespace contact_fem
     std::vector<std::shared_ptr<const FrictionalLaw>> laws;
     if (text.empty())
       return laws;
+    // Without pairs the law would act nowhere (and a frictional formulation
+    // would then say that no law is given).
+    AssertThrow(!contact.pairs.empty(),
+                ExcMessage(key + ": '" + text +
+                           "' is given, but Contact/Pairs is empty: friction acts between "
+                           "the surfaces of a contact pair. Give the pairs as 'slave id: "
+                           "master id', or leave Contact/Friction empty."));
     if (text.find(':') == std::string::npos)
       {
         const std::shared_ptr<const FrictionalLaw> law = FrictionalLaw::create(text, key);
