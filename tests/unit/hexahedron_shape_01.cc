@@ -21,8 +21,8 @@ namespace
   std::array<Point<3>, 8>
   unit_cube()
   {
-    return {Point<3>(0, 0, 0), Point<3>(1, 0, 0), Point<3>(1, 1, 0), Point<3>(0, 1, 0),
-            Point<3>(0, 0, 1), Point<3>(1, 0, 1), Point<3>(1, 1, 1), Point<3>(0, 1, 1)};
+    return {{Point<3>(0, 0, 0), Point<3>(1, 0, 0), Point<3>(1, 1, 0), Point<3>(0, 1, 0),
+             Point<3>(0, 0, 1), Point<3>(1, 0, 1), Point<3>(1, 1, 1), Point<3>(0, 1, 1)}};
   }
 
   void

@@ -79,7 +79,7 @@ namespace
       {
         std::vector<std::array<double, 3>> x;
         for (const unsigned int v : cell->vertex_indices())
-          x.push_back({cell->vertex(v)[0], cell->vertex(v)[1], cell->vertex(v)[2]});
+          x.push_back({{cell->vertex(v)[0], cell->vertex(v)[1], cell->vertex(v)[2]}});
         std::sort(x.begin(), x.end());
         cells.push_back(x);
       }
@@ -117,7 +117,7 @@ $EndElements
   std::string
   mixed_3d(const std::vector<int> &tag, const bool reordered)
   {
-    const std::array<std::array<double, 3>, 11> x = {{{0, 0, 0},
+    const std::array<Point<3>, 11> x = {{{0, 0, 0},
                                                       {1, 0, 0},
                                                       {1, 1, 0},
                                                       {0, 1, 0},

@@ -46,8 +46,8 @@ namespace
   struct Case
   {
     std::string               name;
-    std::vector<std::array<double, 3>> slave;   // 9 nodes, QuadFace order
-    std::vector<std::array<double, 3>> normals; // nodal normals of the vertices
+    std::vector<Point<3>> slave;   // 9 nodes, QuadFace order
+    std::vector<Point<3>> normals; // nodal normals of the vertices
   };
 
   const std::vector<Case> cases = {

@@ -112,7 +112,7 @@ namespace unit_test_penalty_frictional
       contact.restore_state(*state);
       return F;
     };
-    for (const auto [h, bound] : {std::pair(1e-6, 1e-6), std::pair(1e-7, 1e-7)})
+    for (const auto &[h, bound] : {std::pair(1e-6, 1e-6), std::pair(1e-7, 1e-7)})
       {
         const auto plus = force(h), minus = force(-h);
         double     error = 0.;
