@@ -25,54 +25,6 @@ namespace contact_fem
         below = 0;
       return {below, Utilities::MPI::sum(value, comm)};
     }
-
-    /// The owner rank of a DoF, from every rank's contiguous range of
-    /// locally owned DoFs (n_ranks pairs, as deal.II's own partitioners
-    /// keep). Collective.
-    class DofOwners
-    {
-    public:
-      DofOwners(const IndexSet &owned_dofs, const MPI_Comm comm)
-      {
-        const std::pair<types::global_dof_index, types::global_dof_index> range =
-          owned_dofs.n_elements() == 0 ?
-            std::make_pair(types::global_dof_index(0), types::global_dof_index(0)) :
-            std::make_pair(owned_dofs.nth_index_in_set(0),
-                           owned_dofs.nth_index_in_set(0) + owned_dofs.n_elements());
-        const auto all = Utilities::MPI::all_gather(comm, range);
-        for (unsigned int r = 0; r < all.size(); ++r)
-          if (all[r].second > all[r].first)
-            ranges.push_back({all[r].first, all[r].second, r});
-        std::sort(ranges.begin(), ranges.end());
-      }
-
-      /// The owner of @p dof; invalid_unsigned_int if no range holds it.
-      unsigned int
-      operator()(const types::global_dof_index dof) const
-      {
-        // The last range starting at or before dof.
-        auto it = std::upper_bound(ranges.begin(), ranges.end(), dof,
-                                   [](const types::global_dof_index d, const Range &range) {
-                                     return d < range.first;
-                                   });
-        if (it == ranges.begin() || dof >= std::prev(it)->end)
-          return numbers::invalid_unsigned_int;
-        return std::prev(it)->rank;
-      }
-
-    private:
-      struct Range
-      {
-        types::global_dof_index first, end;
-        unsigned int            rank;
-        bool
-        operator<(const Range &other) const
-        {
-          return first < other.first;
-        }
-      };
-      std::vector<Range> ranges;
-    };
   } // namespace
 
   OwnSurfaceNumbers
@@ -92,9 +44,6 @@ namespace contact_fem
     };
     if (nodes_per_face == 0 || node_dofs.size() % nodes_per_face != 0)
       note("Contact: the node DoFs of the own faces are not whole faces.");
-    if (!owned_dofs.is_contiguous())
-      note("Contact: the surface numbering needs each rank's locally owned DoFs to be one "
-           "contiguous range.");
     const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
     const unsigned int none = numbers::invalid_unsigned_int;
     OwnSurfaceNumbers  result;
@@ -115,13 +64,15 @@ namespace contact_fem
 
     // First exchange: every node's DoF to its owner, which answers with the
     // ranks naming it, ascending (some_to_some's map is by source rank).
-    const DofOwners                                              owner(owned_dofs, comm);
+    // deal.II's lookup of the owners, point to point (no range all-gathered).
+    IndexSet looked_up(owned_dofs.size());
+    looked_up.add_indices(distinct.begin(), distinct.end());
+    looked_up.compress();
+    const std::vector<unsigned int> owner_of =
+      Utilities::MPI::compute_index_owner(owned_dofs, looked_up, comm);
     std::map<unsigned int, std::vector<types::global_dof_index>> asked;
     for (const auto dof : distinct)
-      if (owner(dof) != none)
-        asked[owner(dof)].push_back(dof);
-      else
-        note("Contact: the DoF " + std::to_string(dof) + " of a contact node has no owner.");
+      asked[owner_of[looked_up.index_within_set(dof)]].push_back(dof);
     std::map<unsigned int, std::vector<unsigned int>> answers;
     {
       const auto requests = Utilities::MPI::some_to_some(comm, asked);

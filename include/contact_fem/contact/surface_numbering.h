@@ -38,8 +38,7 @@ namespace contact_fem
    * @p node_dofs holds the first DoF of every node of the rank's own
    * faces, face after face (nodes_per_face per face), in the order they
    * would be gathered in; @p owned_dofs is the rank's locally owned DoFs
-   * (one contiguous range per rank, as deal.II's DoFHandler numbers a
-   * distributed mesh).
+   * (every DoF of @p node_dofs is owned by some rank).
    *
    * A face's number is the exclusive prefix sum of the face counts. A
    * node that a lower rank's face names takes that rank's number; the
