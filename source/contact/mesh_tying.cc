@@ -2,6 +2,7 @@
 // their tractions from the slave residual, and the check that the tied
 // surfaces touch.
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/symmetric_tensor.h>
 
 #include <contact_fem/contact/formulations/constraint_line.h>
 #include <contact_fem/contact/mesh_tying.h>
@@ -58,6 +59,7 @@ namespace contact_fem
     // bridge the discrete mismatch of surfaces that touch.
     surfaces.update(std::vector<double>(surfaces.dofs().size(), 0.), search_factor);
     check_surfaces_touch();
+    find_roller_projectors(dof_handler, dirichlet, comm);
     fixed_values.assign(surfaces.dofs().size(), 0.);
     traction.assign(surfaces.slave_nodes.size(), Tensor<1, dim>());
     slave_force.assign(surfaces.slave_nodes.size(), Tensor<1, dim>());
@@ -66,6 +68,79 @@ namespace contact_fem
     accepted_bond = bond;
     opening.assign(surfaces.slave_nodes.size(), 0.);
     bonds_of_iteration.clear();
+  }
+
+  template <int dim>
+  void
+  MeshTying<dim>::find_roller_projectors(const DoFHandler<dim>           &dof_handler,
+                                         const AffineConstraints<double> &dirichlet,
+                                         const MPI_Comm                   comm)
+  {
+    // A roller's line u_p = sum_d a_d u_d among the node's own components
+    // (InclinedSupports) holds the direction h = e_p - sum_d a_d e_d, its
+    // normal. A line without entries (Fixed, Prescribed displacement, a
+    // roller along an axis) is a fixed component, tied by no line at all.
+    // Known to the DoF's owner only: gathered for every rank.
+    const unsigned int  n = surfaces.nodes.size();
+    std::vector<double> rows(n * dim * dim, 0.);
+    const IndexSet     &owned = dof_handler.locally_owned_dofs();
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const auto &node = surfaces.nodes[k];
+        for (unsigned int p = 0; p < dim; ++p)
+          {
+            const auto dof = node.dofs[p];
+            if (!owned.is_element(dof) || !dirichlet.is_constrained(dof) ||
+                dirichlet.get_inhomogeneity(dof) != 0.)
+              continue;
+            const auto *entries = dirichlet.get_constraint_entries(dof);
+            if (entries == nullptr || entries->empty())
+              continue;
+            std::vector<double> row(dim, 0.);
+            row[p]       = 1.;
+            bool own_dof = true;
+            for (const auto &[j, a] : *entries)
+              {
+                const auto at = std::find(node.dofs.begin(), node.dofs.end(), j);
+                own_dof       = own_dof && at != node.dofs.end();
+                if (at != node.dofs.end())
+                  row[at - node.dofs.begin()] -= a;
+              }
+            if (own_dof)
+              std::copy(row.begin(), row.end(), rows.begin() + (k * dim + p) * dim);
+          }
+      }
+    Utilities::MPI::sum(rows, comm, rows);
+    roller_rows.assign(n, Tensor<2, dim>());
+    for (unsigned int k = 0; k < n; ++k)
+      for (unsigned int p = 0; p < dim; ++p)
+        for (unsigned int d = 0; d < dim; ++d)
+          roller_rows[k][p][d] = rows[(k * dim + p) * dim + d];
+
+    roller_projector.assign(surfaces.slave_nodes.size(),
+                            Tensor<2, dim>(unit_symmetric_tensor<dim>()));
+    for (unsigned int k = 0; k < surfaces.slave_nodes.size(); ++k)
+      {
+        // With a fixed component as well the per-component tying stays.
+        const unsigned int node = surfaces.slave_nodes[k].node;
+        const auto        &fixed = surfaces.nodes[node].fixed;
+        if (std::any_of(fixed.begin(), fixed.end(), [](bool f) { return f; }))
+          continue;
+        std::vector<Tensor<1, dim>> basis; // orthonormal, of the held directions
+        for (unsigned int p = 0; p < dim; ++p)
+          {
+            Tensor<1, dim> h = roller_rows[node][p];
+            if (h.norm() == 0.)
+              continue;
+            const double length = h.norm();
+            for (const auto &b : basis)
+              h -= (h * b) * b;
+            if (h.norm() > 1e-8 * length)
+              basis.push_back(h / h.norm());
+          }
+        for (const auto &b : basis)
+          roller_projector[k] -= outer_product(b, b);
+      }
   }
 
   template <int dim>
@@ -167,6 +242,7 @@ namespace contact_fem
         if (bond[k] != Bond::tied && !all_candidates)
           continue;
         const auto &slave = surfaces.nodes[s.node];
+        const auto &P     = roller_projector[k];
         for (unsigned int d = 0; d < dim; ++d)
           {
             if (slave.fixed[d] || !constraints.can_store_line(slave.dofs[d]) ||
@@ -174,7 +250,20 @@ namespace contact_fem
               continue;
             ConstraintLine line;
             for (const auto &[m, value] : s.M)
-              line.add(surfaces.nodes[m], d, value / s.D, surfaces, fixed_values, test);
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  // A master component on a roller by the roller's line in
+                  // place: a rank need not hold that line to close the chain.
+                  const Tensor<1, dim> &row         = roller_rows[m][c];
+                  const double          coefficient = P[d][c] * value / s.D;
+                  if (row[c] == 0.)
+                    line.add(surfaces.nodes[m], c, coefficient, surfaces, fixed_values, test);
+                  else
+                    for (unsigned int e = 0; e < dim; ++e)
+                      if (e != c)
+                        line.add(surfaces.nodes[m], e, -row[e] * coefficient, surfaces,
+                                 fixed_values, test);
+                }
             line.store(slave.dofs[d], constraints);
           }
       }
@@ -249,16 +338,23 @@ namespace contact_fem
           }
       }
     else
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          if (slave.fixed[d])
-            continue;
-          const double r_d  = r[surfaces.position(slave.dofs[d])];
-          slave_force[k][d] = r_d;
-          at(s.node, d) -= r_d;
-          for (const auto &[m, value] : s.M)
-            at(m, d) += value / s.D * r_d;
-        }
+      {
+        // The lines u_s = P D^-1 M u_m: their part P r of the residual goes
+        // to the masters, the rest (n . r) n stays as the roller's reaction.
+        Tensor<1, dim> r_s;
+        for (unsigned int d = 0; d < dim; ++d)
+          if (!slave.fixed[d])
+            r_s[d] = r[surfaces.position(slave.dofs[d])];
+        slave_force[k] = roller_projector[k] * r_s;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            if (slave.fixed[d])
+              continue;
+            at(s.node, d) -= slave_force[k][d];
+            for (const auto &[m, value] : s.M)
+              at(m, d) += value / s.D * slave_force[k][d];
+          }
+      }
     traction[k] = slave_force[k] / s.D;
   }
 

@@ -1560,6 +1560,58 @@ namespace contact_fem
   }
 
   template <int dim>
+  void
+  check_folded_cells(const Triangulation<dim> &coarse,
+                     const std::string        &file,
+                     const Point<3>           &origin)
+  {
+    unsigned int n_folded = 0;
+    Point<dim>   first;
+    for (const auto &cell : coarse.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        {
+          if (cell->at_boundary(f) || cell->neighbor_index(f) < cell->index())
+            continue;
+          const auto     face = cell->face(f);
+          Tensor<1, dim> normal; // from the corners: the sign does not matter here
+          if constexpr (dim == 2)
+            {
+              const Tensor<1, dim> t = face->vertex(1) - face->vertex(0);
+              normal[0]              = t[1];
+              normal[1]              = -t[0];
+            }
+          else
+            normal = cross_product_3d(face->vertex(3) - face->vertex(0),
+                                      face->vertex(2) - face->vertex(1));
+          // The centre of a cell with positive corner Jacobians lies on its
+          // side of each of its faces: on opposite sides of a shared face.
+          const double here  = (cell->center() - face->center()) * normal;
+          const double there = (cell->neighbor(f)->center() - face->center()) * normal;
+          if (here * there > 0. && n_folded++ == 0)
+            first = face->center();
+        }
+    if (n_folded == 0)
+      return;
+    Point<dim> in_file;
+    for (unsigned int d = 0; d < dim; ++d)
+      in_file[d] = first[d] + origin[d];
+    AssertThrow(false,
+                ExcMessage(mesh_key + ": '" + file +
+                           "': the mesh folds over itself: the two cells of the " +
+                           (dim == 2 ? "edge" : "face") + " centred at " +
+                           coordinates_text(in_file) + " lie on the same side of it" +
+                           (n_folded > 1 ? " (and at " + std::to_string(n_folded - 1) +
+                                             " more internal " + (dim == 2 ? "edges" : "faces") +
+                                             ")" :
+                                           std::string()) +
+                           ": an element there is inverted (a node lies beyond the opposite " +
+                           (dim == 2 ? "edge" : "face") +
+                           " of the element), so the cells overlap their neighbours. "
+                           "Elements listed in the opposite turn are taken (and reordered), "
+                           "a tangled mesh is not: remesh, or fix the node coordinates."));
+  }
+
+  template <int dim>
   bool
   is_inverted(const typename Triangulation<dim>::cell_iterator &cell)
   {
@@ -1582,6 +1634,10 @@ namespace contact_fem
   read_gmsh<2>(const std::string &, Triangulation<2> &);
   template MeshFileInfo
   read_gmsh<3>(const std::string &, Triangulation<3> &);
+  template void
+  check_folded_cells<2>(const Triangulation<2> &, const std::string &, const Point<3> &);
+  template void
+  check_folded_cells<3>(const Triangulation<3> &, const std::string &, const Point<3> &);
   template void
   check_unmerged_vertices<2>(const Triangulation<2> &, const std::string &);
   template void

@@ -395,6 +395,7 @@ namespace contact_fem
     mesh_note  = info.split_note;
     facet_note = info.orphan_note;
     check_unmerged_vertices(*coarse, mesh_file);
+    check_folded_cells(*coarse, mesh_file, info.frame_origin);
     check_boundary_manifolds(manifolds, *coarse, key);
     set_manifold_ids(manifolds, curved_interior(), *coarse);
     check_refinement_on_manifolds(manifolds, curved_interior(), *coarse, key);

@@ -244,8 +244,27 @@ namespace contact_fem
                   const std::vector<double> &r,
                   std::vector<double>       &correction);
 
+    /// Sets roller_rows and roller_projector from the lines of @p dirichlet
+    /// (each owner its nodes, summed over @p comm).
+    void
+    find_roller_projectors(const DoFHandler<dim>           &dof_handler,
+                           const AffineConstraints<double> &dirichlet,
+                           const MPI_Comm                   comm);
+
     ContactInterface<dim> surfaces;
     std::vector<double>   fixed_values; ///< at dofs()
+    /// Per entry of surfaces.slave_nodes: the projector onto the plane that
+    /// its rollers leave free (I - sum n n^T over the normals of the
+    /// Boundary conditions/Rollers lines of the node; the identity without
+    /// one). The node is tied by u_s = P D^-1 M u_m, which holds n . u_s = 0
+    /// itself: tying a component of an axis alone would replace the roller's
+    /// line (the tying line comes first) by one the exact state does not
+    /// meet, so the answer depended on how the model is turned.
+    std::vector<Tensor<2, dim>> roller_projector;
+    /// Per entry of surfaces.nodes: row p is the direction h the roller's
+    /// line of component p holds (h_p = 1; zero rows for components without
+    /// such a line).
+    std::vector<Tensor<2, dim>> roller_rows;
     /// Per entry of surfaces.slave_nodes: the tying traction (on the slave).
     std::vector<Tensor<1, dim>> traction;
     /// Per entry of surfaces.slave_nodes: the residual r_j it came from.

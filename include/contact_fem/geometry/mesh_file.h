@@ -81,6 +81,22 @@ namespace contact_fem
   void
   check_unmerged_vertices(const Triangulation<dim> &coarse, const std::string &file);
 
+  /**
+   * Throws if @p coarse folds over itself: the two cells of an internal
+   * face lie on the same side of it. A tangled mesh (a node moved across
+   * the opposite edge or face of its elements) has such inverted elements;
+   * deal.II's reader reorders each one to a positive Jacobian, so the cells
+   * overlap their neighbours and the run solved a body that is not the
+   * file's, without a word. Elements listed in the other turn (every
+   * element, or some of them) are no fold and pass. @p origin is added to
+   * the position in the message (the file's coordinates).
+   */
+  template <int dim>
+  void
+  check_folded_cells(const Triangulation<dim> &coarse,
+                     const std::string        &file,
+                     const Point<3>           &origin);
+
   /// A boundary id whose faces look like a polygonal approximation of a
   /// curved surface (see find_polygonal_boundaries()).
   template <int dim>
