@@ -165,7 +165,7 @@ namespace contact_fem
   template <int dim>
   void
   ContactInterface<dim>::check_faces_within_reach(const std::vector<FaceGeometry> &geometries,
-                                                  const double               search_factor,
+                                                  const double                     search_factor,
                                                   const std::vector<double> &motion_allowance) const
   {
     // This rank's faces as their owner sees them, with the boxes and reach
@@ -174,11 +174,12 @@ namespace contact_fem
     for (unsigned int f = own_faces.first; f < own_faces.second; ++f)
       {
         ReachFace<dim> face;
-        face.face  = f;
-        face.pair  = faces[f].pair;
-        face.slave = faces[f].slave;
-        face.box   = BoundingBox<dim>(geometries[f].nodes);
-        face.nodes = faces[f].nodes;
+        face.face   = f;
+        face.pair   = faces[f].pair;
+        face.slave  = faces[f].slave;
+        face.box    = BoundingBox<dim>(geometries[f].nodes);
+        face.nodes  = faces[f].nodes;
+        face.record = face_record(f);
         if (face.slave)
           face.reach = search_factor * face_lengths[f] +
                        (motion_allowance.empty() ? 0. : motion_allowance[face.pair]);
@@ -186,11 +187,17 @@ namespace contact_fem
           face.box.extend(master_box_margin * face_lengths[f]);
         own.push_back(std::move(face));
       }
-    std::string error;
+    std::string               error;
     std::vector<unsigned int> exchanged;
+    unsigned int              n_wrong_records = 0;
     try
       {
-        exchanged = faces_within_reach(own, mpi_communicator);
+        for (const auto &face : faces_within_reach(own, mpi_communicator))
+          {
+            exchanged.push_back(face.face);
+            if (face.nodes != faces[face.face].nodes || face.record != face_record(face.face))
+              ++n_wrong_records;
+          }
       }
     catch (const std::exception &e)
       {
@@ -200,24 +207,47 @@ namespace contact_fem
     for (unsigned int f = 0; f < within_reach.size(); ++f)
       if (within_reach[f])
         projected.push_back(f);
-    if (error.empty() && exchanged != projected)
+    if (error.empty() && (exchanged != projected || n_wrong_records > 0))
       {
         std::vector<unsigned int> missing, extra;
-        std::set_difference(projected.begin(), projected.end(), exchanged.begin(),
-                            exchanged.end(), std::back_inserter(missing));
-        std::set_difference(exchanged.begin(), exchanged.end(), projected.begin(),
-                            projected.end(), std::back_inserter(extra));
+        std::set_difference(projected.begin(), projected.end(), exchanged.begin(), exchanged.end(),
+                            std::back_inserter(missing));
+        std::set_difference(exchanged.begin(), exchanged.end(), projected.begin(), projected.end(),
+                            std::back_inserter(extra));
         error = "Contact (check of CONTACT_FEM_CHECK_HELD_STATE): on rank " +
                 std::to_string(Utilities::MPI::this_mpi_process(mpi_communicator)) +
                 ", the faces within reach found by the exchange of boxes "
                 "(faces_within_reach()) differ from those of the gathered surface: " +
-                std::to_string(exchanged.size()) + " against " +
-                std::to_string(projected.size()) + ", " + std::to_string(missing.size()) +
-                " missing" + (missing.empty() ? "" : " (face " + std::to_string(missing[0]) + ")") +
-                ", " + std::to_string(extra.size()) + " extra" +
-                (extra.empty() ? "" : " (face " + std::to_string(extra[0]) + ")") + ".";
+                std::to_string(exchanged.size()) + " against " + std::to_string(projected.size()) +
+                ", " + std::to_string(missing.size()) + " missing" +
+                (missing.empty() ? "" : " (face " + std::to_string(missing[0]) + ")") + ", " +
+                std::to_string(extra.size()) + " extra" +
+                (extra.empty() ? "" : " (face " + std::to_string(extra[0]) + ")") + ", " +
+                std::to_string(n_wrong_records) + " with other nodes or another record.";
       }
     stop_on_every_rank(error);
+  }
+
+  template <int dim>
+  std::vector<double>
+  ContactInterface<dim>::face_record(const unsigned int f) const
+  {
+    const Face         &face = faces[f];
+    std::vector<double> record{static_cast<double>(face.pair), face.slave ? 1. : 0.,
+                               face.youngs_modulus, face.poisson_ratio, face.orientation};
+    for (const unsigned int n : face.nodes)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          record.push_back(nodes[n].reference[d]);
+        for (unsigned int d = 0; d < dim; ++d)
+          record.push_back(static_cast<double>(nodes[n].dofs[d]));
+        for (unsigned int d = 0; d < dim; ++d)
+          record.push_back(nodes[n].fixed[d] ? 1. : 0.);
+      }
+    for (const auto &x : face.geometry_points)
+      for (unsigned int d = 0; d < dim; ++d)
+        record.push_back(x[d]);
+    return record;
   }
 
   namespace

@@ -33,6 +33,8 @@ namespace contact_fem
       out.push_back(face.nodes.size());
       for (const unsigned int n : face.nodes)
         out.push_back(n);
+      out.push_back(face.record.size());
+      out.insert(out.end(), face.record.begin(), face.record.end());
     }
 
     /// The faces append_face() wrote into @p in.
@@ -52,11 +54,14 @@ namespace contact_fem
             low[d] = in[i++];
           for (unsigned int d = 0; d < dim; ++d)
             high[d] = in[i++];
-          face.box             = BoundingBox<dim>(std::make_pair(low, high));
-          face.reach           = in[i++];
-          const auto n_nodes   = static_cast<unsigned int>(in[i++]);
+          face.box           = BoundingBox<dim>(std::make_pair(low, high));
+          face.reach         = in[i++];
+          const auto n_nodes = static_cast<unsigned int>(in[i++]);
           for (unsigned int k = 0; k < n_nodes; ++k)
             face.nodes.push_back(static_cast<unsigned int>(in[i++]));
+          const auto n_record = static_cast<std::size_t>(in[i++]);
+          face.record.assign(in.begin() + i, in.begin() + i + n_record);
+          i += n_record;
           faces.push_back(std::move(face));
         }
       return faces;
@@ -65,15 +70,17 @@ namespace contact_fem
     /**
      * Sends each face of @p offered to the other ranks whose boxes @p asked
      * (all-gathered as a level of their R-tree, which contains them) its box
-     * meets; returns the faces sent to this rank. A superset of what the
-     * receiver selects, never less: an R-tree's node boxes contain its
+     * meets, unless @p sent holds it for that rank already (then adds
+     * it there); returns the faces sent to this rank. A superset of what
+     * the receiver selects, never less: an R-tree's node boxes contain its
      * entries.
      */
     template <int dim>
     std::vector<ReachFace<dim>>
-    exchange(const std::vector<BoundingBox<dim>>     &asked,
-             const std::vector<const ReachFace<dim> *> &offered,
-             const MPI_Comm                            comm)
+    exchange(const std::vector<BoundingBox<dim>>             &asked,
+             const std::vector<const ReachFace<dim> *>       &offered,
+             std::set<std::pair<unsigned int, unsigned int>> &sent,
+             const MPI_Comm                                   comm)
     {
       std::vector<double> coarse;
       if (!asked.empty())
@@ -111,7 +118,8 @@ namespace contact_fem
               for (const auto &hit : hits)
                 to.insert(hit.second);
               for (const unsigned int r : to)
-                append_face(outgoing[r], *face);
+                if (sent.emplace(face->face, r).second)
+                  append_face(outgoing[r], *face);
             }
         }
       std::vector<ReachFace<dim>> received;
@@ -123,13 +131,13 @@ namespace contact_fem
   } // namespace
 
   template <int dim>
-  std::vector<unsigned int>
+  std::vector<ReachFace<dim>>
   faces_within_reach(const std::vector<ReachFace<dim>> &own, const MPI_Comm comm)
   {
     // Round 1: the master faces that may be candidates of the own slave
     // faces; then the candidates exactly, by the broad phase's test.
-    std::vector<BoundingBox<dim>>         reach_boxes;
-    std::vector<const ReachFace<dim> *>   own_slaves, own_masters, own_all;
+    std::vector<BoundingBox<dim>>       reach_boxes;
+    std::vector<const ReachFace<dim> *> own_slaves, own_masters, own_all;
     for (const auto &face : own)
       {
         own_all.push_back(&face);
@@ -143,28 +151,33 @@ namespace contact_fem
         else
           own_masters.push_back(&face);
       }
-    const std::vector<ReachFace<dim>> sent_masters = exchange(reach_boxes, own_masters, comm);
-    std::vector<const ReachFace<dim> *> masters = own_masters;
+    std::set<std::pair<unsigned int, unsigned int>> sent; // (face, rank)
+    // Every face this rank has: its own and those sent to it, by number.
+    std::map<unsigned int, const ReachFace<dim> *> known;
+    for (const auto &face : own)
+      known[face.face] = &face;
+    const std::vector<ReachFace<dim>> sent_masters = exchange(reach_boxes, own_masters, sent, comm);
     for (const auto &face : sent_masters)
-      masters.push_back(&face);
+      known[face.face] = &face;
 
-    std::vector<const ReachFace<dim> *> core = own_slaves;
+    std::set<unsigned int> core; // face numbers
     {
+      std::vector<const ReachFace<dim> *> masters = own_masters;
+      for (const auto &face : sent_masters)
+        masters.push_back(&face);
       std::vector<std::pair<BoundingBox<dim>, unsigned int>> master_boxes;
       for (unsigned int i = 0; i < masters.size(); ++i)
         master_boxes.emplace_back(masters[i]->box, i);
-      const auto        tree = pack_rtree(master_boxes);
-      std::set<unsigned int> candidates; // places in masters
+      const auto tree = pack_rtree(master_boxes);
       for (unsigned int s = 0; s < own_slaves.size(); ++s)
         {
+          core.insert(own_slaves[s]->face);
           std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
           tree.query(boost::geometry::index::intersects(reach_boxes[s]), std::back_inserter(hits));
           for (const auto &hit : hits)
             if (masters[hit.second]->pair == own_slaves[s]->pair)
-              candidates.insert(hit.second);
+              core.insert(masters[hit.second]->face);
         }
-      for (const unsigned int i : candidates)
-        core.push_back(masters[i]);
     }
 
     // Round 2: the faces sharing a node with the core. A shared node lies
@@ -173,33 +186,30 @@ namespace contact_fem
     // round-off.
     std::vector<BoundingBox<dim>> core_boxes;
     std::set<unsigned int>        core_nodes;
-    for (const ReachFace<dim> *face : core)
+    for (const unsigned int f : core)
       {
-        BoundingBox<dim> box = face->box;
+        BoundingBox<dim> box = known.at(f)->box;
         const auto      &c   = box.get_boundary_points();
         box.extend(1e-10 * c.first.distance(c.second));
         core_boxes.push_back(box);
-        core_nodes.insert(face->nodes.begin(), face->nodes.end());
+        core_nodes.insert(known.at(f)->nodes.begin(), known.at(f)->nodes.end());
       }
-    const std::vector<ReachFace<dim>> sent_ring = exchange(core_boxes, own_all, comm);
-
-    std::set<unsigned int> held;
-    for (const ReachFace<dim> *face : core)
-      held.insert(face->face);
-    const auto add_if_in_ring = [&](const ReachFace<dim> &face) {
-      if (std::any_of(face.nodes.begin(), face.nodes.end(),
-                      [&](const unsigned int n) { return core_nodes.count(n) > 0; }))
-        held.insert(face.face);
-    };
-    for (const auto &face : own)
-      add_if_in_ring(face);
+    const std::vector<ReachFace<dim>> sent_ring = exchange(core_boxes, own_all, sent, comm);
     for (const auto &face : sent_ring)
-      add_if_in_ring(face);
-    return {held.begin(), held.end()};
+      known[face.face] = &face;
+
+    std::vector<ReachFace<dim>> held;
+    for (const auto &[f, face] : known)
+      if (core.count(f) > 0 ||
+          std::any_of(face->nodes.begin(), face->nodes.end(), [&](const unsigned int n) {
+            return core_nodes.count(n) > 0;
+          }))
+        held.push_back(*face);
+    return held;
   }
 
-  template std::vector<unsigned int>
+  template std::vector<ReachFace<2>>
   faces_within_reach(const std::vector<ReachFace<2>> &, const MPI_Comm);
-  template std::vector<unsigned int>
+  template std::vector<ReachFace<3>>
   faces_within_reach(const std::vector<ReachFace<3>> &, const MPI_Comm);
 } // namespace contact_fem

@@ -10,8 +10,8 @@
 // shares the nodes of pair 0's master grid along one edge (a chain through
 // shared nodes) with its master far away. Printed: the counts that show the
 // cases were there (other ranks' faces held as candidates and as the ring),
-// and whether every rank found the faces of the rule (the test stops
-// otherwise). By hand it also passed on 1, 3, 4 and 5 ranks.
+// and whether every rank found the faces of the rule with their nodes and
+// records (the test stops otherwise). By hand it also passed on 1, 3, 4 and 5 ranks.
 
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/mpi.h>
@@ -44,19 +44,19 @@ namespace
   /// x = x0), appended to @p faces.
   template <int dim>
   void
-  add_grid(std::vector<ReachFace<dim>> &faces,
-           std::vector<Point<dim>>    &points,
-           const unsigned int          pair,
-           const bool                  slave,
-           const double                x0,
-           const double                y0,
-           const double                z,
-           const double                h,
-           const unsigned int          n,
-           unsigned long              &state,
+  add_grid(std::vector<ReachFace<dim>>     &faces,
+           std::vector<Point<dim>>         &points,
+           const unsigned int               pair,
+           const bool                       slave,
+           const double                     x0,
+           const double                     y0,
+           const double                     z,
+           const double                     h,
+           const unsigned int               n,
+           unsigned long                   &state,
            const std::vector<unsigned int> &shared_row = {})
   {
-    const unsigned int n_rows = dim == 3 ? n + 1 : 1;
+    const unsigned int                     n_rows = dim == 3 ? n + 1 : 1;
     std::vector<std::vector<unsigned int>> node(n + 1, std::vector<unsigned int>(n_rows));
     for (unsigned int i = 0; i <= n; ++i)
       for (unsigned int j = 0; j < n_rows; ++j)
@@ -131,8 +131,7 @@ namespace
     std::vector<unsigned int> row;
     for (unsigned int j = 0; j < (dim == 3 ? n / 2 + 1 : 1); ++j)
       row.push_back(first_master_node + (n / 2) * (dim == 3 ? n / 2 + 1 : 1) + j);
-    add_grid<dim>(faces, points, 1, true, points[row[0]][0], -0.1, 0.4 / n, 1.4 / n, 3, state,
-                  row);
+    add_grid<dim>(faces, points, 1, true, points[row[0]][0], -0.1, 0.4 / n, 1.4 / n, 3, state, row);
     add_grid<dim>(faces, points, 1, false, 20., 20., 20., 1. / n, 3, state);
 
     // The owners: slabs along x, as a partition of the cells would give,
@@ -143,8 +142,8 @@ namespace
       {
         const auto  &box    = faces[f].box.get_boundary_points();
         const double centre = 0.5 * (box.first[0] + box.second[0]);
-        owner[f] = std::min(n_ranks - 1, static_cast<unsigned int>(
-                                           std::max(0., centre * n_ranks / 1.8)));
+        owner[f] =
+          std::min(n_ranks - 1, static_cast<unsigned int>(std::max(0., centre * n_ranks / 1.8)));
         if (random(state) > 0.75)
           owner[f] = static_cast<unsigned int>((random(state) + 1.) * 0.5 * n_ranks) % n_ranks;
         if (owner[f] == rank)
@@ -167,13 +166,27 @@ namespace
     for (const unsigned int f : core)
       core_nodes.insert(faces[f].nodes.begin(), faces[f].nodes.end());
     for (const auto &face : faces)
-      if (std::any_of(face.nodes.begin(), face.nodes.end(),
-                      [&](const unsigned int k) { return core_nodes.count(k) > 0; }))
+      if (std::any_of(face.nodes.begin(), face.nodes.end(), [&](const unsigned int k) {
+            return core_nodes.count(k) > 0;
+          }))
         rule.insert(face.face);
     rule.insert(core.begin(), core.end());
 
-    const std::vector<unsigned int> found = faces_within_reach(own, comm);
-    const bool equal      = found == std::vector<unsigned int>(rule.begin(), rule.end());
+    // Each face carries a record (its number and pair, a stand-in for the
+    // owner's packed data), which must arrive unchanged.
+    for (auto &face : own)
+      face.record = {static_cast<double>(face.face), 0.5 + face.pair};
+    std::vector<unsigned int> found;
+    bool                      records_arrived = true;
+    for (const auto &face : faces_within_reach(own, comm))
+      {
+        found.push_back(face.face);
+        records_arrived =
+          records_arrived && face.nodes == faces[face.face].nodes &&
+          face.record == std::vector<double>{static_cast<double>(face.face), 0.5 + face.pair};
+      }
+    const bool equal =
+      found == std::vector<unsigned int>(rule.begin(), rule.end()) && records_arrived;
     const bool every_rank = Utilities::MPI::min(equal ? 1u : 0u, comm) == 1;
     // Whether some held face is another rank's master face and some is
     // another rank's face of the ring only (the cases the exchange is for).
@@ -189,8 +202,8 @@ namespace
       std::cout << dim << "D: " << faces.size() << " faces on 2 pairs; held per rank " << fewest
                 << " to " << most << "; other ranks' candidate masters held " << sent_masters
                 << ", other ranks' faces of the ring held " << sent_ring
-                << "; the faces of the rule on every rank: " << (every_rank ? "yes" : "NO")
-                << std::endl;
+                << "; the faces of the rule with their records on every rank: "
+                << (every_rank ? "yes" : "NO") << std::endl;
     AssertThrow(every_rank, ExcMessage("faces_within_reach() differs from the rule."));
   }
 } // namespace

@@ -699,12 +699,17 @@ namespace contact_fem
     /// The check of faces_within_reach() (checking_held_state()): the faces
     /// it finds from this rank's own faces by exchanging boxes must be those
     /// update() marked within reach on the gathered surface (@p geometries,
-    /// the search's @p search_factor and @p motion_allowance); stops every
-    /// rank otherwise. Collective.
+    /// the search's @p search_factor and @p motion_allowance), with their
+    /// nodes and records; stops every rank otherwise. Collective.
     void
     check_faces_within_reach(const std::vector<FaceGeometry> &geometries,
                              const double                     search_factor,
                              const std::vector<double>       &motion_allowance) const;
+
+    /// The record of face @p f as initialize() packs it (face_record_size()),
+    /// from the gathered surface.
+    std::vector<double>
+    face_record(const unsigned int f) const;
 
     /// Builds nodes and faces from the face records of every rank (@p all,
     /// as packed by initialize()), counting the faces per rank.

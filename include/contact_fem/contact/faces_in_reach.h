@@ -16,8 +16,8 @@ namespace contact_fem
   template <int dim>
   struct ReachFace
   {
-    unsigned int face = 0; ///< its global number
-    unsigned int pair = 0;
+    unsigned int face  = 0; ///< its global number
+    unsigned int pair  = 0;
     bool         slave = false;
     /// The box of its nodes at the search configuration; a master face's
     /// with the broad phase's margin (master_box_margin).
@@ -27,6 +27,9 @@ namespace contact_fem
     double reach = 0.;
     /// The global numbers of its nodes.
     std::vector<unsigned int> nodes;
+    /// The owner's record of the face (as ContactInterface::initialize()
+    /// packs it), carried to the ranks that hold the face, not read.
+    std::vector<double> record;
   };
 
   /// The margin of a master face's box in the broad phase, relative to the
@@ -34,8 +37,8 @@ namespace contact_fem
   constexpr double master_box_margin = 1e-2;
 
   /**
-   * The global numbers (sorted) of the faces a rank holds at a search, from
-   * its own faces @p own alone (issue 32 item 1): its slave faces, the
+   * The faces a rank holds at a search, sorted by number, with their
+   * records, from its own faces @p own alone (issue 32 item 1): its slave faces, the
    * master faces of the same pair whose boxes meet a slave face's box
    * enlarged by its reach (the broad phase's candidates), and every face
    * sharing a node with one of those (the nodal normals and sizes sum over
@@ -47,11 +50,12 @@ namespace contact_fem
    * R-tree of the boxes the rank asks about) and a point-to-point exchange
    * of the faces that meet them (Utilities::MPI::some_to_some()); the
    * receiver then selects exactly: the candidates by the same box test as
-   * the broad phase, the ring by shared node numbers. A rank holds its own
-   * faces and the faces sent to it, never the whole surface.
+   * the broad phase, the ring by shared node numbers. A face goes to a
+   * rank at most once. A rank holds its own faces and the faces sent to it,
+   * never the whole surface.
    */
   template <int dim>
-  std::vector<unsigned int>
+  std::vector<ReachFace<dim>>
   faces_within_reach(const std::vector<ReachFace<dim>> &own, const MPI_Comm comm);
 } // namespace contact_fem
 
