@@ -10,6 +10,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <contact_fem/contact/contact_interface.h>
+#include <contact_fem/contact/faces_in_reach.h>
 #include <contact_fem/core/parameters.h>
 
 #include <algorithm>
@@ -137,9 +138,8 @@ namespace contact_fem
       search_pair(p, geometries, measures, search_factor,
                   motion_allowance.empty() ? 0. : motion_allowance[p], slave_data, M_of_node,
                   weighted_gap_of_node);
-    // The faces within reach (search_pair() marked the own slave faces,
-    // their candidate masters and the slave faces coupled to the own master
-    // faces): and those sharing a node with them.
+    // The faces within reach (search_pair() marked the own slave faces and
+    // their candidate masters) and those sharing a node with them.
     {
       std::vector<char> node_within(nodes.size(), 0);
       for (unsigned int f = 0; f < faces.size(); ++f)
@@ -153,11 +153,101 @@ namespace contact_fem
             return node_within[n] != 0;
           });
     }
+    if (checking_held_state())
+      check_faces_within_reach(geometries, search_factor, motion_allowance);
     master_surface_normals = surface_node_normals(geometries, measures, false);
     store_slave_nodes(slave_data, M_of_node, weighted_gap_of_node, u_at_dofs, slave_surface_normals,
                       master_surface_normals);
     close_ghosts();
     close_lines();
+  }
+
+  template <int dim>
+  void
+  ContactInterface<dim>::check_faces_within_reach(const std::vector<FaceGeometry> &geometries,
+                                                  const double                     search_factor,
+                                                  const std::vector<double> &motion_allowance) const
+  {
+    // This rank's faces as their owner sees them, with the boxes and reach
+    // of search_pair()'s broad phase.
+    std::vector<ReachFace<dim>> own;
+    for (unsigned int f = own_faces.first; f < own_faces.second; ++f)
+      {
+        ReachFace<dim> face;
+        face.face   = f;
+        face.pair   = faces[f].pair;
+        face.slave  = faces[f].slave;
+        face.box    = BoundingBox<dim>(geometries[f].nodes);
+        face.nodes  = faces[f].nodes;
+        face.record = face_record(f);
+        if (face.slave)
+          face.reach = search_factor * face_lengths[f] +
+                       (motion_allowance.empty() ? 0. : motion_allowance[face.pair]);
+        else
+          face.box.extend(master_box_margin * face_lengths[f]);
+        own.push_back(std::move(face));
+      }
+    std::string               error;
+    std::vector<unsigned int> exchanged;
+    unsigned int              n_wrong_records = 0;
+    try
+      {
+        for (const auto &face : faces_within_reach(own, mpi_communicator))
+          {
+            exchanged.push_back(face.face);
+            if (face.nodes != faces[face.face].nodes || face.record != face_record(face.face))
+              ++n_wrong_records;
+          }
+      }
+    catch (const std::exception &e)
+      {
+        error = user_message(e);
+      }
+    std::vector<unsigned int> projected;
+    for (unsigned int f = 0; f < within_reach.size(); ++f)
+      if (within_reach[f])
+        projected.push_back(f);
+    if (error.empty() && (exchanged != projected || n_wrong_records > 0))
+      {
+        std::vector<unsigned int> missing, extra;
+        std::set_difference(projected.begin(), projected.end(), exchanged.begin(), exchanged.end(),
+                            std::back_inserter(missing));
+        std::set_difference(exchanged.begin(), exchanged.end(), projected.begin(), projected.end(),
+                            std::back_inserter(extra));
+        error = "Contact (check of CONTACT_FEM_CHECK_HELD_STATE): on rank " +
+                std::to_string(Utilities::MPI::this_mpi_process(mpi_communicator)) +
+                ", the faces within reach found by the exchange of boxes "
+                "(faces_within_reach()) differ from those of the gathered surface: " +
+                std::to_string(exchanged.size()) + " against " + std::to_string(projected.size()) +
+                ", " + std::to_string(missing.size()) + " missing" +
+                (missing.empty() ? "" : " (face " + std::to_string(missing[0]) + ")") + ", " +
+                std::to_string(extra.size()) + " extra" +
+                (extra.empty() ? "" : " (face " + std::to_string(extra[0]) + ")") + ", " +
+                std::to_string(n_wrong_records) + " with other nodes or another record.";
+      }
+    stop_on_every_rank(error);
+  }
+
+  template <int dim>
+  std::vector<double>
+  ContactInterface<dim>::face_record(const unsigned int f) const
+  {
+    const Face         &face = faces[f];
+    std::vector<double> record{static_cast<double>(face.pair), face.slave ? 1. : 0.,
+                               face.youngs_modulus, face.poisson_ratio, face.orientation};
+    for (const unsigned int n : face.nodes)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          record.push_back(nodes[n].reference[d]);
+        for (unsigned int d = 0; d < dim; ++d)
+          record.push_back(static_cast<double>(nodes[n].dofs[d]));
+        for (unsigned int d = 0; d < dim; ++d)
+          record.push_back(nodes[n].fixed[d] ? 1. : 0.);
+      }
+    for (const auto &x : face.geometry_points)
+      for (unsigned int d = 0; d < dim; ++d)
+        record.push_back(x[d]);
+    return record;
   }
 
   namespace
@@ -335,7 +425,6 @@ namespace contact_fem
     using Kernel = Mortar::Kernel<dim>;
     // Broad phase: an R-tree of the master face boxes, with a margin so
     // that touching boxes of flat faces meet.
-    constexpr double                                       master_box_margin = 1e-2;
     std::vector<std::pair<BoundingBox<dim>, unsigned int>> master_boxes;
     std::vector<double>                                    reach(faces.size(), 0.);
     for (unsigned int f = 0; f < faces.size(); ++f)
@@ -388,13 +477,7 @@ namespace contact_fem
     for (const auto &[f, segments] : segments_of_face)
       {
         for (const auto &segment : segments)
-          {
-            master_is_candidate[segment.first] = true;
-            // A slave face coupled to this rank's master face: its nodes'
-            // M reach the rank's master DoFs (the forces there).
-            if (segment.first >= own_faces.first && segment.first < own_faces.second)
-              within_reach[f] = 1;
-          }
+          master_is_candidate[segment.first] = true;
         if (!add_constrained_face(f, segments, slave_data, M_of_node, weighted_gap_of_node))
           for (const auto &[m, ops] : segments)
             add_segment(f, m, ops, slave_data, M_of_node, weighted_gap_of_node);

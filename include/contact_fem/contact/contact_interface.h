@@ -448,12 +448,13 @@ namespace contact_fem
       /// The faces a rank would hold if it held only those within reach
       /// of its own (the memory clause of issue 32 item 1, not yet done):
       /// its slave faces, the master faces their search boxes (enlarged by
-      /// the search's reach) meet, the slave faces coupled to its own
-      /// master faces (the forces at its master DoFs), and the faces
-      /// sharing a node with any of those (the nodal normals and sizes sum
-      /// over them); and the interface
-      /// DoFs of their nodes. At the last search; every rank still holds
-      /// every face.
+      /// the search's reach) meet, and the faces sharing a node with any of
+      /// those (the nodal normals and sizes sum over them); and the
+      /// interface DoFs of their nodes. The master-side forces of its
+      /// segments are to go to the master DoFs' owners as values, so not
+      /// the slave faces coupled to its own master faces. At the last
+      /// search (faces_within_reach() finds them without the gathered
+      /// surface); every rank still holds every face.
       unsigned int faces_within_reach = 0, dofs_within_reach = 0;
       /// Bytes of the interface's per-face and per-node data (faces,
       /// nodes, slave nodes with their M, the interface DoFs and their
@@ -694,6 +695,21 @@ namespace contact_fem
     check_own_numbering(const std::vector<double> &packed,
                         const unsigned int         nodes_per_face,
                         const unsigned int         n_geometry_points) const;
+
+    /// The check of faces_within_reach() (checking_held_state()): the faces
+    /// it finds from this rank's own faces by exchanging boxes must be those
+    /// update() marked within reach on the gathered surface (@p geometries,
+    /// the search's @p search_factor and @p motion_allowance), with their
+    /// nodes and records; stops every rank otherwise. Collective.
+    void
+    check_faces_within_reach(const std::vector<FaceGeometry> &geometries,
+                             const double                     search_factor,
+                             const std::vector<double>       &motion_allowance) const;
+
+    /// The record of face @p f as initialize() packs it (face_record_size()),
+    /// from the gathered surface.
+    std::vector<double>
+    face_record(const unsigned int f) const;
 
     /// Builds nodes and faces from the face records of every rank (@p all,
     /// as packed by initialize()), counting the faces per rank.
