@@ -471,42 +471,86 @@ namespace contact_fem
     const auto segments_of_face =
       unpack_segments(Utilities::MPI::all_gather(mpi_communicator, mine));
 
-    std::vector<bool> master_is_candidate(faces.size(), false);
-    double            slave_measure = 0., slave_modulus = 0.;
-    unsigned int      n_overlapping_faces = 0;
-    for (const auto &[f, segments] : segments_of_face)
+    // The statistics weigh each face by its share in the contact zone, so
+    // that they are continuous in the geometry (the same for the scene
+    // turned, moved or rescaled): a segment weighs its overlap measure
+    // (sum_j D_j: the dual functions sum to one), in full up to a mean
+    // separation over the overlap of half the search distance (the search
+    // factor times the slave face's side: the reach without the motion
+    // allowance, which varies with the step and the axes of the prescribed
+    // displacements), then less, linearly to nothing at that distance,
+    // beyond which the broad phase's axis-aligned boxes may or may not find
+    // the pair, depending on the orientation. A sliver weighs nearly
+    // nothing. Per face: the weight w, w / measure (its overlapped
+    // fraction, which counts a fully overlapped face as one) and w E.
+    struct Weights
+    {
+      double overlap = 0., fraction = 0., modulus = 0.;
+    };
+    std::map<unsigned int, Weights> slave_weights, master_weights;
+    for (const bool taper : {true, false})
       {
-        for (const auto &segment : segments)
-          master_is_candidate[segment.first] = true;
-        if (!add_constrained_face(f, segments, slave_data, M_of_node, weighted_gap_of_node))
+        for (const auto &[f, segments] : segments_of_face)
           for (const auto &[m, ops] : segments)
-            add_segment(f, m, ops, slave_data, M_of_node, weighted_gap_of_node);
-        if (!segments.empty())
-          {
-            ++n_overlapping_faces;
-            slave_measure += measures[f];
-            slave_modulus += measures[f] * faces[f].youngs_modulus;
-          }
+            {
+              double         overlap = 0.;
+              Tensor<1, dim> separation;
+              for (unsigned int j = 0; j < ops.D.size(); ++j)
+                {
+                  overlap += ops.D[j];
+                  separation += ops.weighted_gap[j];
+                }
+              if (!(overlap > 0.))
+                continue;
+              const double support = search_factor * face_lengths[f];
+              const double w =
+                taper ?
+                  overlap * std::clamp(2. - 2. * separation.norm() / (overlap * support), 0., 1.) :
+                  overlap;
+              for (const auto &[face, weights] :
+                   {std::make_pair(f, &slave_weights), std::make_pair(m, &master_weights)})
+                {
+                  Weights &sum = (*weights)[face];
+                  sum.overlap += w;
+                  sum.fraction += w / measures[face];
+                  sum.modulus += w * faces[face].youngs_modulus;
+                }
+            }
+        // Every segment beyond the search distance (pairs the boxes found
+        // all the same): the overlaps in full, rather than no statistics.
+        double total = 0.;
+        for (const auto &[f, sum] : slave_weights)
+          total += sum.overlap;
+        if (total > 0.)
+          break;
+        slave_weights.clear();
+        master_weights.clear();
       }
 
-    // Moduli and sizes of the overlapping faces only: the parts of the
-    // surfaces far from contact must not dilute the penalty.
-    double       master_measure = 0., master_modulus = 0.;
-    unsigned int n_master = 0;
-    for (unsigned int f = 0; f < faces.size(); ++f)
-      if (master_is_candidate[f])
+    for (const auto &[f, segments] : segments_of_face)
+      if (!add_constrained_face(f, segments, slave_data, M_of_node, weighted_gap_of_node))
+        for (const auto &[m, ops] : segments)
+          add_segment(f, m, ops, slave_data, M_of_node, weighted_gap_of_node);
+
+    // The mean face measure counts each face by its overlapped fraction
+    // (every face of a fully tied interface as one); the moduli are
+    // overlap-weighted means. Sums in face order, the same on every rank.
+    const auto mean = [](const std::map<unsigned int, Weights> &weights) {
+      Weights total;
+      for (const auto &[f, sum] : weights)
         {
-          master_measure += measures[f];
-          master_modulus += measures[f] * faces[f].youngs_modulus;
-          ++n_master;
+          total.overlap += sum.overlap;
+          total.fraction += sum.fraction;
+          total.modulus += sum.modulus;
         }
+      return std::make_pair(Kernel::side(total.overlap / total.fraction),
+                            total.modulus / total.overlap);
+    };
     PairStatistics &stat = statistics[p];
-    if (n_overlapping_faces > 0)
+    if (!slave_weights.empty())
       {
-        stat.slave_modulus    = slave_modulus / slave_measure;
-        stat.mean_slave_size  = Kernel::side(slave_measure / n_overlapping_faces);
-        stat.master_modulus   = master_modulus / master_measure;
-        stat.mean_master_size = Kernel::side(master_measure / n_master);
+        std::tie(stat.mean_slave_size, stat.slave_modulus)   = mean(slave_weights);
+        std::tie(stat.mean_master_size, stat.master_modulus) = mean(master_weights);
       }
   }
 
