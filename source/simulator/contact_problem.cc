@@ -2019,9 +2019,10 @@ namespace contact_fem
                 continue;
               }
             pcout << std::endl << "Error: giving up at " << failure.what() << std::endl;
-            // Converged sub-steps reset the count of splits in a row, so a
-            // point of the load path that no step passes is left only at
-            // the floor of the step size: the hint to split was wrong.
+            // A point of the load path that no step passes: the splits end
+            // at the floor of the step size, or sub-steps converged between
+            // them up to the deepest split allowed; the hint to split was
+            // wrong.
             if (failure.splittable && control.at_smallest_step())
               pcout << "Smaller steps did not help: the step was split down to "
                     << control.step_size() << " ("
@@ -2030,6 +2031,23 @@ namespace contact_fem
                        "of the end time), and still fails after t = "
                     << control.converged_time()
                     << ", so the step size is not the cause. One cause: no contact state "
+                       "is consistent there (with a Tresca law, a slip node whose pressure "
+                       "falls to zero keeps its whole bound, so releasing it removes a finite "
+                       "tangential force and the node comes back)."
+                    << std::endl;
+            else if (failure.splittable && control.at_deepest_split() &&
+                     control.n_splits() < load_stepping.max_splits)
+              // Sub-steps converged between the splits: the failing point
+              // of the load path was approached, not passed.
+              pcout << "Smaller steps did not help: from t = " << control.creep_start_time()
+                    << " converged sub-steps crept to t = " << control.converged_time()
+                    << " with steps split down to " << control.step_size() << " (1/"
+                    << std::lround(control.nominal_step_size() / control.step_size())
+                    << " of the nominal load step, the most that Load stepping/Maximum step "
+                       "splits = "
+                    << load_stepping.max_splits
+                    << " allows, counted across converged sub-steps), and the step from there "
+                       "still fails, so the step size is not the cause. One cause: no contact state "
                        "is consistent there (with a Tresca law, a slip node whose pressure "
                        "falls to zero keeps its whole bound, so releasing it removes a finite "
                        "tangential force and the node comes back)."

@@ -42,10 +42,21 @@ namespace contact_fem
   }
 
   bool
+  LoadStepControl::at_deepest_split() const
+  {
+    // The step sizes are the nominal one over powers of the split factor;
+    // the margin only absorbs the round-off of those divisions.
+    return step / parameters.split_factor <
+           nominal_step / std::pow(parameters.split_factor, parameters.max_splits) * (1. - 1e-9);
+  }
+
+  bool
   LoadStepControl::split()
   {
-    if (splits >= parameters.max_splits || at_smallest_step())
+    if (splits >= parameters.max_splits || at_smallest_step() || at_deepest_split())
       return false;
+    if (!(step < nominal_step))
+      creep_start = t_done;
     ++splits;
     successes_since_split = 0;
     step /= parameters.split_factor;

@@ -14,7 +14,9 @@ namespace contact_fem
     prm.declare_entry("Maximum step splits", "4", Patterns::Integer(0, 30),
                       "When Newton fails on a step (no convergence, NaN, singular "
                       "system), the step is split and retried from the last "
-                      "converged state, at most this many times in a row.");
+                      "converged state, at most this many times in a row, and "
+                      "never below the nominal step over Split factor to this "
+                      "power (converged sub-steps do not restore that depth).");
     prm.declare_entry("Split factor", "2", Patterns::Integer(2, 100),
                       "Number of sub-steps a failing step is split into.");
     prm.leave_subsection();

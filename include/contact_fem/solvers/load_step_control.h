@@ -64,6 +64,22 @@ namespace contact_fem
     bool
     at_smallest_step() const;
 
+    /// Whether the step is "Maximum step splits" splits below the nominal
+    /// size: no smaller step is tried. Converged sub-steps reset the count
+    /// of splits in a row but not this depth, so a point of the load path
+    /// that no step passes is not crept toward down to at_smallest_step()
+    /// (a Tresca scene took 39 failed attempts there: doc/metamorphic.md).
+    bool
+    at_deepest_split() const;
+
+    /// The converged time when the step was last split from its nominal
+    /// size: where the sub-steps toward a failing point started.
+    double
+    creep_start_time() const
+    {
+      return creep_start;
+    }
+
     /// The nominal step size.
     double
     nominal_step_size() const
@@ -83,6 +99,7 @@ namespace contact_fem
     double       nominal_step;
     double       t_done;
     double       step;
+    double       creep_start = 0.;
     unsigned int splits = 0, successes_since_split = 0;
   };
 } // namespace contact_fem

@@ -961,6 +961,16 @@ namespace contact_fem
   }
 
   template <int dim>
+  std::vector<int>
+  AlmFrictional<dim>::contact_sets() const
+  {
+    std::vector<int> codes = Base::contact_sets();
+    for (unsigned int n = 0; n < codes.size(); ++n)
+      codes[n] += (released_in_tension[n] ? 4 : 0) + (grazing[n] != 0. ? 8 : 0);
+    return codes;
+  }
+
+  template <int dim>
   void
   AlmFrictional<dim>::share_decisions(const ContactInterface<dim> &interface)
   {

@@ -88,6 +88,9 @@ namespace contact_fem
         for (const unsigned int n : interface.faces[f].nodes)
           slave_faces_of_node[n].push_back(f);
     cone_factor.assign(interface.nodes.size(), 0.);
+    grazing.assign(interface.nodes.size(), 0.);
+    released_with_friction.assign(interface.nodes.size(), 0.);
+    entering.assign(interface.nodes.size(), 0.);
   }
 
   template <int dim>
@@ -312,7 +315,7 @@ namespace contact_fem
     if (pure_slip || frictionless_law(s))
       return direction;
     // A node with neither traction nor slip (it just touched) sticks.
-    return size <= laws[s.pair]->threshold(std::max(p, 0.)) ? TangentialVector<dim>() : direction;
+    return size <= slip_bound(s, std::max(p, 0.)) ? TangentialVector<dim>() : direction;
   }
 
   template <int dim>
@@ -325,7 +328,7 @@ namespace contact_fem
   {
     if (direction.norm_square() == 0.)
       return trial_traction(interface, s, xi);
-    return laws[s.pair]->threshold(std::max(p, 0.)) * direction;
+    return slip_bound(s, std::max(p, 0.)) * direction;
   }
 
   template <int dim>
@@ -343,7 +346,7 @@ namespace contact_fem
         sets.held_component[s.node] < dim)
       return 0.;
     const double size = magnitude<dim>(trial_traction(interface, s, xi));
-    return size > 0. ? laws[s.pair]->threshold(std::max(p, 0.)) / size : 0.;
+    return size > 0. ? slip_bound(s, std::max(p, 0.)) / size : 0.;
   }
 
   template <int dim>
@@ -356,6 +359,9 @@ namespace contact_fem
     // tangential, and shares them in one exchange (share_tangential()).
     this->decide_step_start(interface, u, start);
     updates_in_step = 0;
+    std::fill(grazing.begin(), grazing.end(), 0.);
+    std::fill(released_with_friction.begin(), released_with_friction.end(), 0.);
+    std::fill(entering.begin(), entering.end(), 0.);
     if (this->current)
       this->keep_operators_of_new_pairs(interface);
     tangent_penalty.resize(this->penalty.size());
@@ -405,12 +411,24 @@ namespace contact_fem
   }
 
   template <int dim>
+  std::vector<int>
+  PenaltyFrictional<dim>::contact_sets() const
+  {
+    std::vector<int> codes = Base::contact_sets();
+    for (unsigned int n = 0; n < codes.size(); ++n)
+      codes[n] += (released_with_friction[n] != 0. ? 4 : 0) + (grazing[n] != 0. ? 8 : 0) +
+                  (entering[n] != 0. ? 16 : 0);
+    return codes;
+  }
+
+  template <int dim>
   void
   PenaltyFrictional<dim>::share_tangential(const ContactInterface<dim> &interface)
   {
     // cone_factor is read only at active slip nodes; a key field all the
     // same, so that every value is the serial one.
-    this->share_frictional_states(interface, {&tangential, &sets.direction}, {&cone_factor},
+    this->share_frictional_states(interface, {&tangential, &sets.direction},
+                                  {&cone_factor, &grazing, &released_with_friction, &entering},
                                   [&](const std::vector<std::vector<double> *> &fields) {
                                     this->share_decisions(interface, fields);
                                   });
@@ -550,9 +568,9 @@ namespace contact_fem
         else
           {
             const double eps_n = this->penalty[s.pair];
-            const double p     = std::max(this->pressure[s.node], 0.);
-            const double T     = laws[s.pair]->threshold(p);
-            const double dT    = laws[s.pair]->threshold_derivative(p);
+            const double p     = bound_pressure(s);
+            const double T     = slip_bound(s, p);
+            const double dT    = slip_bound_derivative(s, p);
             const double g0    = interface.gap(s, zero);
             // 3D: T d(t*) linearised across d, (T / |t*|) P t*(u), P = I - d d^T.
             const double                a = cone_factor[s.node];
@@ -598,13 +616,26 @@ namespace contact_fem
       {
         if (!s.paired || !interface.owns_row(s))
           continue;
+        // A Tresca node released while it carried friction (its bound
+        // pulled it off), which penetrates again without it, grazes
+        // (doc/design.md, "Tresca at lift-off"): only one that comes back
+        // to the surface (by 1e-4 h at most), not one driven into it.
+        // (An active node carried friction in the solve even where
+        // tangential[] is not yet set: the step's stick predictor.)
+        if (was_active[s.node] && !this->active[s.node] && carries_friction(interface, s) &&
+            laws[s.pair]->threshold_derivative(0.) == 0.)
+          released_with_friction[s.node] = 1.;
+        if (!was_active[s.node] && this->active[s.node] && released_with_friction[s.node] != 0. &&
+            this->pressure[s.node] < 1e-4 * s.size * this->penalty[s.pair])
+          grazing[s.node] = 1.;
+        entering[s.node] = grazing[s.node] != 0. && !was_active[s.node] && this->active[s.node];
         if (!this->active[s.node] || !carries_friction(interface, s))
           {
             tangential[s.node]     = TangentialVector<dim>();
             sets.direction[s.node] = TangentialVector<dim>();
             continue;
           }
-        const double                 p         = this->pressure[s.node];
+        const double                 p         = bound_pressure(s);
         const TangentialVector<dim>  xi        = slip_increment(interface, s, u);
         TangentialVector<dim>        direction = stick_or_slip(interface, s, p, xi);
         const TangentialVector<dim> &old       = sets.direction[s.node];
@@ -774,7 +805,7 @@ namespace contact_fem
       {
         const double p     = this->pressure[s.node];
         const double eps_n = this->penalty[s.pair];
-        const double dT    = laws[s.pair]->threshold_derivative(std::max(p, 0.));
+        const double dT    = slip_bound_derivative(s, bound_pressure(s));
         const double a     = cone_factor[s.node];
         for (unsigned int k = 0; k < dim - 1; ++k)
           {

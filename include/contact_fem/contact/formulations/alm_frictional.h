@@ -153,6 +153,14 @@ namespace contact_fem
     bool
     symmetric() const override;
 
+    /// The sets of FrictionalFormulation, + 4 on a node released in tension
+    /// with friction in the step, + 8 on a grazing node: a node that comes
+    /// back to its sets of two iterations before with a new flag is on its
+    /// way to the grazing state, not round a cycle (the flags are set once
+    /// a step, so a real cycle is still found two iterations later).
+    std::vector<int>
+    contact_sets() const override;
+
     /// Current kinematics: the patches of the linearised nodes and the
     /// masters of their last accepted step (the objective slip).
     void
