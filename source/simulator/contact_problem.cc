@@ -2023,18 +2023,18 @@ namespace contact_fem
             // at the floor of the step size, or sub-steps converged between
             // them up to the deepest split allowed; the hint to split was
             // wrong.
+            const char *not_the_step_size =
+              ", so the step size is not the cause. One cause: no contact state is consistent "
+              "there (with a Tresca law, a slip node whose pressure falls to zero keeps its "
+              "whole bound, so releasing it removes a finite tangential force and the node "
+              "comes back).";
             if (failure.splittable && control.at_smallest_step())
               pcout << "Smaller steps did not help: the step was split down to "
                     << control.step_size() << " ("
                     << control.step_size() / control.nominal_step_size()
                     << " of the nominal load step; a further split would fall below 1e-12 "
                        "of the end time), and still fails after t = "
-                    << control.converged_time()
-                    << ", so the step size is not the cause. One cause: no contact state "
-                       "is consistent there (with a Tresca law, a slip node whose pressure "
-                       "falls to zero keeps its whole bound, so releasing it removes a finite "
-                       "tangential force and the node comes back)."
-                    << std::endl;
+                    << control.converged_time() << not_the_step_size << std::endl;
             else if (failure.splittable && control.at_deepest_split() &&
                      control.n_splits() < load_stepping.max_splits)
               // Sub-steps converged between the splits: the failing point
@@ -2047,11 +2047,8 @@ namespace contact_fem
                        "splits = "
                     << load_stepping.max_splits
                     << " allows, counted across converged sub-steps), and the step from there "
-                       "still fails, so the step size is not the cause. One cause: no contact state "
-                       "is consistent there (with a Tresca law, a slip node whose pressure "
-                       "falls to zero keeps its whole bound, so releasing it removes a finite "
-                       "tangential force and the node comes back)."
-                    << std::endl;
+                       "still fails"
+                    << not_the_step_size << std::endl;
             pcout << "The results written are those of the last converged load step"
                   << " (t = " << control.converged_time() << ")." << std::endl;
             path.converged = false;

@@ -187,40 +187,12 @@ namespace contact_fem
                   std::ostream                &out) const override;
 
   protected:
-    /// Tresca at lift-off (doc/design.md, "Tresca at lift-off"): a node
-    /// released in tension while it carried a constant bound T, which then
-    /// penetrates again without it, has no state of the strict law (T in
-    /// contact, none out of it). It grazes for the rest of the load step:
-    /// its bound is T min(1, p / (grazing_fraction T)), the set-valued
-    /// bound [0, T] at p = 0 made single-valued, so that it settles at
-    /// g = 0, p ~ 0 with a traction below T. 1 = grazing (a double: shared
-    /// with the ghosts by share_decisions()); reset by start_load_step().
-    std::vector<double> grazing;
-    /// Nodes released in tension with friction in this load step.
+    /// Nodes released in tension with friction in this load step (a node
+    /// that then penetrates again grazes: Base::grazing).
     std::vector<bool> released_in_tension;
-    /// The pressure, as a fraction of T, below which a grazing node's bound
-    /// falls with p: a Coulomb branch of slope 1 / grazing_fraction.
-    static constexpr double grazing_fraction = 1e-3;
-
-    /// The slip bound of node @p s at pressure @p p: its law's, reduced
-    /// near p = 0 while it grazes.
-    double
-    slip_bound(const SlaveNode &s, const double p) const
-    {
-      const double bound = laws[s.pair]->threshold(p);
-      if (grazing[s.node] == 0. || p >= grazing_fraction * bound)
-        return bound;
-      return std::max(p, 0.) / grazing_fraction;
-    }
-
-    /// d slip_bound() / d p.
-    double
-    slip_bound_derivative(const SlaveNode &s, const double p) const
-    {
-      if (grazing[s.node] == 0. || p >= grazing_fraction * laws[s.pair]->threshold(p))
-        return laws[s.pair]->threshold_derivative(p);
-      return 1. / grazing_fraction;
-    }
+    using Base::grazing;
+    using Base::slip_bound;
+    using Base::slip_bound_derivative;
 
     /// Per pair: the stiffer side's E / h over the softer side's (the
     /// penalty's), which sets the largest beta (slip_cone_stiffness()).

@@ -7,6 +7,7 @@
 #include <contact_fem/contact/friction/frictional_law.h>
 #include <contact_fem/contact/friction/stick_slip_sets.h>
 
+#include <algorithm>
 #include <array>
 #include <functional>
 #include <map>
@@ -272,6 +273,39 @@ namespace contact_fem
 
     std::vector<std::shared_ptr<const FrictionalLaw>> laws; ///< per pair
     bool                                              pure_slip = false;
+
+    /// Tresca at lift-off (doc/design.md, "Tresca at lift-off"): a node
+    /// released in tension while it carried a constant bound T, which then
+    /// penetrates again without it, has no state of the strict law (T in
+    /// contact, none out of it). It grazes for the rest of the load step:
+    /// its bound is T min(1, p / (grazing_fraction T)), the set-valued
+    /// bound [0, T] at p = 0 made single-valued (a Coulomb branch of slope
+    /// 1 / grazing_fraction), so that it settles at g = 0, p ~ 0 with a
+    /// traction below T. Per interface node, 1 = grazing (a double: shared
+    /// with the ghosts); set by the derived formulation, reset at the start
+    /// of a load step.
+    std::vector<double>     grazing;
+    static constexpr double grazing_fraction = 1e-3;
+
+    /// The slip bound of node @p s at pressure @p p: its law's, reduced
+    /// near p = 0 while it grazes.
+    double
+    slip_bound(const SlaveNode &s, const double p) const
+    {
+      const double bound = laws[s.pair]->threshold(p);
+      if (grazing[s.node] == 0. || p >= grazing_fraction * bound)
+        return bound;
+      return std::max(p, 0.) / grazing_fraction;
+    }
+
+    /// d slip_bound() / d p.
+    double
+    slip_bound_derivative(const SlaveNode &s, const double p) const
+    {
+      if (grazing[s.node] == 0. || p >= grazing_fraction * laws[s.pair]->threshold(p))
+        return laws[s.pair]->threshold_derivative(p);
+      return 1. / grazing_fraction;
+    }
 
     /// t_j per interface node, in the formulation's frame.
     std::vector<TangentialVector<dim>> tangential;

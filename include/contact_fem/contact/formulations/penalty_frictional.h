@@ -358,14 +358,10 @@ namespace contact_fem
     std::vector<std::vector<unsigned int>> slave_faces_of_node;
     /// slip_cone_factor() per interface node, of the last update.
     std::vector<double> cone_factor;
-    /// Tresca at lift-off (doc/design.md, "Tresca at lift-off"), as in
-    /// "alm frictional": a node released while it carried a constant bound
-    /// T (its friction pulled it off), which penetrates again without it,
-    /// has no state of the strict law. It grazes for the rest of the load
-    /// step: its bound is T min(1, p / (grazing_fraction T)), so that it
-    /// settles at p ~ 0 with a traction below T. 1 = grazing (a double:
-    /// shared with the ghosts); reset by start_load_step().
-    std::vector<double> grazing;
+    /// Tresca at lift-off, as in "alm frictional" (Base::grazing).
+    using Base::grazing;
+    using Base::slip_bound;
+    using Base::slip_bound_derivative;
     /// Nodes released with friction in this load step (1: a double, shared
     /// with the ghosts; contact_sets() tells it).
     std::vector<double> released_with_friction;
@@ -380,29 +376,6 @@ namespace contact_fem
     bound_pressure(const SlaveNode &s) const
     {
       return entering[s.node] != 0. ? 0. : std::max(this->pressure[s.node], 0.);
-    }
-    /// The pressure, as a fraction of T, below which a grazing node's bound
-    /// falls with p (that of "alm frictional").
-    static constexpr double grazing_fraction = 1e-3;
-
-    /// The slip bound of node @p s at pressure @p p >= 0: its law's,
-    /// reduced near p = 0 while it grazes.
-    double
-    slip_bound(const SlaveNode &s, const double p) const
-    {
-      const double bound = laws[s.pair]->threshold(p);
-      if (grazing[s.node] == 0. || p >= grazing_fraction * bound)
-        return bound;
-      return p / grazing_fraction;
-    }
-
-    /// d slip_bound() / d p.
-    double
-    slip_bound_derivative(const SlaveNode &s, const double p) const
-    {
-      if (grazing[s.node] == 0. || p >= grazing_fraction * laws[s.pair]->threshold(p))
-        return laws[s.pair]->threshold_derivative(p);
-      return 1. / grazing_fraction;
     }
     /// The elastic-slip warning was printed (once per run).
     mutable bool elastic_slip_warned = false;
