@@ -70,10 +70,10 @@ namespace contact_fem
     /**
      * Sends each face of @p offered to the other ranks whose boxes @p asked
      * (all-gathered as a level of their R-tree, which contains them) its box
-     * meets, unless @p sent holds it for that rank already (then adds
-     * it there); returns the faces sent to this rank. A superset of what
-     * the receiver selects, never less: an R-tree's node boxes contain its
-     * entries.
+     * meets, each (face, rank) at most once over the calls sharing @p sent
+     * (which records them); returns the faces sent to this rank. A superset
+     * of what the receiver selects, never less: an R-tree's node boxes
+     * contain its entries.
      */
     template <int dim>
     std::vector<ReachFace<dim>>
