@@ -46,7 +46,6 @@ namespace contact_fem
     const unsigned int n = interface.nodes.size();
     released_pressure.assign(n, 0.);
     released_tangential.assign(n, TangentialVector<dim>());
-    grazing.assign(n, 0.);
     released_in_tension.assign(n, false);
     cone_stiffness.assign(n, 0.);
   }
@@ -927,8 +926,7 @@ namespace contact_fem
         // back to the surface (by 1e-4 h at most: it stands at the edge of
         // the lift-off), not one driven into it.
         if (!now_active && active[s.node] && pressure[s.node] < 0. &&
-            magnitude<dim>(tangential[s.node]) > 0. && !frictionless_law(s) &&
-            laws[s.pair]->threshold_derivative(0.) == 0.)
+            magnitude<dim>(tangential[s.node]) > 0. && this->bound_without_pressure(s))
           released_in_tension[s.node] = true;
         if (now_active && !active[s.node] && released_in_tension[s.node] && g > -1e-4 * s.size)
           grazing[s.node] = 1.;
@@ -966,7 +964,7 @@ namespace contact_fem
   {
     std::vector<int> codes = Base::contact_sets();
     for (unsigned int n = 0; n < codes.size(); ++n)
-      codes[n] += (released_in_tension[n] ? 4 : 0) + (grazing[n] != 0. ? 8 : 0);
+      codes[n] += released_in_tension[n] ? 4 : 0;
     return codes;
   }
 

@@ -15,6 +15,7 @@ namespace contact_fem
     NormalPart::initialize(interface);
     const unsigned int n = interface.nodes.size();
     tangential.assign(n, TangentialVector<dim>());
+    grazing.assign(n, 0.);
     sets.initialize(interface);
     last_step_slip.assign(n, TangentialVector<dim>());
     slip_history.initialize(n);
@@ -61,7 +62,10 @@ namespace contact_fem
   std::vector<int>
   FrictionalFormulation<dim, NormalPart>::contact_sets() const
   {
-    return sets.codes(this->active);
+    std::vector<int> codes = sets.codes(this->active);
+    for (unsigned int n = 0; n < codes.size(); ++n)
+      codes[n] += grazing[n] != 0. ? 8 : 0;
+    return codes;
   }
 
   template <int dim, class NormalPart>

@@ -88,7 +88,6 @@ namespace contact_fem
         for (const unsigned int n : interface.faces[f].nodes)
           slave_faces_of_node[n].push_back(f);
     cone_factor.assign(interface.nodes.size(), 0.);
-    grazing.assign(interface.nodes.size(), 0.);
     released_with_friction.assign(interface.nodes.size(), 0.);
     entering.assign(interface.nodes.size(), 0.);
   }
@@ -416,8 +415,7 @@ namespace contact_fem
   {
     std::vector<int> codes = Base::contact_sets();
     for (unsigned int n = 0; n < codes.size(); ++n)
-      codes[n] += (released_with_friction[n] != 0. ? 4 : 0) + (grazing[n] != 0. ? 8 : 0) +
-                  (entering[n] != 0. ? 16 : 0);
+      codes[n] += (released_with_friction[n] != 0. ? 4 : 0) + (entering[n] != 0. ? 16 : 0);
     return codes;
   }
 
@@ -623,7 +621,7 @@ namespace contact_fem
         // (An active node carried friction in the solve even where
         // tangential[] is not yet set: the step's stick predictor.)
         if (was_active[s.node] && !this->active[s.node] && carries_friction(interface, s) &&
-            laws[s.pair]->threshold_derivative(0.) == 0.)
+            this->bound_without_pressure(s))
           released_with_friction[s.node] = 1.;
         if (!was_active[s.node] && this->active[s.node] && released_with_friction[s.node] != 0. &&
             this->pressure[s.node] < 1e-4 * s.size * this->penalty[s.pair])

@@ -154,10 +154,7 @@ namespace contact_fem
     symmetric() const override;
 
     /// The sets of FrictionalFormulation, + 4 on a node released in tension
-    /// with friction in the step, + 8 on a grazing node: a node that comes
-    /// back to its sets of two iterations before with a new flag is on its
-    /// way to the grazing state, not round a cycle (the flags are set once
-    /// a step, so a real cycle is still found two iterations later).
+    /// with friction in the step (on its way to grazing, as the flag + 8).
     std::vector<int>
     contact_sets() const override;
 

@@ -111,7 +111,11 @@ namespace contact_fem
     std::vector<typename ContactFormulation<dim>::NodalField>
     nodal_fields(const ContactInterface<dim> &interface) const override;
 
-    /// 0 inactive, 1 stick, 2 / 3 slip with sign + / -.
+    /// 0 inactive, 1 stick, 2 / 3 slip with sign + / -; + 8 on a grazing
+    /// node (a node that comes back to its sets of two iterations before
+    /// with a new flag is on its way to the grazing state, not round a
+    /// cycle: the flags are set once a step, so a real cycle is still found
+    /// two iterations later).
     std::vector<int>
     contact_sets() const override;
 
@@ -305,6 +309,14 @@ namespace contact_fem
       if (grazing[s.node] == 0. || p >= grazing_fraction * laws[s.pair]->threshold(p))
         return laws[s.pair]->threshold_derivative(p);
       return 1. / grazing_fraction;
+    }
+
+    /// Whether the law of node @p s keeps a bound as its pressure falls to
+    /// zero (Tresca): only such a node can graze.
+    bool
+    bound_without_pressure(const SlaveNode &s) const
+    {
+      return !frictionless_law(s) && laws[s.pair]->threshold_derivative(0.) == 0.;
     }
 
     /// t_j per interface node, in the formulation's frame.

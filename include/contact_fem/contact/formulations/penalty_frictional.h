@@ -126,10 +126,8 @@ namespace contact_fem
     /// it, the pressure from the slave-normal gap) and with current
     /// kinematics.
     /// The sets of FrictionalFormulation, + 4 on a node released with
-    /// friction in the step, + 8 on a grazing node: a node that comes back
-    /// to its sets of two iterations before with a new flag is on its way
-    /// to the grazing state, not round a cycle (the flags are set once a
-    /// step, so a real cycle is still found two iterations later).
+    /// friction in the step and + 16 on one entering as it grazes (on its
+    /// way to grazing, as the flag + 8).
     std::vector<int>
     contact_sets() const override;
 
