@@ -471,6 +471,22 @@ namespace contact_fem
     const auto segments_of_face =
       unpack_segments(Utilities::MPI::all_gather(mpi_communicator, mine));
 
+    for (const auto &[f, segments] : segments_of_face)
+      if (!add_constrained_face(f, segments, slave_data, M_of_node, weighted_gap_of_node))
+        for (const auto &[m, ops] : segments)
+          add_segment(f, m, ops, slave_data, M_of_node, weighted_gap_of_node);
+
+    statistics[p] = statistics_of_segments(share, segments_of_face, measures, search_factor);
+  }
+
+  template <int dim>
+  typename ContactInterface<dim>::PairStatistics
+  ContactInterface<dim>::statistics_of_segments(
+    const std::vector<unsigned int>        &share,
+    const std::map<unsigned int, Segments> &segments_of_face,
+    const std::vector<double>              &measures,
+    const double                            search_factor) const
+  {
     // The statistics weigh each face by its share in the contact zone, so
     // that they are continuous in the geometry (the same for the scene
     // turned, moved or rescaled): a segment weighs its overlap measure
@@ -481,39 +497,58 @@ namespace contact_fem
     // displacements), then less, linearly to nothing at that distance,
     // beyond which the broad phase's axis-aligned boxes may or may not find
     // the pair, depending on the orientation. A sliver weighs nearly
-    // nothing. Per face: the weight w, w / measure (its overlapped
-    // fraction, which counts a fully overlapped face as one) and w E.
+    // nothing.
+    //
+    // Each rank weighs the segments of its own share; per segment: the
+    // slave and the master face, the weight tapered and in full, and each
+    // face's measure and modulus.
+    constexpr unsigned int n_terms = 8;
+    std::vector<double>    terms;
+    for (const unsigned int f : share)
+      if (const auto found = segments_of_face.find(f); found != segments_of_face.end())
+        for (const auto &[m, ops] : found->second)
+          {
+            double         overlap = 0.;
+            Tensor<1, dim> separation;
+            for (unsigned int j = 0; j < ops.D.size(); ++j)
+              {
+                overlap += ops.D[j];
+                separation += ops.weighted_gap[j];
+              }
+            if (!(overlap > 0.))
+              continue;
+            const double support = search_factor * face_lengths[f];
+            const double tapered =
+              overlap * std::clamp(2. - 2. * separation.norm() / (overlap * support), 0., 1.);
+            terms.insert(terms.end(),
+                         {static_cast<double>(f), static_cast<double>(m), tapered, overlap,
+                          measures[f], faces[f].youngs_modulus, measures[m],
+                          faces[m].youngs_modulus});
+          }
+    // The shares are contiguous runs in face order, so the terms gathered
+    // in rank order are in face order: every rank adds them as one rank
+    // holding every segment would, bit for bit. Per face: the weight w,
+    // w / measure (its overlapped fraction, which counts a fully overlapped
+    // face as one) and w E.
+    const auto all = Utilities::MPI::all_gather(mpi_communicator, terms);
     struct Weights
     {
       double overlap = 0., fraction = 0., modulus = 0.;
     };
     std::map<unsigned int, Weights> slave_weights, master_weights;
-    for (const bool taper : {true, false})
+    for (const unsigned int weight_at : {2u, 3u})
       {
-        for (const auto &[f, segments] : segments_of_face)
-          for (const auto &[m, ops] : segments)
+        for (const auto &chunk : all)
+          for (std::size_t i = 0; i < chunk.size(); i += n_terms)
             {
-              double         overlap = 0.;
-              Tensor<1, dim> separation;
-              for (unsigned int j = 0; j < ops.D.size(); ++j)
+              const double w = chunk[i + weight_at];
+              for (const unsigned int side : {0u, 1u})
                 {
-                  overlap += ops.D[j];
-                  separation += ops.weighted_gap[j];
-                }
-              if (!(overlap > 0.))
-                continue;
-              const double support = search_factor * face_lengths[f];
-              const double w =
-                taper ?
-                  overlap * std::clamp(2. - 2. * separation.norm() / (overlap * support), 0., 1.) :
-                  overlap;
-              for (const auto &[face, weights] :
-                   {std::make_pair(f, &slave_weights), std::make_pair(m, &master_weights)})
-                {
-                  Weights &sum = (*weights)[face];
+                  Weights &sum = (side == 0 ? slave_weights : master_weights)[static_cast<
+                    unsigned int>(chunk[i + side])];
                   sum.overlap += w;
-                  sum.fraction += w / measures[face];
-                  sum.modulus += w * faces[face].youngs_modulus;
+                  sum.fraction += w / chunk[i + 4 + 2 * side];
+                  sum.modulus += w * chunk[i + 5 + 2 * side];
                 }
             }
         // Every segment beyond the search distance (pairs the boxes found
@@ -527,14 +562,9 @@ namespace contact_fem
         master_weights.clear();
       }
 
-    for (const auto &[f, segments] : segments_of_face)
-      if (!add_constrained_face(f, segments, slave_data, M_of_node, weighted_gap_of_node))
-        for (const auto &[m, ops] : segments)
-          add_segment(f, m, ops, slave_data, M_of_node, weighted_gap_of_node);
-
     // The mean face measure counts each face by its overlapped fraction
     // (every face of a fully tied interface as one); the moduli are
-    // overlap-weighted means. Sums in face order, the same on every rank.
+    // overlap-weighted means.
     const auto mean = [](const std::map<unsigned int, Weights> &weights) {
       Weights total;
       for (const auto &[f, sum] : weights)
@@ -543,15 +573,16 @@ namespace contact_fem
           total.fraction += sum.fraction;
           total.modulus += sum.modulus;
         }
-      return std::make_pair(Kernel::side(total.overlap / total.fraction),
+      return std::make_pair(Mortar::Kernel<dim>::side(total.overlap / total.fraction),
                             total.modulus / total.overlap);
     };
-    PairStatistics &stat = statistics[p];
+    PairStatistics stat;
     if (!slave_weights.empty())
       {
         std::tie(stat.mean_slave_size, stat.slave_modulus)   = mean(slave_weights);
         std::tie(stat.mean_master_size, stat.master_modulus) = mean(master_weights);
       }
+    return stat;
   }
 
   namespace

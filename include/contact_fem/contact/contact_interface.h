@@ -845,6 +845,18 @@ namespace contact_fem
                     const std::map<unsigned int, SlaveNode> &slave_data,
                     std::string                             &error) const;
 
+    /**
+     * Collective: the statistics of a pair from its segments
+     * @p segments_of_face, of which this rank weighs those of its @p share
+     * (the slave faces it integrated) and gathers the weights of the
+     * others: sums in face order, bit for bit those of one rank.
+     */
+    PairStatistics
+    statistics_of_segments(const std::vector<unsigned int>        &share,
+                           const std::map<unsigned int, Segments> &segments_of_face,
+                           const std::vector<double>              &measures,
+                           const double                            search_factor) const;
+
     /// Collective: if @p error (this rank's) or that of another rank is not
     /// empty, every rank throws the first of them (by rank), so a check
     /// that fails on one rank stops all of them instead of leaving the
