@@ -290,9 +290,9 @@ namespace contact_fem
     /// of a load step.
     std::vector<double>     grazing;
     static constexpr double grazing_fraction = 1e-3;
-    /// comes_back_grazing(): 0.3 lets the sphere's node back at 0.19 T and
-    /// keeps the chain's nodes driven in at 0.5 T and more out (measured,
-    /// doc/design.md, "Tresca at lift-off, a third time").
+    /// comes_back_grazing()'s fraction, measured (doc/design.md, "Tresca
+    /// at lift-off, a third time"): at 0.1 the sphere's node, back by 0.19
+    /// T / (E/h), cycles; at 1 the 3D chain's first step diverges.
     static constexpr double grazing_depth = 0.3;
 
     /// The slip bound of node @p s at pressure @p p: its law's, reduced
