@@ -923,12 +923,13 @@ namespace contact_fem
         // A Tresca node released in tension while it carried friction, which
         // penetrates again without it, grazes (doc/design.md, "Tresca at
         // lift-off"): its bound is then slip_bound(). Only a node that comes
-        // back to the surface (by 1e-4 h at most: it stands at the edge of
-        // the lift-off), not one driven into it.
+        // back to the surface (comes_back_grazing(): it stands at the edge
+        // of the lift-off), not one driven into it.
         if (!now_active && active[s.node] && pressure[s.node] < 0. &&
             magnitude<dim>(tangential[s.node]) > 0. && this->bound_without_pressure(s))
           released_in_tension[s.node] = true;
-        if (now_active && !active[s.node] && released_in_tension[s.node] && g > -1e-4 * s.size)
+        if (now_active && !active[s.node] && released_in_tension[s.node] &&
+            this->comes_back_grazing(s, -g))
           grazing[s.node] = 1.;
         if (!now_active)
           {

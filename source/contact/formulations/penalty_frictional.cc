@@ -605,6 +605,7 @@ namespace contact_fem
                                             const std::vector<double>   &u)
   {
     const std::vector<bool> was_active = this->active;
+    const std::vector<double> was_pressure = this->pressure;
     // Active set and p_j = eps_n (-g_j) of the new iterate, on the rows
     // this rank owns (shared with the tangential state: share_tangential()).
     unsigned int changes    = this->decide_active_set(interface, u);
@@ -617,14 +618,19 @@ namespace contact_fem
         // A Tresca node released while it carried friction (its bound
         // pulled it off), which penetrates again without it, grazes
         // (doc/design.md, "Tresca at lift-off"): only one that comes back
-        // to the surface (by 1e-4 h at most), not one driven into it.
+        // to the surface (comes_back_grazing()), not one driven into it.
         // (An active node carried friction in the solve even where
-        // tangential[] is not yet set: the step's stick predictor.)
+        // tangential[] is not yet set: the step's stick predictor; but
+        // one neither pressed nor loaded tangentially before that solve,
+        // as every node at the first step of a scene that starts
+        // touching, was not pulled off by a bound it held: the chain in
+        // 20 steps let all of them graze at once and diverged.)
         if (was_active[s.node] && !this->active[s.node] && carries_friction(interface, s) &&
-            this->bound_without_pressure(s))
+            this->bound_without_pressure(s) &&
+            (was_pressure[s.node] > 0. || magnitude<dim>(tangential[s.node]) > 0.))
           released_with_friction[s.node] = 1.;
         if (!was_active[s.node] && this->active[s.node] && released_with_friction[s.node] != 0. &&
-            this->pressure[s.node] < 1e-4 * s.size * this->penalty[s.pair])
+            this->comes_back_grazing(s, -interface.gap(s, u)))
           grazing[s.node] = 1.;
         entering[s.node] = grazing[s.node] != 0. && !was_active[s.node] && this->active[s.node];
         if (!this->active[s.node] || !carries_friction(interface, s))

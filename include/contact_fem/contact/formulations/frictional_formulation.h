@@ -290,6 +290,10 @@ namespace contact_fem
     /// of a load step.
     std::vector<double>     grazing;
     static constexpr double grazing_fraction = 1e-3;
+    /// comes_back_grazing()'s fraction, measured (doc/design.md, "Tresca
+    /// at lift-off, a third time"): at 0.1 the sphere's node, back by 0.19
+    /// T / (E/h), cycles; at 1 the 3D chain's first step diverges.
+    static constexpr double grazing_depth = 0.3;
 
     /// The slip bound of node @p s at pressure @p p: its law's, reduced
     /// near p = 0 while it grazes.
@@ -300,6 +304,17 @@ namespace contact_fem
       if (grazing[s.node] == 0. || p >= grazing_fraction * bound)
         return bound;
       return std::max(p, 0.) / grazing_fraction;
+    }
+
+    /// Whether a node released while it carried friction (Tresca), which
+    /// penetrates again by @p depth, comes back to the surface (grazes)
+    /// rather than being driven into it: a depth the friction force it
+    /// lost can explain, below grazing_depth T / (E/h) (E/h the pair's
+    /// scale: the depth at which the bound T alone would press a node).
+    bool
+    comes_back_grazing(const SlaveNode &s, const double depth) const
+    {
+      return this->scale[s.pair] * depth < grazing_depth * laws[s.pair]->threshold(0.);
     }
 
     /// d slip_bound() / d p.
