@@ -3,6 +3,7 @@
 slip counts per pair.
 
 Usage: check_accumulated_slip.py CONTACT_FEM BLOCK.prm UNLOADING.prm
+       [EXPECTED NUMDIFF NORMALIZE_PL]
 
 BLOCK (frictional_block_coulomb_01: pressed, then pulled along +x by a
 prescribed displacement) pulled monotonically, 0.05 (t - 1) to t = 2:
@@ -15,12 +16,18 @@ back): the path length is never below |accumulated_tangential_displacement|
 and exceeds it at the nodes of the reverse-slip annulus, which slid both
 ways. Both: the pair's stick_nodes + slip_nodes in summary.json = its
 active slave nodes.
+
+With EXPECTED (the unloading scene test's stored output) the UNLOADING run
+is that scene's perturbed twin: it runs on DoFs renumbered by seed 1 and
+must print EXPECTED (normalize.pl, then numdiff as tests/run_perturbed.sh;
+the pressure profile changes no line of the console).
 """
 import csv
 import json
+import shutil
 import sys
 
-from scene_run import run_scene
+from scene_run import prints_stored_output, run_scene, twin_renumbering
 
 
 def run(contact_fem, scene, directory, displacement, end_time, steps):
@@ -46,6 +53,7 @@ def check_counts(summary, name, failures):
 
 
 contact_fem, scene, unloading = sys.argv[1:4]
+twin = sys.argv[4:7] if len(sys.argv) >= 7 else None
 failures = []
 monotone, summary = run(contact_fem, scene, "monotone", "0.05*max(t-1, 0)", 2, 4)
 check_counts(summary, "monotone", failures)
@@ -59,8 +67,11 @@ for r in (r for r in monotone if r["active"] == "1"):
         failures.append(f"monotone node x = {r['x']}: path {length}, accumulated {along}, "
                         f"last step {last}")
 
-run_scene(contact_fem, unloading, "Output directory=reversed",
-          "Output/Write pressure profile=true")
+shutil.rmtree("reversed", ignore_errors=True)  # no "removed ... of an earlier run" line
+output = run_scene(contact_fem, unloading, "Output directory=reversed",
+                   "Output/Write pressure profile=true", *twin_renumbering(twin))
+if twin and not prints_stored_output(output, twin):
+    failures.append("unloading on renumbered DoFs: not the scene's stored output (see diff)")
 with open("reversed/pressure_profile.csv") as f:
     reversed_rows = list(csv.DictReader(f))
 with open("reversed/summary.json") as f:

@@ -52,11 +52,10 @@ CONTACT_FEM_PERTURBATION_SEED, if set, renumbers the DoFs.
 import importlib.util
 import math
 import os
-import subprocess
 import sys
 
 from scene_run import (check_quadratic, converged_sets, csv_numbers, newton_table, perturbation,
-                       run_scene)
+                       prints_stored_output, run_scene, twin_renumbering)
 
 TOLERANCE = 1e-8
 MU = 0.3
@@ -179,26 +178,16 @@ def angle(u, v):
 
 
 def same_as_stored(output, twin):
-    """The scene's perturbed twin, run here: output (the scene as it is, on
-    renumbered DoFs) against the scene test's stored output, filtered and
-    compared as tests/run_perturbed.sh does."""
-    expected, numdiff, normalize = twin
-    with open("output", "w") as f:
-        f.write(output)
-    filters = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "output_filters.sh")
-    result = subprocess.run(
-        ["sh", "-c", f'perl -pi "{normalize}" output && . "{filters}" && '
-         f'strip_krylov_counts "{expected}" > expected && strip_krylov_counts output > compared '
-         f'&& numdiff_outputs "{numdiff}" expected compared diff', "twin"])
+    """The scene's perturbed twin, run here (scene_run.prints_stored_output)."""
+    good = prints_stored_output(output, twin)
     return report("Coulomb, x then y, on renumbered DoFs: the scene's stored output "
-                  "(numdiff as the perturbed twins)", result.returncode == 0,
-                  "" if result.returncode == 0 else "see diff and output")
+                  "(numdiff as the perturbed twins)", good, "" if good else "see diff and output")
 
 
 def frictional(contact_fem, scene, mesh_script, twin=None):
     # With twin, the run is renumbered (seed 1, or the environment's) and
     # must print the scene's stored output: the scene's perturbed twin.
-    renumbered = ("Finite element/DoF renumbering seed=1",) if twin and not perturbation() else ()
+    renumbered = twin_renumbering(twin)
     output, rows, nodes = run(contact_fem, scene, "x then y", renumbered)
     ok = same_as_stored(output, twin) if twin else True
     ok = newton_and_balance("Coulomb, x then y", output, rows, 3) and ok

@@ -7,22 +7,25 @@ Usage: check_penalty_reentry_sphere.py CONTACT_FEM HERTZ_3D.prm
 
 HERTZ_3D is prm/hertz_3d.prm, run coarse (Q1, Sphere refinements = 2,
 Contact refinements = 0: 1257 DoFs, 61 slave nodes) with Coulomb 0.2 in
-4 load steps. The first solves start from a few nodes in contact: the
+3 load steps (4 until session 37: the same checks pass there, with the
+differences to alm below 8e-4 and 8.3e-3; doc/performance.md). The first
+solves start from a few nodes in contact: the
 linear step from an open node's state drives the rim deep into the plate,
 and the next tangent carries those pressures in its geometric and
 Coulomb terms. Without the limit (factor 0, main before 2026-11-28) the
-run splits the first step four times and gives up at t = 0.018 on
-stick/slip cycles. Checks:
+run splits the first step four times and gives up at t = 0.021 (0.018 on
+4 steps) on stick/slip cycles. Checks:
 
-- the 4 load steps converge without a split;
+- the 3 load steps converge without a split (without the limit the first
+  step is split and the run gives up, as on 4 steps);
 - at t = 1 the active and stick / slip counts equal those of `alm
   frictional` on the same scene and steps (exact gap constraint), and the
-  largest pressure agrees within 3e-3 (measured 8e-4; a penalty 10 times
+  largest pressure agrees within 3e-3 (measured 2.4e-4; a penalty 10 times
   stiffer moves it by 2e-5, so the rest is not the penetration but the
   formulations' frames: alm's pair tangential force has a z component of
   3e-3 of its size, the penalty's, in the interface frame, none);
 - the pair's friction ratio |T| / |N| agrees within 1.5e-2 (measured
-  8.3e-3: the frames again, alm's slave normal against the penalty's
+  2.6e-3, 8.3e-3 on 4 steps: the frames again, alm's slave normal against the penalty's
   interface normal, a difference of the coarse mesh's that falls to
   2.4e-4 at Sphere refinements 3 with the same sets). The in-plane force
   (normal plus tangential, x and y) was compared before the symmetry-plane
@@ -38,7 +41,7 @@ from scene_run import perturbation, run_scene
 
 COARSE = ("Finite element/Degree=1", "Geometry/Hertz sphere/Sphere refinements=2",
           "Geometry/Hertz sphere/Contact refinements=0", "Contact/Friction=coulomb 0.2",
-          "Contact/Kinematics=current", "Load stepping/Number of load steps=4",
+          "Contact/Kinematics=current", "Load stepping/Number of load steps=3",
           "Output/Write VTU=false", "Output/Write pressure profile=false")
 
 
@@ -72,8 +75,8 @@ def main():
                        *perturbation())
     splits = output.count("Splitting the step")
     steps = re.findall(r"Load step \d+, t = ([0-9.e+-]+)", output)
-    ok = report("four load steps to t = 1, no split",
-                splits == 0 and steps == ["0.25", "0.5", "0.75", "1"],
+    ok = report("three load steps to t = 1, no split",
+                splits == 0 and steps == ["0.333333", "0.666667", "1"],
                 f"{splits} splits, steps at t = {', '.join(steps)}")
     alm = run_scene(contact_fem, scene, "Contact/Formulation=alm frictional", *COARSE,
                     *perturbation())

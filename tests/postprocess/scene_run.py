@@ -26,6 +26,29 @@ def run_scene(contact_fem, scene, *settings, launcher=()):
     return run(command)
 
 
+def prints_stored_output(output, twin):
+    """A scene's perturbed twin, run inside a postprocess test: output (the
+    scene as it is, on DoFs renumbered by seed 1) against the scene test's
+    stored output, filtered and compared as tests/run_perturbed.sh does;
+    twin is (EXPECTED, NUMDIFF, NORMALIZE_PL). Writes output, expected,
+    compared and diff into the working directory; True if they agree."""
+    expected, numdiff, normalize = twin
+    with open("output", "w") as f:
+        f.write(output)
+    filters = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "output_filters.sh")
+    result = subprocess.run(
+        ["sh", "-c", f'perl -pi "{normalize}" output && . "{filters}" && '
+         f'strip_krylov_counts "{expected}" > expected && strip_krylov_counts output > compared '
+         f'&& numdiff_outputs "{numdiff}" expected compared diff', "twin"])
+    return result.returncode == 0
+
+
+def twin_renumbering(twin):
+    """The setting of the twin's run: seed 1, unless the environment's seed
+    renumbers every run already (perturbation())."""
+    return ("Finite element/DoF renumbering seed=1",) if twin and not perturbation() else ()
+
+
 def perturbation():
     """The setting that renumbers the DoFs by CONTACT_FEM_PERTURBATION_SEED
     (as tests/run_perturbed.sh does), if that is set: a script run with
