@@ -856,9 +856,11 @@ namespace contact_fem
     LinearSystemRequest request;
     request.symmetric              = !contact || contact->matrix_symmetric();
     request.newton_residual_target = newton_residual_target;
+    last_relative_linear_residual  = std::numeric_limits<double>::quiet_NaN();
     last_linear_residual =
       linear_solver->solve(system_matrix, solution, system_rhs, request);
     const double linear_residual = last_linear_residual;
+    last_relative_linear_residual = linear_residual / system_rhs.l2_norm();
     linear_iterations_of_step.push_back(linear_solver->last_iterations());
     multigrid_setup_seconds += linear_solver->take_setup_seconds();
     if (const std::string note = linear_solver->take_note(); !note.empty())
@@ -1171,7 +1173,8 @@ namespace contact_fem
                            "solve of this load path was regular (the bodies are held). Hint: "
                            "more load steps (Load stepping/Number of load steps, Maximum step "
                            "splits)");
-    return NewtonFailure(what + "." + diagnosis().singular_system_hint(), false);
+    return NewtonFailure(what + "." + diagnosis().singular_system_hint(last_relative_linear_residual),
+                         false);
   }
 
   template <int dim>

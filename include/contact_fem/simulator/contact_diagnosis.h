@@ -19,6 +19,7 @@
 #include <contact_fem/solvers/solver_parameters.h>
 
 #include <map>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -113,9 +114,13 @@ namespace contact_fem
     /// The likely cause of a singular linear system (a penalty far above
     /// its automatic value, the precision limits, a body without supports)
     /// as a sentence for a failure message, or the question whether every
-    /// body is held. Collective.
+    /// body is held. @p relative_residual, ||A x - b|| / ||b|| of the
+    /// failed solve if known (else NaN), tells a free rigid-body mode
+    /// (of order 1) from digits lost to a stiffness contrast (well below).
+    /// Collective.
     std::string
-    singular_system_hint() const;
+    singular_system_hint(
+      const double relative_residual = std::numeric_limits<double>::quiet_NaN()) const;
     /// Young's modulus of the slave side of contact pair @p pair over that
     /// of its master side (the largest of each); 0 without master faces.
     double
