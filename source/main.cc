@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <regex>
 #include <sstream>
 #include <iostream>
@@ -497,6 +498,41 @@ namespace
     return result;
   }
 
+  /// The subsections open at line @p line of @p file ("A/B"; "" at the
+  /// top level), or nullopt if the scan of @p prm_file does not reach it.
+  std::optional<std::string>
+  section_at(const std::string &prm_file, const std::string &file, const std::string &line)
+  {
+    std::vector<std::string> path;
+    if (!subsections_at(prm_file, file, std::stoul(line), path))
+      return std::nullopt;
+    std::string section;
+    for (const std::string &part : path)
+      section += (section.empty() ? "" : "/") + part;
+    return section;
+  }
+
+  /// ParameterHandler's message for a value its pattern refuses names the
+  /// key without its subsection: returned with it; "" for any other
+  /// message.
+  std::string
+  value_mismatch_message(const std::string &message, const std::string &prm_file)
+  {
+    static const std::regex mismatch("^Line <([0-9]+)> of file <(.*)>: The entry value (.*) for "
+                                     "the entry named (.*) does not match the given pattern: "
+                                     "(.*)$");
+    std::smatch match;
+    if (!std::regex_match(message, match, mismatch))
+      return "";
+    const auto section = section_at(prm_file, match[2].str(), match[1].str());
+    if (!section)
+      return "";
+    return "Line <" + match[1].str() + "> of file <" + match[2].str() + ">: " +
+           (section->empty() ? "" : *section + "/") + match[4].str() + " = '" +
+           contact_fem::excerpt(match[3].str()) + "' is not a valid value; expected " +
+           match[5].str() + ".";
+  }
+
   /// ParameterHandler's message for an unknown key ("Line <3> of file
   /// <x.prm>: No entry with name <K> was declared in the current
   /// subsection.") names no subsection. Returns it with the subsection the
@@ -514,12 +550,11 @@ namespace
     if (!std::regex_match(message, match, unknown))
       return "";
     const std::string        file = match[2].str(), name = match[3].str();
-    std::vector<std::string> path;
-    if (!subsections_at(prm_file, file, std::stoul(match[1].str()), path))
+    const auto               found_section = section_at(prm_file, file, match[1].str());
+    if (!found_section)
       return "";
-    std::string section;
-    for (const std::string &part : path)
-      section += (section.empty() ? "" : "/") + part;
+    const std::string        section = *found_section;
+    std::vector<std::string> path    = Utilities::split_string_list(section, '/');
     const std::string where =
       section.empty() ? "at the top level" : "in subsection '" + section + "'";
     const boost::property_tree::ptree  declared = declared_parameters(prm);
@@ -722,10 +757,12 @@ main(int argc, char **argv)
         }
       catch (const std::exception &e)
         {
-          // ParameterHandler's message for an unknown key names no
-          // subsection: the file is read again to name it.
-          const std::string better =
-            unknown_key_message(contact_fem::user_message(e), cl.prm_file, prm);
+          // ParameterHandler's messages for an unknown key or a refused
+          // value name no subsection: the file is read again to name it.
+          const std::string message = contact_fem::user_message(e);
+          std::string       better  = unknown_key_message(message, cl.prm_file, prm);
+          if (better.empty())
+            better = value_mismatch_message(message, cl.prm_file);
           if (better.empty())
             throw;
           throw std::runtime_error(better);
