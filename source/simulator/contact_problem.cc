@@ -343,6 +343,8 @@ namespace contact_fem
     // only if it has.
     auto formulation = ContactFormulation<dim>::create(prm);
     if (!contact_parameters.pairs.empty())
+      friction_laws = FrictionParameters::parse_laws(prm);
+    if (!contact_parameters.pairs.empty())
       contact = std::move(formulation);
     // Finite deformation only: small-strain scenes pay nothing.
     if (finite_strain || (contact && contact_parameters.current_kinematics))
@@ -1559,7 +1561,25 @@ namespace contact_fem
     if (contact && contact->slides_everywhere())
       {
         if (const auto free = diagnosis().problem_traits().unsupported_bodies; !free.empty())
-          throw NewtonFailure(at + ": " + exceeded_friction_capacity(free));
+          {
+            // "The load exceeds the capacity" only where it may: a body
+            // whose lateral expansion under a pressure slides every node
+            // outwards is loaded tangentially by nothing.
+            if (const std::string within =
+                  diagnosis().load_within_friction_capacity(free, friction_laws, current_time);
+                !within.empty())
+              throw NewtonFailure(
+                at + ": every active contact node slips (none sticks), so nothing holds " +
+                (free.size() == 1 ? "body " + std::to_string(free[0]) : std::string("the bodies")) +
+                " tangentially in the linearised step (no support does), although " + within +
+                ": the slip comes from the bodies' own deformation, not from the load (the "
+                "lateral expansion under pressure of a body with Poisson's ratio near 0.5, "
+                "larger still where degree-1 elements lock without B-bar), or the iterate "
+                "overshot. Hint: a support or Boundary conditions/Fixed points that holds the "
+                "tangential translation, Finite element/Volumetric strain = B-bar, or a finer "
+                "mesh");
+            throw NewtonFailure(at + ": " + exceeded_friction_capacity(free));
+          }
         if (const auto along = diagnosis().friction_held_translations(); !along.empty())
           throw NewtonFailure(at + ": " + exceeded_friction_capacity({}, along));
       }

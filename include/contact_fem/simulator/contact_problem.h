@@ -454,6 +454,9 @@ namespace contact_fem
     /// Wall time of the multigrid set-ups of this cycle, part of "Solve:
     /// linear".
     double                        multigrid_setup_seconds = 0.;
+    /// The frictional law of each contact pair (Contact/Friction), empty
+    /// without: the diagnosis of a step in which every node slips.
+    std::vector<std::shared_ptr<const FrictionalLaw>> friction_laws;
     /// ||A x - b|| of the last linear solve, for the Newton monitor.
     double last_linear_residual = 0.;
     /// ||A x - b|| / ||b|| of the last linear solve, NaN while it runs (a
