@@ -17,6 +17,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
+#include <regex>
 #include <sstream>
 #include <iostream>
 #include <string>
@@ -241,6 +243,43 @@ namespace
     chain.pop_back();
   }
 
+  /// Whether the scan of @p file (as ParameterHandler reads it: an
+  /// included file continues in the subsection of its include line)
+  /// reaches line @p target_line of @p target; @p path then holds the
+  /// subsections open there.
+  bool
+  subsections_at(const std::string        &file,
+                 const std::string        &target,
+                 const unsigned int        target_line,
+                 std::vector<std::string> &path)
+  {
+    std::error_code error;
+    const bool      here = std::filesystem::weakly_canonical(file, error) ==
+                      std::filesystem::weakly_canonical(target, error);
+    std::ifstream in(file);
+    std::string   line;
+    for (unsigned int number = 1; std::getline(in, line); ++number)
+      {
+        if (here && number >= target_line)
+          return true;
+        std::istringstream words(line.substr(0, line.find('#')));
+        std::string        first;
+        words >> first;
+        if (first == "subsection" || first == "SUBSECTION")
+          {
+            std::string name;
+            std::getline(words, name);
+            path.push_back(Utilities::trim(name));
+          }
+        else if ((first == "end" || first == "END") && !path.empty())
+          path.pop_back();
+        else if (const std::string included = included_file(line);
+                 !included.empty() && subsections_at(included, target, target_line, path))
+          return true;
+      }
+    return false;
+  }
+
   /// The number of values set in @p tree (JSON or XML read by boost),
   /// without XML attributes and comments.
   unsigned int
@@ -403,6 +442,170 @@ namespace
     return tree;
   }
 
+  /// Whether @p node of the declared tree is a key (not a subsection).
+  bool
+  is_key(const boost::property_tree::ptree &node)
+  {
+    return node.count("value") && node.count("default_value");
+  }
+
+  /// The paths ("A/B", "" for the top level) of the subsections that
+  /// declare an entry named @p name, and whether each is a key.
+  void
+  find_entry(const boost::property_tree::ptree            &tree,
+             const std::string                            &name,
+             const std::string                            &path,
+             std::vector<std::pair<std::string, bool>>    &found)
+  {
+    for (const auto &[key, child] : tree)
+      {
+        if (demangle(key) == name)
+          found.emplace_back(path, is_key(child));
+        if (!is_key(child) && !child.empty())
+          find_entry(child, name, path + (path.empty() ? "" : "/") + demangle(key), found);
+      }
+  }
+
+  /// Edits (insertions, deletions, substitutions) from @p a to @p b.
+  std::size_t
+  edit_distance(const std::string &a, const std::string &b)
+  {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j)
+      row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i)
+      {
+        std::size_t diagonal = row[0];
+        row[0]               = i;
+        for (std::size_t j = 1; j <= b.size(); ++j)
+          {
+            const std::size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+            diagonal = above;
+          }
+      }
+    return row[b.size()];
+  }
+
+  /// @p name in lower case without blanks and punctuation.
+  std::string
+  folded(const std::string &name)
+  {
+    std::string result;
+    for (const char c : name)
+      if (std::isalnum(static_cast<unsigned char>(c)))
+        result += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return result;
+  }
+
+  /// The subsections open at line @p line of @p file ("A/B"; "" at the
+  /// top level), or nullopt if the scan of @p prm_file does not reach it.
+  std::optional<std::string>
+  section_at(const std::string &prm_file, const std::string &file, const std::string &line)
+  {
+    std::vector<std::string> path;
+    if (!subsections_at(prm_file, file, std::stoul(line), path))
+      return std::nullopt;
+    std::string section;
+    for (const std::string &part : path)
+      section += (section.empty() ? "" : "/") + part;
+    return section;
+  }
+
+  /// ParameterHandler's message for a value its pattern refuses names the
+  /// key without its subsection: returned with it; "" for any other
+  /// message.
+  std::string
+  value_mismatch_message(const std::string &message, const std::string &prm_file)
+  {
+    static const std::regex mismatch("^Line <([0-9]+)> of file <(.*)>: The entry value (.*) for "
+                                     "the entry named (.*) does not match the given pattern: "
+                                     "(.*)$");
+    std::smatch match;
+    if (!std::regex_match(message, match, mismatch))
+      return "";
+    const auto section = section_at(prm_file, match[2].str(), match[1].str());
+    if (!section)
+      return "";
+    return "Line <" + match[1].str() + "> of file <" + match[2].str() + ">: " +
+           (section->empty() ? "" : *section + "/") + match[4].str() + " = '" +
+           contact_fem::excerpt(match[3].str()) + "' is not a valid value; expected " +
+           match[5].str() + ".";
+  }
+
+  /// ParameterHandler's message for an unknown key ("Line <3> of file
+  /// <x.prm>: No entry with name <K> was declared in the current
+  /// subsection.") names no subsection. Returns it with the subsection the
+  /// key was read in, where a key of that name is declared instead, or a
+  /// key of that subsection spelt nearly so; "" for any other message.
+  std::string
+  unknown_key_message(const std::string &message,
+                      const std::string &prm_file,
+                      const ParameterHandler &prm)
+  {
+    static const std::regex unknown(
+      "^Line <([0-9]+)> of file <(.*)>: No entry with name <(.*)> was declared in the current "
+      "subsection\\.$");
+    std::smatch match;
+    if (!std::regex_match(message, match, unknown))
+      return "";
+    const std::string        file = match[2].str(), name = match[3].str();
+    const auto               found_section = section_at(prm_file, file, match[1].str());
+    if (!found_section)
+      return "";
+    const std::string        section = *found_section;
+    std::vector<std::string> path    = Utilities::split_string_list(section, '/');
+    const std::string where =
+      section.empty() ? "at the top level" : "in subsection '" + section + "'";
+    const boost::property_tree::ptree  declared = declared_parameters(prm);
+    const boost::property_tree::ptree *node     = &declared;
+    for (const std::string &part : path)
+      for (const auto &[key, child] : *node)
+        if (demangle(key) == part)
+          {
+            node = &child;
+            break;
+          }
+    std::string advice;
+    // The same name elsewhere: a key written in the wrong subsection.
+    std::vector<std::pair<std::string, bool>> found;
+    find_entry(declared, name, "", found);
+    std::vector<std::string> keys, sections;
+    for (const auto &[other, key] : found)
+      if (key)
+        keys.push_back(other.empty() ? "the top level" : "'" + other + "'");
+      else
+        sections.push_back(other.empty() ? "at the top level" : "in '" + other + "'");
+    const auto listed = [](const std::vector<std::string> &names) {
+      std::string text;
+      for (unsigned int i = 0; i < names.size(); ++i)
+        text += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+      return text;
+    };
+    if (!keys.empty())
+      advice += "; '" + name + "' is a key of " +
+                (keys[0] == "the top level" ? "" : keys.size() == 1 ? "subsection " : "subsections ") +
+                listed(keys);
+    if (!sections.empty())
+      advice += "; '" + name + "' is a subsection (entered by 'subsection " + name +
+                "', not set) " + listed(sections);
+    // A near spelling in the subsection itself: a typing error.
+    std::vector<std::string> near;
+    if (advice.empty())
+      for (const auto &[key, child] : *node)
+        if (is_key(child))
+          {
+            const std::string a = folded(demangle(key)), b = folded(name);
+            if (a == b || edit_distance(a, b) <= std::min<std::size_t>(2, b.size() / 4))
+              near.push_back(demangle(key));
+          }
+    for (unsigned int i = 0; i < near.size(); ++i)
+      advice += (i == 0 ? "; did you mean '" : "' or '") + near[i] +
+                (i + 1 == near.size() ? "'?" : "");
+    return "Line <" + match[1].str() + "> of file <" + file + ">: no key '" + name + "' " + where +
+           advice + " (--print-parameters lists every subsection and key).";
+  }
+
   /// Every parameter with its default, its allowed values and its
   /// documentation, in .prm syntax (so the listing is a valid input file).
   void
@@ -548,7 +751,22 @@ main(int argc, char **argv)
       if (cl.prm_file.empty())
         throw std::runtime_error("no parameter file given.\n\n" + std::string(usage));
       check_parameter_file(cl.prm_file);
-      prm.parse_input(cl.prm_file);
+      try
+        {
+          prm.parse_input(cl.prm_file);
+        }
+      catch (const std::exception &e)
+        {
+          // ParameterHandler's messages for an unknown key or a refused
+          // value name no subsection: the file is read again to name it.
+          const std::string message = contact_fem::user_message(e);
+          std::string       better  = unknown_key_message(message, cl.prm_file, prm);
+          if (better.empty())
+            better = value_mismatch_message(message, cl.prm_file);
+          if (better.empty())
+            throw;
+          throw std::runtime_error(better);
+        }
       // The declared tree (a JSON round trip) only checks --set options.
       const boost::property_tree::ptree declared =
         cl.overrides.empty() ? boost::property_tree::ptree() : declared_parameters(prm);

@@ -144,6 +144,22 @@ namespace contact_fem
                            std::to_string(longest) +
                            " characters the expression parser (muparser) takes."));
     const std::string variables = dim == 2 ? "x,y,t" : "x,y,z,t";
+    // muparser takes "a, b" as a list of results and evaluates to the last:
+    // "1: t, 3" would be a pressure of 3. A scalar is one expression (commas
+    // only between the arguments of a function, as in min(t, 1)).
+    unsigned int pieces = 1;
+    int          depth  = 0;
+    for (const char c : expression)
+      {
+        depth += c == '(' ? 1 : c == ')' ? -1 : 0;
+        pieces += c == ',' && depth == 0;
+      }
+    AssertThrow(pieces == 1,
+                ExcMessage(key + ": '" + excerpt(expression) + "' is " + std::to_string(pieces) +
+                           " comma-separated expressions; expected one expression of " +
+                           variables +
+                           " (commas separate only the arguments of a function, as in min(t, "
+                           "1); the expression parser would take the last one alone)."));
     // deal.II prints muparser's error, the whole expression included, to
     // std::cerr: caught here, and only its reason is quoted.
     std::ostringstream printed;

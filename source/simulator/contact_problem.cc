@@ -343,6 +343,8 @@ namespace contact_fem
     // only if it has.
     auto formulation = ContactFormulation<dim>::create(prm);
     if (!contact_parameters.pairs.empty())
+      friction_laws = FrictionParameters::parse_laws(prm);
+    if (!contact_parameters.pairs.empty())
       contact = std::move(formulation);
     // Finite deformation only: small-strain scenes pay nothing.
     if (finite_strain || (contact && contact_parameters.current_kinematics))
@@ -856,9 +858,11 @@ namespace contact_fem
     LinearSystemRequest request;
     request.symmetric              = !contact || contact->matrix_symmetric();
     request.newton_residual_target = newton_residual_target;
+    last_relative_linear_residual  = std::numeric_limits<double>::quiet_NaN();
     last_linear_residual =
       linear_solver->solve(system_matrix, solution, system_rhs, request);
     const double linear_residual = last_linear_residual;
+    last_relative_linear_residual = linear_residual / system_rhs.l2_norm();
     linear_iterations_of_step.push_back(linear_solver->last_iterations());
     multigrid_setup_seconds += linear_solver->take_setup_seconds();
     if (const std::string note = linear_solver->take_note(); !note.empty())
@@ -1171,7 +1175,8 @@ namespace contact_fem
                            "solve of this load path was regular (the bodies are held). Hint: "
                            "more load steps (Load stepping/Number of load steps, Maximum step "
                            "splits)");
-    return NewtonFailure(what + "." + diagnosis().singular_system_hint(), false);
+    return NewtonFailure(what + "." + diagnosis().singular_system_hint(last_relative_linear_residual),
+                         false);
   }
 
   template <int dim>
@@ -1556,7 +1561,25 @@ namespace contact_fem
     if (contact && contact->slides_everywhere())
       {
         if (const auto free = diagnosis().problem_traits().unsupported_bodies; !free.empty())
-          throw NewtonFailure(at + ": " + exceeded_friction_capacity(free));
+          {
+            // "The load exceeds the capacity" only where it may: a body
+            // whose lateral expansion under a pressure slides every node
+            // outwards is loaded tangentially by nothing.
+            if (const std::string within =
+                  diagnosis().load_within_friction_capacity(free, friction_laws, current_time);
+                !within.empty())
+              throw NewtonFailure(
+                at + ": every active contact node slips (none sticks), so nothing holds " +
+                (free.size() == 1 ? "body " + std::to_string(free[0]) : std::string("the bodies")) +
+                " tangentially in the linearised step (no support does), although " + within +
+                ": the slip comes from the bodies' own deformation, not from the load (the "
+                "lateral expansion under pressure of a body with Poisson's ratio near 0.5, "
+                "larger still where degree-1 elements lock without B-bar), or the iterate "
+                "overshot. Hint: a support or Boundary conditions/Fixed points that holds the "
+                "tangential translation, Finite element/Volumetric strain = B-bar, or a finer "
+                "mesh");
+            throw NewtonFailure(at + ": " + exceeded_friction_capacity(free));
+          }
         if (const auto along = diagnosis().friction_held_translations(); !along.empty())
           throw NewtonFailure(at + ": " + exceeded_friction_capacity({}, along));
       }

@@ -10,6 +10,7 @@
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/contact/contact_parameters.h>
 #include <contact_fem/contact/formulations/contact_formulation.h>
+#include <contact_fem/contact/friction/frictional_law.h>
 #include <contact_fem/core/json.h>
 #include <contact_fem/geometry/scene.h>
 #include <contact_fem/material/material.h>
@@ -19,6 +20,8 @@
 #include <contact_fem/solvers/solver_parameters.h>
 
 #include <map>
+#include <memory>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -110,12 +113,28 @@ namespace contact_fem
     /// unsupported_bodies. Collective.
     std::string
     friction_held_translations() const;
+    /// For bodies @p free_bodies (held by no support) whose active contact
+    /// is one pair: the sentence that the tangential load on the body at
+    /// @p time is within the friction capacity of that pair under its law
+    /// of @p laws (mu times the normal load under Coulomb, the bound times
+    /// the active area under Tresca), naming both; "" if it is not, or if
+    /// that cannot be told. Every node slipping then comes from the
+    /// bodies' own deformation or an overshooting iterate, not from a load
+    /// beyond the capacity. Collective.
+    std::string
+    load_within_friction_capacity(const std::vector<unsigned int>                         &free_bodies,
+                                  const std::vector<std::shared_ptr<const FrictionalLaw>> &laws,
+                                  const double time) const;
     /// The likely cause of a singular linear system (a penalty far above
     /// its automatic value, the precision limits, a body without supports)
     /// as a sentence for a failure message, or the question whether every
-    /// body is held. Collective.
+    /// body is held. @p relative_residual, ||A x - b|| / ||b|| of the
+    /// failed solve if known (else NaN), tells a free rigid-body mode
+    /// (of order 1) from digits lost to a stiffness contrast (well below).
+    /// Collective.
     std::string
-    singular_system_hint() const;
+    singular_system_hint(
+      const double relative_residual = std::numeric_limits<double>::quiet_NaN()) const;
     /// Young's modulus of the slave side of contact pair @p pair over that
     /// of its master side (the largest of each); 0 without master faces.
     double

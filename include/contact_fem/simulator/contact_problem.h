@@ -49,6 +49,7 @@
 
 #include <cmath>
 #include <map>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -453,8 +454,14 @@ namespace contact_fem
     /// Wall time of the multigrid set-ups of this cycle, part of "Solve:
     /// linear".
     double                        multigrid_setup_seconds = 0.;
+    /// The frictional law of each contact pair (Contact/Friction), empty
+    /// without: the diagnosis of a step in which every node slips.
+    std::vector<std::shared_ptr<const FrictionalLaw>> friction_laws;
     /// ||A x - b|| of the last linear solve, for the Newton monitor.
     double last_linear_residual = 0.;
+    /// ||A x - b|| / ||b|| of the last linear solve, NaN while it runs (a
+    /// solve that throws leaves it so): a singular system's diagnosis.
+    double last_relative_linear_residual = std::numeric_limits<double>::quiet_NaN();
     TrilinosWrappers::MPI::Vector system_rhs;
     TrilinosWrappers::MPI::Vector solution;         ///< owned
     TrilinosWrappers::MPI::Vector ghosted_solution; ///< locally relevant
