@@ -606,6 +606,54 @@ namespace
            advice + " (--print-parameters lists every subsection and key).";
   }
 
+  /// ParameterHandler's message for a value its pattern accepts but the
+  /// conversion does not ("Can't convert the parameter value <1e-320> for
+  /// entry <End time> to a double precision variable.": an underflow or an
+  /// overflow of strtod, after the file was read) names neither the file
+  /// nor the subsection. (An integer's pattern refuses what an int does
+  /// not hold.) Returns it with the keys of that name that hold that value
+  /// and what a double holds; "" for any other message.
+  std::string
+  conversion_message(const std::string      &message,
+                     const std::string      &prm_file,
+                     const ParameterHandler &prm)
+  {
+    static const std::regex cannot("^Can't convert the parameter value <(.*)> for entry <(.*)> "
+                                   "to a double precision variable\\.$");
+    std::smatch match;
+    if (!std::regex_match(message, match, cannot))
+      return "";
+    const std::string value = match[1].str(), name = match[2].str();
+    std::vector<std::pair<std::string, bool>> found;
+    const boost::property_tree::ptree         declared = declared_parameters(prm);
+    find_entry(declared, name, "", found);
+    // The values from the declared tree: the handler may still stand in
+    // the subsection whose parsing threw.
+    const auto value_of = [&](const std::string &section) {
+      const boost::property_tree::ptree *node = &declared;
+      for (const std::string &part : Utilities::split_string_list(section, '/'))
+        for (const auto &[key, child] : *node)
+          if (demangle(key) == part)
+            {
+              node = &child;
+              break;
+            }
+      for (const auto &[key, child] : *node)
+        if (demangle(key) == name && is_key(child))
+          return child.get<std::string>("value");
+      return std::string();
+    };
+    std::string keys;
+    for (const auto &[section, key] : found)
+      if (key && value_of(section) == value)
+        keys += (keys.empty() ? "" : ", ") + (section.empty() ? "" : section + "/") + name;
+    if (keys.empty())
+      return "";
+    return prm_file + ": " + keys + " = '" + contact_fem::excerpt(value) +
+           "' is beyond the range of double precision (magnitudes from 2.2e-308 to 1.8e+308, "
+           "or 0); expected a number in that range.";
+  }
+
   /// Every parameter with its default, its allowed values and its
   /// documentation, in .prm syntax (so the listing is a valid input file).
   void
@@ -786,8 +834,20 @@ main(int argc, char **argv)
       if (dim != 2 && dim != 3)
         throw std::runtime_error("Dimension = " + std::to_string(dim) +
                                  ": only 2D and 3D scenes exist.");
-      return dim == 2 ? run<2>(prm, name, directory, cl.validate) :
-                        run<3>(prm, name, directory, cl.validate);
+      try
+        {
+          return dim == 2 ? run<2>(prm, name, directory, cl.validate) :
+                            run<3>(prm, name, directory, cl.validate);
+        }
+      catch (const std::exception &e)
+        {
+          // A value that passed its pattern but overflows its type.
+          const std::string better =
+            conversion_message(contact_fem::user_message(e), cl.prm_file, prm);
+          if (better.empty())
+            throw;
+          throw std::runtime_error(better);
+        }
     }
   catch (const contact_fem::Interrupted &e)
     {
