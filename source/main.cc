@@ -449,6 +449,23 @@ namespace
     return node.count("value") && node.count("default_value");
   }
 
+  /// The node of subsection @p section ("A/B"; "" the top level) of the
+  /// declared tree @p declared; the deepest existing one if a part is
+  /// missing.
+  const boost::property_tree::ptree &
+  subsection_node(const boost::property_tree::ptree &declared, const std::string &section)
+  {
+    const boost::property_tree::ptree *node = &declared;
+    for (const std::string &part : Utilities::split_string_list(section, '/'))
+      for (const auto &[key, child] : *node)
+        if (demangle(key) == part)
+          {
+            node = &child;
+            break;
+          }
+    return *node;
+  }
+
   /// The paths ("A/B", "" for the top level) of the subsections that
   /// declare an entry named @p name, and whether each is a key.
   void
@@ -553,19 +570,11 @@ namespace
     const auto               found_section = section_at(prm_file, file, match[1].str());
     if (!found_section)
       return "";
-    const std::string        section = *found_section;
-    std::vector<std::string> path    = Utilities::split_string_list(section, '/');
+    const std::string section = *found_section;
     const std::string where =
       section.empty() ? "at the top level" : "in subsection '" + section + "'";
     const boost::property_tree::ptree  declared = declared_parameters(prm);
-    const boost::property_tree::ptree *node     = &declared;
-    for (const std::string &part : path)
-      for (const auto &[key, child] : *node)
-        if (demangle(key) == part)
-          {
-            node = &child;
-            break;
-          }
+    const boost::property_tree::ptree &node     = subsection_node(declared, section);
     std::string advice;
     // The same name elsewhere: a key written in the wrong subsection.
     std::vector<std::pair<std::string, bool>> found;
@@ -592,7 +601,7 @@ namespace
     // A near spelling in the subsection itself: a typing error.
     std::vector<std::string> near;
     if (advice.empty())
-      for (const auto &[key, child] : *node)
+      for (const auto &[key, child] : node)
         if (is_key(child))
           {
             const std::string a = folded(demangle(key)), b = folded(name);
@@ -630,15 +639,7 @@ namespace
     // The values from the declared tree: the handler may still stand in
     // the subsection whose parsing threw.
     const auto value_of = [&](const std::string &section) {
-      const boost::property_tree::ptree *node = &declared;
-      for (const std::string &part : Utilities::split_string_list(section, '/'))
-        for (const auto &[key, child] : *node)
-          if (demangle(key) == part)
-            {
-              node = &child;
-              break;
-            }
-      for (const auto &[key, child] : *node)
+      for (const auto &[key, child] : subsection_node(declared, section))
         if (demangle(key) == name && is_key(child))
           return child.get<std::string>("value");
       return std::string();

@@ -343,9 +343,10 @@ namespace contact_fem
     // only if it has.
     auto formulation = ContactFormulation<dim>::create(prm);
     if (!contact_parameters.pairs.empty())
-      friction_laws = FrictionParameters::parse_laws(prm);
-    if (!contact_parameters.pairs.empty())
-      contact = std::move(formulation);
+      {
+        contact       = std::move(formulation);
+        friction_laws = FrictionParameters::parse_laws(prm);
+      }
     // Finite deformation only: small-strain scenes pay nothing.
     if (finite_strain || (contact && contact_parameters.current_kinematics))
       {
