@@ -185,8 +185,11 @@ namespace contact_fem
     for (const types::boundary_id id : ids)
       {
         Tensor<1, dim> force;
+        // Ghost cells too: the cells that hold an owned DoF need not have a
+        // face on the boundary (a cell touching it at an edge or a vertex),
+        // while a ghost cell beside them does.
         for (const auto &cell : in.dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
+          if (!cell->is_artificial())
             for (const auto f : cell->face_indices())
               if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
                 {
