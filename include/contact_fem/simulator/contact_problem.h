@@ -114,6 +114,10 @@ namespace contact_fem
     /// Builds the scene's mesh and checks it (materials, cell shapes).
     void
     create_checked_mesh();
+    /// Refuses an analytical solution of another radius or centre than the
+    /// built-in Hertz body it is compared with.
+    void
+    check_analytical_geometry() const;
     /// The start of run(): the output directory, the first lines of the
     /// console, the mesh and convergence.csv.
     void
