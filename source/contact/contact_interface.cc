@@ -1287,9 +1287,7 @@ namespace contact_fem
     const SurfaceNormals                                   &master_normals)
   {
     // A node counts as paired when the master covers a fair part of its
-    // support; tiny or negative dual weights at the rim of the master
-    // surface would make its gap ill-defined.
-    constexpr double least_covered_fraction = 1e-2;
+    // support (least_covered_fraction).
     hanging_slave_vertices.clear();
     for (const auto &[n, s] : slave_data)
       if (!nodes[n].parents.empty())

@@ -376,7 +376,37 @@ namespace contact_fem
       (in_iteration ? " (every node is in tension or apart)" : "") +
       ": the load separates the bodies. Set Contact/Allow loss of contact = true if the "
       "scene may lose contact.";
-    // Causes other than a separating load, most specific first.
+    // Causes other than a separating load, most specific first. No node
+    // paired, yet the master covers a sliver of some node's support: a
+    // corner of one surface over the edge of the other, which the pairing
+    // threshold leaves unseen whatever the load does.
+    if (run.interface &&
+        std::none_of(run.interface->slave_nodes.begin(), run.interface->slave_nodes.end(),
+                     [](const auto &s) { return s.paired; }))
+      {
+        const auto *most = static_cast<const typename ContactInterface<dim>::SlaveNode *>(nullptr);
+        for (const auto &s : run.interface->slave_nodes)
+          if (s.D > 0. && s.full_area > 0. &&
+              (!most || s.D / s.full_area > most->D / most->full_area))
+            most = &s;
+        if (most)
+          return NewtonFailure(
+            where +
+              ": no contact. No slave node is paired with its master surface: the master "
+              "covers at most " +
+              format(100. * most->D / most->full_area, 2) +
+              " % of a slave node's support (the node at " +
+              coordinates_text(run.interface->nodes[most->node].reference) +
+              ", in the mesh), below the " +
+              format(100. * ContactInterface<dim>::least_covered_fraction) +
+              " % a node needs to be paired (the gap of so small an overlap is ill-defined): "
+              "a corner of one surface just over the edge of the other is not seen as "
+              "contact, whatever the load does. Hint: let the surfaces overlap by more than " +
+              format(100. * ContactInterface<dim>::least_covered_fraction) +
+              " % of the slave's element size where they meet (or not at all), or refine the "
+              "slave surface there.",
+            false);
+      }
     if (load_vanishes(time))
       return NewtonFailure(where +
                              ": no contact. No slave node is active because the load is zero "

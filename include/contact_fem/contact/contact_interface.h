@@ -601,6 +601,11 @@ namespace contact_fem
     double
     gap(const SlaveNode &s, const std::vector<double> &u) const;
 
+    /// A slave node is paired when the master covers more than this part of
+    /// its support (D_j > fraction x full_area): tiny or negative dual
+    /// weights at the rim of the master surface leave its gap ill-defined.
+    static constexpr double least_covered_fraction = 1e-2;
+
     std::vector<ContactPair> pairs;
     std::vector<Node>        nodes;
     std::vector<Face>        faces;
