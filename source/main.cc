@@ -345,6 +345,19 @@ namespace
                                "the default scene).");
     if (ends_with(".json") || ends_with(".xml"))
       return check_structured_file(file, ends_with(".json"));
+    // ParameterHandler picks the format by the extension and would say only
+    // "Unknown input file name extension", naming no file.
+    if (!ends_with(".prm"))
+      {
+        const std::string name = file.substr(file.find_last_of('/') + 1);
+        const auto        dot  = name.find_last_of('.');
+        throw std::runtime_error(
+          "the parameter file '" + file + "' " +
+          (dot == std::string::npos ? std::string("has no extension") :
+                                      "has the extension '" + name.substr(dot) + "'") +
+          ": contact_fem reads a parameter file by its extension, .prm (or .json, .xml "
+          "for those formats); rename it, e.g. to '" + name.substr(0, dot) + ".prm'.");
+      }
     if (!settings)
       throw std::runtime_error("the parameter file '" + file +
                                "' has no settings, only comments or subsections (it would "
