@@ -86,6 +86,9 @@ namespace contact_fem
       } owned;
     };
 
+    /// The sums of the paired nodes, by node.
+    using Sums = std::pmr::map<unsigned int, NodeSums>;
+
     /// @p to += @p factor * @p from (every entry of @p from, zero or not).
     void
     add_to(DofMap &to, const DofMap &from, const double factor)
@@ -292,7 +295,7 @@ namespace contact_fem
              const unsigned int                         f,
              const unsigned int                         m,
              const bool                                 frictional,
-             std::pmr::map<unsigned int, NodeSums>          &sums)
+             Sums                                      &sums)
     {
       const auto &slave_nodes  = interface.faces[f].nodes;
       const auto &master_nodes = interface.faces[m].nodes;
@@ -342,7 +345,7 @@ namespace contact_fem
                    const std::vector<unsigned int>               &masters,
                    const unsigned int                             f,
                    const ContactInterface<3>::FaceTrace          &trace,
-                   std::pmr::map<unsigned int, NodeSums>              &sums)
+                   Sums                                          &sums)
     {
       const unsigned int        n           = interface.faces[f].nodes.size();
       const unsigned int        n_owners    = trace.owners.size();
@@ -522,13 +525,13 @@ namespace contact_fem
     /// its own patch (the slave face, its @p neighbours, the pair's master
     /// and the others).
     void
-    add_slave_face(const ContactInterface<2>        &interface,
-                   const std::vector<Tensor<1, 2>>  &u,
-                   const unsigned int                f,
-                   const std::vector<unsigned int>  &neighbours,
-                   const std::vector<unsigned int>  &masters,
-                   const bool                        frictional,
-                   std::pmr::map<unsigned int, NodeSums> &sums)
+    add_slave_face(const ContactInterface<2>       &interface,
+                   const std::vector<Tensor<1, 2>> &u,
+                   const unsigned int               f,
+                   const std::vector<unsigned int> &neighbours,
+                   const std::vector<unsigned int> &masters,
+                   const bool                       frictional,
+                   Sums                            &sums)
     {
       // A 2D contact surface has no hanging vertices (they lie inside the
       // body, on the edges between cells of different levels).
@@ -552,13 +555,13 @@ namespace contact_fem
     /// 3D: the slave face linearised once with all its masters (the nodal
     /// normals and the dual basis are shared).
     void
-    add_slave_face(const ContactInterface<3>        &interface,
-                   const std::vector<Tensor<1, 3>>  &u,
-                   const unsigned int                f,
-                   const std::vector<unsigned int>  &neighbours,
-                   const std::vector<unsigned int>  &masters,
-                   const bool                        frictional,
-                   std::pmr::map<unsigned int, NodeSums> &sums)
+    add_slave_face(const ContactInterface<3>       &interface,
+                   const std::vector<Tensor<1, 3>> &u,
+                   const unsigned int               f,
+                   const std::vector<unsigned int> &neighbours,
+                   const std::vector<unsigned int> &masters,
+                   const bool                       frictional,
+                   Sums                            &sums)
     {
       PatchBuilder<3> builder(interface, u);
       builder.patch.slave_faces.push_back(builder.add_face(f));
@@ -792,7 +795,6 @@ namespace contact_fem
       // only walk the trees to hand each entry back to an arena that frees
       // nothing (10 % of a frictional 3D run). Nothing in them holds other
       // memory (NodeSums passes the arena to every map it holds).
-      using Sums = std::pmr::map<unsigned int, NodeSums>;
       std::pmr::monotonic_buffer_resource arena;
       Sums &sums = *new (arena.allocate(sizeof(Sums), alignof(Sums))) Sums(&arena);
       for (const auto &s : slave_nodes)
