@@ -9,21 +9,47 @@
 #include <contact_fem/contact/mortar_linearisation.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <map>
+#include <memory_resource>
+#include <new>
 #include <set>
 
 namespace contact_fem
 {
   namespace
   {
-    using DofMap = std::map<types::global_dof_index, double>;
+    // The sums are polymorphic-allocator maps: linearise() builds them in
+    // one arena per call and frees them with it (ordered maps as before, so
+    // every sum is formed by the same operations in the same order). A
+    // malloc per entry and the walk of every tree to free it took a fifth
+    // of a frictional 3D run (doc/performance.md, "Session 38").
+    using DofMap = std::pmr::map<types::global_dof_index, double>;
+    using RowMap = std::pmr::map<types::global_dof_index, DofMap>;
 
     /// Sums of one node's derivatives over its face pairs.
     struct NodeSums
     {
-      DofMap                                                   gap, D;
-      std::map<types::global_dof_index, DofMap>                force;
-      std::array<std::map<types::global_dof_index, DofMap>, 3> tangent_force;
+      using allocator_type = std::pmr::polymorphic_allocator<std::byte>;
+
+      /// Every map of the node in @p arena's memory.
+      explicit NodeSums(const allocator_type &arena)
+        : gap(arena)
+        , D(arena)
+        , force(arena)
+        , tangent_force{{RowMap(arena), RowMap(arena), RowMap(arena)}}
+        , normal{{DofMap(arena), DofMap(arena), DofMap(arena)}}
+        , operators{{DofMap(arena), DofMap(arena), DofMap(arena)}}
+        , dM(arena)
+        , interface_normal{{DofMap(arena), DofMap(arena), DofMap(arena)}}
+        , interface_force(arena)
+        , interface_tangent_force{{RowMap(arena), RowMap(arena), RowMap(arena)}}
+        , owned(arena)
+      {}
+
+      DofMap                gap, D;
+      RowMap                force;
+      std::array<RowMap, 3> tangent_force;
       /// The normal's derivatives come whole from any one pair (its patch
       /// holds every slave face at the node); the operators' are summed.
       bool                  has_normal = false;
@@ -31,10 +57,10 @@ namespace contact_fem
       /// Frictional: d M_jl per master node l (hanging master vertices
       /// condensed to their parents, as SlaveNode::M), and the derivatives
       /// of the interface normal and of the forces along it (add_interface_frame()).
-      std::map<unsigned int, DofMap>                           dM;
-      std::array<DofMap, 3>                                    interface_normal;
-      std::map<types::global_dof_index, DofMap>                interface_force;
-      std::array<std::map<types::global_dof_index, DofMap>, 3> interface_tangent_force;
+      std::pmr::map<unsigned int, DofMap> dM;
+      std::array<DofMap, 3>               interface_normal;
+      RowMap                              interface_force;
+      std::array<RowMap, 3>               interface_tangent_force;
 
       /// The parts from slave faces with hanging vertices, which go to the
       /// owners of the face's trace (ContactInterface::face_trace(); the
@@ -43,15 +69,25 @@ namespace contact_fem
       /// applied at the end (add_owner_parts()).
       struct OwnerParts
       {
-        bool                           any = false;
-        double                         D   = 0.;
-        DofMap                         dD;
-        std::map<unsigned int, double> M;
-        std::map<unsigned int, DofMap> dM;
-        std::array<double, 3>          weighted_gap = {{0., 0., 0.}};
-        std::array<DofMap, 3>          d_weighted_gap;
+        explicit OwnerParts(const allocator_type &arena)
+          : dD(arena)
+          , M(arena)
+          , dM(arena)
+          , d_weighted_gap{{DofMap(arena), DofMap(arena), DofMap(arena)}}
+        {}
+
+        bool                                any = false;
+        double                              D   = 0.;
+        DofMap                              dD;
+        std::pmr::map<unsigned int, double> M;
+        std::pmr::map<unsigned int, DofMap> dM;
+        std::array<double, 3>               weighted_gap = {{0., 0., 0.}};
+        std::array<DofMap, 3>               d_weighted_gap;
       } owned;
     };
+
+    /// The sums of the paired nodes, by node.
+    using Sums = std::pmr::map<unsigned int, NodeSums>;
 
     /// @p to += @p factor * @p from (every entry of @p from, zero or not).
     void
@@ -259,7 +295,7 @@ namespace contact_fem
              const unsigned int                         f,
              const unsigned int                         m,
              const bool                                 frictional,
-             std::map<unsigned int, NodeSums>          &sums)
+             Sums                                      &sums)
     {
       const auto &slave_nodes  = interface.faces[f].nodes;
       const auto &master_nodes = interface.faces[m].nodes;
@@ -309,7 +345,7 @@ namespace contact_fem
                    const std::vector<unsigned int>               &masters,
                    const unsigned int                             f,
                    const ContactInterface<3>::FaceTrace          &trace,
-                   std::map<unsigned int, NodeSums>              &sums)
+                   Sums                                          &sums)
     {
       const unsigned int        n           = interface.faces[f].nodes.size();
       const unsigned int        n_owners    = trace.owners.size();
@@ -489,13 +525,13 @@ namespace contact_fem
     /// its own patch (the slave face, its @p neighbours, the pair's master
     /// and the others).
     void
-    add_slave_face(const ContactInterface<2>        &interface,
-                   const std::vector<Tensor<1, 2>>  &u,
-                   const unsigned int                f,
-                   const std::vector<unsigned int>  &neighbours,
-                   const std::vector<unsigned int>  &masters,
-                   const bool                        frictional,
-                   std::map<unsigned int, NodeSums> &sums)
+    add_slave_face(const ContactInterface<2>       &interface,
+                   const std::vector<Tensor<1, 2>> &u,
+                   const unsigned int               f,
+                   const std::vector<unsigned int> &neighbours,
+                   const std::vector<unsigned int> &masters,
+                   const bool                       frictional,
+                   Sums                            &sums)
     {
       // A 2D contact surface has no hanging vertices (they lie inside the
       // body, on the edges between cells of different levels).
@@ -519,13 +555,13 @@ namespace contact_fem
     /// 3D: the slave face linearised once with all its masters (the nodal
     /// normals and the dual basis are shared).
     void
-    add_slave_face(const ContactInterface<3>        &interface,
-                   const std::vector<Tensor<1, 3>>  &u,
-                   const unsigned int                f,
-                   const std::vector<unsigned int>  &neighbours,
-                   const std::vector<unsigned int>  &masters,
-                   const bool                        frictional,
-                   std::map<unsigned int, NodeSums> &sums)
+    add_slave_face(const ContactInterface<3>       &interface,
+                   const std::vector<Tensor<1, 3>> &u,
+                   const unsigned int               f,
+                   const std::vector<unsigned int> &neighbours,
+                   const std::vector<unsigned int> &masters,
+                   const bool                       frictional,
+                   Sums                            &sums)
     {
       PatchBuilder<3> builder(interface, u);
       builder.patch.slave_faces.push_back(builder.add_face(f));
@@ -705,11 +741,18 @@ namespace contact_fem
           dofs.insert(dof);
       typename ContactInterface<dim>::LinearisedNode result;
       result.dofs.assign(dofs.begin(), dofs.end());
+      // Both sorted by DoF: one walk along both (an entry of @p values
+      // outside dofs is left out, as the look-up per DoF left it).
       const auto at = [&](const DofMap &values) {
         std::vector<double> dense(result.dofs.size(), 0.);
-        for (unsigned int i = 0; i < dense.size(); ++i)
-          if (const auto it = values.find(result.dofs[i]); it != values.end())
-            dense[i] = it->second;
+        auto                it = values.begin();
+        for (unsigned int i = 0; i < dense.size() && it != values.end(); ++i)
+          {
+            while (it != values.end() && it->first < result.dofs[i])
+              ++it;
+            if (it != values.end() && it->first == result.dofs[i])
+              dense[i] = it->second;
+          }
         return dense;
       };
       result.gap = at(sums.gap);
@@ -747,7 +790,13 @@ namespace contact_fem
       // formulations test): a node's sums are those of its own slave faces
       // in face order, whichever other nodes are left out, so they are the
       // serial ones bit for bit.
-      std::map<unsigned int, NodeSums> sums;
+      // The sums, every map in them included, live in the arena and go
+      // with it at the end of the block, without a destructor: those would
+      // only walk the trees to hand each entry back to an arena that frees
+      // nothing (10 % of a frictional 3D run). Nothing in them holds other
+      // memory (NodeSums passes the arena to every map it holds).
+      std::pmr::monotonic_buffer_resource arena;
+      Sums &sums = *new (arena.allocate(sizeof(Sums), alignof(Sums))) Sums(&arena);
       for (const auto &s : slave_nodes)
         if (s.paired && owned_dofs.is_element(nodes[s.node].dofs[0]))
           sums[s.node];
