@@ -177,8 +177,7 @@ namespace contact_fem::Marking
                                                   [m = master](const auto &range) {
                                                     return range.second <= m;
                                                   });
-          AssertThrow(owner != owned_ranges.end() && owner->first <= master,
-                      ExcInternalError());
+          AssertThrow(owner != owned_ranges.end() && owner->first <= master, ExcInternalError());
           marked[owner - owned_ranges.begin()].push_back(master);
         }
     std::set<unsigned int> refine_master;

@@ -196,10 +196,10 @@ namespace contact_fem
         if (const unsigned int first = Utilities::MPI::min(first_apart, comm);
             first != std::numeric_limits<unsigned int>::max())
           {
-            const unsigned int owner = Utilities::MPI::min(
-              first_apart == first ? Utilities::MPI::this_mpi_process(comm) :
-                                     Utilities::MPI::n_mpi_processes(comm),
-              comm);
+            const unsigned int owner =
+              Utilities::MPI::min(first_apart == first ? Utilities::MPI::this_mpi_process(comm) :
+                                                         Utilities::MPI::n_mpi_processes(comm),
+                                  comm);
             AssertThrow(false, ExcMessage(Utilities::MPI::broadcast(comm, message, owner)));
           }
         AssertThrow(Utilities::MPI::max(any, comm) > 0,
@@ -448,8 +448,8 @@ namespace contact_fem
         std::vector<int> same(bonds_of_iteration.size(), 1);
         for (unsigned int i = 0; i < bonds_of_iteration.size(); ++i)
           for (unsigned int k = 0; k < surfaces.slave_nodes.size() && same[i]; ++k)
-            same[i] = !surfaces.owns_row(surfaces.slave_nodes[k]) ||
-                      bonds_of_iteration[i][k] == bond[k];
+            same[i] =
+              !surfaces.owns_row(surfaces.slave_nodes[k]) || bonds_of_iteration[i][k] == bond[k];
         Utilities::MPI::min(same, comm, same);
         for (unsigned int i = 0; i < bonds_of_iteration.size(); ++i)
           if (same[i])
@@ -513,10 +513,10 @@ namespace contact_fem
           const auto &s = surfaces.slave_nodes[k];
           return s.pair == p && s.paired && surfaces.owns_row(s);
         };
-        unsigned int n       = 0;
-        double       largest = 0.;
-        double       normal_min = std::numeric_limits<double>::max();
-        double       normal_max = std::numeric_limits<double>::lowest();
+        unsigned int n              = 0;
+        double       largest        = 0.;
+        double       normal_min     = std::numeric_limits<double>::max();
+        double       normal_max     = std::numeric_limits<double>::lowest();
         double       tangential_max = 0.;
         std::vector<std::vector<std::pair<unsigned int, double>>> terms(dim + 1); // D, force
         for (unsigned int k = 0; k < surfaces.slave_nodes.size(); ++k)
@@ -550,7 +550,7 @@ namespace contact_fem
         for (unsigned int k = 0; k < surfaces.slave_nodes.size(); ++k)
           if (in_pair(k) && largest > 0.)
             spread = std::max(spread, (traction[k] - mean).norm() / largest);
-        spread = Utilities::MPI::max(spread, comm);
+        spread                   = Utilities::MPI::max(spread, comm);
         const std::string name   = pair_text(surfaces.pairs[p]);
         Json              record = Json::object();
         record.set("pair", name)

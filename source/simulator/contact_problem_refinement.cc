@@ -135,7 +135,7 @@ namespace contact_fem
       const auto support = slave_support_samples(interface, [&](const unsigned int n) {
         return relevant.is_element(interface.nodes[n].dofs[0]);
       });
-      const auto listed = [&](const typename ContactInterface<dim>::SlaveNode &s) {
+      const auto listed  = [&](const typename ContactInterface<dim>::SlaveNode &s) {
         return s.paired && (all_paired || contact.is_active(s.node));
       };
       // The owners' sums: (node, weight, normal) per listed node.
@@ -180,10 +180,10 @@ namespace contact_fem
               traction = (s.D / reference) * contact.traction(s);
             else if (active)
               traction = -contact.normal_pressure(s.node) * s.D / reference * s.normal;
-            tractions.push_back({interface.nodes[s.node].reference, s.normal, traction,
-                                 samples != support.end() ? samples->second :
-                                                            std::vector<TractionSample<dim>>(),
-                                 active, interface.nodes[s.node].dofs[0]});
+            tractions.push_back(
+              {interface.nodes[s.node].reference, s.normal, traction,
+               samples != support.end() ? samples->second : std::vector<TractionSample<dim>>(),
+               active, interface.nodes[s.node].dofs[0]});
           }
       return tractions;
     }
