@@ -47,16 +47,18 @@ namespace contact_fem
                           n.stick ? 1. : 0., n.t_across, n.along, n.size});
         }
       rows = gather_rows(comm, rows, true);
-      std::sort(rows.begin(), rows.end(), [](const auto &a, const auto &b) { return a[0] < b[0]; });
+      std::sort(rows.begin(), rows.end(), [](const auto &a, const auto &b) {
+        return a[0] < b[0];
+      });
       std::vector<CattaneoNode> all(rows.size());
       for (unsigned int i = 0; i < rows.size(); ++i)
         {
-          const auto &r = rows[i];
-          all[i].x      = r[1];
-          all[i].t      = r[2];
-          all[i].weight = r[3];
-          all[i].active = r[4] != 0.;
-          all[i].stick  = r[5] != 0.;
+          const auto &r   = rows[i];
+          all[i].x        = r[1];
+          all[i].t        = r[2];
+          all[i].weight   = r[3];
+          all[i].active   = r[4] != 0.;
+          all[i].stick    = r[5] != 0.;
           all[i].t_across = r[6];
           all[i].along    = r[7];
           all[i].size     = r[8];
@@ -120,11 +122,11 @@ namespace contact_fem
                      const std::vector<double>     &load_path,
                      const std::vector<double>     *tangential = nullptr)
     {
-      const double              E_star  = interface.contact_modulus(0);
-      const double              mu      = analytical.friction_coefficient; // Tresca: the bound g
-      const CattaneoProblem     problem = dim == 3          ? CattaneoProblem::spheres :
-                                          analytical.tresca ? CattaneoProblem::cylinders_tresca :
-                                                              CattaneoProblem::cylinders;
+      const double          E_star  = interface.contact_modulus(0);
+      const double          mu      = analytical.friction_coefficient; // Tresca: the bound g
+      const CattaneoProblem problem = dim == 3          ? CattaneoProblem::spheres :
+                                      analytical.tresca ? CattaneoProblem::cylinders_tresca :
+                                                          CattaneoProblem::cylinders;
       // Each rank the nodes whose rows it owns, gathered to every rank in
       // node order (the comparison sorts them by x, ties in node order).
       std::vector<CattaneoNode> nodes;
@@ -163,7 +165,7 @@ namespace contact_fem
             nodes.push_back(node);
             keys.push_back(k);
           }
-      nodes = gather_in_node_order(interface.communicator(), nodes, keys);
+      nodes                 = gather_in_node_order(interface.communicator(), nodes, keys);
       const double fraction = analytical.symmetry_fraction;
       const auto [P, Q]     = cattaneo_loads(interface, contact, fraction);
       // The same tolerance as for "no tangential load" in the comparison.

@@ -68,7 +68,7 @@ namespace contact_fem
         for (unsigned int f = interface.own_faces.first; f < interface.own_faces.second; ++f)
           if (interface.faces[f].slave && interface.faces[f].pair == p)
             q1 = q1 && interface.faces[f].nodes.size() == q1_face_nodes;
-        q1 = Utilities::MPI::min(q1 ? 1u : 0u, comm) == 1u;
+        q1                  = Utilities::MPI::min(q1 ? 1u : 0u, comm) == 1u;
         const auto n_active = static_cast<unsigned int>(own_rows.size());
         if (!q1 || Utilities::MPI::sum(n_active, comm) < 3)
           continue;
@@ -93,8 +93,7 @@ namespace contact_fem
         const std::vector<double> at_dofs =
           interface.gather([&own_deviations](const types::global_dof_index dof) {
             const auto r = own_deviations.find(dof);
-            return r != own_deviations.end() ? r->second :
-                                               std::numeric_limits<double>::quiet_NaN();
+            return r != own_deviations.end() ? r->second : std::numeric_limits<double>::quiet_NaN();
           });
         const auto deviation = [&](const unsigned int node) -> std::optional<double> {
           const double r = at_dofs[interface.position(interface.nodes[node].dofs[0])];

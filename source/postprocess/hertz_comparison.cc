@@ -89,8 +89,10 @@ namespace contact_fem
           if (const auto &face = interface.faces[f]; face.slave)
             {
               const unsigned int a = face.nodes[0], b = face.nodes[1];
-              const double h_face = interface.nodes[a].reference.distance(interface.nodes[b].reference);
-              work.emplace_back(f, (state.contact.normal_pressure(a) + state.contact.normal_pressure(b)) *
+              const double       h_face =
+                interface.nodes[a].reference.distance(interface.nodes[b].reference);
+              work.emplace_back(f, (state.contact.normal_pressure(a) +
+                                    state.contact.normal_pressure(b)) *
                                      h_face * h_face * h_face / (24. * this->analytical.radius));
             }
         result.set("chord_gap_work", interface.sum_in_node_order(work));

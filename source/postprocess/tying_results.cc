@@ -52,7 +52,7 @@ namespace contact_fem
                       const std::vector<double> &u,
                       const ModelFrame<dim>     &frame)
     {
-      const ContactInterface<dim>                              &interface = tying.interface();
+      const ContactInterface<dim>     &interface = tying.interface();
       std::vector<std::vector<double>> rows;
       for (unsigned int k = 0; k < interface.slave_nodes.size(); ++k)
         {
@@ -113,7 +113,7 @@ namespace contact_fem
       after_cycle(const RunView<dim> &view, Json &, std::ostream &) override
       {
         const std::vector<double> u =
-          view.tying->interface().gather(view.solution.solution); // collective
+          view.tying->interface().gather(view.solution.solution);               // collective
         const std::string text = tying_profile_csv(*view.tying, u, view.frame); // collective
         write_cycle_csv(
           view.output.directory, "tying_profile", view.cycle,

@@ -57,7 +57,7 @@ namespace contact_fem
    */
   template <int dim>
   Tensor<1, dim>
-  sum_in_node_order(const ContactInterface<dim>                               &interface,
+  sum_in_node_order(const ContactInterface<dim>                                &interface,
                     const std::vector<std::pair<unsigned int, Tensor<1, dim>>> &terms)
   {
     Tensor<1, dim> sum;
