@@ -160,18 +160,29 @@ namespace contact_fem::Marking
     // Refinement halves a face, so a master face is "comparable" to the
     // children of its slave face unless it is nearer (on the log scale)
     // to twice their length than to their length. Each rank decides for
-    // the masters of its flagged slave faces; the master faces so marked
-    // are exchanged, so the owner of a master face refines it whoever owns
-    // the slave.
+    // the masters of its flagged slave faces (its own faces, and their
+    // coupled master faces are within their reach); the master faces so
+    // marked are sent to their owners (faces are numbered rank by rank:
+    // the owner is the rank whose own_faces holds the number), so the owner
+    // of a master face refines it whoever owns the slave.
+    const MPI_Comm            comm          = dof_handler.get_communicator();
     const double              largest_ratio = std::sqrt(2.);
-    std::vector<unsigned int> marked;
+    const auto                owned_ranges  = Utilities::MPI::all_gather(comm, interface.own_faces);
+    std::map<unsigned int, std::vector<unsigned int>> marked;
     for (const auto &[slave, master] : interface.coupled_faces)
       if (slave_flagged.count(slave) &&
           interface.face_lengths[master] > largest_ratio * 0.5 * interface.face_lengths[slave])
-        marked.push_back(master);
+        {
+          const auto owner = std::partition_point(owned_ranges.begin(), owned_ranges.end(),
+                                                  [m = master](const auto &range) {
+                                                    return range.second <= m;
+                                                  });
+          AssertThrow(owner != owned_ranges.end() && owner->first <= master, ExcInternalError());
+          marked[owner - owned_ranges.begin()].push_back(master);
+        }
     std::set<unsigned int> refine_master;
-    for (const auto &rank : Utilities::MPI::all_gather(dof_handler.get_communicator(), marked))
-      refine_master.insert(rank.begin(), rank.end());
+    for (const auto &[rank, faces] : Utilities::MPI::some_to_some(comm, marked))
+      refine_master.insert(faces.begin(), faces.end());
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && !cell->refine_flag_set())

@@ -343,6 +343,11 @@ namespace contact_fem
     ghost_import =
       std::make_shared<const Utilities::MPI::NoncontiguousPartitioner>(owned_interface_dofs,
                                                                        ghost_interface_dofs, comm);
+    {
+      IndexSet all_interface_dofs(owned_dofs.size());
+      all_interface_dofs.add_indices(interface_dofs.begin(), interface_dofs.end());
+      owner_of_position = Utilities::MPI::compute_index_owner(owned_dofs, all_interface_dofs, comm);
+    }
     fixed_positions.assign(interface_dofs.size(), false);
     for (const auto &node : nodes)
       for (unsigned int d = 0; d < dim; ++d)
@@ -751,6 +756,14 @@ namespace contact_fem
   }
 
   template <int dim>
+  bool
+  ContactInterface<dim>::checking_held_surface()
+  {
+    static const bool checking = std::getenv("CONTACT_FEM_CHECK_HELD_SURFACE") != nullptr;
+    return checking;
+  }
+
+  template <int dim>
   void
   ContactInterface<dim>::check_held_forces(const std::vector<double> &held,
                                            const std::vector<double> &full) const
@@ -903,6 +916,11 @@ namespace contact_fem
             }
         }
     *zone_nodes_received = std::max(*zone_nodes_received, received);
+    if (checking_held_surface() && !node_within_reach.empty())
+      for (unsigned int n = 0; n < nodes.size(); ++n)
+        if (row_holder[n] == 0 && node_within_reach[n] == 0)
+          for (auto *field : fields)
+            (*field)[n] = std::numeric_limits<double>::quiet_NaN();
   }
 
   template <int dim>
@@ -938,6 +956,43 @@ namespace contact_fem
     for (const auto &term : all)
       sum += term.second;
     return sum;
+  }
+
+  template <int dim>
+  std::vector<double>
+  ContactInterface<dim>::sum_forces(const std::vector<ForceTerm> &terms,
+                                    const bool                    every_node_here) const
+  {
+    std::vector<double> force(interface_dofs.size(), 0.);
+    if (every_node_here || Utilities::MPI::n_mpi_processes(mpi_communicator) == 1)
+      {
+        for (const auto &term : terms)
+          force[term.position] += term.value;
+        return force;
+      }
+    // (key, DoF, value) flat, as doubles (keys and DoFs below 2^53 are
+    // exact), to the owner of the DoF.
+    const unsigned int                              me = Utilities::MPI::this_mpi_process(mpi_communicator);
+    std::map<unsigned int, std::vector<double>>     outgoing;
+    std::vector<std::pair<double, std::pair<unsigned int, double>>> mine;
+    for (const auto &term : terms)
+      if (const unsigned int owner = owner_of_position[term.position]; owner == me)
+        mine.push_back({term.key, {term.position, term.value}});
+      else
+        outgoing[owner].insert(outgoing[owner].end(),
+                               {term.key, static_cast<double>(interface_dofs[term.position]),
+                                term.value});
+    for (const auto &[rank, flat] : Utilities::MPI::some_to_some(mpi_communicator, outgoing))
+      for (unsigned int i = 0; i + 2 < flat.size(); i += 3)
+        mine.push_back(
+          {flat[i], {position(static_cast<types::global_dof_index>(flat[i + 1])), flat[i + 2]}});
+    // A node's terms come from one rank in its order: a stable sort by
+    // key gives the serial loop's order at every DoF.
+    std::stable_sort(mine.begin(), mine.end(),
+                     [](const auto &a, const auto &b) { return a.first < b.first; });
+    for (const auto &[key, term] : mine)
+      force[term.first] += term.second;
+    return gather([&](const types::global_dof_index dof) { return force[position(dof)]; });
   }
 
   template <int dim>

@@ -14,6 +14,7 @@
 #include <contact_fem/core/parameters.h>
 
 #include <algorithm>
+#include <cfenv>
 #include <cstdint>
 #include <cmath>
 #include <limits>
@@ -152,6 +153,19 @@ namespace contact_fem
           std::any_of(faces[f].nodes.begin(), faces[f].nodes.end(), [&](const unsigned int n) {
             return node_within[n] != 0;
           });
+      // The nodes a rank holds: those of the faces within reach and of
+      // the faces at a node with a locally relevant DoF (the faces of its
+      // own and ghost cells: their nodes carry the constraint lines its
+      // cells distribute through).
+      node_within_reach.assign(nodes.size(), 0);
+      for (unsigned int f = 0; f < faces.size(); ++f)
+        if (within_reach[f] ||
+            std::any_of(faces[f].nodes.begin(), faces[f].nodes.end(), [&](const unsigned int n) {
+              return std::any_of(nodes[n].dofs.begin(), nodes[n].dofs.end(),
+                                 [&](const auto dof) { return relevant_dofs.is_element(dof); });
+            }))
+          for (const unsigned int n : faces[f].nodes)
+            node_within_reach[n] = 1;
     }
     if (checking_held_state())
       check_faces_within_reach(geometries, search_factor, motion_allowance);
@@ -160,6 +174,32 @@ namespace contact_fem
                       master_surface_normals);
     close_ghosts();
     close_lines();
+    if (checking_held_surface() && Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
+      poison_nodes_beyond_reach();
+  }
+
+  template <int dim>
+  void
+  ContactInterface<dim>::poison_nodes_beyond_reach()
+  {
+    // A signalling NaN traps at its first arithmetic use when
+    // CONTACT_FEM_TRAP_POISON is set (then run under a debugger).
+    static const bool trap = std::getenv("CONTACT_FEM_TRAP_POISON") != nullptr;
+    if (trap)
+      feenableexcept(FE_INVALID);
+    const double nan    = trap ? std::numeric_limits<double>::signaling_NaN() :
+                                 std::numeric_limits<double>::quiet_NaN();
+    const auto   poison = [&](SlaveNode &s) {
+      for (unsigned int d = 0; d < dim; ++d)
+        s.normal[d] = s.interface_normal[d] = nan;
+      s.D = s.full_area = s.size = s.curvature_gap = nan;
+      for (auto &entry : s.M)
+        entry.second = nan;
+    };
+    for (auto *list : {&slave_nodes, &hanging_slave_vertices})
+      for (SlaveNode &s : *list)
+        if (node_within_reach[s.node] == 0)
+          poison(s);
   }
 
   template <int dim>

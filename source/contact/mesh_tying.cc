@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -39,6 +40,20 @@ namespace contact_fem
       for (unsigned int d = 0; d < dim; ++d)
         text += (d > 0 ? ", " : "") + value_text(v[d], scale);
       return text + ")";
+    }
+
+    /// The number of entries k of @p surfaces' slave_nodes for which
+    /// @p counts(k) holds, over the ranks: each counts the rows it owns
+    /// (ContactInterface::owns_row()), so no rank needs the others' nodes.
+    /// Collective.
+    template <int dim, typename Predicate>
+    unsigned int
+    count_over_rows(const ContactInterface<dim> &surfaces, const Predicate &counts)
+    {
+      unsigned int n = 0;
+      for (unsigned int k = 0; k < surfaces.slave_nodes.size(); ++k)
+        n += surfaces.owns_row(surfaces.slave_nodes[k]) && counts(k);
+      return Utilities::MPI::sum(n, surfaces.communicator());
     }
   } // namespace
 
@@ -147,34 +162,50 @@ namespace contact_fem
   void
   MeshTying<dim>::check_surfaces_touch() const
   {
+    // Each rank checks the rows it owns; the message names the first node
+    // too far off in node order (the lowest node number, that of a serial
+    // run), sent by its owner to every rank.
+    const MPI_Comm comm = surfaces.communicator();
     for (unsigned int p = 0; p < surfaces.pairs.size(); ++p)
       {
         const std::string key = "Contact/Tied pairs: pair '" + pair_text(surfaces.pairs[p]) + "'";
-        bool              any = false;
+        unsigned int      any = 0;
+        unsigned int      first_apart = std::numeric_limits<unsigned int>::max();
+        std::string       message;
         for (const auto &s : surfaces.slave_nodes)
           {
-            if (s.pair != p || !s.paired)
+            if (s.pair != p || !s.paired || !surfaces.owns_row(s))
               continue;
-            any           = true;
+            any           = 1;
             const auto &x = surfaces.nodes[s.node].reference;
             Point<dim>  image;
             for (const auto &[m, value] : s.M)
               image += (value / s.D) * (surfaces.nodes[m].reference - x);
             const double distance = image.norm();
-            AssertThrow(distance <= max_distance_over_h * s.size,
-                        ExcMessage(key + ": the slave node at " + coordinates_text(x) + " is " +
-                                   significant(distance, 3) +
-                                   " from its mortar image on the master surface, " +
-                                   significant(distance / s.size, 3) +
-                                   " times its element size; tied surfaces must touch "
-                                   "(within " +
-                                   significant(max_distance_over_h, 2) +
-                                   " element sizes). Check the pair, or mesh the two "
-                                   "surfaces on one geometric surface."));
+            if (distance <= max_distance_over_h * s.size || s.node >= first_apart)
+              continue;
+            first_apart = s.node;
+            message     = key + ": the slave node at " + coordinates_text(x) + " is " +
+                      significant(distance, 3) + " from its mortar image on the master surface, " +
+                      significant(distance / s.size, 3) +
+                      " times its element size; tied surfaces must touch (within " +
+                      significant(max_distance_over_h, 2) +
+                      " element sizes). Check the pair, or mesh the two surfaces on one "
+                      "geometric surface.";
           }
-        AssertThrow(any, ExcMessage(key + ": no slave node faces the master surface (the "
-                                          "surfaces are apart, or their normals do not "
-                                          "oppose); tied surfaces must touch."));
+        if (const unsigned int first = Utilities::MPI::min(first_apart, comm);
+            first != std::numeric_limits<unsigned int>::max())
+          {
+            const unsigned int owner =
+              Utilities::MPI::min(first_apart == first ? Utilities::MPI::this_mpi_process(comm) :
+                                                         Utilities::MPI::n_mpi_processes(comm),
+                                  comm);
+            AssertThrow(false, ExcMessage(Utilities::MPI::broadcast(comm, message, owner)));
+          }
+        AssertThrow(Utilities::MPI::max(any, comm) > 0,
+                    ExcMessage(key + ": no slave node faces the master surface (the "
+                                     "surfaces are apart, or their normals do not "
+                                     "oppose); tied surfaces must touch."));
       }
   }
 
@@ -369,9 +400,9 @@ namespace contact_fem
       scale[p] = 1e-12 * std::min(surfaces.statistics[p].slave_modulus,
                                   surfaces.statistics[p].master_modulus);
     for (unsigned int k = 0; k < surfaces.slave_nodes.size(); ++k)
-      if (surfaces.slave_nodes[k].paired)
-        scale[surfaces.slave_nodes[k].pair] =
-          std::max(scale[surfaces.slave_nodes[k].pair], traction[k].norm());
+      if (const auto &s = surfaces.slave_nodes[k]; s.paired && surfaces.owns_row(s))
+        scale[s.pair] = std::max(scale[s.pair], traction[k].norm());
+    Utilities::MPI::max(scale, surfaces.communicator(), scale);
     return scale;
   }
 
@@ -405,12 +436,23 @@ namespace contact_fem
         else if (bond[k] == Bond::open && opening[k] < -penetration_over_h * s.size &&
                  normal_line_component(surfaces, s) < dim)
           bond[k] = Bond::held;
-        update.changes += bond[k] != before;
+        // Counted by the owner of the row.
+        update.changes += bond[k] != before && surfaces.owns_row(s);
       }
+    const MPI_Comm comm = surfaces.communicator();
+    update.changes      = Utilities::MPI::sum(update.changes, comm);
     if (update.changes > 0)
       {
+        // Whether the bonds of each earlier iteration come back: compared
+        // on the rows each rank owns.
+        std::vector<int> same(bonds_of_iteration.size(), 1);
         for (unsigned int i = 0; i < bonds_of_iteration.size(); ++i)
-          if (bonds_of_iteration[i] == bond)
+          for (unsigned int k = 0; k < surfaces.slave_nodes.size() && same[i]; ++k)
+            same[i] =
+              !surfaces.owns_row(surfaces.slave_nodes[k]) || bonds_of_iteration[i][k] == bond[k];
+        Utilities::MPI::min(same, comm, same);
+        for (unsigned int i = 0; i < bonds_of_iteration.size(); ++i)
+          if (same[i])
             update.cycling = "the released tied nodes cycle between open and held: iteration " +
                              std::to_string(iteration) + " brings back the bonds of iteration " +
                              std::to_string(i) +
@@ -425,8 +467,8 @@ namespace contact_fem
   unsigned int
   MeshTying<dim>::n_released() const
   {
-    return std::count_if(bond.begin(), bond.end(), [](const Bond b) {
-      return b != Bond::tied;
+    return count_over_rows(surfaces, [this](const unsigned int k) {
+      return bond[k] != Bond::tied;
     });
   }
 
@@ -434,20 +476,27 @@ namespace contact_fem
   unsigned int
   MeshTying<dim>::n_tied_nodes() const
   {
-    return std::count_if(surfaces.slave_nodes.begin(), surfaces.slave_nodes.end(),
-                         [](const auto &s) {
-                           return s.paired;
-                         });
+    return count_over_rows(surfaces, [this](const unsigned int k) {
+      return surfaces.slave_nodes[k].paired;
+    });
+  }
+
+  template <int dim>
+  unsigned int
+  MeshTying<dim>::n_slave_surface_nodes() const
+  {
+    return count_over_rows(surfaces, [](const unsigned int) {
+      return true;
+    });
   }
 
   template <int dim>
   unsigned int
   MeshTying<dim>::n_paired(const unsigned int p) const
   {
-    return std::count_if(surfaces.slave_nodes.begin(), surfaces.slave_nodes.end(),
-                         [p](const auto &s) {
-                           return s.paired && s.pair == p;
-                         });
+    return count_over_rows(surfaces, [this, p](const unsigned int k) {
+      return surfaces.slave_nodes[k].paired && surfaces.slave_nodes[k].pair == p;
+    });
   }
 
   template <int dim>
@@ -457,31 +506,51 @@ namespace contact_fem
     Json result = Json::array();
     for (unsigned int p = 0; p < surfaces.pairs.size(); ++p)
       {
-        unsigned int   n    = 0;
-        double         area = 0., largest = 0.;
-        double         normal_min     = std::numeric_limits<double>::max();
-        double         normal_max     = std::numeric_limits<double>::lowest();
-        double         tangential_max = 0.;
-        Tensor<1, dim> force;
+        // Over the rows each rank owns: the counts summed, the extremes
+        // reduced, the area and the force added in node order
+        // (sum_in_node_order()), so every rank has the serial values.
+        const auto in_pair = [&](const unsigned int k) {
+          const auto &s = surfaces.slave_nodes[k];
+          return s.pair == p && s.paired && surfaces.owns_row(s);
+        };
+        unsigned int n              = 0;
+        double       largest        = 0.;
+        double       normal_min     = std::numeric_limits<double>::max();
+        double       normal_max     = std::numeric_limits<double>::lowest();
+        double       tangential_max = 0.;
+        std::vector<std::vector<std::pair<unsigned int, double>>> terms(dim + 1); // D, force
         for (unsigned int k = 0; k < surfaces.slave_nodes.size(); ++k)
-          if (const auto &s = surfaces.slave_nodes[k]; s.pair == p && s.paired)
+          if (in_pair(k))
             {
+              const auto &s = surfaces.slave_nodes[k];
               n += bond[k] == Bond::tied;
-              area += s.D;
-              force += slave_force[k];
+              terms[0].emplace_back(k, s.D);
+              for (unsigned int d = 0; d < dim; ++d)
+                terms[1 + d].emplace_back(k, slave_force[k][d]);
               largest             = std::max(largest, traction[k].norm());
               const double normal = traction[k] * s.normal;
               normal_min          = std::min(normal_min, normal);
               normal_max          = std::max(normal_max, normal);
               tangential_max = std::max(tangential_max, (traction[k] - normal * s.normal).norm());
             }
+        const MPI_Comm comm = surfaces.communicator();
+        n                   = Utilities::MPI::sum(n, comm);
+        largest             = Utilities::MPI::max(largest, comm);
+        normal_min          = Utilities::MPI::min(normal_min, comm);
+        normal_max          = Utilities::MPI::max(normal_max, comm);
+        tangential_max      = Utilities::MPI::max(tangential_max, comm);
+        const double   area = surfaces.sum_in_node_order(terms[0]);
+        Tensor<1, dim> force;
+        for (unsigned int d = 0; d < dim; ++d)
+          force[d] = surfaces.sum_in_node_order(terms[1 + d]);
         // The traction's spread about its mean (force over area), over the
         // largest traction: 0 for a uniform stress.
         const Tensor<1, dim> mean   = area > 0. ? force / area : Tensor<1, dim>();
         double               spread = 0.;
         for (unsigned int k = 0; k < surfaces.slave_nodes.size(); ++k)
-          if (const auto &s = surfaces.slave_nodes[k]; s.pair == p && s.paired && largest > 0.)
+          if (in_pair(k) && largest > 0.)
             spread = std::max(spread, (traction[k] - mean).norm() / largest);
+        spread                   = Utilities::MPI::max(spread, comm);
         const std::string name   = pair_text(surfaces.pairs[p]);
         Json              record = Json::object();
         record.set("pair", name)
@@ -519,7 +588,7 @@ namespace contact_fem
     double       tied_normal_max = std::numeric_limits<double>::lowest();
     double       open_min = std::numeric_limits<double>::max(), open_max = 0.;
     for (unsigned int k = 0; k < surfaces.slave_nodes.size(); ++k)
-      if (const auto &s = surfaces.slave_nodes[k]; s.pair == p && s.paired)
+      if (const auto &s = surfaces.slave_nodes[k]; s.pair == p && s.paired && surfaces.owns_row(s))
         {
           released += bond[k] != Bond::tied;
           held += bond[k] == Bond::held;
@@ -531,6 +600,13 @@ namespace contact_fem
               open_max = std::max(open_max, opening[k]);
             }
         }
+    // Summed and reduced over the rows each rank owns.
+    const MPI_Comm comm = surfaces.communicator();
+    released            = Utilities::MPI::sum(released, comm);
+    held                = Utilities::MPI::sum(held, comm);
+    tied_normal_max     = Utilities::MPI::max(tied_normal_max, comm);
+    open_min            = Utilities::MPI::min(open_min, comm);
+    open_max            = Utilities::MPI::max(open_max, comm);
     if (released == held)
       open_min = 0.;
     record.set("released_nodes", released)

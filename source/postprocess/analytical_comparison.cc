@@ -1,6 +1,7 @@
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/contact/formulations/contact_formulation.h>
 #include <contact_fem/postprocess/analytical_comparison.h>
+#include <contact_fem/postprocess/owned_rows.h>
 #include <contact_fem/simulator/scene_parameters.h>
 
 #include <cmath>
@@ -32,16 +33,15 @@ namespace contact_fem
   Tensor<1, dim>
   ContactState<dim>::contact_force() const
   {
-    Tensor<1, dim> force;
-    for (const auto &s : interface.slave_nodes)
-      if (s.paired && contact.is_active(s.node))
-        {
-          if (contact.transmits_shear())
-            force -= s.D * contact.traction(s);
-          else
-            force += contact.normal_pressure(s.node) * s.D * s.normal;
-        }
-    return force;
+    // Each rank the nodes whose rows it owns, summed in node order.
+    std::vector<std::pair<unsigned int, Tensor<1, dim>>> terms;
+    for (unsigned int k = 0; k < interface.slave_nodes.size(); ++k)
+      if (const auto &s = interface.slave_nodes[k];
+          s.paired && interface.owns_row(s) && contact.is_active(s.node))
+        terms.emplace_back(k, contact.transmits_shear() ?
+                                -(s.D * contact.traction(s)) :
+                                contact.normal_pressure(s.node) * s.D * s.normal);
+    return sum_in_node_order(interface, terms);
   }
 
   template <int dim>
@@ -50,14 +50,19 @@ namespace contact_fem
                              const std::vector<double>                       &pressure,
                              const std::function<double(const Point<dim> &)> &exact)
   {
-    double l2_error = 0., l2_norm = 0.;
-    for (const auto &s : state.interface.slave_nodes)
-      if (s.paired)
+    // Each rank the nodes whose rows it owns; the sums (of terms >= 0) in
+    // node order.
+    const ContactInterface<dim>                 &interface = state.interface;
+    std::vector<std::pair<unsigned int, double>> errors, norms;
+    for (unsigned int k = 0; k < interface.slave_nodes.size(); ++k)
+      if (const auto &s = interface.slave_nodes[k]; s.paired && interface.owns_row(s))
         {
           const double p_exact = exact(state.position(s.node));
-          l2_error += s.D * std::pow(pressure[s.node] - p_exact, 2);
-          l2_norm += s.D * p_exact * p_exact;
+          errors.emplace_back(k, s.D * std::pow(pressure[s.node] - p_exact, 2));
+          norms.emplace_back(k, s.D * p_exact * p_exact);
         }
+    const double l2_error = interface.sum_in_node_order(errors);
+    const double l2_norm  = interface.sum_in_node_order(norms);
     return l2_norm > 0. ? std::sqrt(l2_error / l2_norm) : 0.;
   }
 

@@ -8,8 +8,10 @@
 #include <contact_fem/core/format.h>
 #include <contact_fem/postprocess/cattaneo_solution.h>
 #include <contact_fem/postprocess/hertz_comparison.h>
+#include <contact_fem/postprocess/owned_rows.h>
 #include <contact_fem/simulator/scene_parameters.h>
 
+#include <algorithm>
 #include <ostream>
 
 namespace contact_fem
@@ -30,6 +32,40 @@ namespace contact_fem
       return x;
     }
 
+    /// @p nodes (keyed by @p keys, their indices in slave_nodes) of every
+    /// rank, on every rank, in key order. Collective.
+    std::vector<CattaneoNode>
+    gather_in_node_order(const MPI_Comm                   comm,
+                         const std::vector<CattaneoNode> &nodes,
+                         const std::vector<unsigned int> &keys)
+    {
+      std::vector<std::vector<double>> rows;
+      for (unsigned int i = 0; i < nodes.size(); ++i)
+        {
+          const CattaneoNode &n = nodes[i];
+          rows.push_back({double(keys[i]), n.x, n.t, n.weight, n.active ? 1. : 0.,
+                          n.stick ? 1. : 0., n.t_across, n.along, n.size});
+        }
+      rows = gather_rows(comm, rows, true);
+      std::sort(rows.begin(), rows.end(), [](const auto &a, const auto &b) {
+        return a[0] < b[0];
+      });
+      std::vector<CattaneoNode> all(rows.size());
+      for (unsigned int i = 0; i < rows.size(); ++i)
+        {
+          const auto &r   = rows[i];
+          all[i].x        = r[1];
+          all[i].t        = r[2];
+          all[i].weight   = r[3];
+          all[i].active   = r[4] != 0.;
+          all[i].stick    = r[5] != 0.;
+          all[i].t_across = r[6];
+          all[i].along    = r[7];
+          all[i].size     = r[8];
+        }
+      return all;
+    }
+
     /**
      * The transmitted normal load P >= 0 and signed tangential load Q of the
      * converged state: the resultant of the contact tractions on the slave
@@ -46,13 +82,17 @@ namespace contact_fem
                    const ContactFormulation<dim> &contact,
                    const double                   symmetry_fraction)
     {
-      Tensor<1, dim> force, mean_normal;
-      for (const auto &s : interface.slave_nodes)
-        if (s.paired && contact.is_active(s.node))
+      // Each rank the nodes whose rows it owns, summed in node order.
+      std::vector<std::pair<unsigned int, Tensor<1, dim>>> forces, normals;
+      for (unsigned int k = 0; k < interface.slave_nodes.size(); ++k)
+        if (const auto &s = interface.slave_nodes[k];
+            s.paired && interface.owns_row(s) && contact.is_active(s.node))
           {
-            force += s.D * contact.traction(s);
-            mean_normal += s.D * s.normal;
+            forces.emplace_back(k, s.D * contact.traction(s));
+            normals.emplace_back(k, s.D * s.normal);
           }
+      const Tensor<1, dim> force       = sum_in_node_order(interface, forces);
+      const Tensor<1, dim> mean_normal = sum_in_node_order(interface, normals);
       // The frame of the solution, not the mean normal: an active set one
       // node off the symmetric one tilts that by ~1e-3 rad, which takes 1 %
       // off Q, and a sliding body tilts it to the resultant itself.
@@ -82,14 +122,17 @@ namespace contact_fem
                      const std::vector<double>     &load_path,
                      const std::vector<double>     *tangential = nullptr)
     {
-      const double              E_star  = interface.contact_modulus(0);
-      const double              mu      = analytical.friction_coefficient; // Tresca: the bound g
-      const CattaneoProblem     problem = dim == 3          ? CattaneoProblem::spheres :
-                                          analytical.tresca ? CattaneoProblem::cylinders_tresca :
-                                                              CattaneoProblem::cylinders;
+      const double          E_star  = interface.contact_modulus(0);
+      const double          mu      = analytical.friction_coefficient; // Tresca: the bound g
+      const CattaneoProblem problem = dim == 3          ? CattaneoProblem::spheres :
+                                      analytical.tresca ? CattaneoProblem::cylinders_tresca :
+                                                          CattaneoProblem::cylinders;
+      // Each rank the nodes whose rows it owns, gathered to every rank in
+      // node order (the comparison sorts them by x, ties in node order).
       std::vector<CattaneoNode> nodes;
-      for (const auto &s : interface.slave_nodes)
-        if (s.paired)
+      std::vector<unsigned int> keys;
+      for (unsigned int k = 0; k < interface.slave_nodes.size(); ++k)
+        if (const auto &s = interface.slave_nodes[k]; s.paired && interface.owns_row(s))
           {
             CattaneoNode     node;
             const bool       active = contact.is_active(s.node);
@@ -120,7 +163,9 @@ namespace contact_fem
                 node.t_across = active ? t[1] : 0.;
               }
             nodes.push_back(node);
+            keys.push_back(k);
           }
+      nodes                 = gather_in_node_order(interface.communicator(), nodes, keys);
       const double fraction = analytical.symmetry_fraction;
       const auto [P, Q]     = cattaneo_loads(interface, contact, fraction);
       // The same tolerance as for "no tangential load" in the comparison.

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -29,27 +30,30 @@ namespace contact_fem
   std::vector<CheckerboardFinding>
   find_checkerboards(const ContactInterface<dim> &interface, const ContactFormulation<dim> &contact)
   {
-    // Each rank counts the neighbour pairs whose lower node it owns
-    // (ContactInterface::owns_node()); the deviations of both come from the
-    // pressures of the nodes around them. Counts are summed and maxima
-    // taken over the ranks, so the findings are those of one rank going
-    // over the whole surface.
+    // Each rank computes the deviations of the nodes whose rows it owns
+    // (ContactInterface::owns_row()), from the pressures of their
+    // neighbours (the nodes of the faces holding them, which it holds), and
+    // counts the neighbour pairs whose lower node is one of them; the
+    // deviations of the other nodes come from the owners of their rows
+    // (gather(), point to point). Counts are summed and maxima taken over
+    // the ranks, so the findings are those of one rank going over the whole
+    // surface.
     const MPI_Comm                   comm = interface.communicator();
     std::vector<CheckerboardFinding> findings;
     const unsigned int               q1_face_nodes = dim == 2 ? 2 : 4;
     for (unsigned int p = 0; p < interface.pairs.size(); ++p)
       {
         std::map<unsigned int, double> pressure; // active slave nodes of the pair
-        unsigned int                   own_active = 0;
-        double                         p_max      = 0.;
+        std::set<unsigned int>         own_rows; // those whose rows this rank owns
+        double                         p_max = 0.;
         for (const auto &s : interface.slave_nodes)
           if (s.pair == p && s.paired && contact.is_active(s.node) &&
               interface.nodes[s.node].parents.empty())
             {
               pressure[s.node] = contact.normal_pressure(s.node);
-              if (interface.owns_node(s.node))
+              if (interface.owns_row(s))
                 {
-                  ++own_active;
+                  own_rows.insert(s.node);
                   p_max = std::max(p_max, pressure[s.node]);
                 }
             }
@@ -64,39 +68,42 @@ namespace contact_fem
         for (unsigned int f = interface.own_faces.first; f < interface.own_faces.second; ++f)
           if (interface.faces[f].slave && interface.faces[f].pair == p)
             q1 = q1 && interface.faces[f].nodes.size() == q1_face_nodes;
-        q1 = Utilities::MPI::min(q1 ? 1u : 0u, comm) == 1u;
-        if (!q1 || Utilities::MPI::sum(own_active, comm) < 3)
+        q1                  = Utilities::MPI::min(q1 ? 1u : 0u, comm) == 1u;
+        const auto n_active = static_cast<unsigned int>(own_rows.size());
+        if (!q1 || Utilities::MPI::sum(n_active, comm) < 3)
           continue;
         p_max = Utilities::MPI::max(p_max, comm);
         // The deviation of an interior active node (one whose neighbours
-        // are all active), on first use.
-        std::map<unsigned int, std::optional<double>> deviations;
+        // are all active) whose row this rank owns, keyed by its x DoF.
+        std::map<types::global_dof_index, double> own_deviations;
+        for (const unsigned int node : own_rows)
+          {
+            double sum      = 0.;
+            bool   interior = !neighbours[node].empty();
+            for (const unsigned int k : neighbours[node])
+              {
+                interior = interior && pressure.count(k);
+                sum += interior ? pressure.at(k) : 0.;
+              }
+            if (interior)
+              own_deviations[interface.nodes[node].dofs[0]] =
+                pressure.at(node) - sum / neighbours[node].size();
+          }
+        // Every node's from the owner of its row (NaN: none).
+        const std::vector<double> at_dofs =
+          interface.gather([&own_deviations](const types::global_dof_index dof) {
+            const auto r = own_deviations.find(dof);
+            return r != own_deviations.end() ? r->second : std::numeric_limits<double>::quiet_NaN();
+          });
         const auto deviation = [&](const unsigned int node) -> std::optional<double> {
-          const auto known = deviations.find(node);
-          if (known != deviations.end())
-            return known->second;
-          std::optional<double> r;
-          const auto            value = pressure.find(node);
-          if (value != pressure.end())
-            {
-              double sum      = 0.;
-              bool   interior = !neighbours[node].empty();
-              for (const unsigned int k : neighbours[node])
-                {
-                  interior = interior && pressure.count(k);
-                  sum += interior ? pressure.at(k) : 0.;
-                }
-              if (interior)
-                r = value->second - sum / neighbours[node].size();
-            }
-          return deviations[node] = r;
+          const double r = at_dofs[interface.position(interface.nodes[node].dofs[0])];
+          return std::isnan(r) ? std::nullopt : std::optional<double>(r);
         };
         CheckerboardFinding finding;
         finding.pair = p;
-        for (const auto &entry : pressure)
+        for (const unsigned int node : own_rows)
           {
-            const unsigned int node = entry.first;
-            if (!interface.owns_node(node) || !deviation(node))
+            if (!deviation(node))
               continue;
             const double r = *deviation(node);
             for (const unsigned int k : neighbours[node])

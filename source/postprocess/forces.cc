@@ -5,6 +5,7 @@
 #include <contact_fem/core/format.h>
 #include <contact_fem/postprocess/forces.h>
 #include <contact_fem/postprocess/output_files.h>
+#include <contact_fem/postprocess/owned_rows.h>
 #include <contact_fem/postprocess/postprocessor.h>
 #include <contact_fem/simulator/scene_parameters.h>
 
@@ -228,11 +229,11 @@ namespace contact_fem
                                    "fixed_points_" + std::to_string(body),
                                    Utilities::MPI::sum(force, comm)});
       }
-    // The interface is the same on every rank.
+    // Each rank the slave nodes whose rows it owns: the counts summed, the
+    // forces and areas summed in node order (the same on every rank).
     if (in.interface && in.contact)
       {
         report.pairs.resize(in.pairs.size());
-        std::vector<Tensor<1, dim>> total(in.pairs.size());
         // Stick and slip by the formulation's set codes (1 stick, 2 and 3
         // slip), as the VTU's contact_state, over the nodes that carry
         // friction: a node a support holds tangentially (on the axis of a
@@ -246,24 +247,40 @@ namespace contact_fem
             if (friction)
               report.pairs[p].n_stick = report.pairs[p].n_slip = 0;
           }
-        for (const auto &s : in.interface->slave_nodes)
-          if (friction && s.node < sets.size() && carries_friction(*in.interface, s))
+        const ContactInterface<dim> &interface = *in.interface;
+        for (const auto &s : interface.slave_nodes)
+          if (friction && s.node < sets.size() && interface.owns_row(s) &&
+              carries_friction(interface, s))
             {
               report.pairs[s.pair].n_stick += sets[s.node] == 1;
               report.pairs[s.pair].n_slip += sets[s.node] >= 2;
             }
-        for (const auto &s : in.interface->slave_nodes)
-          if (s.paired && in.contact->is_active(s.node))
+        if (friction)
+          for (auto &pair : report.pairs)
+            {
+              pair.n_stick = Utilities::MPI::sum(pair.n_stick, comm);
+              pair.n_slip  = Utilities::MPI::sum(pair.n_slip, comm);
+            }
+        std::vector<std::vector<std::pair<unsigned int, Tensor<1, dim>>>> normals(in.pairs.size()),
+          totals(in.pairs.size());
+        std::vector<std::vector<std::pair<unsigned int, double>>> areas(in.pairs.size());
+        for (unsigned int k = 0; k < interface.slave_nodes.size(); ++k)
+          if (const auto &s = interface.slave_nodes[k];
+              s.paired && interface.owns_row(s) && in.contact->is_active(s.node))
             {
               const Tensor<1, dim> lambda = in.contact->traction(s);
               const Tensor<1, dim> n      = in.contact->frame_normal(s);
-              auto                &pair   = report.pairs[s.pair];
-              pair.normal += s.D * (lambda * n) * n;
-              total[s.pair] += s.D * lambda;
-              pair.area += s.D;
+              normals[s.pair].emplace_back(k, s.D * (lambda * n) * n);
+              totals[s.pair].emplace_back(k, s.D * lambda);
+              areas[s.pair].emplace_back(k, s.D);
             }
         for (unsigned int p = 0; p < in.pairs.size(); ++p)
-          report.pairs[p].tangential = total[p] - report.pairs[p].normal;
+          {
+            auto &pair      = report.pairs[p];
+            pair.normal     = sum_in_node_order(interface, normals[p]);
+            pair.area       = interface.sum_in_node_order(areas[p]);
+            pair.tangential = sum_in_node_order(interface, totals[p]) - pair.normal;
+          }
       }
     for (const auto &s : report.supports)
       report.scale = std::max(report.scale, s.force.norm());

@@ -81,18 +81,21 @@ namespace contact_fem
     // O(h^4 / R^3): no term. (2D only: the chords of 3D faces are not summed.)
     if (dim == 2 && state.interface.geometry_degree == 1)
       {
-        double chord_gap_work = 0.;
-        for (const auto &face : state.interface.faces)
-          if (face.slave)
+        // Each rank its own slave faces (the pressures at their nodes are
+        // held), summed in face order.
+        const ContactInterface<dim>                 &interface = state.interface;
+        std::vector<std::pair<unsigned int, double>> work;
+        for (unsigned int f = interface.own_faces.first; f < interface.own_faces.second; ++f)
+          if (const auto &face = interface.faces[f]; face.slave)
             {
               const unsigned int a = face.nodes[0], b = face.nodes[1];
               const double       h_face =
-                state.interface.nodes[a].reference.distance(state.interface.nodes[b].reference);
-              chord_gap_work +=
-                (state.contact.normal_pressure(a) + state.contact.normal_pressure(b)) * h_face *
-                h_face * h_face / (24. * this->analytical.radius);
+                interface.nodes[a].reference.distance(interface.nodes[b].reference);
+              work.emplace_back(f, (state.contact.normal_pressure(a) +
+                                    state.contact.normal_pressure(b)) *
+                                     h_face * h_face * h_face / (24. * this->analytical.radius));
             }
-        result.set("chord_gap_work", chord_gap_work);
+        result.set("chord_gap_work", interface.sum_in_node_order(work));
       }
     return result;
   }

@@ -1,6 +1,8 @@
 // 'hertz sphere': Hertz' sphere on a half-space (3D), for the whole sphere
 // or a part of it cut by symmetry planes (Analytical solution/Symmetry
 // fraction); the sphere's axis is parallel to z through (Center, Center y).
+#include <deal.II/base/mpi.h>
+
 #include <contact_fem/contact/contact_interface.h>
 #include <contact_fem/contact/formulations/contact_formulation.h>
 #include <contact_fem/core/format.h>
@@ -113,24 +115,29 @@ namespace contact_fem
         double last_active = 0., first_inactive = std::numeric_limits<double>::infinity();
       };
 
+      /// Each rank the nodes whose rows it owns, the extremes reduced
+      /// exactly (MPI max, then min). Collective.
       Extent
       radial_extent(const ContactState<dim> &state) const
       {
         std::vector<std::pair<double, bool>> nodes;
         for (const auto &s : state.interface.slave_nodes)
-          if (s.paired)
+          if (s.paired && state.interface.owns_row(s))
             {
               const Point<dim> x = state.position(s.node);
               nodes.emplace_back(this->analytical.axis_distance(x[0], x[1]),
                                  state.contact.is_active(s.node));
             }
-        Extent extent;
+        const MPI_Comm comm = state.interface.communicator();
+        Extent         extent;
         for (const auto &[r, active] : nodes)
           if (active)
             extent.last_active = std::max(extent.last_active, r);
+        extent.last_active = Utilities::MPI::max(extent.last_active, comm);
         for (const auto &[r, active] : nodes)
           if (!active && r > extent.last_active)
             extent.first_inactive = std::min(extent.first_inactive, r);
+        extent.first_inactive = Utilities::MPI::min(extent.first_inactive, comm);
         return extent;
       }
     };

@@ -2,6 +2,7 @@
 #include <contact_fem/contact/formulations/contact_formulation.h>
 #include <contact_fem/core/format.h>
 #include <contact_fem/postprocess/output_files.h>
+#include <contact_fem/postprocess/owned_rows.h>
 #include <contact_fem/postprocess/postprocessor.h>
 #include <contact_fem/postprocess/pressure_profile.h>
 #include <contact_fem/simulator/scene_parameters.h>
@@ -26,10 +27,12 @@ namespace contact_fem
     // The formulation's own nodal fields (friction: tangential traction,
     // slip increment of the last load step, stick flag) follow the state.
     const auto fields = contact.nodal_fields(interface);
-    // Sorted by (pair, row): one pair's nodes together, along x.
-    std::vector<std::pair<unsigned int, std::vector<double>>> rows;
+    // Each rank the nodes whose rows it owns, gathered to rank 0 and sorted
+    // there by (pair, row): one pair's nodes together, along x, in an order
+    // that does not depend on the partition.
+    std::vector<std::vector<double>> rows;
     for (const auto &s : interface.slave_nodes)
-      if (s.paired)
+      if (s.paired && interface.owns_row(s))
         {
           const Point<dim>    position  = state.position(s.node);
           const Point<dim>    current   = frame.to_user(position);
@@ -47,8 +50,10 @@ namespace contact_fem
             row.push_back(current[1]);
           for (unsigned int d = 0; d < dim; ++d)
             row.push_back(reference[d]);
-          rows.emplace_back(s.pair, row);
+          row.insert(row.begin(), s.pair);
+          rows.push_back(row);
         }
+    rows = gather_rows(interface.communicator(), rows, false);
     std::sort(rows.begin(), rows.end());
     std::ostringstream out;
     out << (dim == 2 ? "x" : "x,y,z") << ",pressure,hertz_pressure,gap,active";
@@ -57,8 +62,8 @@ namespace contact_fem
     out << ",pair" << (dim == 2 ? ",y" : "") << ",reference_x,reference_y"
         << (dim == 3 ? ",reference_z" : "") << "\n"
         << std::setprecision(10);
-    for (const auto &[pair, r] : rows)
-      for (unsigned int k = 0; k < r.size(); ++k)
+    for (const auto &r : rows)
+      for (unsigned int k = 1; k < r.size(); ++k)
         out << r[k] << (k + 1 < r.size() ? ',' : '\n');
     return out.str();
   }
@@ -105,14 +110,16 @@ namespace contact_fem
       void
       after_cycle(const RunView<dim> &view, Json &, std::ostream &) override
       {
+        const ContactState<dim> &state = *view.solution.contact;
+        // The exact pressure where the analytical solution gives one (else
+        // 0). Both collective: every rank, before rank 0 writes.
+        const std::function<double(const Point<dim> &)> exact =
+          view.comparison ? view.comparison->exact_pressure(state) : nullptr;
+        const std::string text = pressure_profile_csv(state, view.frame, exact);
         write_cycle_csv(
           view.output.directory, "pressure_profile", view.cycle,
-          [&view] {
-            const ContactState<dim> &state = *view.solution.contact;
-            // The exact pressure where the analytical solution gives one (else 0).
-            const std::function<double(const Point<dim> &)> exact =
-              view.comparison ? view.comparison->exact_pressure(state) : nullptr;
-            return pressure_profile_csv(state, view.frame, exact);
+          [&text] {
+            return text;
           },
           view.comm);
       }

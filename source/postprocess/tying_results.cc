@@ -3,6 +3,7 @@
 #include <contact_fem/contact/mesh_tying.h>
 #include <contact_fem/geometry/model_frame.h>
 #include <contact_fem/postprocess/output_files.h>
+#include <contact_fem/postprocess/owned_rows.h>
 #include <contact_fem/postprocess/postprocessor.h>
 
 #include <algorithm>
@@ -42,19 +43,21 @@ namespace contact_fem
     /// @p u, in the user's coordinates), the normal tying traction
     /// (positive in tension), the traction vector on the slave, the tied
     /// flag (0 once released in tension), the pair and the reference
-    /// position; sorted by pair, then along x.
+    /// position; sorted by pair, then along x. Each rank the nodes whose
+    /// rows it owns, gathered to rank 0 (the text is whole there only).
+    /// Collective.
     template <int dim>
     std::string
     tying_profile_csv(const MeshTying<dim>      &tying,
                       const std::vector<double> &u,
                       const ModelFrame<dim>     &frame)
     {
-      const ContactInterface<dim>                              &interface = tying.interface();
-      std::vector<std::pair<unsigned int, std::vector<double>>> rows;
+      const ContactInterface<dim>     &interface = tying.interface();
+      std::vector<std::vector<double>> rows;
       for (unsigned int k = 0; k < interface.slave_nodes.size(); ++k)
         {
           const auto &s = interface.slave_nodes[k];
-          if (!s.paired)
+          if (!s.paired || !interface.owns_row(s))
             continue;
           const Point<dim> reference = interface.nodes[s.node].reference;
           const Point<dim> current   = frame.to_user(reference + interface.displacement(s.node, u));
@@ -66,8 +69,11 @@ namespace contact_fem
           row.push_back(s.pair);
           const Point<dim> user_reference = frame.to_user(reference);
           row.insert(row.end(), user_reference.begin_raw(), user_reference.end_raw());
-          rows.emplace_back(s.pair, row);
+          row.insert(row.begin(), s.pair);
+          rows.push_back(row);
         }
+      // (pair, row) as the key: the order does not depend on the partition.
+      rows = gather_rows(interface.communicator(), rows, false);
       std::sort(rows.begin(), rows.end());
       const std::string  axes[3] = {"x", "y", "z"};
       std::ostringstream out;
@@ -80,8 +86,8 @@ namespace contact_fem
       for (unsigned int d = 0; d < dim; ++d)
         out << ",reference_" << axes[d];
       out << "\n" << std::setprecision(10);
-      for (const auto &[pair, r] : rows)
-        for (unsigned int k = 0; k < r.size(); ++k)
+      for (const auto &r : rows)
+        for (unsigned int k = 1; k < r.size(); ++k)
           out << r[k] << (k + 1 < r.size() ? ',' : '\n');
       return out.str();
     }
@@ -107,11 +113,12 @@ namespace contact_fem
       after_cycle(const RunView<dim> &view, Json &, std::ostream &) override
       {
         const std::vector<double> u =
-          view.tying->interface().gather(view.solution.solution); // collective
+          view.tying->interface().gather(view.solution.solution);               // collective
+        const std::string text = tying_profile_csv(*view.tying, u, view.frame); // collective
         write_cycle_csv(
           view.output.directory, "tying_profile", view.cycle,
           [&] {
-            return tying_profile_csv(*view.tying, u, view.frame);
+            return text;
           },
           view.comm);
       }

@@ -8,6 +8,7 @@
 #include <contact_fem/contact/formulations/contact_formulation.h>
 #include <contact_fem/contact/mesh_tying.h>
 #include <contact_fem/postprocess/output_files.h>
+#include <contact_fem/postprocess/owned_rows.h>
 #include <contact_fem/postprocess/postprocessor.h>
 #include <contact_fem/simulator/scene_parameters.h>
 #include <contact_fem/postprocess/vtu_output.h>
@@ -15,6 +16,7 @@
 #include <cmath>
 #include <functional>
 #include <iomanip>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <type_traits>
@@ -350,21 +352,66 @@ namespace contact_fem
 
     /// The slave faces of @p interface as an ASCII VTU at the positions
     /// @p position of its nodes (degree-1 faces on a curved geometry as
-    /// their straight cells), with the nodal @p fields.
+    /// their straight cells), with the nodal @p fields. Each rank gives its
+    /// own slave faces and the values at their nodes (held there: a hanging
+    /// vertex reads its parents); rank 0 gathers them, the faces in face
+    /// order (the ranks' own faces are consecutive runs of it), and writes
+    /// the file; the other ranks return an empty text. Collective.
     template <int dim>
     std::string
     surface_vtu(const ContactInterface<dim>                     &interface,
                 const std::function<Point<dim>(unsigned int)> &position,
                 const SurfaceFields<dim>                        &fields)
     {
-      std::vector<int>          point_of_node(interface.nodes.size(), -1);
-      std::vector<unsigned int> points, connectivity, offsets, types;
-      for (const auto &face : interface.faces)
-        if (face.slave)
+      // Rows: (0, VTK type, nodes in VTK order) per own slave face, then
+      // (1, node, position, scalars, vectors) per node of those faces.
+      std::vector<std::vector<double>> rows;
+      std::vector<unsigned int>        own_nodes;
+      std::vector<bool>                listed(interface.nodes.size(), false);
+      for (unsigned int f = interface.own_faces.first; f < interface.own_faces.second; ++f)
+        if (const auto &face = interface.faces[f]; face.slave)
           {
             const auto [type, nodes] = vtk_cell<dim>(face.nodes);
+            rows.push_back({0., double(type)});
             for (const unsigned int n : nodes)
               {
+                rows.back().push_back(n);
+                if (!listed[n])
+                  own_nodes.push_back(n);
+                listed[n] = true;
+              }
+          }
+      for (const unsigned int n : own_nodes)
+        {
+          std::vector<double> row = {1., double(n)};
+          const Point<dim>    x   = position(n);
+          row.insert(row.end(), x.begin_raw(), x.end_raw());
+          for (const auto &[name, at] : fields.scalars)
+            row.push_back(at(n));
+          for (const auto &[name, at] : fields.vectors)
+            {
+              const Tensor<1, dim> v = at(n);
+              row.insert(row.end(), v.begin_raw(), v.end_raw());
+            }
+          rows.push_back(row);
+        }
+      rows = gather_rows(interface.communicator(), rows, false);
+      if (Utilities::MPI::this_mpi_process(interface.communicator()) != 0)
+        return {};
+
+      // A node's values from the first rank that gives them (every rank
+      // holding a node has the same values).
+      std::map<unsigned int, const std::vector<double> *> values;
+      std::vector<int>          point_of_node(interface.nodes.size(), -1);
+      std::vector<unsigned int> points, connectivity, offsets, types;
+      for (const auto &row : rows)
+        if (row[0] == 1.)
+          values.emplace(static_cast<unsigned int>(row[1]), &row);
+        else
+          {
+            for (unsigned int i = 2; i < row.size(); ++i)
+              {
+                const auto n = static_cast<unsigned int>(row[i]);
                 if (point_of_node[n] < 0)
                   {
                     point_of_node[n] = points.size();
@@ -373,15 +420,25 @@ namespace contact_fem
                 connectivity.push_back(point_of_node[n]);
               }
             offsets.push_back(connectivity.size());
-            types.push_back(type);
+            types.push_back(static_cast<unsigned int>(row[1]));
           }
+      // The value at node n from position @p at of its row.
+      const auto value = [&values](const unsigned int n, const unsigned int at) {
+        return (*values.at(n))[2 + at];
+      };
+      const auto vector_at = [&value](const unsigned int n, const unsigned int at) {
+        Tensor<1, dim> v;
+        for (unsigned int d = 0; d < dim; ++d)
+          v[d] = value(n, at + d);
+        return v;
+      };
 
       std::ostringstream out;
       out << std::setprecision(10);
-      auto vector_values = [&](const std::function<Tensor<1, dim>(unsigned int)> &at) {
+      auto vector_values = [&](const unsigned int at) {
         for (const unsigned int n : points)
           {
-            const Tensor<1, dim> v = at(n);
+            const Tensor<1, dim> v = vector_at(n, at);
             for (unsigned int d = 0; d < 3; ++d)
               out << (d < dim ? v[d] : 0.) << (d < 2 ? ' ' : '\n');
           }
@@ -391,9 +448,7 @@ namespace contact_fem
           << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << points.size()
           << "\" NumberOfCells=\"" << types.size() << "\">\n"
           << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-      vector_values([&](const unsigned int n) {
-        return Tensor<1, dim>(position(n));
-      });
+      vector_values(0);
       out << "</DataArray>\n</Points>\n<Cells>\n"
           << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
       for (const unsigned int c : connectivity)
@@ -405,19 +460,22 @@ namespace contact_fem
       for (const unsigned int t : types)
         out << t << '\n';
       out << "</DataArray>\n</Cells>\n<PointData>\n";
-      for (const auto &[name, at] : fields.scalars)
+      unsigned int at = dim;
+      for (const auto &field : fields.scalars)
         {
-          out << "<DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
+          out << "<DataArray type=\"Float64\" Name=\"" << field.first << "\" format=\"ascii\">\n";
           for (const unsigned int n : points)
-            out << at(n) << '\n';
+            out << value(n, at) << '\n';
           out << "</DataArray>\n";
+          ++at;
         }
-      for (const auto &[name, at] : fields.vectors)
+      for (const auto &field : fields.vectors)
         {
-          out << "<DataArray type=\"Float64\" Name=\"" << name
+          out << "<DataArray type=\"Float64\" Name=\"" << field.first
               << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
           vector_values(at);
           out << "</DataArray>\n";
+          at += dim;
         }
       out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
       return out.str();
@@ -427,6 +485,7 @@ namespace contact_fem
     /// pressure, the weighted gap, the active flag, the pair, the
     /// formulation's own fields, the traction vector on the slave and the
     /// displacement. A hanging vertex shows the interpolation of its parents.
+    /// Whole on rank 0 (surface_vtu()). Collective.
     template <int dim>
     std::string
     contact_surface_vtu(const ContactState<dim> &state)
@@ -471,6 +530,7 @@ namespace contact_fem
     /// normal component (positive in tension), the tied flag (0 once
     /// released in tension), the pair and
     /// the displacement @p u (on every rank, ContactInterface::gather()).
+    /// Whole on rank 0 (surface_vtu()). Collective.
     template <int dim>
     std::string
     tied_surface_vtu(const MeshTying<dim> &tying, const std::vector<double> &u)
@@ -579,15 +639,17 @@ namespace contact_fem
     cycle_records.emplace_back(time, name);
     write_collection("solution_cycle_" + std::to_string(cycle) + ".pvd", cycle_records);
     write_collection("solution.pvd", cycle_records);
-    // The interfaces are known on every rank: rank 0 writes them whole.
+    // Each rank gives its own faces, rank 0 writes the surfaces whole.
     if (view.contact)
-      write_surface("contact_surface", [&] { return contact_surface_vtu(*view.contact); }, cycle,
-                    time, surface_records);
+      {
+        const std::string text = contact_surface_vtu(*view.contact); // collective
+        write_surface("contact_surface", [&] { return text; }, cycle, time, surface_records);
+      }
     if (tying)
       {
         const std::vector<double> u = tying->interface().gather(view.solution); // collective
-        write_surface("tied_surface", [&] { return tied_surface_vtu(*tying, u); }, cycle, time,
-                      tied_records);
+        const std::string text = tied_surface_vtu(*tying, u);                 // collective
+        write_surface("tied_surface", [&] { return text; }, cycle, time, tied_records);
       }
   }
 

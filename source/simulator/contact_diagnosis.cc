@@ -524,6 +524,35 @@ namespace contact_fem
   }
 
   template <int dim>
+  std::pair<std::vector<Tensor<1, dim>>, std::vector<double>>
+  ContactDiagnosis<dim>::active_normals_and_areas() const
+  {
+    const ContactInterface<dim> &interface = *run.interface;
+    const unsigned int           n_pairs   = run.contact_parameters.pairs.size();
+    // The terms of each sum (pair p: components 0..dim-1 of D_j n_j, then
+    // D_j) from the owners of the rows, keyed by the place in slave_nodes.
+    std::vector<std::vector<std::pair<unsigned int, double>>> terms(n_pairs * (dim + 1));
+    for (unsigned int k = 0; k < interface.slave_nodes.size(); ++k)
+      if (const auto &s = interface.slave_nodes[k];
+          interface.owns_row(s) && s.paired && run.contact->is_active(s.node))
+        {
+          const Tensor<1, dim> weighted = s.D * s.normal;
+          for (unsigned int d = 0; d < dim; ++d)
+            terms[s.pair * (dim + 1) + d].emplace_back(k, weighted[d]);
+          terms[s.pair * (dim + 1) + dim].emplace_back(k, s.D);
+        }
+    std::vector<Tensor<1, dim>> normal(n_pairs);
+    std::vector<double>         area(n_pairs);
+    for (unsigned int p = 0; p < n_pairs; ++p)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          normal[p][d] = interface.sum_in_node_order(terms[p * (dim + 1) + d]);
+        area[p] = interface.sum_in_node_order(terms[p * (dim + 1) + dim]);
+      }
+    return {normal, area};
+  }
+
+  template <int dim>
   std::string
   ContactDiagnosis<dim>::friction_held_translations() const
   {
@@ -549,12 +578,8 @@ namespace contact_fem
           for (const auto body : bodies_of_surface(tria, id))
             held[body].push_back(normal / normal.norm());
       }
-    // The contact holds its bodies along the normal of its active nodes
-    // (the interface and its active set are the same on every rank).
-    std::vector<Tensor<1, dim>> pair_normal(run.contact_parameters.pairs.size());
-    for (const auto &s : run.interface->slave_nodes)
-      if (s.paired && run.contact->is_active(s.node))
-        pair_normal[s.pair] += s.D * s.normal;
+    // The contact holds its bodies along the normal of its active nodes.
+    const std::vector<Tensor<1, dim>> pair_normal = active_normals_and_areas().first;
     std::map<types::material_id, std::vector<Tensor<1, dim>>> contact_normals;
     for (unsigned int p = 0; p < pair_normal.size(); ++p)
       if (pair_normal[p].norm() > 0.)
@@ -610,16 +635,8 @@ namespace contact_fem
     if (!run.interface || !run.contact || free_bodies.empty())
       return "";
     const auto &pairs = run.contact_parameters.pairs;
-    // Each pair's active area and mean normal (the interface and its active
-    // set are the same on every rank).
-    std::vector<Tensor<1, dim>> pair_normal(pairs.size());
-    std::vector<double>         area(pairs.size(), 0.);
-    for (const auto &s : run.interface->slave_nodes)
-      if (s.paired && run.contact->is_active(s.node))
-        {
-          pair_normal[s.pair] += s.D * s.normal;
-          area[s.pair] += s.D;
-        }
+    // Each pair's active area and mean normal.
+    const auto [pair_normal, area] = active_normals_and_areas();
     const auto &tria  = run.dof_handler.get_triangulation();
     const auto  loads = body_loads(time);
     std::string result;

@@ -1936,9 +1936,12 @@ namespace contact_fem
     // the elasticity of the contact zone (compliant for a small zone, but
     // physical, not a discretisation artefact), and the factors of an
     // unsymmetric slip system are not those of the probe's test space.
-    for (unsigned int n = 0; n < interface->nodes.size(); ++n)
-      if (contact->held_tangentially(n))
-        return;
+    // Each rank asks about the rows it owns (it holds no other state).
+    bool held = false;
+    for (const auto &s : interface->slave_nodes)
+      held = held || (interface->owns_row(s) && contact->held_tangentially(s.node));
+    if (Utilities::MPI::max(held ? 1u : 0u, interface->communicator()) > 0)
+      return;
     TimerOutput::Scope              t(*timer, "Check: held rotation");
     double                          softest = std::numeric_limits<double>::max();
     std::vector<types::material_id> bodies;

@@ -20,14 +20,16 @@ namespace contact_fem
 {
   namespace
   {
-    /// Per slave node of @p interface: the Gauss points of its slave faces
-    /// in the reference configuration, weighted by the node's shape function
-    /// (weights sum to int N_j ds; in 3D with hanging vertices, N_j of the
-    /// constrained trace, which includes the parent's share of the hanging
-    /// vertices' functions).
-    template <int dim>
+    /// Per slave node of @p interface for which @p wanted (of its node
+    /// number) holds: the Gauss points of its slave faces in the reference
+    /// configuration, weighted by the node's shape function (weights sum to
+    /// int N_j ds; in 3D with hanging vertices, N_j of the constrained
+    /// trace, which includes the parent's share of the hanging vertices'
+    /// functions). A node's samples come from every slave face around it,
+    /// in face order.
+    template <int dim, typename Wanted>
     std::map<unsigned int, std::vector<TractionSample<dim>>>
-    slave_support_samples(const ContactInterface<dim> &interface)
+    slave_support_samples(const ContactInterface<dim> &interface, const Wanted &wanted)
     {
       std::map<unsigned int, std::vector<TractionSample<dim>>> samples;
       if constexpr (dim == 2)
@@ -44,8 +46,9 @@ namespace contact_fem
                     const double       ds = 2. * quadrature.weight(q) * line.tangent(xi).norm();
                     const Tensor<1, 2> n  = Mortar::face_normal(line, xi, face.orientation);
                     for (unsigned int k = 0; k < face.nodes.size(); ++k)
-                      samples[face.nodes[k]].push_back(
-                        {line.point(xi), n, ds * Mortar::shape_value(p, k, xi)});
+                      if (wanted(face.nodes[k]))
+                        samples[face.nodes[k]].push_back(
+                          {line.point(xi), n, ds * Mortar::shape_value(p, k, xi)});
                   }
               }
         }
@@ -76,20 +79,42 @@ namespace contact_fem
                         const double weight  = dA * Mortar::quad_shape_value(p, k, xi);
                         const auto  &parents = interface.nodes[face.nodes[k]].parents;
                         if (parents.empty())
-                          samples[face.nodes[k]].push_back({quad.point(xi), n, weight});
+                          {
+                            if (wanted(face.nodes[k]))
+                              samples[face.nodes[k]].push_back({quad.point(xi), n, weight});
+                          }
                         else
                           for (const auto &[parent, w] : parents)
-                            samples[parent].push_back({quad.point(xi), n, w * weight});
+                            if (wanted(parent))
+                              samples[parent].push_back({quad.point(xi), n, w * weight});
                       }
                   }
               }
         }
       return samples;
     }
+    /// The sums over a slave node's support samples: their weights (int N_j
+    /// ds on the reference surface) and their weighted normals.
+    template <int dim>
+    struct SupportSums
+    {
+      double         weight = 0.;
+      Tensor<1, dim> normal;
+    };
+
     /// The contact tractions that SPR imposes at the paired slave nodes of
     /// @p interface: those of the active nodes of @p contact, and with
     /// @p all_paired (a known pressure is compared) the inactive ones too,
-    /// not imposed, in the order recovered_traction_report() expects.
+    /// not imposed, in the order recovered_traction_report() expects; in
+    /// @p sums, per node listed, the sums over its samples.
+    ///
+    /// The samples are those of the nodes with a DoF in @p relevant (this
+    /// rank's locally relevant DoFs): StressRecovery reads a node's samples
+    /// only where it imposes the node's traction, at the support points of
+    /// this rank's own cells; the list of other nodes carries none. The sums
+    /// come from the rank that owns the node's row (all-gathered, 2 + dim
+    /// doubles per listed node), so no rank needs the samples of the whole
+    /// surface.
     ///
     /// The traction of a node is imposed as the N_j-weighted mean over the
     /// node's slave faces (which is what a dual multiplier is). The stresses
@@ -103,17 +128,50 @@ namespace contact_fem
     std::vector<ContactNodeTraction<dim>>
     recovery_tractions(const ContactInterface<dim>   &interface,
                        const ContactFormulation<dim> &contact,
-                       const bool                     all_paired)
+                       const bool                     all_paired,
+                       const IndexSet                &relevant,
+                       std::vector<SupportSums<dim>> &sums)
     {
-      std::vector<ContactNodeTraction<dim>> tractions;
-      const auto                            support = slave_support_samples(interface);
+      const auto support = slave_support_samples(interface, [&](const unsigned int n) {
+        return relevant.is_element(interface.nodes[n].dofs[0]);
+      });
+      const auto listed  = [&](const typename ContactInterface<dim>::SlaveNode &s) {
+        return s.paired && (all_paired || contact.is_active(s.node));
+      };
+      // The owners' sums: (node, weight, normal) per listed node.
+      std::vector<double> own;
       for (const auto &s : interface.slave_nodes)
-        if (s.paired && (all_paired || contact.is_active(s.node)))
+        if (listed(s) && interface.owns_row(s))
           {
-            const auto &samples   = support.at(s.node);
-            double      reference = 0.;
-            for (const auto &q : samples)
-              reference += q.weight;
+            SupportSums<dim> sum;
+            for (const auto &q : support.at(s.node))
+              {
+                sum.weight += q.weight;
+                sum.normal += q.weight * q.normal;
+              }
+            own.push_back(s.node);
+            own.push_back(sum.weight);
+            for (unsigned int d = 0; d < dim; ++d)
+              own.push_back(sum.normal[d]);
+          }
+      std::map<unsigned int, SupportSums<dim>> sum_of_node;
+      for (const auto &chunk : Utilities::MPI::all_gather(interface.communicator(), own))
+        for (unsigned int i = 0; i + 2 + dim <= chunk.size(); i += 2 + dim)
+          {
+            SupportSums<dim> &sum = sum_of_node[static_cast<unsigned int>(chunk[i])];
+            sum.weight            = chunk[i + 1];
+            for (unsigned int d = 0; d < dim; ++d)
+              sum.normal[d] = chunk[i + 2 + d];
+          }
+
+      std::vector<ContactNodeTraction<dim>> tractions;
+      sums.clear();
+      for (const auto &s : interface.slave_nodes)
+        if (listed(s))
+          {
+            const auto   samples   = support.find(s.node);
+            const double reference = sum_of_node.at(s.node).weight;
+            sums.push_back(sum_of_node.at(s.node));
             const bool active = contact.is_active(s.node);
             // With friction the whole traction vector (normal and
             // tangential) is imposed, not the pressure alone.
@@ -122,8 +180,10 @@ namespace contact_fem
               traction = (s.D / reference) * contact.traction(s);
             else if (active)
               traction = -contact.normal_pressure(s.node) * s.D / reference * s.normal;
-            tractions.push_back({interface.nodes[s.node].reference, s.normal, traction, samples,
-                                 active, interface.nodes[s.node].dofs[0]});
+            tractions.push_back(
+              {interface.nodes[s.node].reference, s.normal, traction,
+               samples != support.end() ? samples->second : std::vector<TractionSample<dim>>(),
+               active, interface.nodes[s.node].dofs[0]});
           }
       return tractions;
     }
@@ -161,6 +221,7 @@ namespace contact_fem
       RecoveredTractions(const ContactInterface<dim>                 &interface,
                          const ContactFormulation<dim>               &contact,
                          const std::vector<ContactNodeTraction<dim>> &nodes,
+                         const std::vector<SupportSums<dim>>         &sums,
                          const std::vector<SymmetricTensor<2, dim>>  &node_stresses)
       {
         // How well the recovered stress carries the contact traction, in the
@@ -182,13 +243,8 @@ namespace contact_fem
         for (const auto &s : interface.slave_nodes)
           if (s.paired)
             {
-              Tensor<1, dim> n0;
-              double         reference_length = 0.;
-              for (const auto &q : nodes[i].samples)
-                {
-                  n0 += q.weight * q.normal;
-                  reference_length += q.weight;
-                }
+              Tensor<1, dim> n0               = sums[i].normal;
+              const double   reference_length = sums[i].weight;
               n0 /= n0.norm();
               const Tensor<1, dim> n        = nodes[i].normal / nodes[i].normal.norm();
               const Tensor<1, dim> traction = node_stresses[i] * n0;
@@ -219,7 +275,8 @@ namespace contact_fem
                 }
               ++i;
             }
-        AssertThrow(i == nodes.size() && i == node_stresses.size(), ExcInternalError());
+        AssertThrow(i == nodes.size() && i == sums.size() && i == node_stresses.size(),
+                    ExcInternalError());
       }
 
       /// The normal part scaled to the deformed surface, and in 2D with
@@ -242,11 +299,13 @@ namespace contact_fem
                               const AnalyticalComparison<dim>             *comparison,
                               const AnalyticalSolution                    &analytical,
                               const std::vector<ContactNodeTraction<dim>> &nodes,
+                              const std::vector<SupportSums<dim>>         &sums,
                               const std::vector<SymmetricTensor<2, dim>>  &node_stresses,
                               const std::string                           &prefix,
                               Json                                        &cycle_record)
     {
-      const RecoveredTractions<dim> recovered(state.interface, state.contact, nodes, node_stresses);
+      const RecoveredTractions<dim> recovered(state.interface, state.contact, nodes, sums,
+                                              node_stresses);
       const double shear = recovered.p_max > 0. ? recovered.largest_shear / recovered.p_max : 0.;
       const std::string  label = prefix.empty() ? "    recovered" : "    plain SPR recovered";
       std::ostringstream out;
@@ -291,9 +350,10 @@ namespace contact_fem
     // the recovered traction is compared with a known pressure.
     const bool pressure_known =
       contact && (comparison || !analytical.reference_pressure_profile.empty());
+    std::vector<SupportSums<dim>>               sums;
     const std::vector<ContactNodeTraction<dim>> tractions =
       contact && (settings.contact_terms || pressure_known) ?
-        recovery_tractions(*interface, *contact, pressure_known) :
+        recovery_tractions(*interface, *contact, pressure_known, relevant_dofs, sums) :
         std::vector<ContactNodeTraction<dim>>();
     const auto spr =
       StressRecovery<dim>::estimate(*mapping, dof_handler, ghosted_solution, materials, tractions,
@@ -315,7 +375,7 @@ namespace contact_fem
           << "): eta / |u|_E = " << value_or_ok(spr.relative_error, 1e-10) << std::endl;
     if (pressure_known)
       pcout << recovered_traction_report(contact_state(), comparison.get(), analytical, tractions,
-                                         spr.node_stresses, "", cycle_record);
+                                         sums, spr.node_stresses, "", cycle_record);
 
     t.stop();
     if (refinement.compare_plain_spr && settings.contact_terms)
@@ -330,7 +390,7 @@ namespace contact_fem
               << value_or_ok(plain.relative_error, 1e-10) << std::endl;
         if (pressure_known)
           pcout << recovered_traction_report(contact_state(), comparison.get(), analytical,
-                                             tractions, plain.node_stresses, "plain_spr_",
+                                             tractions, sums, plain.node_stresses, "plain_spr_",
                                              cycle_record);
         uncounted_wall_time += plain_timer.wall_time();
       }

@@ -69,11 +69,13 @@ namespace contact_fem
   {
     TimerOutput::Scope t(timer, "Contact: search");
     // The couplings of the sparsity pattern: the face pairs and the
-    // paired nodes.
+    // paired nodes, of the rows this rank owns (each row has one owner, so
+    // some rank sees any change; the list does not depend on which other
+    // slave nodes a rank holds).
     const auto paired_nodes = [this] {
       std::vector<unsigned int> result;
       for (const auto &s : interface.slave_nodes)
-        if (s.paired)
+        if (s.paired && interface.owns_row(s))
           result.push_back(s.node);
       return result;
     };

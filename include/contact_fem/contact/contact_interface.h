@@ -328,6 +328,31 @@ namespace contact_fem
     sum_in_node_order(const std::vector<std::pair<unsigned int, double>> &terms,
                       const double                                        start = 0.) const;
 
+    /// A term of a contact force: @p value at the DoF dofs()[@p position],
+    /// from the slave node whose @p key orders it in the serial loop (its
+    /// index into slave_nodes, plus a multiple of their number for a later
+    /// loop over them).
+    struct ForceTerm
+    {
+      double       key;
+      unsigned int position;
+      double       value;
+    };
+
+    /**
+     * The contact force at dofs() from the terms of the slave nodes whose
+     * rows this rank owns (@p terms, in the loop's order): each term goes
+     * to the owner of its DoF, which adds the terms it receives in the
+     * order of their keys (a node's terms come from one rank, in order);
+     * every rank then gets the owners' sums (gather()). Every value is the
+     * serial loop's bit for bit, and no rank needs the slave nodes coupled
+     * to its master DoFs (issue 32 item 1). Collective, unless
+     * @p every_node_here: @p terms are then those of every slave node,
+     * added here in their order (the check of the held state).
+     */
+    std::vector<double>
+    sum_forces(const std::vector<ForceTerm> &terms, const bool every_node_here = false) const;
+
     /**
      * Whether this rank holds the state of slave node @p s for the readers
      * that go over the held nodes (the contact forces): its row is owned
@@ -358,6 +383,28 @@ namespace contact_fem
     /// state compute their results from every node too and compare.
     static bool
     checking_held_state();
+
+    /**
+     * Whether CONTACT_FEM_CHECK_HELD_SURFACE is set: a rehearsal of the
+     * surfaces held per rank (issue 32 item 1). After each search, the
+     * slave nodes off the faces within reach of this rank's own faces
+     * (HeldCounts::faces_within_reach, what a rank will hold) get NaN in
+     * every number of their SlaveNode, and share_node_values() gives NaN to
+     * those nodes' state instead of the zone's values. A reader that still
+     * reads the whole surface then prints NaN or fails; one that reads only
+     * what its rank will hold gives the same output. Serial runs hold
+     * everything and are not changed.
+     */
+    static bool
+    checking_held_surface();
+
+    /// Whether slave node @p n lies on a face within reach of this rank's
+    /// own faces at the last search (every node on one rank).
+    bool
+    within_reach_of_node(const unsigned int n) const
+    {
+      return node_within_reach.empty() || node_within_reach[n] != 0;
+    }
 
     /**
      * Whether this rank stores the constraint lines of slave node @p s (the
@@ -706,6 +753,11 @@ namespace contact_fem
     /// update() marked within reach on the gathered surface (@p geometries,
     /// the search's @p search_factor and @p motion_allowance), with their
     /// nodes and records; stops every rank otherwise. Collective.
+    /// checking_held_surface(): NaN in the numbers of the slave nodes off
+    /// the faces within reach.
+    void
+    poison_nodes_beyond_reach();
+
     void
     check_faces_within_reach(const std::vector<FaceGeometry> &geometries,
                              const double                     search_factor,
@@ -890,6 +942,8 @@ namespace contact_fem
     /// Per face, whether it is within reach of this rank's slave faces at
     /// the last search (HeldCounts::faces_within_reach).
     std::vector<char>                               within_reach;
+    /// Per node: on a face of within_reach (within_reach_of_node()).
+    std::vector<char> node_within_reach;
     std::vector<types::global_dof_index>            interface_dofs;
     std::map<types::global_dof_index, unsigned int> dof_position;
     std::vector<bool>                               fixed_positions; ///< by position in dofs()
@@ -900,6 +954,8 @@ namespace contact_fem
     /// initialize().
     IndexSet owned_interface_dofs, ghost_interface_dofs;
     std::shared_ptr<const Utilities::MPI::NoncontiguousPartitioner> ghost_import;
+    /// The rank owning each DoF of dofs() (sum_forces()).
+    std::vector<unsigned int> owner_of_position;
     /// The regular slave nodes whose row this rank owns and its ghosts,
     /// each sorted by x DoF (the order of the import); per node 1 if its
     /// row is owned here, 2 if a ghost, 0 otherwise (and for other nodes).

@@ -148,7 +148,7 @@ namespace contact_fem
       bond = accepted_bond;
     }
 
-    /// The number of released slave nodes (open or held).
+    /// The number of released slave nodes (open or held). Collective.
     unsigned int
     n_released() const;
 
@@ -184,19 +184,18 @@ namespace contact_fem
     }
 
     /// The number of tied slave nodes (paired, with a multiplier).
+    /// Collective.
     unsigned int
     n_tied_nodes() const;
 
     /// The number of nodes of the tied slave surfaces: those beyond their
-    /// master (not paired) stay free.
+    /// master (not paired) stay free. Collective.
     unsigned int
-    n_slave_surface_nodes() const
-    {
-      return surfaces.slave_nodes.size();
-    }
+    n_slave_surface_nodes() const;
 
     /// Per pair: the force of the master on the slave (the sum of r_j),
     /// the traction range and the nodes; printed to @p out as well.
+    /// Collective.
     Json
     results(std::ostream &out) const;
 
@@ -229,11 +228,12 @@ namespace contact_fem
                     Json              &record,
                     std::ostream      &out) const;
 
-    /// The number of paired slave nodes of pair @p p.
+    /// The number of paired slave nodes of pair @p p. Collective.
     unsigned int
     n_paired(const unsigned int p) const;
 
     /// Per pair: the traction scale the release threshold is relative to.
+    /// Collective.
     std::vector<double>
     traction_scales() const;
 

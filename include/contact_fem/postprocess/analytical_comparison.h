@@ -37,8 +37,9 @@ namespace contact_fem
     /// The deformed position of interface node @p node.
     Point<dim>
     position(const unsigned int node) const;
-    /// The resultant of the contact tractions on the slave side (the same
-    /// on every rank: the interface is known everywhere).
+    /// The resultant of the contact tractions on the slave side, from the
+    /// rows each rank owns summed in node order: the same on every rank.
+    /// Collective.
     Tensor<1, dim>
     contact_force() const;
   };
@@ -48,6 +49,8 @@ namespace contact_fem
    * over the paired slave nodes, with the mortar weights D_j as nodal
    * quadrature weights, at the deformed positions x of the nodes:
    *   sqrt(sum D_j (p_j - p(x_j))^2 / sum D_j p(x_j)^2).
+   * Each rank reads @p pressure at the nodes whose rows it owns; the sums
+   * go in node order (ContactInterface::sum_in_node_order()). Collective.
    */
   template <int dim>
   double

@@ -23,7 +23,9 @@ namespace contact_fem
    * position reference_x, reference_y(, reference_z). Positions are in the
    * user's coordinates (@p frame). Rows are sorted by pair, then by
    * position. The first columns are those a reference profile is read
-   * from (Analytical solution/Reference pressure profile).
+   * from (Analytical solution/Reference pressure profile). Each rank
+   * gives the nodes whose rows it owns; the text is whole on rank 0 only.
+   * Collective.
    */
   template <int dim>
   std::string

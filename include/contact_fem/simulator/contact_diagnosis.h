@@ -193,6 +193,12 @@ namespace contact_fem
     /// of their bodies: > 0 pushes the bodies together. Collective.
     double
     load_toward_contact(const double time) const;
+    /// Per contact pair, over its active paired slave nodes: the sum of
+    /// D_j n_j (first) and of D_j (second), from the rows this rank owns,
+    /// added in node order (ContactInterface::sum_in_node_order()): the
+    /// serial sums on every rank, bit for bit. Collective.
+    std::pair<std::vector<Tensor<1, dim>>, std::vector<double>>
+    active_normals_and_areas() const;
 
     Run      run;
     MPI_Comm comm;

@@ -1016,30 +1016,32 @@ namespace contact_fem
           }
       }
     result.multiplier    = std::sqrt(interface.sum_in_node_order(terms));
-    result.contact_force = traction_forces(interface, false);
-    if (ContactInterface<dim>::checking_held_state())
-      interface.check_held_forces(result.contact_force, traction_forces(interface, true));
+    result.contact_force = this->contact_forces(interface);
     return result;
   }
 
   template <int dim>
-  std::vector<double>
-  AlmFrictional<dim>::traction_forces(const ContactInterface<dim> &interface, const bool all) const
+  void
+  AlmFrictional<dim>::add_force_terms(
+    const ContactInterface<dim>                            &interface,
+    const bool                                              all,
+    std::vector<typename ContactInterface<dim>::ForceTerm> &terms) const
   {
-    std::vector<double> force(interface.dofs().size(), 0.);
-    for (const auto &s : interface.slave_nodes)
+    for (unsigned int k = 0; k < interface.slave_nodes.size(); ++k)
       {
-        if (!s.paired || !this->active[s.node] || (!all && !interface.holds_state(s)))
+        const auto &s = interface.slave_nodes[k];
+        if (!s.paired || (!all && !interface.owns_row(s)) || !this->active[s.node])
           continue;
         // D_j lambda_j on the slave, -M_jl lambda_j on the masters.
         const Tensor<1, dim> lambda = traction(s);
         for (unsigned int d = 0; d < dim; ++d)
-          force[interface.position(interface.nodes[s.node].dofs[d])] += s.D * lambda[d];
+          terms.push_back({static_cast<double>(k),
+                           interface.position(interface.nodes[s.node].dofs[d]), s.D * lambda[d]});
         for (const auto &[m, value] : s.M)
           for (unsigned int d = 0; d < dim; ++d)
-            force[interface.position(interface.nodes[m].dofs[d])] -= value * lambda[d];
+            terms.push_back({static_cast<double>(k), interface.position(interface.nodes[m].dofs[d]),
+                             -(value * lambda[d])});
       }
-    return force;
   }
 
   template <int dim>

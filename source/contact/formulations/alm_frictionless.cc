@@ -95,8 +95,10 @@ namespace contact_fem
         {
           // Every component of the node and its masters: the normals turn
           // during Newton, so a coupling at round-off now may not stay so.
+          if (!s.paired || !may_store_line_of<dim>(interface.nodes[s.node], constraints))
+            continue;
           const unsigned int c = this->eliminated_component(interface, s);
-          if (!s.paired || c == dim)
+          if (c == dim)
             continue;
           const auto    &slave = interface.nodes[s.node];
           ConstraintLine line;

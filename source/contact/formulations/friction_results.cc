@@ -2,6 +2,7 @@
 
 #include <contact_fem/contact/formulations/friction_results.h>
 #include <contact_fem/core/format.h>
+#include <contact_fem/postprocess/owned_rows.h>
 
 #include <iomanip>
 #include <sstream>
@@ -20,13 +21,10 @@ namespace contact_fem
     // the master, split along each node's own normal and tangent (2D); in
     // 3D the tangential force is the length of the sum of the tangential
     // tractions (on the slave) times D_j, also given by its components.
-    // The signed sums in node order over the shared state of the whole
-    // interface, on every rank (an MPI sum would change their last bits);
-    // the maxima and the active length (a sum of D_j > 0, which
-    // sum_in_node_order() adds in node order) over the rows this rank owns,
-    // reduced exactly.
-    double         normal = 0., tangential = 0., t_max = 0., slip_max = 0.;
-    Tensor<1, dim> force, tangential_force;
+    // Each rank the rows it owns: the sums (signed ones too) in node order
+    // (sum_in_node_order(): an MPI sum would change their last bits), the
+    // maxima reduced exactly.
+    double t_max = 0., slip_max = 0.;
     // 3D: the part of tangential_force along the component a support fixes
     // at the nodes it holds in one direction only (a roller on a symmetry
     // plane). It pushes the slave node against its support and the master
@@ -35,27 +33,42 @@ namespace contact_fem
     // force along the slave normal, whose one-sided average tilts off the
     // plane by ~h / 2R; "penalty frictional" has none (doc/design.md,
     // "Kinematics = updated").
-    Tensor<1, dim>                               held_force;
-    std::vector<std::pair<unsigned int, double>> lengths;
+    std::vector<std::pair<unsigned int, double>>         lengths, normals, tangentials;
+    std::vector<std::pair<unsigned int, Tensor<1, dim>>> forces, tangential_forces, held_forces;
     for (unsigned int k = 0; k < interface.slave_nodes.size(); ++k)
-      if (const auto &s = interface.slave_nodes[k]; s.paired && contact.is_active(s.node))
+      if (const auto &s = interface.slave_nodes[k];
+          s.paired && interface.owns_row(s) && contact.is_active(s.node))
         {
           const Tensor<1, dim> lambda   = contact.traction(s);
           const Tensor<1, dim> t_vector = tangential_traction_vector(contact, s);
           const double t = dim == 2 ? frame_tangential_traction(contact, s) : t_vector.norm();
-          normal += s.D * contact.normal_pressure(s.node);
-          tangential += s.D * t;
-          tangential_force += s.D * t_vector;
+          normals.emplace_back(k, s.D * contact.normal_pressure(s.node));
+          tangentials.emplace_back(k, s.D * t);
+          tangential_forces.emplace_back(k, s.D * t_vector);
           if (const unsigned int f = partly_held_component<dim>(interface.nodes[s.node]); f < dim)
-            held_force[f] += s.D * t_vector[f];
-          force -= s.D * lambda;
-          if (!interface.owns_row(s))
-            continue;
+            {
+              // Only component f: the others' sums stay +0.
+              Tensor<1, dim> held;
+              held[f] = s.D * t_vector[f];
+              held_forces.emplace_back(k, held);
+            }
+          forces.emplace_back(k, -(s.D * lambda));
           lengths.emplace_back(k, s.D);
           t_max    = std::max(t_max, std::abs(t));
           slip_max = std::max(slip_max, magnitude<dim>(accepted_slip[s.node]));
         }
-    const double length = interface.sum_in_node_order(lengths);
+    const double         length = interface.sum_in_node_order(lengths);
+    const double         normal = interface.sum_in_node_order(normals);
+    const Tensor<1, dim> force  = sum_in_node_order(interface, forces);
+    // 2D: the tangential force along each node's tangent; 3D: the length of
+    // the summed vectors (below).
+    double         tangential = dim == 2 ? interface.sum_in_node_order(tangentials) : 0.;
+    Tensor<1, dim> tangential_force, held_force;
+    if (dim == 3)
+      {
+        tangential_force = sum_in_node_order(interface, tangential_forces);
+        held_force       = sum_in_node_order(interface, held_forces);
+      }
     // Over every paired node: one that slid out of contact keeps its slip.
     double accumulated_max = 0.;
     for (const auto &s : interface.slave_nodes)

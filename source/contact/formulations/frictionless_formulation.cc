@@ -295,7 +295,8 @@ namespace contact_fem
   {
     for (const auto &s : interface.slave_nodes)
       {
-        if (!s.paired || (only_active && !active[s.node]) || (skip && skip(s)))
+        if (!s.paired || (only_active && !active[s.node]) ||
+            !may_store_line_of<dim>(interface.nodes[s.node], constraints) || (skip && skip(s)))
           continue;
         const unsigned int c = eliminated_component(interface, s);
         if (c == dim)
@@ -339,25 +340,39 @@ namespace contact_fem
   FrictionlessFormulation<dim>::contact_forces(const ContactInterface<dim> &interface,
                                                const bool                   all) const
   {
-    // -lambda D n on the slave, +lambda M n on the masters.
-    std::vector<double> force(interface.dofs().size(), 0.);
-    for (const auto &s : interface.slave_nodes)
+    std::vector<typename ContactInterface<dim>::ForceTerm> terms;
+    add_force_terms(interface, all, terms);
+    std::vector<double> force = interface.sum_forces(terms, all);
+    if (!all && ContactInterface<dim>::checking_held_state())
+      interface.check_held_forces(force, contact_forces(interface, true));
+    return force;
+  }
+
+  template <int dim>
+  void
+  FrictionlessFormulation<dim>::add_force_terms(
+    const ContactInterface<dim>                            &interface,
+    const bool                                              all,
+    std::vector<typename ContactInterface<dim>::ForceTerm> &terms) const
+  {
+    for (unsigned int k = 0; k < interface.slave_nodes.size(); ++k)
       {
-        if (!all && !interface.holds_state(s))
+        const auto &s = interface.slave_nodes[k];
+        if (!all && !interface.owns_row(s))
           continue;
         const double lambda = pressure[s.node];
         if (!s.paired || lambda == 0.)
           continue;
         const Tensor<1, dim> n = this->frame_normal(s);
         for (unsigned int d = 0; d < dim; ++d)
-          force[interface.position(interface.nodes[s.node].dofs[d])] -= lambda * s.D * n[d];
+          terms.push_back({static_cast<double>(k),
+                           interface.position(interface.nodes[s.node].dofs[d]),
+                           -(lambda * s.D * n[d])});
         for (const auto &[m, value] : s.M)
           for (unsigned int d = 0; d < dim; ++d)
-            force[interface.position(interface.nodes[m].dofs[d])] += lambda * value * n[d];
+            terms.push_back({static_cast<double>(k), interface.position(interface.nodes[m].dofs[d]),
+                             lambda * value * n[d]});
       }
-    if (!all && ContactInterface<dim>::checking_held_state())
-      interface.check_held_forces(force, contact_forces(interface, true));
-    return force;
   }
 
   template <int dim>

@@ -671,47 +671,35 @@ namespace contact_fem
   }
 
   template <int dim>
-  typename PenaltyFrictional<dim>::Residuals
-  PenaltyFrictional<dim>::residuals(const ContactInterface<dim> &interface,
-                                    const std::vector<double>   &u) const
-  {
-    // The normal forces of the base class plus D_j t_j tau on the slave and
-    // -M_jl t_j tau on the masters.
-    Residuals result = PenaltyFrictionless<dim>::residuals(interface, u);
-    if (ContactInterface<dim>::checking_held_state())
-      {
-        std::vector<double> full = this->contact_forces(interface, true);
-        add_tangential_forces(interface, full, true);
-        add_tangential_forces(interface, result.contact_force, false);
-        interface.check_held_forces(result.contact_force, full);
-      }
-    else
-      add_tangential_forces(interface, result.contact_force, false);
-    return result;
-  }
-
-  template <int dim>
   void
-  PenaltyFrictional<dim>::add_tangential_forces(const ContactInterface<dim> &interface,
-                                                std::vector<double>         &force,
-                                                const bool                   all) const
+  PenaltyFrictional<dim>::add_force_terms(
+    const ContactInterface<dim>                            &interface,
+    const bool                                              all,
+    std::vector<typename ContactInterface<dim>::ForceTerm> &terms) const
   {
-    for (const auto &s : interface.slave_nodes)
+    // The normal forces of the base class, then D_j t_j tau on the slave
+    // and -M_jl t_j tau on the masters, keyed after every normal term.
+    PenaltyFrictionless<dim>::add_force_terms(interface, all, terms);
+    const auto n_nodes = static_cast<double>(interface.slave_nodes.size());
+    for (unsigned int j = 0; j < interface.slave_nodes.size(); ++j)
       {
-        if (!all && !interface.holds_state(s))
+        const auto &s = interface.slave_nodes[j];
+        if (!all && !interface.owns_row(s))
           continue;
         const TangentialVector<dim> &t = tangential[s.node];
         if (!s.paired || !this->active[s.node] || t.norm_square() == 0.)
           continue;
-        const auto frame = tangent_frame(frame_normal(s));
+        const auto   frame = tangent_frame(frame_normal(s));
+        const double key   = n_nodes + j;
         for (unsigned int k = 0; k < dim - 1; ++k)
           {
             for (unsigned int d = 0; d < dim; ++d)
-              force[interface.position(interface.nodes[s.node].dofs[d])] +=
-                s.D * t[k] * frame[k][d];
+              terms.push_back({key, interface.position(interface.nodes[s.node].dofs[d]),
+                               s.D * t[k] * frame[k][d]});
             for (const auto &[m, value] : s.M)
               for (unsigned int d = 0; d < dim; ++d)
-                force[interface.position(interface.nodes[m].dofs[d])] -= value * t[k] * frame[k][d];
+                terms.push_back({key, interface.position(interface.nodes[m].dofs[d]),
+                                 -(value * t[k] * frame[k][d])});
           }
       }
   }

@@ -275,12 +275,12 @@ namespace contact_fem
     }
 
   private:
-    /// The contact forces of the tractions at the interface DoFs (D_j
-    /// lambda_j on the slave, -M_jl lambda_j on the masters), from the
-    /// slave nodes whose state this rank holds, or every node if @p all;
-    /// exact at the locally relevant DoFs.
-    std::vector<double>
-    traction_forces(const ContactInterface<dim> &interface, const bool all) const;
+    /// The terms of the contact forces of the tractions (D_j lambda_j on
+    /// the slave, -M_jl lambda_j on the masters) in place of the pressures'.
+    void
+    add_force_terms(const ContactInterface<dim>                            &interface,
+                    const bool                                              all,
+                    std::vector<typename ContactInterface<dim>::ForceTerm> &terms) const override;
 
     /// The friction cone check: slip nodes on the bound (|t - sigma T(p)|),
     /// stick nodes inside it (|t| - T(p)), relative to the largest bound.

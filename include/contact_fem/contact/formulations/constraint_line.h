@@ -32,6 +32,19 @@ namespace contact_fem
     return best;
   }
 
+  /// Whether @p constraints may store a line at some DoF of @p node. The
+  /// loops that build lines skip the other slave nodes before reading
+  /// their operators: a rank will not hold those (issue 32 item 1).
+  template <int dim>
+  bool
+  may_store_line_of(const typename ContactInterface<dim>::Node &node,
+                    const AffineConstraints<double>            &constraints)
+  {
+    return std::any_of(node.dofs.begin(), node.dofs.end(), [&](const auto dof) {
+      return constraints.can_store_line(dof);
+    });
+  }
+
   /**
    * A line u_dof = sum coefficient * u + inhomogeneity, built term by term:
    * a Dirichlet DoF moves its value into the inhomogeneity (trial space) or

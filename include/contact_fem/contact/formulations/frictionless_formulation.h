@@ -253,13 +253,23 @@ namespace contact_fem
                  const std::vector<double>                       &fixed_values,
                  AffineConstraints<double>                       &constraints) const;
 
-    /// The contact forces of the current pressures at the interface DoFs,
-    /// along frame_normal() (the slave normal unless a frictional
-    /// formulation takes the interface normal), from the slave nodes whose
-    /// state this rank holds (ContactInterface::holds_state()), or from
-    /// every slave node if @p all: exact at the locally relevant DoFs.
+    /// The contact forces at the interface DoFs (add_force_terms()) from
+    /// the slave nodes whose rows this rank owns, summed by the owners of
+    /// the DoFs (ContactInterface::sum_forces()), or from every slave node
+    /// here if @p all: the serial values at every DoF either way.
     std::vector<double>
     contact_forces(const ContactInterface<dim> &interface, const bool all = false) const;
+
+    /// The terms of the contact forces of the current pressures, along
+    /// frame_normal() (the slave normal unless a frictional formulation
+    /// takes the interface normal): -p_j D_j n on slave node j, p_j M_jl n
+    /// on master l; of the nodes whose rows this rank owns, or of every
+    /// node if @p all. A formulation with more forces adds their terms
+    /// after these, keyed after them.
+    virtual void
+    add_force_terms(const ContactInterface<dim>                                  &interface,
+                    const bool                                                    all,
+                    std::vector<typename ContactInterface<dim>::ForceTerm>       &terms) const;
 
     /// After the owners of the rows decided their nodes (active, pressure
     /// and the derived class's @p key_fields, per node; @p other_fields

@@ -170,8 +170,12 @@ namespace contact_fem
     update_active_set(const ContactInterface<dim> &interface,
                       const std::vector<double>   &u) override;
 
-    Residuals
-    residuals(const ContactInterface<dim> &interface, const std::vector<double> &u) const override;
+    /// The normal forces' terms, then the tangential tractions': D_j t_j
+    /// on the slave, -M_jl t_j on the masters.
+    void
+    add_force_terms(const ContactInterface<dim>                            &interface,
+                    const bool                                              all,
+                    std::vector<typename ContactInterface<dim>::ForceTerm> &terms) const override;
 
     Tensor<1, dim>
     traction(const SlaveNode &s) const override
@@ -219,14 +223,6 @@ namespace contact_fem
     }
 
   private:
-    /// Adds the forces of the tangential tractions (D_j t_j on the slave,
-    /// -M_jl t_j on the masters) to @p force at the interface DoFs, from
-    /// the slave nodes whose state this rank holds, or every node if
-    /// @p all.
-    void
-    add_tangential_forces(const ContactInterface<dim> &interface,
-                          std::vector<double>         &force,
-                          const bool                   all) const;
 
     /// The largest elastic slip of the stick nodes, and from the total
     /// tangential and normal contact forces sum_j D_j t_j and sum_j D_j p_j,
