@@ -354,12 +354,12 @@ namespace contact_fem
     sum_forces(const std::vector<ForceTerm> &terms, const bool every_node_here = false) const;
 
     /**
-     * Whether this rank holds the state of slave node @p s for the readers
-     * that go over the held nodes (the contact forces): its row is owned
-     * here, or it or a master node of its M has a locally relevant DoF.
-     * Every term of the contact force at a locally relevant DoF comes from
-     * such a node, so the force there is the serial one bit for bit. Set at
-     * each search (M changes with it). Not collective.
+     * Whether slave node @p s is one whose state the contact forces at
+     * this rank's locally relevant DoFs would need if they were summed
+     * here: its row is owned here, or it or a master node of its M has a
+     * locally relevant DoF. Counted only (HeldCounts::closed_ghosts): the
+     * forces are summed by the owners of the DoFs (sum_forces()), which
+     * needs only the owned rows. Set at each search. Not collective.
      */
     bool
     holds_state(const SlaveNode &s) const
@@ -370,11 +370,11 @@ namespace contact_fem
     /**
      * The check of the held state (environment variable
      * CONTACT_FEM_CHECK_HELD_STATE set): @p held, the contact force at dofs()
-     * summed over the nodes of holds_state(), must equal @p full, summed
-     * over every slave node, bit for bit at every locally relevant DoF;
-     * throws otherwise. Counts the DoFs compared and those elsewhere where
-     * the two differ (the terms the held loop left out) for count_held().
-     * Not collective.
+     * from the owned rows summed by the DoFs' owners (sum_forces()), must
+     * equal @p full, summed here over every slave node, bit for bit at
+     * every interface DoF; throws otherwise. Counts the locally relevant
+     * DoFs compared and the other DoFs where the two differ (none once it
+     * returns) for count_held(). Not collective.
      */
     void
     check_held_forces(const std::vector<double> &held, const std::vector<double> &full) const;
