@@ -971,8 +971,8 @@ namespace contact_fem
       }
     // (key, DoF, value) flat, as doubles (keys and DoFs below 2^53 are
     // exact), to the owner of the DoF.
-    const unsigned int                              me = Utilities::MPI::this_mpi_process(mpi_communicator);
-    std::map<unsigned int, std::vector<double>>     outgoing;
+    const unsigned int me = Utilities::MPI::this_mpi_process(mpi_communicator);
+    std::map<unsigned int, std::vector<double>>                     outgoing;
     std::vector<std::pair<double, std::pair<unsigned int, double>>> mine;
     for (const auto &term : terms)
       if (const unsigned int owner = owner_of_position[term.position]; owner == me)
@@ -987,11 +987,14 @@ namespace contact_fem
           {flat[i], {position(static_cast<types::global_dof_index>(flat[i + 1])), flat[i + 2]}});
     // A node's terms come from one rank in its order: a stable sort by
     // key gives the serial loop's order at every DoF.
-    std::stable_sort(mine.begin(), mine.end(),
-                     [](const auto &a, const auto &b) { return a.first < b.first; });
+    std::stable_sort(mine.begin(), mine.end(), [](const auto &a, const auto &b) {
+      return a.first < b.first;
+    });
     for (const auto &[key, term] : mine)
       force[term.first] += term.second;
-    return gather([&](const types::global_dof_index dof) { return force[position(dof)]; });
+    return gather([&](const types::global_dof_index dof) {
+      return force[position(dof)];
+    });
   }
 
   template <int dim>

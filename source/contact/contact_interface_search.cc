@@ -153,19 +153,25 @@ namespace contact_fem
           std::any_of(faces[f].nodes.begin(), faces[f].nodes.end(), [&](const unsigned int n) {
             return node_within[n] != 0;
           });
-      // The nodes a rank holds: those of the faces within reach and of
-      // the faces at a node with a locally relevant DoF (the faces of its
-      // own and ghost cells: their nodes carry the constraint lines its
-      // cells distribute through).
-      node_within_reach.assign(nodes.size(), 0);
-      for (unsigned int f = 0; f < faces.size(); ++f)
-        if (within_reach[f] ||
-            std::any_of(faces[f].nodes.begin(), faces[f].nodes.end(), [&](const unsigned int n) {
-              return std::any_of(nodes[n].dofs.begin(), nodes[n].dofs.end(),
-                                 [&](const auto dof) { return relevant_dofs.is_element(dof); });
-            }))
-          for (const unsigned int n : faces[f].nodes)
-            node_within_reach[n] = 1;
+      // checking_held_surface(): the nodes a rank will hold, those of the
+      // faces within reach and of the faces at a node with a locally
+      // relevant DoF (the faces of its own and ghost cells: their nodes
+      // carry the constraint lines its cells distribute through).
+      node_within_reach.clear();
+      if (checking_held_surface())
+        {
+          const auto relevant = [&](const unsigned int n) {
+            return std::any_of(nodes[n].dofs.begin(), nodes[n].dofs.end(), [&](const auto dof) {
+              return relevant_dofs.is_element(dof);
+            });
+          };
+          node_within_reach.assign(nodes.size(), 0);
+          for (unsigned int f = 0; f < faces.size(); ++f)
+            if (within_reach[f] ||
+                std::any_of(faces[f].nodes.begin(), faces[f].nodes.end(), relevant))
+              for (const unsigned int n : faces[f].nodes)
+                node_within_reach[n] = 1;
+        }
     }
     if (checking_held_state())
       check_faces_within_reach(geometries, search_factor, motion_allowance);

@@ -411,9 +411,8 @@ namespace contact_fem
                 ExcMessage("Analytical solution/Center" +
                            std::string(cylinder ? "" : " and Center y") + " = " +
                            text(analytical.center) +
-                           (cylinder ? "" : ", " + text(analytical.center_y)) +
-                           ": the built-in '" + scene.type +
-                           "' touches its plate at the origin; set 0."));
+                           (cylinder ? "" : ", " + text(analytical.center_y)) + ": the built-in '" +
+                           scene.type + "' touches its plate at the origin; set 0."));
   }
 
   template <int dim>

@@ -398,14 +398,6 @@ namespace contact_fem
     static bool
     checking_held_surface();
 
-    /// Whether slave node @p n lies on a face within reach of this rank's
-    /// own faces at the last search (every node on one rank).
-    bool
-    within_reach_of_node(const unsigned int n) const
-    {
-      return node_within_reach.empty() || node_within_reach[n] != 0;
-    }
-
     /**
      * Whether this rank stores the constraint lines of slave node @p s (the
      * gap lines, alm's candidate lines, the stick and slip lines): it has
@@ -942,8 +934,8 @@ namespace contact_fem
     /// Per face, whether it is within reach of this rank's slave faces at
     /// the last search (HeldCounts::faces_within_reach).
     std::vector<char>                               within_reach;
-    /// Per node: on a face of within_reach (within_reach_of_node()).
-    std::vector<char> node_within_reach;
+    /// checking_held_surface(): per node, whether this rank will hold it.
+    std::vector<char>                               node_within_reach;
     std::vector<types::global_dof_index>            interface_dofs;
     std::map<types::global_dof_index, unsigned int> dof_position;
     std::vector<bool>                               fixed_positions; ///< by position in dofs()

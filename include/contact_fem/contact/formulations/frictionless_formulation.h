@@ -267,9 +267,9 @@ namespace contact_fem
     /// node if @p all. A formulation with more forces adds their terms
     /// after these, keyed after them.
     virtual void
-    add_force_terms(const ContactInterface<dim>                                  &interface,
-                    const bool                                                    all,
-                    std::vector<typename ContactInterface<dim>::ForceTerm>       &terms) const;
+    add_force_terms(const ContactInterface<dim>                            &interface,
+                    const bool                                              all,
+                    std::vector<typename ContactInterface<dim>::ForceTerm> &terms) const;
 
     /// After the owners of the rows decided their nodes (active, pressure
     /// and the derived class's @p key_fields, per node; @p other_fields

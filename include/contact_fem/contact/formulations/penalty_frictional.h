@@ -223,7 +223,6 @@ namespace contact_fem
     }
 
   private:
-
     /// The largest elastic slip of the stick nodes, and from the total
     /// tangential and normal contact forces sum_j D_j t_j and sum_j D_j p_j,
     /// with one Coulomb law and every active node slipping one way, the
